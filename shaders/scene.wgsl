@@ -1,0 +1,290 @@
+// The aquarium: background (room + water volume), static meshes, instanced fish and
+// the water surface. Lighting is computed in linear RGB; the output is gamma-encoded
+// because the scene image is a plain Rgba8Unorm texture (see render_tier.rs).
+
+struct Scene {
+    world_to_clip: mat4x4<f32>,
+    clip_to_world: mat4x4<f32>,
+    eye: vec4<f32>,       // xyz camera position (m), w animation time (s)
+    tank_min: vec4<f32>,  // xyz lower tank corner (m), w fog density (1/m)
+    tank_max: vec4<f32>,  // xyz upper tank corner (m)
+    sun_dir: vec4<f32>,   // xyz unit vector towards the light
+};
+
+@group(0) @binding(0) var<uniform> scene: Scene;
+
+// Materials (mesh.rs `Material`).
+const PLAIN: u32 = 0u;
+const SAND: u32 = 1u;
+const FRAME: u32 = 2u;
+const FISH_BODY: u32 = 3u;
+const FISH_FIN: u32 = 4u;
+const FISH_EYE: u32 = 5u;
+
+struct VertexIn {
+    @location(0) position: vec3<f32>,
+    @location(1) material: u32,
+    @location(2) normal: vec3<f32>,
+    @location(3) color: vec4<f32>,
+};
+
+struct FishIn {
+    @location(4) position_length: vec4<f32>,  // xyz position (m), w body length (m)
+    @location(5) forward_phase: vec4<f32>,    // xyz unit forward, w tail phase (rad)
+    @location(6) color: vec4<f32>,            // rgb body colour, a stripe strength
+};
+
+struct Varyings {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) color: vec4<f32>,
+    // x: height across the fish body (−1 belly … 1 back), y: position along it.
+    @location(3) body: vec2<f32>,
+    @location(4) @interpolate(flat) material: u32,
+};
+
+// ---------------------------------------------------------------- water optics
+
+fn time() -> f32 {
+    return scene.eye.w;
+}
+
+// Entry and exit distances of a ray through the tank box (exit < entry: a miss).
+fn tank_span(origin: vec3<f32>, dir: vec3<f32>) -> vec2<f32> {
+    let inv = 1.0 / select(dir, vec3<f32>(1e-6), abs(dir) < vec3<f32>(1e-6));
+    let t0 = (scene.tank_min.xyz - origin) * inv;
+    let t1 = (scene.tank_max.xyz - origin) * inv;
+    let near = min(t0, t1);
+    let far = max(t0, t1);
+    return vec2<f32>(max(max(max(near.x, near.y), near.z), 0.0), min(min(far.x, far.y), far.z));
+}
+
+// Colour of the water itself: brighter and greener near the surface.
+fn water_color(y: f32) -> vec3<f32> {
+    let depth = clamp((scene.tank_max.y - y) / (scene.tank_max.y - scene.tank_min.y), 0.0, 1.0);
+    let shallow = vec3<f32>(0.10, 0.42, 0.52);
+    let deep = vec3<f32>(0.015, 0.11, 0.22);
+    return mix(shallow, deep, pow(depth, 0.8));
+}
+
+// Light lost and scattered on the way from a point to the eye through the water.
+fn fog(color: vec3<f32>, point: vec3<f32>) -> vec3<f32> {
+    let to_point = point - scene.eye.xyz;
+    let dist = length(to_point);
+    let span = tank_span(scene.eye.xyz, to_point / max(dist, 1e-4));
+    let path = max(min(dist, span.y) - span.x, 0.0);
+    let amount = 1.0 - exp(-path * scene.tank_min.w);
+    return mix(color, water_color(point.y), amount);
+}
+
+// Caustics: bright, moving webs of light focused by the rippled surface. A warped
+// grid of sine lines; two layers drifting apart give the shimmer.
+fn caustic_layer(p: vec2<f32>, t: f32) -> f32 {
+    var q = p;
+    q += 0.45 * vec2<f32>(sin(q.y * 1.9 + t * 0.8), cos(q.x * 1.6 - t * 0.7));
+    q += 0.30 * vec2<f32>(sin(q.y * 3.1 - t * 1.1), cos(q.x * 2.7 + t * 0.9));
+    let lines = pow(1.0 - abs(sin(q.x * 2.2)), 7.0) + pow(1.0 - abs(sin(q.y * 2.2)), 7.0);
+    return lines;
+}
+
+fn caustics(world: vec3<f32>) -> f32 {
+    let t = time();
+    let p = world.xz * 1.1;
+    let c = caustic_layer(p, t) * caustic_layer(p * 0.83 + vec2<f32>(3.1, 1.7), t * 1.13 + 2.0);
+    // Sharper near the surface, spread out deeper down.
+    let depth = clamp((scene.tank_max.y - world.y) / (scene.tank_max.y - scene.tank_min.y), 0.0, 1.0);
+    return c * mix(1.3, 0.7, depth);
+}
+
+fn hash2(p: vec2<f32>) -> f32 {
+    return fract(sin(dot(p, vec2<f32>(127.1, 311.7))) * 43758.5453);
+}
+
+fn to_gamma(linear: vec3<f32>) -> vec4<f32> {
+    return vec4<f32>(pow(max(linear, vec3<f32>(0.0)), vec3<f32>(1.0 / 2.2)), 1.0);
+}
+
+// ---------------------------------------------------------------- background
+
+struct BackgroundOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) ndc: vec2<f32>,
+};
+
+@vertex
+fn vs_background(@builtin(vertex_index) index: u32) -> BackgroundOut {
+    let xy = vec2<f32>(f32((index << 1u) & 2u), f32(index & 2u)) * 2.0 - 1.0;
+    var out: BackgroundOut;
+    out.clip = vec4<f32>(xy, 1.0, 1.0);
+    out.ndc = xy;
+    return out;
+}
+
+@fragment
+fn fs_background(in: BackgroundOut) -> @location(0) vec4<f32> {
+    let far = scene.clip_to_world * vec4<f32>(in.ndc, 1.0, 1.0);
+    let dir = normalize(far.xyz / far.w - scene.eye.xyz);
+    // The classroom behind the tank: a dim, cool gradient.
+    let room = mix(vec3<f32>(0.035, 0.04, 0.05), vec3<f32>(0.11, 0.13, 0.16), clamp(dir.y * 0.8 + 0.5, 0.0, 1.0));
+    let span = tank_span(scene.eye.xyz, dir);
+    if (span.y <= span.x) {
+        return to_gamma(room);
+    }
+    // Looking through the water to the back glass: the water's own colour, plus soft
+    // shafts of light from the surface.
+    let back = scene.eye.xyz + dir * span.y;
+    let path = span.y - span.x;
+    let amount = 1.0 - exp(-path * scene.tank_min.w * 1.6);
+    let shafts = 0.5 + 0.5 * sin(back.x * 1.7 + back.z * 0.9 + sin(back.x * 0.5 + time() * 0.4) * 2.0);
+    let height = clamp((back.y - scene.tank_min.y) / (scene.tank_max.y - scene.tank_min.y), 0.0, 1.0);
+    let water = water_color(back.y) * (1.0 + 0.25 * shafts * height);
+    return to_gamma(mix(room * 0.6, water, amount));
+}
+
+// ---------------------------------------------------------------- static meshes
+
+@vertex
+fn vs_static(v: VertexIn) -> Varyings {
+    var out: Varyings;
+    out.world = v.position;
+    out.clip = scene.world_to_clip * vec4<f32>(v.position, 1.0);
+    out.normal = v.normal;
+    out.color = v.color;
+    out.body = vec2<f32>(0.0);
+    out.material = v.material;
+    return out;
+}
+
+// ---------------------------------------------------------------- fish
+
+@vertex
+fn vs_fish(v: VertexIn, fish: FishIn) -> Varyings {
+    let x = v.position.x;
+    // Tail beat: a wave running from head to tail, its amplitude growing towards the
+    // tail (body lengths). Carangiform swimming: the front half barely moves.
+    let along = clamp((0.25 - x) / 1.0, 0.0, 1.0);
+    let amplitude = 0.11 * along * along + 0.006;
+    let wave = fish.forward_phase.w - 6.0 * (0.5 - x);
+    let lateral = amplitude * sin(wave);
+    let slope = amplitude * 6.0 * cos(wave) - 0.22 * along / 1.0 * sin(wave) * step(0.0, along);
+    var p = v.position + vec3<f32>(0.0, 0.0, lateral);
+    var n = normalize(vec3<f32>(v.normal.x - slope * v.normal.z, v.normal.y, v.normal.z));
+
+    let forward = fish.forward_phase.xyz;
+    var side = cross(forward, vec3<f32>(0.0, 1.0, 0.0));
+    if (dot(side, side) < 1e-6) {
+        side = vec3<f32>(0.0, 0.0, 1.0);
+    }
+    side = normalize(side);
+    let up = cross(side, forward);
+    let scale = fish.position_length.w;
+    let world = fish.position_length.xyz + scale * (forward * p.x + up * p.y + side * p.z);
+
+    var out: Varyings;
+    out.world = world;
+    out.clip = scene.world_to_clip * vec4<f32>(world, 1.0);
+    out.normal = normalize(forward * n.x + up * n.y + side * n.z);
+    out.color = fish.color;
+    out.body = vec2<f32>(clamp(v.position.y / 0.16, -1.0, 1.0), x);
+    out.material = v.material;
+    return out;
+}
+
+// ---------------------------------------------------------------- shading
+
+@fragment
+fn fs_lit(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
+    var n = normalize(in.normal);
+    if (!front) {
+        n = -n;
+    }
+    let to_eye = normalize(scene.eye.xyz - in.world);
+    let sun = scene.sun_dir.xyz;
+    var albedo = in.color.rgb;
+    var shininess = 0.0;
+    var caustic_gain = 0.55;
+
+    switch in.material {
+        case SAND: {
+            let ripple = sin(in.world.x * 5.0 + sin(in.world.z * 1.3) * 2.0) * 0.5 + 0.5;
+            let grain = hash2(floor(in.world.xz * 90.0));
+            albedo = vec3<f32>(0.66, 0.56, 0.40) * (0.84 + 0.12 * ripple + 0.1 * grain);
+            caustic_gain = 0.6;
+        }
+        case FRAME: {
+            albedo = in.color.rgb;
+            shininess = 24.0;
+            caustic_gain = 0.0;
+        }
+        case FISH_BODY: {
+            // Countershading: dark back, pale belly, as real fish have.
+            let back = in.body.x * 0.5 + 0.5;
+            albedo = mix(in.color.rgb * 1.25 + vec3<f32>(0.15), in.color.rgb * 0.55, smoothstep(0.1, 0.9, back));
+            // Vertical bars on some species.
+            let bars = smoothstep(0.55, 0.75, sin(in.body.y * 38.0) * 0.5 + 0.5) * in.color.a;
+            albedo = mix(albedo, albedo * 0.25, bars * step(-0.45, in.body.y) * step(in.body.y, 0.3));
+            shininess = 40.0;
+        }
+        case FISH_FIN: {
+            albedo = in.color.rgb * 0.8 + vec3<f32>(0.12);
+            shininess = 8.0;
+        }
+        case FISH_EYE: {
+            albedo = vec3<f32>(0.02);
+            shininess = 90.0;
+        }
+        default: {}
+    }
+
+    let diffuse = max(dot(n, sun), 0.0);
+    let sky = 0.5 + 0.5 * n.y;
+    let light = 0.28 + 0.22 * sky + 0.75 * diffuse;
+    let caustic = caustics(in.world) * caustic_gain * max(n.y, 0.0);
+    var color = albedo * (light + caustic);
+    if (shininess > 0.0) {
+        let h = normalize(sun + to_eye);
+        color += vec3<f32>(0.5) * pow(max(dot(n, h), 0.0), shininess) * diffuse;
+    }
+    return to_gamma(fog(color, in.world));
+}
+
+// ---------------------------------------------------------------- water surface
+
+struct SurfaceOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+};
+
+@vertex
+fn vs_surface(@builtin(vertex_index) index: u32) -> SurfaceOut {
+    var corners = array<vec2<f32>, 6>(
+        vec2<f32>(0.0, 0.0), vec2<f32>(1.0, 0.0), vec2<f32>(1.0, 1.0),
+        vec2<f32>(0.0, 0.0), vec2<f32>(1.0, 1.0), vec2<f32>(0.0, 1.0),
+    );
+    let c = corners[index];
+    let lo = scene.tank_min.xyz;
+    let hi = scene.tank_max.xyz;
+    let world = vec3<f32>(mix(lo.x, hi.x, c.x), hi.y - 0.02, mix(lo.z, hi.z, c.y));
+    var out: SurfaceOut;
+    out.world = world;
+    out.clip = scene.world_to_clip * vec4<f32>(world, 1.0);
+    return out;
+}
+
+@fragment
+fn fs_surface(in: SurfaceOut) -> @location(0) vec4<f32> {
+    let t = time();
+    let ripple = vec2<f32>(
+        sin(in.world.x * 2.3 + t * 1.3) + sin(in.world.z * 3.1 - t * 0.9) * 0.6,
+        cos(in.world.z * 2.1 + t * 1.1) + cos(in.world.x * 2.9 + t * 0.7) * 0.6,
+    ) * 0.06;
+    let n = normalize(vec3<f32>(ripple.x, 1.0, ripple.y));
+    let to_eye = normalize(scene.eye.xyz - in.world);
+    let fresnel = pow(1.0 - abs(dot(n, to_eye)), 3.0);
+    let h = normalize(scene.sun_dir.xyz + to_eye);
+    let glint = pow(max(dot(n, h), 0.0), 120.0);
+    let color = mix(vec3<f32>(0.35, 0.7, 0.8), vec3<f32>(0.9, 0.97, 1.0), fresnel) + vec3<f32>(glint);
+    let alpha = clamp(0.10 + 0.45 * fresnel + glint, 0.0, 0.85);
+    return vec4<f32>(pow(color, vec3<f32>(1.0 / 2.2)), alpha);
+}

@@ -1,0 +1,232 @@
+//! The automation API: what `window.shoal` offers tests and power users.
+//!
+//! | call | effect |
+//! | --- | --- |
+//! | `shoal.state()` | a plain object, see [`StateReport`] |
+//! | `shoal.settings()` | the current settings, by the names `set` takes |
+//! | `shoal.set({name: value, …})` | applies settings by the UI's names (see `settings.rs`); all or nothing |
+//! | `shoal.step(n)` | runs `n` simulation steps now (1 ≤ n ≤ 100,000), even while paused |
+//! | `shoal.pause()` / `shoal.play()` | stops / resumes the simulation |
+//! | `shoal.reset(seed?)` | rebuilds the world, from `seed` when given |
+//! | `shoal.widgets()` | where the main widgets are on the page, `{name: {x, y, width, height}}` in CSS pixels (for tests that click real widgets) |
+//!
+//! Arguments arrive as JSON values; this module parses and validates them, so the
+//! browser glue (`web/api.rs`) stays a thin shim and everything here is tested
+//! natively. A bad argument is an [`AutomationError`] that the browser throws as a JS
+//! `Error` with the same message; nothing changes.
+
+use serde::Serialize;
+use serde_json::Value;
+
+use crate::lab::Lab;
+use crate::settings::{SEED_MAX, SettingsError};
+
+/// Most steps one `shoal.step(n)` call may ask for (about 28 simulated minutes),
+/// so a typo cannot freeze the tab for minutes.
+pub const MAX_STEPS_PER_CALL: u32 = 100_000;
+
+/// One call of the automation API.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Command {
+    Set(Value),
+    Step(u32),
+    Pause,
+    Play,
+    Reset(Option<u64>),
+}
+
+/// Why a call was refused.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum AutomationError {
+    #[error(transparent)]
+    Settings(#[from] SettingsError),
+    #[error("{0}")]
+    BadArgument(String),
+    #[error("Shoal is not running (it stopped after an error; reload the page)")]
+    NotRunning,
+}
+
+impl Command {
+    /// `shoal.step(n)`: `n` defaults to 1.
+    pub fn step(n: Option<&Value>) -> Result<Self, AutomationError> {
+        match n {
+            None | Some(Value::Null) => Ok(Self::Step(1)),
+            Some(value) => whole_number(value, 1, u64::from(MAX_STEPS_PER_CALL))
+                .map(|n| Self::Step(n as u32))
+                .map_err(|reason| AutomationError::BadArgument(format!("step(n): {reason}"))),
+        }
+    }
+
+    /// `shoal.reset(seed?)`.
+    pub fn reset(seed: Option<&Value>) -> Result<Self, AutomationError> {
+        match seed {
+            None | Some(Value::Null) => Ok(Self::Reset(None)),
+            Some(value) => whole_number(value, 0, SEED_MAX)
+                .map(|seed| Self::Reset(Some(seed)))
+                .map_err(|reason| AutomationError::BadArgument(format!("reset(seed): {reason}"))),
+        }
+    }
+
+    /// Carries the command out on `lab`.
+    pub fn execute(self, lab: &mut Lab) -> Result<(), AutomationError> {
+        match self {
+            Self::Set(patch) => {
+                let mut settings = lab.settings().clone();
+                settings.apply_patch(&patch)?;
+                lab.apply_settings(settings);
+            }
+            Self::Step(n) => lab.step(n),
+            Self::Pause | Self::Play => {
+                let settings = crate::settings::Settings {
+                    paused: self == Self::Pause,
+                    ..lab.settings().clone()
+                };
+                lab.apply_settings(settings);
+            }
+            Self::Reset(seed) => lab.reset(seed),
+        }
+        Ok(())
+    }
+}
+
+fn whole_number(value: &Value, min: u64, max: u64) -> Result<u64, String> {
+    match value.as_u64() {
+        Some(n) if (min..=max).contains(&n) => Ok(n),
+        Some(n) => Err(format!("{n} is out of range: choose from {min} to {max}")),
+        None => Err(format!(
+            "expected a whole number from {min} to {max}, got {value}"
+        )),
+    }
+}
+
+/// What `shoal.state()` returns. Field names are stable: tests and teachers' scripts
+/// read them.
+#[derive(Clone, Debug, Serialize)]
+pub struct StateReport {
+    /// Simulated seconds since the last reset.
+    pub time_secs: f64,
+    /// Simulation steps since the last reset.
+    pub steps: u64,
+    pub fish_count: usize,
+    /// `"webgpu"` or `"webgl2"` in the browser; `"native"` on the desktop.
+    pub tier: &'static str,
+    /// Frames drawn per second over the last second.
+    pub fps: f64,
+    /// Simulation steps per second of real time over the last second.
+    pub steps_per_sec: f64,
+    pub paused: bool,
+    pub seed: u64,
+    pub scene: &'static str,
+    pub speed: f32,
+    /// True when the machine cannot keep up and the simulation runs slower than asked.
+    pub fell_behind: bool,
+    /// Benchmark progress and results, in `?bench` mode only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bench: Option<crate::bench::BenchReport>,
+}
+
+impl StateReport {
+    pub fn new(lab: &Lab, tier: &'static str, fps: f64) -> Self {
+        let world = lab.world();
+        let settings = lab.settings();
+        Self {
+            time_secs: world.time_secs(),
+            steps: world.steps(),
+            fish_count: world.fish().len(),
+            tier,
+            fps,
+            steps_per_sec: lab.steps_per_sec(),
+            paused: settings.paused,
+            seed: settings.seed,
+            scene: settings.scene.name(),
+            speed: settings.speed,
+            fell_behind: lab.fell_behind(),
+            bench: None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::settings::Settings;
+    use serde_json::json;
+
+    #[test]
+    fn step_runs_exactly_n_steps_even_when_paused() {
+        let mut lab = Lab::new(Settings::default());
+        Command::Pause.execute(&mut lab).unwrap();
+        Command::step(Some(&json!(25)))
+            .unwrap()
+            .execute(&mut lab)
+            .unwrap();
+        let state = StateReport::new(&lab, "webgl2", 60.0);
+        assert_eq!(state.steps, 25);
+        assert!(state.paused);
+        assert!((state.time_secs - 25.0 / 60.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn bad_step_counts_are_refused() {
+        for bad in [
+            json!(0),
+            json!(-1),
+            json!(1.5),
+            json!("3"),
+            json!(1_000_000),
+        ] {
+            let err = Command::step(Some(&bad)).unwrap_err();
+            assert!(err.to_string().starts_with("step(n):"), "{err}");
+        }
+        assert_eq!(Command::step(None).unwrap(), Command::Step(1));
+    }
+
+    #[test]
+    fn reset_with_a_seed_sets_the_seed_and_restarts() {
+        let mut lab = Lab::new(Settings::default());
+        lab.step(5);
+        Command::reset(Some(&json!(7)))
+            .unwrap()
+            .execute(&mut lab)
+            .unwrap();
+        let state = StateReport::new(&lab, "webgpu", 0.0);
+        assert_eq!((state.seed, state.steps), (7, 0));
+        assert!(Command::reset(Some(&json!(-7))).is_err());
+        assert!(Command::reset(Some(&json!(u64::MAX))).is_err());
+    }
+
+    #[test]
+    fn set_reports_the_same_names_back_in_state() {
+        let mut lab = Lab::new(Settings::default());
+        Command::Set(json!({"fish_count": 12, "speed": 4, "paused": true}))
+            .execute(&mut lab)
+            .unwrap();
+        let state = serde_json::to_value(StateReport::new(&lab, "webgpu", 0.0)).unwrap();
+        assert_eq!(state["fish_count"], 12);
+        assert_eq!(state["speed"], 4.0);
+        assert_eq!(state["paused"], true);
+        for key in [
+            "time_secs",
+            "steps",
+            "fish_count",
+            "tier",
+            "fps",
+            "paused",
+            "seed",
+            "scene",
+        ] {
+            assert!(state.get(key).is_some(), "state() lacks {key}");
+        }
+    }
+
+    #[test]
+    fn a_refused_set_changes_nothing() {
+        let mut lab = Lab::new(Settings::default());
+        let err = Command::Set(json!({"fish_count": 12, "speed": "fast"}))
+            .execute(&mut lab)
+            .unwrap_err();
+        assert!(err.to_string().contains("speed"), "{err}");
+        assert_eq!(lab.settings(), &Settings::default());
+        assert_eq!(lab.world().fish().len(), 200);
+    }
+}

@@ -1,0 +1,168 @@
+//! The in-app benchmark (`?bench` in the browser): for several fish counts it
+//! measures simulation throughput and the frame time with rendering, then reports a
+//! table (console, on screen, and `shoal.state().bench`). Figures, not assertions.
+
+use serde::Serialize;
+use web_time::Instant;
+
+use crate::lab::Lab;
+use crate::settings::Settings;
+
+/// Fish counts the benchmark visits.
+pub const FISH_COUNTS: [u32; 4] = [200, 2_000, 5_000, 20_000];
+/// Real seconds of rendered frames measured per fish count.
+const FRAMES_PHASE_SECS: f64 = 3.0;
+/// Real seconds of pure simulation stepping measured per fish count.
+const SIM_PHASE_SECS: f64 = 0.5;
+
+/// One row of results.
+#[derive(Clone, Debug, Serialize)]
+pub struct BenchRow {
+    pub fish: u32,
+    /// Simulation steps per second, stepping only (no drawing).
+    pub sim_steps_per_sec: f64,
+    /// `sim_steps_per_sec × fish`.
+    pub fish_steps_per_sec: f64,
+    /// Mean time between frames with rendering at 1× speed, milliseconds.
+    pub frame_ms: f64,
+    /// Mean CPU time of a frame (simulation, UI, frame building), milliseconds.
+    pub cpu_frame_ms: f64,
+}
+
+/// Progress and results, as `shoal.state().bench` reports them.
+#[derive(Clone, Debug, Serialize)]
+pub struct BenchReport {
+    pub done: bool,
+    pub rows: Vec<BenchRow>,
+}
+
+/// Drives the benchmark one frame at a time.
+pub struct Benchmark {
+    next: usize,
+    phase_start_secs: Option<f64>,
+    frames: u32,
+    cpu_secs: f64,
+    sim_steps_per_sec: f64,
+    rows: Vec<BenchRow>,
+}
+
+impl Default for Benchmark {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Benchmark {
+    pub fn new() -> Self {
+        Self {
+            next: 0,
+            phase_start_secs: None,
+            frames: 0,
+            cpu_secs: 0.0,
+            sim_steps_per_sec: 0.0,
+            rows: Vec::new(),
+        }
+    }
+
+    pub fn is_done(&self) -> bool {
+        self.next >= FISH_COUNTS.len()
+    }
+
+    pub fn report(&self) -> BenchReport {
+        BenchReport {
+            done: self.is_done(),
+            rows: self.rows.clone(),
+        }
+    }
+
+    /// Called once per frame, before the lab advances. `cpu_secs` is the previous
+    /// frame's CPU time, when eframe knows it.
+    pub fn frame(&mut self, lab: &mut Lab, now_secs: f64, cpu_secs: Option<f32>) {
+        let Some(&fish) = FISH_COUNTS.get(self.next) else {
+            return;
+        };
+        let Some(start) = self.phase_start_secs else {
+            lab.apply_settings(Settings {
+                fish_count: fish,
+                paused: false,
+                speed: 1.0,
+                ..lab.settings().clone()
+            });
+            self.sim_steps_per_sec = measure_steps_per_sec(lab);
+            self.phase_start_secs = Some(now_secs);
+            self.frames = 0;
+            self.cpu_secs = 0.0;
+            return;
+        };
+        self.frames += 1;
+        self.cpu_secs += f64::from(cpu_secs.unwrap_or(0.0));
+        let elapsed = now_secs - start;
+        if elapsed >= FRAMES_PHASE_SECS {
+            let frames = f64::from(self.frames.max(1));
+            let row = BenchRow {
+                fish,
+                sim_steps_per_sec: self.sim_steps_per_sec,
+                fish_steps_per_sec: self.sim_steps_per_sec * f64::from(fish),
+                frame_ms: elapsed * 1000.0 / frames,
+                cpu_frame_ms: self.cpu_secs * 1000.0 / frames,
+            };
+            log::info!(
+                "bench: {:>6} fish | {:>9.0} steps/s | {:>12.0} fish-steps/s | frame {:>6.2} ms | cpu {:>6.2} ms",
+                row.fish,
+                row.sim_steps_per_sec,
+                row.fish_steps_per_sec,
+                row.frame_ms,
+                row.cpu_frame_ms
+            );
+            self.rows.push(row);
+            self.next += 1;
+            self.phase_start_secs = None;
+            if self.is_done() {
+                lab.apply_settings(Settings {
+                    fish_count: Settings::default().fish_count,
+                    ..lab.settings().clone()
+                });
+            }
+        }
+    }
+}
+
+/// Steps the lab as fast as it goes for about `SIM_PHASE_SECS`.
+fn measure_steps_per_sec(lab: &mut Lab) -> f64 {
+    let start = Instant::now();
+    let mut steps = 0u32;
+    while start.elapsed().as_secs_f64() < SIM_PHASE_SECS {
+        lab.step(1);
+        steps += 1;
+    }
+    f64::from(steps) / start.elapsed().as_secs_f64()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn visits_every_fish_count_and_restores_the_default() {
+        let mut lab = Lab::new(Settings::default());
+        let mut bench = Benchmark::new();
+        let mut now = 0.0;
+        while !bench.is_done() && now < 100.0 {
+            bench.frame(&mut lab, now, Some(0.001));
+            now += 0.5;
+        }
+        let report = bench.report();
+        assert!(report.done);
+        assert_eq!(
+            report.rows.iter().map(|r| r.fish).collect::<Vec<_>>(),
+            FISH_COUNTS.to_vec()
+        );
+        assert!(
+            report
+                .rows
+                .iter()
+                .all(|r| r.sim_steps_per_sec > 0.0 && r.frame_ms > 0.0)
+        );
+        assert_eq!(lab.world().fish().len(), 200);
+    }
+}

@@ -1,0 +1,23 @@
+//! Shoal: a virtual ethology lab. Artificial fishes swim, see and school in a 3D
+//! aquarium that runs in the browser (WebAssembly + wgpu + egui).
+//!
+//! The data flows one way (see ARCHITECTURE.md):
+//! `sim` (pure, deterministic) → `lab` (settings + fixed-step clock) → `render`
+//! (reads the lab, draws with wgpu) and `ui` (egui panels that edit settings);
+//! `app` ties them together; `automation` is the `window.shoal` API; `web` is the
+//! browser glue.
+
+pub mod app;
+pub mod automation;
+pub mod bench;
+pub mod clock;
+pub mod lab;
+pub mod render;
+pub mod settings;
+pub mod sim;
+pub mod ui;
+
+#[cfg(target_arch = "wasm32")]
+pub mod web;
+
+pub use app::ShoalApp;

@@ -1,0 +1,167 @@
+//! The orbit camera: it circles a target point inside the tank.
+//!
+//! Drag to rotate, wheel or pinch to zoom, right-drag (or two-finger drag) to pan.
+//! The input handling reads egui's already-unified pointer and touch gestures, so
+//! mouse, trackpad and touch screens all work.
+
+use glam::{Mat4, Vec3, vec3};
+
+/// Where the camera looks from, in spherical coordinates around `target_m`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OrbitCamera {
+    /// Point the camera circles, metres in world space.
+    pub target_m: Vec3,
+    /// Angle around the vertical axis, radians; 0 looks along −z (front view).
+    pub yaw_rad: f32,
+    /// Angle above the horizontal, radians, within ±85°.
+    pub pitch_rad: f32,
+    /// Distance from the target, metres.
+    pub distance_m: f32,
+    /// Vertical field of view, radians.
+    pub fov_y_rad: f32,
+}
+
+const PITCH_LIMIT_RAD: f32 = 85.0 * std::f32::consts::PI / 180.0;
+const MIN_DISTANCE_M: f32 = 1.0;
+const MAX_DISTANCE_M: f32 = 60.0;
+
+impl OrbitCamera {
+    /// A view of the whole tank from the front and a little above, like standing in
+    /// front of an aquarium.
+    pub fn framing(tank_min_m: Vec3, tank_max_m: Vec3) -> Self {
+        let center = (tank_min_m + tank_max_m) * 0.5;
+        let size = tank_max_m - tank_min_m;
+        let mut camera = Self {
+            target_m: center - vec3(0.0, size.y * 0.08, 0.0),
+            yaw_rad: -0.18,
+            pitch_rad: 0.22,
+            distance_m: size.length() * 0.5,
+            fov_y_rad: 40f32.to_radians(),
+        };
+        // Back off until every corner fits a 16:9 view with a small margin.
+        let corners: Vec<Vec3> = (0..8)
+            .map(|i| {
+                vec3(
+                    if i & 1 == 0 {
+                        tank_min_m.x
+                    } else {
+                        tank_max_m.x
+                    },
+                    if i & 2 == 0 {
+                        tank_min_m.y
+                    } else {
+                        tank_max_m.y
+                    },
+                    if i & 4 == 0 {
+                        tank_min_m.z
+                    } else {
+                        tank_max_m.z
+                    },
+                )
+            })
+            .collect();
+        for _ in 0..100 {
+            let m = camera.world_to_clip(16.0 / 9.0);
+            let fits = corners.iter().all(|&c| {
+                let clip = m * c.extend(1.0);
+                clip.w > 0.0 && clip.x.abs() < 0.94 * clip.w && clip.y.abs() < 0.94 * clip.w
+            });
+            if fits || camera.distance_m >= MAX_DISTANCE_M {
+                break;
+            }
+            camera.distance_m *= 1.03;
+        }
+        camera
+    }
+
+    /// Camera position in world space, metres.
+    pub fn eye_m(&self) -> Vec3 {
+        let (sy, cy) = self.yaw_rad.sin_cos();
+        let (sp, cp) = self.pitch_rad.sin_cos();
+        self.target_m + self.distance_m * vec3(sy * cp, sp, cy * cp)
+    }
+
+    /// Projection × view for a viewport of the given aspect ratio (width / height).
+    pub fn world_to_clip(&self, aspect: f32) -> Mat4 {
+        let aspect = if aspect.is_finite() && aspect > 0.0 {
+            aspect
+        } else {
+            1.0
+        };
+        let view = Mat4::look_at_rh(self.eye_m(), self.target_m, Vec3::Y);
+        let proj = Mat4::perspective_rh(self.fov_y_rad, aspect, 0.1, 200.0);
+        proj * view
+    }
+
+    /// Rotates by a drag of `(dx, dy)` points.
+    pub fn rotate(&mut self, dx_points: f32, dy_points: f32) {
+        self.yaw_rad -= dx_points * 0.008;
+        self.pitch_rad =
+            (self.pitch_rad + dy_points * 0.008).clamp(-PITCH_LIMIT_RAD, PITCH_LIMIT_RAD);
+    }
+
+    /// Zooms by a factor (> 1 moves closer), as egui's `zoom_delta` reports.
+    pub fn zoom(&mut self, factor: f32) {
+        if factor.is_finite() && factor > 0.0 {
+            self.distance_m = (self.distance_m / factor).clamp(MIN_DISTANCE_M, MAX_DISTANCE_M);
+        }
+    }
+
+    /// Pans the target in the view plane by a drag of `(dx, dy)` points in a viewport
+    /// `viewport_height_points` tall, so the scene follows the pointer.
+    pub fn pan(&mut self, dx_points: f32, dy_points: f32, viewport_height_points: f32) {
+        let forward = (self.target_m - self.eye_m()).normalize_or_zero();
+        let right = forward.cross(Vec3::Y).normalize_or_zero();
+        let up = right.cross(forward);
+        let metres_per_point =
+            2.0 * self.distance_m * (self.fov_y_rad * 0.5).tan() / viewport_height_points.max(1.0);
+        self.target_m += (-right * dx_points + up * dy_points) * metres_per_point;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_default_view_sees_every_corner_of_the_tank() {
+        let (lo, hi) = (vec3(-6.0, 0.0, -4.0), vec3(6.0, 4.5, 4.0));
+        let camera = OrbitCamera::framing(lo, hi);
+        let m = camera.world_to_clip(16.0 / 9.0);
+        for i in 0..8 {
+            let corner = vec3(
+                if i & 1 == 0 { lo.x } else { hi.x },
+                if i & 2 == 0 { lo.y } else { hi.y },
+                if i & 4 == 0 { lo.z } else { hi.z },
+            );
+            let clip = m * corner.extend(1.0);
+            let ndc = clip.truncate() / clip.w;
+            assert!(
+                clip.w > 0.0 && ndc.x.abs() < 1.0 && ndc.y.abs() < 1.0,
+                "{corner} → {ndc}"
+            );
+        }
+    }
+
+    #[test]
+    fn zoom_and_rotation_stay_in_bounds() {
+        let mut camera = OrbitCamera::framing(Vec3::ZERO, Vec3::ONE);
+        camera.zoom(1e9);
+        assert_eq!(camera.distance_m, MIN_DISTANCE_M);
+        camera.zoom(f32::NAN);
+        camera.zoom(0.0);
+        assert_eq!(camera.distance_m, MIN_DISTANCE_M);
+        camera.rotate(0.0, 1e6);
+        assert!(camera.pitch_rad <= PITCH_LIMIT_RAD);
+        assert!(camera.world_to_clip(0.0).is_finite());
+    }
+
+    #[test]
+    fn panning_moves_the_target_sideways() {
+        let mut camera = OrbitCamera::framing(Vec3::ZERO, Vec3::ONE);
+        let before = camera.target_m;
+        camera.pan(100.0, 0.0, 500.0);
+        assert!(camera.target_m.distance(before) > 0.0);
+        assert!((camera.target_m.y - before.y).abs() < 1e-4);
+    }
+}

@@ -1,0 +1,19 @@
+//! The pure simulation of the aquarium: tank, obstacles, fish and how they
+//! steer. Nothing in here draws, plays sound or knows about the web: the app
+//! reads a [`World`] after each fixed [`World::step`] and renders it.
+//!
+//! Units are SI throughout (metres, seconds, radians) and every name carries
+//! its unit (`speed_m_per_s`, `radius_m`, `dt_secs`). The y axis points up and
+//! the sand floor is at y = 0. A run is fully determined by its seed.
+
+pub mod fish;
+pub mod obstacle;
+pub mod steering;
+pub mod tank;
+pub mod world;
+
+pub use fish::Fish;
+pub use obstacle::Obstacle;
+pub use steering::SteeringParams;
+pub use tank::Tank;
+pub use world::{DT_SECS, World, WorldConfig};

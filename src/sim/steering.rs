@@ -1,0 +1,467 @@
+//! Steering behaviours after Craig Reynolds, "Steering Behaviors For
+//! Autonomous Characters" (GDC 1999).
+//!
+//! Each behaviour is a small free function that returns a steering
+//! acceleration in m/s²; the caller adds several of them with weights, and
+//! [`Fish::integrate`] limits the sum to a maximum force and the resulting
+//! velocity to a speed range. Most behaviours follow Reynolds' recipe
+//! `steering = desired velocity − current velocity`, read as an acceleration
+//! that would reach the desired velocity in one second.
+
+use std::f32::consts::PI;
+
+use glam::Vec3;
+use rand::Rng;
+use serde::{Deserialize, Serialize};
+
+use super::fish::Fish;
+use super::obstacle::Obstacle;
+use super::tank::Tank;
+
+/// Fraction of the wander pitch that fades away each step (dimensionless).
+/// Default 0.01: at 60 steps/s a tilt halves in about 1.2 s, so fish glide
+/// up or down for a moment and then level out instead of drifting to the
+/// floor or surface; with the default jitter the typical tilt is about 14°.
+pub const WANDER_PITCH_FADE_PER_STEP: f32 = 0.01;
+
+/// Extra room a fish keeps from an obstacle's surface when planning its path,
+/// in metres. Default 0.3 m: about one body length, so a fish passes a rock
+/// with a visible gap instead of scraping along it.
+pub const AVOIDANCE_CLEARANCE_M: f32 = 0.3;
+
+/// Tuning of the steering behaviours. Defaults make a calm aquarium of fish
+/// about 0.3 m long; the app may expose them as sliders.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SteeringParams {
+    /// Top speed in m/s. Default 0.8 m/s (≈ 2.7 body lengths/s): a brisk
+    /// dart for a 0.3 m fish; faster looks frantic in a 12 m tank.
+    pub max_speed_m_per_s: f32,
+    /// Lowest speed in m/s. Default 0.15 m/s: fish keep swimming, and a
+    /// moving fish always has a heading to turn with.
+    pub min_speed_m_per_s: f32,
+    /// Relaxed swimming speed in body lengths per second; wander aims for it.
+    /// Default 1.5 /s: typical cruising of small fish (0.33–0.57 m/s for
+    /// 0.22–0.38 m fish), so bigger fish cruise a little faster.
+    pub cruise_speed_body_lengths_per_s: f32,
+    /// Largest steering acceleration in m/s². Default 1.5 m/s²: at 0.8 m/s
+    /// the tightest turn has a radius of v²/a ≈ 0.43 m, about 1.5 body
+    /// lengths, which looks agile but not robotic.
+    pub max_force_m_per_s2: f32,
+    /// How far ahead of the fish the wander circle sits, in metres.
+    /// Default 1.0 m: with the radius below the wander target is at most
+    /// atan(0.5/1.0) ≈ 27° off the heading, giving gentle curves.
+    pub wander_distance_m: f32,
+    /// Radius of the wander circle in metres. Default 0.5 m (see above).
+    pub wander_radius_m: f32,
+    /// Largest random change of the wander angle per step (at 60 steps/s), in
+    /// radians. Default 0.2 rad: the target drifts around the circle in a
+    /// few seconds, so paths meander without jittering.
+    pub wander_jitter_rad: f32,
+    /// Largest random change of the wander pitch per step, in radians.
+    /// Default 0.06 rad: depth changes are gentler than turns.
+    pub wander_pitch_jitter_rad: f32,
+    /// Largest up/down tilt of the wander target, in radians. Default 0.35
+    /// rad (20°): fish mostly swim level, gliding up and down a little.
+    pub wander_max_pitch_rad: f32,
+    /// Weight of wander in the sum (dimensionless). Default 1: the baseline.
+    pub wander_weight: f32,
+    /// Weight of tank containment (dimensionless). Default 2: walls win over
+    /// wandering.
+    pub containment_weight: f32,
+    /// Weight of obstacle avoidance (dimensionless). Default 1.5: a rock
+    /// first seen at the look-ahead distance gives a push of 0.8 × 1.5 =
+    /// 1.2 m/s², just under the max force, and the push saturates as the
+    /// gap closes, so the swerve starts gently and then wins over wandering.
+    pub avoidance_weight: f32,
+    /// How far ahead in time containment predicts the path, in seconds.
+    /// Default 1.5 s: at top speed the fish reacts 1.2 m before the margin,
+    /// more than twice its tightest turning radius.
+    pub containment_look_ahead_s: f32,
+    /// Distance from the glass, floor and surface that the predicted path
+    /// must keep, in metres. Default 0.5 m: fish turn one to two body
+    /// lengths before the glass and never need the hard rule.
+    pub containment_margin_m: f32,
+    /// How far ahead obstacle avoidance looks, in metres. Default 2.0 m:
+    /// enough to pass the largest rock (1 m radius) with a smooth curve.
+    pub avoidance_look_ahead_m: f32,
+}
+
+impl Default for SteeringParams {
+    fn default() -> Self {
+        Self {
+            max_speed_m_per_s: 0.8,
+            min_speed_m_per_s: 0.15,
+            cruise_speed_body_lengths_per_s: 1.5,
+            max_force_m_per_s2: 1.5,
+            wander_distance_m: 1.0,
+            wander_radius_m: 0.5,
+            wander_jitter_rad: 0.2,
+            wander_pitch_jitter_rad: 0.06,
+            wander_max_pitch_rad: 0.35,
+            wander_weight: 1.0,
+            containment_weight: 2.0,
+            avoidance_weight: 1.5,
+            containment_look_ahead_s: 1.5,
+            containment_margin_m: 0.5,
+            avoidance_look_ahead_m: 2.0,
+        }
+    }
+}
+
+/// `v` shortened to at most `max_len` (longer vectors keep their direction).
+/// A non-finite `v` gives zero and a negative or NaN `max_len` counts as 0,
+/// so the result is always finite.
+pub fn limit(v: Vec3, max_len: f32) -> Vec3 {
+    let max_len = max_len.max(0.0);
+    let len = v.length();
+    if !len.is_finite() {
+        Vec3::ZERO
+    } else if len > max_len {
+        v * (max_len / len)
+    } else {
+        v
+    }
+}
+
+/// Seek: steer towards `target_m` at `max_speed_m_per_s`.
+///
+/// `desired = normalize(target − pos) · max_speed`, `steering = desired − vel`.
+/// At the target itself the desired velocity is zero (so it brakes).
+pub fn seek(pos_m: Vec3, vel_m_per_s: Vec3, target_m: Vec3, max_speed_m_per_s: f32) -> Vec3 {
+    let desired_m_per_s = (target_m - pos_m).normalize_or_zero() * max_speed_m_per_s;
+    desired_m_per_s - vel_m_per_s
+}
+
+/// Wander: Reynolds' random but smooth swimming.
+///
+/// A circle of radius `wander_radius_m` lies `wander_distance_m` ahead of the
+/// fish, along its horizontal heading tilted up or down by `wander_pitch_rad`.
+/// A target point on the circle, at `wander_angle_rad` around it, moves a
+/// little at random each step; the fish seeks it at its cruising speed:
+///
+/// `angle += U(−jitter, jitter)`,
+/// `pitch = clamp((pitch + U(−pj, pj)) · (1 − WANDER_PITCH_FADE_PER_STEP), ±max)`,
+/// `target = pos + d·(cos pitch·fwd + sin pitch·up) + r·(cos angle·fwd + sin angle·side)`,
+/// `steering = seek(pos, vel, target, cruise_speed)`.
+///
+/// The circle is level and the pitch small and fading, so fish swim mostly
+/// level, gliding slowly up and down. Updates the fish's wander angles.
+pub fn wander(fish: &mut Fish, rng: &mut impl Rng, params: &SteeringParams) -> Vec3 {
+    let angle_rad = fish.wander_angle_rad + signed_unit(rng) * params.wander_jitter_rad;
+    let pitch_rad = (fish.wander_pitch_rad + signed_unit(rng) * params.wander_pitch_jitter_rad)
+        * (1.0 - WANDER_PITCH_FADE_PER_STEP);
+    let max_pitch_rad = params.wander_max_pitch_rad.abs();
+    // Angle wrapped to −π..π, pitch clamped; a NaN from a broken slider resets to 0.
+    fish.wander_angle_rad = finite_or_zero((angle_rad + PI).rem_euclid(2.0 * PI) - PI);
+    fish.wander_pitch_rad = finite_or_zero(pitch_rad.max(-max_pitch_rad).min(max_pitch_rad));
+
+    let forward = (fish.heading() * Vec3::new(1.0, 0.0, 1.0)).normalize_or(Vec3::X);
+    let side = forward.cross(Vec3::Y);
+    let (sin_pitch, cos_pitch) = fish.wander_pitch_rad.sin_cos();
+    let (sin_angle, cos_angle) = fish.wander_angle_rad.sin_cos();
+    let circle_center_m =
+        fish.position_m + (cos_pitch * forward + sin_pitch * Vec3::Y) * params.wander_distance_m;
+    let target_m =
+        circle_center_m + (cos_angle * forward + sin_angle * side) * params.wander_radius_m;
+
+    let cruise_m_per_s = params.cruise_speed_body_lengths_per_s * fish.body_length_m;
+    seek(
+        fish.position_m,
+        fish.velocity_m_per_s,
+        target_m,
+        cruise_m_per_s,
+    )
+}
+
+/// Containment: turn away from the glass, the floor and the water surface
+/// before reaching them.
+///
+/// Predict `future = pos + vel · look_ahead_s`. If it is inside the tank
+/// shrunk by `margin_m`, return zero. Otherwise the fish turns the way real
+/// fish do, each turn at full strength and perpendicular to its heading:
+///
+/// - if `future` is too close to the glass, turn left or right towards open
+///   water: `m` = horizontal direction from the fish to the middle of the
+///   tank, `f` = horizontal heading, `yaw = normalize(m − (m·f) f)`;
+/// - if it is too close to the floor or surface, pitch up or down:
+///   `u` = ±y towards the safe height, `h` = heading,
+///   `pitch = normalize(u − (u·h) h)`;
+/// - `steering = (yaw + pitch) · max_speed`.
+///
+/// Turning instead of braking keeps the fish moving (fish do not swim
+/// backwards). Aiming at fixed goals (the middle, up or down) rather than at
+/// the nearest wall means a fish in a corner never dithers between two
+/// walls. A fish aimed exactly away from the goal turns to its right.
+pub fn containment(
+    pos_m: Vec3,
+    vel_m_per_s: Vec3,
+    tank: &Tank,
+    look_ahead_s: f32,
+    margin_m: f32,
+    max_speed_m_per_s: f32,
+) -> Vec3 {
+    let future_m = pos_m + vel_m_per_s * look_ahead_s;
+    let safe_m = tank.clamp_inside(future_m, margin_m);
+    let right = horizontal_side(vel_m_per_s);
+    let flat = Vec3::new(1.0, 0.0, 1.0);
+
+    let near_glass = future_m.x != safe_m.x || future_m.z != safe_m.z;
+    let yaw = if near_glass {
+        let to_middle = ((tank.center_m() - pos_m) * flat).normalize_or_zero();
+        turn_towards(to_middle, (vel_m_per_s * flat).normalize_or_zero(), right)
+    } else {
+        Vec3::ZERO
+    };
+    let pitch = if future_m.y != safe_m.y {
+        let up_or_down = Vec3::Y * (safe_m.y - future_m.y).signum();
+        turn_towards(up_or_down, vel_m_per_s.normalize_or_zero(), right)
+    } else {
+        Vec3::ZERO
+    };
+    (yaw + pitch) * max_speed_m_per_s
+}
+
+/// The unit direction, perpendicular to `heading`, in which the heading must
+/// rotate to point at `goal`: `normalize(goal − (goal·heading) heading)`, or
+/// `tie_break` if `goal` is straight ahead or behind, or zero if `goal` is.
+fn turn_towards(goal: Vec3, heading: Vec3, tie_break: Vec3) -> Vec3 {
+    if goal == Vec3::ZERO {
+        return Vec3::ZERO;
+    }
+    (goal - heading * goal.dot(heading)).normalize_or(tie_break)
+}
+
+/// Obstacle avoidance: swerve around the nearest obstacle in the fish's path.
+///
+/// An obstacle is "in the path" if its core (a rock's centre, or the point of
+/// a pillar's axis at the fish's height) lies ahead, no further than
+/// `look_ahead_m` plus its radius, and the straight path passes closer to the
+/// core than radius + [`AVOIDANCE_CLEARANCE_M`]. For the one whose surface is
+/// nearest, with `offset` the vector from the path to the core
+/// (perpendicular to the velocity) and `d` the current distance to its
+/// surface:
+///
+/// `steering = normalize(−offset) · max_speed · look_ahead_m / max(d, 0.1 m)`
+///
+/// i.e. a sideways push away from the obstacle that grows as the gap
+/// closes. A fish aimed exactly at the centre swerves to its right.
+pub fn avoid_obstacles(
+    pos_m: Vec3,
+    vel_m_per_s: Vec3,
+    obstacles: &[Obstacle],
+    look_ahead_m: f32,
+    max_speed_m_per_s: f32,
+) -> Vec3 {
+    /// Smallest distance used in the strength formula, in metres: keeps the
+    /// push finite when a fish touches the surface.
+    const MIN_GAP_M: f32 = 0.1;
+
+    let direction = vel_m_per_s.normalize_or_zero();
+    if direction == Vec3::ZERO {
+        return Vec3::ZERO;
+    }
+    // (distance to surface, offset from path to core) of the nearest threat.
+    let mut nearest: Option<(f32, Vec3)> = None;
+    for obstacle in obstacles {
+        let to_core_m = obstacle.core_point_m(pos_m) - pos_m;
+        let ahead_m = to_core_m.dot(direction);
+        let offset_m = to_core_m - direction * ahead_m;
+        let radius_m = obstacle.radius_m();
+        let in_path = ahead_m > 0.0
+            && ahead_m <= look_ahead_m + radius_m
+            && offset_m.length() < radius_m + AVOIDANCE_CLEARANCE_M;
+        let gap_m = obstacle.signed_distance_m(pos_m);
+        if in_path && nearest.is_none_or(|(nearest_gap_m, _)| gap_m < nearest_gap_m) {
+            nearest = Some((gap_m, offset_m));
+        }
+    }
+    let Some((gap_m, offset_m)) = nearest else {
+        return Vec3::ZERO;
+    };
+    let away = (-offset_m).normalize_or(horizontal_side(direction));
+    away * max_speed_m_per_s * look_ahead_m / gap_m.max(MIN_GAP_M)
+}
+
+/// The horizontal direction to the right of `v` (`v × up`), or +z if `v` is
+/// vertical or zero. Used to break ties when a fish swims straight at
+/// something.
+fn horizontal_side(v: Vec3) -> Vec3 {
+    v.cross(Vec3::Y).normalize_or(Vec3::Z)
+}
+
+/// `x` if it is a finite number, else 0.
+fn finite_or_zero(x: f32) -> f32 {
+    if x.is_finite() { x } else { 0.0 }
+}
+
+/// A uniform random number in [−1, 1). Multiplying it by a jitter never
+/// panics, unlike building a range from a user-set value.
+fn signed_unit(rng: &mut impl Rng) -> f32 {
+    rng.random::<f32>() * 2.0 - 1.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sim::world::DT_SECS;
+    use rand::SeedableRng;
+    use rand_chacha::ChaCha8Rng;
+
+    #[test]
+    fn limit_shortens_long_vectors_only_and_is_never_nan() {
+        assert_eq!(
+            limit(Vec3::new(3.0, 4.0, 0.0), 1.0),
+            Vec3::new(0.6, 0.8, 0.0)
+        );
+        assert_eq!(limit(Vec3::X * 0.5, 1.0), Vec3::X * 0.5);
+        assert_eq!(limit(Vec3::INFINITY, 1.0), Vec3::ZERO);
+        assert_eq!(limit(Vec3::X, -1.0), Vec3::ZERO);
+    }
+
+    #[test]
+    fn seek_points_from_current_to_desired_velocity() {
+        let steer = seek(Vec3::ZERO, Vec3::X, Vec3::new(0.0, 0.0, 5.0), 2.0);
+        assert_eq!(steer, Vec3::new(-1.0, 0.0, 2.0));
+        assert_eq!(seek(Vec3::ONE, Vec3::ZERO, Vec3::ONE, 2.0), Vec3::ZERO);
+    }
+
+    #[test]
+    fn wander_keeps_a_fish_swimming_mostly_level() {
+        let params = SteeringParams::default();
+        let mut rng = ChaCha8Rng::seed_from_u64(7);
+        let mut fish = Fish::new(Vec3::ZERO, Vec3::X * 0.4, 0.3, 0.0);
+        let mut max_climb: f32 = 0.0;
+        let mut turned = false;
+        for _ in 0..3_600 {
+            let steer = wander(&mut fish, &mut rng, &params);
+            fish.integrate(steer, &params, DT_SECS);
+            max_climb = max_climb.max(fish.heading().y.abs());
+            turned |= fish.heading().x < 0.0;
+        }
+        assert!(max_climb < 0.5, "climb angle too steep: sin = {max_climb}");
+        assert!(
+            turned,
+            "a wandering fish should change direction in a minute"
+        );
+    }
+
+    /// Swims a fish with `steer` (soft steering only, no hard constraints)
+    /// for `secs` seconds and returns its path.
+    fn swim(mut fish: Fish, secs: f32, mut steer: impl FnMut(&mut Fish) -> Vec3) -> Vec<Fish> {
+        let params = SteeringParams::default();
+        let steps = (secs / DT_SECS) as usize;
+        (0..steps)
+            .map(|_| {
+                let steering = steer(&mut fish);
+                fish.integrate(steering, &params, DT_SECS);
+                fish
+            })
+            .collect()
+    }
+
+    /// Weighted containment with the default parameters.
+    fn contain(fish: &Fish, tank: &Tank) -> Vec3 {
+        let p = SteeringParams::default();
+        containment(
+            fish.position_m,
+            fish.velocity_m_per_s,
+            tank,
+            p.containment_look_ahead_s,
+            p.containment_margin_m,
+            p.max_speed_m_per_s,
+        ) * p.containment_weight
+    }
+
+    /// Weighted obstacle avoidance with the default parameters.
+    fn avoid(fish: &Fish, obstacles: &[Obstacle]) -> Vec3 {
+        let p = SteeringParams::default();
+        avoid_obstacles(
+            fish.position_m,
+            fish.velocity_m_per_s,
+            obstacles,
+            p.avoidance_look_ahead_m,
+            p.max_speed_m_per_s,
+        ) * p.avoidance_weight
+    }
+
+    /// Smallest signed distance between the path and the obstacle, metres.
+    fn min_gap_m(path: &[Fish], obstacle: &Obstacle) -> f32 {
+        path.iter()
+            .map(|f| obstacle.signed_distance_m(f.position_m))
+            .fold(f32::INFINITY, f32::min)
+    }
+
+    #[test]
+    fn fish_heading_straight_at_a_rock_swerves_before_touching_it() {
+        let rock = [Obstacle::Rock {
+            center_m: Vec3::new(4.0, 1.0, 0.0),
+            radius_m: 1.0,
+        }];
+        let start = Fish::new(Vec3::new(0.0, 1.0, 0.0), Vec3::X * 0.8, 0.3, 0.0);
+        let path = swim(start, 15.0, |f| avoid(f, &rock));
+        let gap_m = min_gap_m(&path, &rock[0]);
+        assert!(gap_m > 0.0, "touched the rock: gap {gap_m} m");
+        let end_x_m = path.last().map(|f| f.position_m.x).unwrap_or_default();
+        assert!(end_x_m > 6.0, "did not get past the rock: x = {end_x_m}");
+    }
+
+    #[test]
+    fn fish_heading_straight_at_a_pillar_swerves_before_touching_it() {
+        let pillar = [Obstacle::Cylinder {
+            base_center_m: Vec3::new(0.0, 0.0, 3.0),
+            radius_m: 0.5,
+            height_m: 3.0,
+        }];
+        let start = Fish::new(Vec3::new(0.0, 1.5, 0.0), Vec3::Z * 0.8, 0.3, 0.0);
+        let path = swim(start, 15.0, |f| avoid(f, &pillar));
+        let gap_m = min_gap_m(&path, &pillar[0]);
+        assert!(gap_m > 0.0, "touched the pillar: gap {gap_m} m");
+    }
+
+    #[test]
+    fn fish_heading_straight_at_a_wall_turns_back_before_reaching_it() {
+        let tank = Tank::default();
+        let start = Fish::new(Vec3::new(0.0, 2.0, 0.0), Vec3::X * 0.8, 0.3, 0.0);
+        let path = swim(start, 30.0, |f| contain(f, &tank));
+        let max_x_m = path.iter().map(|f| f.position_m.x).fold(f32::MIN, f32::max);
+        assert!(
+            max_x_m < tank.max_m.x - 0.2,
+            "within 0.2 m of the glass: x = {max_x_m}"
+        );
+        assert!(path.iter().all(|f| tank.contains(f.position_m, 0.1)));
+        assert!(
+            path.iter().any(|f| f.velocity_m_per_s.x < -0.5),
+            "never swam back"
+        );
+    }
+
+    #[test]
+    fn fish_diving_at_the_floor_levels_out_above_the_sand() {
+        let tank = Tank::default();
+        let start = Fish::new(Vec3::new(0.0, 2.0, 0.0), Vec3::NEG_Y * 0.8, 0.3, 0.0);
+        let path = swim(start, 10.0, |f| contain(f, &tank));
+        let min_y_m = path.iter().map(|f| f.position_m.y).fold(f32::MAX, f32::min);
+        assert!(min_y_m > 0.2, "within 0.2 m of the sand: y = {min_y_m}");
+    }
+
+    #[test]
+    fn wandering_fish_never_touch_the_glass_with_soft_steering_alone() {
+        let params = SteeringParams::default();
+        let tank = Tank::default();
+        let mut rng = ChaCha8Rng::seed_from_u64(3);
+        for _ in 0..40 {
+            let u = Vec3::new(rng.random(), rng.random(), rng.random());
+            let position_m = tank.min_m + Vec3::splat(0.6) + u * (tank.size_m() - 1.2);
+            let yaw_rad = rng.random::<f32>() * 2.0 * PI;
+            let velocity = Vec3::new(yaw_rad.cos(), 0.0, yaw_rad.sin()) * 0.8;
+            let start = Fish::new(position_m, velocity, 0.3, 0.0);
+            let path = swim(start, 60.0, |f| {
+                wander(f, &mut rng, &params) * params.wander_weight + contain(f, &tank)
+            });
+            for fish in &path {
+                let p = fish.position_m;
+                assert!(tank.contains(p, 0.1), "too close to the glass: {p}");
+            }
+        }
+    }
+}

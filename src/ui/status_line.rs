@@ -1,0 +1,45 @@
+//! The status line under the aquarium: frame rate, simulation rate, GPU tier, time.
+
+use eframe::egui;
+
+use crate::automation::StateReport;
+use crate::render::RenderCaps;
+
+/// Draws the status line.
+pub fn status_line_ui(ui: &mut egui::Ui, state: &StateReport, caps: RenderCaps) {
+    ui.horizontal(|ui| {
+        ui.label(format!("{:.0} FPS", state.fps))
+            .on_hover_text("Pictures drawn per second");
+        ui.separator();
+        ui.label(format!("{:.0} steps/s", state.steps_per_sec))
+            .on_hover_text("Simulation steps computed per second of real time");
+        ui.separator();
+        let aa = if caps.msaa_samples > 1 {
+            format!(", {}× MSAA", caps.msaa_samples)
+        } else {
+            String::new()
+        };
+        ui.label(format!("{}{aa}", caps.tier.label()))
+            .on_hover_text(
+                "The graphics system your browser gave Shoal: WebGPU is the newest, \
+             WebGL2 works everywhere else",
+            );
+        ui.separator();
+        ui.label(format!("t = {:.1} s", state.time_secs))
+            .on_hover_text("Simulated time since the start");
+        ui.separator();
+        ui.label(format!("{} fish", state.fish_count));
+        if state.paused {
+            ui.separator();
+            ui.label(egui::RichText::new("paused").strong());
+        }
+        if state.fell_behind {
+            ui.separator();
+            ui.label(egui::RichText::new("slowed down").color(ui.visuals().warn_fg_color))
+                .on_hover_text(
+                    "This computer cannot keep up with the chosen speed, so the simulation \
+                     runs slower than asked. Try fewer fish or a lower speed.",
+                );
+        }
+    });
+}

@@ -1,0 +1,118 @@
+//! `window.shoal`: the automation API in the browser (see `automation.rs` for what
+//! each call does). A thin shim: arguments become JSON values, results plain objects,
+//! and an `AutomationError` becomes a thrown JS `Error` with the same message.
+
+use eframe::WebRunner;
+use js_sys::{Object, Reflect};
+use wasm_bindgen::prelude::*;
+
+use crate::ShoalApp;
+use crate::automation::{AutomationError, Command};
+
+type Method =
+    dyn Fn(&mut ShoalApp, Option<serde_json::Value>) -> Result<serde_json::Value, AutomationError>;
+
+/// Installs `window.shoal`.
+pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
+    let api = Object::new();
+    let methods: [(&str, Box<Method>); 8] = [
+        ("state", Box::new(|app, _| to_json(&app.state_report()))),
+        ("settings", Box::new(|app, _| to_json(app.state_settings()))),
+        ("widgets", Box::new(|app, _| Ok(widgets_json(app)))),
+        (
+            "set",
+            Box::new(|app, arg| {
+                let patch = arg.unwrap_or(serde_json::Value::Null);
+                app.run_command(Command::Set(patch))?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "step",
+            Box::new(|app, arg| {
+                app.run_command(Command::step(arg.as_ref())?)?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "pause",
+            Box::new(|app, _| {
+                app.run_command(Command::Pause)?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "play",
+            Box::new(|app, _| {
+                app.run_command(Command::Play)?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "reset",
+            Box::new(|app, arg| {
+                app.run_command(Command::reset(arg.as_ref())?)?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+    ];
+    for (name, method) in methods {
+        let runner = runner.clone();
+        let closure = Closure::<dyn Fn(JsValue) -> Result<JsValue, JsValue>>::new(
+            move |arg: JsValue| -> Result<JsValue, JsValue> {
+                let arg = from_js(&arg)?;
+                let mut app = runner
+                    .app_mut::<ShoalApp>()
+                    .ok_or_else(|| js_error(&AutomationError::NotRunning.to_string()))?;
+                let result = method(&mut app, arg).map_err(|err| js_error(&err.to_string()))?;
+                to_js(&result)
+            },
+        );
+        Reflect::set(&api, &name.into(), closure.as_ref())?;
+        closure.forget(); // Lives as long as the page.
+    }
+    let window = web_sys::window().ok_or_else(|| js_error("no window"))?;
+    Reflect::set(&window, &"shoal".into(), &api)?;
+    Ok(())
+}
+
+/// `{name: {x, y, width, height}}` in CSS pixels.
+fn widgets_json(app: &ShoalApp) -> serde_json::Value {
+    app.widget_rects()
+        .iter()
+        .map(|(name, rect)| {
+            (
+                (*name).to_owned(),
+                serde_json::json!({
+                    "x": rect.min.x, "y": rect.min.y,
+                    "width": rect.width(), "height": rect.height(),
+                }),
+            )
+        })
+        .collect::<serde_json::Map<_, _>>()
+        .into()
+}
+
+fn to_json(value: &impl serde::Serialize) -> Result<serde_json::Value, AutomationError> {
+    serde_json::to_value(value).map_err(|err| AutomationError::BadArgument(err.to_string()))
+}
+
+fn from_js(arg: &JsValue) -> Result<Option<serde_json::Value>, JsValue> {
+    if arg.is_undefined() {
+        return Ok(None);
+    }
+    let text = js_sys::JSON::stringify(arg)
+        .map_err(|_| js_error("the argument cannot be turned into JSON"))?;
+    let text = String::from(text);
+    serde_json::from_str(&text)
+        .map(Some)
+        .map_err(|err| js_error(&format!("the argument is not valid JSON: {err}")))
+}
+
+fn to_js(value: &serde_json::Value) -> Result<JsValue, JsValue> {
+    js_sys::JSON::parse(&value.to_string())
+}
+
+fn js_error(message: &str) -> JsValue {
+    js_sys::Error::new(message).into()
+}

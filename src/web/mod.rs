@@ -1,0 +1,60 @@
+//! Browser glue: starts eframe on the page's canvas, explains failures on the page
+//! itself (no GPU, a panic), and installs the `window.shoal` automation API.
+
+mod api;
+mod page;
+
+use crate::ShoalApp;
+use crate::settings::Settings;
+
+/// Starts Shoal in the page. Called once from `main`.
+pub async fn start() {
+    if eframe::WebLogger::init(log::LevelFilter::Info).is_err() {
+        // A logger was already installed: keep it.
+    }
+    let runner = eframe::WebRunner::new();
+    // After eframe's own hook, so a panic is both logged and shown.
+    page::show_panics_on_page();
+
+    let Some(canvas) = page::canvas() else {
+        page::show_error(
+            "Shoal could not start",
+            "The page has no canvas named shoal_canvas.",
+        );
+        return;
+    };
+    let bench = page::query_has("bench");
+    let started = runner
+        .start(
+            canvas,
+            eframe::WebOptions::default(),
+            Box::new(move |cc| {
+                let mut app = ShoalApp::new(cc, Settings::default())?;
+                if bench {
+                    app.start_benchmark();
+                }
+                Ok(Box::new(app))
+            }),
+        )
+        .await;
+    match started {
+        Ok(()) => {
+            page::hide_notice();
+            if let Err(err) = api::install(&runner) {
+                log::error!("could not install window.shoal: {err:?}");
+            }
+        }
+        Err(err) => {
+            let detail = err
+                .as_string()
+                .or_else(|| {
+                    js_sys::Reflect::get(&err, &"message".into())
+                        .ok()
+                        .and_then(|m| m.as_string())
+                })
+                .unwrap_or_else(|| format!("{err:?}"));
+            log::error!("eframe failed to start: {detail}");
+            page::show_no_gpu(&detail);
+        }
+    }
+}

@@ -1,0 +1,103 @@
+//! Messages on the page itself, outside the canvas: the "no GPU" explanation and the
+//! panic notice. Text goes in with `set_text_content`, never as HTML.
+
+use wasm_bindgen::JsCast;
+
+fn document() -> Option<web_sys::Document> {
+    web_sys::window()?.document()
+}
+
+/// The canvas eframe draws on.
+pub fn canvas() -> Option<web_sys::HtmlCanvasElement> {
+    document()?
+        .get_element_by_id("shoal_canvas")?
+        .dyn_into::<web_sys::HtmlCanvasElement>()
+        .ok()
+}
+
+/// Does the page's query string contain `flag` (as in `?bench`)?
+pub fn query_has(flag: &str) -> bool {
+    web_sys::window()
+        .and_then(|w| w.location().search().ok())
+        .is_some_and(|search| {
+            search
+                .trim_start_matches('?')
+                .split('&')
+                .any(|part| part.split('=').next() == Some(flag))
+        })
+}
+
+/// Hides the loading notice once the app runs.
+pub fn hide_notice() {
+    if let Some(notice) = document().and_then(|d| d.get_element_by_id("shoal_notice")) {
+        notice.set_class_name("hidden");
+    }
+}
+
+/// Shows `title` and `detail` in the page's notice box, with a reload button.
+pub fn show_error(title: &str, detail: &str) {
+    show(title, &[detail], "error");
+}
+
+/// The browser offered neither WebGPU nor WebGL2.
+pub fn show_no_gpu(detail: &str) {
+    show(
+        "Shoal needs 3D graphics, and this browser did not provide them",
+        &[
+            "Shoal draws the aquarium with WebGPU or, where that is missing, WebGL2. \
+             This browser offered neither, or they are switched off.",
+            "It works in current Chrome, Edge, Firefox and Safari (version 15 or later) \
+             on Windows, macOS, Linux, ChromeOS, Android and iPadOS. Check that hardware \
+             acceleration is on (in Chrome: Settings → System → \"Use graphics \
+             acceleration when available\"), then reload.",
+            &format!("Details: {detail}"),
+        ],
+        "error",
+    );
+    if let Some(canvas) = canvas() {
+        canvas.set_class_name("hidden");
+    }
+}
+
+fn show(title: &str, paragraphs: &[&str], class: &str) {
+    let Some(document) = document() else {
+        return;
+    };
+    let Some(notice) = document.get_element_by_id("shoal_notice") else {
+        return;
+    };
+    notice.set_inner_html("");
+    notice.set_class_name(class);
+    let add = |tag: &str, text: &str| {
+        if let Ok(element) = document.create_element(tag) {
+            element.set_text_content(Some(text));
+            let _ = notice.append_child(&element);
+        }
+    };
+    add("h2", title);
+    for paragraph in paragraphs {
+        add("p", paragraph);
+    }
+    if let Ok(button) = document.create_element("button") {
+        button.set_text_content(Some("Reload Shoal"));
+        let _ = button.set_attribute("onclick", "location.reload()");
+        let _ = notice.append_child(&button);
+    }
+}
+
+/// Chains a panic hook that puts the panic message on the page.
+pub fn show_panics_on_page() {
+    let previous = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        previous(info);
+        show(
+            "Shoal stopped because of an internal error",
+            &[
+                "Sorry: something went wrong inside the simulation. Reloading the page \
+                 starts Shoal again; your settings in the address bar are kept.",
+                &format!("Details for the developers: {info}"),
+            ],
+            "error",
+        );
+    }));
+}

@@ -1,0 +1,150 @@
+// Shoal in headless Chromium, on both GPU tiers: it loads without console errors,
+// draws a real aquarium, fish move, a real click pauses it, the UI changes settings
+// that `shoal.state()` reports, and the automation API refuses bad input.
+import { describe, test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import {
+  serveDist, launch, openShoal, decode, pixelStats, fishPixels, symmetricDifference,
+  saveArtifact, clickWidget, sleep,
+} from "./harness.mjs";
+
+const state = (page) => page.evaluate(() => window.shoal.state());
+const widgets = (page) => page.evaluate(() => window.shoal.widgets());
+
+for (const tier of ["webgl2", "webgpu"]) {
+  describe(`aquarium on the ${tier} tier`, () => {
+    let server, browser, page, errors, aquarium;
+
+    before(async () => {
+      server = await serveDist();
+      browser = await launch(tier);
+      ({ page, errors } = await openShoal(browser, server.url));
+      // The 3D view in device pixels (the page runs at devicePixelRatio 1).
+      aquarium = (await widgets(page)).aquarium;
+    });
+
+    after(async () => {
+      await browser?.close();
+      await server?.close();
+    });
+
+    test(`reports the ${tier} tier`, async () => {
+      const s = await state(page);
+      assert.equal(s.tier, tier);
+      for (const key of ["time_secs", "steps", "fish_count", "tier", "fps", "paused", "seed", "scene"]) {
+        assert.ok(key in s, `state() has ${key}`);
+      }
+      assert.equal(s.fish_count, 200);
+      assert.equal(s.scene, "aquarium");
+    });
+
+    test("the canvas shows a lit, coloured aquarium, not a blank screen", async () => {
+      const shot = await page.screenshot();
+      saveArtifact(`${tier}-aquarium.png`, shot);
+      const stats = pixelStats(decode(shot), aquarium);
+      assert.ok(stats.mean > 25 && stats.mean < 230, `mean luminance ${stats.mean}`);
+      assert.ok(stats.std > 12, `contrast (std of luminance) ${stats.std}`);
+      assert.ok(stats.distinctColours > 150, `distinct colours ${stats.distinctColours}`);
+      const fish = fishPixels(decode(shot), aquarium);
+      assert.ok(fish.size > 300, `fish-coloured pixels ${fish.size}`);
+    });
+
+    test("fish move between two screenshots while playing, and not while paused", async () => {
+      await page.evaluate(() => window.shoal.set({ paused: false, speed: 1 }));
+      const a = decode(await page.screenshot());
+      const stepsA = (await state(page)).steps;
+      await sleep(1500);
+      const b = decode(await page.screenshot());
+      const stepsB = (await state(page)).steps;
+      assert.ok(stepsB > stepsA, `simulation advanced (${stepsA} → ${stepsB})`);
+      const moved = symmetricDifference(fishPixels(a, aquarium), fishPixels(b, aquarium));
+      assert.ok(moved > 0.2, `fish pixels changed by ${moved}`);
+
+      await page.evaluate(() => window.shoal.pause());
+      await sleep(300);
+      const c = decode(await page.screenshot());
+      await sleep(800);
+      const d = decode(await page.screenshot());
+      const still = symmetricDifference(fishPixels(c, aquarium), fishPixels(d, aquarium));
+      assert.equal(still, 0, "a paused aquarium is still");
+      await page.evaluate(() => window.shoal.play());
+    });
+
+    test("a real click on Pause stops simulated time, and Play resumes it", async () => {
+      assert.equal((await state(page)).paused, false);
+      await clickWidget(page, "play_pause");
+      await page.waitForFunction(() => window.shoal.state().paused, null, { timeout: 10_000 });
+      const t1 = (await state(page)).time_secs;
+      await sleep(700);
+      const t2 = (await state(page)).time_secs;
+      assert.equal(t2, t1, "time stands still while paused");
+      saveArtifact(`${tier}-paused.png`, await page.screenshot());
+
+      await clickWidget(page, "play_pause");
+      await page.waitForFunction(() => !window.shoal.state().paused, null, { timeout: 10_000 });
+      await sleep(700);
+      assert.ok((await state(page)).time_secs > t2, "time runs again after Play");
+    });
+
+    test("dragging the speed slider changes the speed that state() reports", async () => {
+      const slider = (await widgets(page)).speed;
+      const y = slider.y + slider.height / 2;
+      // The rail is the left part of the slider's rectangle (the number box is on the right).
+      await page.mouse.move(slider.x + 4, y);
+      await page.mouse.down();
+      await page.mouse.move(slider.x + slider.width * 0.2, y, { steps: 5 });
+      await page.mouse.up();
+      await sleep(200);
+      const slow = (await state(page)).speed;
+      await page.mouse.move(slider.x + slider.width * 0.2, y);
+      await page.mouse.down();
+      await page.mouse.move(slider.x + slider.width * 0.55, y, { steps: 5 });
+      await page.mouse.up();
+      await sleep(200);
+      const fast = (await state(page)).speed;
+      assert.ok(slow >= 0.25 && slow < 1, `dragged left: ${slow}`);
+      assert.ok(fast > slow, `dragged right: ${slow} → ${fast}`);
+      await page.evaluate(() => window.shoal.set({ speed: 1 }));
+    });
+
+    test("set() applies settings by name and refuses bad input without changing anything", async () => {
+      await page.evaluate(() => window.shoal.set({ fish_count: 120 }));
+      assert.equal((await state(page)).fish_count, 120);
+      const before = await page.evaluate(() => window.shoal.settings());
+      for (const [patch, expected] of [
+        [{ fishcount: 5 }, "unknown setting 'fishcount'"],
+        [{ speed: 100 }, "out of range"],
+        [{ paused: "yes" }, "setting 'paused'"],
+        [{ fish_count: 50, seed: -1 }, "setting 'seed'"],
+      ]) {
+        const message = await page.evaluate((p) => {
+          try {
+            window.shoal.set(p);
+            return null;
+          } catch (e) {
+            return e.message;
+          }
+        }, patch);
+        assert.ok(message && message.includes(expected), `${JSON.stringify(patch)} → ${message}`);
+      }
+      assert.deepEqual(await page.evaluate(() => window.shoal.settings()), before);
+      await page.evaluate(() => window.shoal.set({ fish_count: 200 }));
+    });
+
+    test("step(n) runs exactly n steps while paused and reset(seed) restarts", async () => {
+      await page.evaluate(() => window.shoal.pause());
+      const s0 = (await state(page)).steps;
+      await page.evaluate(() => window.shoal.step(10));
+      assert.equal((await state(page)).steps, s0 + 10);
+      await page.evaluate(() => window.shoal.reset(42));
+      const s = await state(page);
+      assert.equal(s.seed, 42);
+      assert.equal(s.steps, 0);
+      await page.evaluate(() => window.shoal.play());
+    });
+
+    test("the page logged no errors", () => {
+      assert.deepEqual(errors, []);
+    });
+  });
+}

@@ -1,0 +1,170 @@
+// Shared helpers for Shoal's browser tests: a static server for dist/, Chromium on a
+// chosen GPU tier, and pixel statistics of screenshots.
+import http from "node:http";
+import fs from "node:fs";
+import path from "node:path";
+import { fileURLToPath } from "node:url";
+import { chromium } from "playwright-core";
+import { PNG } from "pngjs";
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+export const repoRoot = path.resolve(here, "..", "..");
+export const distDir = path.join(repoRoot, "dist");
+export const artifactDir = path.join(repoRoot, "web", "test-artifacts");
+
+const MIME = {
+  ".html": "text/html; charset=utf-8",
+  ".js": "text/javascript; charset=utf-8",
+  ".wasm": "application/wasm",
+  ".css": "text/css",
+  ".png": "image/png",
+  ".json": "application/json",
+};
+
+/** Serves dist/ on a free loopback port. */
+export async function serveDist() {
+  if (!fs.existsSync(path.join(distDir, "index.html"))) {
+    throw new Error("dist/index.html is missing: build the web app first (trunk build --release)");
+  }
+  const server = http.createServer((req, res) => {
+    const url = new URL(req.url, "http://127.0.0.1");
+    let file = path.normalize(path.join(distDir, decodeURIComponent(url.pathname)));
+    if (!file.startsWith(distDir)) {
+      res.writeHead(403).end();
+      return;
+    }
+    if (fs.existsSync(file) && fs.statSync(file).isDirectory()) file = path.join(file, "index.html");
+    fs.readFile(file, (err, data) => {
+      if (err) {
+        res.writeHead(404).end("not found");
+        return;
+      }
+      res.writeHead(200, { "Content-Type": MIME[path.extname(file)] || "application/octet-stream" });
+      res.end(data);
+    });
+  });
+  await new Promise((resolve) => server.listen(0, "127.0.0.1", resolve));
+  const { port } = server.address();
+  return { url: `http://127.0.0.1:${port}/`, close: () => new Promise((r) => server.close(r)) };
+}
+
+const BASE_FLAGS = [
+  "--no-sandbox",
+  "--disable-quic",
+  "--no-first-run",
+  "--disable-background-networking",
+  "--disable-component-update",
+  "--disable-sync",
+];
+
+/** Chromium flags per tier (SwiftShader: no GPU on CI). */
+export const TIER_FLAGS = {
+  webgl2: [...BASE_FLAGS, "--disable-gpu"],
+  webgpu: [
+    ...BASE_FLAGS,
+    "--enable-unsafe-webgpu",
+    "--enable-features=Vulkan",
+    "--use-vulkan=swiftshader",
+    "--use-angle=swiftshader",
+  ],
+  none: [...BASE_FLAGS, "--disable-gpu", "--disable-3d-apis", "--disable-webgl"],
+};
+
+/** Launches headless Chromium for `tier` with a fresh profile. */
+export async function launch(tier) {
+  return chromium.launch({
+    executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
+    headless: true,
+    args: TIER_FLAGS[tier],
+  });
+}
+
+/** Opens the app and waits until `window.shoal` runs and has drawn frames. */
+export async function openShoal(browser, url, { width = 1280, height = 720 } = {}) {
+  const page = await browser.newPage({ viewport: { width, height } });
+  const errors = [];
+  page.on("console", (msg) => {
+    if (msg.type() === "error") errors.push(msg.text());
+  });
+  page.on("pageerror", (err) => errors.push(`pageerror: ${err.message}`));
+  await page.goto(url);
+  await page.waitForFunction(() => window.shoal && window.shoal.state().steps > 30, null, {
+    timeout: 90_000,
+  });
+  return { page, errors };
+}
+
+/** Decodes a PNG buffer. */
+export function decode(buffer) {
+  return PNG.sync.read(buffer);
+}
+
+/** Mean and standard deviation of luminance, and the number of distinct colours
+ * (quantised to 4 bits a channel), over `rect` ({x, y, width, height} in pixels). */
+export function pixelStats(png, rect = { x: 0, y: 0, width: png.width, height: png.height }) {
+  let sum = 0;
+  let sumSq = 0;
+  let n = 0;
+  const colours = new Set();
+  for (let y = Math.floor(rect.y); y < Math.min(png.height, rect.y + rect.height); y++) {
+    for (let x = Math.floor(rect.x); x < Math.min(png.width, rect.x + rect.width); x++) {
+      const i = (y * png.width + x) * 4;
+      const [r, g, b] = [png.data[i], png.data[i + 1], png.data[i + 2]];
+      const lum = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+      sum += lum;
+      sumSq += lum * lum;
+      n++;
+      colours.add(((r >> 4) << 8) | ((g >> 4) << 4) | (b >> 4));
+    }
+  }
+  const mean = sum / n;
+  return { mean, std: Math.sqrt(Math.max(0, sumSq / n - mean * mean)), distinctColours: colours.size };
+}
+
+/** Pixels that look like fish: saturated warm, yellow, green or purple colours, which
+ * neither the blue water nor the beige sand nor the grey rocks have. A Set of indices. */
+export function fishPixels(png, rect) {
+  const out = new Set();
+  for (let y = Math.floor(rect.y); y < Math.min(png.height, rect.y + rect.height); y++) {
+    for (let x = Math.floor(rect.x); x < Math.min(png.width, rect.x + rect.width); x++) {
+      const i = (y * png.width + x) * 4;
+      const r = png.data[i] / 255, g = png.data[i + 1] / 255, b = png.data[i + 2] / 255;
+      const max = Math.max(r, g, b), min = Math.min(r, g, b);
+      const sat = max > 0 ? (max - min) / max : 0;
+      if (max < 0.25 || sat < 0.55) continue;
+      let hue;
+      if (max === r) hue = (60 * ((g - b) / (max - min)) + 360) % 360;
+      else if (max === g) hue = 60 * ((b - r) / (max - min)) + 120;
+      else hue = 60 * ((r - g) / (max - min)) + 240;
+      // Water and glass are blue-cyan (170°–250°); exclude them.
+      if (hue > 165 && hue < 255) continue;
+      out.add(y * png.width + x);
+    }
+  }
+  return out;
+}
+
+/** Fraction of the union of two pixel sets that is in only one of them. */
+export function symmetricDifference(a, b) {
+  let only = 0;
+  for (const p of a) if (!b.has(p)) only++;
+  for (const p of b) if (!a.has(p)) only++;
+  const union = new Set([...a, ...b]).size;
+  return union === 0 ? 0 : only / union;
+}
+
+/** Saves a screenshot buffer under web/test-artifacts/. */
+export function saveArtifact(name, buffer) {
+  fs.mkdirSync(artifactDir, { recursive: true });
+  fs.writeFileSync(path.join(artifactDir, name), buffer);
+}
+
+/** Clicks the centre of a named widget, as a person would. */
+export async function clickWidget(page, name) {
+  const rect = await page.evaluate((n) => window.shoal.widgets()[n], name);
+  if (!rect) throw new Error(`widget ${name} is not on screen`);
+  await page.mouse.click(rect.x + rect.width / 2, rect.y + rect.height / 2, { delay: 60 });
+  return rect;
+}
+
+export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
