@@ -42,7 +42,7 @@ fn main() {
             ..Settings::default()
         });
         let tank = lab.world().tank();
-        let camera = OrbitCamera::framing(tank.min_m, tank.max_m);
+        let camera = OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0);
         let mut builder = FrameBuilder::default();
         let frames_per_sec = rate(Duration::from_secs(1), || {
             std::hint::black_box(builder.build(&lab, &camera, [1920, 1080], 0.0));

@@ -18,6 +18,11 @@ use crate::ui::{PanelAction, WidgetRects, control_panel_ui, status_line_ui};
 pub struct ShoalApp {
     lab: Lab,
     camera: OrbitCamera,
+    /// True until the user moves the camera: the default view then re-frames the
+    /// tank whenever the view's shape changes (window resize, panel hidden).
+    camera_is_default: bool,
+    /// Aspect ratio the camera was last framed for.
+    framed_aspect: f32,
     frame_builder: FrameBuilder,
     caps: RenderCaps,
     panel_open: bool,
@@ -26,6 +31,8 @@ pub struct ShoalApp {
     widget_rects: WidgetRects,
     /// The in-app benchmark, when started (`?bench`).
     benchmark: Option<Benchmark>,
+    /// Set by `shoal.crash_test()`: the next frame panics, to test the error page.
+    crash_requested: bool,
     ctx: egui::Context,
 }
 
@@ -47,7 +54,9 @@ impl ShoalApp {
         let lab = Lab::new(settings);
         let tank = lab.world().tank();
         Ok(Self {
-            camera: OrbitCamera::framing(tank.min_m, tank.max_m),
+            camera: OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0),
+            camera_is_default: true,
+            framed_aspect: 16.0 / 9.0,
             lab,
             frame_builder: FrameBuilder::default(),
             caps,
@@ -56,6 +65,7 @@ impl ShoalApp {
             last_frame_time_secs: None,
             widget_rects: WidgetRects::new(),
             benchmark: None,
+            crash_requested: false,
             ctx: cc.egui_ctx.clone(),
         })
     }
@@ -69,6 +79,13 @@ impl ShoalApp {
         );
         report.bench = self.benchmark.as_ref().map(Benchmark::report);
         report
+    }
+
+    /// Makes the next frame panic (`shoal.crash_test()`), so tests can check that a
+    /// panic is explained on the page and that reloading brings Shoal back.
+    pub fn request_crash_test(&mut self) {
+        self.crash_requested = true;
+        self.ctx.request_repaint();
     }
 
     /// Starts the benchmark (the `?bench` page mode).
@@ -127,7 +144,8 @@ impl ShoalApp {
 
     fn reset_view(&mut self) {
         let tank = self.lab.world().tank();
-        self.camera = OrbitCamera::framing(tank.min_m, tank.max_m);
+        self.camera = OrbitCamera::framing(tank.min_m, tank.max_m, self.framed_aspect);
+        self.camera_is_default = true;
     }
 
     /// The 3D view: camera input, then the paint callback.
@@ -135,6 +153,12 @@ impl ShoalApp {
         let rect = ui.available_rect_before_wrap();
         let response = ui.allocate_rect(rect, egui::Sense::click_and_drag());
         self.widget_rects.insert("aquarium", rect);
+        let aspect = rect.width() / rect.height().max(1.0);
+        if self.camera_is_default && (aspect - self.framed_aspect).abs() > 0.01 {
+            self.framed_aspect = aspect;
+            self.reset_view();
+        }
+        let camera_before = self.camera.clone();
         let (zoom, scroll, multi_touch) =
             ui.input(|i| (i.zoom_delta(), i.smooth_scroll_delta(), i.multi_touch()));
         if let Some(touch) = multi_touch {
@@ -159,6 +183,10 @@ impl ShoalApp {
             if response.hovered() {
                 self.camera.zoom(zoom * (scroll.y * 0.0015).exp());
             }
+        }
+
+        if self.camera != camera_before {
+            self.camera_is_default = false;
         }
 
         let pixels_per_point = ui.ctx().pixels_per_point();
@@ -189,6 +217,10 @@ impl ShoalApp {
 
 impl eframe::App for ShoalApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        assert!(
+            !self.crash_requested,
+            "crash test requested through shoal.crash_test()"
+        );
         let now_secs = ui.input(|i| i.time);
         self.widget_rects.clear();
         if let Some(bench) = &mut self.benchmark {

@@ -80,7 +80,11 @@ mod tests {
     #[test]
     fn one_instance_per_fish_and_statics_rebuilt_only_on_reset() {
         let mut lab = Lab::new(Settings::default());
-        let camera = OrbitCamera::framing(lab.world().tank().min_m, lab.world().tank().max_m);
+        let camera = OrbitCamera::framing(
+            lab.world().tank().min_m,
+            lab.world().tank().max_m,
+            16.0 / 9.0,
+        );
         let mut builder = FrameBuilder::default();
         let first = builder.build(&lab, &camera, [800, 450], 0.0);
         assert_eq!(first.fish.len(), lab.world().fish().len());

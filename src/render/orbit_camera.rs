@@ -27,8 +27,8 @@ const MAX_DISTANCE_M: f32 = 60.0;
 
 impl OrbitCamera {
     /// A view of the whole tank from the front and a little above, like standing in
-    /// front of an aquarium.
-    pub fn framing(tank_min_m: Vec3, tank_max_m: Vec3) -> Self {
+    /// front of an aquarium, for a viewport of the given aspect ratio (width / height).
+    pub fn framing(tank_min_m: Vec3, tank_max_m: Vec3, aspect: f32) -> Self {
         let center = (tank_min_m + tank_max_m) * 0.5;
         let size = tank_max_m - tank_min_m;
         let mut camera = Self {
@@ -38,7 +38,7 @@ impl OrbitCamera {
             distance_m: size.length() * 0.5,
             fov_y_rad: 40f32.to_radians(),
         };
-        // Back off until every corner fits a 16:9 view with a small margin.
+        // Back off until every corner fits the view with a small margin.
         let corners: Vec<Vec3> = (0..8)
             .map(|i| {
                 vec3(
@@ -61,7 +61,7 @@ impl OrbitCamera {
             })
             .collect();
         for _ in 0..100 {
-            let m = camera.world_to_clip(16.0 / 9.0);
+            let m = camera.world_to_clip(aspect);
             let fits = corners.iter().all(|&c| {
                 let clip = m * c.extend(1.0);
                 clip.w > 0.0 && clip.x.abs() < 0.94 * clip.w && clip.y.abs() < 0.94 * clip.w
@@ -126,26 +126,28 @@ mod tests {
     #[test]
     fn the_default_view_sees_every_corner_of_the_tank() {
         let (lo, hi) = (vec3(-6.0, 0.0, -4.0), vec3(6.0, 4.5, 4.0));
-        let camera = OrbitCamera::framing(lo, hi);
-        let m = camera.world_to_clip(16.0 / 9.0);
-        for i in 0..8 {
-            let corner = vec3(
-                if i & 1 == 0 { lo.x } else { hi.x },
-                if i & 2 == 0 { lo.y } else { hi.y },
-                if i & 4 == 0 { lo.z } else { hi.z },
-            );
-            let clip = m * corner.extend(1.0);
-            let ndc = clip.truncate() / clip.w;
-            assert!(
-                clip.w > 0.0 && ndc.x.abs() < 1.0 && ndc.y.abs() < 1.0,
-                "{corner} → {ndc}"
-            );
+        for aspect in [16.0 / 9.0, 4.0 / 3.0, 0.6] {
+            let camera = OrbitCamera::framing(lo, hi, aspect);
+            let m = camera.world_to_clip(aspect);
+            for i in 0..8 {
+                let corner = vec3(
+                    if i & 1 == 0 { lo.x } else { hi.x },
+                    if i & 2 == 0 { lo.y } else { hi.y },
+                    if i & 4 == 0 { lo.z } else { hi.z },
+                );
+                let clip = m * corner.extend(1.0);
+                let ndc = clip.truncate() / clip.w;
+                assert!(
+                    clip.w > 0.0 && ndc.x.abs() < 1.0 && ndc.y.abs() < 1.0,
+                    "{corner} → {ndc}"
+                );
+            }
         }
     }
 
     #[test]
     fn zoom_and_rotation_stay_in_bounds() {
-        let mut camera = OrbitCamera::framing(Vec3::ZERO, Vec3::ONE);
+        let mut camera = OrbitCamera::framing(Vec3::ZERO, Vec3::ONE, 1.5);
         camera.zoom(1e9);
         assert_eq!(camera.distance_m, MIN_DISTANCE_M);
         camera.zoom(f32::NAN);
@@ -158,7 +160,7 @@ mod tests {
 
     #[test]
     fn panning_moves_the_target_sideways() {
-        let mut camera = OrbitCamera::framing(Vec3::ZERO, Vec3::ONE);
+        let mut camera = OrbitCamera::framing(Vec3::ZERO, Vec3::ONE, 1.5);
         let before = camera.target_m;
         camera.pan(100.0, 0.0, 500.0);
         assert!(camera.target_m.distance(before) > 0.0);

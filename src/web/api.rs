@@ -15,10 +15,17 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 8] = [
+    let methods: [(&str, Box<Method>); 9] = [
         ("state", Box::new(|app, _| to_json(&app.state_report()))),
         ("settings", Box::new(|app, _| to_json(app.state_settings()))),
         ("widgets", Box::new(|app, _| Ok(widgets_json(app)))),
+        (
+            "crash_test",
+            Box::new(|app, _| {
+                app.request_crash_test();
+                Ok(serde_json::Value::Null)
+            }),
+        ),
         (
             "set",
             Box::new(|app, arg| {

@@ -93,8 +93,8 @@ pub fn show_panics_on_page() {
         show(
             "Shoal stopped because of an internal error",
             &[
-                "Sorry: something went wrong inside the simulation. Reloading the page \
-                 starts Shoal again; your settings in the address bar are kept.",
+                "Sorry: something went wrong inside Shoal. Reloading the page starts it \
+                 again.",
                 &format!("Details for the developers: {info}"),
             ],
             "error",

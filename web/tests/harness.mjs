@@ -71,11 +71,11 @@ export const TIER_FLAGS = {
 };
 
 /** Launches headless Chromium for `tier` with a fresh profile. */
-export async function launch(tier) {
+export async function launch(tier, extraArgs = []) {
   return chromium.launch({
     executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
     headless: true,
-    args: TIER_FLAGS[tier],
+    args: [...TIER_FLAGS[tier], ...extraArgs],
   });
 }
 
