@@ -6,7 +6,7 @@
 
 use eframe::egui;
 
-use crate::automation::{AutomationError, Command, StateReport};
+use crate::automation::{AutomationError, CameraReport, Command, StateReport};
 use crate::bench::Benchmark;
 use crate::clock::RateMeter;
 use crate::lab::Lab;
@@ -78,6 +78,12 @@ impl ShoalApp {
             self.fps_meter.rate_per_sec(),
         );
         report.bench = self.benchmark.as_ref().map(Benchmark::report);
+        report.camera = Some(CameraReport {
+            yaw_deg: self.camera.yaw_rad.to_degrees(),
+            pitch_deg: self.camera.pitch_rad.to_degrees(),
+            distance_m: self.camera.distance_m,
+            target_m: self.camera.target_m.to_array(),
+        });
         report
     }
 

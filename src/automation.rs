@@ -120,9 +120,21 @@ pub struct StateReport {
     pub speed: f32,
     /// True when the machine cannot keep up and the simulation runs slower than asked.
     pub fell_behind: bool,
+    /// Where the camera looks from (filled in by the app, which owns the camera).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub camera: Option<CameraReport>,
     /// Benchmark progress and results, in `?bench` mode only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bench: Option<crate::bench::BenchReport>,
+}
+
+/// The orbit camera, as `shoal.state().camera` reports it.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct CameraReport {
+    pub yaw_deg: f32,
+    pub pitch_deg: f32,
+    pub distance_m: f32,
+    pub target_m: [f32; 3],
 }
 
 impl StateReport {
@@ -141,6 +153,7 @@ impl StateReport {
             scene: settings.scene.name(),
             speed: settings.speed,
             fell_behind: lab.fell_behind(),
+            camera: None,
             bench: None,
         }
     }

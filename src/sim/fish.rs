@@ -30,7 +30,7 @@ pub struct Fish {
     pub position_m: Vec3,
     /// Velocity in metres per second; the fish faces along it.
     pub velocity_m_per_s: Vec3,
-    /// Nose-to-tail length in metres (0.22–0.38 m in the default scene).
+    /// Nose-to-tail length in metres (0.3–0.5 m in the default scene).
     pub body_length_m: f32,
     /// Colour for the renderer, 0..1 around the colour wheel.
     pub hue: f32,

@@ -40,12 +40,12 @@ pub struct SteeringParams {
     /// moving fish always has a heading to turn with.
     pub min_speed_m_per_s: f32,
     /// Relaxed swimming speed in body lengths per second; wander aims for it.
-    /// Default 1.5 /s: typical cruising of small fish (0.33–0.57 m/s for
-    /// 0.22–0.38 m fish), so bigger fish cruise a little faster.
+    /// Default 1.5 /s: typical cruising of fish (0.45–0.75 m/s for the
+    /// 0.3–0.5 m fish of the default scene), so bigger fish cruise a little faster.
     pub cruise_speed_body_lengths_per_s: f32,
     /// Largest steering acceleration in m/s². Default 1.5 m/s²: at 0.8 m/s
-    /// the tightest turn has a radius of v²/a ≈ 0.43 m, about 1.5 body
-    /// lengths, which looks agile but not robotic.
+    /// the tightest turn has a radius of v²/a ≈ 0.43 m, about one body
+    /// length, which looks agile but not robotic.
     pub max_force_m_per_s2: f32,
     /// How far ahead of the fish the wander circle sits, in metres.
     /// Default 1.0 m: with the radius below the wander target is at most

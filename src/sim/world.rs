@@ -330,7 +330,7 @@ fn place_obstacles(tank: &Tank, rng: &mut ChaCha8Rng) -> Vec<Obstacle> {
 
 /// A new fish at a random free place (at least [`SPAWN_CLEARANCE_M`] from
 /// glass and obstacles), swimming in a random, nearly level direction at a
-/// relaxed speed, 0.22–0.38 m long, with a random colour and tail phase.
+/// relaxed speed, 0.3–0.5 m long, with a random colour and tail phase.
 fn spawn_fish(
     tank: &Tank,
     obstacles: &[Obstacle],
@@ -369,7 +369,7 @@ fn spawn_fish(
         pitch_rad.sin(),
         yaw_rad.sin() * pitch_rad.cos(),
     );
-    let body_length_m = uniform(rng, 0.22, 0.38);
+    let body_length_m = uniform(rng, 0.3, 0.5);
     let cruise_m_per_s = params.cruise_speed_body_lengths_per_s * body_length_m;
     let speed_m_per_s = uniform(rng, 0.5, 1.0) * cruise_m_per_s;
     let hue = rng.random::<f32>();

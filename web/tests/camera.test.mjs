@@ -1,0 +1,98 @@
+// The orbit camera as a person uses it: drag to turn, wheel to zoom, right-drag to
+// pan, "Reset view" to come back; and on a touch screen: tap a button, pinch to zoom.
+import { describe, test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import { serveDist, launch, openShoal, clickWidget, sleep } from "./harness.mjs";
+
+const camera = (page) => page.evaluate(() => window.shoal.state().camera);
+const aquariumCentre = async (page) => {
+  const r = await page.evaluate(() => window.shoal.widgets().aquarium);
+  return { x: r.x + r.width / 2, y: r.y + r.height / 2 };
+};
+
+describe("orbit camera with a mouse (WebGL2 tier)", () => {
+  let server, browser, page;
+  before(async () => {
+    server = await serveDist();
+    browser = await launch("webgl2");
+    ({ page } = await openShoal(browser, server.url));
+  });
+  after(async () => {
+    await browser?.close();
+    await server?.close();
+  });
+
+  test("dragging turns, the wheel zooms, right-drag pans, Reset view restores", async () => {
+    const start = await camera(page);
+    const c = await aquariumCentre(page);
+
+    await page.mouse.move(c.x, c.y);
+    await page.mouse.down();
+    await page.mouse.move(c.x + 150, c.y + 40, { steps: 8 });
+    await page.mouse.up();
+    await sleep(300);
+    const turned = await camera(page);
+    assert.ok(Math.abs(turned.yaw_deg - start.yaw_deg) > 20, `yaw ${start.yaw_deg} → ${turned.yaw_deg}`);
+    assert.notEqual(turned.pitch_deg, start.pitch_deg);
+
+    await page.mouse.move(c.x, c.y);
+    await page.mouse.wheel(0, -400);
+    await sleep(500);
+    const zoomed = await camera(page);
+    assert.ok(zoomed.distance_m < turned.distance_m * 0.9, `distance ${turned.distance_m} → ${zoomed.distance_m}`);
+
+    await page.mouse.move(c.x, c.y);
+    await page.mouse.down({ button: "right" });
+    await page.mouse.move(c.x - 120, c.y, { steps: 8 });
+    await page.mouse.up({ button: "right" });
+    await sleep(300);
+    const panned = await camera(page);
+    const moved = Math.hypot(...panned.target_m.map((v, i) => v - zoomed.target_m[i]));
+    assert.ok(moved > 0.3, `target moved ${moved} m`);
+
+    await clickWidget(page, "reset_view");
+    await sleep(300);
+    assert.deepEqual(await camera(page), start);
+  });
+});
+
+describe("touch screen (WebGL2 tier)", () => {
+  test("a tap presses Pause and a pinch zooms", async () => {
+    const server = await serveDist();
+    const browser = await launch("webgl2");
+    try {
+      const context = await browser.newContext({ viewport: { width: 1024, height: 700 }, hasTouch: true });
+      const page = await context.newPage();
+      await page.goto(server.url);
+      await page.waitForFunction(() => window.shoal && window.shoal.state().steps > 30, null, { timeout: 90_000 });
+
+      const button = await page.evaluate(() => window.shoal.widgets().play_pause);
+      await page.touchscreen.tap(button.x + button.width / 2, button.y + button.height / 2);
+      await page.waitForFunction(() => window.shoal.state().paused, null, { timeout: 10_000 });
+
+      const before = await camera(page);
+      const c = await aquariumCentre(page);
+      const cdp = await context.newCDPSession(page);
+      const touch = (type, spread) =>
+        cdp.send("Input.dispatchTouchEvent", {
+          type,
+          touchPoints: type === "touchEnd" ? [] : [
+            { x: c.x - spread, y: c.y, id: 1 },
+            { x: c.x + spread, y: c.y, id: 2 },
+          ],
+        });
+      await touch("touchStart", 40);
+      for (let spread = 50; spread <= 200; spread += 15) {
+        await touch("touchMove", spread);
+        await sleep(120);
+      }
+      await touch("touchEnd", 0);
+      await sleep(500);
+      const after = await camera(page);
+      assert.ok(after.distance_m < before.distance_m * 0.8, `pinch: distance ${before.distance_m} → ${after.distance_m}`);
+    } finally {
+      await browser.close();
+      await server.close();
+    }
+  });
+});
