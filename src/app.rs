@@ -221,6 +221,26 @@ impl ShoalApp {
     }
 }
 
+/// Space: play/pause; S: one step; R: reset. Ignored while typing in a text field.
+fn keyboard_shortcuts(ui: &egui::Ui, settings: &mut Settings) -> Vec<PanelAction> {
+    let mut actions = Vec::new();
+    if ui.ctx().egui_wants_keyboard_input() {
+        return actions;
+    }
+    ui.input(|input| {
+        if input.key_pressed(egui::Key::Space) {
+            settings.paused = !settings.paused;
+        }
+        if input.key_pressed(egui::Key::S) {
+            actions.push(PanelAction::Step);
+        }
+        if input.key_pressed(egui::Key::R) {
+            actions.push(PanelAction::Reset);
+        }
+    });
+    actions
+}
+
 impl eframe::App for ShoalApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         assert!(
@@ -245,7 +265,7 @@ impl eframe::App for ShoalApp {
         });
 
         let mut settings = self.lab.settings().clone();
-        let mut actions = Vec::new();
+        let mut actions = keyboard_shortcuts(ui, &mut settings);
         egui::Panel::left("controls")
             .default_size(250.0)
             .resizable(true)

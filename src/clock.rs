@@ -40,6 +40,7 @@ impl FixedStepClock {
     /// How many steps to run for a frame that lasted `frame_secs` of real time at
     /// `speed` simulated seconds per real second.
     pub fn steps_for_frame(&mut self, frame_secs: f64, speed: f64) -> u32 {
+        let frame_too_long = frame_secs.is_finite() && frame_secs > MAX_FRAME_SECS;
         let frame_secs = if frame_secs.is_finite() {
             frame_secs.clamp(0.0, MAX_FRAME_SECS)
         } else {
@@ -53,9 +54,13 @@ impl FixedStepClock {
         self.accumulator_secs += frame_secs * speed;
         let wanted = (self.accumulator_secs / self.step_secs).floor();
         let steps = wanted.min(f64::from(self.max_steps_per_frame)) as u32;
-        self.fell_behind = wanted > f64::from(self.max_steps_per_frame);
+        let capped = wanted > f64::from(self.max_steps_per_frame);
+        // Behind when steps were capped, or when a frame took so long (a very slow
+        // machine) that part of it was not counted: either way simulated time runs
+        // slower than asked.
+        self.fell_behind = capped || (frame_too_long && speed > 0.0);
         self.accumulator_secs -= f64::from(steps) * self.step_secs;
-        if self.fell_behind {
+        if capped {
             // Drop the backlog rather than carry it into the next frame.
             self.accumulator_secs = 0.0;
         }
@@ -148,6 +153,15 @@ mod tests {
         }
         // The backlog is dropped: a fast frame afterwards does not catch up.
         assert!(clock.steps_for_frame(STEP, 1.0) <= 1);
+    }
+
+    #[test]
+    fn very_long_frames_are_reported_as_falling_behind() {
+        let mut clock = FixedStepClock::new(STEP);
+        assert_eq!(clock.steps_for_frame(0.4, 1.0), 15);
+        assert!(clock.fell_behind());
+        clock.steps_for_frame(STEP, 1.0);
+        assert!(!clock.fell_behind());
     }
 
     #[test]

@@ -46,9 +46,9 @@ pub fn control_panel_ui(
     ui.label(egui::RichText::new("Simulation").strong());
     ui.horizontal(|ui| {
         let (icon, help) = if settings.paused {
-            ("Play", "Start the fish swimming again")
+            ("Play", "Start the fish swimming again (Space)")
         } else {
-            ("Pause", "Freeze the fish so you can look closely")
+            ("Pause", "Freeze the fish so you can look closely (Space)")
         };
         let play_pause = ui
             .add(egui::Button::new(icon).min_size(egui::vec2(64.0, 0.0)))
@@ -59,14 +59,14 @@ pub fn control_panel_ui(
         }
         let step = ui
             .button("Step")
-            .on_hover_text("Move time forward by one tiny step (1/60 of a second)");
+            .on_hover_text("Move time forward by one tiny step, 1/60 of a second (S)");
         rects.insert("step", step.rect);
         if step.clicked() {
             actions.push(PanelAction::Step);
         }
-        let reset = ui
-            .button("Reset")
-            .on_hover_text("Start again from the beginning, with the same fish in the same places");
+        let reset = ui.button("Reset").on_hover_text(
+            "Start again from the beginning, with the same fish in the same places (R)",
+        );
         rects.insert("reset", reset.rect);
         if reset.clicked() {
             actions.push(PanelAction::Reset);

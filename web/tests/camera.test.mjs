@@ -56,6 +56,27 @@ describe("orbit camera with a mouse (WebGL2 tier)", () => {
   });
 });
 
+describe("keyboard (WebGL2 tier)", () => {
+  test("Space pauses and plays, S steps once", async () => {
+    const server = await serveDist();
+    const browser = await launch("webgl2");
+    try {
+      const { page } = await openShoal(browser, server.url);
+      await page.click("#shoal_canvas", { position: { x: 700, y: 650 } });
+      await page.keyboard.press("Space", { delay: 100 });
+      await page.waitForFunction(() => window.shoal.state().paused, null, { timeout: 10_000 });
+      const steps = await page.evaluate(() => window.shoal.state().steps);
+      await page.keyboard.press("s", { delay: 100 });
+      await page.waitForFunction((n) => window.shoal.state().steps === n + 1, steps, { timeout: 10_000 });
+      await page.keyboard.press("Space", { delay: 100 });
+      await page.waitForFunction(() => !window.shoal.state().paused, null, { timeout: 10_000 });
+    } finally {
+      await browser.close();
+      await server.close();
+    }
+  });
+});
+
 describe("touch screen (WebGL2 tier)", () => {
   test("a tap presses Pause and a pinch zooms", async () => {
     const server = await serveDist();
