@@ -270,7 +270,7 @@ impl eframe::App for ShoalApp {
             .default_size(250.0)
             .resizable(true)
             .show_collapsible(ui, &mut self.panel_open, |ui| {
-                actions = control_panel_ui(ui, &mut settings, &mut self.widget_rects);
+                actions.extend(control_panel_ui(ui, &mut settings, &mut self.widget_rects));
             });
         if &settings != self.lab.settings() {
             self.lab.apply_settings(settings);
