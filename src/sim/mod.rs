@@ -8,12 +8,16 @@
 
 pub mod fish;
 pub mod obstacle;
+pub mod school_metrics;
+pub mod spatial_grid;
 pub mod steering;
 pub mod tank;
 pub mod world;
 
 pub use fish::Fish;
 pub use obstacle::Obstacle;
+pub use school_metrics::SchoolMetrics;
+pub use spatial_grid::SpatialGrid;
 pub use steering::SteeringParams;
 pub use tank::Tank;
 pub use world::{DT_SECS, World, WorldConfig};
