@@ -1,0 +1,309 @@
+//! How a fish combines its five SIMBA steering forces into one (Lim & Tan; NOTES.md
+//! "SIMBA steering", control modes). The two papers name the modes differently; all
+//! four are here:
+//!
+//! - **Blended** (the steering paper's "direct"): every force, every step, as a
+//!   weighted sum.
+//! - **Classic**: one action per step, the strongest weighted force.
+//! - **Direct alternate**: draw ρ ∈ [0, 1) once per step; each force whose weight
+//!   w ∈ [0, 1] satisfies ρ < w is applied (so force i acts on a fraction wᵢ of
+//!   the steps).
+//! - **Monte Carlo**: draw ρ ∈ [0, Σw); only the force whose cumulative interval
+//!   holds ρ is applied (force i acts on a fraction wᵢ/Σw of the steps). The
+//!   published partition of 3.2 is [`MONTE_CARLO_PAPER_WEIGHTS`].
+//!
+//! Weights are on the papers' 0–100 slider scale. Following the steering paper's
+//! implementation section, a full containment, alignment, cohesion or separation
+//! slider gives at most 25 % of the maximum steering force and a full avoidance
+//! slider 100 % ([`FORCE_SHARE_AT_FULL_WEIGHT`]).
+
+use glam::Vec3;
+use rand::Rng;
+use serde::{Deserialize, Serialize};
+
+/// The five forces, in this order everywhere.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Force {
+    Containment,
+    Alignment,
+    Cohesion,
+    Separation,
+    Avoidance,
+}
+
+impl Force {
+    pub const ALL: [Self; 5] = [
+        Self::Containment,
+        Self::Alignment,
+        Self::Cohesion,
+        Self::Separation,
+        Self::Avoidance,
+    ];
+}
+
+/// Share of the maximum steering force that a weight of 100 gives, per force
+/// (containment, alignment, cohesion, separation, avoidance): the steering paper's
+/// implementation section.
+pub const FORCE_SHARE_AT_FULL_WEIGHT: [f32; 5] = [0.25, 0.25, 0.25, 0.25, 1.0];
+
+/// The Monte Carlo partition of 3.2 published by Lim & Tan: containment 0–0.6,
+/// alignment 0.6–1.3, avoidance 1.3–1.5, cohesion 1.5–2.8, separation 2.8–3.2,
+/// as weights in [`Force::ALL`] order.
+pub const MONTE_CARLO_PAPER_WEIGHTS: [f32; 5] = [0.6, 0.7, 1.3, 0.4, 0.2];
+
+/// Lim & Tan's Table 1, "individual" (solitary) animals, in [`Force::ALL`] order:
+/// containment 17–18, alignment 17–18, cohesion 0, separation 64–66, avoidance
+/// 64–66 (whole numbers inside the published ranges, so the sliders show them).
+pub const INDIVIDUAL_WEIGHTS: [f32; 5] = [18.0, 18.0, 0.0, 65.0, 65.0];
+
+/// Lim & Tan's Table 1, "group" (schooling) animals, in [`Force::ALL`] order:
+/// containment 25–26, alignment 25–26, cohesion 28–30, separation 25–26,
+/// avoidance 97–100.
+pub const GROUP_WEIGHTS: [f32; 5] = [26.0, 26.0, 29.0, 26.0, 98.0];
+
+/// The four ways of combining forces.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ControlMode {
+    #[default]
+    Blended,
+    Classic,
+    DirectAlternate,
+    MonteCarlo,
+}
+
+impl ControlMode {
+    pub const ALL: [Self; 4] = [
+        Self::Blended,
+        Self::Classic,
+        Self::DirectAlternate,
+        Self::MonteCarlo,
+    ];
+
+    /// One sentence a student understands.
+    pub fn explanation(self) -> &'static str {
+        match self {
+            Self::Blended => "Every urge pulls a little, all at once, mixed by its weight.",
+            Self::Classic => "Each moment the fish follows only its strongest urge.",
+            Self::DirectAlternate => {
+                "Each moment every urge gets a dice roll; urges with big weights win the roll more often."
+            }
+            Self::MonteCarlo => {
+                "Each moment the fish picks one urge by lottery; bigger weights get more tickets."
+            }
+        }
+    }
+}
+
+/// The steering force for this step and which forces were applied (for the
+/// "how often was each force chosen" statistics).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Combined {
+    pub force_m_per_s2: Vec3,
+    pub applied: [bool; 5],
+}
+
+/// Combines `forces` (each a full-strength steering force, already limited to
+/// `max_force`) by `weights` (0–100 each) under `mode`.
+pub fn combine(
+    mode: ControlMode,
+    forces: &[Vec3; 5],
+    weights: &[f32; 5],
+    max_force_m_per_s2: f32,
+    rng: &mut impl Rng,
+) -> Combined {
+    let w: [f32; 5] = std::array::from_fn(|i| sanitize_weight(weights[i]) / 100.0);
+    let scaled: [Vec3; 5] =
+        std::array::from_fn(|i| forces[i] * (w[i] * FORCE_SHARE_AT_FULL_WEIGHT[i]));
+    let mut applied = [false; 5];
+    match mode {
+        ControlMode::Blended => {
+            for (i, a) in applied.iter_mut().enumerate() {
+                *a = w[i] > 0.0;
+            }
+        }
+        ControlMode::Classic => {
+            let strongest =
+                (0..5)
+                    .filter(|&i| scaled[i].length_squared() > 0.0)
+                    .max_by(|&a, &b| {
+                        scaled[a]
+                            .length_squared()
+                            .total_cmp(&scaled[b].length_squared())
+                    });
+            if let Some(i) = strongest {
+                applied[i] = true;
+            }
+        }
+        ControlMode::DirectAlternate => {
+            let rho: f32 = rng.random();
+            for (i, a) in applied.iter_mut().enumerate() {
+                *a = rho < w[i];
+            }
+        }
+        ControlMode::MonteCarlo => {
+            if let Some(i) = monte_carlo_pick(&w, rng) {
+                applied[i] = true;
+            }
+        }
+    }
+    // In the one-action modes the chosen force acts at its full slider share.
+    let sum: Vec3 = (0..5).filter(|&i| applied[i]).map(|i| scaled[i]).sum();
+    let force = limit_finite(sum, max_force_m_per_s2);
+    Combined {
+        force_m_per_s2: force,
+        applied,
+    }
+}
+
+/// Draws ρ ∈ [0, Σw) and returns the force whose cumulative interval holds it;
+/// `None` when every weight is 0.
+pub fn monte_carlo_pick(weights: &[f32; 5], rng: &mut impl Rng) -> Option<usize> {
+    let total: f32 = weights.iter().map(|&w| sanitize_weight(w)).sum();
+    if total <= 0.0 {
+        return None;
+    }
+    let rho = rng.random::<f32>() * total;
+    let mut upper = 0.0;
+    for (i, &w) in weights.iter().enumerate() {
+        upper += sanitize_weight(w);
+        if rho < upper {
+            return Some(i);
+        }
+    }
+    // ρ rounded up to the total: the last force with a weight.
+    weights.iter().rposition(|&w| sanitize_weight(w) > 0.0)
+}
+
+fn sanitize_weight(w: f32) -> f32 {
+    if w.is_finite() { w.max(0.0) } else { 0.0 }
+}
+
+fn limit_finite(v: Vec3, max_len: f32) -> Vec3 {
+    super::steering::limit(v, max_len)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::SeedableRng;
+    use rand_chacha::ChaCha8Rng;
+
+    const DRAWS: usize = 100_000;
+
+    #[test]
+    fn monte_carlo_frequencies_match_the_published_partition_within_one_percent() {
+        let mut rng = ChaCha8Rng::seed_from_u64(7);
+        let mut counts = [0usize; 5];
+        for _ in 0..DRAWS {
+            counts[monte_carlo_pick(&MONTE_CARLO_PAPER_WEIGHTS, &mut rng).unwrap()] += 1;
+        }
+        let total: f32 = MONTE_CARLO_PAPER_WEIGHTS.iter().sum();
+        assert!((total - 3.2).abs() < 1e-6);
+        for i in 0..5 {
+            let expected = MONTE_CARLO_PAPER_WEIGHTS[i] / total;
+            let seen = counts[i] as f32 / DRAWS as f32;
+            assert!(
+                (seen - expected).abs() < 0.01,
+                "force {i}: {seen} vs {expected}"
+            );
+        }
+    }
+
+    #[test]
+    fn direct_alternate_applies_each_force_on_the_share_of_steps_its_weight_says() {
+        let mut rng = ChaCha8Rng::seed_from_u64(11);
+        let weights = [18.0, 25.0, 0.0, 65.0, 100.0];
+        let forces = [Vec3::X; 5];
+        let mut counts = [0usize; 5];
+        for _ in 0..DRAWS {
+            let c = combine(
+                ControlMode::DirectAlternate,
+                &forces,
+                &weights,
+                10.0,
+                &mut rng,
+            );
+            for (count, applied) in counts.iter_mut().zip(c.applied) {
+                *count += usize::from(applied);
+            }
+        }
+        for i in 0..5 {
+            let seen = counts[i] as f32 / DRAWS as f32;
+            assert!(
+                (seen - weights[i] / 100.0).abs() < 0.01,
+                "force {i}: {seen}"
+            );
+        }
+    }
+
+    #[test]
+    fn table_1_presets_follow_the_solitary_versus_group_hypothesis() {
+        // Solitary: high separation and containment share, low cohesion and alignment.
+        let share = |w: &[f32; 5], i: usize| w[i] / w.iter().sum::<f32>();
+        let (c, a, h, s) = (0, 1, 2, 3);
+        assert!(share(&INDIVIDUAL_WEIGHTS, s) > share(&GROUP_WEIGHTS, s));
+        assert!(share(&INDIVIDUAL_WEIGHTS, h) < share(&GROUP_WEIGHTS, h));
+        assert!(INDIVIDUAL_WEIGHTS[a] < GROUP_WEIGHTS[a]);
+        assert!(INDIVIDUAL_WEIGHTS[c] < GROUP_WEIGHTS[c]);
+        // Shares close to the table's percentages (10/10/0/40/40 and 12/12/14/12/48).
+        let expected_individual = [0.10, 0.10, 0.0, 0.40, 0.40];
+        let expected_group = [0.12, 0.12, 0.14, 0.12, 0.48];
+        for i in 0..5 {
+            assert!((share(&INDIVIDUAL_WEIGHTS, i) - expected_individual[i]).abs() < 0.015);
+            assert!((share(&GROUP_WEIGHTS, i) - expected_group[i]).abs() < 0.015);
+        }
+    }
+
+    #[test]
+    fn classic_applies_only_the_strongest_weighted_force() {
+        let mut rng = ChaCha8Rng::seed_from_u64(1);
+        let forces = [Vec3::X, Vec3::Y, Vec3::Z, -Vec3::X, -Vec3::Y];
+        // Avoidance's share is 4× the others', so 30 on avoidance beats 100 elsewhere.
+        let c = combine(
+            ControlMode::Classic,
+            &forces,
+            &[100.0, 0.0, 0.0, 0.0, 30.0],
+            10.0,
+            &mut rng,
+        );
+        assert_eq!(c.applied, [false, false, false, false, true]);
+        assert!((c.force_m_per_s2 - (-Vec3::Y * 0.3)).length() < 1e-6);
+    }
+
+    #[test]
+    fn blended_is_the_weighted_sum_with_the_papers_shares() {
+        let mut rng = ChaCha8Rng::seed_from_u64(1);
+        let forces = [Vec3::X * 2.0; 5];
+        let c = combine(
+            ControlMode::Blended,
+            &forces,
+            &[100.0, 50.0, 0.0, 0.0, 10.0],
+            10.0,
+            &mut rng,
+        );
+        // 2·(1·0.25 + 0.5·0.25 + 0.1·1.0) = 0.95
+        assert!((c.force_m_per_s2.x - 0.95).abs() < 1e-5);
+        assert_eq!(c.applied, [true, true, false, false, true]);
+    }
+
+    #[test]
+    fn zero_nan_and_huge_weights_stay_finite_and_bounded() {
+        let mut rng = ChaCha8Rng::seed_from_u64(3);
+        let forces = [Vec3::splat(1e30), Vec3::NAN, Vec3::ONE, Vec3::ZERO, Vec3::X];
+        for mode in ControlMode::ALL {
+            for weights in [
+                [0.0; 5],
+                [f32::NAN; 5],
+                [1e9; 5],
+                [-5.0, 100.0, 100.0, 100.0, 100.0],
+            ] {
+                let c = combine(mode, &forces, &weights, 1.5, &mut rng);
+                assert!(c.force_m_per_s2.is_finite(), "{mode:?} {weights:?}");
+                assert!(c.force_m_per_s2.length() <= 1.5 + 1e-4);
+            }
+        }
+        assert_eq!(monte_carlo_pick(&[0.0; 5], &mut rng), None);
+    }
+}
