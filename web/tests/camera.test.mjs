@@ -30,14 +30,15 @@ describe("orbit camera with a mouse (WebGL2 tier)", () => {
     await page.mouse.down();
     await page.mouse.move(c.x + 150, c.y + 40, { steps: 8 });
     await page.mouse.up();
-    await sleep(300);
+    await page.waitForFunction((y) => Math.abs(window.shoal.state().camera.yaw_deg - y) > 20, start.yaw_deg, { timeout: 15_000 });
     const turned = await camera(page);
     assert.ok(Math.abs(turned.yaw_deg - start.yaw_deg) > 20, `yaw ${start.yaw_deg} → ${turned.yaw_deg}`);
     assert.notEqual(turned.pitch_deg, start.pitch_deg);
 
     await page.mouse.move(c.x, c.y);
     await page.mouse.wheel(0, -400);
-    await sleep(500);
+    await page.waitForFunction((d) => window.shoal.state().camera.distance_m < d * 0.9, turned.distance_m, { timeout: 15_000 });
+    await sleep(1000); // smooth scrolling settles over a few frames
     const zoomed = await camera(page);
     assert.ok(zoomed.distance_m < turned.distance_m * 0.9, `distance ${turned.distance_m} → ${zoomed.distance_m}`);
 
@@ -45,13 +46,17 @@ describe("orbit camera with a mouse (WebGL2 tier)", () => {
     await page.mouse.down({ button: "right" });
     await page.mouse.move(c.x - 120, c.y, { steps: 8 });
     await page.mouse.up({ button: "right" });
-    await sleep(300);
+    await page.waitForFunction(
+      (t) => Math.hypot(...window.shoal.state().camera.target_m.map((v, i) => v - t[i])) > 0.3,
+      zoomed.target_m,
+      { timeout: 15_000 },
+    );
     const panned = await camera(page);
     const moved = Math.hypot(...panned.target_m.map((v, i) => v - zoomed.target_m[i]));
     assert.ok(moved > 0.3, `target moved ${moved} m`);
 
     await clickWidget(page, "reset_view");
-    await sleep(300);
+    await page.waitForFunction((d) => window.shoal.state().camera.distance_m === d, start.distance_m, { timeout: 15_000 });
     assert.deepEqual(await camera(page), start);
   });
 });
@@ -107,8 +112,9 @@ describe("touch screen (WebGL2 tier)", () => {
         await touch("touchMove", spread);
         await sleep(120);
       }
+      await sleep(1000);
       await touch("touchEnd", 0);
-      await sleep(500);
+      await page.waitForFunction((d) => window.shoal.state().camera.distance_m < d * 0.8, before.distance_m, { timeout: 15_000 });
       const after = await camera(page);
       assert.ok(after.distance_m < before.distance_m * 0.8, `pinch: distance ${before.distance_m} → ${after.distance_m}`);
     } finally {
