@@ -53,7 +53,7 @@ pub fn sees(position_m: Vec3, heading: Vec3, other_m: Vec3, perception: &Percept
 ///
 /// - separation: away from each seen neighbour, weighted by 1/distance
 ///   (closer neighbours push harder), desired speed the maximum;
-/// - alignment: towards the seen neighbours' mean velocity;
+/// - alignment: towards the seen neighbours' mean heading, at the maximum speed;
 /// - cohesion: seek the seen neighbours' centre.
 pub fn neighbour_forces(
     fish: &[Fish],
@@ -84,7 +84,7 @@ pub fn neighbour_forces(
     let steer = |desired: Vec3| limit(desired - me.velocity_m_per_s, perception.max_force_m_per_s2);
     NeighbourForces {
         separation_m_per_s2: steer(away.normalize_or_zero() * perception.max_speed_m_per_s),
-        alignment_m_per_s2: steer(limit(velocity_sum / n, perception.max_speed_m_per_s)),
+        alignment_m_per_s2: steer(velocity_sum.normalize_or_zero() * perception.max_speed_m_per_s),
         cohesion_m_per_s2: steer(
             (position_sum / n - me.position_m).normalize_or_zero() * perception.max_speed_m_per_s,
         ),

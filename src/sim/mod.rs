@@ -22,4 +22,4 @@ pub use school_metrics::SchoolMetrics;
 pub use spatial_grid::SpatialGrid;
 pub use steering::SteeringParams;
 pub use tank::Tank;
-pub use world::{DT_SECS, World, WorldConfig};
+pub use world::{BoidParams, DT_SECS, World, WorldConfig};

@@ -10,8 +10,11 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
+use super::boid_forces::{self, Perception};
+use super::control_mode::{self, ControlMode};
 use super::fish::Fish;
 use super::obstacle::Obstacle;
+use super::spatial_grid::SpatialGrid;
 use super::steering::{self, SteeringParams};
 use super::tank::Tank;
 
@@ -73,6 +76,43 @@ impl Default for WorldConfig {
     }
 }
 
+/// The SIMBA boid layer's settings: five weights on the papers' 0–100 scale (in
+/// [`control_mode::Force::ALL`] order), how they combine, and what fish perceive.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BoidParams {
+    pub weights: [f32; 5],
+    pub mode: ControlMode,
+    pub perception: Perception,
+    /// Weight of a gentle wander added to every mode so fish never swim on
+    /// rails. Default 0.05 (tuned): a gentle drift that the five forces override.
+    pub wander_weight: f32,
+}
+
+impl BoidParams {
+    /// Table 1's "group" preset with vision 2 m, 300°, blended.
+    pub fn group() -> Self {
+        Self {
+            weights: control_mode::GROUP_WEIGHTS,
+            mode: ControlMode::Blended,
+            perception: Perception {
+                vision_distance_m: 2.0,
+                vision_angle_rad: 300f32.to_radians(),
+                max_speed_m_per_s: 0.8,
+                max_force_m_per_s2: 1.5,
+            },
+            wander_weight: 0.05,
+        }
+    }
+
+    /// Table 1's "individual" preset, same perception.
+    pub fn individual() -> Self {
+        Self {
+            weights: control_mode::INDIVIDUAL_WEIGHTS,
+            ..Self::group()
+        }
+    }
+}
+
 /// The aquarium and everything in it.
 #[derive(Clone, Debug)]
 pub struct World {
@@ -85,6 +125,13 @@ pub struct World {
     time_secs: f64,
     steps: u64,
     non_finite_repairs: u64,
+    /// `Some`: fish steer with the SIMBA boid layer; `None`: they wander alone.
+    boids: Option<BoidParams>,
+    grid: SpatialGrid,
+    /// How many fish-steps each of the five forces was applied on.
+    force_counts: [u64; 5],
+    /// Fish-steps taken with the boid layer on.
+    boid_fish_steps: u64,
 }
 
 impl World {
@@ -108,6 +155,10 @@ impl World {
             time_secs: 0.0,
             steps: 0,
             non_finite_repairs: 0,
+            boids: None,
+            grid: SpatialGrid::default(),
+            force_counts: [0; 5],
+            boid_fish_steps: 0,
         };
         world.set_fish_count(config.fish_count);
         world
@@ -172,6 +223,10 @@ impl World {
     ///    glass or rock, so no fish ever leaves the water or enters a rock,
     /// 4. advance the tail-beat phase.
     pub fn step(&mut self) {
+        if let Some(boids) = self.boids {
+            self.step_boids(&boids);
+            return;
+        }
         let params = self.params;
         for fish in &mut self.fish {
             let before = *fish;
@@ -212,6 +267,103 @@ impl World {
         self.time_secs = self.steps as f64 * f64::from(DT_SECS);
     }
 
+    /// Steer with the SIMBA boid layer (`Some`) or wander alone (`None`).
+    pub fn set_boids(&mut self, boids: Option<BoidParams>) {
+        self.boids = boids;
+    }
+
+    /// The boid-layer settings, when on.
+    pub fn boids(&self) -> Option<&BoidParams> {
+        self.boids.as_ref()
+    }
+
+    /// Fraction of fish-steps on which each force was applied (random modes show
+    /// their lottery here), in [`control_mode::Force::ALL`] order.
+    pub fn force_frequencies(&self) -> [f64; 5] {
+        let fish_steps = self.boid_fish_steps.max(1) as f64;
+        std::array::from_fn(|i| self.force_counts[i] as f64 / fish_steps)
+    }
+
+    /// One step of the boid layer. All fish perceive the same snapshot of the
+    /// school (synchronous update), so the result does not depend on fish order.
+    fn step_boids(&mut self, boids: &BoidParams) {
+        let params = SteeringParams {
+            max_speed_m_per_s: boids.perception.max_speed_m_per_s,
+            max_force_m_per_s2: boids.perception.max_force_m_per_s2,
+            ..self.params
+        };
+        let max_force = params.max_force_m_per_s2;
+        let snapshot = self.fish.clone();
+        let positions: Vec<Vec3> = snapshot.iter().map(|f| f.position_m).collect();
+        self.grid.rebuild(
+            self.tank.min_m,
+            self.tank.max_m,
+            boids.perception.vision_distance_m,
+            &positions,
+        );
+        for i in 0..self.fish.len() {
+            let me = snapshot[i];
+            let neighbours =
+                boid_forces::neighbour_forces(&snapshot, i, &self.grid, &boids.perception);
+            let containment = steering::limit(
+                steering::containment(
+                    me.position_m,
+                    me.velocity_m_per_s,
+                    &self.tank,
+                    params.containment_look_ahead_s,
+                    params.containment_margin_m,
+                    params.max_speed_m_per_s,
+                ),
+                max_force,
+            );
+            let avoidance = steering::limit(
+                steering::avoid_obstacles(
+                    me.position_m,
+                    me.velocity_m_per_s,
+                    &self.obstacles,
+                    params.avoidance_look_ahead_m,
+                    params.max_speed_m_per_s,
+                ),
+                max_force,
+            );
+            let forces = [
+                containment,
+                neighbours.alignment_m_per_s2,
+                neighbours.cohesion_m_per_s2,
+                neighbours.separation_m_per_s2,
+                avoidance,
+            ];
+            let combined = control_mode::combine(
+                boids.mode,
+                &forces,
+                &boids.weights,
+                max_force,
+                &mut self.rng,
+            );
+            for (count, applied) in self.force_counts.iter_mut().zip(combined.applied) {
+                *count += u64::from(applied);
+            }
+            self.boid_fish_steps += 1;
+            let fish = &mut self.fish[i];
+            let wander = steering::wander(fish, &mut self.rng, &params);
+            let mut steering_m_per_s2 = combined.force_m_per_s2 + wander * boids.wander_weight;
+            if !steering_m_per_s2.is_finite() {
+                self.non_finite_repairs += 1;
+                steering_m_per_s2 = Vec3::ZERO;
+            }
+            fish.integrate(steering_m_per_s2, &params, DT_SECS);
+            if !(fish.position_m.is_finite() && fish.velocity_m_per_s.is_finite()) {
+                self.non_finite_repairs += 1;
+                fish.position_m = me.position_m;
+                fish.velocity_m_per_s = me.heading() * params.min_speed_m_per_s.max(0.0);
+            }
+            enforce_hard_constraints(fish, &self.tank, &self.obstacles);
+            fish.advance_tail_phase(DT_SECS);
+        }
+        self.steps += 1;
+        self.time_secs = self.steps as f64 * f64::from(DT_SECS);
+    }
+
     /// Keep the first `fish_count` fish (at most [`MAX_FISH_COUNT`]), or add
     /// new ones drawn from the world's random generator. Existing fish are
     /// never changed.
@@ -228,11 +380,13 @@ impl World {
     /// same steering tuning; time and step count restart at zero.
     pub fn reset(&mut self, seed: u64) {
         let params = self.params;
+        let boids = self.boids;
         *self = Self::new(WorldConfig {
             seed,
             fish_count: self.fish.len(),
         });
         self.params = params;
+        self.boids = boids;
     }
 }
 
@@ -603,5 +757,82 @@ mod tests {
         }
         assert!(w.non_finite_repairs() > 0);
         assert!(w.fish().iter().all(|f| f.wander_angle_rad.is_finite()));
+    }
+
+    fn boid_world(params: BoidParams, fish_count: usize) -> World {
+        let mut w = World::new(WorldConfig {
+            seed: 1,
+            fish_count,
+        });
+        w.set_boids(Some(params));
+        w
+    }
+
+    #[test]
+    fn group_preset_packs_fish_closer_and_into_fewer_groups_than_individual() {
+        let mut grid = crate::sim::SpatialGrid::default();
+        let mut measure = |params: BoidParams| {
+            let mut w = boid_world(params, 200);
+            for _ in 0..3600 {
+                w.step();
+            }
+            crate::sim::school_metrics::measure(w.fish(), w.tank().min_m, w.tank().max_m, &mut grid)
+        };
+        let group = measure(BoidParams::group());
+        let individual = measure(BoidParams::individual());
+        assert!(
+            group.nnd_body_lengths < individual.nnd_body_lengths,
+            "{group:?} vs {individual:?}"
+        );
+        assert!(
+            group.groups < individual.groups,
+            "{group:?} vs {individual:?}"
+        );
+    }
+
+    #[test]
+    fn monte_carlo_in_the_world_applies_forces_as_often_as_their_weights_say() {
+        let params = BoidParams {
+            mode: ControlMode::MonteCarlo,
+            weights: control_mode::MONTE_CARLO_PAPER_WEIGHTS,
+            ..BoidParams::group()
+        };
+        let mut w = boid_world(params, 200);
+        for _ in 0..600 {
+            w.step();
+        }
+        let total: f32 = control_mode::MONTE_CARLO_PAPER_WEIGHTS.iter().sum();
+        for (i, seen) in w.force_frequencies().into_iter().enumerate() {
+            let expected = f64::from(control_mode::MONTE_CARLO_PAPER_WEIGHTS[i] / total);
+            assert!(
+                (seen - expected).abs() < 0.01,
+                "force {i}: {seen} vs {expected}"
+            );
+        }
+    }
+
+    #[test]
+    fn boids_with_every_slider_at_zero_or_maximum_stay_in_the_tank_and_finite() {
+        for mode in ControlMode::ALL {
+            for weights in [[0.0; 5], [100.0; 5]] {
+                let params = BoidParams {
+                    mode,
+                    weights,
+                    ..BoidParams::group()
+                };
+                let mut w = boid_world(params, 300);
+                for _ in 0..600 {
+                    w.step();
+                }
+                for f in w.fish() {
+                    assert!(f.position_m.is_finite() && f.velocity_m_per_s.is_finite());
+                    assert!(w.tank().contains(f.position_m, 0.0));
+                    for o in w.obstacles() {
+                        assert!(o.signed_distance_m(f.position_m) >= 0.0);
+                    }
+                }
+                assert_eq!(w.non_finite_repairs(), 0, "{mode:?} {weights:?}");
+            }
+        }
     }
 }
