@@ -6,6 +6,7 @@
 //! its unit (`speed_m_per_s`, `radius_m`, `dt_secs`). The y axis points up and
 //! the sand floor is at y = 0. A run is fully determined by its seed.
 
+pub mod body;
 pub mod boid_forces;
 pub mod control_mode;
 pub mod fish;

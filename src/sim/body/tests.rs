@@ -1,0 +1,392 @@
+//! Behavioural specifications of the fish body (Tu & Terzopoulos 1994 §3): it swims
+//! under the swim-MC, speed follows amplitude and frequency, it rests without input,
+//! it survives long random use, its pectoral fins pitch and brake, and the turn-MC
+//! turns it by the angle asked for, to either side.
+//! All runs are deterministic (fixed seeds, fixed step).
+
+use glam::Vec3;
+
+use super::body_layout::{REST_POSITIONS, TRIANGLES};
+use super::{BodyCommand, FishBody, PectoralFins, SwimMc, SwimParams};
+
+/// Length of the test fish in metres: the paper's 26 units, so numbers read as paper
+/// units.
+const LENGTH_M: f32 = 26.0;
+
+/// Swims for `secs` with fixed parameters and fins; returns the fish and its centre
+/// of mass at the half-way time.
+fn swim(params: SwimParams, fins: PectoralFins, secs: f32) -> (FishBody, Vec3) {
+    let mut fish = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
+    let mut mc = SwimMc::default();
+    let steps = (secs / fish.dt_secs()) as usize;
+    let mut half = Vec3::ZERO;
+    for k in 0..steps {
+        let u = mc.step(&params, fish.dt_secs());
+        fish.step(
+            &BodyCommand {
+                muscle_contractions: u,
+                fins,
+            },
+            Vec3::ZERO,
+        );
+        if k + 1 == steps / 2 {
+            half = fish.centre_of_mass_m();
+        }
+    }
+    (fish, half)
+}
+
+/// Mean forward speed over the second half of a 60 s run, body lengths per second.
+fn speed_bl_per_s(params: SwimParams) -> f32 {
+    let (fish, half) = swim(params, PectoralFins::NEUTRAL, 60.0);
+    (fish.centre_of_mass_m() - half).x / 30.0 / LENGTH_M
+}
+
+fn with(amplitude: f32, frequency_hz: f32) -> SwimParams {
+    SwimParams {
+        anterior_amplitude: amplitude,
+        anterior_frequency_hz: frequency_hz,
+        posterior_amplitude: amplitude,
+        posterior_frequency_hz: frequency_hz,
+    }
+}
+
+/// Least-squares line through (x, y): (slope, r²).
+fn fit_line(points: &[(f32, f32)]) -> (f32, f32) {
+    let n = points.len() as f32;
+    let mx = points.iter().map(|p| p.0).sum::<f32>() / n;
+    let my = points.iter().map(|p| p.1).sum::<f32>() / n;
+    let sxy: f32 = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f32 = points.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let syy: f32 = points.iter().map(|p| (p.1 - my).powi(2)).sum();
+    let slope = if sxx > 0.0 { sxy / sxx } else { 0.0 };
+    let r2 = if sxx > 0.0 && syy > 0.0 {
+        sxy * sxy / (sxx * syy)
+    } else {
+        0.0
+    };
+    (slope, r2)
+}
+
+/// Signed volume enclosed by the surface triangles (positive = not inverted).
+fn enclosed_volume(p: &[Vec3]) -> f32 {
+    TRIANGLES
+        .iter()
+        .map(|[a, b, c]| p[*a].dot(p[*b].cross(p[*c])) / 6.0)
+        .sum()
+}
+
+#[test]
+fn swim_mc_swims_forward_roughly_straight() {
+    let (fish, half) = swim(SwimParams::MAX, PectoralFins::NEUTRAL, 60.0);
+    let d = fish.centre_of_mass_m() - half;
+    // Real fish and the paper's demos cruise at 0.5–1 body lengths/s.
+    let speed_bl_per_s = d.x / 30.0 / LENGTH_M;
+    assert!(
+        speed_bl_per_s > 0.5,
+        "top speed too low: {speed_bl_per_s} BL/s"
+    );
+    let heading_deg = d.y.atan2(d.x).to_degrees();
+    assert!(heading_deg.abs() < 10.0, "veers {heading_deg}°");
+    assert!(d.z.abs() < 0.1 * d.x, "climbs or sinks: {d}");
+    assert!(fish.up().z > 0.95, "not upright: {}", fish.up());
+}
+
+#[test]
+fn speed_grows_linearly_with_amplitude() {
+    let points: Vec<(f32, f32)> = [0.25, 0.5, 0.75, 1.0]
+        .into_iter()
+        .map(|r| (r, speed_bl_per_s(with(r, 3.0))))
+        .collect();
+    let (slope, r2) = fit_line(&points);
+    assert!(slope > 0.0 && r2 > 0.9, "slope {slope} r² {r2} {points:?}");
+}
+
+#[test]
+fn speed_grows_with_frequency_below_saturation() {
+    let points: Vec<(f32, f32)> = [0.5, 1.0, 1.5, 2.0, 2.5]
+        .into_iter()
+        .map(|f| (f, speed_bl_per_s(with(1.0, f))))
+        .collect();
+    let (slope, r2) = fit_line(&points);
+    assert!(slope > 0.0 && r2 > 0.9, "slope {slope} r² {r2} {points:?}");
+}
+
+#[test]
+fn without_muscle_input_the_fish_comes_to_rest_without_drift_or_spin() {
+    // At rest it stays put.
+    let (still, _) = swim(with(0.0, 0.0), PectoralFins::NEUTRAL, 30.0);
+    let start = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
+    assert!(still.centre_of_mass_m().length() < 1e-3 * LENGTH_M);
+    assert!(still.forward().dot(start.forward()) > 0.9999);
+    // Launched, it glides to a stop along its heading.
+    let mut fish = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
+    fish.set_uniform_velocity_m_per_s(Vec3::X * 0.5 * LENGTH_M);
+    let e0 = fish.kinetic_energy();
+    for _ in 0..(120.0 / fish.dt_secs()) as usize {
+        fish.step(&BodyCommand::default(), Vec3::ZERO);
+    }
+    assert!(fish.kinetic_energy() < 1e-3 * e0);
+    let c = fish.centre_of_mass_m();
+    assert!(
+        c.y.abs() < 1e-3 * LENGTH_M && c.z.abs() < 1e-3 * LENGTH_M,
+        "{c}"
+    );
+    assert!(fish.forward().dot(Vec3::X) > 0.9999, "{}", fish.forward());
+}
+
+#[test]
+fn long_random_run_stays_finite_and_intact() {
+    // Ten simulated minutes; every 5 s a new speed, fin setting and current.
+    let mut fish = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
+    let mut mc = SwimMc::default();
+    let mut seed: u64 = 0x5EED_F15F;
+    let mut random = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 40) as f32 / (1u64 << 24) as f32
+    };
+    let rest_volume = enclosed_volume(&REST_POSITIONS);
+    let mut command = BodyCommand::default();
+    let mut params = SwimParams::MAX;
+    let mut current = Vec3::ZERO;
+    let steps = (600.0 / fish.dt_secs()) as usize;
+    // (spine min, spine max, strain min, strain max), reported with --nocapture.
+    let mut extremes = (f32::INFINITY, 0.0f32, f32::INFINITY, 0.0f32);
+    for k in 0..steps {
+        if k % 91 == 0 {
+            params = mc.params_for_speed(random());
+            params.anterior_frequency_hz *= 0.5 + random();
+            params.posterior_frequency_hz = params.anterior_frequency_hz;
+            command.fins = PectoralFins {
+                left_angle_rad: 0.8 + 2.3 * random(),
+                right_angle_rad: 0.8 + 2.3 * random(),
+            };
+            current = Vec3::new(random() - 0.5, random() - 0.5, random() - 0.5) * 0.2 * LENGTH_M;
+        }
+        command.muscle_contractions = mc.step(&params, fish.dt_secs());
+        fish.step(&command, current);
+        assert!(
+            fish.positions_m().iter().all(|p| p.is_finite()),
+            "NaN at step {k}"
+        );
+        assert_eq!(fish.clamped_pivots(), 0);
+        let length = fish.spine_length_m() / LENGTH_M;
+        assert!((0.9..=1.1).contains(&length), "length {length} at step {k}");
+        let strains = fish.spring_strains();
+        extremes = (
+            extremes.0.min(length),
+            extremes.1.max(length),
+            strains.iter().fold(extremes.2, |a, s| a.min(*s)),
+            strains.iter().fold(extremes.3, |a, s| a.max(*s)),
+        );
+        assert!(
+            strains.iter().all(|s| (0.3..2.0).contains(s)),
+            "step {k}: {strains:?}"
+        );
+        let volume = enclosed_volume(fish.positions_m()) / (LENGTH_M / 26.0).powi(3);
+        assert!(
+            volume > 0.5 * rest_volume,
+            "collapsed: {volume} at step {k}"
+        );
+    }
+    println!(
+        "spine {:.3}..{:.3}, strains {:.2}..{:.2}",
+        extremes.0, extremes.1, extremes.2, extremes.3
+    );
+}
+
+#[test]
+fn pectoral_fin_pitch_makes_the_fish_ascend_or_descend() {
+    let (level, h0) = swim(SwimParams::MAX, PectoralFins::NEUTRAL, 60.0);
+    let (up, h1) = swim(SwimParams::MAX, PectoralFins::pitch(0.5), 60.0);
+    let (down, h2) = swim(SwimParams::MAX, PectoralFins::pitch(-0.5), 60.0);
+    let climb = |f: &FishBody, h: Vec3| (f.centre_of_mass_m() - h).z;
+    let (dz0, dz1, dz2) = (climb(&level, h0), climb(&up, h1), climb(&down, h2));
+    assert!(dz1 > dz0 + 0.005 * LENGTH_M, "no ascent: {dz1} vs {dz0}");
+    assert!(dz2 < dz0 - 0.005 * LENGTH_M, "no descent: {dz2} vs {dz0}");
+}
+
+#[test]
+fn braking_fins_reduce_speed() {
+    let mut free = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
+    let mut braked = free.clone();
+    for fish in [&mut free, &mut braked] {
+        fish.set_uniform_velocity_m_per_s(Vec3::X * 0.2 * LENGTH_M);
+    }
+    let brake = BodyCommand {
+        fins: PectoralFins::BRAKE,
+        ..Default::default()
+    };
+    for _ in 0..40 {
+        free.step(&BodyCommand::default(), Vec3::ZERO);
+        braked.step(&brake, Vec3::ZERO);
+    }
+    let (v_free, v_braked) = (free.velocity_m_per_s().x, braked.velocity_m_per_s().x);
+    assert!(v_braked < 0.8 * v_free, "braked {v_braked} free {v_free}");
+}
+
+/// Tuning routine behind the table in `motor_controller.rs`:
+/// `cargo test --release speed_table -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn speed_table() {
+    for (r, f) in [
+        (1.0, 0.5),
+        (1.0, 1.0),
+        (1.0, 1.5),
+        (1.0, 2.0),
+        (1.0, 2.5),
+        (1.0, 3.0),
+        (1.0, 4.0),
+        (1.0, 5.0),
+        (0.75, 3.0),
+        (0.5, 3.0),
+        (0.25, 3.0),
+    ] {
+        println!("| {r:.1} | {f:.2} | {:.3} |", speed_bl_per_s(with(r, f)));
+    }
+    let mut fish = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
+    let mut mc = SwimMc::default();
+    let n = 20_000;
+    let t0 = std::time::Instant::now();
+    for _ in 0..n {
+        let u = mc.step(&SwimParams::MAX, fish.dt_secs());
+        fish.step(
+            &BodyCommand {
+                muscle_contractions: u,
+                ..Default::default()
+            },
+            Vec3::ZERO,
+        );
+    }
+    println!(
+        "cost per step: {:.1} µs",
+        t0.elapsed().as_secs_f64() * 1e6 / n as f64
+    );
+}
+
+/// Search routine behind `SteeringMap::DEFAULT` and the turn table in `turn_mc.rs`:
+/// `cargo test --release turn_table -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn turn_table() {
+    use super::turn_mc::{
+        TurnDirection, TurnMc, find_steering_map, measure_heading_change_deg, measure_turn_deg,
+    };
+    let (map, measured) = find_steering_map();
+    for ((deg, p), m) in map.keys.iter().zip(measured) {
+        println!(
+            "| {deg:.0} | {:.4} | {:.1} | {:.4} | {:.1} | {m:.1} |",
+            p.anterior_amplitude,
+            p.anterior_rate_per_sec,
+            p.posterior_amplitude,
+            p.posterior_rate_per_sec
+        );
+    }
+    let mc = TurnMc::default();
+    for deg in [10.0, 20.0, 35.0, 50.0, 75.0] {
+        let p = mc.map.params_for_angle(deg);
+        let l = measure_turn_deg(p, TurnDirection::Left);
+        let r = measure_turn_deg(p, TurnDirection::Right);
+        let secs = p.duration_secs(mc.restore_rate_ratio);
+        println!("{deg}° → {l:.1}° / {r:.1}° in {secs:.1} s");
+    }
+    for deg in [135.0, 180.0] {
+        let mut seq = TurnMc::default();
+        seq.start_turn(deg);
+        println!(
+            "sequence {deg}° → {:.1}°",
+            measure_heading_change_deg(&mut seq, false)
+        );
+    }
+}
+
+mod turning {
+    use super::super::turn_mc::{
+        SteeringMap, TurnDirection, TurnMc, measure_heading_change_deg, measure_turn_deg,
+        mirror_muscles,
+    };
+
+    #[test]
+    fn each_key_turn_lands_within_10_degrees_of_its_target() {
+        for (target, params) in SteeringMap::DEFAULT.keys {
+            let left = measure_turn_deg(params, TurnDirection::Left);
+            let right = measure_turn_deg(params, TurnDirection::Right);
+            assert!((left - target).abs() <= 10.0, "left {target}°: {left}°");
+            assert!((right + target).abs() <= 10.0, "right {target}°: {right}°");
+        }
+    }
+
+    #[test]
+    fn left_and_right_turns_are_mirror_images() {
+        // The controller: a right turn contracts exactly the mirror muscles.
+        let (mut left, mut right) = (TurnMc::default(), TurnMc::default());
+        left.start_turn(50.0);
+        right.start_turn(-50.0);
+        let mut steps = 0;
+        while left.is_turning() || right.is_turning() {
+            let (l, r) = (left.step(0.055), right.step(0.055));
+            assert_eq!(mirror_muscles(&l), r);
+            steps += 1;
+            assert!(steps < 10_000);
+        }
+        assert!(steps > 10);
+        // The body: mirror-image turns, up to rounding.
+        let params = SteeringMap::DEFAULT.params_for_angle(50.0);
+        let l = measure_turn_deg(params, TurnDirection::Left);
+        let r = measure_turn_deg(params, TurnDirection::Right);
+        assert!(l > 0.0 && (l + r).abs() < 0.5, "left {l}° right {r}°");
+    }
+
+    #[test]
+    fn steering_map_is_monotonic_in_angle() {
+        let map = SteeringMap::DEFAULT;
+        let mut previous = map.params_for_angle(0.0);
+        assert_eq!(previous.anterior_amplitude, 0.0);
+        for deg in 1..=90 {
+            let p = map.params_for_angle(deg as f32);
+            assert!(p.anterior_amplitude > previous.anterior_amplitude, "{deg}°");
+            assert!(
+                p.posterior_amplitude > previous.posterior_amplitude,
+                "{deg}°"
+            );
+            previous = p;
+        }
+        // Beyond 90° a single turn saturates; the sign only picks the side.
+        assert_eq!(map.params_for_angle(120.0), map.params_for_angle(90.0));
+        assert_eq!(map.params_for_angle(-40.0), map.params_for_angle(40.0));
+        // The measured turn grows with the requested angle and follows it.
+        let mut last = f32::NEG_INFINITY;
+        for deg in [10.0, 20.0, 35.0, 50.0, 75.0, 90.0] {
+            let got = measure_turn_deg(map.params_for_angle(deg), TurnDirection::Left);
+            assert!(got > last, "{deg}°: {got}° after {last}°");
+            assert!((got - deg).abs() <= 10.0, "{deg}° requested, {got}° turned");
+            last = got;
+        }
+    }
+
+    #[test]
+    fn turns_beyond_90_degrees_are_sequences_of_smaller_turns() {
+        let mut mc = TurnMc::default();
+        mc.start_turn(180.0);
+        // Two 90° turns back to back: the anterior muscle rises twice.
+        let mut rises = 0;
+        let mut previous = 0.0;
+        let mut rising = false;
+        while mc.is_turning() {
+            let u = mc.step(0.055)[0];
+            if u > previous && !rising {
+                rises += 1;
+            }
+            rising = u > previous;
+            previous = u;
+        }
+        assert_eq!(rises, 2);
+        let mut mc = TurnMc::default();
+        mc.start_turn(-180.0);
+        let turned = measure_heading_change_deg(&mut mc, true);
+        assert!((turned + 180.0).abs() <= 20.0, "turned {turned}°");
+    }
+}

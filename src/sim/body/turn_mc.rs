@@ -1,0 +1,472 @@
+//! The turn motor controllers, Tu & Terzopoulos 1994 §3.3: turn-MC(angle) →
+//! {r0, s0, r1, s1}, the contraction amplitude r and rate s of the anterior (0) and
+//! posterior (1) turning segments (here the anterior and middle muscle segments, see
+//! `body_layout.rs`). "A left turn is achieved by quickly contracting the left side
+//! springs of the segments and relaxing those on the right side. … Then the
+//! contracted springs are restored to their rest lengths at a slower rate, so that
+//! the fish regains its original shape with minimal further change in
+//! orientation."
+//!
+//! Contraction profile of one segment on the turning side (the other side relaxed):
+//! u(t) = s·t up to the amplitude r (reached at t = r/s), then down at the slower rate
+//! q·s to 0, q = [`TurnMc::restore_rate_ratio`]. A right turn is the mirror image.
+//!
+//! # Steering map (paper: "4 sets of parameters … interpolated … any angle up to 90°")
+//! Four key sets for 30°, 45°, 60° and 90° were found by [`find_steering_map`]
+//! (reproduce: `cargo test --release turn_table -- --ignored --nocapture`) and are
+//! stored in [`SteeringMap::DEFAULT`]. Angles in between are linear interpolation of
+//! the parameters between neighbouring keys (and from zero below 30°); larger turns are
+//! sequences of turns of at most 90° each ([`TurnMc::start_turn`]).
+//! The measurement ([`measure_turn_deg`], [`measure_heading_change_deg`]): a default
+//! 26-unit fish swims straight at top speed for [`TURN_LEAD_IN_SECS`], executes the
+//! turn while the swim-MC keeps beating ([`combine_swim_and_turn`]), then swims
+//! straight for [`TURN_SETTLE_SECS`]; the turn angle is the change of the fore
+//! body's horizontal heading, averaged over one second (three tail beats) before
+//! the turn and at the end.
+//!
+//! Why the turn is measured while swimming and the turn adds to the swim wave
+//! ([`combine_swim_and_turn`]): at the body's time scale (k = 40, see `fish_body.rs`)
+//! a glide at 0.5 body lengths/s loses 63 % of its speed in about 0.2 s and coasts
+//! only 0.1 body lengths, so there is almost no momentum to deflect, and with
+//! linear drag a bend that is undone turns a gliding fish very little however fast
+//! it is made (measured from a 0.5 body lengths/s glide with a restoring rate 1/4
+//! of the contraction rate: at most 2.2° over r ≤ 1, s ≤ 16/s). The turn comes from the tail's
+//! thrust acting on a bent body, so the angle grows with r and with the time spent
+//! bent. With the slow restoring stroke (1/20 of the contraction rate) that time is
+//! r/s·(1 + 20).
+//!
+//! | key angle | r0 = r1 | s0 = s1 (1/s) | duration (s) | measured left | measured right |
+//! |-----------|---------|---------------|--------------|---------------|----------------|
+//! | 30°       | 0.3483  | 2.0           | 3.7          | 30.0°         | −29.7°         |
+//! | 45°       | 0.4485  | 2.0           | 4.7          | 45.0°         | −44.7°         |
+//! | 60°       | 0.5420  | 2.0           | 5.7          | 60.0°         | −59.6°         |
+//! | 90°       | 0.7004  | 2.0           | 7.4          | 90.0°         | −89.6°         |
+//!
+//! Interpolated (measured left/right): 10° → 10.9/−10.6, 20° → 20.9/−20.6,
+//! 35° → 35.4/−35.0, 50° → 49.6/−49.3, 75° → 74.1/−73.7. Sequences: 135° requested
+//! → 132.6°, 180° → 183.5° (all from `tests::turn_table`). These turns are slow
+//! (a 90° turn takes 7.4 s): the paper's body cannot bend harder
+//! (l_min = 0.5 l reaches 0.67 l against the cross springs), and r = 1 at
+//! s = 2/s gives about 160°.
+
+use serde::{Deserialize, Serialize};
+use std::f32::consts::{PI, TAU};
+
+use super::body_layout::{MUSCLE_COUNT, MuscleSegment, Side, muscle_index};
+
+/// Straight swimming before a measured turn, seconds. 3.0, chosen: the fish is at
+/// its top speed after about 1 s.
+pub const TURN_LEAD_IN_SECS: f32 = 3.0;
+/// Straight swimming after the contraction profile ends before the heading is read,
+/// seconds. 2.0, chosen: the body is straight again and swims on a steady heading.
+pub const TURN_SETTLE_SECS: f32 = 2.0;
+/// Window over which the heading is averaged, seconds. 1.0 = three tail beats at
+/// the top swim frequency of 3 Hz.
+pub const HEADING_AVERAGE_SECS: f32 = 1.0;
+/// Largest angle of a single turn, degrees (paper §3.3); larger requests become
+/// sequences.
+pub const MAX_SINGLE_TURN_DEG: f32 = 90.0;
+
+/// Which way to turn (seen from above, the fish's own left or right).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum TurnDirection {
+    /// Head swings towards +y of the body frame (counter-clockwise from above).
+    Left,
+    /// The mirror image.
+    Right,
+}
+
+/// Amplitudes (contraction factor, [0, 1]) and quick contraction rates (contraction
+/// factor per second) of the two turning segments.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct TurnParams {
+    /// r0: anterior turning segment amplitude, [0, 1].
+    pub anterior_amplitude: f32,
+    /// s0: anterior turning segment contraction rate, 1/s.
+    pub anterior_rate_per_sec: f32,
+    /// r1: posterior turning (= middle muscle) segment amplitude, [0, 1].
+    pub posterior_amplitude: f32,
+    /// s1: posterior turning segment contraction rate, 1/s.
+    pub posterior_rate_per_sec: f32,
+}
+
+impl TurnParams {
+    /// No turn.
+    pub const ZERO: Self = Self {
+        anterior_amplitude: 0.0,
+        anterior_rate_per_sec: 0.0,
+        posterior_amplitude: 0.0,
+        posterior_rate_per_sec: 0.0,
+    };
+
+    /// Componentwise linear interpolation, `t` in [0, 1].
+    pub fn lerp(&self, other: &Self, t: f32) -> Self {
+        let l = |a: f32, b: f32| a + (b - a) * t;
+        Self {
+            anterior_amplitude: l(self.anterior_amplitude, other.anterior_amplitude),
+            anterior_rate_per_sec: l(self.anterior_rate_per_sec, other.anterior_rate_per_sec),
+            posterior_amplitude: l(self.posterior_amplitude, other.posterior_amplitude),
+            posterior_rate_per_sec: l(self.posterior_rate_per_sec, other.posterior_rate_per_sec),
+        }
+    }
+
+    /// Contraction of one segment `t_secs` after the start of the turn.
+    fn contraction(amplitude: f32, rate_per_sec: f32, restore_ratio: f32, t_secs: f32) -> f32 {
+        let r = sanitize(amplitude).clamp(0.0, 1.0);
+        let s = sanitize(rate_per_sec).max(0.0);
+        if r <= 0.0 || s <= 0.0 {
+            return 0.0;
+        }
+        let rise_secs = r / s;
+        if t_secs <= rise_secs {
+            return (s * t_secs).clamp(0.0, r);
+        }
+        let q = sanitize(restore_ratio).clamp(1e-3, 1.0);
+        (r - q * s * (t_secs - rise_secs)).max(0.0)
+    }
+
+    /// Time until both segments are relaxed again, seconds.
+    pub fn duration_secs(&self, restore_ratio: f32) -> f32 {
+        let q = sanitize(restore_ratio).clamp(1e-3, 1.0);
+        let one = |r: f32, s: f32| {
+            let (r, s) = (sanitize(r).clamp(0.0, 1.0), sanitize(s).max(0.0));
+            if r <= 0.0 || s <= 0.0 {
+                0.0
+            } else {
+                r / s + r / (q * s)
+            }
+        };
+        one(self.anterior_amplitude, self.anterior_rate_per_sec)
+            .max(one(self.posterior_amplitude, self.posterior_rate_per_sec))
+    }
+}
+
+fn sanitize(x: f32) -> f32 {
+    if x.is_finite() { x } else { 0.0 }
+}
+
+/// The four key turns and their parameters: turn-MC(angle) by interpolation.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SteeringMap {
+    /// (turn angle in degrees, parameters), in increasing angle.
+    pub keys: [(f32, TurnParams); 4],
+}
+
+impl SteeringMap {
+    /// The key sets found by [`find_steering_map`] (see the module doc).
+    pub const DEFAULT: Self = Self {
+        keys: [
+            (30.0, key(0.3483)),
+            (45.0, key(0.4485)),
+            (60.0, key(0.5420)),
+            (90.0, key(0.7004)),
+        ],
+    };
+
+    /// turn-MC(angle): parameters for a turn of `angle_deg` (absolute value, clamped to
+    /// [0, 90]; NaN is 0), interpolated linearly between neighbouring keys and from
+    /// [`TurnParams::ZERO`] at 0°. Below the first key amplitude and rate shrink
+    /// together, so a small turn keeps the 30° turn's duration with a shallower bend
+    /// (measured 10° → 10.9°, 20° → 20.9°).
+    pub fn params_for_angle(&self, angle_deg: f32) -> TurnParams {
+        let a = sanitize(angle_deg).abs().min(MAX_SINGLE_TURN_DEG);
+        let mut lo = (0.0, TurnParams::ZERO);
+        for (deg, p) in self.keys {
+            if a <= deg {
+                let span = deg - lo.0;
+                let t = if span > 0.0 { (a - lo.0) / span } else { 1.0 };
+                return lo.1.lerp(&p, t);
+            }
+            lo = (deg, p);
+        }
+        lo.1
+    }
+}
+
+impl Default for SteeringMap {
+    fn default() -> Self {
+        Self::DEFAULT
+    }
+}
+
+/// The key-set family searched by [`find_steering_map`]: both turning segments with
+/// amplitude `r` and the common quick rate [`KEY_RATE_PER_SEC`].
+const fn key(r: f32) -> TurnParams {
+    TurnParams {
+        anterior_amplitude: r,
+        anterior_rate_per_sec: KEY_RATE_PER_SEC,
+        posterior_amplitude: r,
+        posterior_rate_per_sec: KEY_RATE_PER_SEC,
+    }
+}
+
+/// Quick contraction rate of the key turns, 1/s. 2.0, chosen: the full contraction
+/// of a 90° turn takes 0.35 s, twenty times quicker than its restoring stroke; at
+/// 4/s the 90° turn would need r > 1 (r = 1 gives 80°).
+pub const KEY_RATE_PER_SEC: f32 = 2.0;
+
+/// A turn in progress.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+struct ActiveTurn {
+    params: TurnParams,
+    direction: TurnDirection,
+    elapsed_secs: f32,
+}
+
+/// The left- and right-turn motor controllers (one object; the sign of the angle
+/// picks the side).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TurnMc {
+    /// Angle → parameters.
+    pub map: SteeringMap,
+    /// Restoring rate as a fraction of the quick contraction rate, dimensionless.
+    /// Default 0.05, tuned: "restored … at a slower rate" (paper §3.3). The turn
+    /// grows with the time spent bent; at 0.25 the largest turn (r = 1, s = 2/s) is
+    /// 38°, at 0.05 it is about 160°, enough for the 90° key with r = 0.70.
+    pub restore_rate_ratio: f32,
+    active: Option<ActiveTurn>,
+    /// Turns still queued after the active one: count and angle of each, degrees
+    /// (signed, + = left).
+    queued_turns: u32,
+    queued_angle_deg: f32,
+}
+
+impl Default for TurnMc {
+    fn default() -> Self {
+        Self {
+            map: SteeringMap::DEFAULT,
+            restore_rate_ratio: 0.05,
+            active: None,
+            queued_turns: 0,
+            queued_angle_deg: 0.0,
+        }
+    }
+}
+
+impl TurnMc {
+    /// Starts a turn of `angle_deg` degrees, positive = left, negative = right,
+    /// replacing any turn in progress. Turns larger than 90° become a sequence of
+    /// equal turns of at most 90° each, executed back to back. NaN or 0 cancels.
+    pub fn start_turn(&mut self, angle_deg: f32) {
+        let a = sanitize(angle_deg);
+        self.active = None;
+        self.queued_turns = 0;
+        if a == 0.0 {
+            return;
+        }
+        // At most 8 pieces (720°); more is never a sensible request.
+        let pieces = (a.abs() / MAX_SINGLE_TURN_DEG).ceil().clamp(1.0, 8.0);
+        let each = a.signum() * a.abs().min(8.0 * MAX_SINGLE_TURN_DEG) / pieces;
+        self.queued_angle_deg = each;
+        self.queued_turns = pieces as u32;
+        self.next_turn();
+    }
+
+    /// Starts a single turn with explicit parameters (used by the search routine).
+    pub fn start_turn_with(&mut self, params: TurnParams, direction: TurnDirection) {
+        self.queued_turns = 0;
+        self.active = Some(ActiveTurn {
+            params,
+            direction,
+            elapsed_secs: 0.0,
+        });
+    }
+
+    fn next_turn(&mut self) {
+        if self.queued_turns == 0 {
+            self.active = None;
+            return;
+        }
+        self.queued_turns -= 1;
+        let direction = if self.queued_angle_deg >= 0.0 {
+            TurnDirection::Left
+        } else {
+            TurnDirection::Right
+        };
+        self.active = Some(ActiveTurn {
+            params: self.map.params_for_angle(self.queued_angle_deg),
+            direction,
+            elapsed_secs: 0.0,
+        });
+    }
+
+    /// True while a turn (or a queued part of one) is in progress.
+    pub fn is_turning(&self) -> bool {
+        self.active.is_some()
+    }
+
+    /// Advances the turn by `dt_secs` and returns the 12 muscle contractions: the
+    /// anterior and middle segments on the turning side, everything else 0. While
+    /// turning, the caller should use these for the anterior and middle segments
+    /// instead of the swim-MC's.
+    pub fn step(&mut self, dt_secs: f32) -> [f32; MUSCLE_COUNT] {
+        let mut u = [0.0; MUSCLE_COUNT];
+        let Some(turn) = self.active.as_mut() else {
+            return u;
+        };
+        turn.elapsed_secs += sanitize(dt_secs).max(0.0);
+        let t = turn.elapsed_secs;
+        let p = turn.params;
+        let side = match turn.direction {
+            TurnDirection::Left => Side::Left,
+            TurnDirection::Right => Side::Right,
+        };
+        let q = self.restore_rate_ratio;
+        for (segment, r, s) in [
+            (
+                MuscleSegment::Anterior,
+                p.anterior_amplitude,
+                p.anterior_rate_per_sec,
+            ),
+            (
+                MuscleSegment::Middle,
+                p.posterior_amplitude,
+                p.posterior_rate_per_sec,
+            ),
+        ] {
+            let c = TurnParams::contraction(r, s, q, t);
+            let i = muscle_index(segment, side);
+            u[i] = c;
+            u[i + 1] = c;
+        }
+        if t >= p.duration_secs(q) {
+            self.next_turn();
+        }
+        u
+    }
+}
+
+/// Heading change of a swimming fish executing one turn, degrees (+ = left). See the
+/// module doc for the protocol. Deterministic.
+pub fn measure_turn_deg(params: TurnParams, direction: TurnDirection) -> f32 {
+    let mut mc = TurnMc::default();
+    mc.start_turn_with(params, direction);
+    measure_heading_change_deg(&mut mc, direction == TurnDirection::Right)
+}
+
+/// How a fish uses both controllers at once: the turn-MC's contractions are added
+/// to the swim-MC's and clamped to 1. Chosen: replacing the middle segment's swim
+/// wave by the turn bend (the alternative) weakens the thrust during the turn and
+/// halves the turn (measured r = 1, s = 2/s, restoring ratio 1/4: 18–24° replacing,
+/// 38° adding), and a turn needs thrust (this body has almost no momentum to
+/// deflect, see the module doc).
+pub fn combine_swim_and_turn(
+    swim: &[f32; MUSCLE_COUNT],
+    turn: &[f32; MUSCLE_COUNT],
+) -> [f32; MUSCLE_COUNT] {
+    let mut u = *swim;
+    for (a, b) in u.iter_mut().zip(turn) {
+        *a = (*a + b).clamp(0.0, 1.0);
+    }
+    u
+}
+
+/// The same contractions with left and right swapped (the mirror image y → −y).
+pub fn mirror_muscles(u: &[f32; MUSCLE_COUNT]) -> [f32; MUSCLE_COUNT] {
+    let mut out = [0.0; MUSCLE_COUNT];
+    for segment in [
+        MuscleSegment::Anterior,
+        MuscleSegment::Middle,
+        MuscleSegment::Posterior,
+    ] {
+        let (l, r) = (
+            muscle_index(segment, Side::Left),
+            muscle_index(segment, Side::Right),
+        );
+        out[l..l + 2].copy_from_slice(&u[r..r + 2]);
+        out[r..r + 2].copy_from_slice(&u[l..l + 2]);
+    }
+    out
+}
+
+/// Runs the measurement protocol with a turn already started on `mc`: swims straight
+/// at top speed for [`TURN_LEAD_IN_SECS`], then lets `mc` drive the anterior and
+/// middle segments (the swim-MC keeps beating the posterior one) until it is done,
+/// then swims straight for [`TURN_SETTLE_SECS`]. The heading is the fore body's
+/// horizontal direction, unwrapped and averaged over the last
+/// [`HEADING_AVERAGE_SECS`] before the turn and at the end (three tail beats, so
+/// the beat's yaw wobble cancels). Returns the change in degrees (+ = left).
+/// The turn's contractions are *added* to the swim-MC's (clamped to 1), so the
+/// shared middle segment keeps beating around a bent mean. `mirror_swim` swaps the
+/// swim-MC's sides for the whole run, so a right turn is measured as the exact
+/// mirror image of a left one.
+pub fn measure_heading_change_deg(mc: &mut TurnMc, mirror_swim: bool) -> f32 {
+    use super::{BodyCommand, FishBody, SwimMc, SwimParams};
+    use glam::Vec3;
+    let length_m = super::body_layout::PAPER_BODY_LENGTH;
+    let mut fish = FishBody::new(length_m, Vec3::ZERO, Vec3::X);
+    let mut swim = SwimMc::default();
+    let dt = fish.dt_secs();
+    let heading = |f: &FishBody| f.forward().y.atan2(f.forward().x);
+    let mut previous = heading(&fish);
+    let mut unwrapped_rad = previous;
+    let average_steps = ((HEADING_AVERAGE_SECS / dt).round() as usize).max(1);
+    let mut window: Vec<f32> = Vec::with_capacity(average_steps);
+    let push = |w: &mut Vec<f32>, h: f32| {
+        if w.len() == average_steps {
+            w.remove(0);
+        }
+        w.push(h);
+    };
+    let mean = |w: &[f32]| w.iter().sum::<f32>() / w.len().max(1) as f32;
+    let mut run = |fish: &mut FishBody, mc: Option<&mut TurnMc>, window: &mut Vec<f32>| {
+        let mut u = swim.step(&SwimParams::MAX, dt);
+        if mirror_swim {
+            u = mirror_muscles(&u);
+        }
+        if let Some(mc) = mc {
+            u = combine_swim_and_turn(&u, &mc.step(dt));
+        }
+        fish.step(
+            &BodyCommand {
+                muscle_contractions: u,
+                ..Default::default()
+            },
+            Vec3::ZERO,
+        );
+        let h = heading(fish);
+        unwrapped_rad += (h - previous + PI).rem_euclid(TAU) - PI;
+        previous = h;
+        push(window, unwrapped_rad);
+    };
+    for _ in 0..(TURN_LEAD_IN_SECS / dt).round() as usize {
+        run(&mut fish, None, &mut window);
+    }
+    let before = mean(&window);
+    // Guard: at most 60 s of turning.
+    for _ in 0..(60.0 / dt) as usize {
+        if !mc.is_turning() {
+            break;
+        }
+        run(&mut fish, Some(mc), &mut window);
+    }
+    for _ in 0..(TURN_SETTLE_SECS / dt).round() as usize {
+        run(&mut fish, None, &mut window);
+    }
+    (mean(&window) - before).to_degrees()
+}
+
+/// The search routine behind [`SteeringMap::DEFAULT`]: within the family
+/// r0 = r1 = r, s0 = s1 = [`KEY_RATE_PER_SEC`], bisect r in [0, 1] for each target
+/// angle (30°, 45°, 60°, 90°) on left turns, assuming the turn grows with r (checked
+/// by the tests). Returns the map and the measured angle of each key.
+pub fn find_steering_map() -> (SteeringMap, [f32; 4]) {
+    let targets = [30.0, 45.0, 60.0, 90.0];
+    let mut map = SteeringMap::DEFAULT;
+    let mut measured = [0.0; 4];
+    for (k, target) in targets.into_iter().enumerate() {
+        let (mut lo, mut hi) = (0.0f32, 1.0f32);
+        for _ in 0..14 {
+            let mid = 0.5 * (lo + hi);
+            if measure_turn_deg(key(mid), TurnDirection::Left) < target {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let r = 0.5 * (lo + hi);
+        map.keys[k] = (target, key(r));
+        measured[k] = measure_turn_deg(key(r), TurnDirection::Left);
+    }
+    (map, measured)
+}
