@@ -253,22 +253,17 @@ impl World {
                 params.avoidance_look_ahead_m,
                 params.max_speed_m_per_s,
             );
-            let mut steering_m_per_s2 = wander * params.wander_weight
+            let steering_m_per_s2 = wander * params.wander_weight
                 + containment * params.containment_weight
                 + avoidance * params.avoidance_weight;
-            if !steering_m_per_s2.is_finite() {
-                self.non_finite_repairs += 1;
-                steering_m_per_s2 = Vec3::ZERO;
-            }
-
-            fish.integrate(steering_m_per_s2, &params, DT_SECS);
-            if !(fish.position_m.is_finite() && fish.velocity_m_per_s.is_finite()) {
-                self.non_finite_repairs += 1;
-                fish.position_m = before.position_m;
-                fish.velocity_m_per_s = before.heading() * params.min_speed_m_per_s.max(0.0);
-            }
-            enforce_hard_constraints(fish, &self.tank, &self.obstacles);
-            fish.advance_tail_phase(DT_SECS);
+            self.non_finite_repairs += move_fish(
+                fish,
+                &before,
+                steering_m_per_s2,
+                &params,
+                &self.tank,
+                &self.obstacles,
+            );
         }
         self.steps += 1;
         self.time_secs = self.steps as f64 * f64::from(DT_SECS);
@@ -353,19 +348,15 @@ impl World {
             self.boid_fish_steps += 1;
             let fish = &mut self.fish[i];
             let wander = steering::wander(fish, &mut self.rng, &params);
-            let mut steering_m_per_s2 = combined.force_m_per_s2 + wander * boids.wander_weight;
-            if !steering_m_per_s2.is_finite() {
-                self.non_finite_repairs += 1;
-                steering_m_per_s2 = Vec3::ZERO;
-            }
-            fish.integrate(steering_m_per_s2, &params, DT_SECS);
-            if !(fish.position_m.is_finite() && fish.velocity_m_per_s.is_finite()) {
-                self.non_finite_repairs += 1;
-                fish.position_m = me.position_m;
-                fish.velocity_m_per_s = me.heading() * params.min_speed_m_per_s.max(0.0);
-            }
-            enforce_hard_constraints(fish, &self.tank, &self.obstacles);
-            fish.advance_tail_phase(DT_SECS);
+            let steering_m_per_s2 = combined.force_m_per_s2 + wander * boids.wander_weight;
+            self.non_finite_repairs += move_fish(
+                fish,
+                &me,
+                steering_m_per_s2,
+                &params,
+                &self.tank,
+                &self.obstacles,
+            );
         }
         self.steps += 1;
         self.time_secs = self.steps as f64 * f64::from(DT_SECS);
@@ -395,6 +386,35 @@ impl World {
         self.params = params;
         self.boids = boids;
     }
+}
+
+/// Moves one fish by one step under `steering_m_per_s2`: integrate, repair any
+/// non-finite value (back to `before`, at minimum speed), enforce the hard rules
+/// and beat the tail. Returns how many repairs were needed (0, 1 or 2).
+fn move_fish(
+    fish: &mut Fish,
+    before: &Fish,
+    steering_m_per_s2: Vec3,
+    params: &SteeringParams,
+    tank: &Tank,
+    obstacles: &[Obstacle],
+) -> u64 {
+    let mut repairs = 0;
+    let steering_m_per_s2 = if steering_m_per_s2.is_finite() {
+        steering_m_per_s2
+    } else {
+        repairs += 1;
+        Vec3::ZERO
+    };
+    fish.integrate(steering_m_per_s2, params, DT_SECS);
+    if !(fish.position_m.is_finite() && fish.velocity_m_per_s.is_finite()) {
+        repairs += 1;
+        fish.position_m = before.position_m;
+        fish.velocity_m_per_s = before.heading() * params.min_speed_m_per_s.max(0.0);
+    }
+    enforce_hard_constraints(fish, tank, obstacles);
+    fish.advance_tail_phase(DT_SECS);
+    repairs
 }
 
 /// The hard rules: whatever the steering did, the fish ends up inside the
