@@ -238,21 +238,8 @@ impl World {
         for fish in &mut self.fish {
             let before = *fish;
             let wander = steering::wander(fish, &mut self.rng, &params);
-            let containment = steering::containment(
-                fish.position_m,
-                fish.velocity_m_per_s,
-                &self.tank,
-                params.containment_look_ahead_s,
-                params.containment_margin_m,
-                params.max_speed_m_per_s,
-            );
-            let avoidance = steering::avoid_obstacles(
-                fish.position_m,
-                fish.velocity_m_per_s,
-                &self.obstacles,
-                params.avoidance_look_ahead_m,
-                params.max_speed_m_per_s,
-            );
+            let (containment, avoidance) =
+                glass_and_rock_forces(&before, &self.tank, &self.obstacles, &params);
             let steering_m_per_s2 = wander * params.wander_weight
                 + containment * params.containment_weight
                 + avoidance * params.avoidance_weight;
@@ -265,6 +252,10 @@ impl World {
                 &self.obstacles,
             );
         }
+        self.finish_step();
+    }
+
+    fn finish_step(&mut self) {
         self.steps += 1;
         self.time_secs = self.steps as f64 * f64::from(DT_SECS);
     }
@@ -307,27 +298,10 @@ impl World {
             let me = snapshot[i];
             let neighbours =
                 boid_forces::neighbour_forces(&snapshot, i, &self.grid, &boids.perception);
-            let containment = steering::limit(
-                steering::containment(
-                    me.position_m,
-                    me.velocity_m_per_s,
-                    &self.tank,
-                    params.containment_look_ahead_s,
-                    params.containment_margin_m,
-                    params.max_speed_m_per_s,
-                ),
-                max_force,
-            );
-            let avoidance = steering::limit(
-                steering::avoid_obstacles(
-                    me.position_m,
-                    me.velocity_m_per_s,
-                    &self.obstacles,
-                    params.avoidance_look_ahead_m,
-                    params.max_speed_m_per_s,
-                ),
-                max_force,
-            );
+            let (containment, avoidance) =
+                glass_and_rock_forces(&me, &self.tank, &self.obstacles, &params);
+            let containment = steering::limit(containment, max_force);
+            let avoidance = steering::limit(avoidance, max_force);
             let forces = [
                 containment,
                 neighbours.alignment_m_per_s2,
@@ -358,8 +332,7 @@ impl World {
                 &self.obstacles,
             );
         }
-        self.steps += 1;
-        self.time_secs = self.steps as f64 * f64::from(DT_SECS);
+        self.finish_step();
     }
 
     /// Keep the first `fish_count` fish (at most [`MAX_FISH_COUNT`]), or add
@@ -386,6 +359,32 @@ impl World {
         self.params = params;
         self.boids = boids;
     }
+}
+
+/// Containment (stay off the glass, floor and surface) and obstacle avoidance for
+/// `fish`, both as used by every steering path.
+fn glass_and_rock_forces(
+    fish: &Fish,
+    tank: &Tank,
+    obstacles: &[Obstacle],
+    params: &SteeringParams,
+) -> (Vec3, Vec3) {
+    let containment = steering::containment(
+        fish.position_m,
+        fish.velocity_m_per_s,
+        tank,
+        params.containment_look_ahead_s,
+        params.containment_margin_m,
+        params.max_speed_m_per_s,
+    );
+    let avoidance = steering::avoid_obstacles(
+        fish.position_m,
+        fish.velocity_m_per_s,
+        obstacles,
+        params.avoidance_look_ahead_m,
+        params.max_speed_m_per_s,
+    );
+    (containment, avoidance)
 }
 
 /// Moves one fish by one step under `steering_m_per_s2`: integrate, repair any
