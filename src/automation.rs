@@ -19,7 +19,8 @@ use serde::Serialize;
 use serde_json::Value;
 
 use crate::lab::Lab;
-use crate::settings::{SEED_MAX, SettingsError};
+use crate::metrics_history::MetricsSample;
+use crate::settings::{SEED_MAX, SettingsError, Side};
 
 /// Most steps one `shoal.step(n)` call may ask for (about 28 simulated minutes),
 /// so a typo cannot freeze the tab for minutes.
@@ -123,6 +124,13 @@ pub struct StateReport {
     /// Where the camera looks from (filled in by the app, which owns the camera).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub camera: Option<CameraReport>,
+    /// The (left) tank's school metrics, see [`MetricsSample`].
+    pub metrics: MetricsSample,
+    /// The right tank's metrics while comparing.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub metrics_right: Option<MetricsSample>,
+    /// Whether two tanks are shown.
+    pub compare: bool,
     /// Benchmark progress and results, in `?bench` mode only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bench: Option<crate::bench::BenchReport>,
@@ -153,6 +161,9 @@ impl StateReport {
             scene: settings.scene.name(),
             speed: settings.speed,
             fell_behind: lab.fell_behind(),
+            metrics: lab.runs()[0].metrics(),
+            metrics_right: lab.run(Side::Right).map(|run| run.metrics()),
+            compare: lab.comparing(),
             camera: None,
             bench: None,
         }
@@ -211,7 +222,7 @@ mod tests {
     #[test]
     fn set_reports_the_same_names_back_in_state() {
         let mut lab = Lab::new(Settings::default());
-        Command::Set(json!({"fish_count": 12, "speed": 4, "paused": true}))
+        Command::Set(json!({"left": {"fish_count": 12}, "speed": 4, "paused": true}))
             .execute(&mut lab)
             .unwrap();
         let state = serde_json::to_value(StateReport::new(&lab, "webgpu", 0.0)).unwrap();
@@ -227,6 +238,7 @@ mod tests {
             "paused",
             "seed",
             "scene",
+            "metrics",
         ] {
             assert!(state.get(key).is_some(), "state() lacks {key}");
         }
@@ -235,7 +247,7 @@ mod tests {
     #[test]
     fn a_refused_set_changes_nothing() {
         let mut lab = Lab::new(Settings::default());
-        let err = Command::Set(json!({"fish_count": 12, "speed": "fast"}))
+        let err = Command::Set(json!({"left": {"fish_count": 12}, "speed": "fast"}))
             .execute(&mut lab)
             .unwrap_err();
         assert!(err.to_string().contains("speed"), "{err}");

@@ -82,12 +82,13 @@ impl Benchmark {
             return;
         };
         let Some(start) = self.phase_start_secs else {
-            lab.apply_settings(Settings {
-                fish_count: fish,
+            let mut settings = Settings {
                 paused: false,
                 speed: 1.0,
                 ..lab.settings().clone()
-            });
+            };
+            settings.left.fish_count = fish;
+            lab.apply_settings(settings);
             self.sim_steps_per_sec = measure_steps_per_sec(lab);
             self.phase_start_secs = Some(now_secs);
             self.frames = 0;
@@ -118,10 +119,9 @@ impl Benchmark {
             self.next += 1;
             self.phase_start_secs = None;
             if self.is_done() {
-                lab.apply_settings(Settings {
-                    fish_count: Settings::default().fish_count,
-                    ..lab.settings().clone()
-                });
+                let mut settings = lab.settings().clone();
+                settings.left.fish_count = Settings::default().left.fish_count;
+                lab.apply_settings(settings);
             }
         }
     }

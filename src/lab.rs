@@ -7,37 +7,41 @@
 use glam::Vec3;
 
 use crate::clock::{FixedStepClock, RateMeter};
-use crate::settings::Settings;
-use crate::sim::{World, WorldConfig};
+use crate::metrics_history::{MetricsHistory, MetricsSample, SAMPLE_EVERY_STEPS};
+use crate::settings::{Scene, Settings, Side};
+use crate::sim::{SpatialGrid, World, WorldConfig, school_metrics};
 
-/// A world, its settings and its clock.
-pub struct Lab {
-    settings: Settings,
+/// One tank's run: its world, what is needed to draw it smoothly, and its metrics.
+pub struct Run {
+    side: Side,
     world: World,
-    clock: FixedStepClock,
     /// Fish positions before the last step, for interpolated drawing.
     previous_positions_m: Vec<Vec3>,
-    steps_meter: RateMeter,
+    history: MetricsHistory,
+    grid: SpatialGrid,
     /// Counts rebuilds of the world, so the renderer knows when its meshes are stale.
     generation: u64,
 }
 
-impl Lab {
-    pub fn new(settings: Settings) -> Self {
-        let world = World::new(world_config(&settings));
-        let previous_positions_m = world.fish().iter().map(|f| f.position_m).collect();
-        Self {
-            settings,
+impl Run {
+    fn new(side: Side, settings: &Settings, generation: u64) -> Self {
+        let mut world = World::new(world_config(settings, side));
+        world.set_boids(boid_params(settings, side));
+        let mut run = Self {
+            side,
             world,
-            clock: FixedStepClock::new(f64::from(World::DT_SECS)),
-            previous_positions_m,
-            steps_meter: RateMeter::default(),
-            generation: 0,
-        }
+            previous_positions_m: Vec::new(),
+            history: MetricsHistory::default(),
+            grid: SpatialGrid::default(),
+            generation,
+        };
+        run.snapshot_positions();
+        run.sample_metrics();
+        run
     }
 
-    pub fn settings(&self) -> &Settings {
-        &self.settings
+    pub fn side(&self) -> Side {
+        self.side
     }
 
     pub fn world(&self) -> &World {
@@ -45,52 +49,181 @@ impl Lab {
     }
 
     /// Changes whenever the world is rebuilt (new seed, scene or reset).
-    pub fn world_generation(&self) -> u64 {
+    pub fn generation(&self) -> u64 {
         self.generation
     }
 
-    /// Replaces the settings, doing what each change means: a new seed or scene
-    /// rebuilds the world, a new fish count adds or removes fish, speed and pause take
-    /// effect from the next frame. The caller has validated `new` (see
-    /// [`Settings::apply_patch`]); out-of-range values are clamped here too, so no
-    /// path can put the world in a state the UI could not.
+    /// The metrics of the last minutes.
+    pub fn history(&self) -> &MetricsHistory {
+        &self.history
+    }
+
+    /// The latest metrics.
+    pub fn metrics(&self) -> MetricsSample {
+        self.history.latest().copied().unwrap_or_default()
+    }
+
+    fn step(&mut self, snapshot: bool) {
+        if snapshot {
+            self.snapshot_positions();
+        }
+        self.world.step();
+        if self.world.steps() % SAMPLE_EVERY_STEPS == 0 {
+            self.sample_metrics();
+        }
+    }
+
+    fn sample_metrics(&mut self) {
+        let tank = *self.world.tank();
+        let metrics =
+            school_metrics::measure(self.world.fish(), tank.min_m, tank.max_m, &mut self.grid);
+        let force_frequencies = if self.world.boids().is_some() {
+            self.world.force_frequencies()
+        } else {
+            [0.0; 5]
+        };
+        self.history.push(MetricsSample::new(
+            self.world.time_secs(),
+            &metrics,
+            force_frequencies,
+            0,
+        ));
+    }
+
+    fn snapshot_positions(&mut self) {
+        self.previous_positions_m.clear();
+        self.previous_positions_m
+            .extend(self.world.fish().iter().map(|f| f.position_m));
+    }
+
+    /// Where fish `index` should be drawn: `alpha` of the way from its previous to
+    /// its current simulated position.
+    pub fn drawn_position_m(&self, index: usize, alpha: f32) -> Vec3 {
+        let current = self.world.fish()[index].position_m;
+        match self.previous_positions_m.get(index) {
+            Some(previous) => previous.lerp(current, alpha),
+            None => current,
+        }
+    }
+
+    /// Follows new settings for this tank without restarting where possible.
+    fn follow(&mut self, settings: &Settings) {
+        let tank = settings.tank(self.side);
+        let fish_count = tank.fish_count as usize;
+        if fish_count != self.world.fish().len() {
+            self.world.set_fish_count(fish_count);
+            self.snapshot_positions();
+        }
+        let boids = boid_params(settings, self.side);
+        if self.world.boids() != boids.as_ref() {
+            self.world.set_boids(boids);
+        }
+    }
+}
+
+/// The running experiment: one tank, or two side by side, sharing one clock.
+pub struct Lab {
+    settings: Settings,
+    clock: FixedStepClock,
+    /// The left tank, then the right one while comparing.
+    runs: Vec<Run>,
+    steps_meter: RateMeter,
+    /// Counts rebuilds, so each rebuilt world gets a new generation number.
+    rebuilds: u64,
+}
+
+impl Lab {
+    pub fn new(settings: Settings) -> Self {
+        let mut settings = settings;
+        settings.clamp();
+        let mut lab = Self {
+            settings,
+            clock: FixedStepClock::new(f64::from(World::DT_SECS)),
+            runs: Vec::new(),
+            steps_meter: RateMeter::default(),
+            rebuilds: 0,
+        };
+        lab.rebuild();
+        lab
+    }
+
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// The left (or only) tank's world.
+    pub fn world(&self) -> &World {
+        &self.runs[0].world
+    }
+
+    /// The tanks shown: one, or two while comparing.
+    pub fn runs(&self) -> &[Run] {
+        &self.runs
+    }
+
+    /// The run of `side`, if shown.
+    pub fn run(&self, side: Side) -> Option<&Run> {
+        self.runs.get(side.index())
+    }
+
+    /// Changes whenever the left world is rebuilt.
+    pub fn world_generation(&self) -> u64 {
+        self.runs[0].generation
+    }
+
+    /// Does this scene show two tanks?
+    pub fn comparing(&self) -> bool {
+        self.settings.scene == Scene::Boids && self.settings.compare
+    }
+
+    /// Replaces the settings, doing what each change means: a new seed, scene or
+    /// layout (compare on or off) rebuilds the worlds so both tanks start from the
+    /// same positions; new counts add or remove fish; sliders take effect at the
+    /// next step. Out-of-range values are clamped, so no path can put the world in
+    /// a state the UI could not.
     pub fn apply_settings(&mut self, new: Settings) {
         let mut new = new;
-        if new.validate().is_err() {
-            new.speed = new
-                .speed
-                .clamp(crate::settings::SPEED_MIN, crate::settings::SPEED_MAX);
-            if !new.speed.is_finite() {
-                new.speed = 1.0;
-            }
-            new.fish_count = new.fish_count.min(crate::settings::FISH_COUNT_MAX);
-            new.seed = new.seed.min(crate::settings::SEED_MAX);
-        }
-        let rebuild = new.seed != self.settings.seed || new.scene != self.settings.scene;
-        let recount = new.fish_count != self.settings.fish_count;
-        let unpaused = self.settings.paused && !new.paused;
-        self.settings = new;
+        new.settle(&self.settings);
+        new.clamp();
+        let before = std::mem::replace(&mut self.settings, new);
+        let rebuild = before.seed != self.settings.seed
+            || before.scene != self.settings.scene
+            || self.runs.len() != self.wanted_runs();
+        let unpaused = before.paused && !self.settings.paused;
         if rebuild {
-            self.reset(None);
-        } else if recount {
-            self.world.set_fish_count(self.settings.fish_count as usize);
-            self.snapshot_positions();
+            self.rebuild();
+        } else {
+            for run in &mut self.runs {
+                run.follow(&self.settings);
+            }
         }
         if unpaused {
             self.clock.clear();
         }
     }
 
-    /// Rebuilds the world from `seed` (or the current seed), keeping every other
+    fn wanted_runs(&self) -> usize {
+        if self.comparing() { 2 } else { 1 }
+    }
+
+    fn rebuild(&mut self) {
+        self.runs = Side::BOTH[..self.wanted_runs()]
+            .iter()
+            .map(|&side| {
+                self.rebuilds += 1;
+                Run::new(side, &self.settings, self.rebuilds)
+            })
+            .collect();
+        self.clock.clear();
+    }
+
+    /// Rebuilds the worlds from `seed` (or the current seed), keeping every other
     /// setting.
     pub fn reset(&mut self, seed: Option<u64>) {
         if let Some(seed) = seed {
             self.settings.seed = seed.min(crate::settings::SEED_MAX);
         }
-        self.world = World::new(world_config(&self.settings));
-        self.generation += 1;
-        self.clock.clear();
-        self.snapshot_positions();
+        self.rebuild();
     }
 
     /// Runs the steps owed for a frame of `frame_secs` real seconds (none while
@@ -113,28 +246,25 @@ impl Lab {
     }
 
     fn run_steps(&mut self, n: u32) {
-        for i in 0..n {
-            if i + 1 == n {
-                self.snapshot_positions();
+        for run in &mut self.runs {
+            for i in 0..n {
+                run.step(i + 1 == n);
             }
-            self.world.step();
         }
     }
 
-    fn snapshot_positions(&mut self) {
-        self.previous_positions_m.clear();
-        self.previous_positions_m
-            .extend(self.world.fish().iter().map(|f| f.position_m));
+    /// How far between the last two simulated states to draw (0 while paused).
+    pub fn draw_alpha(&self) -> f32 {
+        if self.settings.paused {
+            1.0
+        } else {
+            self.clock.alpha()
+        }
     }
 
-    /// Where fish `index` should be drawn: between its last two simulated positions,
-    /// `alpha` of the way (see [`FixedStepClock::alpha`]).
+    /// Where fish `index` of the left tank should be drawn.
     pub fn drawn_position_m(&self, index: usize) -> Vec3 {
-        let current = self.world.fish()[index].position_m;
-        match self.previous_positions_m.get(index) {
-            Some(previous) if !self.settings.paused => previous.lerp(current, self.clock.alpha()),
-            _ => current,
-        }
+        self.runs[0].drawn_position_m(index, self.draw_alpha())
     }
 
     /// Simulation steps per second of wall-clock time over the last second.
@@ -146,13 +276,26 @@ impl Lab {
     pub fn fell_behind(&self) -> bool {
         self.clock.fell_behind()
     }
+
+    /// The metrics history of every tank shown as one CSV text.
+    pub fn metrics_csv(&self) -> String {
+        let mut csv = crate::metrics_history::CSV_HEADER.to_owned();
+        for run in &self.runs {
+            run.history.to_csv(run.side.name(), &mut csv);
+        }
+        csv
+    }
 }
 
-fn world_config(settings: &Settings) -> WorldConfig {
+fn world_config(settings: &Settings, side: Side) -> WorldConfig {
     WorldConfig {
         seed: settings.seed,
-        fish_count: settings.fish_count as usize,
+        fish_count: settings.tank(side).fish_count as usize,
     }
+}
+
+fn boid_params(settings: &Settings, side: Side) -> Option<crate::sim::BoidParams> {
+    (settings.scene == Scene::Boids).then(|| settings.tank(side).boid_params())
 }
 
 #[cfg(test)]
@@ -198,10 +341,9 @@ mod tests {
     fn changing_the_fish_count_keeps_the_run_going() {
         let mut lab = Lab::new(Settings::default());
         lab.step(10);
-        lab.apply_settings(Settings {
-            fish_count: 37,
-            ..lab.settings().clone()
-        });
+        let mut settings = lab.settings().clone();
+        settings.left.fish_count = 37;
+        lab.apply_settings(settings);
         assert_eq!(lab.world().fish().len(), 37);
         assert_eq!(lab.world().steps(), 10);
     }
@@ -241,7 +383,7 @@ mod tests {
         assert!(alpha > 0.0 && alpha < 1.0);
         for (i, fish) in lab.world().fish().iter().enumerate() {
             let drawn = lab.drawn_position_m(i);
-            let previous = lab.previous_positions_m[i];
+            let previous = lab.runs[0].previous_positions_m[i];
             let total = previous.distance(fish.position_m);
             assert!(drawn.distance(previous) <= total + 1e-5);
             assert!(drawn.distance(fish.position_m) <= total + 1e-5);

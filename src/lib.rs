@@ -12,8 +12,11 @@ pub mod automation;
 pub mod bench;
 pub mod clock;
 pub mod lab;
+pub mod metrics_history;
 pub mod render;
 pub mod settings;
+pub mod share_link;
+pub mod tank_settings;
 pub mod sim;
 pub mod ui;
 

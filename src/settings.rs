@@ -7,22 +7,37 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The scenes Shoal can show. Later issues add more (boids, physical fish, reef).
+use crate::sim::Tank;
+use crate::tank_settings::{Preset, TankSettings};
+
+/// The scenes Shoal can show. Later issues add more (physical fish, reef).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Scene {
-    /// The first living scene: fish wandering through a tank with rocks and pillars.
+    /// Fish wandering on their own through a tank with rocks and pillars.
     #[default]
     Aquarium,
+    /// The SIMBA boid layer: five steering urges on sliders, control modes,
+    /// sharks and stingrays, and the solo-versus-school comparison.
+    Boids,
 }
 
 impl Scene {
-    pub const ALL: [Self; 1] = [Self::Aquarium];
+    pub const ALL: [Self; 2] = [Self::Aquarium, Self::Boids];
 
-    /// The name used in the UI and in the automation API.
+    /// The name used in the automation API and share links.
     pub fn name(self) -> &'static str {
         match self {
             Self::Aquarium => "aquarium",
+            Self::Boids => "boids",
+        }
+    }
+
+    /// The name on the scene picker.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Aquarium => "Aquarium",
+            Self::Boids => "Schooling lab",
         }
     }
 
@@ -30,6 +45,10 @@ impl Scene {
     pub fn description(self) -> &'static str {
         match self {
             Self::Aquarium => "Fish wander through the tank and swim around rocks and pillars.",
+            Self::Boids => {
+                "Each fish follows five urges: stay in the tank, swim like the others, \
+                 stay close, keep space and dodge rocks. Change them and watch a school form."
+            }
         }
     }
 }
@@ -38,12 +57,33 @@ impl Scene {
 pub const SPEED_MIN: f32 = 0.25;
 /// Fastest simulation speed multiplier (eight times real time).
 pub const SPEED_MAX: f32 = 8.0;
-/// Largest fish count a teacher can ask for. The renderer and the simulation stay
-/// interactive well beyond the foundation's 200 fish.
-pub const FISH_COUNT_MAX: u32 = 20_000;
+pub use crate::tank_settings::FISH_COUNT_MAX;
 /// Largest seed: JavaScript numbers are exact integers only up to 2^53 − 1, so seeds
 /// stay within 32 bits to travel through JSON and URLs unchanged.
 pub const SEED_MAX: u64 = u32::MAX as u64;
+
+/// Which of the two tanks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    Left,
+    Right,
+}
+
+impl Side {
+    pub const BOTH: [Self; 2] = [Self::Left, Self::Right];
+
+    /// The settings key (`left`, `right`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Left => "left",
+            Self::Right => "right",
+        }
+    }
+
+    pub fn index(self) -> usize {
+        self as usize
+    }
+}
 
 /// What the teacher controls. Field names are the automation API's names.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -55,20 +95,32 @@ pub struct Settings {
     pub seed: u64,
     /// Simulated seconds per real second, from 0.25 to 8.
     pub speed: f32,
-    /// Number of fish in the tank, from 0 to 20,000.
-    pub fish_count: u32,
     /// Which scene is shown.
     pub scene: Scene,
+    /// Two tanks side by side (boid scene), same seed and starting positions.
+    pub compare: bool,
+    /// Draw each fish's field of view and lines to the neighbours it sees.
+    pub show_vision: bool,
+    /// The tank (the left one when comparing). The aquarium scene uses its
+    /// `fish_count` only.
+    pub left: TankSettings,
+    /// The right tank when comparing.
+    pub right: TankSettings,
 }
 
 impl Default for Settings {
+    /// The aquarium scene; in the boid scene the left tank starts "Individual" and
+    /// the right one "Group", the comparison the lesson is about.
     fn default() -> Self {
         Self {
             paused: false,
             seed: 1,
             speed: 1.0,
-            fish_count: 200,
             scene: Scene::Aquarium,
+            compare: false,
+            show_vision: false,
+            left: TankSettings::with_preset(Preset::Individual),
+            right: TankSettings::with_preset(Preset::Group),
         }
     }
 }
@@ -85,11 +137,24 @@ pub enum SettingsError {
 }
 
 impl Settings {
-    /// The names `apply_patch` accepts, in UI order.
+    /// The top-level names `apply_patch` accepts, in UI order.
     pub fn keys() -> Vec<String> {
-        match serde_json::to_value(Self::default()) {
-            Ok(serde_json::Value::Object(map)) => map.keys().cloned().collect(),
-            _ => Vec::new(),
+        keys_of(&Self::default())
+    }
+
+    /// The tank settings of `side`.
+    pub fn tank(&self, side: Side) -> &TankSettings {
+        match side {
+            Side::Left => &self.left,
+            Side::Right => &self.right,
+        }
+    }
+
+    /// Mutable tank settings of `side`.
+    pub fn tank_mut(&mut self, side: Side) -> &mut TankSettings {
+        match side {
+            Side::Left => &mut self.left,
+            Side::Right => &mut self.right,
         }
     }
 
@@ -110,63 +175,128 @@ impl Settings {
                 ),
             );
         }
-        if self.fish_count > FISH_COUNT_MAX {
-            return invalid(
-                "fish_count",
-                format!(
-                    "{} is out of range: choose from 0 to {FISH_COUNT_MAX}",
-                    self.fish_count
-                ),
-            );
-        }
         if self.seed > SEED_MAX {
             return invalid(
                 "seed",
                 format!("{} is out of range: choose from 0 to {SEED_MAX}", self.seed),
             );
         }
+        let tank = Tank::default();
+        for side in Side::BOTH {
+            let prefix = format!("{}.", side.name());
+            if let Err((key, reason)) = self.tank(side).validate(&prefix, &tank) {
+                return invalid(&key, reason);
+            }
+        }
         Ok(())
     }
 
+    /// Brings every value into range (for paths that cannot refuse).
+    pub fn clamp(&mut self) {
+        self.speed = if self.speed.is_finite() {
+            self.speed.clamp(SPEED_MIN, SPEED_MAX)
+        } else {
+            1.0
+        };
+        self.seed = self.seed.min(SEED_MAX);
+        let tank = Tank::default();
+        self.left.clamp(&tank);
+        self.right.clamp(&tank);
+    }
+
+    /// Makes each tank's preset label true after an edit (see
+    /// [`TankSettings::settle`]).
+    pub fn settle(&mut self, before: &Self) {
+        self.left.settle(&before.left);
+        self.right.settle(&before.right);
+    }
+
     /// Applies `patch` (a JSON object of setting names to values) all-or-nothing.
+    /// Nested objects merge: `{"left": {"cohesion": 40}}` changes one slider of the
+    /// left tank and keeps the rest.
     pub fn apply_patch(&mut self, patch: &serde_json::Value) -> Result<(), SettingsError> {
         let serde_json::Value::Object(patch) = patch else {
             return Err(SettingsError::NotAnObject(patch.to_string()));
         };
-        let serde_json::Value::Object(mut merged) = serde_json::to_value(&*self)
-            .map_err(|err| SettingsError::NotAnObject(err.to_string()))?
-        else {
-            return Err(SettingsError::NotAnObject("settings".to_owned()));
-        };
-        for (key, value) in patch {
-            if !merged.contains_key(key) {
-                return Err(SettingsError::UnknownKey {
-                    key: key.clone(),
-                    known: Self::keys().join(", "),
-                });
-            }
-            // Type-check each value on its own so the message names the setting.
-            let mut single = merged.clone();
-            single.insert(key.clone(), value.clone());
-            if let Err(err) = serde_json::from_value::<Self>(serde_json::Value::Object(single)) {
-                return Err(SettingsError::Invalid {
-                    key: key.clone(),
-                    reason: format!("{value} has the wrong type ({})", type_hint(&err)),
-                });
-            }
-            merged.insert(key.clone(), value.clone());
-        }
-        let candidate: Self =
-            serde_json::from_value(serde_json::Value::Object(merged)).map_err(|err| {
-                SettingsError::Invalid {
-                    key: "?".to_owned(),
-                    reason: err.to_string(),
-                }
+        let mut merged = serde_json::to_value(&*self)
+            .map_err(|err| SettingsError::NotAnObject(err.to_string()))?;
+        merge_checked(&mut merged, &[], patch)?;
+        let mut candidate: Self =
+            serde_json::from_value(merged).map_err(|err| SettingsError::Invalid {
+                key: "?".to_owned(),
+                reason: err.to_string(),
             })?;
         candidate.validate()?;
+        candidate.settle(self);
         *self = candidate;
         Ok(())
     }
+}
+
+/// The keys of a serialised value's top level.
+fn keys_of(value: &impl Serialize) -> Vec<String> {
+    match serde_json::to_value(value) {
+        Ok(serde_json::Value::Object(map)) => map.keys().cloned().collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// Merges `patch` into the object at `path` of `root`, checking each key exists and
+/// each value has a type `Settings` accepts, so the message names the setting.
+fn merge_checked(
+    root: &mut serde_json::Value,
+    path: &[String],
+    patch: &serde_json::Map<String, serde_json::Value>,
+) -> Result<(), SettingsError> {
+    for (key, value) in patch {
+        let mut full_path = path.to_vec();
+        full_path.push(key.clone());
+        let dotted = full_path.join(".");
+        let Some(current) = value_at(root, &full_path) else {
+            let parent = value_at(root, path).cloned().unwrap_or_default();
+            let known = match parent {
+                serde_json::Value::Object(map) => map.keys().cloned().collect::<Vec<_>>(),
+                _ => Vec::new(),
+            };
+            return Err(SettingsError::UnknownKey {
+                key: dotted,
+                known: known.join(", "),
+            });
+        };
+        match (current, value) {
+            (serde_json::Value::Object(_), serde_json::Value::Object(inner)) => {
+                merge_checked(root, &full_path, inner)?;
+            }
+            _ => {
+                let mut single = root.clone();
+                if let Some(slot) = value_at_mut(&mut single, &full_path) {
+                    *slot = value.clone();
+                }
+                if let Err(err) = serde_json::from_value::<Settings>(single) {
+                    return Err(SettingsError::Invalid {
+                        key: dotted,
+                        reason: format!("{value} has the wrong type ({})", type_hint(&err)),
+                    });
+                }
+                if let Some(slot) = value_at_mut(root, &full_path) {
+                    *slot = value.clone();
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+fn value_at<'a>(root: &'a serde_json::Value, path: &[String]) -> Option<&'a serde_json::Value> {
+    path.iter().try_fold(root, |v, key| v.as_object()?.get(key))
+}
+
+fn value_at_mut<'a>(
+    root: &'a mut serde_json::Value,
+    path: &[String],
+) -> Option<&'a mut serde_json::Value> {
+    path.iter()
+        .try_fold(root, |v, key| v.as_object_mut()?.get_mut(key))
 }
 
 /// Shortens serde's message to the part a user needs ("expected a boolean").
@@ -185,18 +315,37 @@ fn type_hint(err: &serde_json::Error) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sim::control_mode::{ControlMode, GROUP_WEIGHTS};
     use serde_json::json;
 
     #[test]
     fn a_valid_patch_changes_exactly_the_named_settings() {
         let mut settings = Settings::default();
         settings
-            .apply_patch(&json!({"speed": 2.0, "fish_count": 50, "paused": true}))
+            .apply_patch(&json!({"speed": 2.0, "left": {"fish_count": 50}, "paused": true}))
             .unwrap();
         assert_eq!(settings.speed, 2.0);
-        assert_eq!(settings.fish_count, 50);
+        assert_eq!(settings.left.fish_count, 50);
         assert!(settings.paused);
         assert_eq!(settings.seed, Settings::default().seed);
+        assert_eq!(settings.right, Settings::default().right);
+    }
+
+    #[test]
+    fn nested_patches_merge_and_keep_the_preset_label_true() {
+        let mut settings = Settings::default();
+        settings
+            .apply_patch(&json!({"right": {"cohesion": 80}}))
+            .unwrap();
+        assert_eq!(settings.right.cohesion, 80.0);
+        assert_eq!(settings.right.alignment, GROUP_WEIGHTS[1]);
+        assert_eq!(settings.right.preset, Preset::Custom);
+        settings
+            .apply_patch(&json!({"right": {"preset": "group", "mode": "monte_carlo"}}))
+            .unwrap();
+        assert_eq!(settings.right.weights(), GROUP_WEIGHTS);
+        assert_eq!(settings.right.mode, ControlMode::MonteCarlo);
+        assert_eq!(settings.right.preset, Preset::Group);
     }
 
     #[test]
@@ -209,25 +358,30 @@ mod tests {
             err.to_string().contains("unknown setting 'fishcount'"),
             "{err}"
         );
-        assert!(
-            err.to_string().contains("fish_count"),
-            "lists the known keys: {err}"
-        );
+        assert!(err.to_string().contains("left"), "lists the known keys: {err}");
         assert_eq!(settings, Settings::default());
+        let err = settings
+            .apply_patch(&json!({"left": {"cohesio": 5}}))
+            .unwrap_err();
+        assert!(err.to_string().contains("'left.cohesio'"), "{err}");
+        assert!(err.to_string().contains("cohesion"), "{err}");
     }
 
     #[test]
     fn out_of_range_values_are_refused_and_change_nothing() {
-        for patch in [
-            json!({"speed": 9.0}),
-            json!({"speed": 0.1}),
-            json!({"fish_count": 20_001}),
-            json!({"seed": 1u64 << 40}),
-            json!({"fish_count": 10, "speed": 100}),
+        for (patch, key) in [
+            (json!({"speed": 9.0}), "speed"),
+            (json!({"speed": 0.1}), "speed"),
+            (json!({"left": {"fish_count": 20_001}}), "left.fish_count"),
+            (json!({"seed": 1u64 << 40}), "seed"),
+            (json!({"right": {"alignment": 100.5}}), "right.alignment"),
+            (json!({"right": {"vision_angle_deg": -1}}), "right.vision_angle_deg"),
+            (json!({"left": {"sharks": 99}}), "left.sharks"),
         ] {
             let mut settings = Settings::default();
             let err = settings.apply_patch(&patch).unwrap_err();
             assert!(err.to_string().contains("out of range"), "{patch}: {err}");
+            assert!(err.to_string().contains(&format!("'{key}'")), "{err}");
             assert_eq!(settings, Settings::default(), "{patch}");
         }
     }
@@ -236,10 +390,12 @@ mod tests {
     fn wrong_types_are_refused_with_the_setting_named() {
         for (patch, key) in [
             (json!({"paused": "yes"}), "paused"),
-            (json!({"fish_count": -3}), "fish_count"),
-            (json!({"fish_count": 2.5}), "fish_count"),
+            (json!({"left": {"fish_count": -3}}), "left.fish_count"),
+            (json!({"left": {"fish_count": 2.5}}), "left.fish_count"),
             (json!({"scene": "moon"}), "scene"),
             (json!({"speed": null}), "speed"),
+            (json!({"left": 3}), "left"),
+            (json!({"right": {"mode": "telepathy"}}), "right.mode"),
         ] {
             let mut settings = Settings::default();
             let err = settings.apply_patch(&patch).unwrap_err();
@@ -269,5 +425,13 @@ mod tests {
                 .unwrap();
             assert_eq!(settings.scene, scene);
         }
+    }
+
+    #[test]
+    fn the_default_comparison_is_individual_against_group() {
+        let settings = Settings::default();
+        assert_eq!(settings.left.preset, Preset::Individual);
+        assert_eq!(settings.right.preset, Preset::Group);
+        assert!(settings.validate().is_ok());
     }
 }

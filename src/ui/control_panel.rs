@@ -95,7 +95,7 @@ pub fn control_panel_ui(
                 .on_hover_text("How many fish are in the tank");
             let fish = ui
                 .add(
-                    egui::Slider::new(&mut settings.fish_count, 0..=FISH_COUNT_MAX)
+                    egui::Slider::new(&mut settings.left.fish_count, 0..=FISH_COUNT_MAX)
                         .logarithmic(true)
                         .smallest_positive(1.0),
                 )

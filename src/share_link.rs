@@ -1,0 +1,238 @@
+//! Share links: the whole setting (scene, presets, sliders, modes, counts, obstacles,
+//! seed, compare layout) packed into the URL's fragment, so a teacher can send a
+//! class exactly what is on the screen.
+//!
+//! Format: `#v1.` followed by URL-safe base64 (no padding) of the DEFLATE-compressed
+//! JSON of [`Settings`]. Decoding never trusts the link: size limits on both the
+//! text and the inflated JSON, then the same all-or-nothing validation as
+//! `shoal.set()`; any failure is a [`ShareLinkError`] with a sentence for the notice,
+//! and the caller falls back to the defaults.
+
+use base64::Engine as _;
+use base64::engine::general_purpose::URL_SAFE_NO_PAD;
+
+use crate::settings::{Settings, SettingsError};
+
+/// Version tag at the start of every link's fragment.
+const PREFIX: &str = "v1.";
+
+/// Longest fragment accepted, in characters. Default 16,384: twenty times a full
+/// setting with two dozen obstacles, far below what browsers keep in a URL.
+pub const MAX_LINK_CHARS: usize = 16_384;
+
+/// Largest inflated JSON accepted, in bytes. Default 65,536: a "zip bomb" link
+/// cannot make the page allocate more than this.
+const MAX_JSON_BYTES: usize = 65_536;
+
+/// DEFLATE level. Default 9: links are made rarely and should be short.
+const COMPRESSION_LEVEL: u8 = 9;
+
+/// Why a link could not be opened.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum ShareLinkError {
+    #[error("the link is too long ({0} characters) to be a Shoal link")]
+    TooLong(usize),
+    #[error("the link does not start with a Shoal version tag ('{PREFIX}')")]
+    UnknownVersion,
+    #[error("the link is damaged (it is not valid base64 text); was it cut off?")]
+    NotBase64,
+    #[error("the link is damaged (its data cannot be unpacked); was it cut off?")]
+    NotDeflate,
+    #[error("the link's data is not valid settings text")]
+    NotJson,
+    #[error("the link asks for something Shoal cannot do: {0}")]
+    Invalid(#[from] SettingsError),
+}
+
+/// The fragment (without `#`) that reopens `settings`.
+pub fn encode(settings: &Settings) -> String {
+    // Serialising plain data to a String cannot fail; an empty object is a safe
+    // fallback that decodes to the defaults.
+    let json = serde_json::to_string(settings).unwrap_or_else(|_| "{}".to_owned());
+    let packed = miniz_oxide::deflate::compress_to_vec(json.as_bytes(), COMPRESSION_LEVEL);
+    format!("{PREFIX}{}", URL_SAFE_NO_PAD.encode(packed))
+}
+
+/// The settings a fragment (with or without the leading `#`) describes. An empty
+/// fragment gives `Ok(None)`: no link, use the defaults.
+pub fn decode(fragment: &str) -> Result<Option<Settings>, ShareLinkError> {
+    let fragment = fragment.trim().trim_start_matches('#');
+    if fragment.is_empty() {
+        return Ok(None);
+    }
+    if fragment.len() > MAX_LINK_CHARS {
+        return Err(ShareLinkError::TooLong(fragment.len()));
+    }
+    let body = fragment
+        .strip_prefix(PREFIX)
+        .ok_or(ShareLinkError::UnknownVersion)?;
+    let packed = URL_SAFE_NO_PAD
+        .decode(body)
+        .map_err(|_| ShareLinkError::NotBase64)?;
+    let json = miniz_oxide::inflate::decompress_to_vec_with_limit(&packed, MAX_JSON_BYTES)
+        .map_err(|_| ShareLinkError::NotDeflate)?;
+    let value: serde_json::Value =
+        serde_json::from_slice(&json).map_err(|_| ShareLinkError::NotJson)?;
+    let mut settings = Settings::default();
+    settings.apply_patch(&value)?;
+    Ok(Some(settings))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::settings::Scene;
+    use crate::sim::control_mode::ControlMode;
+    use crate::tank_settings::{Preset, TankSettings};
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    fn random_tank(rng: &mut ChaCha8Rng) -> TankSettings {
+        let preset = Preset::ALL[rng.random_range(0..Preset::ALL.len())];
+        let mut tank = TankSettings::with_preset(preset);
+        if preset == Preset::Custom || rng.random_bool(0.3) {
+            for (_, w) in tank.weights_mut() {
+                *w = f32::from(rng.random_range(0u8..=100));
+            }
+            tank.vision_distance_m = rng.random_range(0.5..=12.0);
+            tank.vision_angle_deg = rng.random_range(0.0..=360.0);
+            tank.max_speed_m_per_s = rng.random_range(0.1..=3.0);
+            tank.max_force_m_per_s2 = rng.random_range(0.1..=10.0);
+            tank.preset = tank.matching_preset();
+        }
+        tank.mode = ControlMode::ALL[rng.random_range(0..4)];
+        tank.preset = tank.matching_preset();
+        tank.fish_count = rng.random_range(0..=20_000);
+        tank.sharks = rng.random_range(0..=crate::tank_settings::SHARKS_MAX);
+        tank.stingrays = rng.random_range(0..=crate::tank_settings::STINGRAYS_MAX);
+        tank
+    }
+
+    fn random_settings(rng: &mut ChaCha8Rng) -> Settings {
+        Settings {
+            paused: rng.random_bool(0.5),
+            seed: u64::from(rng.random::<u32>()),
+            speed: rng.random_range(0.25..=8.0),
+            scene: Scene::ALL[rng.random_range(0..Scene::ALL.len())],
+            compare: rng.random_bool(0.5),
+            show_vision: rng.random_bool(0.5),
+            left: random_tank(rng),
+            right: random_tank(rng),
+        }
+    }
+
+    #[test]
+    fn settings_to_link_to_settings_is_the_identity() {
+        let mut rng = ChaCha8Rng::seed_from_u64(7);
+        let mut all = vec![Settings::default()];
+        all.extend((0..300).map(|_| random_settings(&mut rng)));
+        for settings in all {
+            assert!(settings.validate().is_ok());
+            let link = encode(&settings);
+            assert!(link.len() < 2000, "short enough to paste: {}", link.len());
+            let back = decode(&format!("#{link}")).unwrap().unwrap();
+            assert_eq!(back, settings, "{link}");
+        }
+    }
+
+    #[test]
+    fn an_empty_fragment_means_no_link() {
+        assert_eq!(decode(""), Ok(None));
+        assert_eq!(decode("#"), Ok(None));
+    }
+
+    #[test]
+    fn damaged_links_give_a_clear_error() {
+        let link = encode(&Settings::default());
+        assert_eq!(decode("hello"), Err(ShareLinkError::UnknownVersion));
+        assert_eq!(decode("v1.***"), Err(ShareLinkError::NotBase64));
+        assert!(matches!(
+            decode(&link[..link.len() / 2]),
+            Err(ShareLinkError::NotDeflate | ShareLinkError::NotBase64)
+        ));
+        let not_json = URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(b"{]", 6));
+        assert_eq!(decode(&format!("v1.{not_json}")), Err(ShareLinkError::NotJson));
+        let too_fast = URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(
+            br#"{"speed": 1000}"#,
+            6,
+        ));
+        let err = decode(&format!("v1.{too_fast}")).unwrap_err();
+        assert!(err.to_string().contains("speed"), "{err}");
+        assert!(matches!(
+            decode(&"v1.A".repeat(MAX_LINK_CHARS)),
+            Err(ShareLinkError::TooLong(_))
+        ));
+    }
+
+    #[test]
+    fn a_zip_bomb_is_refused() {
+        let huge = format!("{{\"seed\": 1{}}}", " ".repeat(10 * MAX_JSON_BYTES));
+        let packed = URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(
+            huge.as_bytes(),
+            9,
+        ));
+        assert!(packed.len() < MAX_LINK_CHARS);
+        assert_eq!(decode(&format!("v1.{packed}")), Err(ShareLinkError::NotDeflate));
+    }
+
+    #[test]
+    fn a_thousand_random_and_mutated_links_never_panic_and_stay_valid() {
+        let mut rng = ChaCha8Rng::seed_from_u64(99);
+        let alphabet: Vec<char> =
+            "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_.#%v"
+                .chars()
+                .collect();
+        for round in 0..1000 {
+            let text = if round % 2 == 0 {
+                // Random text, sometimes with a valid prefix.
+                let len = rng.random_range(0..400);
+                let body: String = (0..len)
+                    .map(|_| alphabet[rng.random_range(0..alphabet.len())])
+                    .collect();
+                if rng.random_bool(0.5) {
+                    format!("v1.{body}")
+                } else {
+                    body
+                }
+            } else {
+                // A real link with a few characters flipped, cut or added.
+                let mut chars: Vec<char> = encode(&random_settings(&mut rng)).chars().collect();
+                for _ in 0..rng.random_range(1..4) {
+                    let at = rng.random_range(0..chars.len());
+                    match rng.random_range(0..3) {
+                        0 => chars[at] = alphabet[rng.random_range(0..alphabet.len())],
+                        1 => chars.truncate(at.max(1)),
+                        _ => chars.insert(at, alphabet[rng.random_range(0..alphabet.len())]),
+                    }
+                }
+                chars.into_iter().collect()
+            };
+            if let Ok(Some(settings)) = decode(&text) {
+                assert!(settings.validate().is_ok(), "{text}");
+            }
+        }
+    }
+
+    #[test]
+    fn tampered_json_is_refused_by_the_same_rules_as_set() {
+        let pack = |json: &str| {
+            format!(
+                "v1.{}",
+                URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(json.as_bytes(), 6))
+            )
+        };
+        for json in [
+            r#"{"left": {"fish_count": 1e9}}"#,
+            r#"{"right": {"alignment": -5}}"#,
+            r#"{"scene": "moon"}"#,
+            r#"{"wormhole": true}"#,
+            r#"[1, 2, 3]"#,
+        ] {
+            assert!(decode(&pack(json)).is_err(), "{json}");
+        }
+        let ok = decode(&pack(r#"{"scene": "boids", "compare": true}"#))
+            .unwrap()
+            .unwrap();
+        assert!(ok.compare);
+    }
+}

@@ -1,0 +1,434 @@
+//! What a teacher sets for one tank of the boid scene: the five SIMBA force weights on
+//! the papers' 0–100 scale, the control mode, what the fish perceive, and how many
+//! animals of each species swim in it (Lim & Tan; NOTES.md "SIMBA steering").
+//!
+//! A preset ("Individual", "Group", the Monte Carlo paper partition) fills the weights
+//! and the perception; moving any of those by hand makes the preset "Custom", and
+//! setting them back to a preset's values makes it that preset again, so the label
+//! always tells the truth.
+
+use serde::{Deserialize, Serialize};
+
+use crate::sim::control_mode::{self, ControlMode};
+use crate::sim::{BoidParams, Obstacle, Tank};
+
+/// Largest fish count a teacher can ask for (per tank).
+pub const FISH_COUNT_MAX: u32 = 20_000;
+/// Largest number of sharks per tank.
+pub const SHARKS_MAX: u32 = 10;
+/// Largest number of stingrays per tank.
+pub const STINGRAYS_MAX: u32 = 20;
+/// Force weights run from 0 to this, as in the papers' Table 1.
+pub const WEIGHT_MAX: f32 = 100.0;
+/// Vision distance range, metres: from under two body lengths to the tank's width.
+pub const VISION_DISTANCE_RANGE_M: (f32, f32) = (0.5, 12.0);
+/// Vision angle range, degrees (360: no blind spot).
+pub const VISION_ANGLE_RANGE_DEG: (f32, f32) = (0.0, 360.0);
+/// Maximum speed range, m/s: from a crawl (a third of a body length per second) to a
+/// sprint (about ten body lengths per second).
+pub const MAX_SPEED_RANGE_M_PER_S: (f32, f32) = (0.1, 3.0);
+/// Maximum steering force range, m/s².
+pub const MAX_FORCE_RANGE_M_PER_S2: (f32, f32) = (0.1, 10.0);
+
+/// Named sets of weights and perception.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Preset {
+    /// Table 1, solitary animals: high separation and containment, no cohesion.
+    #[default]
+    Individual,
+    /// Table 1, schooling animals: balanced forces, strong avoidance.
+    Group,
+    /// The Monte Carlo control mode with the papers' published partition of 3.2.
+    MonteCarloPaper,
+    /// Anything else: the teacher moved a slider.
+    Custom,
+}
+
+impl Preset {
+    pub const ALL: [Self; 4] = [
+        Self::Individual,
+        Self::Group,
+        Self::MonteCarloPaper,
+        Self::Custom,
+    ];
+
+    /// The name on the radio button.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Individual => "Individual (solitary)",
+            Self::Group => "Group (school)",
+            Self::MonteCarloPaper => "Monte Carlo (paper)",
+            Self::Custom => "Custom",
+        }
+    }
+
+    /// Hover help a 12-year-old understands.
+    pub fn help(self) -> &'static str {
+        match self {
+            Self::Individual => {
+                "Fish that like to be alone: they keep their distance and do not try to stay together."
+            }
+            Self::Group => {
+                "Fish that live in a school: they stay close, swim the same way and still never bump."
+            }
+            Self::MonteCarloPaper => {
+                "The lottery mode with the chances published in the paper: each moment one urge wins."
+            }
+            Self::Custom => "Your own mix: move any slider and the preset becomes Custom.",
+        }
+    }
+
+    /// The boid parameters this preset sets; `None` for Custom.
+    fn params(self) -> Option<BoidParams> {
+        match self {
+            Self::Individual => Some(BoidParams::individual()),
+            Self::Group => Some(BoidParams::group()),
+            Self::MonteCarloPaper => Some(BoidParams {
+                // The published partition as shares of 100 (0.6/3.2 → 18.75 …), so the
+                // lottery's chances are the paper's and the sliders read as percentages.
+                weights: control_mode::MONTE_CARLO_PAPER_WEIGHTS.map(|w| w * 100.0 / 3.2),
+                mode: ControlMode::MonteCarlo,
+                ..BoidParams::group()
+            }),
+            Self::Custom => None,
+        }
+    }
+}
+
+/// One tank's boid settings. Field names are the automation API's and share links'
+/// names; units are in the names.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TankSettings {
+    pub preset: Preset,
+    pub mode: ControlMode,
+    /// Stay inside the tank, 0–100.
+    pub containment: f32,
+    /// Swim the same way as the neighbours, 0–100.
+    pub alignment: f32,
+    /// Move towards the neighbours' centre, 0–100.
+    pub cohesion: f32,
+    /// Keep space from the neighbours, 0–100.
+    pub separation: f32,
+    /// Swerve around rocks, pillars, ledges and stingrays, 0–100.
+    pub avoidance: f32,
+    pub vision_distance_m: f32,
+    pub vision_angle_deg: f32,
+    pub max_speed_m_per_s: f32,
+    pub max_force_m_per_s2: f32,
+    pub fish_count: u32,
+    pub sharks: u32,
+    pub stingrays: u32,
+    /// `None`: the rocks, pillars and ledges the seed places; a list: exactly these
+    /// (after a teacher added, moved or removed one).
+    pub obstacles: Option<Vec<Obstacle>>,
+}
+
+impl TankSettings {
+    /// A tank with `preset`'s values, 200 fish, no predators.
+    pub fn with_preset(preset: Preset) -> Self {
+        let mut tank = Self {
+            preset,
+            mode: ControlMode::Blended,
+            containment: 0.0,
+            alignment: 0.0,
+            cohesion: 0.0,
+            separation: 0.0,
+            avoidance: 0.0,
+            vision_distance_m: 0.0,
+            vision_angle_deg: 0.0,
+            max_speed_m_per_s: 0.0,
+            max_force_m_per_s2: 0.0,
+            fish_count: 200,
+            sharks: 0,
+            stingrays: 0,
+            obstacles: None,
+        };
+        tank.load_preset(preset);
+        tank
+    }
+
+    /// The five weights in [`control_mode::Force::ALL`] order.
+    pub fn weights(&self) -> [f32; 5] {
+        [
+            self.containment,
+            self.alignment,
+            self.cohesion,
+            self.separation,
+            self.avoidance,
+        ]
+    }
+
+    fn set_weights(&mut self, w: [f32; 5]) {
+        [
+            self.containment,
+            self.alignment,
+            self.cohesion,
+            self.separation,
+            self.avoidance,
+        ] = w;
+    }
+
+    /// Mutable access to each weight with its name, for sliders.
+    pub fn weights_mut(&mut self) -> [(&'static str, &mut f32); 5] {
+        [
+            ("containment", &mut self.containment),
+            ("alignment", &mut self.alignment),
+            ("cohesion", &mut self.cohesion),
+            ("separation", &mut self.separation),
+            ("avoidance", &mut self.avoidance),
+        ]
+    }
+
+    /// What the simulation runs with.
+    pub fn boid_params(&self) -> BoidParams {
+        let mut params = BoidParams::group();
+        params.weights = self.weights();
+        params.mode = self.mode;
+        params.perception.vision_distance_m = self.vision_distance_m;
+        params.perception.vision_angle_rad = self.vision_angle_deg.to_radians();
+        params.perception.max_speed_m_per_s = self.max_speed_m_per_s;
+        params.perception.max_force_m_per_s2 = self.max_force_m_per_s2;
+        params
+    }
+
+    /// Sets the weights and perception (and, for the paper partition, the mode) of
+    /// `preset`. Custom changes nothing.
+    pub fn load_preset(&mut self, preset: Preset) {
+        self.preset = preset;
+        let Some(params) = preset.params() else {
+            return;
+        };
+        self.set_weights(params.weights);
+        if preset == Preset::MonteCarloPaper {
+            self.mode = params.mode;
+        }
+        let p = params.perception;
+        self.vision_distance_m = p.vision_distance_m;
+        self.vision_angle_deg = p.vision_angle_rad.to_degrees().round();
+        self.max_speed_m_per_s = p.max_speed_m_per_s;
+        self.max_force_m_per_s2 = p.max_force_m_per_s2;
+    }
+
+    /// The preset whose values these are, or Custom.
+    pub fn matching_preset(&self) -> Preset {
+        Preset::ALL
+            .into_iter()
+            .find(|&preset| {
+                preset != Preset::Custom && {
+                    let mut probe = self.clone();
+                    probe.load_preset(preset);
+                    // Only the paper partition includes a mode; Table 1's presets
+                    // work in any mode.
+                    probe.weights() == self.weights()
+                        && probe.mode == self.mode
+                        && probe.vision_distance_m == self.vision_distance_m
+                        && probe.vision_angle_deg == self.vision_angle_deg
+                        && probe.max_speed_m_per_s == self.max_speed_m_per_s
+                        && probe.max_force_m_per_s2 == self.max_force_m_per_s2
+                }
+            })
+            .unwrap_or(Preset::Custom)
+    }
+
+    /// Makes the preset label true after an edit: a newly chosen preset loads its
+    /// values; otherwise the label follows the values.
+    pub fn settle(&mut self, before: &Self) {
+        if self.preset != before.preset && self.preset != Preset::Custom {
+            self.load_preset(self.preset);
+        } else {
+            self.preset = self.matching_preset();
+        }
+    }
+
+    /// Checks every range; `prefix` names the tank in messages ("left.").
+    pub fn validate(&self, prefix: &str, tank: &Tank) -> Result<(), (String, String)> {
+        let range = |key: &str, value: f32, (lo, hi): (f32, f32)| {
+            if value.is_finite() && (lo..=hi).contains(&value) {
+                Ok(())
+            } else {
+                Err((
+                    format!("{prefix}{key}"),
+                    format!("{value} is out of range: choose from {lo} to {hi}"),
+                ))
+            }
+        };
+        for (name, weight) in [
+            ("containment", self.containment),
+            ("alignment", self.alignment),
+            ("cohesion", self.cohesion),
+            ("separation", self.separation),
+            ("avoidance", self.avoidance),
+        ] {
+            range(name, weight, (0.0, WEIGHT_MAX))?;
+        }
+        range(
+            "vision_distance_m",
+            self.vision_distance_m,
+            VISION_DISTANCE_RANGE_M,
+        )?;
+        range(
+            "vision_angle_deg",
+            self.vision_angle_deg,
+            VISION_ANGLE_RANGE_DEG,
+        )?;
+        range(
+            "max_speed_m_per_s",
+            self.max_speed_m_per_s,
+            MAX_SPEED_RANGE_M_PER_S,
+        )?;
+        range(
+            "max_force_m_per_s2",
+            self.max_force_m_per_s2,
+            MAX_FORCE_RANGE_M_PER_S2,
+        )?;
+        for (key, value, max) in [
+            ("fish_count", self.fish_count, FISH_COUNT_MAX),
+            ("sharks", self.sharks, SHARKS_MAX),
+            ("stingrays", self.stingrays, STINGRAYS_MAX),
+        ] {
+            if value > max {
+                return Err((
+                    format!("{prefix}{key}"),
+                    format!("{value} is out of range: choose from 0 to {max}"),
+                ));
+            }
+        }
+        if let Some(obstacles) = &self.obstacles {
+            if obstacles.len() > MAX_OBSTACLES {
+                return Err((
+                    format!("{prefix}obstacles"),
+                    format!(
+                        "{} obstacles is too many: at most {MAX_OBSTACLES}",
+                        obstacles.len()
+                    ),
+                ));
+            }
+            for (i, obstacle) in obstacles.iter().enumerate() {
+                validate_obstacle(obstacle, tank)
+                    .map_err(|reason| (format!("{prefix}obstacles[{i}]"), reason))?;
+            }
+        }
+        Ok(())
+    }
+
+    /// Brings every value into its range (for paths that cannot refuse, such as the
+    /// UI's own widgets). Invalid obstacles are dropped.
+    pub fn clamp(&mut self, tank: &Tank) {
+        let clamp = |v: &mut f32, (lo, hi): (f32, f32)| {
+            *v = if v.is_finite() { v.clamp(lo, hi) } else { lo };
+        };
+        for (_, w) in self.weights_mut() {
+            clamp(w, (0.0, WEIGHT_MAX));
+        }
+        clamp(&mut self.vision_distance_m, VISION_DISTANCE_RANGE_M);
+        clamp(&mut self.vision_angle_deg, VISION_ANGLE_RANGE_DEG);
+        clamp(&mut self.max_speed_m_per_s, MAX_SPEED_RANGE_M_PER_S);
+        clamp(&mut self.max_force_m_per_s2, MAX_FORCE_RANGE_M_PER_S2);
+        self.fish_count = self.fish_count.min(FISH_COUNT_MAX);
+        self.sharks = self.sharks.min(SHARKS_MAX);
+        self.stingrays = self.stingrays.min(STINGRAYS_MAX);
+        if let Some(obstacles) = &mut self.obstacles {
+            obstacles.retain(|o| validate_obstacle(o, tank).is_ok());
+            obstacles.truncate(MAX_OBSTACLES);
+        }
+    }
+}
+
+/// Checks that a teacher's (or a link's) obstacle is finite and stands inside the
+/// tank.
+fn validate_obstacle(obstacle: &Obstacle, tank: &Tank) -> Result<(), String> {
+    let (center_m, radius_m) = match *obstacle {
+        Obstacle::Rock { center_m, radius_m } => (center_m, radius_m),
+        Obstacle::Cylinder {
+            base_center_m,
+            radius_m,
+            ..
+        } => (base_center_m, radius_m),
+    };
+    if !(center_m.is_finite() && radius_m.is_finite()) {
+        return Err("has a number that is not finite".to_owned());
+    }
+    if !(0.2..=1.5).contains(&radius_m) {
+        return Err(format!("radius {radius_m} m: choose from 0.2 to 1.5 m"));
+    }
+    if !tank.contains(glam::Vec3::new(center_m.x, tank.min_m.y, center_m.z), radius_m) {
+        return Err("does not stand inside the tank".to_owned());
+    }
+    Ok(())
+}
+
+/// Most obstacles a tank may hold: plenty for a lesson, bounded for share links.
+pub const MAX_OBSTACLES: usize = 24;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn presets_carry_table_1_and_are_recognised() {
+        let individual = TankSettings::with_preset(Preset::Individual);
+        assert_eq!(individual.weights(), control_mode::INDIVIDUAL_WEIGHTS);
+        assert_eq!(individual.matching_preset(), Preset::Individual);
+        let group = TankSettings::with_preset(Preset::Group);
+        assert_eq!(group.weights(), control_mode::GROUP_WEIGHTS);
+        assert_eq!(group.matching_preset(), Preset::Group);
+        let paper = TankSettings::with_preset(Preset::MonteCarloPaper);
+        assert_eq!(paper.mode, ControlMode::MonteCarlo);
+        let sum: f32 = paper.weights().iter().sum();
+        assert!((sum - 100.0).abs() < 1e-3, "{sum}");
+        assert_eq!(paper.matching_preset(), Preset::MonteCarloPaper);
+    }
+
+    #[test]
+    fn moving_a_slider_makes_custom_and_moving_it_back_restores_the_preset() {
+        let before = TankSettings::with_preset(Preset::Group);
+        let mut after = before.clone();
+        after.cohesion = 80.0;
+        after.settle(&before);
+        assert_eq!(after.preset, Preset::Custom);
+        let mut back = after.clone();
+        back.cohesion = control_mode::GROUP_WEIGHTS[2];
+        back.settle(&after);
+        assert_eq!(back.preset, Preset::Group);
+    }
+
+    #[test]
+    fn choosing_a_preset_loads_its_values() {
+        let before = TankSettings::with_preset(Preset::Individual);
+        let mut after = before.clone();
+        after.preset = Preset::Group;
+        after.settle(&before);
+        assert_eq!(after.weights(), control_mode::GROUP_WEIGHTS);
+        assert_eq!(after.preset, Preset::Group);
+    }
+
+    #[test]
+    fn the_mode_alone_does_not_change_the_table_1_presets() {
+        let before = TankSettings::with_preset(Preset::Group);
+        let mut after = before.clone();
+        after.mode = ControlMode::Classic;
+        after.settle(&before);
+        assert_eq!(after.preset, Preset::Group);
+        let paper = TankSettings::with_preset(Preset::MonteCarloPaper);
+        let mut blended = paper.clone();
+        blended.mode = ControlMode::Blended;
+        blended.settle(&paper);
+        assert_eq!(blended.preset, Preset::Custom, "the paper preset is a lottery");
+    }
+
+    #[test]
+    fn validation_names_the_setting() {
+        let tank = Tank::default();
+        let mut settings = TankSettings::with_preset(Preset::Group);
+        settings.separation = 101.0;
+        let (key, reason) = settings.validate("left.", &tank).unwrap_err();
+        assert_eq!(key, "left.separation");
+        assert!(reason.contains("out of range"));
+        settings.clamp(&tank);
+        assert!(settings.validate("", &tank).is_ok());
+        settings.max_speed_m_per_s = f32::NAN;
+        assert!(settings.validate("", &tank).is_err());
+    }
+}
