@@ -37,15 +37,14 @@ fn main() {
         }
         let steps_per_sec = rate(Duration::from_secs(2), || world.step());
 
-        let lab = Lab::new(Settings {
-            fish_count: fish_count as u32,
-            ..Settings::default()
-        });
+        let mut settings = Settings::default();
+        settings.left.fish_count = fish_count as u32;
+        let lab = Lab::new(settings);
         let tank = lab.world().tank();
         let camera = OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0);
         let mut builder = FrameBuilder::default();
         let frames_per_sec = rate(Duration::from_secs(1), || {
-            std::hint::black_box(builder.build(&lab, &camera, [1920, 1080], 0.0));
+            std::hint::black_box(builder.build(&lab.runs()[0], 1.0, &camera, [1920, 1080], 0.0, 0));
         });
         println!(
             "{fish_count:>7} | {steps_per_sec:>12.0} | {:>16.0} | {:>17.3}",

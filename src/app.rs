@@ -1,18 +1,47 @@
-//! The eframe application: one `Lab`, the 3D view and the panels around it.
+//! The eframe application: one `Lab` (one tank, or two side by side), the 3D views
+//! and the panels around them.
 //!
 //! Each frame: advance the lab by the fixed steps real time asks for, lay out the
-//! panels (which may change settings), handle camera input on the 3D view and hand
-//! the renderer a freshly built frame.
+//! panels (which may change settings), handle camera and rock-editing input on each
+//! 3D view, and hand the renderer a freshly built frame per view.
 
 use eframe::egui;
+use glam::{Vec2, Vec3};
 
 use crate::automation::{AutomationError, CameraReport, Command, StateReport};
 use crate::bench::Benchmark;
 use crate::clock::RateMeter;
-use crate::lab::Lab;
+use crate::lab::{Lab, Run};
 use crate::render::{FrameBuilder, OrbitCamera, RenderCaps, SceneRenderer};
-use crate::settings::Settings;
-use crate::ui::{PanelAction, WidgetRects, control_panel_ui, status_line_ui};
+use crate::settings::{Scene, Settings, Side};
+use crate::sim::Obstacle;
+use crate::ui::{
+    EditTool, PanelAction, PanelState, WidgetRects, control_panel_ui, metrics_panel_ui, mode_label,
+    side_color, status_line_ui,
+};
+
+/// Radius of a rock a teacher adds by clicking, metres. Default 0.6 m: clearly
+/// visible, two fish lengths across, small enough to place between others.
+const NEW_ROCK_RADIUS_M: f32 = 0.6;
+
+/// Fish whose vision is drawn at most ("Show vision"). Default 300: every fish of a
+/// classroom-sized school; beyond that the lines would hide the fish.
+const VISION_OBSERVERS_MAX: usize = 300;
+
+/// Neighbour links drawn per fish at most. Default 7: the number of neighbours a
+/// schooling animal attends to (Ballerini et al. 2008), and a readable picture.
+const VISION_LINKS_PER_FISH: usize = 7;
+
+/// Fish whose field of view is drawn as a fan. Default 6: a few examples; fans for
+/// every fish would cover the tank.
+const VISION_FANS: usize = 6;
+
+/// A message shown at the top of the 3D view until dismissed.
+#[derive(Clone, Debug, PartialEq)]
+struct Notice {
+    text: String,
+    is_error: bool,
+}
 
 /// The Shoal app.
 pub struct ShoalApp {
@@ -23,9 +52,11 @@ pub struct ShoalApp {
     camera_is_default: bool,
     /// Aspect ratio the camera was last framed for.
     framed_aspect: f32,
-    frame_builder: FrameBuilder,
+    /// One per 3D view (left, right).
+    frame_builders: [FrameBuilder; 2],
     caps: RenderCaps,
     panel_open: bool,
+    panel: PanelState,
     fps_meter: RateMeter,
     last_frame_time_secs: Option<f64>,
     widget_rects: WidgetRects,
@@ -33,6 +64,11 @@ pub struct ShoalApp {
     benchmark: Option<Benchmark>,
     /// Set by `shoal.crash_test()`: the next frame panics, to test the error page.
     crash_requested: bool,
+    notice: Option<Notice>,
+    /// The page's address without its fragment, for share links (`None` natively).
+    page_url: Option<String>,
+    /// The obstacle being dragged with the Move tool: tank and index.
+    dragging: Option<(Side, usize)>,
     ctx: egui::Context,
 }
 
@@ -58,16 +94,34 @@ impl ShoalApp {
             camera_is_default: true,
             framed_aspect: 16.0 / 9.0,
             lab,
-            frame_builder: FrameBuilder::default(),
+            frame_builders: Default::default(),
             caps,
             panel_open: true,
+            panel: PanelState::default(),
             fps_meter: RateMeter::default(),
             last_frame_time_secs: None,
             widget_rects: WidgetRects::new(),
             benchmark: None,
             crash_requested: false,
+            notice: None,
+            page_url: None,
+            dragging: None,
             ctx: cc.egui_ctx.clone(),
         })
+    }
+
+    /// Tells the app its page address (for share links).
+    pub fn set_page_url(&mut self, url: String) {
+        self.page_url = Some(url);
+    }
+
+    /// Shows an explanation at the top of the view (e.g. a share link that could not
+    /// be opened).
+    pub fn show_error_notice(&mut self, text: String) {
+        self.notice = Some(Notice {
+            text,
+            is_error: true,
+        });
     }
 
     /// What `shoal.state()` reports.
@@ -84,6 +138,7 @@ impl ShoalApp {
             distance_m: self.camera.distance_m,
             target_m: self.camera.target_m.to_array(),
         });
+        report.notice = self.notice.as_ref().map(|n| n.text.clone());
         report
     }
 
@@ -112,14 +167,22 @@ impl ShoalApp {
                 ui.label(if report.done {
                     "Done. Figures for this computer and browser:"
                 } else {
-                    "Measuring… (about 15 seconds)"
+                    "Measuring… (about a minute)"
                 });
                 egui::Grid::new("bench_rows").striped(true).show(ui, |ui| {
-                    for head in ["fish", "steps/s", "fish-steps/s", "frame ms", "CPU ms"] {
+                    for head in [
+                        "scene",
+                        "fish",
+                        "steps/s",
+                        "fish-steps/s",
+                        "frame ms",
+                        "CPU ms",
+                    ] {
                         ui.strong(head);
                     }
                     ui.end_row();
                     for row in &report.rows {
+                        ui.label(row.scene);
                         ui.label(row.fish.to_string());
                         ui.label(format!("{:.0}", row.sim_steps_per_sec));
                         ui.label(format!("{:.0}", row.fish_steps_per_sec));
@@ -141,6 +204,20 @@ impl ShoalApp {
         self.lab.settings()
     }
 
+    /// The link that reopens the current settings (`shoal.share_link()`).
+    pub fn share_link(&self) -> String {
+        format!(
+            "{}#{}",
+            self.page_url.as_deref().unwrap_or_default(),
+            crate::share_link::encode(self.lab.settings())
+        )
+    }
+
+    /// The metrics of the last minutes as CSV (`shoal.metrics_csv()`).
+    pub fn metrics_csv(&self) -> String {
+        self.lab.metrics_csv()
+    }
+
     /// Runs an automation command and asks for a repaint so the change shows.
     pub fn run_command(&mut self, command: Command) -> Result<(), AutomationError> {
         let result = command.execute(&mut self.lab);
@@ -154,29 +231,23 @@ impl ShoalApp {
         self.camera_is_default = true;
     }
 
-    /// The 3D view: camera input, then the paint callback.
-    fn aquarium_ui(&mut self, ui: &mut egui::Ui) {
-        let rect = ui.available_rect_before_wrap();
-        let response = ui.allocate_rect(rect, egui::Sense::click_and_drag());
-        self.widget_rects.insert("aquarium", rect);
-        let aspect = rect.width() / rect.height().max(1.0);
-        if self.camera_is_default && (aspect - self.framed_aspect).abs() > 0.01 {
-            self.framed_aspect = aspect;
-            self.reset_view();
-        }
+    /// Orbit, zoom and pan from mouse and touch input on a 3D view.
+    fn camera_input(&mut self, ui: &egui::Ui, response: &egui::Response, rect: egui::Rect) {
         let camera_before = self.camera.clone();
         let (zoom, scroll, multi_touch) =
             ui.input(|i| (i.zoom_delta(), i.smooth_scroll_delta(), i.multi_touch()));
         if let Some(touch) = multi_touch {
             // Two fingers: pinch to zoom, drag to pan.
-            self.camera.zoom(touch.zoom_delta);
-            self.camera.pan(
-                touch.translation_delta.x,
-                touch.translation_delta.y,
-                rect.height(),
-            );
+            if response.contains_pointer() || response.hovered() {
+                self.camera.zoom(touch.zoom_delta);
+                self.camera.pan(
+                    touch.translation_delta.x,
+                    touch.translation_delta.y,
+                    rect.height(),
+                );
+            }
         } else {
-            if response.dragged_by(egui::PointerButton::Primary) {
+            if response.dragged_by(egui::PointerButton::Primary) && self.dragging.is_none() {
                 let delta = response.drag_delta();
                 self.camera.rotate(delta.x, delta.y);
             }
@@ -190,23 +261,197 @@ impl ShoalApp {
                 self.camera.zoom(zoom * (scroll.y * 0.0015).exp());
             }
         }
-
         if self.camera != camera_before {
             self.camera_is_default = false;
         }
+    }
+
+    /// The 3D views: one tank, or two side by side.
+    fn views_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings) {
+        let full = ui.available_rect_before_wrap();
+        self.widget_rects.insert("aquarium", full);
+        let count = self.lab.runs().len();
+        let gap = if count > 1 { 4.0 } else { 0.0 };
+        let width = (full.width() - gap * (count as f32 - 1.0)) / count as f32;
+        let aspect = width / full.height().max(1.0);
+        if self.camera_is_default && (aspect - self.framed_aspect).abs() > 0.01 {
+            self.framed_aspect = aspect;
+            self.reset_view();
+        }
+        for index in 0..count {
+            let rect = egui::Rect::from_min_size(
+                full.min + egui::vec2(index as f32 * (width + gap), 0.0),
+                egui::vec2(width, full.height()),
+            );
+            self.view_ui(ui, rect, index, settings);
+        }
+    }
+
+    fn view_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        rect: egui::Rect,
+        index: usize,
+        settings: &mut Settings,
+    ) {
+        let side = Side::BOTH[index];
+        let response = ui.interact(
+            rect,
+            egui::Id::unique(("aquarium_view", index)),
+            egui::Sense::click_and_drag(),
+        );
+        self.widget_rects
+            .insert(&format!("view_{}", side.name()), rect);
+        let aspect = rect.width() / rect.height().max(1.0);
+        if settings.scene == Scene::Boids {
+            self.rock_tool_input(&response, rect, aspect, side, settings);
+        }
+        self.camera_input(ui, &response, rect);
 
         let pixels_per_point = ui.ctx().pixels_per_point();
         let size_px = [
             (rect.width() * pixels_per_point).round().max(1.0) as u32,
             (rect.height() * pixels_per_point).round().max(1.0) as u32,
         ];
+        let run = &self.lab.runs()[index];
         // The water animates with simulated time: pausing freezes the whole picture.
-        let time_secs = self.lab.world().time_secs() as f32;
-        let frame = self
-            .frame_builder
-            .build(&self.lab, &self.camera, size_px, time_secs);
+        let time_secs = run.world().time_secs() as f32;
+        let frame = self.frame_builders[index].build(
+            run,
+            self.lab.draw_alpha(),
+            &self.camera,
+            size_px,
+            time_secs,
+            index as u32,
+        );
         ui.painter()
             .add(eframe::egui_wgpu::Callback::new_paint_callback(rect, frame));
+
+        let painter = ui.painter_at(rect);
+        if settings.show_vision && settings.scene == Scene::Boids {
+            draw_vision(&painter, rect, &self.camera, run, self.lab.draw_alpha());
+        }
+        if self.lab.comparing() {
+            let tank = settings.tank(side);
+            let label = format!(
+                "{} tank · {} · {}",
+                match side {
+                    Side::Left => "Left",
+                    Side::Right => "Right",
+                },
+                tank.preset.label(),
+                mode_label(tank.mode)
+            );
+            let at = rect.left_top()
+                + egui::vec2(
+                    10.0,
+                    if index == 0 && !self.panel_open {
+                        44.0
+                    } else {
+                        8.0
+                    },
+                );
+            let galley =
+                painter.layout_no_wrap(label, egui::FontId::proportional(15.0), side_color(side));
+            painter.rect_filled(
+                egui::Rect::from_min_size(at, galley.size()).expand(4.0),
+                4.0,
+                egui::Color32::from_black_alpha(150),
+            );
+            painter.galley(at, galley, side_color(side));
+        }
+    }
+
+    /// Adds, moves or removes obstacles with the mouse (the panel's rock tools).
+    fn rock_tool_input(
+        &mut self,
+        response: &egui::Response,
+        rect: egui::Rect,
+        aspect: f32,
+        side: Side,
+        settings: &mut Settings,
+    ) {
+        let tool = self.panel.tool;
+        if tool == EditTool::Look {
+            return;
+        }
+        let Some(pointer) = response.interact_pointer_pos().or(response.hover_pos()) else {
+            return;
+        };
+        let uv = Vec2::new(
+            (pointer.x - rect.min.x) / rect.width().max(1.0),
+            (pointer.y - rect.min.y) / rect.height().max(1.0),
+        );
+        let (origin, direction) = self.camera.ray(uv, aspect);
+        let Some(run) = self.lab.run(side) else {
+            return;
+        };
+        let world = run.world();
+        let tank = *world.tank();
+        let current: Vec<Obstacle> = settings
+            .tank(side)
+            .obstacles
+            .clone()
+            .unwrap_or_else(|| world.obstacles().to_vec());
+        let floor_hit = floor_point(origin, direction, tank.min_m.y);
+        match tool {
+            EditTool::Look => {}
+            EditTool::AddRock => {
+                if response.clicked()
+                    && let Some(p) = floor_hit
+                {
+                    let rock = Obstacle::Rock {
+                        center_m: Vec3::new(p.x, tank.min_m.y - 0.2 * NEW_ROCK_RADIUS_M, p.z),
+                        radius_m: NEW_ROCK_RADIUS_M,
+                    };
+                    let mut next = current;
+                    next.push(rock);
+                    self.propose_obstacles(settings, side, next);
+                }
+            }
+            EditTool::RemoveRock => {
+                if response.clicked()
+                    && let Some(i) = picked_obstacle(&current, origin, direction)
+                {
+                    let mut next = current;
+                    next.remove(i);
+                    self.propose_obstacles(settings, side, next);
+                }
+            }
+            EditTool::MoveRock => {
+                if response.drag_started_by(egui::PointerButton::Primary) {
+                    self.dragging = picked_obstacle(&current, origin, direction).map(|i| (side, i));
+                }
+                if let (Some((drag_side, i)), Some(p)) = (self.dragging, floor_hit)
+                    && drag_side == side
+                    && response.dragged_by(egui::PointerButton::Primary)
+                    && i < current.len()
+                {
+                    let mut next = current;
+                    next[i] = moved_to(&next[i], Vec2::new(p.x, p.z));
+                    self.propose_obstacles(settings, side, next);
+                }
+                if response.drag_stopped() {
+                    self.dragging = None;
+                }
+            }
+        }
+    }
+
+    /// Uses `obstacles` for the tank of `side` if every one is valid; otherwise
+    /// explains why not and changes nothing.
+    fn propose_obstacles(&mut self, settings: &mut Settings, side: Side, obstacles: Vec<Obstacle>) {
+        let mut candidate = settings.clone();
+        candidate.tank_mut(side).obstacles = Some(obstacles);
+        match candidate.validate() {
+            Ok(()) => *settings = candidate,
+            Err(err) => {
+                self.notice = Some(Notice {
+                    text: format!("That rock cannot go there: {err}"),
+                    is_error: false,
+                });
+            }
+        }
     }
 
     fn apply(&mut self, actions: Vec<PanelAction>) {
@@ -216,8 +461,219 @@ impl ShoalApp {
                 PanelAction::Reset => self.lab.reset(None),
                 PanelAction::ResetView => self.reset_view(),
                 PanelAction::HidePanel => self.panel_open = false,
+                PanelAction::CopyLink => {
+                    let link = self.share_link();
+                    self.ctx.copy_text(link);
+                    self.notice = Some(Notice {
+                        text: "Link copied. Paste it in a message or a web page: it opens \
+                               Shoal with exactly these settings."
+                            .to_owned(),
+                        is_error: false,
+                    });
+                }
+                PanelAction::ExportCsv => {
+                    let csv = self.lab.metrics_csv();
+                    let message = save_csv(&csv);
+                    self.notice = Some(Notice {
+                        is_error: message.is_err(),
+                        text: message.unwrap_or_else(|e| e),
+                    });
+                }
+                PanelAction::RestoreObstacles => {
+                    let mut settings = self.lab.settings().clone();
+                    settings.tank_mut(self.panel.edit_side).obstacles = None;
+                    self.lab.apply_settings(settings);
+                }
             }
         }
+    }
+
+    fn notice_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(notice) = self.notice.clone() else {
+            return;
+        };
+        let rect = ui.max_rect();
+        egui::Area::new(egui::Id::unique("notice"))
+            .fixed_pos(rect.center_top() + egui::vec2(-260.0, 10.0))
+            .order(egui::Order::Foreground)
+            .show(ui.ctx(), |ui| {
+                egui::Frame::popup(ui.style()).show(ui, |ui| {
+                    ui.set_max_width(520.0);
+                    ui.horizontal(|ui| {
+                        let color = if notice.is_error {
+                            ui.visuals().warn_fg_color
+                        } else {
+                            ui.visuals().text_color()
+                        };
+                        ui.add(
+                            egui::Label::new(egui::RichText::new(&notice.text).color(color)).wrap(),
+                        );
+                        let close = ui.button("OK").on_hover_text("Hide this message");
+                        self.widget_rects.insert("notice_ok", close.rect);
+                        if close.clicked() {
+                            self.notice = None;
+                        }
+                    });
+                });
+            });
+    }
+}
+
+/// Where the ray meets the floor plane, if it points down at it.
+fn floor_point(origin: Vec3, direction: Vec3, floor_y_m: f32) -> Option<Vec3> {
+    if direction.y >= -1e-4 {
+        return None;
+    }
+    let t = (floor_y_m - origin.y) / direction.y;
+    (t > 0.0).then(|| origin + direction * t)
+}
+
+/// The obstacle the ray passes closest to (within its radius plus a little slack).
+fn picked_obstacle(obstacles: &[Obstacle], origin: Vec3, direction: Vec3) -> Option<usize> {
+    /// Extra reach when picking, metres: thin pillars stay easy to click.
+    const SLACK_M: f32 = 0.3;
+    obstacles
+        .iter()
+        .enumerate()
+        .filter_map(|(i, obstacle)| {
+            // The closest point of the ray to the obstacle's core at the ray's height.
+            let mut best = f32::INFINITY;
+            let mut along = 0.0;
+            for _ in 0..48 {
+                let p = origin + direction * along;
+                let d = obstacle.signed_distance_m(p);
+                best = best.min(d);
+                along += d.max(0.05);
+                if d < 0.0 || along > 200.0 {
+                    break;
+                }
+            }
+            (best < SLACK_M).then_some((i, along))
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(i, _)| i)
+}
+
+/// `obstacle` with its footprint centred on `floor_xz`.
+fn moved_to(obstacle: &Obstacle, floor_xz: Vec2) -> Obstacle {
+    match *obstacle {
+        Obstacle::Rock { center_m, radius_m } => Obstacle::Rock {
+            center_m: Vec3::new(floor_xz.x, center_m.y, floor_xz.y),
+            radius_m,
+        },
+        Obstacle::Cylinder {
+            base_center_m,
+            radius_m,
+            height_m,
+        } => Obstacle::Cylinder {
+            base_center_m: Vec3::new(floor_xz.x, base_center_m.y, floor_xz.y),
+            radius_m,
+            height_m,
+        },
+    }
+}
+
+/// "Show vision": each fish's links to the nearest neighbours it sees, and the field
+/// of view of a few fish as a fan in their swimming plane.
+fn draw_vision(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    camera: &OrbitCamera,
+    run: &Run,
+    alpha: f32,
+) {
+    let Some(boids) = run.world().boids() else {
+        return;
+    };
+    let perception = boids.perception;
+    let fish = run.world().fish();
+    let aspect = rect.width() / rect.height().max(1.0);
+    let to_screen = |p: Vec3| {
+        camera
+            .project(p, aspect)
+            .map(|uv| rect.min + egui::vec2(uv.x * rect.width(), uv.y * rect.height()))
+    };
+    let link_stroke = egui::Stroke::new(
+        1.0,
+        egui::Color32::from_rgba_unmultiplied(255, 255, 160, 90),
+    );
+    let mut seen: Vec<(f32, usize)> = Vec::new();
+    let candidates = fish.len().min(4 * VISION_OBSERVERS_MAX);
+    for i in 0..fish.len().min(VISION_OBSERVERS_MAX) {
+        let me = &fish[i];
+        seen.clear();
+        for (j, other) in fish[..candidates].iter().enumerate() {
+            if j != i
+                && crate::sim::boid_forces::sees(
+                    me.position_m,
+                    me.heading(),
+                    other.position_m,
+                    &perception,
+                )
+            {
+                seen.push((me.position_m.distance_squared(other.position_m), j));
+            }
+        }
+        seen.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let Some(a) = to_screen(run.drawn_position_m(i, alpha)) else {
+            continue;
+        };
+        for &(_, j) in seen.iter().take(VISION_LINKS_PER_FISH) {
+            if let Some(b) = to_screen(run.drawn_position_m(j, alpha)) {
+                painter.line_segment([a, b], link_stroke);
+            }
+        }
+    }
+    // Fans: the field of view in the plane of the heading and the horizontal side.
+    let half = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
+    for (i, me) in fish.iter().enumerate().take(VISION_FANS) {
+        let centre = run.drawn_position_m(i, alpha);
+        let forward = me.heading();
+        let side = forward.cross(Vec3::Y).normalize_or(Vec3::Z);
+        let mut points = Vec::new();
+        if let Some(c) = to_screen(centre) {
+            points.push(c);
+        }
+        let segments = 32;
+        for k in 0..=segments {
+            let angle = -half + 2.0 * half * k as f32 / segments as f32;
+            let dir = forward * angle.cos() + side * angle.sin();
+            if let Some(p) = to_screen(centre + dir * perception.vision_distance_m) {
+                points.push(p);
+            }
+        }
+        if points.len() > 3 {
+            painter.add(egui::Shape::line(
+                points.clone(),
+                egui::Stroke::new(
+                    1.5,
+                    egui::Color32::from_rgba_unmultiplied(120, 255, 200, 160),
+                ),
+            ));
+            painter.add(egui::Shape::convex_polygon(
+                points,
+                egui::Color32::from_rgba_unmultiplied(120, 255, 200, 18),
+                egui::Stroke::NONE,
+            ));
+        }
+    }
+}
+
+/// Saves the CSV: a browser download on the web, a file in the working folder on
+/// the desktop. Returns the message for the user.
+fn save_csv(csv: &str) -> Result<String, String> {
+    let name = "shoal-metrics.csv";
+    #[cfg(target_arch = "wasm32")]
+    {
+        crate::web::download_text(name, "text/csv", csv)
+            .map(|()| format!("Downloading {name}: open it with a spreadsheet."))
+            .map_err(|err| format!("The download did not start: {err}"))
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        std::fs::write(name, csv)
+            .map(|()| format!("Saved {name} in the folder Shoal was started from."))
+            .map_err(|err| format!("Could not save {name}: {err}"))
     }
 }
 
@@ -264,23 +720,48 @@ impl eframe::App for ShoalApp {
             status_line_ui(ui, &status, self.caps);
         });
 
+        if self.lab.settings().scene == Scene::Boids {
+            let labels: Vec<String> = self
+                .lab
+                .runs()
+                .iter()
+                .map(|run| {
+                    let tank = self.lab.settings().tank(run.side());
+                    if self.lab.comparing() {
+                        format!("{} ({})", run.side().name(), tank.preset.label())
+                    } else {
+                        tank.preset.label().to_owned()
+                    }
+                })
+                .collect();
+            egui::Panel::bottom("metrics")
+                .resizable(true)
+                .default_size(170.0)
+                .show(ui, |ui| {
+                    metrics_panel_ui(ui, self.lab.runs(), &labels, &mut self.widget_rects);
+                });
+        }
+
         let mut settings = self.lab.settings().clone();
         let mut actions = keyboard_shortcuts(ui, &mut settings);
         egui::Panel::left("controls")
-            .default_size(250.0)
+            .default_size(270.0)
             .resizable(true)
             .show_collapsible(ui, &mut self.panel_open, |ui| {
-                actions.extend(control_panel_ui(ui, &mut settings, &mut self.widget_rects));
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    actions.extend(control_panel_ui(
+                        ui,
+                        &mut settings,
+                        &mut self.panel,
+                        &mut self.widget_rects,
+                    ));
+                });
             });
-        if &settings != self.lab.settings() {
-            self.lab.apply_settings(settings);
-        }
-        self.apply(actions);
 
         egui::CentralPanel::default()
             .frame(egui::Frame::NONE)
             .show(ui, |ui| {
-                self.aquarium_ui(ui);
+                self.views_ui(ui, &mut settings);
                 if !self.panel_open {
                     let button = egui::Button::new("Controls");
                     let at = ui.max_rect().left_top() + egui::vec2(8.0, 8.0);
@@ -295,7 +776,12 @@ impl eframe::App for ShoalApp {
                         self.panel_open = true;
                     }
                 }
+                self.notice_ui(ui);
             });
+        if &settings != self.lab.settings() {
+            self.lab.apply_settings(settings);
+        }
+        self.apply(actions);
 
         self.benchmark_ui(ui);
 

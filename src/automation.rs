@@ -8,6 +8,8 @@
 //! | `shoal.step(n)` | runs `n` simulation steps now (1 ≤ n ≤ 100,000), even while paused |
 //! | `shoal.pause()` / `shoal.play()` | stops / resumes the simulation |
 //! | `shoal.reset(seed?)` | rebuilds the world, from `seed` when given |
+//! | `shoal.share_link()` | the link that reopens exactly the current settings |
+//! | `shoal.metrics_csv()` | the metrics of the last minutes as CSV text (what "Download data" saves) |
 //! | `shoal.widgets()` | where the main widgets are on the page, `{name: {x, y, width, height}}` in CSS pixels (for tests that click real widgets) |
 //!
 //! Arguments arrive as JSON values; this module parses and validates them, so the
@@ -131,6 +133,10 @@ pub struct StateReport {
     pub metrics_right: Option<MetricsSample>,
     /// Whether two tanks are shown.
     pub compare: bool,
+    /// The message shown at the top of the view, if any (e.g. a share link that
+    /// could not be opened).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub notice: Option<String>,
     /// Benchmark progress and results, in `?bench` mode only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bench: Option<crate::bench::BenchReport>,
@@ -164,6 +170,7 @@ impl StateReport {
             metrics: lab.runs()[0].metrics(),
             metrics_right: lab.run(Side::Right).map(|run| run.metrics()),
             compare: lab.comparing(),
+            notice: None,
             camera: None,
             bench: None,
         }

@@ -6,10 +6,19 @@ use serde::Serialize;
 use web_time::Instant;
 
 use crate::lab::Lab;
-use crate::settings::Settings;
+use crate::settings::{Scene, Settings};
+use crate::tank_settings::{Preset, TankSettings};
 
-/// Fish counts the benchmark visits.
-pub const FISH_COUNTS: [u32; 4] = [200, 2_000, 5_000, 20_000];
+/// Scenes and fish counts the benchmark visits: the wandering aquarium, and the boid
+/// layer with the group preset at the 500, 5,000 and 20,000 fish.
+pub const PHASES: [(Scene, u32); 6] = [
+    (Scene::Aquarium, 200),
+    (Scene::Aquarium, 5_000),
+    (Scene::Aquarium, 20_000),
+    (Scene::Boids, 500),
+    (Scene::Boids, 5_000),
+    (Scene::Boids, 20_000),
+];
 /// Real seconds of rendered frames measured per fish count.
 const FRAMES_PHASE_SECS: f64 = 3.0;
 /// Real seconds of pure simulation stepping measured per fish count.
@@ -18,6 +27,7 @@ const SIM_PHASE_SECS: f64 = 0.5;
 /// One row of results.
 #[derive(Clone, Debug, Serialize)]
 pub struct BenchRow {
+    pub scene: &'static str,
     pub fish: u32,
     /// Simulation steps per second, stepping only (no drawing).
     pub sim_steps_per_sec: f64,
@@ -65,7 +75,7 @@ impl Benchmark {
     }
 
     pub fn is_done(&self) -> bool {
-        self.next >= FISH_COUNTS.len()
+        self.next >= PHASES.len()
     }
 
     pub fn report(&self) -> BenchReport {
@@ -78,16 +88,22 @@ impl Benchmark {
     /// Called once per frame, before the lab advances. `cpu_secs` is the previous
     /// frame's CPU time, when eframe knows it.
     pub fn frame(&mut self, lab: &mut Lab, now_secs: f64, cpu_secs: Option<f32>) {
-        let Some(&fish) = FISH_COUNTS.get(self.next) else {
+        let Some(&(scene, fish)) = PHASES.get(self.next) else {
             return;
         };
         let Some(start) = self.phase_start_secs else {
             let mut settings = Settings {
                 paused: false,
                 speed: 1.0,
+                scene,
+                compare: false,
+                show_vision: false,
                 ..lab.settings().clone()
             };
-            settings.left.fish_count = fish;
+            settings.left = TankSettings {
+                fish_count: fish,
+                ..TankSettings::with_preset(Preset::Group)
+            };
             lab.apply_settings(settings);
             self.sim_steps_per_sec = measure_steps_per_sec(lab);
             self.phase_start_secs = Some(now_secs);
@@ -101,6 +117,7 @@ impl Benchmark {
         if elapsed >= FRAMES_PHASE_SECS {
             let frames = f64::from(self.frames.max(1));
             let row = BenchRow {
+                scene: scene.name(),
                 fish,
                 sim_steps_per_sec: self.sim_steps_per_sec,
                 fish_steps_per_sec: self.sim_steps_per_sec * f64::from(fish),
@@ -108,7 +125,8 @@ impl Benchmark {
                 cpu_frame_ms: self.cpu_secs * 1000.0 / frames,
             };
             log::info!(
-                "bench: {:>6} fish | {:>9.0} steps/s | {:>12.0} fish-steps/s | frame {:>6.2} ms | cpu {:>6.2} ms",
+                "bench: {:>8} {:>6} fish | {:>9.0} steps/s | {:>12.0} fish-steps/s | frame {:>6.2} ms | cpu {:>6.2} ms",
+                row.scene,
                 row.fish,
                 row.sim_steps_per_sec,
                 row.fish_steps_per_sec,
@@ -119,9 +137,7 @@ impl Benchmark {
             self.next += 1;
             self.phase_start_secs = None;
             if self.is_done() {
-                let mut settings = lab.settings().clone();
-                settings.left.fish_count = Settings::default().left.fish_count;
-                lab.apply_settings(settings);
+                lab.apply_settings(Settings::default());
             }
         }
     }
@@ -154,8 +170,12 @@ mod tests {
         let report = bench.report();
         assert!(report.done);
         assert_eq!(
-            report.rows.iter().map(|r| r.fish).collect::<Vec<_>>(),
-            FISH_COUNTS.to_vec()
+            report
+                .rows
+                .iter()
+                .map(|r| (r.scene, r.fish))
+                .collect::<Vec<_>>(),
+            PHASES.map(|(scene, fish)| (scene.name(), fish)).to_vec()
         );
         assert!(
             report

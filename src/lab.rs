@@ -68,7 +68,7 @@ impl Run {
             self.snapshot_positions();
         }
         self.world.step();
-        if self.world.steps() % SAMPLE_EVERY_STEPS == 0 {
+        if self.world.steps().is_multiple_of(SAMPLE_EVERY_STEPS) {
             self.sample_metrics();
         }
     }

@@ -16,8 +16,8 @@ pub mod metrics_history;
 pub mod render;
 pub mod settings;
 pub mod share_link;
-pub mod tank_settings;
 pub mod sim;
+pub mod tank_settings;
 pub mod ui;
 
 #[cfg(target_arch = "wasm32")]

@@ -183,7 +183,10 @@ mod tests {
         }
         let first = history.samples().next().unwrap().time_secs;
         let last = history.latest().unwrap().time_secs;
-        assert!((last - first - HISTORY_SECS).abs() < 0.26, "{first}..{last}");
+        assert!(
+            (last - first - HISTORY_SECS).abs() < 0.26,
+            "{first}..{last}"
+        );
     }
 
     #[test]

@@ -358,7 +358,10 @@ mod tests {
             err.to_string().contains("unknown setting 'fishcount'"),
             "{err}"
         );
-        assert!(err.to_string().contains("left"), "lists the known keys: {err}");
+        assert!(
+            err.to_string().contains("left"),
+            "lists the known keys: {err}"
+        );
         assert_eq!(settings, Settings::default());
         let err = settings
             .apply_patch(&json!({"left": {"cohesio": 5}}))
@@ -375,7 +378,10 @@ mod tests {
             (json!({"left": {"fish_count": 20_001}}), "left.fish_count"),
             (json!({"seed": 1u64 << 40}), "seed"),
             (json!({"right": {"alignment": 100.5}}), "right.alignment"),
-            (json!({"right": {"vision_angle_deg": -1}}), "right.vision_angle_deg"),
+            (
+                json!({"right": {"vision_angle_deg": -1}}),
+                "right.vision_angle_deg",
+            ),
             (json!({"left": {"sharks": 99}}), "left.sharks"),
         ] {
             let mut settings = Settings::default();

@@ -151,7 +151,10 @@ mod tests {
             Err(ShareLinkError::NotDeflate | ShareLinkError::NotBase64)
         ));
         let not_json = URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(b"{]", 6));
-        assert_eq!(decode(&format!("v1.{not_json}")), Err(ShareLinkError::NotJson));
+        assert_eq!(
+            decode(&format!("v1.{not_json}")),
+            Err(ShareLinkError::NotJson)
+        );
         let too_fast = URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(
             br#"{"speed": 1000}"#,
             6,
@@ -167,12 +170,13 @@ mod tests {
     #[test]
     fn a_zip_bomb_is_refused() {
         let huge = format!("{{\"seed\": 1{}}}", " ".repeat(10 * MAX_JSON_BYTES));
-        let packed = URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(
-            huge.as_bytes(),
-            9,
-        ));
+        let packed =
+            URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(huge.as_bytes(), 9));
         assert!(packed.len() < MAX_LINK_CHARS);
-        assert_eq!(decode(&format!("v1.{packed}")), Err(ShareLinkError::NotDeflate));
+        assert_eq!(
+            decode(&format!("v1.{packed}")),
+            Err(ShareLinkError::NotDeflate)
+        );
     }
 
     #[test]

@@ -353,7 +353,10 @@ fn validate_obstacle(obstacle: &Obstacle, tank: &Tank) -> Result<(), String> {
     if !(0.2..=1.5).contains(&radius_m) {
         return Err(format!("radius {radius_m} m: choose from 0.2 to 1.5 m"));
     }
-    if !tank.contains(glam::Vec3::new(center_m.x, tank.min_m.y, center_m.z), radius_m) {
+    if !tank.contains(
+        glam::Vec3::new(center_m.x, tank.min_m.y, center_m.z),
+        radius_m,
+    ) {
         return Err("does not stand inside the tank".to_owned());
     }
     Ok(())
@@ -415,7 +418,11 @@ mod tests {
         let mut blended = paper.clone();
         blended.mode = ControlMode::Blended;
         blended.settle(&paper);
-        assert_eq!(blended.preset, Preset::Custom, "the paper preset is a lottery");
+        assert_eq!(
+            blended.preset,
+            Preset::Custom,
+            "the paper preset is a lottery"
+        );
     }
 
     #[test]

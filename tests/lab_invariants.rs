@@ -8,7 +8,20 @@ use shoal::lab::Lab;
 use shoal::settings::Settings;
 
 fn assert_sound(lab: &Lab) {
-    let world = lab.world();
+    for run in lab.runs() {
+        assert_world_sound(run.world());
+        let metrics = run.metrics();
+        assert!(
+            metrics.polarization.is_finite()
+                && metrics.milling.is_finite()
+                && metrics.nnd_body_lengths.is_finite()
+                && metrics.mean_speed.is_finite(),
+            "{metrics:?}"
+        );
+    }
+}
+
+fn assert_world_sound(world: &shoal::sim::World) {
     for (i, fish) in world.fish().iter().enumerate() {
         assert!(
             fish.position_m.is_finite() && fish.velocity_m_per_s.is_finite(),
@@ -31,18 +44,20 @@ fn assert_sound(lab: &Lab) {
 fn a_scripted_lesson_is_reproducible_to_the_bit() {
     let lesson = |lab: &mut Lab| {
         for command in [
-            Command::Set(json!({"fish_count": 300, "speed": 4})),
+            Command::Set(json!({"left": {"fish_count": 300}, "speed": 4})),
             Command::Step(600),
-            Command::Set(json!({"fish_count": 50})),
+            Command::Set(json!({"scene": "boids", "compare": true, "right": {"fish_count": 50}})),
+            Command::Step(300),
+            Command::Set(json!({"left": {"mode": "monte_carlo", "cohesion": 70}})),
             Command::Step(300),
             Command::Reset(Some(9)),
             Command::Step(450),
         ] {
             command.execute(lab).unwrap();
         }
-        lab.world()
-            .fish()
+        lab.runs()
             .iter()
+            .flat_map(|run| run.world().fish().iter())
             .map(|f| (f.position_m, f.velocity_m_per_s))
             .collect::<Vec<_>>()
     };
@@ -53,13 +68,21 @@ fn a_scripted_lesson_is_reproducible_to_the_bit() {
 
 #[test]
 fn fish_stay_in_the_tank_and_out_of_rocks_at_every_setting() {
-    for (fish_count, speed, seed) in [(1, 0.25, 0), (200, 1.0, 1), (2_000, 8.0, 4_294_967_295)] {
-        let mut lab = Lab::new(Settings {
-            fish_count,
-            speed,
-            seed,
-            ..Settings::default()
-        });
+    for (fish_count, speed, seed, scene) in [
+        (1, 0.25, 0u64, "aquarium"),
+        (200, 1.0, 1, "aquarium"),
+        (2_000, 8.0, 4_294_967_295, "aquarium"),
+        (1, 0.25, 0, "boids"),
+        (300, 2.0, 3, "boids"),
+        (2_000, 8.0, 4_294_967_295, "boids"),
+    ] {
+        let mut lab = Lab::new(Settings::default());
+        Command::Set(json!({
+            "speed": speed, "seed": seed, "scene": scene, "compare": scene == "boids",
+            "left": {"fish_count": fish_count}, "right": {"fish_count": fish_count},
+        }))
+        .execute(&mut lab)
+        .unwrap();
         // Frames of very different lengths, as a struggling machine delivers them.
         for frame in 0..300 {
             let frame_secs = [0.001, 0.016, 0.05, 0.3, 2.0][frame % 5];
@@ -77,10 +100,48 @@ fn fish_stay_in_the_tank_and_out_of_rocks_at_every_setting() {
 
 #[test]
 fn twenty_thousand_fish_step_without_nan() {
-    let mut lab = Lab::new(Settings {
-        fish_count: 20_000,
-        ..Settings::default()
-    });
-    lab.step(30);
-    assert_sound(&lab);
+    for scene in ["aquarium", "boids"] {
+        let mut lab = Lab::new(Settings::default());
+        Command::Set(json!({"scene": scene, "left": {"fish_count": 20_000}}))
+            .execute(&mut lab)
+            .unwrap();
+        lab.step(30);
+        assert_sound(&lab);
+    }
+}
+
+#[test]
+fn compare_mode_starts_both_tanks_from_the_same_fish_and_they_part_ways() {
+    let mut lab = Lab::new(Settings::default());
+    Command::Set(json!({"scene": "boids", "compare": true}))
+        .execute(&mut lab)
+        .unwrap();
+    let [left, right] = lab.runs() else {
+        panic!("compare mode shows two tanks");
+    };
+    assert_eq!(
+        left.world().fish(),
+        right.world().fish(),
+        "same seed, same starting positions"
+    );
+    Command::Step(1200).execute(&mut lab).unwrap();
+    let left = lab.runs()[0].metrics();
+    let right = lab.runs()[1].metrics();
+    assert_eq!(left.time_secs, right.time_secs, "one clock for both tanks");
+    assert!(
+        right.polarization > left.polarization + 0.2,
+        "the group tank (right) lines up more than the solitary one: {} vs {}",
+        right.polarization,
+        left.polarization
+    );
+    let state = serde_json::to_value(StateReport::new(&lab, "native", 0.0)).unwrap();
+    assert!(state["metrics_right"]["polarization"].is_number());
+    assert_eq!(state["compare"], true);
+    // Switching compare off keeps one tank.
+    Command::Set(json!({"compare": false}))
+        .execute(&mut lab)
+        .unwrap();
+    assert_eq!(lab.runs().len(), 1);
+    let csv = lab.metrics_csv();
+    assert!(csv.starts_with("tank,time_s,polarization"));
 }

@@ -7,7 +7,7 @@ use super::fish_palette::livery;
 use super::mesh::{self, Mesh};
 use super::orbit_camera::OrbitCamera;
 use super::scene_renderer::{FishInstance, SceneCallback, SceneUniforms, StaticScene};
-use crate::lab::Lab;
+use crate::lab::Run;
 
 /// Builds a [`SceneCallback`] each frame, reusing allocations.
 #[derive(Default)]
@@ -17,18 +17,21 @@ pub struct FrameBuilder {
 }
 
 impl FrameBuilder {
-    /// The frame for a 3D view of `size_px` physical pixels at animation time
-    /// `time_secs` (wall clock: the water keeps shimmering while paused).
+    /// The frame for a 3D view of `run` of `size_px` physical pixels at animation
+    /// time `time_secs`; fish are drawn `alpha` of the way between their last two
+    /// simulated positions.
     pub fn build(
         &mut self,
-        lab: &Lab,
+        run: &Run,
+        alpha: f32,
         camera: &OrbitCamera,
         size_px: [u32; 2],
         time_secs: f32,
+        _view_id: u32,
     ) -> SceneCallback {
-        let world = lab.world();
+        let world = run.world();
         let tank = world.tank();
-        let generation = lab.world_generation();
+        let generation = run.generation();
         if self.statics.as_ref().map(|s| s.generation) != Some(generation) {
             let mut scene = Mesh::default();
             scene.append(&mesh::sand_floor(tank));
@@ -45,7 +48,7 @@ impl FrameBuilder {
         instances.extend(world.fish().iter().enumerate().map(|(i, fish)| {
             let look = livery(fish.hue);
             FishInstance {
-                position_m: lab.drawn_position_m(i).to_array(),
+                position_m: run.drawn_position_m(i, alpha).to_array(),
                 body_length_m: fish.body_length_m,
                 forward: fish.heading().to_array(),
                 tail_phase_rad: fish.tail_phase_rad,
@@ -75,6 +78,7 @@ impl FrameBuilder {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::lab::Lab;
     use crate::settings::Settings;
 
     #[test]
@@ -86,7 +90,7 @@ mod tests {
             16.0 / 9.0,
         );
         let mut builder = FrameBuilder::default();
-        let first = builder.build(&lab, &camera, [800, 450], 0.0);
+        let first = builder.build(&lab.runs()[0], 1.0, &camera, [800, 450], 0.0, 0);
         assert_eq!(first.fish.len(), lab.world().fish().len());
         assert!(
             first
@@ -96,10 +100,10 @@ mod tests {
         );
         assert!(!first.statics.mesh.indices.is_empty());
         lab.step(10);
-        let second = builder.build(&lab, &camera, [800, 450], 0.1);
+        let second = builder.build(&lab.runs()[0], 1.0, &camera, [800, 450], 0.1, 0);
         assert!(Arc::ptr_eq(&first.statics.mesh, &second.statics.mesh));
         lab.reset(Some(5));
-        let third = builder.build(&lab, &camera, [800, 450], 0.2);
+        let third = builder.build(&lab.runs()[0], 1.0, &camera, [800, 450], 0.2, 0);
         assert_ne!(third.statics.generation, second.statics.generation);
     }
 }

@@ -93,6 +93,27 @@ impl OrbitCamera {
         proj * view
     }
 
+    /// Where `p_m` appears in a viewport of `aspect`, as normalised coordinates
+    /// (x right, y down, both in [0, 1] when on screen); `None` behind the camera.
+    pub fn project(&self, p_m: Vec3, aspect: f32) -> Option<glam::Vec2> {
+        let clip = self.world_to_clip(aspect) * p_m.extend(1.0);
+        if clip.w <= 1e-4 {
+            return None;
+        }
+        let ndc = clip.truncate() / clip.w;
+        Some(glam::Vec2::new(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5))
+    }
+
+    /// The ray from the eye through the viewport point `uv` (normalised as in
+    /// [`Self::project`]): origin and unit direction.
+    pub fn ray(&self, uv: glam::Vec2, aspect: f32) -> (Vec3, Vec3) {
+        let clip_to_world = self.world_to_clip(aspect).inverse();
+        let ndc = glam::Vec2::new(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0);
+        let far = clip_to_world.project_point3(ndc.extend(1.0));
+        let eye = self.eye_m();
+        (eye, (far - eye).normalize_or(-Vec3::Z))
+    }
+
     /// Rotates by a drag of `(dx, dy)` points.
     pub fn rotate(&mut self, dx_points: f32, dy_points: f32) {
         self.yaw_rad -= dx_points * 0.008;
@@ -122,6 +143,22 @@ impl OrbitCamera {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_ray_through_a_projected_point_passes_through_it() {
+        let camera = OrbitCamera::framing(vec3(-6.0, 0.0, -4.0), vec3(6.0, 4.5, 4.0), 1.5);
+        for p in [
+            vec3(0.0, 0.0, 0.0),
+            vec3(3.0, 1.0, -2.0),
+            vec3(-5.0, 4.0, 3.5),
+        ] {
+            let uv = camera.project(p, 1.5).unwrap();
+            let (origin, dir) = camera.ray(uv, 1.5);
+            let to_p = p - origin;
+            let miss = (to_p - dir * to_p.dot(dir)).length();
+            assert!(miss < 1e-3 * to_p.length(), "{p}: {miss}");
+        }
+    }
 
     #[test]
     fn the_default_view_sees_every_corner_of_the_tank() {

@@ -1,10 +1,73 @@
-//! The side panel: play/pause, single step, reset, speed, fish count, seed and view.
-//! Every control has hover help a 12-year-old understands.
+//! The side panel: scene, play/pause, single step, reset, speed, seed, the boid
+//! tanks' controls, obstacle tools, share and export, and the view. Every control has
+//! hover help a 12-year-old understands.
 
 use eframe::egui;
 
 use super::WidgetRects;
-use crate::settings::{FISH_COUNT_MAX, SEED_MAX, SPEED_MAX, SPEED_MIN, Settings};
+use super::tank_panel::tank_ui;
+use crate::settings::{FISH_COUNT_MAX, SEED_MAX, SPEED_MAX, SPEED_MIN, Scene, Settings, Side};
+
+/// What a click in the tank does.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum EditTool {
+    /// Clicks and drags turn the camera.
+    #[default]
+    Look,
+    /// A click on the sand puts a rock there.
+    AddRock,
+    /// Drag a rock to move it.
+    MoveRock,
+    /// A click on a rock removes it.
+    RemoveRock,
+}
+
+impl EditTool {
+    pub const ALL: [Self; 4] = [Self::Look, Self::AddRock, Self::MoveRock, Self::RemoveRock];
+
+    fn label(self) -> &'static str {
+        match self {
+            Self::Look => "Look",
+            Self::AddRock => "Add rock",
+            Self::MoveRock => "Move rock",
+            Self::RemoveRock => "Remove",
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            Self::Look => "tool_look",
+            Self::AddRock => "tool_add_rock",
+            Self::MoveRock => "tool_move_rock",
+            Self::RemoveRock => "tool_remove_rock",
+        }
+    }
+
+    fn help(self) -> &'static str {
+        match self {
+            Self::Look => "Drag to turn the tank, scroll to zoom.",
+            Self::AddRock => "Click on the sand to put a rock there.",
+            Self::MoveRock => "Drag a rock or pillar to a new place.",
+            Self::RemoveRock => "Click a rock, pillar or ledge to take it out.",
+        }
+    }
+}
+
+/// Panel state that is not a setting: which tank the controls edit, and the tool.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PanelState {
+    pub edit_side: Side,
+    pub tool: EditTool,
+}
+
+impl Default for PanelState {
+    fn default() -> Self {
+        Self {
+            edit_side: Side::Left,
+            tool: EditTool::Look,
+        }
+    }
+}
 
 /// One-off things the teacher asked for this frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -17,6 +80,12 @@ pub enum PanelAction {
     ResetView,
     /// Collapse the panel so the aquarium fills the screen.
     HidePanel,
+    /// Put the link to this exact setting on the clipboard.
+    CopyLink,
+    /// Download the metrics of the last minutes as a CSV file.
+    ExportCsv,
+    /// Bring back the rocks the seed placed in the tank being edited.
+    RestoreObstacles,
 }
 
 /// Draws the control panel, editing `settings` in place, and records where the
@@ -24,6 +93,7 @@ pub enum PanelAction {
 pub fn control_panel_ui(
     ui: &mut egui::Ui,
     settings: &mut Settings,
+    state: &mut PanelState,
     rects: &mut WidgetRects,
 ) -> Vec<PanelAction> {
     let mut actions = Vec::new();
@@ -39,6 +109,14 @@ pub fn control_panel_ui(
                 actions.push(PanelAction::HidePanel);
             }
         });
+    });
+    ui.horizontal(|ui| {
+        for scene in Scene::ALL {
+            let response = ui
+                .selectable_value(&mut settings.scene, scene, scene.label())
+                .on_hover_text(scene.description());
+            rects.insert(&format!("scene_{}", scene.name()), response.rect);
+        }
     });
     ui.label(egui::RichText::new(settings.scene.description()).weak());
     ui.separator();
@@ -91,17 +169,19 @@ pub fn control_panel_ui(
             rects.insert("speed", speed.rect);
             ui.end_row();
 
-            ui.label("Fish")
-                .on_hover_text("How many fish are in the tank");
-            let fish = ui
-                .add(
-                    egui::Slider::new(&mut settings.left.fish_count, 0..=FISH_COUNT_MAX)
-                        .logarithmic(true)
-                        .smallest_positive(1.0),
-                )
-                .on_hover_text("How many fish are in the tank");
-            rects.insert("fish_count", fish.rect);
-            ui.end_row();
+            if settings.scene == Scene::Aquarium {
+                ui.label("Fish")
+                    .on_hover_text("How many fish are in the tank");
+                let fish = ui
+                    .add(
+                        egui::Slider::new(&mut settings.left.fish_count, 0..=FISH_COUNT_MAX)
+                            .logarithmic(true)
+                            .smallest_positive(1.0),
+                    )
+                    .on_hover_text("How many fish are in the tank");
+                rects.insert("fish_count", fish.rect);
+                ui.end_row();
+            }
 
             ui.label("Seed").on_hover_text(
                 "The number that decides where everything starts. \
@@ -123,6 +203,30 @@ pub fn control_panel_ui(
             ui.end_row();
         });
 
+    if settings.scene == Scene::Boids {
+        boids_ui(ui, settings, state, rects, &mut actions);
+    }
+
+    ui.separator();
+    ui.label(egui::RichText::new("Share").strong());
+    ui.horizontal(|ui| {
+        let copy = ui.button("Copy link").on_hover_text(
+            "Copy a web link that opens Shoal with exactly these settings, \
+             to send to your class",
+        );
+        rects.insert("copy_link", copy.rect);
+        if copy.clicked() {
+            actions.push(PanelAction::CopyLink);
+        }
+        let csv = ui
+            .button("Download data (CSV)")
+            .on_hover_text("Save the numbers of the last minutes as a table for a spreadsheet");
+        rects.insert("export_csv", csv.rect);
+        if csv.clicked() {
+            actions.push(PanelAction::ExportCsv);
+        }
+    });
+
     ui.separator();
     ui.label(egui::RichText::new("View").strong());
     let reset_view = ui
@@ -140,6 +244,75 @@ pub fn control_panel_ui(
         .weak(),
     );
     actions
+}
+
+/// The boid scene's controls: compare, vision, which tank, its sliders and tools.
+fn boids_ui(
+    ui: &mut egui::Ui,
+    settings: &mut Settings,
+    state: &mut PanelState,
+    rects: &mut WidgetRects,
+    actions: &mut Vec<PanelAction>,
+) {
+    ui.separator();
+    ui.horizontal_wrapped(|ui| {
+        let compare = ui
+            .checkbox(&mut settings.compare, "Compare two tanks")
+            .on_hover_text(
+                "Show two tanks side by side with the same fish at the same start. \
+             Give them different urges and see how differently they behave.",
+            );
+        rects.insert("compare", compare.rect);
+        let vision = ui
+            .checkbox(&mut settings.show_vision, "Show vision")
+            .on_hover_text(
+                "Draw what each fish can see: its field of view and lines to the \
+                 neighbours it notices",
+            );
+        rects.insert("show_vision", vision.rect);
+    });
+    if !settings.compare {
+        state.edit_side = Side::Left;
+    } else {
+        ui.horizontal(|ui| {
+            ui.label("Edit:");
+            for side in Side::BOTH {
+                let label = match side {
+                    Side::Left => "Left tank",
+                    Side::Right => "Right tank",
+                };
+                let response = ui
+                    .selectable_value(&mut state.edit_side, side, label)
+                    .on_hover_text("Choose which tank the controls below change");
+                rects.insert(&format!("edit_{}", side.name()), response.rect);
+            }
+        });
+    }
+    ui.add_space(4.0);
+    tank_ui(ui, settings.tank_mut(state.edit_side), rects);
+
+    ui.add_space(4.0);
+    ui.label(egui::RichText::new("Rocks").strong())
+        .on_hover_text("Change the rocks in the tank with the mouse");
+    ui.horizontal_wrapped(|ui| {
+        for tool in EditTool::ALL {
+            let response = ui
+                .selectable_value(&mut state.tool, tool, tool.label())
+                .on_hover_text(tool.help());
+            rects.insert(tool.name(), response.rect);
+        }
+    });
+    ui.label(egui::RichText::new(state.tool.help()).small().weak());
+    let restore = ui
+        .add_enabled(
+            settings.tank(state.edit_side).obstacles.is_some(),
+            egui::Button::new("Restore the seed's rocks"),
+        )
+        .on_hover_text("Undo all rock changes in this tank");
+    rects.insert("restore_rocks", restore.rect);
+    if restore.clicked() {
+        actions.push(PanelAction::RestoreObstacles);
+    }
 }
 
 /// A new seed that looks random but is reproducible from the old one (SplitMix64).

@@ -2,11 +2,38 @@
 //! actions; they never touch the simulation directly.
 
 mod control_panel;
+mod metrics_panel;
 mod status_line;
+mod tank_panel;
 
-pub use control_panel::{PanelAction, control_panel_ui};
+pub use control_panel::{EditTool, PanelAction, PanelState, control_panel_ui};
+pub use metrics_panel::{metrics_panel_ui, side_color};
 pub use status_line::status_line_ui;
+pub use tank_panel::mode_label;
 
 /// Where the named widgets were drawn this frame, in egui points (CSS pixels in the
 /// browser). `shoal.widgets()` reports them so browser tests can click real widgets.
-pub type WidgetRects = std::collections::BTreeMap<&'static str, eframe::egui::Rect>;
+#[derive(Clone, Debug, Default)]
+pub struct WidgetRects(std::collections::BTreeMap<String, eframe::egui::Rect>);
+
+impl WidgetRects {
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    pub fn insert(&mut self, name: &str, rect: eframe::egui::Rect) {
+        self.0.insert(name.to_owned(), rect);
+    }
+
+    pub fn clear(&mut self) {
+        self.0.clear();
+    }
+
+    pub fn get(&self, name: &str) -> Option<&eframe::egui::Rect> {
+        self.0.get(name)
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = (&String, &eframe::egui::Rect)> {
+        self.0.iter()
+    }
+}

@@ -15,8 +15,16 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 9] = [
+    let methods: [(&str, Box<Method>); 11] = [
         ("state", Box::new(|app, _| to_json(&app.state_report()))),
+        (
+            "share_link",
+            Box::new(|app, _| Ok(serde_json::Value::String(app.share_link()))),
+        ),
+        (
+            "metrics_csv",
+            Box::new(|app, _| Ok(serde_json::Value::String(app.metrics_csv()))),
+        ),
         ("settings", Box::new(|app, _| to_json(app.state_settings()))),
         ("widgets", Box::new(|app, _| Ok(widgets_json(app)))),
         (

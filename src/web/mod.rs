@@ -7,6 +7,8 @@ mod page;
 use crate::ShoalApp;
 use crate::settings::Settings;
 
+pub use page::download_text;
+
 /// Starts Shoal in the page. Called once from `main`.
 pub async fn start() {
     if eframe::WebLogger::init(log::LevelFilter::Info).is_err() {
@@ -24,12 +26,31 @@ pub async fn start() {
         return;
     };
     let bench = page::query_has("bench");
+    // A share link's settings, or the defaults and a notice saying why not.
+    let (settings, link_error) = match crate::share_link::decode(&page::fragment()) {
+        Ok(settings) => (settings.unwrap_or_default(), None),
+        Err(err) => (
+            Settings::default(),
+            Some(format!(
+                "This link could not be opened: {err}. Shoal started with its usual settings instead."
+            )),
+        ),
+    };
+    if let Some(message) = &link_error {
+        log::warn!("{message}");
+    }
     let started = runner
         .start(
             canvas,
             eframe::WebOptions::default(),
             Box::new(move |cc| {
-                let mut app = ShoalApp::new(cc, Settings::default())?;
+                let mut app = ShoalApp::new(cc, settings)?;
+                if let Some(url) = page::url_without_fragment() {
+                    app.set_page_url(url);
+                }
+                if let Some(message) = link_error {
+                    app.show_error_notice(message);
+                }
                 if bench {
                     app.start_benchmark();
                 }

@@ -109,14 +109,14 @@ for (const tier of ["webgl2", "webgpu"]) {
     });
 
     test("set() applies settings by name and refuses bad input without changing anything", async () => {
-      await page.evaluate(() => window.shoal.set({ fish_count: 120 }));
+      await page.evaluate(() => window.shoal.set({ left: { fish_count: 120 } }));
       assert.equal((await state(page)).fish_count, 120);
       const before = await page.evaluate(() => window.shoal.settings());
       for (const [patch, expected] of [
         [{ fishcount: 5 }, "unknown setting 'fishcount'"],
         [{ speed: 100 }, "out of range"],
         [{ paused: "yes" }, "setting 'paused'"],
-        [{ fish_count: 50, seed: -1 }, "setting 'seed'"],
+        [{ left: { fish_count: 50 }, seed: -1 }, "setting 'seed'"],
       ]) {
         const message = await page.evaluate((p) => {
           try {
@@ -129,7 +129,7 @@ for (const tier of ["webgl2", "webgpu"]) {
         assert.ok(message && message.includes(expected), `${JSON.stringify(patch)} → ${message}`);
       }
       assert.deepEqual(await page.evaluate(() => window.shoal.settings()), before);
-      await page.evaluate(() => window.shoal.set({ fish_count: 200 }));
+      await page.evaluate(() => window.shoal.set({ left: { fish_count: 200 } }));
     });
 
     test("step(n) runs exactly n steps while paused and reset(seed) restarts", async () => {

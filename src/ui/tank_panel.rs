@@ -1,0 +1,246 @@
+//! The controls of one boid tank: preset, control mode, the five force sliders on the
+//! papers' 0–100 scale, perception, and the animals in it. Every control has hover
+//! help a 12-year-old understands.
+
+use eframe::egui;
+
+use super::WidgetRects;
+use crate::sim::control_mode::ControlMode;
+use crate::tank_settings::{
+    FISH_COUNT_MAX, MAX_FORCE_RANGE_M_PER_S2, MAX_SPEED_RANGE_M_PER_S, Preset, SHARKS_MAX,
+    STINGRAYS_MAX, TankSettings, VISION_ANGLE_RANGE_DEG, VISION_DISTANCE_RANGE_M, WEIGHT_MAX,
+};
+
+/// The name on a mode's radio button.
+pub fn mode_label(mode: ControlMode) -> &'static str {
+    match mode {
+        ControlMode::Blended => "Blended (direct)",
+        ControlMode::Classic => "Classic",
+        ControlMode::DirectAlternate => "Direct alternate",
+        ControlMode::MonteCarlo => "Monte Carlo",
+    }
+}
+
+/// The automation name of a mode (`monte_carlo`), for widget names.
+fn mode_name(mode: ControlMode) -> String {
+    serde_json::to_value(mode)
+        .ok()
+        .and_then(|v| v.as_str().map(str::to_owned))
+        .unwrap_or_default()
+}
+
+fn preset_name(preset: Preset) -> String {
+    serde_json::to_value(preset)
+        .ok()
+        .and_then(|v| v.as_str().map(str::to_owned))
+        .unwrap_or_default()
+}
+
+/// The label and hover help of each force slider, in `weights_mut` order.
+const FORCE_HELP: [(&str, &str); 5] = [
+    (
+        "Containment",
+        "How strongly a fish turns away from the glass so it stays in the tank.",
+    ),
+    (
+        "Alignment",
+        "How much a fish copies the direction its neighbours are swimming.",
+    ),
+    (
+        "Cohesion",
+        "How much a fish swims towards the middle of the neighbours it can see.",
+    ),
+    (
+        "Separation",
+        "How much a fish keeps its own space and moves away from fish that come too close.",
+    ),
+    (
+        "Avoidance",
+        "How strongly a fish swerves around rocks, pillars and stingrays.",
+    ),
+];
+
+/// Draws the controls of `tank`. Widget names get no prefix: only one tank's
+/// controls are on screen at a time.
+pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRects) {
+    ui.label(egui::RichText::new("Preset").strong())
+        .on_hover_text("Ready-made mixes of the five urges, from the paper's Table 1");
+    ui.horizontal_wrapped(|ui| {
+        for preset in Preset::ALL {
+            let response = ui
+                .selectable_value(&mut tank.preset, preset, preset.label())
+                .on_hover_text(preset.help());
+            rects.insert(&format!("preset_{}", preset_name(preset)), response.rect);
+        }
+    });
+
+    ui.add_space(4.0);
+    ui.label(egui::RichText::new("How the urges combine").strong())
+        .on_hover_text("The control mode: how a fish turns five urges into one move");
+    for mode in ControlMode::ALL {
+        let response = ui
+            .radio_value(&mut tank.mode, mode, mode_label(mode))
+            .on_hover_text(mode.explanation());
+        rects.insert(&format!("mode_{}", mode_name(mode)), response.rect);
+    }
+    ui.label(egui::RichText::new(tank.mode.explanation()).small().weak());
+
+    ui.add_space(4.0);
+    ui.label(egui::RichText::new("Urges (0–100)").strong())
+        .on_hover_text("How much each urge counts, on the paper's 0 to 100 scale");
+    egui::Grid::new("force_sliders")
+        .num_columns(2)
+        .spacing([8.0, 4.0])
+        .show(ui, |ui| {
+            for ((name, weight), (label, help)) in tank.weights_mut().into_iter().zip(FORCE_HELP) {
+                ui.label(label).on_hover_text(help);
+                let response = ui
+                    .add(egui::Slider::new(weight, 0.0..=WEIGHT_MAX).max_decimals(0))
+                    .on_hover_text(help);
+                rects.insert(&format!("weight_{name}"), response.rect);
+                ui.end_row();
+            }
+        });
+
+    ui.add_space(4.0);
+    ui.label(egui::RichText::new("Senses and body").strong());
+    egui::Grid::new("perception_sliders")
+        .num_columns(2)
+        .spacing([8.0, 4.0])
+        .show(ui, |ui| {
+            let mut slider = |ui: &mut egui::Ui,
+                              label: &str,
+                              name: &str,
+                              value: &mut f32,
+                              (lo, hi): (f32, f32),
+                              suffix: &str,
+                              help: &str| {
+                ui.label(label).on_hover_text(help);
+                let response = ui
+                    .add(
+                        egui::Slider::new(value, lo..=hi)
+                            .suffix(suffix)
+                            .max_decimals(1),
+                    )
+                    .on_hover_text(help);
+                rects.insert(name, response.rect);
+                ui.end_row();
+            };
+            slider(
+                ui,
+                "Vision distance",
+                "vision_distance_m",
+                &mut tank.vision_distance_m,
+                VISION_DISTANCE_RANGE_M,
+                " m",
+                "How far a fish can see its neighbours, in metres.",
+            );
+            slider(
+                ui,
+                "Vision angle",
+                "vision_angle_deg",
+                &mut tank.vision_angle_deg,
+                VISION_ANGLE_RANGE_DEG,
+                "°",
+                "How wide a fish sees around itself. At 360° it sees behind too; \
+                 at 300° there is a blind spot behind its tail.",
+            );
+            slider(
+                ui,
+                "Top speed",
+                "max_speed_m_per_s",
+                &mut tank.max_speed_m_per_s,
+                MAX_SPEED_RANGE_M_PER_S,
+                " m/s",
+                "The fastest a fish can swim, in metres per second.",
+            );
+            slider(
+                ui,
+                "Turning power",
+                "max_force_m_per_s2",
+                &mut tank.max_force_m_per_s2,
+                MAX_FORCE_RANGE_M_PER_S2,
+                " m/s²",
+                "How hard a fish can turn or speed up at once (the maximum force). \
+                 Small values make slow, lazy turns.",
+            );
+        });
+
+    ui.add_space(4.0);
+    ui.label(egui::RichText::new("Animals").strong());
+    egui::Grid::new("animal_counts")
+        .num_columns(2)
+        .spacing([8.0, 4.0])
+        .show(ui, |ui| {
+            count_row(
+                ui,
+                rects,
+                "Fish",
+                "fish",
+                &mut tank.fish_count,
+                FISH_COUNT_MAX,
+                10,
+                "How many fish (the prey) are in the tank.",
+            );
+            count_row(
+                ui,
+                rects,
+                "Sharks",
+                "sharks",
+                &mut tank.sharks,
+                SHARKS_MAX,
+                1,
+                "Hunters. A shark chases a fish; fish that see it flee and bunch together.",
+            );
+            count_row(
+                ui,
+                rects,
+                "Stingrays",
+                "stingrays",
+                &mut tank.stingrays,
+                STINGRAYS_MAX,
+                1,
+                "Flat fish that glide over the sand. Other fish swim around them like rocks.",
+            );
+        });
+}
+
+/// A label, − and + buttons and a number for an animal count.
+#[expect(clippy::too_many_arguments)]
+fn count_row(
+    ui: &mut egui::Ui,
+    rects: &mut WidgetRects,
+    label: &str,
+    name: &str,
+    count: &mut u32,
+    max: u32,
+    step: u32,
+    help: &str,
+) {
+    ui.label(label).on_hover_text(help);
+    ui.horizontal(|ui| {
+        let minus = ui
+            .add_enabled(*count > 0, egui::Button::new(" − "))
+            .on_hover_text(format!("Take {step} away"));
+        rects.insert(&format!("{name}_minus"), minus.rect);
+        if minus.clicked() {
+            *count = count.saturating_sub(step);
+        }
+        let value = ui
+            .add(
+                egui::DragValue::new(count)
+                    .range(0..=max)
+                    .speed(f64::from(step).max(1.0) * 0.2),
+            )
+            .on_hover_text(help);
+        rects.insert(&format!("{name}_count"), value.rect);
+        let plus = ui
+            .add_enabled(*count < max, egui::Button::new(" + "))
+            .on_hover_text(format!("Add {step}"));
+        rects.insert(&format!("{name}_plus"), plus.rect);
+        if plus.clicked() {
+            *count = (*count + step).min(max);
+        }
+    });
+    ui.end_row();
+}

@@ -1,0 +1,231 @@
+// The schooling lab (issue 3) as a teacher uses it: real clicks and drags on the
+// panel, presets and control modes, compare mode, share links, the CSV download and
+// the rock tools. WebGL2 (SwiftShader); the WebGPU path is covered by aquarium tests.
+import { test, describe, before, after } from "node:test";
+import assert from "node:assert/strict";
+import {
+  serveDist,
+  launch,
+  openShoal,
+  decode,
+  pixelStats,
+  fishPixels,
+  saveArtifact,
+  clickWidget,
+} from "./harness.mjs";
+
+const state = (page) => page.evaluate(() => window.shoal.state());
+const settings = (page) => page.evaluate(() => window.shoal.settings());
+const widget = (page, name) => page.evaluate((n) => window.shoal.widgets()[n], name);
+
+/** Waits until a named widget is on screen (the panel may still be laying out). */
+async function waitForWidget(page, name) {
+  await page.waitForFunction((n) => !!window.shoal.widgets()[n], name, { timeout: 30_000 });
+  return widget(page, name);
+}
+
+/** Drags the handle of slider `name` to `fraction` of its width, as a person would. */
+async function dragSlider(page, name, fraction) {
+  const r = await waitForWidget(page, name);
+  // egui puts the slider rail on the left part of the widget, the number box right.
+  const railWidth = r.width - 60;
+  const y = r.y + r.height / 2;
+  await page.mouse.move(r.x + 8, y);
+  await page.mouse.down();
+  await page.mouse.move(r.x + 4 + railWidth * fraction, y, { steps: 8 });
+  await page.mouse.up();
+}
+
+/** Polarization after `steps` steps from a fresh start on seed 1. */
+async function polarizationAfter(page, steps) {
+  await page.evaluate((n) => {
+    window.shoal.reset(1);
+    window.shoal.step(n);
+  }, steps);
+  return (await state(page)).metrics.polarization;
+}
+
+describe("schooling lab", () => {
+  let server, browser, page, errors;
+
+  before(async () => {
+    server = await serveDist();
+    browser = await launch("webgl2");
+    const context = await browser.newContext({ viewport: { width: 1366, height: 1000 } });
+    await context.grantPermissions(["clipboard-read", "clipboard-write"], { origin: server.url });
+    ({ page, errors } = await openShoal(context, server.url));
+  });
+
+  after(async () => {
+    await browser?.close();
+    await server?.close();
+  });
+
+  test("clicking the scene button opens the schooling lab with its controls and metrics", async () => {
+    await clickWidget(page, "scene_boids");
+    await page.waitForFunction(() => window.shoal.state().scene === "boids", null, { timeout: 30_000 });
+    await waitForWidget(page, "weight_cohesion");
+    await waitForWidget(page, "plot_0");
+    const s = await state(page);
+    for (const key of ["polarization", "milling", "nnd_body_lengths", "groups", "mean_speed", "force_frequencies"]) {
+      assert.ok(key in s.metrics, `metrics.${key}`);
+    }
+    assert.equal((await settings(page)).left.preset, "individual");
+  });
+
+  test("dragging the alignment and cohesion sliders with the mouse lines the fish up", async () => {
+    await page.evaluate(() => window.shoal.pause());
+    const solitary = await polarizationAfter(page, 2400);
+    await dragSlider(page, "weight_alignment", 1.0);
+    await dragSlider(page, "weight_cohesion", 1.0);
+    await dragSlider(page, "weight_separation", 0.2);
+    const s = await settings(page);
+    assert.ok(s.left.alignment > 90, `alignment ${s.left.alignment}`);
+    assert.ok(s.left.cohesion > 90, `cohesion ${s.left.cohesion}`);
+    assert.equal(s.left.preset, "custom");
+    const social = await polarizationAfter(page, 2400);
+    assert.ok(social > solitary + 0.2, `polarization ${solitary} → ${social}`);
+  });
+
+  test("preset and control-mode buttons switch what the fish do", async () => {
+    await clickWidget(page, "preset_group");
+    await page.waitForFunction(() => window.shoal.settings().left.preset === "group", null, { timeout: 30_000 });
+    const group = await settings(page);
+    assert.deepEqual(
+      [group.left.containment, group.left.alignment, group.left.cohesion, group.left.separation, group.left.avoidance],
+      [26, 26, 29, 26, 98],
+      "Table 1, group"
+    );
+    const grouped = await polarizationAfter(page, 3600);
+    assert.ok(grouped > 0.8, `group preset polarises: ${grouped}`);
+
+    await clickWidget(page, "mode_monte_carlo");
+    await page.waitForFunction(() => window.shoal.settings().left.mode === "monte_carlo", null, { timeout: 30_000 });
+    await polarizationAfter(page, 600);
+    const shares = (await state(page)).metrics.force_frequencies;
+    const total = 26 + 26 + 29 + 26 + 98;
+    for (const [name, w] of Object.entries({ containment: 26, alignment: 26, cohesion: 29, separation: 26, avoidance: 98 })) {
+      assert.ok(Math.abs(shares[name] - w / total) < 0.03, `${name}: ${shares[name]} vs ${w / total}`);
+    }
+    await clickWidget(page, "preset_monte_carlo_paper");
+    await page.waitForFunction(() => window.shoal.settings().left.preset === "monte_carlo_paper", null, {
+      timeout: 30_000,
+    });
+    await clickWidget(page, "mode_blended");
+    await page.waitForFunction(() => window.shoal.settings().left.mode === "blended", null, { timeout: 30_000 });
+    assert.equal((await settings(page)).left.preset, "custom");
+  });
+
+  test("compare mode shows two tanks, each with its own metrics", async () => {
+    await page.evaluate(() => window.shoal.set({ left: { preset: "individual", mode: "blended" } }));
+    await clickWidget(page, "compare");
+    await page.waitForFunction(() => window.shoal.state().compare && window.shoal.widgets().view_right, null, {
+      timeout: 30_000,
+    });
+    await page.evaluate(() => window.shoal.step(3600));
+    const s = await state(page);
+    assert.ok(s.metrics_right, "the right tank has metrics");
+    assert.ok(
+      s.metrics_right.polarization > s.metrics.polarization + 0.3,
+      `group (right) ${s.metrics_right.polarization} vs individual (left) ${s.metrics.polarization}`
+    );
+    await page.evaluate(() => window.shoal.play());
+    const stepsBefore = (await state(page)).steps;
+    await page.waitForFunction((n) => window.shoal.state().steps > n + 20, stepsBefore, { timeout: 60_000 });
+    const left = await widget(page, "view_left");
+    const right = await widget(page, "view_right");
+    const shot = await page.screenshot();
+    saveArtifact("compare-webgl2.png", shot);
+    const png = decode(shot);
+    for (const [name, r] of [["left", left], ["right", right]]) {
+      const stats = pixelStats(png, r);
+      assert.ok(stats.std > 10 && stats.distinctColours > 50, `${name} tank is drawn: ${JSON.stringify(stats)}`);
+      assert.ok(fishPixels(png, r).size > 100, `${name} tank shows fish`);
+    }
+    await page.evaluate(() => window.shoal.pause());
+  });
+
+  test("a copied link reopens exactly the same setting, and a damaged one falls back with a notice", async () => {
+    await page.evaluate(() =>
+      window.shoal.set({ seed: 77, right: { cohesion: 55, sharks: 1 }, left: { vision_angle_deg: 270 } })
+    );
+    await clickWidget(page, "copy_link");
+    await page.waitForFunction(() => /copied/i.test(window.shoal.state().notice || ""), null, { timeout: 30_000 });
+    const link = await page.evaluate(() => navigator.clipboard.readText());
+    assert.equal(link, await page.evaluate(() => window.shoal.share_link()));
+    assert.ok(link.includes("#v1."), link);
+    const expected = await settings(page);
+
+    const other = await page.context().newPage();
+    await other.goto(link);
+    await other.waitForFunction(() => window.shoal && window.shoal.state().tier, null, { timeout: 90_000 });
+    assert.deepEqual(await other.evaluate(() => window.shoal.settings()), expected);
+    assert.equal((await other.evaluate(() => window.shoal.state())).compare, true);
+
+    const broken = link.slice(0, link.length - 12) + "!!tampered!!";
+    await other.goto("about:blank");
+    await other.goto(broken);
+    await other.waitForFunction(() => window.shoal && window.shoal.state().tier, null, { timeout: 90_000 });
+    const s = await other.evaluate(() => window.shoal.state());
+    assert.match(s.notice || "", /could not be opened/);
+    assert.equal(s.scene, "aquarium", "falls back to the defaults");
+    saveArtifact("bad-link-notice.png", await other.screenshot());
+    await other.close();
+  });
+
+  test("the CSV button downloads the metrics table", async () => {
+    const download = page.waitForEvent("download", { timeout: 30_000 });
+    await clickWidget(page, "export_csv");
+    const file = await download;
+    assert.equal(file.suggestedFilename(), "shoal-metrics.csv");
+    const stream = await file.createReadStream();
+    let text = "";
+    for await (const chunk of stream) text += chunk;
+    const lines = text.trim().split("\n");
+    assert.ok(lines[0].startsWith("tank,time_s,polarization,milling"), lines[0]);
+    assert.ok(lines.length > 10, `${lines.length} rows`);
+    assert.ok(lines.some((l) => l.startsWith("right,")), "both tanks are in the table");
+  });
+
+  test("a teacher adds and removes a rock by clicking in the tank", async () => {
+    await page.evaluate(() => window.shoal.set({ compare: false }));
+    await waitForWidget(page, "tool_add_rock");
+    const before = (await settings(page)).left.obstacles;
+    assert.equal(before, null, "the seed's rocks until edited");
+    await clickWidget(page, "tool_add_rock");
+    const view = await waitForWidget(page, "view_left");
+    // Low in the middle of the view: the sand in front of the tank's centre.
+    await page.mouse.click(view.x + view.width * 0.5, view.y + view.height * 0.8, { delay: 60 });
+    await page.waitForFunction(() => window.shoal.settings().left.obstacles !== null, null, { timeout: 30_000 });
+    const added = (await settings(page)).left.obstacles;
+    const world = added.length;
+    assert.ok(world >= 1);
+    await clickWidget(page, "tool_remove_rock");
+    await page.mouse.click(view.x + view.width * 0.5, view.y + view.height * 0.8, { delay: 60 });
+    await page.waitForFunction((n) => window.shoal.settings().left.obstacles.length === n - 1, world, {
+      timeout: 30_000,
+    });
+    await clickWidget(page, "restore_rocks");
+    await page.waitForFunction(() => window.shoal.settings().left.obstacles === null, null, { timeout: 30_000 });
+    await clickWidget(page, "tool_look");
+  });
+
+  test("show vision draws the fish's view over the tank", async () => {
+    await page.evaluate(() => window.shoal.set({ show_vision: false }));
+    const view = await widget(page, "view_left");
+    await page.waitForTimeout(300);
+    const plain = decode(await page.screenshot({ clip: view }));
+    await clickWidget(page, "show_vision");
+    await page.waitForFunction(() => window.shoal.settings().show_vision, null, { timeout: 30_000 });
+    await page.waitForTimeout(600);
+    const shot = await page.screenshot({ clip: view });
+    saveArtifact("show-vision-webgl2.png", shot);
+    const withVision = decode(shot);
+    let changed = 0;
+    for (let i = 0; i < plain.data.length; i += 4) {
+      if (Math.abs(plain.data[i] - withVision.data[i]) + Math.abs(plain.data[i + 1] - withVision.data[i + 1]) > 40) changed++;
+    }
+    assert.ok(changed > 2000, `vision lines change ${changed} pixels`);
+    assert.deepEqual(errors, [], "no console errors");
+  });
+});
