@@ -1,0 +1,14 @@
+import { serveDist, launch, openShoal } from "./harness.mjs";
+const [,, name, patchJson, steps] = process.argv;
+const server = await serveDist();
+const browser = await launch("webgl2");
+const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+const { page, errors } = await openShoal(ctx, server.url);
+await page.evaluate((p) => window.shoal.set(JSON.parse(p)), patchJson);
+await page.evaluate((n) => window.shoal.step(n), Number(steps || 600));
+const s0 = (await page.evaluate(() => window.shoal.state())).steps;
+await page.waitForFunction((n) => window.shoal.state().steps > n + 10, s0, { timeout: 60000 });
+await page.screenshot({ path: `/tmp/shots/${name}.png` });
+console.log(JSON.stringify(await page.evaluate(() => window.shoal.state()).then(s => ({m: s.metrics, r: s.metrics_right, fps: s.fps}))));
+console.log("errors", errors);
+await browser.close(); await server.close();
