@@ -152,6 +152,7 @@ fn world_config(settings: &Settings) -> WorldConfig {
     WorldConfig {
         seed: settings.seed,
         fish_count: settings.fish_count as usize,
+        ..WorldConfig::default()
     }
 }
 

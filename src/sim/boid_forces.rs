@@ -5,14 +5,28 @@
 //! angle: the field of view is a cone of half-angle `vision_angle_rad / 2` around
 //! the heading, leaving a blind cone behind (a vision angle of 300° leaves a 60°
 //! blind cone, as in Tu & Terzopoulos §5). Each force is a steering force in the
-//! papers' form: desired velocity − current velocity, limited to the maximum force
-//! (NOTES.md, "SIMBA steering").
+//! papers' form, desired velocity − current velocity, reached within the
+//! response time and limited to the maximum force (NOTES.md, "SIMBA steering").
+//!
+//! **Topological interaction.** A fish heeds only the `max_neighbours` nearest
+//! fish it sees, not every fish within the vision distance. Ballerini et al. 2008
+//! (PNAS 105:1232) showed that starlings in a flock each interact with their 6–7
+//! nearest neighbours whatever the flock's density; the same "topological range"
+//! keeps a school together when it stretches and keeps the cost per fish
+//! constant when 20,000 fish crowd the tank (with 5 m vision each would otherwise
+//! see thousands). The neighbours are found through the spatial grid, ring by
+//! ring outward from the fish ([`SpatialGrid::k_nearest`]), never by all pairs.
 
 use glam::Vec3;
 
 use super::fish::Fish;
-use super::spatial_grid::SpatialGrid;
+use super::spatial_grid::{Nearest, SpatialGrid};
 use super::steering::limit;
+
+/// Default topological range: the neighbours a fish heeds. Default 7, the upper
+/// end of the 6–7 nearest neighbours starlings interact with (Ballerini et al.
+/// 2008).
+pub const TOPOLOGICAL_NEIGHBOURS: usize = 7;
 
 /// What a fish perceives of its neighbours and how hard it may steer.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -25,6 +39,15 @@ pub struct Perception {
     pub max_speed_m_per_s: f32,
     /// Largest steering acceleration, m/s².
     pub max_force_m_per_s2: f32,
+    /// How many of the nearest seen neighbours a fish heeds (topological range,
+    /// at most [`crate::sim::spatial_grid::MAX_NEAREST`]).
+    pub max_neighbours: usize,
+    /// Neighbours closer than this push the fish away (its personal space),
+    /// metres; farther ones only attract and align it.
+    pub separation_distance_m: f32,
+    /// Time in which a steering force would reach its desired velocity, seconds:
+    /// each force is `(desired − current) / response_time`, then limited.
+    pub response_time_s: f32,
 }
 
 /// Separation, alignment and cohesion for one fish.
@@ -33,7 +56,7 @@ pub struct NeighbourForces {
     pub separation_m_per_s2: Vec3,
     pub alignment_m_per_s2: Vec3,
     pub cohesion_m_per_s2: Vec3,
-    /// How many neighbours the fish saw.
+    /// How many neighbours the fish heeded (at most `max_neighbours`).
     pub neighbours: u32,
 }
 
@@ -48,47 +71,88 @@ pub fn sees(position_m: Vec3, heading: Vec3, other_m: Vec3, perception: &Percept
     heading.dot(offset / distance) >= half_angle.cos() - 1e-6
 }
 
-/// The three neighbour forces on `fish[i]`, looking up neighbours in `grid`
-/// (built over the same positions with a cell of at least the vision distance).
+/// A steering force from a desired velocity: `limit((desired − current) /
+/// response_time, max_force)`. A response time of zero or less (or NaN) counts
+/// as instant, i.e. the full maximum force.
+pub fn steer_towards(
+    desired_m_per_s: Vec3,
+    current_m_per_s: Vec3,
+    perception: &Perception,
+) -> Vec3 {
+    let response_time_s = if perception.response_time_s > 0.0 {
+        perception.response_time_s
+    } else {
+        1e-3
+    };
+    limit(
+        (desired_m_per_s - current_m_per_s) / response_time_s,
+        perception.max_force_m_per_s2,
+    )
+}
+
+/// The three neighbour forces on the fish at `positions_m[i]`, heeding its
+/// `max_neighbours` nearest seen neighbours, looked up in `grid` (built over
+/// `positions_m`, any cell size):
 ///
-/// - separation: away from each seen neighbour, weighted by 1/distance
-///   (closer neighbours push harder), desired speed the maximum;
-/// - alignment: towards the seen neighbours' mean heading, at the maximum speed;
-/// - cohesion: seek the seen neighbours' centre.
+/// - separation: away from each heeded neighbour closer than
+///   `separation_distance_m`, weighted by 1/distance (closer neighbours push
+///   harder), desired speed the maximum;
+/// - alignment: towards the heeded neighbours' mean heading, at the maximum speed;
+/// - cohesion: seek the heeded neighbours' centre at the maximum speed.
 pub fn neighbour_forces(
     fish: &[Fish],
+    positions_m: &[Vec3],
     i: usize,
     grid: &SpatialGrid,
     perception: &Perception,
 ) -> NeighbourForces {
     let me = &fish[i];
     let heading = me.heading();
+    let half_angle = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
+    let cos_half_angle = half_angle.cos() - 1e-6;
+    let mut nearest = Nearest::new(perception.max_neighbours);
+    grid.k_nearest(
+        me.position_m,
+        positions_m,
+        perception.vision_distance_m,
+        &mut nearest,
+        |j, distance_sq_m2| {
+            if j == i || distance_sq_m2 <= 0.0 {
+                return false;
+            }
+            let offset = positions_m[j] - me.position_m;
+            heading.dot(offset) >= cos_half_angle * distance_sq_m2.sqrt()
+        },
+    );
+    if nearest.is_empty() {
+        return NeighbourForces::default();
+    }
     let mut away = Vec3::ZERO;
     let mut velocity_sum = Vec3::ZERO;
     let mut position_sum = Vec3::ZERO;
-    let mut neighbours = 0u32;
-    grid.for_each_candidate(me.position_m, perception.vision_distance_m, |j| {
-        if j == i || !sees(me.position_m, heading, fish[j].position_m, perception) {
-            return;
+    let separation_sq_m2 = perception.separation_distance_m * perception.separation_distance_m;
+    for (j, distance_sq_m2) in nearest.iter() {
+        let offset = me.position_m - positions_m[j];
+        if distance_sq_m2 < separation_sq_m2 {
+            // Unit direction / distance = offset / distance².
+            away += offset / distance_sq_m2.max(1e-6);
         }
-        let offset = me.position_m - fish[j].position_m;
-        away += offset.normalize_or_zero() / offset.length().max(1e-3);
         velocity_sum += fish[j].velocity_m_per_s;
-        position_sum += fish[j].position_m;
-        neighbours += 1;
-    });
-    if neighbours == 0 {
-        return NeighbourForces::default();
+        position_sum += positions_m[j];
     }
-    let n = neighbours as f32;
-    let steer = |desired: Vec3| limit(desired - me.velocity_m_per_s, perception.max_force_m_per_s2);
+    let n = nearest.len() as f32;
+    let speed = perception.max_speed_m_per_s;
+    let steer = |desired: Vec3| steer_towards(desired, me.velocity_m_per_s, perception);
+    let separation_m_per_s2 = if away == Vec3::ZERO {
+        Vec3::ZERO
+    } else {
+        steer(away.normalize_or_zero() * speed)
+    };
     NeighbourForces {
-        separation_m_per_s2: steer(away.normalize_or_zero() * perception.max_speed_m_per_s),
-        alignment_m_per_s2: steer(velocity_sum.normalize_or_zero() * perception.max_speed_m_per_s),
-        cohesion_m_per_s2: steer(
-            (position_sum / n - me.position_m).normalize_or_zero() * perception.max_speed_m_per_s,
-        ),
-        neighbours,
+        separation_m_per_s2,
+        alignment_m_per_s2: steer(velocity_sum.normalize_or_zero() * speed),
+        cohesion_m_per_s2: steer((position_sum / n - me.position_m).normalize_or_zero() * speed),
+        neighbours: nearest.len() as u32,
     }
 }
 
@@ -101,7 +165,14 @@ mod tests {
         vision_angle_rad: 300f32.to_radians(),
         max_speed_m_per_s: 0.8,
         max_force_m_per_s2: 1.5,
+        max_neighbours: 7,
+        separation_distance_m: 1.0,
+        response_time_s: 1.0,
     };
+
+    fn positions(fish: &[Fish]) -> Vec<Vec3> {
+        fish.iter().map(|f| f.position_m).collect()
+    }
 
     fn grid_for(fish: &[Fish]) -> SpatialGrid {
         let mut grid = SpatialGrid::default();
@@ -142,7 +213,7 @@ mod tests {
         let close = Fish::new(Vec3::new(0.5, 2.0, 0.3), Vec3::Z * 0.5, 0.4, 0.0);
         let far = Fish::new(Vec3::new(1.5, 2.0, 0.9), Vec3::Z * 0.5, 0.4, 0.0);
         let fish = [me, close, far];
-        let f = neighbour_forces(&fish, 0, &grid_for(&fish), &PERCEPTION);
+        let f = neighbour_forces(&fish, &positions(&fish), 0, &grid_for(&fish), &PERCEPTION);
         assert_eq!(f.neighbours, 2);
         assert!(f.separation_m_per_s2.z < 0.0, "away from neighbours at +z");
         assert!(
@@ -166,11 +237,43 @@ mod tests {
     fn a_lone_or_coincident_fish_feels_nothing_and_never_nan() {
         let lone = [Fish::new(Vec3::new(0.0, 2.0, 0.0), Vec3::X, 0.4, 0.0)];
         assert_eq!(
-            neighbour_forces(&lone, 0, &grid_for(&lone), &PERCEPTION),
+            neighbour_forces(&lone, &positions(&lone), 0, &grid_for(&lone), &PERCEPTION),
             NeighbourForces::default()
         );
         let twins = [lone[0], lone[0]];
-        let f = neighbour_forces(&twins, 0, &grid_for(&twins), &PERCEPTION);
+        let f = neighbour_forces(
+            &twins,
+            &positions(&twins),
+            0,
+            &grid_for(&twins),
+            &PERCEPTION,
+        );
         assert!(f.separation_m_per_s2.is_finite() && f.cohesion_m_per_s2.is_finite());
+    }
+
+    #[test]
+    fn a_fish_heeds_only_its_seven_nearest_seen_neighbours() {
+        // Twenty neighbours in a row ahead: only the seven nearest count, so the
+        // cohesion pulls towards them, not towards the whole row's middle.
+        let mut fish = vec![Fish::new(
+            Vec3::new(-5.0, 2.0, 0.0),
+            Vec3::X * 0.5,
+            0.4,
+            0.0,
+        )];
+        for k in 1..=20 {
+            fish.push(Fish::new(
+                Vec3::new(-5.0 + 0.2 * k as f32, 2.0, 0.0),
+                Vec3::X * 0.5,
+                0.4,
+                0.0,
+            ));
+        }
+        let perception = Perception {
+            vision_distance_m: 5.0,
+            ..PERCEPTION
+        };
+        let f = neighbour_forces(&fish, &positions(&fish), 0, &grid_for(&fish), &perception);
+        assert_eq!(f.neighbours, 7);
     }
 }
