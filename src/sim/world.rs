@@ -97,6 +97,12 @@ pub const FEAR_COHESION_FACTOR: f32 = 2.0;
 /// doubled cohesion, the school halves its spacing.
 pub const FEAR_SEPARATION_FACTOR: f32 = 0.5;
 
+/// Side of the far field's cells as a fraction of the vision distance.
+/// Default 0.5 (2.5 m for 5 m vision: 40 cells in the default tank): coarse
+/// enough to be cheap for every fish, fine enough that "the cells I see" is
+/// close to "the fish I see".
+const FAR_FIELD_CELL_SHARE: f32 = 0.5;
+
 /// Target mean number of fish per grid cell around a fish for the neighbour
 /// search, dimensionless. Default 3: the seven nearest then mostly lie in the
 /// 27 cells around a fish, so a search visits one or two rings of cells.
@@ -195,7 +201,7 @@ impl BoidParams {
                 separation_distance_m: 1.2,
                 ..group.perception
             },
-            wander_weight: 1.0,
+            wander_weight: 3.0,
             ..group
         }
     }
@@ -232,6 +238,7 @@ pub struct World {
     /// Fixed obstacles followed by the stingrays' avoidance shapes.
     avoid_all: Vec<Obstacle>,
     meter: SchoolMeter,
+    far_field: boid_forces::FarField,
 }
 
 impl World {
@@ -277,6 +284,7 @@ impl World {
             stingray_solids: Vec::new(),
             avoid_all: Vec::new(),
             meter: SchoolMeter::default(),
+            far_field: boid_forces::FarField::default(),
         };
         world.set_species_counts(config.sharks, config.stingrays);
         world.set_fish_count(config.fish_count);
@@ -451,6 +459,12 @@ impl World {
         let perception = &boids.perception;
         let max_force = params.max_force_m_per_s2;
         let mut applied_counts = [0u32; 5];
+        self.far_field.rebuild(
+            self.tank.min_m,
+            self.tank.max_m,
+            perception.vision_distance_m * FAR_FIELD_CELL_SHARE,
+            &self.positions_m,
+        );
         for i in 0..self.fish.len() {
             let me = self.snapshot[i];
             let neighbours = boid_forces::neighbour_forces(
@@ -458,6 +472,7 @@ impl World {
                 &self.positions_m,
                 i,
                 &self.grid,
+                Some(&self.far_field),
                 perception,
             );
             let containment = steering::contain_in_tank(
@@ -1343,6 +1358,7 @@ fn spawn_stingray(tank: &Tank, obstacles: &[Obstacle], rng: &mut ChaCha8Rng) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sim::SchoolMetrics;
 
     fn world(seed: u64, fish_count: usize) -> World {
         World::new(WorldConfig {
@@ -1371,20 +1387,43 @@ mod tests {
                 let gap_m = obstacle.signed_distance_m(p);
                 assert!(gap_m >= 0.0, "fish {i} inside {obstacle:?} at {p}");
             }
+            for ray in world.stingrays() {
+                let gap_m = ray.obstacle(world.tank().min_m.y).signed_distance_m(p);
+                assert!(gap_m >= 0.0, "fish {i} inside a stingray at {p}");
+            }
+        }
+        for shark in world.sharks() {
+            let p = shark.body.position_m;
+            assert!(p.is_finite() && shark.body.velocity_m_per_s.is_finite());
+            assert!(world.tank().contains(p, 0.0), "shark left the tank: {p}");
+            for obstacle in world.obstacles() {
+                assert!(obstacle.signed_distance_m(p) >= 0.0, "shark in {obstacle:?}");
+            }
+        }
+        for ray in world.stingrays() {
+            let p = ray.body.position_m;
+            assert!(p.is_finite() && world.tank().contains(p, 0.0));
+            let height_m = p.y - world.tank().min_m.y;
+            assert!((0.2 - 1e-4..=0.6 + 1e-4).contains(&height_m), "ray at {height_m} m");
         }
     }
 
     #[test]
-    fn default_scene_has_4_to_6_rocks_and_2_to_3_pillars_that_do_not_overlap() {
+    fn default_scene_has_4_to_6_rocks_2_to_3_pillars_and_0_to_1_ledge_that_do_not_overlap() {
+        let mut ledges_seen = 0;
         for seed in 0..20 {
             let w = world(seed, 0);
-            let rocks = w
-                .obstacles()
-                .iter()
-                .filter(|o| matches!(o, Obstacle::Rock { .. }));
-            let pillars = w.obstacles().len() - rocks.clone().count();
-            assert!((4..=6).contains(&rocks.count()), "seed {seed}");
+            let count = |f: fn(&Obstacle) -> bool| w.obstacles().iter().filter(|o| f(o)).count();
+            let rocks = count(|o| matches!(o, Obstacle::Rock { .. }));
+            let pillars = count(|o| matches!(o, Obstacle::Cylinder { .. }));
+            let ledges = count(|o| matches!(o, Obstacle::Polygon { .. }));
+            assert!((4..=6).contains(&rocks), "seed {seed}");
             assert!((2..=3).contains(&pillars), "seed {seed}");
+            assert!(ledges <= 1, "seed {seed}");
+            ledges_seen += ledges;
+            for o in w.obstacles() {
+                assert_eq!(o.validate(w.tank()), Ok(()), "seed {seed}");
+            }
             for (i, a) in w.obstacles().iter().enumerate() {
                 let (ca, ra) = footprint(a);
                 // Far enough from the glass (checked at mid-height).
@@ -1396,6 +1435,7 @@ mod tests {
                 }
             }
         }
+        assert!(ledges_seen > 0, "no seed placed a reef ledge");
     }
 
     #[test]
@@ -1580,46 +1620,53 @@ mod tests {
         w
     }
 
-    #[test]
-    fn group_preset_packs_fish_closer_and_into_fewer_groups_than_individual() {
-        let mut grid = crate::sim::SpatialGrid::default();
-        let mut measure = |params: BoidParams| {
-            let mut w = boid_world(params, 200);
-            for _ in 0..3600 {
-                w.step();
+    /// Runs `params` for a minute on `seed` and returns the metrics of the
+    /// last 30 s (sampled every second) and the best polarization/fewest groups.
+    fn run_minute(params: BoidParams, seed: u64) -> Vec<SchoolMetrics> {
+        let mut w = World::new(WorldConfig {
+            seed,
+            fish_count: 200,
+            ..WorldConfig::default()
+        });
+        w.set_boids(Some(params));
+        let mut samples = Vec::new();
+        for step in 1..=3600 {
+            w.step();
+            if step % 60 == 0 {
+                samples.push(w.metrics().school);
             }
-            crate::sim::school_metrics::measure(w.fish(), w.tank().min_m, w.tank().max_m, &mut grid)
-        };
-        let group = measure(BoidParams::group());
-        let individual = measure(BoidParams::individual());
-        assert!(
-            group.nnd_body_lengths < individual.nnd_body_lengths,
-            "{group:?} vs {individual:?}"
-        );
-        assert!(
-            group.groups < individual.groups,
-            "{group:?} vs {individual:?}"
-        );
+        }
+        samples
     }
 
     #[test]
-    fn group_preset_polarises_within_a_minute() {
-        let mut grid = crate::sim::SpatialGrid::default();
-        let mut w = boid_world(BoidParams::group(), 200);
-        let mut best = 0.0_f32;
-        for step in 1..=3600 {
-            w.step();
-            if step % 300 == 0 {
-                let m = crate::sim::school_metrics::measure(
-                    w.fish(),
-                    w.tank().min_m,
-                    w.tank().max_m,
-                    &mut grid,
-                );
-                best = best.max(m.polarization);
-            }
+    fn group_preset_forms_one_or_two_polarised_schools_within_a_minute() {
+        for seed in [1, 2] {
+            let samples = run_minute(BoidParams::group(), seed);
+            let reached = samples
+                .iter()
+                .any(|m| m.polarization > 0.8 && m.groups <= 2);
+            assert!(reached, "seed {seed}: {:?}", samples.last());
         }
-        assert!(best > 0.8, "best polarization {best}");
+    }
+
+    #[test]
+    fn individual_preset_stays_unordered_and_spaced_wider_than_the_group() {
+        let mean = |samples: &[SchoolMetrics], f: fn(&SchoolMetrics) -> f32| {
+            let last = &samples[samples.len() / 2..];
+            last.iter().map(f).sum::<f32>() / last.len() as f32
+        };
+        for seed in [1, 2] {
+            let individual = run_minute(BoidParams::individual(), seed);
+            let group = run_minute(BoidParams::group(), seed);
+            let polarization = mean(&individual, |m| m.polarization);
+            assert!(polarization < 0.4, "seed {seed}: polarization {polarization}");
+            let (nnd_i, nnd_g) = (
+                mean(&individual, |m| m.nnd_body_lengths),
+                mean(&group, |m| m.nnd_body_lengths),
+            );
+            assert!(nnd_i > nnd_g, "seed {seed}: NND {nnd_i} vs {nnd_g}");
+        }
     }
 
     #[test]
@@ -1653,18 +1700,251 @@ mod tests {
                     ..BoidParams::group()
                 };
                 let mut w = boid_world(params, 300);
+                w.set_species_counts(2, 4);
                 for _ in 0..600 {
                     w.step();
                 }
-                for f in w.fish() {
-                    assert!(f.position_m.is_finite() && f.velocity_m_per_s.is_finite());
-                    assert!(w.tank().contains(f.position_m, 0.0));
-                    for o in w.obstacles() {
-                        assert!(o.signed_distance_m(f.position_m) >= 0.0);
-                    }
-                }
+                assert_all_fish_legal(&w);
                 assert_eq!(w.non_finite_repairs(), 0, "{mode:?} {weights:?}");
             }
         }
+    }
+
+    #[test]
+    fn five_thousand_schooling_fish_with_sharks_and_stingrays_stay_legal() {
+        let mut w = World::new(WorldConfig {
+            seed: 11,
+            fish_count: 5_000,
+            sharks: 3,
+            stingrays: 6,
+            obstacles: None,
+        });
+        w.set_boids(Some(BoidParams::group()));
+        for _ in 0..60 {
+            w.step();
+        }
+        assert_all_fish_legal(&w);
+        assert_eq!(w.non_finite_repairs(), 0);
+        assert_eq!(w.fish().len(), 5_000);
+    }
+
+    /// The first seed in 0..50 whose generated layout has a reef ledge.
+    fn seed_with_a_ledge() -> u64 {
+        (0..50)
+            .find(|&seed| {
+                world(seed, 0)
+                    .obstacles()
+                    .iter()
+                    .any(|o| matches!(o, Obstacle::Polygon { .. }))
+            })
+            .expect("some seed places a ledge")
+    }
+
+    #[test]
+    fn no_fish_ever_enters_a_rock_pillar_ledge_or_stingray_in_a_long_run() {
+        let mut w = World::new(WorldConfig {
+            seed: seed_with_a_ledge(),
+            fish_count: 200,
+            sharks: 1,
+            stingrays: 8,
+            obstacles: None,
+        });
+        w.set_boids(Some(BoidParams::group()));
+        for _ in 0..2 * 60 * 60 {
+            w.step();
+            assert_all_fish_legal(&w);
+        }
+        assert_eq!(w.non_finite_repairs(), 0);
+    }
+
+    #[test]
+    fn obstacles_round_trip_through_json_with_a_kind_tag() {
+        let w = world(seed_with_a_ledge(), 0);
+        let json = serde_json::to_string(w.obstacles()).unwrap();
+        assert!(json.contains(r#""kind":"rock""#), "{json}");
+        assert!(json.contains(r#""kind":"polygon""#), "{json}");
+        assert!(json.contains("footprint_m") && json.contains("radius_m"));
+        let back: Vec<Obstacle> = serde_json::from_str(&json).unwrap();
+        assert_eq!(back, w.obstacles());
+        let config: WorldConfig = serde_json::from_str(r#"{"seed": 5}"#).unwrap();
+        assert_eq!(config, WorldConfig { seed: 5, ..WorldConfig::default() });
+        let default = WorldConfig::default();
+        assert_eq!((default.fish_count, default.sharks, default.stingrays), (200, 0, 0));
+        assert!(default.obstacles.is_none());
+    }
+
+    #[test]
+    fn a_teachers_layout_is_used_exactly_and_survives_a_reset() {
+        let layout = vec![
+            Obstacle::Rock {
+                center_m: Vec3::new(0.0, -0.2, 0.0),
+                radius_m: 0.8,
+            },
+            Obstacle::Polygon {
+                footprint_m: vec![Vec2::new(2.0, 1.0), Vec2::new(4.0, 1.0), Vec2::new(3.0, 2.5)],
+                base_y_m: 0.0,
+                height_m: 1.0,
+            },
+        ];
+        let mut w = World::new(WorldConfig {
+            obstacles: Some(layout.clone()),
+            ..WorldConfig::default()
+        });
+        assert_eq!(w.obstacles(), &layout[..]);
+        assert_all_fish_legal(&w);
+        w.reset(9);
+        assert_eq!(w.obstacles(), &layout[..]);
+    }
+
+    #[test]
+    fn adding_moving_and_removing_obstacles_keeps_every_fish_outside() {
+        let mut w = world(4, 1_000);
+        w.set_species_counts(0, 3);
+        for _ in 0..30 {
+            w.step();
+        }
+        // A big rock dropped into the middle of the school.
+        let rock = Obstacle::Rock {
+            center_m: w.tank().center_m() * Vec3::new(1.0, 0.0, 1.0),
+            radius_m: 1.4,
+        };
+        let before = w.obstacles().len();
+        match w.add_obstacle(rock) {
+            Ok(index) => {
+                assert_eq!(index, before);
+                assert_all_fish_legal(&w);
+                // Moving it sweeps through more fish; they are pushed out at once.
+                if w.move_obstacle(index, Vec2::new(-3.5, 1.5)).is_ok() {
+                    assert_all_fish_legal(&w);
+                }
+                assert!(w.remove_obstacle(index));
+            }
+            Err(reason) => assert!(reason.contains("too close"), "{reason}"),
+        }
+        assert!(!w.remove_obstacle(99));
+        assert!(w.move_obstacle(99, Vec2::ZERO).is_err());
+        // Invalid obstacles are refused with a reason and change nothing.
+        let count = w.obstacles().len();
+        let outside = Obstacle::Cylinder {
+            base_center_m: Vec3::new(5.8, 0.0, 0.0),
+            radius_m: 0.3,
+            height_m: 2.0,
+        };
+        assert!(w.add_obstacle(outside).unwrap_err().contains("glass"));
+        assert_eq!(w.obstacles().len(), count);
+        // A whole new layout: a ledge across the middle.
+        w.set_obstacles(vec![Obstacle::Polygon {
+            footprint_m: vec![
+                Vec2::new(-3.0, -1.0),
+                Vec2::new(3.0, -1.0),
+                Vec2::new(3.0, 1.0),
+                Vec2::new(-3.0, 1.0),
+            ],
+            base_y_m: 0.0,
+            height_m: 2.0,
+        }]);
+        assert_eq!(w.obstacles().len(), 1);
+        assert_all_fish_legal(&w);
+        for _ in 0..120 {
+            w.step();
+            assert_all_fish_legal(&w);
+        }
+    }
+
+    #[test]
+    fn species_counts_are_capped_and_spawned_legally() {
+        let mut w = world(6, 100);
+        w.set_species_counts(50, 50);
+        assert_eq!((w.sharks().len(), w.stingrays().len()), (10, 20));
+        assert_all_fish_legal(&w);
+        w.set_species_counts(1, 2);
+        assert_eq!((w.sharks().len(), w.stingrays().len()), (1, 2));
+        for s in w.sharks() {
+            let length_m = s.body.body_length_m;
+            assert!((1.5..=2.0).contains(&length_m));
+        }
+    }
+
+    #[test]
+    fn a_fish_that_sees_a_shark_flees() {
+        let mut w = world(8, 1);
+        w.set_species_counts(1, 0);
+        // The fish swims towards a (satiated, cruising) shark 3 m ahead.
+        w.fish[0] = Fish::new(Vec3::new(1.0, 2.0, 0.0), Vec3::NEG_X * 0.5, 0.4, 0.0);
+        w.sharks[0] = shark::new_shark(Vec3::new(-2.0, 2.0, 0.0), 0.0, 1.8);
+        w.sharks[0].satiated_secs = 10.0;
+        let start_m = w.fish()[0].position_m.distance(w.sharks()[0].body.position_m);
+        for _ in 0..120 {
+            w.step();
+        }
+        let end_m = w.fish()[0].position_m.distance(w.sharks()[0].body.position_m);
+        assert!(end_m > start_m + 0.5, "distance {start_m} → {end_m}");
+        assert!(w.fish()[0].velocity_m_per_s.x > 0.0, "it turned away");
+    }
+
+    /// Catches per simulated minute of 2 sharks among 200 fish, over seeds.
+    fn catches_per_minute(params: BoidParams) -> f64 {
+        let seeds = [1, 2, 3];
+        let minutes = 2;
+        let mut catches = 0;
+        for seed in seeds {
+            let mut w = World::new(WorldConfig {
+                seed,
+                fish_count: 200,
+                sharks: 2,
+                ..WorldConfig::default()
+            });
+            w.set_boids(Some(params));
+            for _ in 0..minutes * 3600 {
+                w.step();
+            }
+            assert_eq!(w.fish().len(), 200, "caught fish are replaced");
+            assert_eq!(w.metrics().catches, w.catches());
+            catches += w.catches();
+        }
+        catches as f64 / (seeds.len() * minutes) as f64
+    }
+
+    #[test]
+    fn sharks_catch_lone_fish_more_often_than_schooling_fish() {
+        let lone = catches_per_minute(BoidParams::individual());
+        let schooled = catches_per_minute(BoidParams::group());
+        println!("catches per minute: lone {lone:.2}, schooled {schooled:.2}");
+        assert!(lone > 0.0);
+        assert!(lone > 1.5 * schooled, "lone {lone} vs schooled {schooled}");
+    }
+
+    #[test]
+    fn stingrays_glide_near_the_sand_and_close_ones_are_avoided_as_one_polygon() {
+        let mut w = world(3, 50);
+        w.set_species_counts(0, 3);
+        let floor_y_m = w.tank().min_m.y;
+        // Three rays side by side in open water, in a clear spot.
+        w.set_obstacles(Vec::new());
+        for (k, ray) in w.stingrays.iter_mut().enumerate() {
+            *ray = stingray::new_stingray(Vec3::new(-1.5 + 1.5 * k as f32, 0.4, 0.0), 0.0, floor_y_m);
+        }
+        w.step();
+        assert_eq!(w.stingray_obstacles().len(), 1);
+        assert!(matches!(w.stingray_obstacles()[0], Obstacle::Polygon { .. }));
+        for _ in 0..1200 {
+            w.step();
+            assert_all_fish_legal(&w);
+        }
+    }
+
+    #[test]
+    fn metrics_are_measured_after_every_step() {
+        let mut w = boid_world(BoidParams::group(), 300);
+        for _ in 0..90 {
+            w.step();
+        }
+        let mut grid = SpatialGrid::default();
+        let fresh =
+            crate::sim::school_metrics::measure(w.fish(), w.tank().min_m, w.tank().max_m, &mut grid);
+        assert_eq!(w.metrics().school, fresh);
+        // Blended mode applies every weighted force on every fish-step.
+        assert_eq!(w.metrics().force_frequencies_recent, [1.0; 5]);
+        assert_eq!(w.metrics().force_frequencies_total, w.force_frequencies());
     }
 }
