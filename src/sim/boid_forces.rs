@@ -70,8 +70,15 @@ pub struct FarField {
 impl FarField {
     /// Buckets `positions_m` into cubes of side `cell_m` over `min_m..max_m`.
     pub fn rebuild(&mut self, min_m: Vec3, max_m: Vec3, cell_m: f32, positions_m: &[Vec3]) {
-        let cell_m = if cell_m.is_finite() && cell_m > 0.1 { cell_m } else { 1.0 };
-        let dims = ((max_m - min_m) / cell_m).ceil().max(Vec3::ONE).min(Vec3::splat(32.0));
+        let cell_m = if cell_m.is_finite() && cell_m > 0.1 {
+            cell_m
+        } else {
+            1.0
+        };
+        let dims = ((max_m - min_m) / cell_m)
+            .ceil()
+            .max(Vec3::ONE)
+            .min(Vec3::splat(32.0));
         let (dx, dy, dz) = (dims.x as usize, dims.y as usize, dims.z as usize);
         self.sums.clear();
         self.sums.resize(dx * dy * dz, (Vec3::ZERO, 0));
@@ -99,7 +106,12 @@ impl FarField {
     /// Centre of the fish in the cells whose mean position a fish at
     /// `position_m` heading `heading` sees (within vision distance and angle),
     /// or `None` if it sees none.
-    pub fn seen_centre_m(&self, position_m: Vec3, heading: Vec3, perception: &Perception) -> Option<Vec3> {
+    pub fn seen_centre_m(
+        &self,
+        position_m: Vec3,
+        heading: Vec3,
+        perception: &Perception,
+    ) -> Option<Vec3> {
         let half_angle = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
         let cos_half = half_angle.cos() - 1e-6;
         let vision_sq = perception.vision_distance_m * perception.vision_distance_m;
@@ -314,7 +326,14 @@ mod tests {
         let close = Fish::new(Vec3::new(0.5, 2.0, 0.3), Vec3::Z * 0.5, 0.4, 0.0);
         let far = Fish::new(Vec3::new(1.5, 2.0, 0.9), Vec3::Z * 0.5, 0.4, 0.0);
         let fish = [me, close, far];
-        let f = neighbour_forces(&fish, &positions(&fish), 0, &grid_for(&fish), None, &PERCEPTION);
+        let f = neighbour_forces(
+            &fish,
+            &positions(&fish),
+            0,
+            &grid_for(&fish),
+            None,
+            &PERCEPTION,
+        );
         assert_eq!(f.neighbours, 2);
         assert!(f.separation_m_per_s2.z < 0.0, "away from neighbours at +z");
         assert!(
@@ -338,7 +357,14 @@ mod tests {
     fn a_lone_or_coincident_fish_feels_nothing_and_never_nan() {
         let lone = [Fish::new(Vec3::new(0.0, 2.0, 0.0), Vec3::X, 0.4, 0.0)];
         assert_eq!(
-            neighbour_forces(&lone, &positions(&lone), 0, &grid_for(&lone), None, &PERCEPTION),
+            neighbour_forces(
+                &lone,
+                &positions(&lone),
+                0,
+                &grid_for(&lone),
+                None,
+                &PERCEPTION
+            ),
             NeighbourForces::default()
         );
         let twins = [lone[0], lone[0]];
@@ -375,7 +401,14 @@ mod tests {
             vision_distance_m: 5.0,
             ..PERCEPTION
         };
-        let f = neighbour_forces(&fish, &positions(&fish), 0, &grid_for(&fish), None, &perception);
+        let f = neighbour_forces(
+            &fish,
+            &positions(&fish),
+            0,
+            &grid_for(&fish),
+            None,
+            &perception,
+        );
         assert_eq!(f.neighbours, 7);
     }
 }

@@ -36,10 +36,12 @@ pub const SHARK_LENGTH_M: (f32, f32) = (1.5, 2.0);
 /// resting shark does not catch anything by accident.
 pub const SHARK_CRUISE_M_PER_S: f32 = 0.5;
 
-/// Attack speed in m/s. Default 1.1 m/s: faster than the fish's 0.8 m/s top
-/// speed, so a shark that keeps its lock catches up; fish escape by turning
-/// (they may steer 8 m/s², the shark [`SHARK_MAX_FORCE_M_PER_S2`]).
-pub const SHARK_ATTACK_M_PER_S: f32 = 1.1;
+/// Attack speed in m/s. Default 1.5 m/s (tuned): about twice the fish's
+/// 0.8 m/s top speed (a shark's burst is several times its cruise), so a shark
+/// that keeps its lock catches a lone fish within seconds; fish can only
+/// escape by turning (they may steer 8 m/s², the shark
+/// [`SHARK_MAX_FORCE_M_PER_S2`]) or by hiding in a school.
+pub const SHARK_ATTACK_M_PER_S: f32 = 1.5;
 
 /// Slowest shark speed in m/s. Default 0.3 m/s: sharks must keep swimming to
 /// breathe (ram ventilation).
@@ -47,7 +49,7 @@ pub const SHARK_MIN_M_PER_S: f32 = 0.3;
 
 /// Largest steering acceleration of a shark in m/s². Default 2.5 m/s²: a big
 /// body turns wider than a fish: at attack speed its tightest turn has a
-/// radius of v²/a ≈ 0.5 m, a fish's about 0.1 m.
+/// radius of v²/a ≈ 0.9 m, a fish's about 0.1 m.
 pub const SHARK_MAX_FORCE_M_PER_S2: f32 = 2.5;
 
 /// How far a shark sees fish, in metres. Default 6 m: half the tank; murky
@@ -70,11 +72,19 @@ pub const SATIATED_S: f32 = 5.0;
 /// Default 1.0 m: about two to three fish lengths, the spacing inside a school.
 pub const CONFUSION_RADIUS_M: f32 = 1.0;
 
-/// Rate of losing the lock per confusing fish, per second. Default 0.4 /s
+/// Rate of losing the lock per confusing fish, per second. Default 1.0 /s
 /// (tuned): with the 7 close neighbours of a schooling fish the lock lasts
-/// about a third of a second, too short to close in; a lone fish is never lost
-/// (Landeau & Terborgh 1986: lone prey caught at once, shoals of 8+ rarely).
-pub const CONFUSION_RATE_PER_NEIGHBOUR_PER_S: f32 = 0.4;
+/// about a seventh of a second on average, rarely the [`STRIKE_LOCK_S`] a bite
+/// needs; a lone fish is never lost (Landeau & Terborgh 1986: lone prey caught
+/// at once, shoals of 8+ rarely).
+pub const CONFUSION_RATE_PER_NEIGHBOUR_PER_S: f32 = 1.0;
+
+/// Time a shark must keep its lock on one fish before it can bite, in seconds.
+/// Default 0.5 s (chosen): a strike needs aiming; a predator fixates its prey
+/// before the final lunge. With the confusion rate above, a shark keeps a lock
+/// on a fish with 7 close neighbours that long in about one attack in thirty,
+/// on a lone fish always.
+pub const STRIKE_LOCK_S: f32 = 0.5;
 
 /// Confusing neighbours counted at most. Default 15: beyond that the shark is
 /// confused anyway; bounds the cost of counting in a dense school.
@@ -100,6 +110,8 @@ pub struct Shark {
     pub satiated_secs: f32,
     /// Seconds left before it can pick a new target after losing one.
     pub refocus_secs: f32,
+    /// Seconds it has kept its lock on the current target.
+    pub lock_secs: f32,
     /// Fish this shark has caught.
     pub catches: u64,
 }
@@ -154,6 +166,7 @@ pub fn new_shark(position_m: Vec3, yaw_rad: f32, body_length_m: f32) -> Shark {
         target: None,
         satiated_secs: 0.0,
         refocus_secs: 0.0,
+        lock_secs: 0.0,
         catches: 0,
     }
 }

@@ -420,9 +420,9 @@ mod tests {
         });
         let mut expected = 0usize;
         grid.for_each_candidate(Vec3::ZERO, 0.0, |_| {});
-        for i in 0..points.len() {
+        for (i, &p) in points.iter().enumerate() {
             let mut count = 0;
-            grid.for_each_candidate(points[i], 1.0, |j| count += usize::from(j != i));
+            grid.for_each_candidate(p, 1.0, |j| count += usize::from(j != i));
             expected += count;
         }
         assert_eq!(pairs * 2, expected);
