@@ -8,7 +8,8 @@ use std::time::{Duration, Instant};
 use shoal::lab::Lab;
 use shoal::render::{FrameBuilder, OrbitCamera};
 use shoal::settings::Settings;
-use shoal::sim::{World, WorldConfig};
+use shoal::sim::school_metrics::SchoolMeter;
+use shoal::sim::{BoidParams, World, WorldConfig};
 
 /// Runs `f` repeatedly for about `budget`, returning calls per second.
 fn rate(budget: Duration, mut f: impl FnMut()) -> f64 {
@@ -21,17 +22,52 @@ fn rate(budget: Duration, mut f: impl FnMut()) -> f64 {
     calls as f64 / start.elapsed().as_secs_f64()
 }
 
+fn world(fish_count: usize) -> World {
+    World::new(WorldConfig {
+        seed: 1,
+        fish_count,
+        ..WorldConfig::default()
+    })
+}
+
 fn main() {
     println!("Shoal native benchmark (one thread)");
+    println!();
+    println!(
+        "Boid layer, group preset (7 nearest seen neighbours, 5 m vision), metrics every step:"
+    );
+    println!(
+        "{:>7} | {:>10} | {:>16} | {:>18}",
+        "fish", "steps/s", "boid-steps/s", "metrics (ms/step)"
+    );
+    for fish_count in [500, 5_000, 20_000] {
+        let mut w = world(fish_count);
+        w.set_boids(Some(BoidParams::group()));
+        // Let the school form first: a dense school is the hard case.
+        let warm_up = if fish_count > 5_000 { 300 } else { 600 };
+        for _ in 0..warm_up {
+            w.step();
+        }
+        let steps_per_sec = rate(Duration::from_secs(3), || w.step());
+        let mut meter = SchoolMeter::default();
+        let (lo, hi) = (w.tank().min_m, w.tank().max_m);
+        let measures_per_sec = rate(Duration::from_secs(1), || {
+            std::hint::black_box(meter.measure(w.fish(), lo, hi));
+        });
+        println!(
+            "{fish_count:>7} | {steps_per_sec:>10.1} | {:>16.0} | {:>18.3}",
+            steps_per_sec * fish_count as f64,
+            1000.0 / measures_per_sec
+        );
+    }
+    println!();
+    println!("Wandering fish (no boid layer) and the frame build:");
     println!(
         "{:>7} | {:>12} | {:>16} | {:>17}",
         "fish", "steps/s", "fish-steps/s", "frame build (ms)"
     );
     for fish_count in [200, 2_000, 5_000, 20_000] {
-        let mut world = World::new(WorldConfig {
-            seed: 1,
-            fish_count,
-        });
+        let mut world = world(fish_count);
         for _ in 0..60 {
             world.step();
         }

@@ -87,7 +87,8 @@ impl ShoalApp {
             caps.msaa_samples
         );
         cc.egui_ctx.set_theme(egui::Theme::Dark);
-        let lab = Lab::new(settings);
+        let mut lab = Lab::new(settings);
+        lab.set_frame_budget(Some(crate::lab::INTERACTIVE_FRAME_BUDGET_SECS));
         let tank = lab.world().tank();
         Ok(Self {
             camera: OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0),
@@ -428,7 +429,7 @@ impl ShoalApp {
                     && i < current.len()
                 {
                     let mut next = current;
-                    next[i] = moved_to(&next[i], Vec2::new(p.x, p.z));
+                    next[i] = next[i].moved_to(Vec2::new(p.x, p.z));
                     self.propose_obstacles(settings, side, next);
                 }
                 if response.drag_stopped() {
@@ -552,25 +553,6 @@ fn picked_obstacle(obstacles: &[Obstacle], origin: Vec3, direction: Vec3) -> Opt
         })
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .map(|(i, _)| i)
-}
-
-/// `obstacle` with its footprint centred on `floor_xz`.
-fn moved_to(obstacle: &Obstacle, floor_xz: Vec2) -> Obstacle {
-    match *obstacle {
-        Obstacle::Rock { center_m, radius_m } => Obstacle::Rock {
-            center_m: Vec3::new(floor_xz.x, center_m.y, floor_xz.y),
-            radius_m,
-        },
-        Obstacle::Cylinder {
-            base_center_m,
-            radius_m,
-            height_m,
-        } => Obstacle::Cylinder {
-            base_center_m: Vec3::new(floor_xz.x, base_center_m.y, floor_xz.y),
-            radius_m,
-            height_m,
-        },
-    }
 }
 
 /// "Show vision": each fish's links to the nearest neighbours it sees, and the field

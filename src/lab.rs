@@ -9,7 +9,7 @@ use glam::Vec3;
 use crate::clock::{FixedStepClock, RateMeter};
 use crate::metrics_history::{MetricsHistory, MetricsSample, SAMPLE_EVERY_STEPS};
 use crate::settings::{Scene, Settings, Side};
-use crate::sim::{SpatialGrid, World, WorldConfig, school_metrics};
+use crate::sim::{World, WorldConfig};
 
 /// One tank's run: its world, what is needed to draw it smoothly, and its metrics.
 pub struct Run {
@@ -18,9 +18,12 @@ pub struct Run {
     /// Fish positions before the last step, for interpolated drawing.
     previous_positions_m: Vec<Vec3>,
     history: MetricsHistory,
-    grid: SpatialGrid,
-    /// Counts rebuilds of the world, so the renderer knows when its meshes are stale.
+    /// Which rebuild of the lab made this world.
     generation: u64,
+    /// The obstacles the settings asked for when last applied.
+    obstacles_from_settings: Option<Vec<crate::sim::Obstacle>>,
+    /// Obstacle changes since the world was built.
+    obstacle_edits: u64,
 }
 
 impl Run {
@@ -32,8 +35,9 @@ impl Run {
             world,
             previous_positions_m: Vec::new(),
             history: MetricsHistory::default(),
-            grid: SpatialGrid::default(),
             generation,
+            obstacles_from_settings: settings.tank(side).obstacles.clone(),
+            obstacle_edits: 0,
         };
         run.snapshot_positions();
         run.sample_metrics();
@@ -48,9 +52,10 @@ impl Run {
         &self.world
     }
 
-    /// Changes whenever the world is rebuilt (new seed, scene or reset).
+    /// Changes whenever the world is rebuilt (new seed, scene or reset) or its
+    /// obstacles change, so the renderer knows when its static meshes are stale.
     pub fn generation(&self) -> u64 {
-        self.generation
+        (self.generation << 32) | (self.obstacle_edits & 0xFFFF_FFFF)
     }
 
     /// The metrics of the last minutes.
@@ -73,20 +78,20 @@ impl Run {
         }
     }
 
+    /// Records the world's latest metrics (computed by the simulation every step).
+    /// Force shares are over the last second, so a mode switch shows at once.
     fn sample_metrics(&mut self) {
-        let tank = *self.world.tank();
-        let metrics =
-            school_metrics::measure(self.world.fish(), tank.min_m, tank.max_m, &mut self.grid);
+        let metrics = self.world.metrics();
         let force_frequencies = if self.world.boids().is_some() {
-            self.world.force_frequencies()
+            metrics.force_frequencies_recent
         } else {
             [0.0; 5]
         };
         self.history.push(MetricsSample::new(
             self.world.time_secs(),
-            &metrics,
+            &metrics.school,
             force_frequencies,
-            0,
+            metrics.catches,
         ));
     }
 
@@ -118,6 +123,31 @@ impl Run {
         if self.world.boids() != boids.as_ref() {
             self.world.set_boids(boids);
         }
+        let config = world_config(settings, self.side);
+        if (config.sharks, config.stingrays)
+            != (self.world.sharks().len(), self.world.stingrays().len())
+        {
+            self.world
+                .set_species_counts(config.sharks, config.stingrays);
+        }
+        if config.obstacles.as_ref() != self.obstacles_from_settings.as_ref() {
+            match &config.obstacles {
+                Some(obstacles) => self.world.set_obstacles(obstacles.clone()),
+                // Back to the seed's layout: the obstacles are placed first from
+                // the seed, so an empty world of the same seed has the same ones.
+                None => {
+                    let seeded = World::new(WorldConfig {
+                        fish_count: 0,
+                        sharks: 0,
+                        stingrays: 0,
+                        ..config.clone()
+                    });
+                    self.world.set_obstacles(seeded.obstacles().to_vec());
+                }
+            }
+            self.obstacles_from_settings = config.obstacles;
+            self.obstacle_edits += 1;
+        }
     }
 }
 
@@ -130,7 +160,17 @@ pub struct Lab {
     steps_meter: RateMeter,
     /// Counts rebuilds, so each rebuilt world gets a new generation number.
     rebuilds: u64,
+    /// Wall-clock seconds of simulation a frame may spend (`None`: no limit).
+    frame_budget_secs: Option<f64>,
+    /// Smoothed wall-clock cost of one step of every tank, seconds.
+    step_cost_secs: f64,
 }
+
+/// The frame budget the app uses, seconds. Default 0.025 s: with drawing and the
+/// UI a frame stays near 30 frames/s or better, so the camera and sliders stay
+/// responsive however many fish swim; the simulation slows down instead
+/// ("slowed down" in the status line).
+pub const INTERACTIVE_FRAME_BUDGET_SECS: f64 = 0.025;
 
 impl Lab {
     pub fn new(settings: Settings) -> Self {
@@ -142,6 +182,8 @@ impl Lab {
             runs: Vec::new(),
             steps_meter: RateMeter::default(),
             rebuilds: 0,
+            frame_budget_secs: None,
+            step_cost_secs: 0.0,
         };
         lab.rebuild();
         lab
@@ -168,7 +210,7 @@ impl Lab {
 
     /// Changes whenever the left world is rebuilt.
     pub fn world_generation(&self) -> u64 {
-        self.runs[0].generation
+        self.runs[0].generation()
     }
 
     /// Does this scene show two tanks?
@@ -226,16 +268,42 @@ impl Lab {
         self.rebuild();
     }
 
+    /// Limits the simulation's wall-clock time per frame (the app sets
+    /// [`INTERACTIVE_FRAME_BUDGET_SECS`]); steps per frame then adapt to the measured
+    /// cost of a step. Results stay deterministic: only how many fixed steps run per
+    /// frame changes, never their length.
+    pub fn set_frame_budget(&mut self, budget_secs: Option<f64>) {
+        self.frame_budget_secs = budget_secs;
+    }
+
     /// Runs the steps owed for a frame of `frame_secs` real seconds (none while
     /// paused). `now_secs` is wall-clock time, for the steps-per-second meter.
     pub fn advance_frame(&mut self, frame_secs: f64, now_secs: f64) -> u32 {
+        /// Steps per frame without a budget (see [`FixedStepClock`]).
+        const MAX_STEPS: u32 = 32;
+        self.clock.max_steps_per_frame = match self.frame_budget_secs {
+            Some(budget) if self.step_cost_secs > 0.0 => {
+                ((budget / self.step_cost_secs).floor() as u32).clamp(1, MAX_STEPS)
+            }
+            _ => MAX_STEPS,
+        };
         let steps = if self.settings.paused {
             0
         } else {
             self.clock
                 .steps_for_frame(frame_secs, f64::from(self.settings.speed))
         };
+        let started = web_time::Instant::now();
         self.run_steps(steps);
+        if steps > 0 {
+            let cost = started.elapsed().as_secs_f64() / f64::from(steps);
+            // Smoothed over a few frames; the first measurement is taken as is.
+            self.step_cost_secs = if self.step_cost_secs > 0.0 {
+                0.8 * self.step_cost_secs + 0.2 * cost
+            } else {
+                cost
+            };
+        }
         self.steps_meter.record(now_secs, u64::from(steps));
         steps
     }
@@ -288,9 +356,15 @@ impl Lab {
 }
 
 fn world_config(settings: &Settings, side: Side) -> WorldConfig {
+    let tank = settings.tank(side);
+    let boids = settings.scene == Scene::Boids;
     WorldConfig {
         seed: settings.seed,
-        fish_count: settings.tank(side).fish_count as usize,
+        fish_count: tank.fish_count as usize,
+        // Predators, stingrays and edited rocks belong to the schooling lab.
+        sharks: if boids { tank.sharks as usize } else { 0 },
+        stingrays: if boids { tank.stingrays as usize } else { 0 },
+        obstacles: if boids { tank.obstacles.clone() } else { None },
     }
 }
 

@@ -98,6 +98,8 @@ mod tests {
             tank.vision_angle_deg = rng.random_range(0.0..=360.0);
             tank.max_speed_m_per_s = rng.random_range(0.1..=3.0);
             tank.max_force_m_per_s2 = rng.random_range(0.1..=10.0);
+            tank.personal_space_m = rng.random_range(0.1..=3.0);
+            tank.wander = f32::from(rng.random_range(0u8..=100));
             tank.preset = tank.matching_preset();
         }
         tank.mode = ControlMode::ALL[rng.random_range(0..4)];
@@ -132,6 +134,23 @@ mod tests {
             assert!(link.len() < 2000, "short enough to paste: {}", link.len());
             let back = decode(&format!("#{link}")).unwrap().unwrap();
             assert_eq!(back, settings, "{link}");
+        }
+    }
+
+    #[test]
+    fn edited_rocks_ledges_and_pillars_survive_the_link() {
+        for seed in 1..6 {
+            let world = crate::sim::World::new(crate::sim::WorldConfig {
+                seed,
+                fish_count: 0,
+                ..Default::default()
+            });
+            let mut settings = Settings::default();
+            settings.left.obstacles = Some(world.obstacles().to_vec());
+            settings.right.obstacles = Some(Vec::new());
+            assert!(settings.validate().is_ok());
+            let back = decode(&encode(&settings)).unwrap().unwrap();
+            assert_eq!(back, settings);
         }
     }
 

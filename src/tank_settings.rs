@@ -10,14 +10,16 @@
 use serde::{Deserialize, Serialize};
 
 use crate::sim::control_mode::{self, ControlMode};
-use crate::sim::{BoidParams, Obstacle, Tank};
+use crate::sim::shark::MAX_SHARKS;
+use crate::sim::stingray::MAX_STINGRAYS;
+use crate::sim::{BoidParams, Tank};
 
 /// Largest fish count a teacher can ask for (per tank).
 pub const FISH_COUNT_MAX: u32 = 20_000;
 /// Largest number of sharks per tank.
-pub const SHARKS_MAX: u32 = 10;
+pub const SHARKS_MAX: u32 = MAX_SHARKS as u32;
 /// Largest number of stingrays per tank.
-pub const STINGRAYS_MAX: u32 = 20;
+pub const STINGRAYS_MAX: u32 = MAX_STINGRAYS as u32;
 /// Force weights run from 0 to this, as in the papers' Table 1.
 pub const WEIGHT_MAX: f32 = 100.0;
 /// Vision distance range, metres: from under two body lengths to the tank's width.
@@ -29,6 +31,12 @@ pub const VISION_ANGLE_RANGE_DEG: (f32, f32) = (0.0, 360.0);
 pub const MAX_SPEED_RANGE_M_PER_S: (f32, f32) = (0.1, 3.0);
 /// Maximum steering force range, m/s².
 pub const MAX_FORCE_RANGE_M_PER_S2: (f32, f32) = (0.1, 10.0);
+/// Personal space range, metres: from a third of a body length (packed) to ten body
+/// lengths (a loner that keeps everybody away).
+pub const PERSONAL_SPACE_RANGE_M: (f32, f32) = (0.1, 3.0);
+/// A wander slider of 100 is this wander weight. Default 5: the individual preset's
+/// tuned weight of 3 sits at 60, and a full slider makes fish roam restlessly.
+pub const WANDER_WEIGHT_AT_100: f32 = 5.0;
 
 /// Named sets of weights and perception.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -117,12 +125,16 @@ pub struct TankSettings {
     pub vision_angle_deg: f32,
     pub max_speed_m_per_s: f32,
     pub max_force_m_per_s2: f32,
+    /// Neighbours closer than this push the fish away (separation), metres.
+    pub personal_space_m: f32,
+    /// Urge to roam on its own (a wander steering force), 0–100.
+    pub wander: f32,
     pub fish_count: u32,
     pub sharks: u32,
     pub stingrays: u32,
     /// `None`: the rocks, pillars and ledges the seed places; a list: exactly these
     /// (after a teacher added, moved or removed one).
-    pub obstacles: Option<Vec<Obstacle>>,
+    pub obstacles: Option<Vec<crate::sim::Obstacle>>,
 }
 
 impl TankSettings {
@@ -140,6 +152,8 @@ impl TankSettings {
             vision_angle_deg: 0.0,
             max_speed_m_per_s: 0.0,
             max_force_m_per_s2: 0.0,
+            personal_space_m: 0.0,
+            wander: 0.0,
             fish_count: 200,
             sharks: 0,
             stingrays: 0,
@@ -190,6 +204,8 @@ impl TankSettings {
         params.perception.vision_angle_rad = self.vision_angle_deg.to_radians();
         params.perception.max_speed_m_per_s = self.max_speed_m_per_s;
         params.perception.max_force_m_per_s2 = self.max_force_m_per_s2;
+        params.perception.separation_distance_m = self.personal_space_m;
+        params.wander_weight = self.wander / 100.0 * WANDER_WEIGHT_AT_100;
         params
     }
 
@@ -209,6 +225,8 @@ impl TankSettings {
         self.vision_angle_deg = p.vision_angle_rad.to_degrees().round();
         self.max_speed_m_per_s = p.max_speed_m_per_s;
         self.max_force_m_per_s2 = p.max_force_m_per_s2;
+        self.personal_space_m = p.separation_distance_m;
+        self.wander = (params.wander_weight / WANDER_WEIGHT_AT_100 * 100.0).round();
     }
 
     /// The preset whose values these are, or Custom.
@@ -227,6 +245,8 @@ impl TankSettings {
                         && probe.vision_angle_deg == self.vision_angle_deg
                         && probe.max_speed_m_per_s == self.max_speed_m_per_s
                         && probe.max_force_m_per_s2 == self.max_force_m_per_s2
+                        && probe.personal_space_m == self.personal_space_m
+                        && probe.wander == self.wander
                 }
             })
             .unwrap_or(Preset::Custom)
@@ -283,6 +303,12 @@ impl TankSettings {
             self.max_force_m_per_s2,
             MAX_FORCE_RANGE_M_PER_S2,
         )?;
+        range(
+            "personal_space_m",
+            self.personal_space_m,
+            PERSONAL_SPACE_RANGE_M,
+        )?;
+        range("wander", self.wander, (0.0, WEIGHT_MAX))?;
         for (key, value, max) in [
             ("fish_count", self.fish_count, FISH_COUNT_MAX),
             ("sharks", self.sharks, SHARKS_MAX),
@@ -306,7 +332,8 @@ impl TankSettings {
                 ));
             }
             for (i, obstacle) in obstacles.iter().enumerate() {
-                validate_obstacle(obstacle, tank)
+                obstacle
+                    .validate(tank)
                     .map_err(|reason| (format!("{prefix}obstacles[{i}]"), reason))?;
             }
         }
@@ -326,40 +353,16 @@ impl TankSettings {
         clamp(&mut self.vision_angle_deg, VISION_ANGLE_RANGE_DEG);
         clamp(&mut self.max_speed_m_per_s, MAX_SPEED_RANGE_M_PER_S);
         clamp(&mut self.max_force_m_per_s2, MAX_FORCE_RANGE_M_PER_S2);
+        clamp(&mut self.personal_space_m, PERSONAL_SPACE_RANGE_M);
+        clamp(&mut self.wander, (0.0, WEIGHT_MAX));
         self.fish_count = self.fish_count.min(FISH_COUNT_MAX);
         self.sharks = self.sharks.min(SHARKS_MAX);
         self.stingrays = self.stingrays.min(STINGRAYS_MAX);
         if let Some(obstacles) = &mut self.obstacles {
-            obstacles.retain(|o| validate_obstacle(o, tank).is_ok());
+            obstacles.retain(|o| o.validate(tank).is_ok());
             obstacles.truncate(MAX_OBSTACLES);
         }
     }
-}
-
-/// Checks that a teacher's (or a link's) obstacle is finite and stands inside the
-/// tank.
-fn validate_obstacle(obstacle: &Obstacle, tank: &Tank) -> Result<(), String> {
-    let (center_m, radius_m) = match *obstacle {
-        Obstacle::Rock { center_m, radius_m } => (center_m, radius_m),
-        Obstacle::Cylinder {
-            base_center_m,
-            radius_m,
-            ..
-        } => (base_center_m, radius_m),
-    };
-    if !(center_m.is_finite() && radius_m.is_finite()) {
-        return Err("has a number that is not finite".to_owned());
-    }
-    if !(0.2..=1.5).contains(&radius_m) {
-        return Err(format!("radius {radius_m} m: choose from 0.2 to 1.5 m"));
-    }
-    if !tank.contains(
-        glam::Vec3::new(center_m.x, tank.min_m.y, center_m.z),
-        radius_m,
-    ) {
-        return Err("does not stand inside the tank".to_owned());
-    }
-    Ok(())
 }
 
 /// Most obstacles a tank may hold: plenty for a lesson, bounded for share links.

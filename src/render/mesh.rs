@@ -287,6 +287,40 @@ pub fn rock(center: Vec3, radius: f32, seed: u32, color: [f32; 3]) -> Mesh {
     mesh
 }
 
+/// A vertical prism (reef ledge) over a convex footprint of (x, z) corners, flat
+/// faces, from `base_y` up by `height`.
+pub fn prism(footprint: &[glam::Vec2], base_y: f32, height: f32, color: [f32; 3]) -> Mesh {
+    let mut mesh = Mesh::default();
+    let tint = pack_rgb(color);
+    let mut corners: Vec<glam::Vec2> = footprint.to_vec();
+    if crate::sim::obstacle::signed_area_m2(&corners) < 0.0 {
+        corners.reverse();
+    }
+    let n = corners.len();
+    let at = |c: glam::Vec2, y: f32| vec3(c.x, y, c.y);
+    for i in 0..n {
+        let (a, b) = (corners[i], corners[(i + 1) % n]);
+        let edge = b - a;
+        let normal = vec3(edge.y, 0.0, -edge.x);
+        let ids = [
+            mesh.push(at(a, base_y), normal, Material::Plain, tint),
+            mesh.push(at(a, base_y + height), normal, Material::Plain, tint),
+            mesh.push(at(b, base_y), normal, Material::Plain, tint),
+            mesh.push(at(b, base_y + height), normal, Material::Plain, tint),
+        ];
+        mesh.triangle(ids[0], ids[1], ids[2]);
+        mesh.triangle(ids[2], ids[1], ids[3]);
+    }
+    let top: Vec<u32> = corners
+        .iter()
+        .map(|&c| mesh.push(at(c, base_y + height), Vec3::Y, Material::Plain, tint))
+        .collect();
+    for i in 1..n.saturating_sub(1) {
+        mesh.triangle(top[0], top[i + 1], top[i]);
+    }
+    mesh
+}
+
 /// A vertical pillar (coral column) on the floor, with a rounded cap.
 pub fn pillar(base_center: Vec3, radius: f32, height: f32, color: [f32; 3]) -> Mesh {
     const SEGMENTS: u32 = 20;
@@ -419,14 +453,14 @@ pub fn obstacles(obstacles: &[Obstacle], seed: u64) -> Mesh {
     for (i, obstacle) in obstacles.iter().enumerate() {
         let k = i as u32 + (seed as u32).wrapping_mul(7);
         let warm = (k % 3) as f32 * 0.04;
-        match *obstacle {
-            Obstacle::Rock { center_m, radius_m } => mesh.append(&rock(
+        match obstacle {
+            &Obstacle::Rock { center_m, radius_m } => mesh.append(&rock(
                 center_m,
                 radius_m,
                 k,
                 [0.42 + warm, 0.40 + warm * 0.5, 0.37],
             )),
-            Obstacle::Cylinder {
+            &Obstacle::Cylinder {
                 base_center_m,
                 radius_m,
                 height_m,
@@ -435,6 +469,16 @@ pub fn obstacles(obstacles: &[Obstacle], seed: u64) -> Mesh {
                 radius_m,
                 height_m,
                 [0.78 + warm, 0.52, 0.44 - warm],
+            )),
+            Obstacle::Polygon {
+                footprint_m,
+                base_y_m,
+                height_m,
+            } => mesh.append(&prism(
+                footprint_m,
+                *base_y_m,
+                *height_m,
+                [0.55 + warm, 0.47, 0.40],
             )),
         }
     }

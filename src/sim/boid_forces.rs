@@ -5,14 +5,33 @@
 //! angle: the field of view is a cone of half-angle `vision_angle_rad / 2` around
 //! the heading, leaving a blind cone behind (a vision angle of 300° leaves a 60°
 //! blind cone, as in Tu & Terzopoulos §5). Each force is a steering force in the
-//! papers' form: desired velocity − current velocity, limited to the maximum force
-//! (NOTES.md, "SIMBA steering").
+//! papers' form, desired velocity − current velocity, reached within the
+//! response time and limited to the maximum force (NOTES.md, "SIMBA steering").
+//!
+//! **Topological interaction.** A fish heeds only the `max_neighbours` nearest
+//! fish it sees, not every fish within the vision distance. Ballerini et al. 2008
+//! (PNAS 105:1232) showed that starlings in a flock each interact with their 6–7
+//! nearest neighbours whatever the flock's density; the same "topological range"
+//! keeps a school together when it stretches and keeps the cost per fish
+//! constant when 20,000 fish crowd the tank (with 5 m vision each would otherwise
+//! see thousands). The neighbours are found through the spatial grid, ring by
+//! ring outward from the fish ([`SpatialGrid::k_nearest`]), never by all pairs.
 
 use glam::Vec3;
 
 use super::fish::Fish;
-use super::spatial_grid::SpatialGrid;
+use super::spatial_grid::{Nearest, SpatialGrid};
 use super::steering::limit;
+
+/// Strength of the far field's pull relative to the near neighbours' (0–1).
+/// Default 0.5 (tuned): strong enough to merge schools that see each other
+/// within a minute, weak enough that a fish in a school follows its neighbours.
+pub const FAR_FIELD_SHARE: f32 = 0.5;
+
+/// Default topological range: the neighbours a fish heeds. Default 7, the upper
+/// end of the 6–7 nearest neighbours starlings interact with (Ballerini et al.
+/// 2008).
+pub const TOPOLOGICAL_NEIGHBOURS: usize = 7;
 
 /// What a fish perceives of its neighbours and how hard it may steer.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -25,6 +44,89 @@ pub struct Perception {
     pub max_speed_m_per_s: f32,
     /// Largest steering acceleration, m/s².
     pub max_force_m_per_s2: f32,
+    /// How many of the nearest seen neighbours a fish heeds (topological range,
+    /// at most [`crate::sim::spatial_grid::MAX_NEAREST`]).
+    pub max_neighbours: usize,
+    /// Neighbours closer than this push the fish away (its personal space),
+    /// metres; farther ones only attract and align it.
+    pub separation_distance_m: f32,
+    /// Time in which a steering force would reach its desired velocity, seconds:
+    /// each force is `(desired − current) / response_time`, then limited.
+    pub response_time_s: f32,
+}
+
+/// The school seen from afar: fish bucketed into coarse cells (count and mean
+/// position per cell), so that a fish can find the centre of all the fish it
+/// sees in O(cells), not O(fish). Topological neighbours alone never see a
+/// second school a few metres away; real fish do, and swim to it (schools in a
+/// tank merge). This far field gives cohesion that view.
+#[derive(Clone, Debug, Default)]
+pub struct FarField {
+    /// (mean position, count) of each non-empty coarse cell.
+    cells: Vec<(Vec3, u32)>,
+    sums: Vec<(Vec3, u32)>,
+}
+
+impl FarField {
+    /// Buckets `positions_m` into cubes of side `cell_m` over `min_m..max_m`.
+    pub fn rebuild(&mut self, min_m: Vec3, max_m: Vec3, cell_m: f32, positions_m: &[Vec3]) {
+        let cell_m = if cell_m.is_finite() && cell_m > 0.1 {
+            cell_m
+        } else {
+            1.0
+        };
+        let dims = ((max_m - min_m) / cell_m)
+            .ceil()
+            .max(Vec3::ONE)
+            .min(Vec3::splat(32.0));
+        let (dx, dy, dz) = (dims.x as usize, dims.y as usize, dims.z as usize);
+        self.sums.clear();
+        self.sums.resize(dx * dy * dz, (Vec3::ZERO, 0));
+        for &p in positions_m {
+            let q = ((p - min_m) / cell_m).floor();
+            if !q.is_finite() {
+                continue;
+            }
+            let x = (q.x.max(0.0) as usize).min(dx - 1);
+            let y = (q.y.max(0.0) as usize).min(dy - 1);
+            let z = (q.z.max(0.0) as usize).min(dz - 1);
+            let cell = &mut self.sums[x + dx * (y + dy * z)];
+            cell.0 += p;
+            cell.1 += 1;
+        }
+        self.cells.clear();
+        self.cells.extend(
+            self.sums
+                .iter()
+                .filter(|c| c.1 > 0)
+                .map(|&(sum, n)| (sum / n as f32, n)),
+        );
+    }
+
+    /// Centre of the fish in the cells whose mean position a fish at
+    /// `position_m` heading `heading` sees (within vision distance and angle),
+    /// or `None` if it sees none.
+    pub fn seen_centre_m(
+        &self,
+        position_m: Vec3,
+        heading: Vec3,
+        perception: &Perception,
+    ) -> Option<Vec3> {
+        let half_angle = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
+        let cos_half = half_angle.cos() - 1e-6;
+        let vision_sq = perception.vision_distance_m * perception.vision_distance_m;
+        let mut sum = Vec3::ZERO;
+        let mut count = 0u32;
+        for &(centre, n) in &self.cells {
+            let offset = centre - position_m;
+            let d2 = offset.length_squared();
+            if d2 <= vision_sq && heading.dot(offset) >= cos_half * d2.sqrt() {
+                sum += centre * n as f32;
+                count += n;
+            }
+        }
+        (count > 0).then(|| sum / count as f32)
+    }
 }
 
 /// Separation, alignment and cohesion for one fish.
@@ -33,7 +135,7 @@ pub struct NeighbourForces {
     pub separation_m_per_s2: Vec3,
     pub alignment_m_per_s2: Vec3,
     pub cohesion_m_per_s2: Vec3,
-    /// How many neighbours the fish saw.
+    /// How many neighbours the fish heeded (at most `max_neighbours`).
     pub neighbours: u32,
 }
 
@@ -48,47 +150,122 @@ pub fn sees(position_m: Vec3, heading: Vec3, other_m: Vec3, perception: &Percept
     heading.dot(offset / distance) >= half_angle.cos() - 1e-6
 }
 
-/// The three neighbour forces on `fish[i]`, looking up neighbours in `grid`
-/// (built over the same positions with a cell of at least the vision distance).
+/// A steering force from a desired velocity: `limit((desired − current) /
+/// response_time, max_force)`. A response time of zero or less (or NaN) counts
+/// as instant, i.e. the full maximum force.
+pub fn steer_towards(
+    desired_m_per_s: Vec3,
+    current_m_per_s: Vec3,
+    perception: &Perception,
+) -> Vec3 {
+    let response_time_s = if perception.response_time_s > 0.0 {
+        perception.response_time_s
+    } else {
+        1e-3
+    };
+    limit(
+        (desired_m_per_s - current_m_per_s) / response_time_s,
+        perception.max_force_m_per_s2,
+    )
+}
+
+/// The three neighbour forces on the fish at `positions_m[i]`, heeding its
+/// `max_neighbours` nearest seen neighbours, looked up in `grid` (built over
+/// `positions_m`, any cell size):
 ///
-/// - separation: away from each seen neighbour, weighted by 1/distance
-///   (closer neighbours push harder), desired speed the maximum;
-/// - alignment: towards the seen neighbours' mean heading, at the maximum speed;
-/// - cohesion: seek the seen neighbours' centre.
+/// - separation: away from the heeded neighbours closer than
+///   `separation_distance_m` (each weighted by 1/distance), desired speed the
+///   maximum, scaled by the intrusion Σ (1 − distance / separation distance),
+///   at most 1, so it fades out at the edge of the personal space;
+/// - alignment: towards the heeded neighbours' mean heading, at the maximum speed;
+/// - cohesion: seek the heeded neighbours' centre at the maximum speed, scaled
+///   by min(1, distance to the centre / separation distance) (arrival).
 pub fn neighbour_forces(
     fish: &[Fish],
+    positions_m: &[Vec3],
     i: usize,
     grid: &SpatialGrid,
+    far_field: Option<&FarField>,
     perception: &Perception,
 ) -> NeighbourForces {
     let me = &fish[i];
     let heading = me.heading();
-    let mut away = Vec3::ZERO;
-    let mut velocity_sum = Vec3::ZERO;
-    let mut position_sum = Vec3::ZERO;
-    let mut neighbours = 0u32;
-    grid.for_each_candidate(me.position_m, perception.vision_distance_m, |j| {
-        if j == i || !sees(me.position_m, heading, fish[j].position_m, perception) {
-            return;
-        }
-        let offset = me.position_m - fish[j].position_m;
-        away += offset.normalize_or_zero() / offset.length().max(1e-3);
-        velocity_sum += fish[j].velocity_m_per_s;
-        position_sum += fish[j].position_m;
-        neighbours += 1;
-    });
-    if neighbours == 0 {
+    let half_angle = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
+    let cos_half_angle = half_angle.cos() - 1e-6;
+    let mut nearest = Nearest::new(perception.max_neighbours);
+    grid.k_nearest(
+        me.position_m,
+        positions_m,
+        perception.vision_distance_m,
+        &mut nearest,
+        |j, distance_sq_m2| {
+            if j == i || distance_sq_m2 <= 0.0 {
+                return false;
+            }
+            let offset = positions_m[j] - me.position_m;
+            heading.dot(offset) >= cos_half_angle * distance_sq_m2.sqrt()
+        },
+    );
+    let far_centre_m = far_field.and_then(|f| f.seen_centre_m(me.position_m, heading, perception));
+    if nearest.is_empty() && far_centre_m.is_none() {
         return NeighbourForces::default();
     }
-    let n = neighbours as f32;
-    let steer = |desired: Vec3| limit(desired - me.velocity_m_per_s, perception.max_force_m_per_s2);
+    let mut away = Vec3::ZERO;
+    let mut intrusion = 0.0_f32;
+    let mut velocity_sum = Vec3::ZERO;
+    let mut position_sum = Vec3::ZERO;
+    let separation_m = perception.separation_distance_m.max(0.0);
+    for (j, distance_sq_m2) in nearest.iter() {
+        let offset = me.position_m - positions_m[j];
+        let distance_m = distance_sq_m2.sqrt();
+        if distance_m < separation_m {
+            // Unit direction / distance = offset / distance².
+            away += offset / distance_sq_m2.max(1e-6);
+            intrusion += 1.0 - distance_m / separation_m;
+        }
+        velocity_sum += fish[j].velocity_m_per_s;
+        position_sum += positions_m[j];
+    }
+    let n = (nearest.len() as f32).max(1.0);
+    let speed = perception.max_speed_m_per_s;
+    let steer = |desired: Vec3| steer_towards(desired, me.velocity_m_per_s, perception);
+    // Separation grows as neighbours intrude into the personal space (one
+    // neighbour at half the distance: half strength; at contact: full).
+    let separation_m_per_s2 = steer(away.normalize_or_zero() * speed) * intrusion.min(1.0);
+    // Cohesion "arrives" (Lim & Tan's arrival): it fades out within a personal
+    // space of the neighbours' centre instead of pulling the fish onto it.
+    let to_centre_m = if nearest.is_empty() {
+        Vec3::ZERO
+    } else {
+        position_sum / n - me.position_m
+    };
+    let arrival = if separation_m > 0.0 {
+        (to_centre_m.length() / separation_m).min(1.0)
+    } else {
+        1.0
+    };
+    // Near pull (arriving) plus the far field's pull towards the seen school's
+    // centre, at FAR_FIELD_SHARE of full strength.
+    let near = to_centre_m.normalize_or_zero() * arrival;
+    let far = far_centre_m.map_or(Vec3::ZERO, |c| {
+        (c - me.position_m).normalize_or_zero() * FAR_FIELD_SHARE
+    });
+    let pull = near + far;
+    let cohesion_m_per_s2 = if pull == Vec3::ZERO {
+        Vec3::ZERO
+    } else {
+        steer(pull.normalize_or_zero() * speed) * pull.length().min(1.0)
+    };
+    let alignment_m_per_s2 = if nearest.is_empty() {
+        Vec3::ZERO
+    } else {
+        steer(velocity_sum.normalize_or_zero() * speed)
+    };
     NeighbourForces {
-        separation_m_per_s2: steer(away.normalize_or_zero() * perception.max_speed_m_per_s),
-        alignment_m_per_s2: steer(velocity_sum.normalize_or_zero() * perception.max_speed_m_per_s),
-        cohesion_m_per_s2: steer(
-            (position_sum / n - me.position_m).normalize_or_zero() * perception.max_speed_m_per_s,
-        ),
-        neighbours,
+        separation_m_per_s2,
+        alignment_m_per_s2,
+        cohesion_m_per_s2,
+        neighbours: nearest.len() as u32,
     }
 }
 
@@ -101,7 +278,14 @@ mod tests {
         vision_angle_rad: 300f32.to_radians(),
         max_speed_m_per_s: 0.8,
         max_force_m_per_s2: 1.5,
+        max_neighbours: 7,
+        separation_distance_m: 1.0,
+        response_time_s: 1.0,
     };
+
+    fn positions(fish: &[Fish]) -> Vec<Vec3> {
+        fish.iter().map(|f| f.position_m).collect()
+    }
 
     fn grid_for(fish: &[Fish]) -> SpatialGrid {
         let mut grid = SpatialGrid::default();
@@ -142,7 +326,14 @@ mod tests {
         let close = Fish::new(Vec3::new(0.5, 2.0, 0.3), Vec3::Z * 0.5, 0.4, 0.0);
         let far = Fish::new(Vec3::new(1.5, 2.0, 0.9), Vec3::Z * 0.5, 0.4, 0.0);
         let fish = [me, close, far];
-        let f = neighbour_forces(&fish, 0, &grid_for(&fish), &PERCEPTION);
+        let f = neighbour_forces(
+            &fish,
+            &positions(&fish),
+            0,
+            &grid_for(&fish),
+            None,
+            &PERCEPTION,
+        );
         assert_eq!(f.neighbours, 2);
         assert!(f.separation_m_per_s2.z < 0.0, "away from neighbours at +z");
         assert!(
@@ -166,11 +357,58 @@ mod tests {
     fn a_lone_or_coincident_fish_feels_nothing_and_never_nan() {
         let lone = [Fish::new(Vec3::new(0.0, 2.0, 0.0), Vec3::X, 0.4, 0.0)];
         assert_eq!(
-            neighbour_forces(&lone, 0, &grid_for(&lone), &PERCEPTION),
+            neighbour_forces(
+                &lone,
+                &positions(&lone),
+                0,
+                &grid_for(&lone),
+                None,
+                &PERCEPTION
+            ),
             NeighbourForces::default()
         );
         let twins = [lone[0], lone[0]];
-        let f = neighbour_forces(&twins, 0, &grid_for(&twins), &PERCEPTION);
+        let f = neighbour_forces(
+            &twins,
+            &positions(&twins),
+            0,
+            &grid_for(&twins),
+            None,
+            &PERCEPTION,
+        );
         assert!(f.separation_m_per_s2.is_finite() && f.cohesion_m_per_s2.is_finite());
+    }
+
+    #[test]
+    fn a_fish_heeds_only_its_seven_nearest_seen_neighbours() {
+        // Twenty neighbours in a row ahead: only the seven nearest count, so the
+        // cohesion pulls towards them, not towards the whole row's middle.
+        let mut fish = vec![Fish::new(
+            Vec3::new(-5.0, 2.0, 0.0),
+            Vec3::X * 0.5,
+            0.4,
+            0.0,
+        )];
+        for k in 1..=20 {
+            fish.push(Fish::new(
+                Vec3::new(-5.0 + 0.2 * k as f32, 2.0, 0.0),
+                Vec3::X * 0.5,
+                0.4,
+                0.0,
+            ));
+        }
+        let perception = Perception {
+            vision_distance_m: 5.0,
+            ..PERCEPTION
+        };
+        let f = neighbour_forces(
+            &fish,
+            &positions(&fish),
+            0,
+            &grid_for(&fish),
+            None,
+            &perception,
+        );
+        assert_eq!(f.neighbours, 7);
     }
 }

@@ -1,14 +1,53 @@
-//! Solid things in the tank that fish must swim around: rocks and pillars.
+//! Solid things in the tank that fish must swim around: rocks, pillars and
+//! polygonal prisms (Lim & Tan's SIMBA paper implements "polygon, wall and rock"
+//! obstacles; NOTES.md "SIMBA steering").
 //!
 //! Each obstacle is described by a signed distance function (SDF): the
 //! distance from a point to the obstacle's surface, negative inside. Steering
 //! and the hard "no fish inside a rock" rule are both built on it.
+//!
+//! Obstacles are plain data (serde, internally tagged by `kind`) so that a
+//! teacher's edited layout can be saved and loaded; [`Obstacle::validate`]
+//! checks one against the tank before the world accepts it.
 
 use glam::{Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 
+use super::tank::Tank;
+
+/// Smallest radius of a rock or pillar, in metres. Default 0.1 m: about a
+/// third of a fish; anything smaller would not be seen as an obstacle.
+pub const MIN_RADIUS_M: f32 = 0.1;
+
+/// Largest radius of a rock or pillar, in metres. Default 1.5 m: a boulder
+/// 3 m across still leaves the 8 m deep tank room to swim around it.
+pub const MAX_RADIUS_M: f32 = 1.5;
+
+/// Fewest and most corners of a polygon footprint. Default 3–12: a triangle is
+/// the simplest closed shape; 12 corners draw any reef ledge a teacher needs and
+/// keep the distance computation cheap.
+pub const POLYGON_VERTICES: std::ops::RangeInclusive<usize> = 3..=12;
+
+/// Smallest footprint area of a polygon, in m². Default 0.01 m² (10 cm × 10 cm):
+/// rejects degenerate polygons (all corners on a line) that would have no inside.
+pub const MIN_POLYGON_AREA_M2: f32 = 0.01;
+
+/// Shortest polygon edge, in metres. Default 0.05 m: rejects repeated corners,
+/// whose edge would have no direction.
+pub const MIN_POLYGON_EDGE_M: f32 = 0.05;
+
+/// Gap between an obstacle's footprint and the side walls, in metres.
+/// Default 1.0 m: fish can swim behind every obstacle, and pushing a fish out
+/// of an obstacle can never push it out of the tank.
+pub const WALL_CLEARANCE_M: f32 = 1.0;
+
+/// Smallest gap between an obstacle's top and the water surface, in metres.
+/// Default 0.5 m: fish can always swim over an obstacle.
+pub const SURFACE_CLEARANCE_M: f32 = 0.5;
+
 /// A solid obstacle. Sizes in metres.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Obstacle {
     /// A round rock (a sphere), often half-buried in the sand.
     Rock {
@@ -30,16 +69,28 @@ pub enum Obstacle {
         /// Height above the base in metres.
         height_m: f32,
     },
+    /// A vertical prism over a convex polygon (e.g. a reef ledge): the footprint
+    /// `footprint_m` in the (x, z) plane, from `base_y_m` up to
+    /// `base_y_m + height_m`. Rooted in the sand like a pillar.
+    Polygon {
+        /// Corners of the convex footprint as (x, z) in metres, in order around
+        /// it (either direction), 3–12 of them.
+        footprint_m: Vec<Vec2>,
+        /// Height of the bottom face in metres (the floor).
+        base_y_m: f32,
+        /// Height above the base in metres.
+        height_m: f32,
+    },
 }
 
 impl Obstacle {
     /// Signed distance from `p_m` to the surface in metres: positive outside,
     /// zero on the surface, negative inside.
     pub fn signed_distance_m(&self, p_m: Vec3) -> f32 {
-        match *self {
-            Obstacle::Rock { center_m, radius_m } => (p_m - center_m).length() - radius_m,
-            Obstacle::Cylinder { .. } => {
-                let d = self.cylinder_face_distances_m(p_m);
+        match self {
+            Obstacle::Rock { center_m, radius_m } => (p_m - *center_m).length() - radius_m,
+            Obstacle::Cylinder { .. } | Obstacle::Polygon { .. } => {
+                let d = self.prism_face_distances_m(p_m).0;
                 // Inside: the nearest face (both parts ≤ 0). Outside: the
                 // Euclidean distance to the side, the top or the rim.
                 d.max_element().min(0.0) + d.max(Vec2::ZERO).length()
@@ -51,12 +102,10 @@ impl Obstacle {
     /// which the signed distance grows fastest. Never NaN; at a rock's exact
     /// centre it is up (+y), on a pillar's axis it is +x or up.
     pub fn outward_normal(&self, p_m: Vec3) -> Vec3 {
-        match *self {
-            Obstacle::Rock { center_m, .. } => (p_m - center_m).normalize_or(Vec3::Y),
-            Obstacle::Cylinder { base_center_m, .. } => {
-                let d = self.cylinder_face_distances_m(p_m);
-                let radial = (p_m - base_center_m) * Vec3::new(1.0, 0.0, 1.0);
-                let side = radial.normalize_or(Vec3::X);
+        match self {
+            Obstacle::Rock { center_m, .. } => (p_m - *center_m).normalize_or(Vec3::Y),
+            Obstacle::Cylinder { .. } | Obstacle::Polygon { .. } => {
+                let (d, side) = self.prism_face_distances_m(p_m);
                 if d.x <= 0.0 && d.y <= 0.0 {
                     // Inside: out through the nearest face.
                     if d.x > d.y { side } else { Vec3::Y }
@@ -82,51 +131,350 @@ impl Obstacle {
     }
 
     /// The point of the obstacle's core nearest to `p_m`: a rock's centre, or
-    /// the point of a pillar's axis at the height of `p_m` (clamped to the
-    /// pillar). Obstacle avoidance steers away from this point.
+    /// the point of a pillar's axis (a polygon's: the vertical line through
+    /// its corners' mean) at the height of `p_m`, clamped to the obstacle.
+    /// Obstacle avoidance steers away from this point.
     pub fn core_point_m(&self, p_m: Vec3) -> Vec3 {
-        match *self {
-            Obstacle::Rock { center_m, .. } => center_m,
-            Obstacle::Cylinder {
-                base_center_m,
-                height_m,
-                ..
-            } => {
-                let top_y_m = base_center_m.y + height_m.max(0.0);
-                Vec3::new(
-                    base_center_m.x,
-                    p_m.y.max(base_center_m.y).min(top_y_m),
-                    base_center_m.z,
-                )
+        match self {
+            Obstacle::Rock { center_m, .. } => *center_m,
+            Obstacle::Cylinder { .. } | Obstacle::Polygon { .. } => {
+                let (base_y_m, top_y_m) = self.vertical_extent_m();
+                let axis = self.footprint_center_m();
+                Vec3::new(axis.x, p_m.y.max(base_y_m).min(top_y_m), axis.y)
             }
         }
     }
 
-    /// The obstacle's radius in metres (rock or pillar).
+    /// Radius of the obstacle's bounding circle (sphere for a rock) around
+    /// its core, in metres: the radius of a rock or pillar, the largest
+    /// distance from a polygon's centre to a corner.
     pub fn radius_m(&self) -> f32 {
-        match *self {
-            Obstacle::Rock { radius_m, .. } | Obstacle::Cylinder { radius_m, .. } => radius_m,
+        match self {
+            Obstacle::Rock { radius_m, .. } | Obstacle::Cylinder { radius_m, .. } => *radius_m,
+            Obstacle::Polygon { footprint_m, .. } => {
+                let c = self.footprint_center_m();
+                footprint_m
+                    .iter()
+                    .map(|v| v.distance(c))
+                    .fold(0.0, f32::max)
+            }
         }
     }
 
-    /// For a pillar: (distance outside the side wall, distance above the
-    /// top), each negative when inside that face.
-    fn cylinder_face_distances_m(&self, p_m: Vec3) -> Vec2 {
-        match *self {
+    /// Centre of the footprint on the floor, (x, z) in metres: a rock's or
+    /// pillar's centre, the mean of a polygon's corners.
+    pub fn footprint_center_m(&self) -> Vec2 {
+        match self {
+            Obstacle::Rock { center_m: c, .. }
+            | Obstacle::Cylinder {
+                base_center_m: c, ..
+            } => Vec2::new(c.x, c.z),
+            Obstacle::Polygon { footprint_m, .. } => {
+                footprint_m.iter().copied().sum::<Vec2>() / footprint_m.len().max(1) as f32
+            }
+        }
+    }
+
+    /// The same obstacle moved horizontally so that its footprint centre is at
+    /// `floor_xz_m` (height unchanged).
+    pub fn moved_to(&self, floor_xz_m: Vec2) -> Obstacle {
+        let shift = floor_xz_m - self.footprint_center_m();
+        let shift3 = Vec3::new(shift.x, 0.0, shift.y);
+        match self {
+            Obstacle::Rock { center_m, radius_m } => Obstacle::Rock {
+                center_m: *center_m + shift3,
+                radius_m: *radius_m,
+            },
+            Obstacle::Cylinder {
+                base_center_m,
+                radius_m,
+                height_m,
+            } => Obstacle::Cylinder {
+                base_center_m: *base_center_m + shift3,
+                radius_m: *radius_m,
+                height_m: *height_m,
+            },
+            Obstacle::Polygon {
+                footprint_m,
+                base_y_m,
+                height_m,
+            } => Obstacle::Polygon {
+                footprint_m: footprint_m.iter().map(|v| *v + shift).collect(),
+                base_y_m: *base_y_m,
+                height_m: *height_m,
+            },
+        }
+    }
+
+    /// Checks that the obstacle can be put in `tank`: every number finite, the
+    /// footprint at least [`WALL_CLEARANCE_M`] from the glass, the top at least
+    /// [`SURFACE_CLEARANCE_M`] below the surface, standing on (or, for a rock,
+    /// sunk into) the sand, a radius in [`MIN_RADIUS_M`]..=[`MAX_RADIUS_M`], and a
+    /// polygon with 3–12 corners that form a convex, non-degenerate footprint.
+    /// The error says what is wrong in words a teacher understands.
+    pub fn validate(&self, tank: &Tank) -> Result<(), String> {
+        const FLOOR_TOLERANCE_M: f32 = 0.01;
+        let floor_y_m = tank.min_m.y;
+        let top_limit_m = tank.max_m.y - SURFACE_CLEARANCE_M;
+        let check_radius = |radius_m: f32| {
+            if !radius_m.is_finite() || !(MIN_RADIUS_M..=MAX_RADIUS_M).contains(&radius_m) {
+                Err(format!(
+                    "the radius must be between {MIN_RADIUS_M} m and {MAX_RADIUS_M} m (got {radius_m} m)"
+                ))
+            } else {
+                Ok(())
+            }
+        };
+        let check_inside = |p: Vec2, reach_m: f32| {
+            let fits = p.x - reach_m >= tank.min_m.x + WALL_CLEARANCE_M - 1e-4
+                && p.x + reach_m <= tank.max_m.x - WALL_CLEARANCE_M + 1e-4
+                && p.y - reach_m >= tank.min_m.z + WALL_CLEARANCE_M - 1e-4
+                && p.y + reach_m <= tank.max_m.z - WALL_CLEARANCE_M + 1e-4;
+            if fits {
+                Ok(())
+            } else {
+                Err(format!(
+                    "it must stay at least {WALL_CLEARANCE_M} m away from the glass (at ({:.2}, {:.2}) m)",
+                    p.x, p.y
+                ))
+            }
+        };
+        let check_height = |base_y_m: f32, height_m: f32| {
+            if !base_y_m.is_finite() || !height_m.is_finite() {
+                return Err("its position and height must be numbers".to_owned());
+            }
+            if (base_y_m - floor_y_m).abs() > FLOOR_TOLERANCE_M {
+                return Err(format!(
+                    "it must stand on the sand (base at y = {floor_y_m} m, got {base_y_m} m)"
+                ));
+            }
+            if height_m <= 0.0 || base_y_m + height_m > top_limit_m {
+                return Err(format!(
+                    "its height must be above 0 m and its top at least {SURFACE_CLEARANCE_M} m below the surface (height {height_m} m)"
+                ));
+            }
+            Ok(())
+        };
+        match self {
+            Obstacle::Rock { center_m, radius_m } => {
+                if !center_m.is_finite() {
+                    return Err("the rock's position must be numbers".to_owned());
+                }
+                check_radius(*radius_m)?;
+                check_inside(Vec2::new(center_m.x, center_m.z), *radius_m)?;
+                if center_m.y + radius_m <= floor_y_m + MIN_RADIUS_M {
+                    return Err("the rock is buried in the sand: raise its centre".to_owned());
+                }
+                if center_m.y - radius_m > floor_y_m + FLOOR_TOLERANCE_M {
+                    return Err("the rock floats: it must touch the sand".to_owned());
+                }
+                if center_m.y + radius_m > top_limit_m {
+                    return Err(format!(
+                        "the rock's top must be at least {SURFACE_CLEARANCE_M} m below the surface"
+                    ));
+                }
+                Ok(())
+            }
             Obstacle::Cylinder {
                 base_center_m,
                 radius_m,
                 height_m,
             } => {
-                let offset = p_m - base_center_m;
-                Vec2::new(
-                    Vec2::new(offset.x, offset.z).length() - radius_m,
-                    offset.y - height_m,
-                )
+                if !base_center_m.is_finite() {
+                    return Err("the pillar's position must be numbers".to_owned());
+                }
+                check_radius(*radius_m)?;
+                check_inside(Vec2::new(base_center_m.x, base_center_m.z), *radius_m)?;
+                check_height(base_center_m.y, *height_m)
             }
-            Obstacle::Rock { .. } => Vec2::ZERO,
+            Obstacle::Polygon {
+                footprint_m,
+                base_y_m,
+                height_m,
+            } => {
+                if !POLYGON_VERTICES.contains(&footprint_m.len()) {
+                    return Err(format!(
+                        "a polygon needs {} to {} corners (got {})",
+                        POLYGON_VERTICES.start(),
+                        POLYGON_VERTICES.end(),
+                        footprint_m.len()
+                    ));
+                }
+                if footprint_m.iter().any(|v| !v.is_finite()) {
+                    return Err("every corner must be a pair of numbers".to_owned());
+                }
+                for v in footprint_m {
+                    check_inside(*v, 0.0)?;
+                }
+                let n = footprint_m.len();
+                for i in 0..n {
+                    if footprint_m[i].distance(footprint_m[(i + 1) % n]) < MIN_POLYGON_EDGE_M {
+                        return Err(format!(
+                            "corners {} and {} are closer than {MIN_POLYGON_EDGE_M} m",
+                            i + 1,
+                            (i + 1) % n + 1
+                        ));
+                    }
+                }
+                let area_m2 = signed_area_m2(footprint_m);
+                if area_m2.abs() < MIN_POLYGON_AREA_M2 {
+                    return Err(format!(
+                        "the polygon is flat: its area is below {MIN_POLYGON_AREA_M2} m²"
+                    ));
+                }
+                // Convex: every turn goes the same way as the whole outline.
+                for i in 0..n {
+                    let (a, b, c) = (
+                        footprint_m[i],
+                        footprint_m[(i + 1) % n],
+                        footprint_m[(i + 2) % n],
+                    );
+                    if (b - a).perp_dot(c - b) * area_m2.signum() < 0.0 {
+                        return Err(format!(
+                            "the polygon must be convex (it bends inwards at corner {})",
+                            (i + 1) % n + 1
+                        ));
+                    }
+                }
+                check_height(*base_y_m, *height_m)
+            }
         }
     }
+
+    /// Lowest and highest y of the obstacle, in metres.
+    pub fn vertical_extent_m(&self) -> (f32, f32) {
+        match self {
+            Obstacle::Rock { center_m, radius_m } => (center_m.y - radius_m, center_m.y + radius_m),
+            Obstacle::Cylinder {
+                base_center_m: Vec3 { y, .. },
+                height_m,
+                ..
+            }
+            | Obstacle::Polygon {
+                base_y_m: y,
+                height_m,
+                ..
+            } => (*y, *y + height_m.max(0.0)),
+        }
+    }
+
+    /// For a pillar or polygon prism: (distance outside the side wall, distance
+    /// above the top), each negative when inside that face, and the horizontal
+    /// unit direction out through the nearest side.
+    fn prism_face_distances_m(&self, p_m: Vec3) -> (Vec2, Vec3) {
+        match self {
+            Obstacle::Cylinder {
+                base_center_m,
+                radius_m,
+                height_m,
+            } => {
+                let offset = p_m - *base_center_m;
+                let radial = Vec2::new(offset.x, offset.z);
+                let side = Vec3::new(radial.x, 0.0, radial.y).normalize_or(Vec3::X);
+                (
+                    Vec2::new(radial.length() - radius_m, offset.y - height_m),
+                    side,
+                )
+            }
+            Obstacle::Polygon {
+                footprint_m,
+                base_y_m,
+                height_m,
+            } => {
+                let (distance_m, side) = polygon_distance_m(footprint_m, Vec2::new(p_m.x, p_m.z));
+                (
+                    Vec2::new(distance_m, p_m.y - base_y_m - height_m),
+                    Vec3::new(side.x, 0.0, side.y),
+                )
+            }
+            Obstacle::Rock { .. } => (Vec2::ZERO, Vec3::Y),
+        }
+    }
+}
+
+/// The signed area of a closed polygon in m² (shoelace formula),
+/// positive for counter-clockwise corners in the (x, z) plane.
+pub fn signed_area_m2(vertices_m: &[Vec2]) -> f32 {
+    let n = vertices_m.len();
+    (0..n)
+        .map(|i| vertices_m[i].perp_dot(vertices_m[(i + 1) % n]))
+        .sum::<f32>()
+        * 0.5
+}
+
+/// Signed distance from `q` to a convex polygon's outline in the plane
+/// (negative inside) and the unit direction out of the polygon there: away
+/// from the nearest outline point outside, the nearest edge's outward normal
+/// inside. A polygon with fewer than 3 corners has no inside.
+fn polygon_distance_m(vertices_m: &[Vec2], q: Vec2) -> (f32, Vec2) {
+    let n = vertices_m.len();
+    if n == 0 {
+        return (f32::INFINITY, Vec2::X);
+    }
+    let orientation = signed_area_m2(vertices_m).signum();
+    let mut best_d2 = f32::INFINITY;
+    let mut best_point = vertices_m[0];
+    let mut best_edge_normal = Vec2::X;
+    let mut inside = n >= 3 && orientation != 0.0;
+    for i in 0..n {
+        let (a, b) = (vertices_m[i], vertices_m[(i + 1) % n]);
+        let edge = b - a;
+        let t = ((q - a).dot(edge) / edge.length_squared().max(1e-12)).clamp(0.0, 1.0);
+        let point = a + edge * t;
+        let d2 = q.distance_squared(point);
+        // Outward normal: right of the edge for a counter-clockwise outline.
+        let normal = Vec2::new(edge.y, -edge.x).normalize_or_zero() * orientation;
+        if d2 < best_d2 {
+            best_d2 = d2;
+            best_point = point;
+            best_edge_normal = normal;
+        }
+        if (q - a).dot(normal) > 0.0 {
+            inside = false;
+        }
+    }
+    let distance_m = best_d2.sqrt();
+    if inside {
+        (-distance_m, best_edge_normal.normalize_or(Vec2::X))
+    } else {
+        (
+            distance_m,
+            (q - best_point).normalize_or(best_edge_normal.normalize_or(Vec2::X)),
+        )
+    }
+}
+
+/// The convex hull of `points` (Andrew's monotone chain), counter-clockwise in
+/// the (x, z) plane, without repeated or collinear corners.
+pub fn convex_hull(points: &[Vec2]) -> Vec<Vec2> {
+    let mut sorted: Vec<Vec2> = points.iter().copied().filter(|p| p.is_finite()).collect();
+    sorted.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    sorted.dedup();
+    if sorted.len() < 3 {
+        return sorted;
+    }
+    let mut hull: Vec<Vec2> = Vec::with_capacity(sorted.len() * 2);
+    for pass in 0..2 {
+        let start = hull.len();
+        let iter: Box<dyn Iterator<Item = &Vec2>> = if pass == 0 {
+            Box::new(sorted.iter())
+        } else {
+            Box::new(sorted.iter().rev())
+        };
+        for &p in iter {
+            while hull.len() >= start + 2 {
+                let (a, b) = (hull[hull.len() - 2], hull[hull.len() - 1]);
+                if (b - a).perp_dot(p - b) <= 0.0 {
+                    hull.pop();
+                } else {
+                    break;
+                }
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    hull
 }
 
 #[cfg(test)]

@@ -132,6 +132,237 @@ pub fn seek(pos_m: Vec3, vel_m_per_s: Vec3, target_m: Vec3, max_speed_m_per_s: f
     desired_m_per_s - vel_m_per_s
 }
 
+/// Longest look into the future that [`pursue`] and [`evade`] use, in seconds.
+/// Default 2 s: Reynolds' prediction `T = distance / speed` grows without bound
+/// for a far target; beyond a couple of seconds a fish's path is no longer
+/// predictable from its velocity (it turns within about a second).
+pub const MAX_PREDICTION_S: f32 = 2.0;
+
+/// Flee: steer straight away from `threat_m` at `max_speed_m_per_s`
+/// (Lim & Tan's eq. 1 with the flee sign; NOTES.md "SIMBA steering").
+///
+/// `desired = normalize(pos − threat) · max_speed`,
+/// `steering = limit(desired − vel, max_force)`. A fish exactly at the threat
+/// has no direction to flee in and gets zero desired velocity.
+pub fn flee(
+    pos_m: Vec3,
+    vel_m_per_s: Vec3,
+    threat_m: Vec3,
+    max_speed_m_per_s: f32,
+    max_force_m_per_s2: f32,
+) -> Vec3 {
+    let desired_m_per_s = (pos_m - threat_m).normalize_or_zero() * max_speed_m_per_s;
+    limit(desired_m_per_s - vel_m_per_s, max_force_m_per_s2)
+}
+
+/// Arrive: seek `target_m`, slowing down inside `arrival_distance_m` so that the
+/// fish stops at the target instead of overshooting (Lim & Tan, "arrival").
+///
+/// With `d = ‖target − pos‖`: `speed = max_speed · min(1, d / arrival_distance)`,
+/// `desired = normalize(target − pos) · speed`,
+/// `steering = limit(desired − vel, max_force)`. An arrival distance of zero or
+/// less behaves like [`seek`] (limited).
+pub fn arrive(
+    pos_m: Vec3,
+    vel_m_per_s: Vec3,
+    target_m: Vec3,
+    max_speed_m_per_s: f32,
+    arrival_distance_m: f32,
+    max_force_m_per_s2: f32,
+) -> Vec3 {
+    let offset_m = target_m - pos_m;
+    let distance_m = offset_m.length();
+    let ramp = if arrival_distance_m > 0.0 {
+        (distance_m / arrival_distance_m).min(1.0)
+    } else {
+        1.0
+    };
+    let desired_m_per_s = offset_m.normalize_or_zero() * max_speed_m_per_s * ramp;
+    limit(desired_m_per_s - vel_m_per_s, max_force_m_per_s2)
+}
+
+/// Where a target at `target_m` moving at `target_vel_m_per_s` will be when a
+/// pursuer at `pos_m` (top speed `max_speed_m_per_s`) could reach it (Reynolds
+/// 1999): `T = min(distance / max_speed, MAX_PREDICTION_S)`,
+/// `future = target + target_vel · T`.
+pub fn predicted_position_m(
+    pos_m: Vec3,
+    target_m: Vec3,
+    target_vel_m_per_s: Vec3,
+    max_speed_m_per_s: f32,
+) -> Vec3 {
+    let distance_m = pos_m.distance(target_m);
+    let t_s = if max_speed_m_per_s > 0.0 {
+        (distance_m / max_speed_m_per_s).min(MAX_PREDICTION_S)
+    } else {
+        MAX_PREDICTION_S
+    };
+    let future_m = target_m + target_vel_m_per_s * t_s;
+    if future_m.is_finite() {
+        future_m
+    } else {
+        target_m
+    }
+}
+
+/// Pursue: seek where the target is going to be, not where it is (Reynolds
+/// 1999): `steering = limit(seek(pos, vel, predicted_position_m(…), max_speed), max_force)`.
+/// A shark uses it to cut a fleeing fish off.
+pub fn pursue(
+    pos_m: Vec3,
+    vel_m_per_s: Vec3,
+    target_m: Vec3,
+    target_vel_m_per_s: Vec3,
+    max_speed_m_per_s: f32,
+    max_force_m_per_s2: f32,
+) -> Vec3 {
+    let future_m = predicted_position_m(pos_m, target_m, target_vel_m_per_s, max_speed_m_per_s);
+    limit(
+        seek(pos_m, vel_m_per_s, future_m, max_speed_m_per_s),
+        max_force_m_per_s2,
+    )
+}
+
+/// Evade: flee from where the threat is going to be (Reynolds 1999):
+/// `steering = flee(pos, vel, predicted_position_m(…), max_speed, max_force)`,
+/// the prediction using the threat's own top speed would be more exact but the
+/// fish only knows its own, as in Reynolds' formulation.
+pub fn evade(
+    pos_m: Vec3,
+    vel_m_per_s: Vec3,
+    threat_m: Vec3,
+    threat_vel_m_per_s: Vec3,
+    max_speed_m_per_s: f32,
+    max_force_m_per_s2: f32,
+) -> Vec3 {
+    let future_m = predicted_position_m(pos_m, threat_m, threat_vel_m_per_s, max_speed_m_per_s);
+    flee(
+        pos_m,
+        vel_m_per_s,
+        future_m,
+        max_speed_m_per_s,
+        max_force_m_per_s2,
+    )
+}
+
+/// How strongly [`follow_wall`] turns the velocity's into-the-wall part around,
+/// dimensionless (the paper's k1). Default 0.3 (chosen): the fish ends up
+/// swimming along the wall and slightly away from it, not bouncing back.
+pub const WALL_AWAY_GAIN: f32 = 0.3;
+
+/// How much of the velocity's along-the-wall part [`follow_wall`] keeps,
+/// dimensionless (the paper's k2). Default 1 (chosen): the fish keeps swimming
+/// along the wall at its speed.
+pub const WALL_ALONG_GAIN: f32 = 1.0;
+
+/// Wall following, Lim & Tan's wall algorithm (SIMBA paper Figs 3–5; NOTES.md
+/// "SIMBA steering"): steer along the wall instead of reversing.
+///
+/// The paper works in 2-D with a wall from A to B: `norm = normalise(A − B)`,
+/// `dir = (norm.y, −norm.x)`, `a1 = forward·dir`, `a2 = forward·norm`,
+/// `dv = −a1·dir·k1 + a2·norm·k2`, `steering = dv − forward`. Here, in 3-D,
+/// `wall_normal` is the unit normal pointing *out of the water into the wall*
+/// (the paper's `dir`, up to a sign that cancels in `a1·dir`), the
+/// along-the-wall part is everything of the velocity that is not along the
+/// normal (the paper's `a2·norm`, now including up and down):
+///
+/// - `a1 = vel·n`, `along = vel − a1·n`;
+/// - if the along part is (nearly) zero — a fish swimming straight at the
+///   glass — it is replaced by `tie_break` (the caller passes e.g. the
+///   direction along the wall towards open water) so the fish turns instead of
+///   reversing;
+/// - `dv = −a1·n·k1 + along·k2`, rescaled to the current speed (a turn, not a
+///   brake), `steering = limit(dv − vel, max_force)`.
+///
+/// Applied only when the fish is within `range_m` of the wall
+/// (`distance_m < range_m`) and heading in (`a1 > 0`); zero otherwise. Because
+/// the force has no component along the wall (for k2 = 1), the fish's
+/// velocity along the wall keeps its sign while the into-the-wall part turns
+/// round: it ends up parallel to the wall or leaving it.
+#[allow(clippy::too_many_arguments)]
+pub fn follow_wall(
+    vel_m_per_s: Vec3,
+    wall_normal: Vec3,
+    distance_m: f32,
+    range_m: f32,
+    tie_break: Vec3,
+    k_away: f32,
+    k_along: f32,
+    max_force_m_per_s2: f32,
+) -> Vec3 {
+    let a1 = vel_m_per_s.dot(wall_normal);
+    if !(distance_m < range_m && a1 > 0.0) {
+        return Vec3::ZERO;
+    }
+    let speed_m_per_s = vel_m_per_s.length();
+    let mut along_m_per_s = vel_m_per_s - wall_normal * a1;
+    if along_m_per_s.length() < 0.05 * speed_m_per_s {
+        let side = tie_break - wall_normal * tie_break.dot(wall_normal);
+        along_m_per_s = side.normalize_or_zero() * speed_m_per_s;
+    }
+    let dv_m_per_s = -wall_normal * a1 * k_away + along_m_per_s * k_along;
+    let desired_m_per_s = dv_m_per_s.normalize_or_zero() * speed_m_per_s;
+    limit(desired_m_per_s - vel_m_per_s, max_force_m_per_s2)
+}
+
+/// The four vertical glass walls by [`follow_wall`]: for each wall within
+/// `range_m` that the animal heads into, a turn along it (two at a corner,
+/// summed), at most `max_force_m_per_s2`. The tie-break for an animal aimed
+/// straight at the glass is the direction along the wall towards the middle of
+/// the tank, so one in a corner turns out of it.
+pub fn glass_walls(
+    pos_m: Vec3,
+    vel_m_per_s: Vec3,
+    tank: &Tank,
+    range_m: f32,
+    max_force_m_per_s2: f32,
+) -> Vec3 {
+    let to_middle = (tank.center_m() - pos_m) * Vec3::new(1.0, 0.0, 1.0);
+    let walls = [
+        (Vec3::NEG_X, pos_m.x - tank.min_m.x),
+        (Vec3::X, tank.max_m.x - pos_m.x),
+        (Vec3::NEG_Z, pos_m.z - tank.min_m.z),
+        (Vec3::Z, tank.max_m.z - pos_m.z),
+    ];
+    let mut steering = Vec3::ZERO;
+    for (normal, distance_m) in walls {
+        steering += follow_wall(
+            vel_m_per_s,
+            normal,
+            distance_m,
+            range_m,
+            to_middle,
+            WALL_AWAY_GAIN,
+            WALL_ALONG_GAIN,
+            max_force_m_per_s2,
+        );
+    }
+    limit(steering, max_force_m_per_s2)
+}
+
+/// Containment of the boid layer: [`glass_walls`] (Lim & Tan's wall
+/// algorithm) plus the floor and surface handling of [`containment`] (pitch up
+/// or down, from `params`' look-ahead and margin), at most `max_force_m_per_s2`.
+pub fn contain_in_tank(
+    pos_m: Vec3,
+    vel_m_per_s: Vec3,
+    tank: &Tank,
+    range_m: f32,
+    params: &SteeringParams,
+    max_force_m_per_s2: f32,
+) -> Vec3 {
+    let walls = glass_walls(pos_m, vel_m_per_s, tank, range_m, max_force_m_per_s2);
+    let vertical = floor_and_surface(
+        pos_m,
+        vel_m_per_s,
+        tank,
+        params.containment_look_ahead_s,
+        params.containment_margin_m,
+        params.max_speed_m_per_s,
+    );
+    limit(walls + vertical, max_force_m_per_s2)
+}
+
 /// Wander: Reynolds' random but smooth swimming.
 ///
 /// A circle of radius `wander_radius_m` lies `wander_distance_m` ahead of the
@@ -212,13 +443,41 @@ pub fn containment(
     } else {
         Vec3::ZERO
     };
-    let pitch = if future_m.y != safe_m.y {
-        let up_or_down = Vec3::Y * (safe_m.y - future_m.y).signum();
-        turn_towards(up_or_down, vel_m_per_s.normalize_or_zero(), right)
-    } else {
-        Vec3::ZERO
-    };
-    (yaw + pitch) * max_speed_m_per_s
+    yaw * max_speed_m_per_s
+        + floor_and_surface(
+            pos_m,
+            vel_m_per_s,
+            tank,
+            look_ahead_s,
+            margin_m,
+            max_speed_m_per_s,
+        )
+}
+
+/// The floor-and-surface half of [`containment`]: if the path predicted
+/// `look_ahead_s` ahead comes within `margin_m` of the sand or the surface,
+/// pitch up or down, perpendicular to the heading:
+/// `u` = ±y towards the safe height, `h` = heading,
+/// `steering = normalize(u − (u·h) h) · max_speed`; zero otherwise.
+pub fn floor_and_surface(
+    pos_m: Vec3,
+    vel_m_per_s: Vec3,
+    tank: &Tank,
+    look_ahead_s: f32,
+    margin_m: f32,
+    max_speed_m_per_s: f32,
+) -> Vec3 {
+    let future_m = pos_m + vel_m_per_s * look_ahead_s;
+    let safe_m = tank.clamp_inside(future_m, margin_m);
+    if future_m.y == safe_m.y {
+        return Vec3::ZERO;
+    }
+    let up_or_down = Vec3::Y * (safe_m.y - future_m.y).signum();
+    turn_towards(
+        up_or_down,
+        vel_m_per_s.normalize_or_zero(),
+        horizontal_side(vel_m_per_s),
+    ) * max_speed_m_per_s
 }
 
 /// The unit direction, perpendicular to `heading`, in which the heading must
@@ -231,25 +490,30 @@ fn turn_towards(goal: Vec3, heading: Vec3, tie_break: Vec3) -> Vec3 {
     (goal - heading * goal.dot(heading)).normalize_or(tie_break)
 }
 
-/// Obstacle avoidance: swerve around the nearest obstacle in the fish's path.
+/// Obstacle avoidance: sway around the nearest obstacle in the path, Lim &
+/// Tan's rock algorithm (SIMBA paper Figs 6–7; NOTES.md "SIMBA steering"):
+/// "steer along the agent's right (or left) vector with a force inversely
+/// proportional to the remaining range", so the fish sways instead of
+/// reversing.
 ///
 /// An obstacle is "in the path" if its core (a rock's centre, or the point of
-/// a pillar's axis at the fish's height) lies ahead, no further than
-/// `look_ahead_m` plus its radius, and the straight path passes closer to the
-/// core than radius + [`AVOIDANCE_CLEARANCE_M`]. For the one whose surface is
-/// nearest, with `offset` the vector from the path to the core
-/// (perpendicular to the velocity) and `d` the current distance to its
-/// surface:
+/// a pillar's or polygon's axis at the fish's height) lies ahead, no further
+/// than `look_ahead_m` plus its (bounding) radius, and the straight path passes
+/// closer to the core than radius + `clearance_m`. For the one whose surface is
+/// nearest, with `offset` the vector from the path to the core (perpendicular
+/// to the velocity: the fish's right or left, or up over a low rock) and `d`
+/// the remaining range (the current distance to its surface):
 ///
 /// `steering = normalize(−offset) · max_speed · look_ahead_m / max(d, 0.1 m)`
 ///
-/// i.e. a sideways push away from the obstacle that grows as the gap
-/// closes. A fish aimed exactly at the centre swerves to its right.
+/// A fish aimed exactly at the core sways to its right. The push has no
+/// backward component, and it is not limited here: the caller limits the sum.
 pub fn avoid_obstacles(
     pos_m: Vec3,
     vel_m_per_s: Vec3,
     obstacles: &[Obstacle],
     look_ahead_m: f32,
+    clearance_m: f32,
     max_speed_m_per_s: f32,
 ) -> Vec3 {
     /// Smallest distance used in the strength formula, in metres: keeps the
@@ -263,15 +527,25 @@ pub fn avoid_obstacles(
     // (distance to surface, offset from path to core) of the nearest threat.
     let mut nearest: Option<(f32, Vec3)> = None;
     for obstacle in obstacles {
+        let radius_m = obstacle.radius_m();
+        // Quick reject (most fish, most obstacles): too far to matter.
+        let reach_m = look_ahead_m + 2.0 * radius_m + clearance_m;
+        let center = obstacle.footprint_center_m();
+        let (dx, dz) = (pos_m.x - center.x, pos_m.z - center.y);
+        if dx * dx + dz * dz > reach_m * reach_m {
+            continue;
+        }
         let to_core_m = obstacle.core_point_m(pos_m) - pos_m;
         let ahead_m = to_core_m.dot(direction);
         let offset_m = to_core_m - direction * ahead_m;
-        let radius_m = obstacle.radius_m();
         let in_path = ahead_m > 0.0
             && ahead_m <= look_ahead_m + radius_m
-            && offset_m.length() < radius_m + AVOIDANCE_CLEARANCE_M;
+            && offset_m.length() < radius_m + clearance_m;
+        if !in_path {
+            continue;
+        }
         let gap_m = obstacle.signed_distance_m(pos_m);
-        if in_path && nearest.is_none_or(|(nearest_gap_m, _)| gap_m < nearest_gap_m) {
+        if nearest.is_none_or(|(nearest_gap_m, _)| gap_m < nearest_gap_m) {
             nearest = Some((gap_m, offset_m));
         }
     }
@@ -380,6 +654,7 @@ mod tests {
             fish.velocity_m_per_s,
             obstacles,
             p.avoidance_look_ahead_m,
+            AVOIDANCE_CLEARANCE_M,
             p.max_speed_m_per_s,
         ) * p.avoidance_weight
     }

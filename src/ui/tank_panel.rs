@@ -7,8 +7,9 @@ use eframe::egui;
 use super::WidgetRects;
 use crate::sim::control_mode::ControlMode;
 use crate::tank_settings::{
-    FISH_COUNT_MAX, MAX_FORCE_RANGE_M_PER_S2, MAX_SPEED_RANGE_M_PER_S, Preset, SHARKS_MAX,
-    STINGRAYS_MAX, TankSettings, VISION_ANGLE_RANGE_DEG, VISION_DISTANCE_RANGE_M, WEIGHT_MAX,
+    FISH_COUNT_MAX, MAX_FORCE_RANGE_M_PER_S2, MAX_SPEED_RANGE_M_PER_S, PERSONAL_SPACE_RANGE_M,
+    Preset, SHARKS_MAX, STINGRAYS_MAX, TankSettings, VISION_ANGLE_RANGE_DEG,
+    VISION_DISTANCE_RANGE_M, WEIGHT_MAX,
 };
 
 /// The name on a mode's radio button.
@@ -163,6 +164,26 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
                 " m/s²",
                 "How hard a fish can turn or speed up at once (the maximum force). \
                  Small values make slow, lazy turns.",
+            );
+            slider(
+                ui,
+                "Personal space",
+                "personal_space_m",
+                &mut tank.personal_space_m,
+                PERSONAL_SPACE_RANGE_M,
+                " m",
+                "How close another fish may come before this one moves away. \
+                 Schooling fish keep about one body length (0.4 m here).",
+            );
+            slider(
+                ui,
+                "Wander",
+                "wander",
+                &mut tank.wander,
+                (0.0, WEIGHT_MAX),
+                "",
+                "How much a fish roams about on its own, 0 to 100. \
+                 Loners explore; fish in a school mostly follow the others.",
             );
         });
 

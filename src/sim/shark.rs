@@ -1,0 +1,194 @@
+//! The predator: a shark that picks a fish, pursues it and eats it (the SIMBA
+//! papers' "shark" species; Lim & Tan list fish, shark and stingray).
+//!
+//! A hunting shark locks onto the nearest fish it sees and [`pursue`]s it
+//! (Reynolds 1999: seek the target's predicted position). **Confusion effect**:
+//! a predator attacking a group finds it hard to single out one prey; Landeau &
+//! Terborgh 1986 (Anim. Behav. 34:1372) saw largemouth bass catch lone silvery
+//! minnows at once but rarely succeed against shoals of 8 or more, because the
+//! bass kept switching targets. Here, each second, the shark loses its lock with
+//! rate [`CONFUSION_RATE_PER_NEIGHBOUR_PER_S`] × (fish within
+//! [`CONFUSION_RADIUS_M`] of its target), and then needs
+//! [`REFOCUS_S`] to pick a new one: a lone fish is never lost, a fish in a tight
+//! school almost at once. A catch (the target within [`CATCH_DISTANCE_M`] of the
+//! mouth) is counted, the fish reappears far away, and the shark cruises
+//! satiated for [`SATIATED_S`].
+//!
+//! [`pursue`]: super::steering::pursue
+
+use std::f32::consts::TAU;
+
+use glam::Vec3;
+use serde::{Deserialize, Serialize};
+
+use super::fish::Fish;
+use super::steering::SteeringParams;
+
+/// Most sharks a world holds. Default 10: a few predators already scatter a
+/// school of 200; more turn the tank into a feeding frenzy.
+pub const MAX_SHARKS: usize = 10;
+
+/// Shortest and longest shark, nose to tail, in metres. Default 1.5–2.0 m: a
+/// reef shark, four to six times the fish.
+pub const SHARK_LENGTH_M: (f32, f32) = (1.5, 2.0);
+
+/// Cruising speed in m/s. Default 0.5 m/s: slower than a fish's top speed, so a
+/// resting shark does not catch anything by accident.
+pub const SHARK_CRUISE_M_PER_S: f32 = 0.5;
+
+/// Attack speed in m/s. Default 1.5 m/s (tuned): about twice the fish's
+/// 0.8 m/s top speed (a shark's burst is several times its cruise), so a shark
+/// that keeps its lock catches a lone fish within seconds; fish can only
+/// escape by turning (they may steer 8 m/s², the shark
+/// [`SHARK_MAX_FORCE_M_PER_S2`]) or by hiding in a school.
+pub const SHARK_ATTACK_M_PER_S: f32 = 1.5;
+
+/// Slowest shark speed in m/s. Default 0.3 m/s: sharks must keep swimming to
+/// breathe (ram ventilation).
+pub const SHARK_MIN_M_PER_S: f32 = 0.3;
+
+/// Largest steering acceleration of a shark in m/s². Default 2.5 m/s²: a big
+/// body turns wider than a fish: at attack speed its tightest turn has a
+/// radius of v²/a ≈ 0.9 m, a fish's about 0.1 m.
+pub const SHARK_MAX_FORCE_M_PER_S2: f32 = 2.5;
+
+/// How far a shark sees fish, in metres. Default 6 m: half the tank; murky
+/// water limits vision to some metres.
+pub const SHARK_VISION_M: f32 = 6.0;
+
+/// The shark's field of view, radians. Default 300° (as the fish's, TT §5).
+pub const SHARK_VISION_ANGLE_RAD: f32 = 300.0 * std::f32::consts::PI / 180.0;
+
+/// Distance from the shark's mouth (half a body length ahead of its centre) to
+/// the target's centre that counts as a catch, in metres. Default 0.3 m: about
+/// one fish length, a bite.
+pub const CATCH_DISTANCE_M: f32 = 0.3;
+
+/// Time a shark cruises without hunting after a catch, in seconds. Default 5 s:
+/// long enough to see the school re-form, short enough to keep a lesson lively.
+pub const SATIATED_S: f32 = 5.0;
+
+/// Fish closer than this to the shark's target confuse the shark, in metres.
+/// Default 1.0 m: about two to three fish lengths, the spacing inside a school.
+pub const CONFUSION_RADIUS_M: f32 = 1.0;
+
+/// Rate of losing the lock per confusing fish, per second. Default 1.0 /s
+/// (tuned): with the 7 close neighbours of a schooling fish the lock lasts
+/// about a seventh of a second on average, rarely the [`STRIKE_LOCK_S`] a bite
+/// needs; a lone fish is never lost (Landeau & Terborgh 1986: lone prey caught
+/// at once, shoals of 8+ rarely).
+pub const CONFUSION_RATE_PER_NEIGHBOUR_PER_S: f32 = 1.0;
+
+/// Time a shark must keep its lock on one fish before it can bite, in seconds.
+/// Default 0.5 s (chosen): a strike needs aiming; a predator fixates its prey
+/// before the final lunge. With the confusion rate above, a shark keeps a lock
+/// on a fish with 7 close neighbours that long in about one attack in thirty,
+/// on a lone fish always.
+pub const STRIKE_LOCK_S: f32 = 0.5;
+
+/// Confusing neighbours counted at most. Default 15: beyond that the shark is
+/// confused anyway; bounds the cost of counting in a dense school.
+pub const MAX_CONFUSING_NEIGHBOURS: u32 = 15;
+
+/// Time a shark that lost its target needs to pick a new one, in seconds.
+/// Default 1 s: it swims on, confused, before singling out another fish.
+pub const REFOCUS_S: f32 = 1.0;
+
+/// A caught fish reappears at least this far from every shark, in metres.
+/// Default 5 m: out of reach, on the other side of the tank.
+pub const RESPAWN_DISTANCE_M: f32 = 5.0;
+
+/// A shark: its body (position, velocity, length; the renderer reads it like a
+/// fish) and its hunting state.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Shark {
+    /// Position, velocity and size, as for a fish.
+    pub body: Fish,
+    /// Index of the fish the shark is hunting, if it has one.
+    pub target: Option<usize>,
+    /// Seconds left of cruising after a catch (0 = hungry).
+    pub satiated_secs: f32,
+    /// Seconds left before it can pick a new target after losing one.
+    pub refocus_secs: f32,
+    /// Seconds it has kept its lock on the current target.
+    pub lock_secs: f32,
+    /// Fish this shark has caught.
+    pub catches: u64,
+}
+
+impl Shark {
+    /// The mouth: half a body length ahead of the centre, in metres.
+    pub fn mouth_m(&self) -> Vec3 {
+        self.body.position_m + self.body.heading() * self.body.body_length_m * 0.5
+    }
+
+    /// Is the shark looking for (or chasing) prey?
+    pub fn is_hungry(&self) -> bool {
+        self.satiated_secs <= 0.0
+    }
+}
+
+/// Steering limits of a shark, as [`SteeringParams`] for [`Fish::integrate`] and
+/// wander: attack top speed, cruising at [`SHARK_CRUISE_M_PER_S`].
+pub fn shark_params(fish_params: &SteeringParams, body_length_m: f32) -> SteeringParams {
+    SteeringParams {
+        max_speed_m_per_s: SHARK_ATTACK_M_PER_S,
+        min_speed_m_per_s: SHARK_MIN_M_PER_S,
+        max_force_m_per_s2: SHARK_MAX_FORCE_M_PER_S2,
+        cruise_speed_body_lengths_per_s: SHARK_CRUISE_M_PER_S / body_length_m.max(0.1),
+        wander_distance_m: 2.0,
+        wander_radius_m: 0.8,
+        ..*fish_params
+    }
+}
+
+/// Probability that a shark loses its lock during one step of `dt_secs` when
+/// `neighbours` fish are within [`CONFUSION_RADIUS_M`] of its target:
+/// `1 − exp(−rate · n · dt)`, n capped at [`MAX_CONFUSING_NEIGHBOURS`].
+pub fn lose_lock_probability(neighbours: u32, dt_secs: f32) -> f32 {
+    let n = neighbours.min(MAX_CONFUSING_NEIGHBOURS) as f32;
+    1.0 - (-CONFUSION_RATE_PER_NEIGHBOUR_PER_S * n * dt_secs).exp()
+}
+
+/// A new shark at `position_m`, heading at `yaw_rad` at cruising speed, with
+/// length `body_length_m`.
+pub fn new_shark(position_m: Vec3, yaw_rad: f32, body_length_m: f32) -> Shark {
+    let direction = Vec3::new(yaw_rad.cos(), 0.0, yaw_rad.sin());
+    let mut body = Fish::new(
+        position_m,
+        direction * SHARK_CRUISE_M_PER_S,
+        body_length_m,
+        0.6,
+    );
+    body.tail_phase_rad = yaw_rad.rem_euclid(TAU);
+    Shark {
+        body,
+        target: None,
+        satiated_secs: 0.0,
+        refocus_secs: 0.0,
+        lock_secs: 0.0,
+        catches: 0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_lone_fish_never_confuses_the_shark_and_a_schooled_one_soon_does() {
+        assert_eq!(lose_lock_probability(0, 1.0 / 60.0), 0.0);
+        // Within one second, with 7 close neighbours: lost with probability ≈ 94 %.
+        let per_step = lose_lock_probability(7, 1.0 / 60.0);
+        let kept_for_a_second = (1.0 - per_step).powi(60);
+        assert!(kept_for_a_second < 0.1, "{kept_for_a_second}");
+        assert!(lose_lock_probability(100, 1.0) <= 1.0);
+    }
+
+    #[test]
+    fn the_mouth_is_half_a_body_ahead() {
+        let shark = new_shark(Vec3::new(1.0, 2.0, 0.0), 0.0, 2.0);
+        assert!((shark.mouth_m() - Vec3::new(2.0, 2.0, 0.0)).length() < 1e-5);
+        assert!(shark.is_hungry());
+    }
+}
