@@ -45,7 +45,7 @@ fn main() {
         let camera = OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0);
         let mut builder = FrameBuilder::default();
         let frames_per_sec = rate(Duration::from_secs(1), || {
-            std::hint::black_box(builder.build(&lab, &camera, [1920, 1080], 0.0));
+            std::hint::black_box(builder.build(&lab, &camera, [1920, 1080], 0.0, 0));
         });
         println!(
             "{fish_count:>7} | {steps_per_sec:>12.0} | {:>16.0} | {:>17.3}",

@@ -204,7 +204,7 @@ impl ShoalApp {
         let time_secs = self.lab.world().time_secs() as f32;
         let frame = self
             .frame_builder
-            .build(&self.lab, &self.camera, size_px, time_secs);
+            .build(&self.lab, &self.camera, size_px, time_secs, 0);
         ui.painter()
             .add(eframe::egui_wgpu::Callback::new_paint_callback(rect, frame));
     }
