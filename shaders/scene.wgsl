@@ -290,7 +290,7 @@ fn fs_lit(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) vec4
             // Countershading by facing: whatever faces up or sideways (back, flanks,
             // upright fins, tops of the pectorals) wears the instance colour, what
             // faces down is pale, with a soft line low on the flank.
-            let dorsal = smoothstep(-0.55, -0.15, n.y);
+            let dorsal = smoothstep(-0.3, -0.02, n.y);
             let belly = vec3<f32>(0.80, 0.81, 0.80);
             albedo = mix(belly, in.color.rgb, dorsal);
             // Five gill slits behind the eye.
@@ -308,18 +308,18 @@ fn fs_lit(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) vec4
         case RAY_BACK: {
             let l = in.local;
             // Mottling, and spots scattered over a jittered grid (instance alpha).
-            let mottle = 0.88 + 0.12 * sin(l.x * 41.0 + sin(l.z * 29.0) * 2.0) * sin(l.z * 37.0 + l.x * 11.0);
-            let grid = l.xz * 26.0;
+            let mottle = 0.82 + 0.18 * sin(l.x * 41.0 + sin(l.z * 29.0) * 2.0) * sin(l.z * 37.0 + l.x * 11.0);
+            let grid = l.xz * 18.0;
             let cell = floor(grid);
             let jitter = vec2<f32>(hash2(cell), hash2(cell + vec2<f32>(17.0, 5.0))) - 0.5;
             let d = length(fract(grid) - 0.5 - jitter * 0.5);
-            let radius = 0.12 + 0.16 * hash2(cell + vec2<f32>(3.0, 11.0));
+            let radius = 0.1 + 0.14 * hash2(cell + vec2<f32>(3.0, 11.0));
             let spot = (1.0 - smoothstep(radius * 0.6, radius, d)) * step(0.35, hash2(cell + vec2<f32>(9.0, 2.0)));
             albedo = in.color.rgb * mottle;
             // Darker along the raised body and on the tail.
             albedo *= mix(0.72, 1.0, smoothstep(0.03, 0.14, abs(l.z))) * select(1.0, 0.6, l.x < -0.02);
-            albedo = mix(albedo, albedo * 0.3, spot * in.color.a * step(-0.02, l.x));
-            shininess = 12.0;
+            albedo = mix(albedo, albedo * 0.2, spot * in.color.a * step(-0.02, l.x));
+            shininess = 6.0;
         }
         case RAY_BELLY: {
             albedo = vec3<f32>(0.86, 0.82, 0.74);

@@ -67,17 +67,17 @@ pub const LIVERIES: [Livery; 8] = [
 pub const SHARK_LIVERIES: [Livery; 3] = [
     // Grey reef shark: blue-grey, dusky fin edges.
     Livery {
-        rgb: [0.26, 0.32, 0.40],
+        rgb: [0.13, 0.17, 0.23],
         pattern: 0.35,
     },
     // Blacktip reef shark: lighter, brownish grey, black tips.
     Livery {
-        rgb: [0.40, 0.40, 0.40],
+        rgb: [0.22, 0.22, 0.22],
         pattern: 0.9,
     },
     // Blue shark: deeper blue.
     Livery {
-        rgb: [0.16, 0.26, 0.48],
+        rgb: [0.07, 0.13, 0.30],
         pattern: 0.1,
     },
 ];
@@ -87,17 +87,17 @@ pub const SHARK_LIVERIES: [Livery; 3] = [
 pub const RAY_LIVERIES: [Livery; 3] = [
     // Southern stingray: sandy olive, faint spots.
     Livery {
-        rgb: [0.50, 0.42, 0.28],
+        rgb: [0.30, 0.23, 0.13],
         pattern: 0.35,
     },
     // Leopard-spotted: pale sand, bold spots.
     Livery {
-        rgb: [0.66, 0.54, 0.36],
+        rgb: [0.45, 0.34, 0.19],
         pattern: 0.9,
     },
     // Dark brown, almost no spots.
     Livery {
-        rgb: [0.30, 0.22, 0.15],
+        rgb: [0.17, 0.11, 0.07],
         pattern: 0.15,
     },
 ];

@@ -410,7 +410,7 @@ pub fn shark() -> Mesh {
         mesh.fin_triangle(
             vec3(0.21, root_y, side * w * 0.75),
             vec3(0.09, root_y, side * w * 0.75),
-            vec3(-0.03, root_y - 0.09, side * 0.25),
+            vec3(0.0, root_y - 0.075, side * 0.22),
             skin,
         );
         // Pelvic fins.
