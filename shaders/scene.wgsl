@@ -1,5 +1,6 @@
-// The aquarium: background (room + water volume), static meshes, instanced fish and
-// the water surface. Lighting is computed in linear RGB; the output is gamma-encoded
+// The aquarium: background (room + water volume), static meshes, instanced animals
+// (fish and sharks swim with `vs_fish`, stingrays with `vs_ray`) and the water
+// surface. Lighting is computed in linear RGB; the output is gamma-encoded
 // because the scene image is a plain Rgba8Unorm texture (see render_tier.rs).
 
 struct Scene {
@@ -20,6 +21,11 @@ const FRAME: u32 = 2u;
 const FISH_BODY: u32 = 3u;
 const FISH_FIN: u32 = 4u;
 const FISH_EYE: u32 = 5u;
+const SHARK_SKIN: u32 = 6u;
+const RAY_BACK: u32 = 7u;
+const RAY_BELLY: u32 = 8u;
+
+const TAU: f32 = 6.2831853;
 
 struct VertexIn {
     @location(0) position: vec3<f32>,
@@ -28,10 +34,11 @@ struct VertexIn {
     @location(3) color: vec4<f32>,
 };
 
+// One animal (fish, shark or stingray): `FishInstance` in scene_renderer.rs.
 struct FishIn {
     @location(4) position_length: vec4<f32>,  // xyz position (m), w body length (m)
-    @location(5) forward_phase: vec4<f32>,    // xyz unit forward, w tail phase (rad)
-    @location(6) color: vec4<f32>,            // rgb body colour, a stripe strength
+    @location(5) forward_phase: vec4<f32>,    // xyz unit forward, w tail/wing phase (rad)
+    @location(6) color: vec4<f32>,            // rgb body colour, a pattern strength
 };
 
 struct Varyings {
@@ -39,8 +46,10 @@ struct Varyings {
     @location(0) world: vec3<f32>,
     @location(1) normal: vec3<f32>,
     @location(2) color: vec4<f32>,
-    // x: height across the fish body (−1 belly … 1 back), y: position along it.
-    @location(3) body: vec2<f32>,
+    // Position in the animal's mesh before animation (body lengths; x forward, y up);
+    // zero for static meshes. Patterns are painted in this frame so they stay on the
+    // skin as the body bends.
+    @location(3) local: vec3<f32>,
     @location(4) @interpolate(flat) material: u32,
 };
 
@@ -151,44 +160,86 @@ fn vs_static(v: VertexIn) -> Varyings {
     out.clip = scene.world_to_clip * vec4<f32>(v.position, 1.0);
     out.normal = v.normal;
     out.color = v.color;
-    out.body = vec2<f32>(0.0);
+    out.local = vec3<f32>(0.0);
     out.material = v.material;
     return out;
 }
 
-// ---------------------------------------------------------------- fish
+// ---------------------------------------------------------------- animals
 
-@vertex
-fn vs_fish(v: VertexIn, fish: FishIn) -> Varyings {
-    let x = v.position.x;
-    // Tail beat: a wave running from head to tail, its amplitude growing towards the
-    // tail (body lengths). Carangiform swimming: the front half barely moves.
-    let along = clamp((0.25 - x) / 1.0, 0.0, 1.0);
-    let amplitude = 0.11 * along * along + 0.006;
-    let wave = fish.forward_phase.w - 6.0 * (0.5 - x);
-    let lateral = amplitude * sin(wave);
-    let slope = amplitude * 6.0 * cos(wave) - 0.22 * along / 1.0 * sin(wave) * step(0.0, along);
-    var p = v.position + vec3<f32>(0.0, 0.0, lateral);
-    var n = normalize(vec3<f32>(v.normal.x - slope * v.normal.z, v.normal.y, v.normal.z));
-
-    let forward = fish.forward_phase.xyz;
+// Places an animated mesh point `p` with normal `n` (mesh frame: body lengths, x
+// forward, y up) in the world: scaled by the body length, x along the heading, y as
+// close to world up as the heading allows (animals do not roll).
+fn place(animal: FishIn, v: VertexIn, p: vec3<f32>, n: vec3<f32>) -> Varyings {
+    let forward = animal.forward_phase.xyz;
     var side = cross(forward, vec3<f32>(0.0, 1.0, 0.0));
     if (dot(side, side) < 1e-6) {
         side = vec3<f32>(0.0, 0.0, 1.0);
     }
     side = normalize(side);
     let up = cross(side, forward);
-    let scale = fish.position_length.w;
-    let world = fish.position_length.xyz + scale * (forward * p.x + up * p.y + side * p.z);
+    let scale = animal.position_length.w;
+    let world = animal.position_length.xyz + scale * (forward * p.x + up * p.y + side * p.z);
 
     var out: Varyings;
     out.world = world;
     out.clip = scene.world_to_clip * vec4<f32>(world, 1.0);
     out.normal = normalize(forward * n.x + up * n.y + side * n.z);
-    out.color = fish.color;
-    out.body = vec2<f32>(clamp(v.position.y / 0.16, -1.0, 1.0), x);
+    out.color = animal.color;
+    out.local = v.position;
     out.material = v.material;
     return out;
+}
+
+// Fish and sharks: the tail beat, a wave running from head to tail, its amplitude
+// growing towards the tail (body lengths). Carangiform swimming: the front half
+// barely moves.
+@vertex
+fn vs_fish(v: VertexIn, fish: FishIn) -> Varyings {
+    let x = v.position.x;
+    let along = clamp((0.25 - x) / 1.0, 0.0, 1.0);
+    let amplitude = 0.11 * along * along + 0.006;
+    let wave = fish.forward_phase.w - 6.0 * (0.5 - x);
+    let lateral = amplitude * sin(wave);
+    let slope = amplitude * 6.0 * cos(wave) - 0.22 * along / 1.0 * sin(wave) * step(0.0, along);
+    let p = v.position + vec3<f32>(0.0, 0.0, lateral);
+    let n = normalize(vec3<f32>(v.normal.x - slope * v.normal.z, v.normal.y, v.normal.z));
+    return place(fish, v, p, n);
+}
+
+// Stingrays (mesh.rs `stingray`): the wings ripple, a wave running from the front
+// of the disc to the back (rajiform swimming, 0.8 waves per body length) whose
+// height grows with the square of the distance from the midline, to ±0.07 body
+// lengths at the wing tips; the instance's phase drives it. The tail behind the disc
+// sways gently from side to side at half that rate.
+@vertex
+fn vs_ray(v: VertexIn, ray: FishIn) -> Varyings {
+    let x = v.position.x;
+    let z = v.position.z;
+    let phase = ray.forward_phase.w;
+    let half_span = 0.37;
+    let span = min(abs(z) / half_span, 1.0);
+    let lift_max = 0.07;
+    let k = 0.8 * TAU;
+    let wave = phase - k * (0.5 - x);
+    let lift = lift_max * span * span * sin(wave);
+    let dlift_dx = lift_max * span * span * k * cos(wave);
+    let dlift_dz = lift_max * 2.0 * span / half_span * sign(z) * sin(wave);
+
+    let behind = clamp((0.0 - x) / 0.5, 0.0, 1.0);
+    let sway_amp = 0.06 * behind * behind;
+    let sway_wave = 0.5 * phase - 4.0 * behind;
+    let sway = sway_amp * sin(sway_wave);
+    // d(behind)/dx = −2 and d(sway_wave)/d(behind) = −4.
+    let dsway_dx = 8.0 * sway_amp * cos(sway_wave);
+
+    let p = v.position + vec3<f32>(0.0, lift, sway);
+    let n = normalize(vec3<f32>(
+        v.normal.x - dlift_dx * v.normal.y - dsway_dx * v.normal.z,
+        v.normal.y,
+        v.normal.z - dlift_dz * v.normal.y,
+    ));
+    return place(ray, v, p, n);
 }
 
 // ---------------------------------------------------------------- shading
@@ -219,11 +270,11 @@ fn fs_lit(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) vec4
         }
         case FISH_BODY: {
             // Countershading: dark back, pale belly, as real fish have.
-            let back = in.body.x * 0.5 + 0.5;
+            let back = clamp(in.local.y / 0.16, -1.0, 1.0) * 0.5 + 0.5;
             albedo = mix(in.color.rgb * 1.25 + vec3<f32>(0.15), in.color.rgb * 0.55, smoothstep(0.1, 0.9, back));
             // Vertical bars on some species.
-            let bars = smoothstep(0.55, 0.75, sin(in.body.y * 38.0) * 0.5 + 0.5) * in.color.a;
-            albedo = mix(albedo, albedo * 0.25, bars * step(-0.45, in.body.y) * step(in.body.y, 0.3));
+            let bars = smoothstep(0.55, 0.75, sin(in.local.x * 38.0) * 0.5 + 0.5) * in.color.a;
+            albedo = mix(albedo, albedo * 0.25, bars * step(-0.45, in.local.x) * step(in.local.x, 0.3));
             shininess = 40.0;
         }
         case FISH_FIN: {
@@ -233,6 +284,46 @@ fn fs_lit(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) vec4
         case FISH_EYE: {
             albedo = vec3<f32>(0.02);
             shininess = 90.0;
+        }
+        case SHARK_SKIN: {
+            let l = in.local;
+            // Countershading by facing: whatever faces up or sideways (back, flanks,
+            // upright fins, tops of the pectorals) wears the instance colour, what
+            // faces down is pale, with a soft line low on the flank.
+            let dorsal = smoothstep(-0.3, -0.02, n.y);
+            let belly = vec3<f32>(0.80, 0.81, 0.80);
+            albedo = mix(belly, in.color.rgb, dorsal);
+            // Five gill slits behind the eye.
+            let gx = (l.x - 0.2) / 0.08;
+            if (gx > 0.0 && gx < 1.0 && abs(l.z) > 0.03 && abs(l.y) < 0.04) {
+                let slit = smoothstep(0.7, 0.95, sin(gx * 5.0 * TAU) * 0.5 + 0.5);
+                albedo *= 1.0 - 0.45 * slit;
+            }
+            // Dusky or black fin tips (instance alpha): dorsal apex, pectoral and
+            // tail tips.
+            let tip = max(max(smoothstep(0.15, 0.2, l.y), smoothstep(0.17, 0.23, abs(l.z))), 1.0 - smoothstep(-0.48, -0.44, l.x));
+            albedo = mix(albedo, albedo * 0.15, tip * in.color.a);
+            shininess = 20.0;
+        }
+        case RAY_BACK: {
+            let l = in.local;
+            // Mottling, and spots scattered over a jittered grid (instance alpha).
+            let mottle = 0.82 + 0.18 * sin(l.x * 41.0 + sin(l.z * 29.0) * 2.0) * sin(l.z * 37.0 + l.x * 11.0);
+            let grid = l.xz * 18.0;
+            let cell = floor(grid);
+            let jitter = vec2<f32>(hash2(cell), hash2(cell + vec2<f32>(17.0, 5.0))) - 0.5;
+            let d = length(fract(grid) - 0.5 - jitter * 0.5);
+            let radius = 0.1 + 0.14 * hash2(cell + vec2<f32>(3.0, 11.0));
+            let spot = (1.0 - smoothstep(radius * 0.6, radius, d)) * step(0.35, hash2(cell + vec2<f32>(9.0, 2.0)));
+            albedo = in.color.rgb * mottle;
+            // Darker along the raised body and on the tail.
+            albedo *= mix(0.72, 1.0, smoothstep(0.03, 0.14, abs(l.z))) * select(1.0, 0.6, l.x < -0.02);
+            albedo = mix(albedo, albedo * 0.2, spot * in.color.a * step(-0.02, l.x));
+            shininess = 6.0;
+        }
+        case RAY_BELLY: {
+            albedo = vec3<f32>(0.86, 0.82, 0.74);
+            shininess = 8.0;
         }
         default: {}
     }

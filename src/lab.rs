@@ -95,20 +95,43 @@ impl Run {
         ));
     }
 
+    /// Remembers where every animal is (fish, then sharks, then stingrays).
     fn snapshot_positions(&mut self) {
         self.previous_positions_m.clear();
-        self.previous_positions_m
-            .extend(self.world.fish().iter().map(|f| f.position_m));
+        let world = &self.world;
+        self.previous_positions_m.extend(
+            world
+                .fish()
+                .iter()
+                .chain(world.sharks().iter().map(|s| &s.body))
+                .chain(world.stingrays().iter().map(|r| &r.body))
+                .map(|f| f.position_m),
+        );
+    }
+
+    fn interpolated(&self, slot: usize, current: Vec3, alpha: f32) -> Vec3 {
+        match self.previous_positions_m.get(slot) {
+            Some(previous) => previous.lerp(current, alpha),
+            None => current,
+        }
     }
 
     /// Where fish `index` should be drawn: `alpha` of the way from its previous to
     /// its current simulated position.
     pub fn drawn_position_m(&self, index: usize, alpha: f32) -> Vec3 {
-        let current = self.world.fish()[index].position_m;
-        match self.previous_positions_m.get(index) {
-            Some(previous) => previous.lerp(current, alpha),
-            None => current,
-        }
+        self.interpolated(index, self.world.fish()[index].position_m, alpha)
+    }
+
+    /// Where shark `index` should be drawn (see [`Self::drawn_position_m`]).
+    pub fn drawn_shark_m(&self, index: usize, alpha: f32) -> Vec3 {
+        let slot = self.world.fish().len() + index;
+        self.interpolated(slot, self.world.sharks()[index].body.position_m, alpha)
+    }
+
+    /// Where stingray `index` should be drawn (see [`Self::drawn_position_m`]).
+    pub fn drawn_stingray_m(&self, index: usize, alpha: f32) -> Vec3 {
+        let slot = self.world.fish().len() + self.world.sharks().len() + index;
+        self.interpolated(slot, self.world.stingrays()[index].body.position_m, alpha)
     }
 
     /// Follows new settings for this tank without restarting where possible.
@@ -129,6 +152,7 @@ impl Run {
         {
             self.world
                 .set_species_counts(config.sharks, config.stingrays);
+            self.snapshot_positions();
         }
         if config.obstacles.as_ref() != self.obstacles_from_settings.as_ref() {
             match &config.obstacles {

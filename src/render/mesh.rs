@@ -1,10 +1,17 @@
-//! Triangle meshes built on the CPU once: the fish body, rocks, pillars, the sand
-//! floor and the tank frame.
+//! Triangle meshes built on the CPU once: the animals (fish, its low-poly LOD, shark,
+//! stingray), rocks, pillars, the sand floor and the tank frame.
+//!
+//! Animal meshes share one frame: one body length long, snout towards +x, back up
+//! (+y), scaled and oriented per instance by the vertex shader, which also animates
+//! them (`vs_fish` beats the tail of fish and sharks, `vs_ray` flaps the stingray's
+//! wings; see `scene.wgsl`). The `Material` of each vertex picks the shading.
 //!
 //! Everything here is plain geometry (no GPU types), so it is tested natively: normals
-//! are unit length, the fish points along +x, rocks are closed.
+//! are unit length, animals point along +x, rocks are closed.
 
 use bytemuck::{Pod, Zeroable};
+use std::f32::consts::TAU;
+
 use glam::{Vec3, vec3};
 
 use crate::sim::{Obstacle, Tank};
@@ -23,8 +30,16 @@ pub enum Material {
     FishBody = 3,
     /// Fish fins: lighter, a little translucent-looking.
     FishFin = 4,
-    /// Fish eye: near black with a glint.
+    /// Eye of any animal: near black with a glint.
     FishEye = 5,
+    /// Shark skin, body and fins: instance colour on top, a pale belly below a soft
+    /// countershading line (by the surface's facing), gill slits, darker fin tips.
+    SharkSkin = 6,
+    /// Stingray's back and tail: instance colour, mottled, with dark spots (instance
+    /// alpha = spot strength).
+    RayBack = 7,
+    /// Stingray's underside: pale cream.
+    RayBelly = 8,
 }
 
 /// One vertex of a static or fish mesh. 32 bytes.
@@ -123,6 +138,78 @@ impl Mesh {
     }
 }
 
+impl Mesh {
+    /// A closed, tube-like body along −x: an apex at `snout`, one ring of `segments`
+    /// points at each of `xs` (decreasing: snout to tail), and a fan closing the last
+    /// ring. `surface(x, angle)` is a point on the skin; angle 0 is the +z side and
+    /// π/2 the top. Normals come from finite differences and point outwards.
+    fn loft(
+        &mut self,
+        snout: Vec3,
+        xs: &[f32],
+        segments: u32,
+        surface: impl Fn(f32, f32) -> Vec3,
+        material: Material,
+    ) {
+        let apex = self.push(snout, Vec3::X, material, 0);
+        let mut ring_starts = Vec::with_capacity(xs.len());
+        for &x in xs {
+            ring_starts.push(self.vertices.len() as u32);
+            for s in 0..segments {
+                let angle = s as f32 / segments as f32 * TAU;
+                let (dx, da) = (0.01, 0.01);
+                let along = surface(x - dx, angle) - surface(x + dx, angle);
+                let around = surface(x, angle + da) - surface(x, angle - da);
+                self.push(surface(x, angle), around.cross(along), material, 0);
+            }
+        }
+        let Some((&first, &last)) = ring_starts.first().zip(ring_starts.last()) else {
+            return;
+        };
+        let seg = segments;
+        for s in 0..seg {
+            self.triangle(apex, first + (s + 1) % seg, first + s);
+        }
+        for pair in ring_starts.windows(2) {
+            let (a, b) = (pair[0], pair[1]);
+            for s in 0..seg {
+                let s1 = (s + 1) % seg;
+                self.triangle(a + s, a + s1, b + s);
+                self.triangle(a + s1, b + s1, b + s);
+            }
+        }
+        let ring = &self.vertices[last as usize..(last + seg) as usize];
+        let center = ring.iter().map(|v| Vec3::from(v.position)).sum::<Vec3>() / seg as f32;
+        let tail = self.push(center, -Vec3::X, material, 0);
+        for s in 0..seg {
+            self.triangle(tail, last + s, last + (s + 1) % seg);
+        }
+    }
+
+    /// An eye: a shallow cone of `ring` points around `center`, bulging by `radius`
+    /// along the unit `outward` direction.
+    fn eye(&mut self, center: Vec3, outward: Vec3, radius: f32, ring: u32) {
+        let outward = outward.normalize_or_zero();
+        let (u, v) = outward.any_orthonormal_pair();
+        let apex = self.push(center + outward * radius, outward, Material::FishEye, 0);
+        let first = self.vertices.len() as u32;
+        for k in 0..ring {
+            let a = k as f32 / ring as f32 * TAU;
+            let offset = (u * a.cos() + v * a.sin()) * radius;
+            self.push(
+                center + offset,
+                offset.normalize_or_zero() + outward * 0.6,
+                Material::FishEye,
+                0,
+            );
+        }
+        // (u, v, outward) is right-handed, so (apex, a, b) faces outwards.
+        for k in 0..ring {
+            self.triangle(apex, first + k, first + (k + 1) % ring);
+        }
+    }
+}
+
 /// Half height and half width of the fish body at `x` ∈ [−0.5, 0.5] (tail root to
 /// snout), in body lengths. A streamlined, laterally compressed profile: deepest a
 /// third of the way back from the snout, a narrow caudal peduncle.
@@ -136,66 +223,40 @@ fn fish_profile(x: f32) -> (f32, f32) {
     (half_height, half_width)
 }
 
-/// The fish mesh, one body length long, snout at +x = 0.5, tail fin to x ≈ −0.74,
-/// back up (+y). The vertex shader bends it with the tail beat.
-pub fn fish() -> Mesh {
-    const RINGS: usize = 18;
-    const SEGMENTS: usize = 14;
-    let mut mesh = Mesh::default();
-    let xs: Vec<f32> = (0..=RINGS)
-        .map(|i| 0.5 - (i as f32 / RINGS as f32).powf(1.15))
-        .collect();
-    let ring_point = |x: f32, angle: f32| {
-        let (h, w) = fish_profile(x);
-        vec3(x, h * angle.sin() - 0.01, w * angle.cos())
-    };
-    // Body rings. Normals from finite differences of the surface.
-    let snout = mesh.push(vec3(0.5, -0.01, 0.0), Vec3::X, Material::FishBody, 0);
-    let mut ring_starts = Vec::new();
-    for &x in &xs[1..] {
-        ring_starts.push(mesh.vertices.len() as u32);
-        for s in 0..SEGMENTS {
-            let angle = s as f32 / SEGMENTS as f32 * std::f32::consts::TAU;
-            let p = ring_point(x, angle);
-            let dx = 0.01;
-            let da = 0.01;
-            let along = ring_point(x - dx, angle) - ring_point(x + dx, angle);
-            let around = ring_point(x, angle + da) - ring_point(x, angle - da);
-            let normal = around.cross(along);
-            mesh.push(p, normal, Material::FishBody, 0);
-        }
-    }
-    let seg = SEGMENTS as u32;
-    for s in 0..seg {
-        mesh.triangle(snout, ring_starts[0] + (s + 1) % seg, ring_starts[0] + s);
-    }
-    for pair in ring_starts.windows(2) {
-        let (a, b) = (pair[0], pair[1]);
-        for s in 0..seg {
-            let s1 = (s + 1) % seg;
-            mesh.triangle(a + s, a + s1, b + s);
-            mesh.triangle(a + s1, b + s1, b + s);
-        }
-    }
-    // Close the tail root with a fan.
-    let tail_x = xs[RINGS];
-    let tail_center = mesh.push(vec3(tail_x, -0.01, 0.0), -Vec3::X, Material::FishBody, 0);
-    let last = *ring_starts.last().unwrap_or(&0);
-    for s in 0..seg {
-        mesh.triangle(tail_center, last + s, last + (s + 1) % seg);
-    }
+/// A point on the fish's skin (see [`Mesh::loft`]).
+fn fish_skin(x: f32, angle: f32) -> Vec3 {
+    let (h, w) = fish_profile(x);
+    vec3(x, h * angle.sin() - 0.01, w * angle.cos())
+}
 
-    // Forked caudal (tail) fin, in the vertical plane.
-    let root = tail_x + 0.03;
+/// Ring positions from the snout (+0.5) to the tail root (−0.5), closer together at
+/// the snout where the profile curves most.
+fn fish_rings(rings: usize) -> Vec<f32> {
+    (1..=rings)
+        .map(|i| 0.5 - (i as f32 / rings as f32).powf(1.15))
+        .collect()
+}
+
+/// The forked caudal fin of both fish meshes, in the vertical plane.
+fn fish_tail_fin(mesh: &mut Mesh, with_notch: bool) {
+    let root = -0.5 + 0.03;
     for (tip, notch) in [
         (vec3(-0.74, 0.17, 0.0), vec3(-0.62, 0.02, 0.0)),
         (vec3(-0.74, -0.17, 0.0), vec3(-0.62, -0.02, 0.0)),
     ] {
         let root_edge = vec3(root, tip.y.signum() * 0.035, 0.0);
-        mesh.fin_triangle(vec3(root, 0.0, 0.0), root_edge, tip, Material::FishFin);
-        mesh.fin_triangle(vec3(root, 0.0, 0.0), tip, notch, Material::FishFin);
+        let base = vec3(root, 0.0, 0.0);
+        if with_notch {
+            mesh.fin_triangle(base, root_edge, tip, Material::FishFin);
+            mesh.fin_triangle(base, tip, notch, Material::FishFin);
+        } else {
+            mesh.fin_triangle(vec3(root, 0.0, 0.0), root_edge, tip, Material::FishFin);
+        }
     }
-    // Dorsal fin.
+}
+
+/// The dorsal fin of both fish meshes.
+fn fish_dorsal_fin(mesh: &mut Mesh) {
     let (h_dorsal, _) = fish_profile(0.05);
     mesh.fin_triangle(
         vec3(0.12, h_dorsal - 0.02, 0.0),
@@ -203,6 +264,21 @@ pub fn fish() -> Mesh {
         vec3(-0.12, h_dorsal + 0.11, 0.0),
         Material::FishFin,
     );
+}
+
+/// The fish mesh, one body length long, snout at +x = 0.5, tail fin to x ≈ −0.74,
+/// back up (+y). The vertex shader bends it with the tail beat.
+pub fn fish() -> Mesh {
+    let mut mesh = Mesh::default();
+    mesh.loft(
+        vec3(0.5, -0.01, 0.0),
+        &fish_rings(18),
+        14,
+        fish_skin,
+        Material::FishBody,
+    );
+    fish_tail_fin(&mut mesh, true);
+    fish_dorsal_fin(&mut mesh);
     // Anal fin.
     mesh.fin_triangle(
         vec3(-0.12, -0.09, 0.0),
@@ -224,34 +300,280 @@ pub fn fish() -> Mesh {
     for side in [-1.0_f32, 1.0] {
         let (h, w) = fish_profile(0.38);
         let center = vec3(0.38, h * 0.35, side * w * 0.92);
-        let radius = 0.028;
-        let ring = 8;
-        let apex = mesh.push(
-            center + vec3(0.0, 0.0, side * radius),
-            vec3(0.0, 0.0, side),
-            Material::FishEye,
-            0,
+        mesh.eye(center, vec3(0.0, 0.0, side), 0.028, 8);
+    }
+    mesh
+}
+
+/// The fish seen from afar: the same silhouette as [`fish`] from 5 rings of 8
+/// points, the tail fin without its notch, the dorsal fin and flat eyes (a dark dot
+/// is still visible on a fish 30 pixels long); about a sixth of the triangles.
+pub fn fish_lod() -> Mesh {
+    let mut mesh = Mesh::default();
+    mesh.loft(
+        vec3(0.5, -0.01, 0.0),
+        &fish_rings(5),
+        8,
+        fish_skin,
+        Material::FishBody,
+    );
+    fish_tail_fin(&mut mesh, false);
+    fish_dorsal_fin(&mut mesh);
+    for side in [-1.0_f32, 1.0] {
+        let (h, w) = fish_profile(0.38);
+        let center = vec3(0.38, h * 0.35, side * w * 0.92);
+        mesh.eye(center, vec3(0.0, 0.0, side), 0.03, 3);
+    }
+    mesh
+}
+
+/// Where the shark's body ends and its tail fin begins (x, body lengths).
+const SHARK_TAIL_ROOT_X: f32 = -0.3;
+
+/// Half height, half width and the height of the axis of the shark's body at `x`
+/// (body lengths). A torpedo: a conical snout, deepest at a third of its length, a
+/// slim caudal peduncle; the head a little broader than tall, the axis rising towards
+/// the tail as the spine runs up into the upper tail lobe.
+fn shark_profile(x: f32) -> (f32, f32, f32) {
+    let t = ((0.5 - x) / (0.5 - SHARK_TAIL_ROOT_X)).clamp(0.0, 1.0);
+    let nose = (t / 0.3).min(1.0);
+    let pointed_nose = 1.0 - (1.0 - nose).powf(2.2);
+    let taper = 1.0 - ((t - 0.33).max(0.0) / 0.67).powf(1.4) * 0.8;
+    let half_height = 0.08 * pointed_nose * taper + 0.004;
+    let half_width = half_height * (0.85 + 0.3 * (1.0 - nose));
+    let axis_y = 0.025 * t.powi(3) - 0.005;
+    (half_height, half_width, axis_y)
+}
+
+/// A point on the shark's skin (see [`Mesh::loft`]); the belly is flatter than the
+/// back.
+fn shark_skin(x: f32, angle: f32) -> Vec3 {
+    let (h, w, axis_y) = shark_profile(x);
+    let s = angle.sin();
+    vec3(x, axis_y + h * s * (0.85 + 0.15 * s), w * angle.cos())
+}
+
+/// The top of the shark's back at `x`.
+fn shark_back_y(x: f32) -> f32 {
+    shark_skin(x, TAU / 4.0).y
+}
+
+/// The bottom of the shark's belly at `x`.
+fn shark_belly_y(x: f32) -> f32 {
+    shark_skin(x, -TAU / 4.0).y
+}
+
+/// A shark (requiem-shark shape), one body length from the snout at +x = 0.5 to the
+/// tip of the upper tail lobe at −0.5, back up: a grey torpedo with a pointed snout,
+/// a tall triangular first dorsal fin, a small second dorsal and anal fin, big swept
+/// pectoral fins, pelvic fins and a heterocercal tail whose upper lobe is twice as
+/// long as the lower. Animated like a fish (`vs_fish`); `SharkSkin` throughout.
+pub fn shark() -> Mesh {
+    const RINGS: usize = 20;
+    const SEGMENTS: u32 = 14;
+    let skin = Material::SharkSkin;
+    let mut mesh = Mesh::default();
+    let xs: Vec<f32> = (1..=RINGS)
+        .map(|i| 0.5 - (0.5 - SHARK_TAIL_ROOT_X) * (i as f32 / RINGS as f32).powf(1.2))
+        .collect();
+    let (_, _, snout_y) = shark_profile(0.5);
+    mesh.loft(vec3(0.5, snout_y, 0.0), &xs, SEGMENTS, shark_skin, skin);
+
+    // First dorsal fin: a tall triangle whose apex leans back, and a free rear tip.
+    let base = |x: f32| vec3(x, shark_back_y(x) - 0.01, 0.0);
+    let apex = vec3(-0.07, shark_back_y(0.02) + 0.14, 0.0);
+    mesh.fin_triangle(base(0.13), base(-0.04), apex, skin);
+    mesh.fin_triangle(
+        base(-0.04),
+        vec3(-0.08, shark_back_y(-0.08) + 0.012, 0.0),
+        apex,
+        skin,
+    );
+    // Second dorsal and anal fins, small, near the tail.
+    mesh.fin_triangle(
+        base(-0.17),
+        base(-0.23),
+        vec3(-0.245, shark_back_y(-0.2) + 0.04, 0.0),
+        skin,
+    );
+    let belly = |x: f32| vec3(x, shark_belly_y(x) + 0.01, 0.0);
+    mesh.fin_triangle(
+        belly(-0.23),
+        belly(-0.18),
+        belly(-0.25) - vec3(0.0, 0.035, 0.0),
+        skin,
+    );
+    for side in [-1.0_f32, 1.0] {
+        // Pectoral fins: long, swept back and angled down, behind the gills.
+        let (_, w, axis_y) = shark_profile(0.16);
+        let root_y = axis_y - 0.04;
+        mesh.fin_triangle(
+            vec3(0.21, root_y, side * w * 0.75),
+            vec3(0.09, root_y, side * w * 0.75),
+            vec3(0.0, root_y - 0.075, side * 0.22),
+            skin,
         );
-        let first = mesh.vertices.len() as u32;
-        for k in 0..ring {
-            let a = k as f32 / ring as f32 * std::f32::consts::TAU;
-            let offset = vec3(a.cos() * radius, a.sin() * radius, 0.0);
-            mesh.push(
-                center + offset,
-                offset.normalize_or_zero() + vec3(0.0, 0.0, side * 0.6),
-                Material::FishEye,
-                0,
-            );
-        }
-        for k in 0..ring {
-            let (a, b) = (first + k, first + (k + 1) % ring);
-            if side > 0.0 {
-                mesh.triangle(apex, a, b);
+        // Pelvic fins.
+        let (_, w, axis_y) = shark_profile(-0.12);
+        mesh.fin_triangle(
+            vec3(-0.09, axis_y - 0.03, side * w * 0.6),
+            vec3(-0.16, axis_y - 0.025, side * w * 0.5),
+            vec3(-0.17, axis_y - 0.06, side * (w + 0.04)),
+            skin,
+        );
+        // Eyes, on the sides of the head.
+        let (h, w, axis_y) = shark_profile(0.37);
+        mesh.eye(
+            vec3(0.37, axis_y + h * 0.3, side * w * 0.92),
+            vec3(0.15, 0.2, side),
+            0.013,
+            8,
+        );
+    }
+    // Heterocercal tail: a long, narrow upper lobe following the spine up and back,
+    // a short lower lobe, fanned from the middle of the caudal peduncle.
+    let (h, _, axis_y) = shark_profile(SHARK_TAIL_ROOT_X);
+    let root = vec3(SHARK_TAIL_ROOT_X + 0.02, axis_y, 0.0);
+    let outline = [
+        vec3(SHARK_TAIL_ROOT_X + 0.02, axis_y + h + 0.01, 0.0),
+        vec3(-0.5, axis_y + 0.16, 0.0),
+        vec3(-0.47, axis_y + 0.125, 0.0),
+        vec3(-0.38, axis_y + 0.01, 0.0),
+        vec3(-0.415, axis_y - 0.095, 0.0),
+        vec3(SHARK_TAIL_ROOT_X - 0.02, axis_y - h - 0.01, 0.0),
+    ];
+    for pair in outline.windows(2) {
+        mesh.fin_triangle(root, pair[0], pair[1], skin);
+    }
+    mesh
+}
+
+/// Half length of the stingray's disc in front of and behind its centre, its half
+/// width, and where its centre is (x, body lengths).
+const RAY_DISC_FRONT: f32 = 0.28;
+const RAY_DISC_BACK: f32 = 0.24;
+const RAY_DISC_HALF_WIDTH: f32 = 0.37;
+const RAY_DISC_CENTER_X: f32 = 0.5 - RAY_DISC_FRONT;
+
+/// How far the disc reaches from its centre in the direction `angle` (0 = forward,
+/// towards +x; π/2 = +z): a rhombus with rounded corners (a superellipse of
+/// exponent 1.5), longer in front than behind.
+fn ray_disc_radius(angle: f32) -> f32 {
+    let (s, c) = angle.sin_cos();
+    let a = if c >= 0.0 {
+        RAY_DISC_FRONT
+    } else {
+        RAY_DISC_BACK
+    };
+    const P: f32 = 1.5;
+    ((c.abs() / a).powf(P) + (s.abs() / RAY_DISC_HALF_WIDTH).powf(P)).powf(-1.0 / P)
+}
+
+/// Height of the stingray's back above the disc plane at `(x, z)`, where `s` ∈ [0, 1]
+/// is how far out on the disc the point is (0 centre, 1 rim): a raised body along the
+/// midline, thin wings.
+fn ray_back_height(x: f32, z: f32, s: f32) -> f32 {
+    let trunk = (-((x - RAY_DISC_CENTER_X - 0.02) / 0.2).powi(2) - (z / 0.1).powi(2)).exp();
+    (0.055 * trunk + 0.012 * (1.0 - s)) * (1.0 - s.powi(4))
+}
+
+/// Depth of the stingray's underside below the disc plane (a flatter belly).
+fn ray_belly_depth(x: f32, z: f32, s: f32) -> f32 {
+    0.4 * ray_back_height(x, z, s)
+}
+
+/// A stingray, one body length from the snout at +x = 0.5 to the tip of its tail at
+/// −0.5: a flat, rounded-rhombic disc 0.74 wide and 0.52 long with a raised body
+/// along the midline and two small raised eyes, and a long, thin whip of a tail.
+/// `RayBack` above, `RayBelly` below. `vs_ray` makes the wings ripple: a wave running
+/// from front to back whose height grows towards the wing tips, and sways the tail.
+pub fn stingray() -> Mesh {
+    const RINGS: u32 = 9;
+    const SEGMENTS: u32 = 36;
+    let mut mesh = Mesh::default();
+    let point = |s: f32, angle: f32| {
+        let r = ray_disc_radius(angle) * s;
+        (RAY_DISC_CENTER_X + r * angle.cos(), r * angle.sin())
+    };
+    // The top (sign +1) and the underside (sign −1), each a polar grid over the disc
+    // meeting at the rim. Normals from the gradient of the height field.
+    for (sign, material) in [(1.0_f32, Material::RayBack), (-1.0, Material::RayBelly)] {
+        let height = |x: f32, z: f32, s: f32| {
+            if sign > 0.0 {
+                ray_back_height(x, z, s)
             } else {
-                mesh.triangle(apex, b, a);
+                -ray_belly_depth(x, z, s)
+            }
+        };
+        let vertex = |mesh: &mut Mesh, s: f32, angle: f32| {
+            let (x, z) = point(s, angle);
+            let e = 0.004;
+            // s varies with the point; the radial parameter of the neighbours follows.
+            let s_at = |x: f32, z: f32| {
+                let d = vec3(x - RAY_DISC_CENTER_X, 0.0, z);
+                let a = d.z.atan2(d.x);
+                (d.length() / ray_disc_radius(a)).min(1.0)
+            };
+            let dh_dx =
+                (height(x + e, z, s_at(x + e, z)) - height(x - e, z, s_at(x - e, z))) / (2.0 * e);
+            let dh_dz =
+                (height(x, z + e, s_at(x, z + e)) - height(x, z - e, s_at(x, z - e))) / (2.0 * e);
+            let normal = vec3(-dh_dx, 1.0, -dh_dz) * sign;
+            mesh.push(vec3(x, height(x, z, s), z), normal, material, 0)
+        };
+        let center = vertex(&mut mesh, 0.0, 0.0);
+        let first = mesh.vertices.len() as u32;
+        for ring in 1..=RINGS {
+            let s = ring as f32 / RINGS as f32;
+            for k in 0..SEGMENTS {
+                vertex(&mut mesh, s, k as f32 / SEGMENTS as f32 * TAU);
+            }
+        }
+        // Angle runs from +x towards +z, which is clockwise seen from above: the top
+        // is wound (centre, k + 1, k), the underside the other way.
+        let wind = |mesh: &mut Mesh, a: u32, b: u32, c: u32| {
+            if sign > 0.0 {
+                mesh.triangle(a, c, b);
+            } else {
+                mesh.triangle(a, b, c);
+            }
+        };
+        for k in 0..SEGMENTS {
+            wind(&mut mesh, center, first + k, first + (k + 1) % SEGMENTS);
+        }
+        for ring in 0..RINGS - 1 {
+            let (a, b) = (first + ring * SEGMENTS, first + (ring + 1) * SEGMENTS);
+            for k in 0..SEGMENTS {
+                let k1 = (k + 1) % SEGMENTS;
+                wind(&mut mesh, a + k, b + k, a + k1);
+                wind(&mut mesh, a + k1, b + k, b + k1);
             }
         }
     }
+    // Eyes: small domes on the raised head, looking up and out.
+    for side in [-1.0_f32, 1.0] {
+        let (x, z) = (0.37, side * 0.055);
+        let s = (x - RAY_DISC_CENTER_X) / RAY_DISC_FRONT;
+        let center = vec3(x, ray_back_height(x, z, s) - 0.004, z);
+        mesh.eye(center, vec3(0.1, 1.0, side * 0.7), 0.016, 8);
+    }
+    // The tail: a thin whip from behind the disc, tapering to a point.
+    let root_x = RAY_DISC_CENTER_X - RAY_DISC_BACK + 0.04;
+    let xs: Vec<f32> = (1..=10)
+        .map(|i| root_x - (root_x + 0.5) * i as f32 / 10.0)
+        .collect();
+    let tail = |x: f32, angle: f32| {
+        let t = ((root_x - x) / (root_x + 0.5)).clamp(0.0, 1.0);
+        let r = 0.022 * (1.0 - t).powf(1.3) + 0.002;
+        vec3(x, 0.004 + r * angle.sin(), r * angle.cos())
+    };
+    mesh.loft(
+        vec3(root_x + 0.03, 0.004, 0.0),
+        &xs,
+        6,
+        tail,
+        Material::RayBack,
+    );
     mesh
 }
 
@@ -565,6 +887,49 @@ mod tests {
         }
     }
 
+    /// Well-formed, and every triangle is wound to face the way its vertex normals
+    /// point (back-face culling keeps the outside).
+    fn check_well_formed(mesh: &Mesh) {
+        check_normals_and_indices(mesh);
+        for tri in mesh.indices.chunks_exact(3) {
+            let v = |k: usize| &mesh.vertices[tri[k] as usize];
+            let p = |k: usize| Vec3::from(v(k).position);
+            let face = (p(1) - p(0)).cross(p(2) - p(0));
+            if face.length() < 1e-7 {
+                continue;
+            }
+            let normals: Vec3 = (0..3).map(|k| Vec3::from(v(k).normal)).sum();
+            assert!(
+                face.dot(normals) > 0.0,
+                "triangle at {} faces against its normals",
+                p(0)
+            );
+        }
+    }
+
+    fn bounds(mesh: &Mesh) -> (Vec3, Vec3) {
+        mesh.vertices.iter().fold(
+            (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN)),
+            |(lo, hi), v| (lo.min(v.position.into()), hi.max(v.position.into())),
+        )
+    }
+
+    /// Mean position of the vertices of `material`.
+    fn centroid(mesh: &Mesh, material: Material) -> Vec3 {
+        let points: Vec<Vec3> = mesh
+            .vertices
+            .iter()
+            .filter(|v| v.material == material as u32)
+            .map(|v| Vec3::from(v.position))
+            .collect();
+        assert!(!points.is_empty(), "no {material:?} vertices");
+        points.iter().sum::<Vec3>() / points.len() as f32
+    }
+
+    fn triangles(mesh: &Mesh) -> usize {
+        mesh.indices.len() / 3
+    }
+
     #[test]
     fn fish_is_one_body_length_with_a_tail_fin_and_points_along_x() {
         let mesh = fish();
@@ -606,6 +971,114 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn animal_meshes_are_well_formed() {
+        for (name, mesh) in [
+            ("fish", fish()),
+            ("fish LOD", fish_lod()),
+            ("shark", shark()),
+            ("stingray", stingray()),
+        ] {
+            println!("{name}: {} triangles", triangles(&mesh));
+            check_well_formed(&mesh);
+        }
+    }
+
+    #[test]
+    fn the_far_fish_has_under_a_quarter_of_the_triangles_and_the_same_outline() {
+        let (near, far) = (fish(), fish_lod());
+        check_well_formed(&far);
+        assert!(
+            4 * triangles(&far) < triangles(&near),
+            "{} vs {}",
+            triangles(&far),
+            triangles(&near)
+        );
+        let ((near_lo, near_hi), (far_lo, far_hi)) = (bounds(&near), bounds(&far));
+        assert!((near_hi.x - far_hi.x).abs() < 1e-3, "same snout");
+        assert!((near_lo.x - far_lo.x).abs() < 1e-3, "same tail");
+        assert!(
+            (near_hi.y - far_hi.y).abs() < 0.02,
+            "same dorsal fin height"
+        );
+    }
+
+    #[test]
+    fn shark_is_a_long_torpedo_pointing_along_x_with_a_tall_dorsal_fin() {
+        let mesh = shark();
+        check_well_formed(&mesh);
+        let (lo, hi) = bounds(&mesh);
+        assert!((hi.x - 0.5).abs() < 1e-3, "snout at +0.5: {}", hi.x);
+        assert!((lo.x + 0.5).abs() < 1e-3, "tail tip at −0.5: {}", lo.x);
+        // Pointing along +x: the eyes are in the front fifth.
+        assert!(centroid(&mesh, Material::FishEye).x > 0.3);
+        // Longer than tall: the body alone more than 5 times, fins included more
+        // than twice.
+        let body_depth = (0..=100)
+            .map(|i| {
+                let x = 0.5 - i as f32 / 100.0 * (0.5 - SHARK_TAIL_ROOT_X);
+                shark_back_y(x) - shark_belly_y(x)
+            })
+            .fold(0.0_f32, f32::max);
+        assert!(body_depth * 5.0 < 1.0, "body depth {body_depth}");
+        assert!(hi.y - lo.y < 0.5 * (hi.x - lo.x), "{lo} … {hi}");
+        // A fin stands well above the back over the middle of the body.
+        let fin_top = mesh
+            .vertices
+            .iter()
+            .filter(|v| v.position[0].abs() < 0.15)
+            .map(|v| v.position[1])
+            .fold(f32::MIN, f32::max);
+        assert!(
+            fin_top > shark_back_y(0.0) + 0.1,
+            "dorsal fin top {fin_top}"
+        );
+        // Heterocercal tail: the upper lobe reaches further from the spine than the
+        // lower one.
+        let (_, _, axis_y) = shark_profile(SHARK_TAIL_ROOT_X);
+        let tail: Vec<f32> = mesh
+            .vertices
+            .iter()
+            .filter(|v| v.position[0] < -0.35)
+            .map(|v| v.position[1] - axis_y)
+            .collect();
+        let upper = tail.iter().copied().fold(f32::MIN, f32::max);
+        let lower = -tail.iter().copied().fold(f32::MAX, f32::min);
+        assert!(upper > 1.4 * lower, "upper lobe {upper}, lower {lower}");
+        // Big pectoral fins: wider than the body by more than a third of its depth.
+        assert!(hi.z > shark_profile(0.16).1 + body_depth / 3.0, "{}", hi.z);
+    }
+
+    #[test]
+    fn stingray_is_a_flat_disc_wider_than_long_with_a_thin_tail_behind() {
+        let mesh = stingray();
+        check_well_formed(&mesh);
+        let (lo, hi) = bounds(&mesh);
+        let (width, height) = (hi.z - lo.z, hi.y - lo.y);
+        assert!(height < 0.15 * width, "flat: {height} high, {width} wide");
+        assert!((hi.x - 0.5).abs() < 1e-3, "snout at +0.5: {}", hi.x);
+        assert!((lo.x + 0.5).abs() < 1e-3, "tail tip at −0.5: {}", lo.x);
+        let disc = mesh
+            .vertices
+            .iter()
+            .filter(|v| v.material == Material::RayBelly as u32)
+            .fold((f32::MAX, f32::MIN), |(a, b), v| {
+                (a.min(v.position[0]), b.max(v.position[0]))
+            });
+        assert!(width > 1.2 * (disc.1 - disc.0), "disc wider than long");
+        // Pointing along +x: eyes in front, on top; the tail behind and thin.
+        let eyes = centroid(&mesh, Material::FishEye);
+        assert!(eyes.x > 0.3 && eyes.y > 0.0, "eyes at {eyes}");
+        assert!(
+            mesh.vertices
+                .iter()
+                .filter(|v| v.position[0] < disc.0 - 0.05)
+                .all(|v| v.position[2].abs() < 0.03 && v.position[1].abs() < 0.03)
+        );
+        // The back is above the belly everywhere.
+        assert!(centroid(&mesh, Material::RayBack).y > centroid(&mesh, Material::RayBelly).y);
     }
 
     #[test]

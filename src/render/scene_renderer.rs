@@ -8,8 +8,16 @@
 //!
 //! Passes, in order: the room and the water volume behind everything (a full-screen
 //! triangle that ray-casts the tank box), static meshes (sand, rocks, pillars, tank
-//! frame), instanced fish, and the translucent water surface.
+//! frame), instanced animals (fish near and far, sharks, stingrays), and the
+//! translucent water surface.
+//!
+//! Several 3D views can be drawn in one frame (compare mode shows two tanks), each
+//! its own paint callback with its own `view_id`. egui runs every callback's
+//! `prepare` before any `paint`, so each view keeps its own uniforms, instances,
+//! static mesh and offscreen image ([`ViewState`], in a [`ViewCache`]); pipelines,
+//! shaders, the sampler and the animal meshes are shared.
 
+use std::ops::Range;
 use std::sync::Arc;
 
 use bytemuck::{Pod, Zeroable};
@@ -61,7 +69,8 @@ impl SceneUniforms {
     }
 }
 
-/// One fish to draw (`FishInstance` in `scene.wgsl`). 48 bytes.
+/// One animal to draw, fish, shark or stingray (`FishInstance` in `scene.wgsl`).
+/// 48 bytes.
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 #[repr(C)]
 pub struct FishInstance {
@@ -69,27 +78,200 @@ pub struct FishInstance {
     pub body_length_m: f32,
     /// Unit forward direction.
     pub forward: [f32; 3],
-    /// Tail-beat phase, radians.
+    /// Tail-beat phase (a stingray: wing-beat phase), radians.
     pub tail_phase_rad: f32,
-    /// RGB body colour; a = stripe pattern strength in [0, 1].
+    /// RGB body colour; a = pattern strength in [0, 1] (see `fish_palette::Livery`).
     pub color: [f32; 4],
 }
 
 /// The static part of the scene (floor, frame, obstacles), rebuilt when the world is.
 #[derive(Clone, Debug)]
 pub struct StaticScene {
-    /// Changes whenever the mesh changes; the GPU copy is re-uploaded then.
+    /// Changes whenever the mesh changes, and differs between worlds (the frame
+    /// builder draws it from one counter for the whole program); the GPU copy is
+    /// re-uploaded when it changes.
     pub generation: u64,
     pub mesh: Arc<Mesh>,
 }
 
-/// Everything one frame draws. Built by the app on the CPU, consumed in `prepare`.
+/// Everything one frame of one 3D view draws. Built by the app on the CPU,
+/// consumed in `prepare`.
 pub struct SceneCallback {
+    /// Which 3D view this is: each keeps its own GPU state, so several views can be
+    /// drawn in one frame (compare mode: 0 and 1). At most one callback per view id
+    /// per frame.
+    pub view_id: u32,
     pub uniforms: SceneUniforms,
+    /// The fish. The first `fish_detailed` are drawn with `mesh::fish`, the rest
+    /// (small on screen) with the low-poly `mesh::fish_lod`.
     pub fish: Arc<Vec<FishInstance>>,
+    pub fish_detailed: usize,
+    /// Sharks, drawn with `mesh::shark`, swimming like the fish.
+    pub sharks: Arc<Vec<FishInstance>>,
+    /// Stingrays, drawn with `mesh::stingray`; `tail_phase_rad` drives the wing beat.
+    pub rays: Arc<Vec<FishInstance>>,
     pub statics: StaticScene,
     /// Size of the 3D view in physical pixels.
     pub size_px: [u32; 2],
+}
+
+/// State kept per 3D view, keyed by view id: created on first use; a view not drawn
+/// for [`ViewCache::STALE_AFTER_FRAMES`] frames is dropped, and when a new view
+/// would make more than [`ViewCache::MAX_VIEWS`], the one drawn least recently goes
+/// (never one drawn in the current frame: its `paint` is still to come).
+///
+/// Frames are counted without help from egui: each view is drawn at most once a
+/// frame, so a view drawn a second time means a new frame has begun.
+#[derive(Debug)]
+pub struct ViewCache<T> {
+    frame: u64,
+    drawn_this_frame: Vec<u32>,
+    entries: Vec<ViewEntry<T>>,
+}
+
+#[derive(Debug)]
+struct ViewEntry<T> {
+    view_id: u32,
+    last_frame: u64,
+    state: T,
+}
+
+impl<T> Default for ViewCache<T> {
+    fn default() -> Self {
+        Self {
+            frame: 0,
+            drawn_this_frame: Vec::new(),
+            entries: Vec::new(),
+        }
+    }
+}
+
+impl<T> ViewCache<T> {
+    /// Views kept at most (unless more are drawn in one frame): compare mode needs
+    /// two; four leaves room without holding much GPU memory.
+    pub const MAX_VIEWS: usize = 4;
+    /// A view not drawn for this many frames (5 s at 60 FPS) is dropped.
+    pub const STALE_AFTER_FRAMES: u64 = 300;
+
+    /// Marks `view_id` as drawn in this frame and returns its state, made by `make`
+    /// if the view is new; drops views by the rule above first.
+    pub fn draw(&mut self, view_id: u32, make: impl FnOnce() -> T) -> &mut T {
+        if self.drawn_this_frame.contains(&view_id) {
+            self.frame += 1;
+            self.drawn_this_frame.clear();
+        }
+        self.drawn_this_frame.push(view_id);
+        let frame = self.frame;
+        self.entries
+            .retain(|e| e.view_id == view_id || frame - e.last_frame <= Self::STALE_AFTER_FRAMES);
+        let index = match self.entries.iter().position(|e| e.view_id == view_id) {
+            Some(index) => index,
+            None => {
+                while self.entries.len() >= Self::MAX_VIEWS {
+                    let oldest = self
+                        .entries
+                        .iter()
+                        .enumerate()
+                        .filter(|(_, e)| e.last_frame < frame)
+                        .min_by_key(|(_, e)| e.last_frame)
+                        .map(|(i, _)| i);
+                    let Some(oldest) = oldest else { break };
+                    self.entries.swap_remove(oldest);
+                }
+                self.entries.push(ViewEntry {
+                    view_id,
+                    last_frame: frame,
+                    state: make(),
+                });
+                self.entries.len() - 1
+            }
+        };
+        let entry = &mut self.entries[index];
+        entry.last_frame = frame;
+        &mut entry.state
+    }
+
+    /// The state of `view_id`, if it is kept.
+    pub fn get(&self, view_id: u32) -> Option<&T> {
+        self.entries
+            .iter()
+            .find(|e| e.view_id == view_id)
+            .map(|e| &e.state)
+    }
+
+    /// The view ids kept, in no particular order.
+    pub fn view_ids(&self) -> impl Iterator<Item = u32> + '_ {
+        self.entries.iter().map(|e| e.view_id)
+    }
+}
+
+/// A mesh on the GPU.
+struct GpuMesh {
+    vertices: wgpu::Buffer,
+    indices: wgpu::Buffer,
+    index_count: u32,
+}
+
+impl GpuMesh {
+    /// `None` for an empty mesh (nothing to draw, and wgpu rejects empty buffers
+    /// on some tiers).
+    fn upload(device: &wgpu::Device, label: &str, mesh: &Mesh) -> Option<Self> {
+        if mesh.indices.is_empty() {
+            return None;
+        }
+        let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(label),
+            contents: bytemuck::cast_slice(&mesh.vertices),
+            usage: wgpu::BufferUsages::VERTEX,
+        });
+        let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(label),
+            contents: bytemuck::cast_slice(&mesh.indices),
+            usage: wgpu::BufferUsages::INDEX,
+        });
+        Some(Self {
+            vertices,
+            indices,
+            index_count: mesh.indices.len() as u32,
+        })
+    }
+}
+
+/// The instanced meshes, by what they draw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Animal {
+    Fish,
+    FarFish,
+    Shark,
+    Ray,
+}
+
+impl Animal {
+    const ALL: [Animal; 4] = [Animal::Fish, Animal::FarFish, Animal::Shark, Animal::Ray];
+
+    fn mesh(self) -> Mesh {
+        match self {
+            Animal::Fish => mesh::fish(),
+            Animal::FarFish => mesh::fish_lod(),
+            Animal::Shark => mesh::shark(),
+            Animal::Ray => mesh::stingray(),
+        }
+    }
+}
+
+/// Where each kind of animal sits in a view's instance buffer, in instances:
+/// near fish, far fish, sharks, rays, one after another.
+fn instance_ranges(frame: &SceneCallback) -> [(Animal, Range<u32>); 4] {
+    let detailed = frame.fish_detailed.min(frame.fish.len()) as u32;
+    let fish = frame.fish.len() as u32;
+    let sharks = fish + frame.sharks.len() as u32;
+    let rays = sharks + frame.rays.len() as u32;
+    [
+        (Animal::Fish, 0..detailed),
+        (Animal::FarFish, detailed..fish),
+        (Animal::Shark, fish..sharks),
+        (Animal::Ray, sharks..rays),
+    ]
 }
 
 struct Targets {
@@ -102,32 +284,42 @@ struct Targets {
     blit_bind_group: wgpu::BindGroup,
 }
 
-/// GPU resources of the scene renderer, kept in egui-wgpu's callback resources.
-pub struct SceneRenderer {
-    caps: RenderCaps,
+/// The GPU state of one 3D view.
+struct ViewState {
     uniform_buffer: wgpu::Buffer,
     uniform_bind_group: wgpu::BindGroup,
-    background_pipeline: wgpu::RenderPipeline,
-    static_pipeline: wgpu::RenderPipeline,
-    fish_pipeline: wgpu::RenderPipeline,
-    surface_pipeline: wgpu::RenderPipeline,
-    blit_pipeline: wgpu::RenderPipeline,
-    blit_layout: wgpu::BindGroupLayout,
-    sampler: wgpu::Sampler,
-    fish_vertices: wgpu::Buffer,
-    fish_indices: wgpu::Buffer,
-    fish_index_count: u32,
+    /// Every animal of the view, by kind in `instance_ranges` order.
     instances: wgpu::Buffer,
     instance_capacity: usize,
-    instance_count: u32,
-    static_vertices: Option<(wgpu::Buffer, wgpu::Buffer, u32)>,
+    ranges: [(Animal, Range<u32>); 4],
+    statics: Option<GpuMesh>,
     static_generation: Option<u64>,
     targets: Option<Targets>,
 }
 
+/// GPU resources of the scene renderer, kept in egui-wgpu's callback resources.
+pub struct SceneRenderer {
+    caps: RenderCaps,
+    uniform_layout: wgpu::BindGroupLayout,
+    background_pipeline: wgpu::RenderPipeline,
+    static_pipeline: wgpu::RenderPipeline,
+    /// Fish and sharks (`vs_fish`).
+    swim_pipeline: wgpu::RenderPipeline,
+    /// Stingrays (`vs_ray`).
+    ray_pipeline: wgpu::RenderPipeline,
+    surface_pipeline: wgpu::RenderPipeline,
+    blit_pipeline: wgpu::RenderPipeline,
+    blit_layout: wgpu::BindGroupLayout,
+    sampler: wgpu::Sampler,
+    /// One mesh per `Animal`, in `Animal::ALL` order.
+    animal_meshes: Vec<Option<GpuMesh>>,
+    views: ViewCache<ViewState>,
+}
+
 const SCENE_SHADER: &str = include_str!("../../shaders/scene.wgsl");
 const BLIT_SHADER: &str = include_str!("../../shaders/blit.wgsl");
-
+/// Instances a view's buffer holds at first; it grows to the next power of two.
+const FIRST_INSTANCE_CAPACITY: usize = 256;
 impl SceneRenderer {
     /// Creates the pipelines and registers the renderer with egui's callback
     /// resources. Returns what this adapter allows.
@@ -162,20 +354,6 @@ impl SceneRenderer {
                     min_binding_size: wgpu::BufferSize::new(size_of::<SceneUniforms>() as u64),
                 },
                 count: None,
-            }],
-        });
-        let uniform_buffer = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("scene uniforms"),
-            size: size_of::<SceneUniforms>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let uniform_bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("scene uniforms"),
-            layout: &uniform_layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: uniform_buffer.as_entire_binding(),
             }],
         });
         let scene_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -262,12 +440,21 @@ impl SceneRenderer {
             depth(true),
             None,
         );
-        let fish_pipeline = pipeline(
-            "fish",
+        // Fins are double-sided geometry; bodies are closed: back-face culling.
+        let swim_pipeline = pipeline(
+            "fish and sharks",
             "vs_fish",
             "fs_lit",
+            &[Some(vertex_layout.clone()), Some(instance_layout.clone())],
+            Some(wgpu::Face::Back),
+            depth(true),
+            None,
+        );
+        let ray_pipeline = pipeline(
+            "stingrays",
+            "vs_ray",
+            "fs_lit",
             &[Some(vertex_layout), Some(instance_layout)],
-            // Fins are double-sided geometry; the body is closed: back-face culling.
             Some(wgpu::Face::Back),
             depth(true),
             None,
@@ -341,56 +528,66 @@ impl SceneRenderer {
             ..Default::default()
         });
 
-        let fish_mesh = mesh::fish();
-        let fish_vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("fish vertices"),
-            contents: bytemuck::cast_slice(&fish_mesh.vertices),
-            usage: wgpu::BufferUsages::VERTEX,
-        });
-        let fish_indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("fish indices"),
-            contents: bytemuck::cast_slice(&fish_mesh.indices),
-            usage: wgpu::BufferUsages::INDEX,
-        });
-        let instance_capacity = 256;
-        let instances = Self::instance_buffer(device, instance_capacity);
+        let animal_meshes = Animal::ALL
+            .iter()
+            .map(|animal| GpuMesh::upload(device, &format!("{animal:?} mesh"), &animal.mesh()))
+            .collect();
 
         Self {
             caps,
-            uniform_buffer,
-            uniform_bind_group,
+            uniform_layout,
             background_pipeline,
             static_pipeline,
-            fish_pipeline,
+            swim_pipeline,
+            ray_pipeline,
             surface_pipeline,
             blit_pipeline,
             blit_layout,
             sampler,
-            fish_vertices,
-            fish_indices,
-            fish_index_count: fish_mesh.indices.len() as u32,
-            instances,
-            instance_capacity,
-            instance_count: 0,
-            static_vertices: None,
-            static_generation: None,
-            targets: None,
+            animal_meshes,
+            views: ViewCache::default(),
         }
     }
 
     fn instance_buffer(device: &wgpu::Device, capacity: usize) -> wgpu::Buffer {
         device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("fish instances"),
+            label: Some("animal instances"),
             size: (capacity * size_of::<FishInstance>()) as u64,
             usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         })
     }
 
-    fn ensure_targets(&mut self, device: &wgpu::Device, size_px: [u32; 2]) {
-        if self.targets.as_ref().is_some_and(|t| t.size_px == size_px) {
-            return;
+    /// The GPU state of a view that is drawn for the first time.
+    fn new_view(&self, device: &wgpu::Device) -> ViewState {
+        let uniform_buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("scene uniforms"),
+            size: size_of::<SceneUniforms>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let uniform_bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("scene uniforms"),
+            layout: &self.uniform_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: uniform_buffer.as_entire_binding(),
+            }],
+        });
+        ViewState {
+            uniform_buffer,
+            uniform_bind_group,
+            instances: Self::instance_buffer(device, FIRST_INSTANCE_CAPACITY),
+            instance_capacity: FIRST_INSTANCE_CAPACITY,
+            ranges: Animal::ALL.map(|animal| (animal, 0..0)),
+            statics: None,
+            static_generation: None,
+            targets: None,
         }
+    }
+
+    /// Offscreen images of `size_px` (kept while the size stays the same).
+    fn targets(&self, device: &wgpu::Device, size_px: [u32; 2]) -> Targets {
         let size = wgpu::Extent3d {
             width: size_px[0],
             height: size_px[1],
@@ -433,60 +630,60 @@ impl SceneRenderer {
                 },
             ],
         });
-        self.targets = Some(Targets {
+        Targets {
             size_px,
             msaa_color,
             depth,
             color,
             blit_bind_group,
-        });
-    }
-
-    fn upload(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, frame: &SceneCallback) {
-        queue.write_buffer(&self.uniform_buffer, 0, bytemuck::bytes_of(&frame.uniforms));
-        if frame.fish.len() > self.instance_capacity {
-            self.instance_capacity = frame.fish.len().next_power_of_two();
-            self.instances = Self::instance_buffer(device, self.instance_capacity);
-        }
-        if !frame.fish.is_empty() {
-            queue.write_buffer(
-                &self.instances,
-                0,
-                bytemuck::cast_slice(frame.fish.as_slice()),
-            );
-        }
-        self.instance_count = frame.fish.len() as u32;
-        if self.static_generation != Some(frame.statics.generation) {
-            let mesh = &frame.statics.mesh;
-            self.static_vertices = (!mesh.indices.is_empty()).then(|| {
-                let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                    label: Some("static vertices"),
-                    contents: bytemuck::cast_slice(&mesh.vertices),
-                    usage: wgpu::BufferUsages::VERTEX,
-                });
-                let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                    label: Some("static indices"),
-                    contents: bytemuck::cast_slice(&mesh.indices),
-                    usage: wgpu::BufferUsages::INDEX,
-                });
-                (vertices, indices, mesh.indices.len() as u32)
-            });
-            self.static_generation = Some(frame.statics.generation);
         }
     }
 
-    fn render_scene(&self, encoder: &mut wgpu::CommandEncoder) {
-        let Some(targets) = &self.targets else {
+    /// Uploads one view's frame: uniforms, every animal into one instance buffer
+    /// (grown to the next power of two when too small), and the static mesh when its
+    /// generation changed.
+    fn upload(
+        view: &mut ViewState,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        frame: &SceneCallback,
+    ) {
+        queue.write_buffer(&view.uniform_buffer, 0, bytemuck::bytes_of(&frame.uniforms));
+        view.ranges = instance_ranges(frame);
+        let total = view.ranges[3].1.end as usize;
+        if total > view.instance_capacity {
+            view.instance_capacity = total.next_power_of_two();
+            view.instances = Self::instance_buffer(device, view.instance_capacity);
+        }
+        let mut offset = 0;
+        for animals in [&frame.fish, &frame.sharks, &frame.rays] {
+            if !animals.is_empty() {
+                queue.write_buffer(
+                    &view.instances,
+                    (offset * size_of::<FishInstance>()) as u64,
+                    bytemuck::cast_slice(animals.as_slice()),
+                );
+            }
+            offset += animals.len();
+        }
+        if view.static_generation != Some(frame.statics.generation) {
+            view.statics = GpuMesh::upload(device, "static scene", &frame.statics.mesh);
+            view.static_generation = Some(frame.statics.generation);
+        }
+    }
+
+    fn render_scene(&self, view: &ViewState, encoder: &mut wgpu::CommandEncoder) {
+        let Some(targets) = &view.targets else {
             return;
         };
-        let (view, resolve_target) = match &targets.msaa_color {
+        let (color_view, resolve_target) = match &targets.msaa_color {
             Some(msaa) => (msaa, Some(&targets.color)),
             None => (&targets.color, None),
         };
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("aquarium"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view,
+                view: color_view,
                 depth_slice: None,
                 resolve_target,
                 ops: wgpu::Operations {
@@ -506,24 +703,35 @@ impl SceneRenderer {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        pass.set_bind_group(0, &self.uniform_bind_group, &[]);
+        pass.set_bind_group(0, &view.uniform_bind_group, &[]);
 
         pass.set_pipeline(&self.background_pipeline);
         pass.draw(0..3, 0..1);
 
-        if let Some((vertices, indices, count)) = &self.static_vertices {
+        if let Some(statics) = &view.statics {
             pass.set_pipeline(&self.static_pipeline);
-            pass.set_vertex_buffer(0, vertices.slice(..));
-            pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
-            pass.draw_indexed(0..*count, 0, 0..1);
+            pass.set_vertex_buffer(0, statics.vertices.slice(..));
+            pass.set_index_buffer(statics.indices.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..statics.index_count, 0, 0..1);
         }
 
-        if self.instance_count > 0 {
-            pass.set_pipeline(&self.fish_pipeline);
-            pass.set_vertex_buffer(0, self.fish_vertices.slice(..));
-            pass.set_vertex_buffer(1, self.instances.slice(..));
-            pass.set_index_buffer(self.fish_indices.slice(..), wgpu::IndexFormat::Uint32);
-            pass.draw_indexed(0..self.fish_index_count, 0, 0..self.instance_count);
+        let stride = size_of::<FishInstance>() as u64;
+        for ((animal, range), mesh) in view.ranges.iter().zip(&self.animal_meshes) {
+            let Some(mesh) = mesh else { continue };
+            if range.is_empty() {
+                continue;
+            }
+            pass.set_pipeline(match animal {
+                Animal::Ray => &self.ray_pipeline,
+                Animal::Fish | Animal::FarFish | Animal::Shark => &self.swim_pipeline,
+            });
+            pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+            // An offset into the buffer rather than a first instance: WebGL2 has no
+            // base instance.
+            let bytes = u64::from(range.start) * stride..u64::from(range.end) * stride;
+            pass.set_vertex_buffer(1, view.instances.slice(bytes));
+            pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..mesh.index_count, 0, 0..range.len() as u32);
         }
 
         pass.set_pipeline(&self.surface_pipeline);
@@ -545,9 +753,16 @@ impl CallbackTrait for SceneCallback {
         };
         let max = device.limits().max_texture_dimension_2d;
         let size_px = [self.size_px[0].clamp(1, max), self.size_px[1].clamp(1, max)];
-        renderer.ensure_targets(device, size_px);
-        renderer.upload(device, queue, self);
-        renderer.render_scene(egui_encoder);
+        // The view's state is taken out of the cache while it is used, so that the
+        // renderer's shared parts can be borrowed alongside it.
+        let mut views = std::mem::take(&mut renderer.views);
+        let view = views.draw(self.view_id, || renderer.new_view(device));
+        if view.targets.as_ref().is_none_or(|t| t.size_px != size_px) {
+            view.targets = Some(renderer.targets(device, size_px));
+        }
+        SceneRenderer::upload(view, device, queue, self);
+        renderer.render_scene(view, egui_encoder);
+        renderer.views = views;
         Vec::new()
     }
 
@@ -560,11 +775,114 @@ impl CallbackTrait for SceneCallback {
         let Some(renderer) = resources.get::<SceneRenderer>() else {
             return;
         };
-        let Some(targets) = &renderer.targets else {
+        let Some(targets) = renderer
+            .views
+            .get(self.view_id)
+            .and_then(|view| view.targets.as_ref())
+        else {
             return;
         };
         render_pass.set_pipeline(&renderer.blit_pipeline);
         render_pass.set_bind_group(0, &targets.blit_bind_group, &[]);
         render_pass.draw(0..3, 0..1);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn kept(cache: &ViewCache<u32>) -> Vec<u32> {
+        let mut ids: Vec<u32> = cache.view_ids().collect();
+        ids.sort_unstable();
+        ids
+    }
+
+    #[test]
+    fn views_drawn_every_frame_keep_their_own_state() {
+        let mut cache = ViewCache::default();
+        for frame in 0..1_000_u32 {
+            for view_id in [0, 1] {
+                let state = cache.draw(view_id, || 0_u32);
+                *state += 1;
+                assert_eq!(*state, frame + 1, "view {view_id} was rebuilt");
+            }
+        }
+        assert_eq!(cache.get(0), Some(&1_000));
+        assert_eq!(cache.get(1), Some(&1_000));
+        assert_eq!(cache.get(2), None);
+    }
+
+    #[test]
+    fn a_view_not_drawn_for_300_frames_is_dropped() {
+        let mut cache = ViewCache::default();
+        cache.draw(0, || 0_u32);
+        cache.draw(1, || 0_u32);
+        // Compare mode ends: only view 0 is drawn from now on.
+        for _ in 0..ViewCache::<u32>::STALE_AFTER_FRAMES {
+            cache.draw(0, || 0);
+        }
+        assert_eq!(kept(&cache), vec![0, 1], "still within the grace period");
+        cache.draw(0, || 0);
+        assert_eq!(kept(&cache), vec![0]);
+    }
+
+    #[test]
+    fn beyond_four_views_the_least_recently_drawn_goes_but_never_one_of_this_frame() {
+        let mut cache = ViewCache::default();
+        // Frame 1: views 0 to 3; frame 2: views 1 to 3; frame 3: view 4 is new.
+        for view_id in 0..4 {
+            cache.draw(view_id, || view_id);
+        }
+        for view_id in 1..4 {
+            cache.draw(view_id, || view_id);
+        }
+        cache.draw(1, || 1);
+        cache.draw(4, || 4);
+        assert_eq!(
+            kept(&cache),
+            vec![1, 2, 3, 4],
+            "view 0 was drawn longest ago"
+        );
+        // Six views in one frame: all kept until their paint has run.
+        for view_id in 10..16 {
+            cache.draw(view_id, || view_id);
+        }
+        for view_id in 10..16 {
+            assert_eq!(cache.get(view_id), Some(&view_id));
+        }
+        // The next frame draws only 10 and 11: others go as new views come.
+        cache.draw(10, || 10);
+        cache.draw(11, || 11);
+        cache.draw(20, || 20);
+        assert!(kept(&cache).len() <= 6);
+        assert!(cache.get(10).is_some() && cache.get(11).is_some() && cache.get(20).is_some());
+    }
+
+    #[test]
+    fn animals_share_one_instance_buffer_in_kind_order() {
+        let one = FishInstance::zeroed();
+        let frame = SceneCallback {
+            view_id: 0,
+            uniforms: SceneUniforms::zeroed(),
+            fish: Arc::new(vec![one; 10]),
+            fish_detailed: 4,
+            sharks: Arc::new(vec![one; 2]),
+            rays: Arc::new(vec![one; 3]),
+            statics: StaticScene {
+                generation: 0,
+                mesh: Arc::new(Mesh::default()),
+            },
+            size_px: [1, 1],
+        };
+        assert_eq!(
+            instance_ranges(&frame),
+            [
+                (Animal::Fish, 0..4),
+                (Animal::FarFish, 4..10),
+                (Animal::Shark, 10..12),
+                (Animal::Ray, 12..15),
+            ]
+        );
     }
 }
