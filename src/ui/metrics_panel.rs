@@ -2,7 +2,7 @@
 //! tank, so students see in the curves why a school and a crowd of loners differ.
 
 use eframe::egui;
-use egui_plot::{Legend, Line, Plot, PlotPoints};
+use egui_plot::{Line, Plot, PlotPoints};
 
 use super::WidgetRects;
 use crate::lab::Run;
@@ -124,9 +124,6 @@ pub fn metrics_panel_ui(
                     plot = plot.include_y(lo).include_y(hi);
                 } else {
                     plot = plot.include_y(0.0);
-                }
-                if index == 0 && runs.len() > 1 {
-                    plot = plot.legend(Legend::default());
                 }
                 let response = plot.show(ui, |plot_ui| {
                     for (run, label) in runs.iter().zip(labels) {

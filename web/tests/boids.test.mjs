@@ -1,6 +1,7 @@
 // The schooling lab (issue 3) as a teacher uses it: real clicks and drags on the
 // panel, presets and control modes, compare mode, share links, the CSV download and
 // the rock tools. WebGL2 (SwiftShader); the WebGPU path is covered by aquarium tests.
+// The window is tall so that the whole panel fits without scrolling.
 import { test, describe, before, after } from "node:test";
 import assert from "node:assert/strict";
 import {
@@ -51,7 +52,7 @@ describe("schooling lab", () => {
   before(async () => {
     server = await serveDist();
     browser = await launch("webgl2");
-    const context = await browser.newContext({ viewport: { width: 1366, height: 1000 } });
+    const context = await browser.newContext({ viewport: { width: 1366, height: 1440 } });
     await context.grantPermissions(["clipboard-read", "clipboard-write"], { origin: server.url });
     ({ page, errors } = await openShoal(context, server.url));
   });
@@ -73,18 +74,19 @@ describe("schooling lab", () => {
     assert.equal((await settings(page)).left.preset, "individual");
   });
 
-  test("dragging the alignment and cohesion sliders with the mouse lines the fish up", async () => {
+  test("dragging the alignment, cohesion and wander sliders with the mouse lines the fish up", async () => {
     await page.evaluate(() => window.shoal.pause());
     const solitary = await polarizationAfter(page, 2400);
     await dragSlider(page, "weight_alignment", 1.0);
-    await dragSlider(page, "weight_cohesion", 1.0);
-    await dragSlider(page, "weight_separation", 0.2);
+    await dragSlider(page, "weight_cohesion", 0.3);
+    await dragSlider(page, "wander", 0.0);
     const s = await settings(page);
     assert.ok(s.left.alignment > 90, `alignment ${s.left.alignment}`);
-    assert.ok(s.left.cohesion > 90, `cohesion ${s.left.cohesion}`);
+    assert.ok(s.left.cohesion > 20 && s.left.cohesion < 40, `cohesion ${s.left.cohesion}`);
+    assert.ok(s.left.wander < 5, `wander ${s.left.wander}`);
     assert.equal(s.left.preset, "custom");
     const social = await polarizationAfter(page, 2400);
-    assert.ok(social > solitary + 0.2, `polarization ${solitary} → ${social}`);
+    assert.ok(social > solitary + 0.4, `polarization ${solitary} → ${social}`);
   });
 
   test("preset and control-mode buttons switch what the fish do", async () => {
@@ -140,8 +142,10 @@ describe("schooling lab", () => {
     for (const [name, r] of [["left", left], ["right", right]]) {
       const stats = pixelStats(png, r);
       assert.ok(stats.std > 10 && stats.distinctColours > 50, `${name} tank is drawn: ${JSON.stringify(stats)}`);
-      assert.ok(fishPixels(png, r).size > 100, `${name} tank shows fish`);
     }
+    // The loners are spread through the left tank; the school may sit behind glass.
+    const fish = fishPixels(png, left).size;
+    assert.ok(fish > 40, `the left tank shows fish (${fish} fish pixels)`);
     await page.evaluate(() => window.shoal.pause());
   });
 
@@ -174,6 +178,7 @@ describe("schooling lab", () => {
   });
 
   test("the CSV button downloads the metrics table", async () => {
+    await page.evaluate(() => window.shoal.step(600));
     const download = page.waitForEvent("download", { timeout: 30_000 });
     await clickWidget(page, "export_csv");
     const file = await download;
@@ -194,14 +199,20 @@ describe("schooling lab", () => {
     assert.equal(before, null, "the seed's rocks until edited");
     await clickWidget(page, "tool_add_rock");
     const view = await waitForWidget(page, "view_left");
-    // Low in the middle of the view: the sand in front of the tank's centre.
-    await page.mouse.click(view.x + view.width * 0.5, view.y + view.height * 0.8, { delay: 60 });
-    await page.waitForFunction(() => window.shoal.settings().left.obstacles !== null, null, { timeout: 30_000 });
+    // Walk down the middle of the view until a click lands on the sand (clicks
+    // beyond the glass are refused with a notice and change nothing).
+    let at = null;
+    for (let y = 0.5; y < 0.95 && !at; y += 0.025) {
+      await page.mouse.click(view.x + view.width * 0.5, view.y + view.height * y, { delay: 60 });
+      await page.waitForTimeout(400);
+      if ((await settings(page)).left.obstacles !== null) at = y;
+    }
+    assert.ok(at, "a click on the sand adds a rock");
     const added = (await settings(page)).left.obstacles;
     const world = added.length;
     assert.ok(world >= 1);
     await clickWidget(page, "tool_remove_rock");
-    await page.mouse.click(view.x + view.width * 0.5, view.y + view.height * 0.8, { delay: 60 });
+    await page.mouse.click(view.x + view.width * 0.5, view.y + view.height * at, { delay: 60 });
     await page.waitForFunction((n) => window.shoal.settings().left.obstacles.length === n - 1, world, {
       timeout: 30_000,
     });
