@@ -20,14 +20,14 @@ try {
     try {
       const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
       await page.goto(server.url + "?bench");
-      await page.waitForFunction(() => window.shoal?.state().bench?.done, null, { timeout: 300_000 });
+      await page.waitForFunction(() => window.shoal?.state().bench?.done, null, { timeout: 900_000 });
       const { tier: reported, bench } = await page.evaluate(() => window.shoal.state());
       const size = await page.evaluate(() => window.shoalWasmSize);
       console.log(`\nbrowser benchmark, ${reported} tier (headless Chromium, SwiftShader: software GPU)`);
       if (size) console.log(`  wasm in the page: ${(size.raw_bytes / 1048576).toFixed(2)} MiB raw, ${(size.gzip_bytes / 1048576).toFixed(2)} MiB gzipped`);
-      console.log("    fish |    steps/s |  fish-steps/s | frame ms | cpu ms");
+      console.log("     scene |   fish |    steps/s |  fish-steps/s | frame ms | cpu ms");
       for (const r of bench.rows) {
-        console.log(`  ${String(r.fish).padStart(6)} | ${r.sim_steps_per_sec.toFixed(0).padStart(10)} | ${r.fish_steps_per_sec.toFixed(0).padStart(13)} | ${r.frame_ms.toFixed(2).padStart(8)} | ${r.cpu_frame_ms.toFixed(2).padStart(6)}`);
+        console.log(`  ${r.scene.padStart(8)} | ${String(r.fish).padStart(6)} | ${r.sim_steps_per_sec.toFixed(0).padStart(10)} | ${r.fish_steps_per_sec.toFixed(0).padStart(13)} | ${r.frame_ms.toFixed(2).padStart(8)} | ${r.cpu_frame_ms.toFixed(2).padStart(6)}`);
       }
     } finally {
       await browser.close();
