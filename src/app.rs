@@ -32,9 +32,9 @@ const VISION_OBSERVERS_MAX: usize = 300;
 /// schooling animal attends to (Ballerini et al. 2008), and a readable picture.
 const VISION_LINKS_PER_FISH: usize = 7;
 
-/// Fish whose field of view is drawn as a fan. Default 6: a few examples; fans for
+/// Fish whose field of view is drawn as a fan. Default 3: a few examples; fans for
 /// every fish would cover the tank.
-const VISION_FANS: usize = 6;
+const VISION_FANS: usize = 3;
 
 /// A message shown at the top of the 3D view until dismissed.
 #[derive(Clone, Debug, PartialEq)]
@@ -629,7 +629,7 @@ fn draw_vision(
                 points.clone(),
                 egui::Stroke::new(
                     1.5,
-                    egui::Color32::from_rgba_unmultiplied(120, 255, 200, 160),
+                    egui::Color32::from_rgba_unmultiplied(120, 255, 200, 110),
                 ),
             ));
             painter.add(egui::Shape::convex_polygon(
