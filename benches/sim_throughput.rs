@@ -40,7 +40,11 @@ fn main() {
         "{:>7} | {:>10} | {:>16} | {:>18}",
         "fish", "steps/s", "boid-steps/s", "metrics (ms/step)"
     );
+    let only: Option<usize> = std::env::args().skip(1).find_map(|a| a.parse().ok());
     for fish_count in [500, 5_000, 20_000] {
+        if only.is_some_and(|n| n != fish_count) {
+            continue;
+        }
         let mut w = world(fish_count);
         w.set_boids(Some(BoidParams::group()));
         // Let the school form first: a dense school is the hard case.
@@ -67,6 +71,9 @@ fn main() {
         "fish", "steps/s", "fish-steps/s", "frame build (ms)"
     );
     for fish_count in [200, 2_000, 5_000, 20_000] {
+        if only.is_some() {
+            break;
+        }
         let mut world = world(fish_count);
         for _ in 0..60 {
             world.step();

@@ -19,7 +19,7 @@
 
 use glam::Vec3;
 
-use super::fish::Fish;
+use super::fish::heading_of;
 use super::spatial_grid::{Nearest, SpatialGrid};
 use super::steering::limit;
 
@@ -55,15 +55,19 @@ pub struct Perception {
     pub response_time_s: f32,
 }
 
-/// The school seen from afar: fish bucketed into coarse cells (count and mean
-/// position per cell), so that a fish can find the centre of all the fish it
-/// sees in O(cells), not O(fish). Topological neighbours alone never see a
-/// second school a few metres away; real fish do, and swim to it (schools in a
-/// tank merge). This far field gives cohesion that view.
+/// The school seen from afar: fish bucketed into coarse cells (count and
+/// position sum per cell, built once per step), so that a fish can find the
+/// centre of all the fish it sees in O(cells), not O(fish). Topological
+/// neighbours alone never see a second school a few metres away; real fish do,
+/// and swim to it (schools in a tank merge). This far field gives cohesion
+/// that view.
 #[derive(Clone, Debug, Default)]
 pub struct FarField {
-    /// (mean position, count) of each non-empty coarse cell.
-    cells: Vec<(Vec3, u32)>,
+    /// Non-empty cells as structure of arrays: mean position and count.
+    mean_x_m: Vec<f32>,
+    mean_y_m: Vec<f32>,
+    mean_z_m: Vec<f32>,
+    count: Vec<f32>,
     sums: Vec<(Vec3, u32)>,
 }
 
@@ -83,7 +87,8 @@ impl FarField {
         self.sums.clear();
         self.sums.resize(dx * dy * dz, (Vec3::ZERO, 0));
         for &p in positions_m {
-            let q = ((p - min_m) / cell_m).floor();
+            // Truncation equals `floor` here: negative values clamp to 0.
+            let q = (p - min_m) / cell_m;
             if !q.is_finite() {
                 continue;
             }
@@ -94,13 +99,17 @@ impl FarField {
             cell.0 += p;
             cell.1 += 1;
         }
-        self.cells.clear();
-        self.cells.extend(
-            self.sums
-                .iter()
-                .filter(|c| c.1 > 0)
-                .map(|&(sum, n)| (sum / n as f32, n)),
-        );
+        self.mean_x_m.clear();
+        self.mean_y_m.clear();
+        self.mean_z_m.clear();
+        self.count.clear();
+        for &(sum, n) in self.sums.iter().filter(|c| c.1 > 0) {
+            let mean = sum / n as f32;
+            self.mean_x_m.push(mean.x);
+            self.mean_y_m.push(mean.y);
+            self.mean_z_m.push(mean.z);
+            self.count.push(n as f32);
+        }
     }
 
     /// Centre of the fish in the cells whose mean position a fish at
@@ -112,20 +121,66 @@ impl FarField {
         heading: Vec3,
         perception: &Perception,
     ) -> Option<Vec3> {
+        let cone = ViewCone::new(perception);
+        let mut sum = Vec3::ZERO;
+        let mut count = 0.0;
+        let cells = self.count.len();
+        let (xs, ys, zs) = (
+            &self.mean_x_m[..cells],
+            &self.mean_y_m[..cells],
+            &self.mean_z_m[..cells],
+        );
+        for k in 0..cells {
+            let offset = Vec3::new(xs[k], ys[k], zs[k]) - position_m;
+            let n = if cone.sees(heading, offset) {
+                self.count[k]
+            } else {
+                0.0
+            };
+            sum += Vec3::new(xs[k], ys[k], zs[k]) * n;
+            count += n;
+        }
+        (count > 0.0).then(|| sum / count)
+    }
+}
+
+/// The field of view as a test without square roots: within the vision
+/// distance and inside the cone of half-angle `vision_angle_rad / 2` around the
+/// heading.
+#[derive(Clone, Copy, Debug)]
+struct ViewCone {
+    vision_sq_m2: f32,
+    cos_half: f32,
+    cos_half_sq: f32,
+}
+
+impl ViewCone {
+    fn new(perception: &Perception) -> Self {
         let half_angle = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
         let cos_half = half_angle.cos() - 1e-6;
-        let vision_sq = perception.vision_distance_m * perception.vision_distance_m;
-        let mut sum = Vec3::ZERO;
-        let mut count = 0u32;
-        for &(centre, n) in &self.cells {
-            let offset = centre - position_m;
-            let d2 = offset.length_squared();
-            if d2 <= vision_sq && heading.dot(offset) >= cos_half * d2.sqrt() {
-                sum += centre * n as f32;
-                count += n;
-            }
+        Self {
+            vision_sq_m2: perception.vision_distance_m * perception.vision_distance_m,
+            cos_half,
+            cos_half_sq: cos_half * cos_half,
         }
-        (count > 0).then(|| sum / count as f32)
+    }
+
+    /// Is `offset` (from the eye) seen by a fish heading along the unit
+    /// `heading`? `heading·offset ≥ cos(half angle)·‖offset‖`, squared.
+    fn sees(&self, heading: Vec3, offset: Vec3) -> bool {
+        let d2 = offset.length_squared();
+        d2 <= self.vision_sq_m2 && self.in_angle(heading.dot(offset), d2)
+    }
+
+    /// The angle part of [`Self::sees`], given `dot = heading·offset` and the
+    /// squared distance.
+    fn in_angle(&self, dot: f32, d2: f32) -> bool {
+        let dot_sq = dot * dot;
+        if self.cos_half >= 0.0 {
+            dot >= 0.0 && dot_sq >= self.cos_half_sq * d2
+        } else {
+            dot >= 0.0 || dot_sq <= self.cos_half_sq * d2
+        }
     }
 }
 
@@ -169,9 +224,37 @@ pub fn steer_towards(
     )
 }
 
-/// The three neighbour forces on the fish at `positions_m[i]`, heeding its
-/// `max_neighbours` nearest seen neighbours, looked up in `grid` (built over
-/// `positions_m`, any cell size):
+/// The up-to-`max_neighbours` nearest neighbours that the fish at
+/// `positions_m[i]`, swimming with `velocities_m_per_s[i]`, sees (the
+/// neighbours it heeds), looked up in `grid` (built over `positions_m`, any
+/// cell size), nearest first.
+pub fn heeded_neighbours(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    i: usize,
+    grid: &SpatialGrid,
+    perception: &Perception,
+) -> Nearest {
+    let position_m = positions_m[i];
+    let heading = heading_of(velocities_m_per_s[i]);
+    let cone = ViewCone::new(perception);
+    let mut nearest = Nearest::new(perception.max_neighbours);
+    grid.k_nearest(
+        position_m,
+        perception.vision_distance_m,
+        &mut nearest,
+        |j, other_m, distance_sq_m2| {
+            j != i
+                && distance_sq_m2 > 0.0
+                && cone.in_angle(heading.dot(other_m - position_m), distance_sq_m2)
+        },
+    );
+    nearest
+}
+
+/// The three neighbour forces on the fish at `positions_m[i]` (a snapshot of
+/// the school as structure of arrays: positions and velocities), heeding its
+/// [`heeded_neighbours`]:
 ///
 /// - separation: away from the heeded neighbours closer than
 ///   `separation_distance_m` (each weighted by 1/distance), desired speed the
@@ -179,34 +262,21 @@ pub fn steer_towards(
 ///   at most 1, so it fades out at the edge of the personal space;
 /// - alignment: towards the heeded neighbours' mean heading, at the maximum speed;
 /// - cohesion: seek the heeded neighbours' centre at the maximum speed, scaled
-///   by min(1, distance to the centre / separation distance) (arrival).
+///   by min(1, distance to the centre / separation distance) (arrival), plus
+///   the far field's pull (see [`FarField`]).
 pub fn neighbour_forces(
-    fish: &[Fish],
     positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
     i: usize,
     grid: &SpatialGrid,
     far_field: Option<&FarField>,
     perception: &Perception,
 ) -> NeighbourForces {
-    let me = &fish[i];
-    let heading = me.heading();
-    let half_angle = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
-    let cos_half_angle = half_angle.cos() - 1e-6;
-    let mut nearest = Nearest::new(perception.max_neighbours);
-    grid.k_nearest(
-        me.position_m,
-        positions_m,
-        perception.vision_distance_m,
-        &mut nearest,
-        |j, distance_sq_m2| {
-            if j == i || distance_sq_m2 <= 0.0 {
-                return false;
-            }
-            let offset = positions_m[j] - me.position_m;
-            heading.dot(offset) >= cos_half_angle * distance_sq_m2.sqrt()
-        },
-    );
-    let far_centre_m = far_field.and_then(|f| f.seen_centre_m(me.position_m, heading, perception));
+    let position_m = positions_m[i];
+    let velocity_m_per_s = velocities_m_per_s[i];
+    let heading = heading_of(velocity_m_per_s);
+    let nearest = heeded_neighbours(positions_m, velocities_m_per_s, i, grid, perception);
+    let far_centre_m = far_field.and_then(|f| f.seen_centre_m(position_m, heading, perception));
     if nearest.is_empty() && far_centre_m.is_none() {
         return NeighbourForces::default();
     }
@@ -216,19 +286,19 @@ pub fn neighbour_forces(
     let mut position_sum = Vec3::ZERO;
     let separation_m = perception.separation_distance_m.max(0.0);
     for (j, distance_sq_m2) in nearest.iter() {
-        let offset = me.position_m - positions_m[j];
+        let offset = position_m - positions_m[j];
         let distance_m = distance_sq_m2.sqrt();
         if distance_m < separation_m {
             // Unit direction / distance = offset / distance².
             away += offset / distance_sq_m2.max(1e-6);
             intrusion += 1.0 - distance_m / separation_m;
         }
-        velocity_sum += fish[j].velocity_m_per_s;
+        velocity_sum += velocities_m_per_s[j];
         position_sum += positions_m[j];
     }
     let n = (nearest.len() as f32).max(1.0);
     let speed = perception.max_speed_m_per_s;
-    let steer = |desired: Vec3| steer_towards(desired, me.velocity_m_per_s, perception);
+    let steer = |desired: Vec3| steer_towards(desired, velocity_m_per_s, perception);
     // Separation grows as neighbours intrude into the personal space (one
     // neighbour at half the distance: half strength; at contact: full).
     let separation_m_per_s2 = steer(away.normalize_or_zero() * speed) * intrusion.min(1.0);
@@ -237,7 +307,7 @@ pub fn neighbour_forces(
     let to_centre_m = if nearest.is_empty() {
         Vec3::ZERO
     } else {
-        position_sum / n - me.position_m
+        position_sum / n - position_m
     };
     let arrival = if separation_m > 0.0 {
         (to_centre_m.length() / separation_m).min(1.0)
@@ -248,7 +318,7 @@ pub fn neighbour_forces(
     // centre, at FAR_FIELD_SHARE of full strength.
     let near = to_centre_m.normalize_or_zero() * arrival;
     let far = far_centre_m.map_or(Vec3::ZERO, |c| {
-        (c - me.position_m).normalize_or_zero() * FAR_FIELD_SHARE
+        (c - position_m).normalize_or_zero() * FAR_FIELD_SHARE
     });
     let pull = near + far;
     let cohesion_m_per_s2 = if pull == Vec3::ZERO {
@@ -272,6 +342,7 @@ pub fn neighbour_forces(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sim::fish::Fish;
 
     const PERCEPTION: Perception = Perception {
         vision_distance_m: 2.0,
@@ -285,6 +356,10 @@ mod tests {
 
     fn positions(fish: &[Fish]) -> Vec<Vec3> {
         fish.iter().map(|f| f.position_m).collect()
+    }
+
+    fn velocities(fish: &[Fish]) -> Vec<Vec3> {
+        fish.iter().map(|f| f.velocity_m_per_s).collect()
     }
 
     fn grid_for(fish: &[Fish]) -> SpatialGrid {
@@ -327,8 +402,8 @@ mod tests {
         let far = Fish::new(Vec3::new(1.5, 2.0, 0.9), Vec3::Z * 0.5, 0.4, 0.0);
         let fish = [me, close, far];
         let f = neighbour_forces(
-            &fish,
             &positions(&fish),
+            &velocities(&fish),
             0,
             &grid_for(&fish),
             None,
@@ -358,8 +433,8 @@ mod tests {
         let lone = [Fish::new(Vec3::new(0.0, 2.0, 0.0), Vec3::X, 0.4, 0.0)];
         assert_eq!(
             neighbour_forces(
-                &lone,
                 &positions(&lone),
+                &velocities(&lone),
                 0,
                 &grid_for(&lone),
                 None,
@@ -369,8 +444,8 @@ mod tests {
         );
         let twins = [lone[0], lone[0]];
         let f = neighbour_forces(
-            &twins,
             &positions(&twins),
+            &velocities(&twins),
             0,
             &grid_for(&twins),
             None,
@@ -402,8 +477,8 @@ mod tests {
             ..PERCEPTION
         };
         let f = neighbour_forces(
-            &fish,
             &positions(&fish),
+            &velocities(&fish),
             0,
             &grid_for(&fish),
             None,

@@ -62,11 +62,7 @@ impl Fish {
     /// Unit vector the fish faces: its direction of motion, or +x when it is
     /// (almost) still. Never NaN.
     pub fn heading(&self) -> Vec3 {
-        if self.speed_m_per_s() > STILL_SPEED_M_PER_S {
-            self.velocity_m_per_s.normalize_or(Vec3::X)
-        } else {
-            Vec3::X
-        }
+        heading_of(self.velocity_m_per_s)
     }
 
     /// Current speed in metres per second.
@@ -115,6 +111,16 @@ impl Fish {
             .min(params.max_speed_m_per_s);
         self.velocity_m_per_s = velocity.normalize_or(heading_before) * speed_m_per_s;
         self.position_m += self.velocity_m_per_s * dt_secs;
+    }
+}
+
+/// Unit vector along `velocity_m_per_s`, or +x when it is (almost) zero or
+/// not finite: the heading of an animal swimming with that velocity.
+pub fn heading_of(velocity_m_per_s: Vec3) -> Vec3 {
+    if velocity_m_per_s.length() > STILL_SPEED_M_PER_S {
+        velocity_m_per_s.normalize_or(Vec3::X)
+    } else {
+        Vec3::X
     }
 }
 

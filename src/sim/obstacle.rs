@@ -392,6 +392,93 @@ impl Obstacle {
     }
 }
 
+/// Obstacles with their bounding cylinders, for a cheap broad phase: most fish
+/// are nowhere near most obstacles, and a fish far from every one skips the
+/// signed-distance work entirely.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ObstacleSet {
+    obstacles: Vec<Obstacle>,
+    bounds: Vec<Bounds>,
+    max_radius_m: f32,
+}
+
+/// A vertical cylinder that holds an obstacle: footprint centre and radius
+/// (the obstacle's bounding circle), and its lowest and highest y (a rooted
+/// pillar or polygon reaches down without end).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Bounds {
+    center_xz_m: Vec2,
+    radius_m: f32,
+    bottom_y_m: f32,
+    top_y_m: f32,
+}
+
+impl ObstacleSet {
+    /// A set with no obstacles.
+    pub const EMPTY: Self = Self {
+        obstacles: Vec::new(),
+        bounds: Vec::new(),
+        max_radius_m: 0.0,
+    };
+
+    /// Replaces the set's obstacles with copies of `obstacles`.
+    pub fn rebuild<'a>(&mut self, obstacles: impl IntoIterator<Item = &'a Obstacle>) {
+        self.obstacles.clear();
+        self.obstacles.extend(obstacles.into_iter().cloned());
+        self.bounds.clear();
+        self.bounds.extend(self.obstacles.iter().map(|o| {
+            let (bottom_y_m, top_y_m) = match o {
+                Obstacle::Rock { .. } => o.vertical_extent_m(),
+                _ => (f32::NEG_INFINITY, o.vertical_extent_m().1),
+            };
+            Bounds {
+                center_xz_m: o.footprint_center_m(),
+                radius_m: o.radius_m(),
+                bottom_y_m,
+                top_y_m,
+            }
+        }));
+        self.max_radius_m = self.bounds.iter().map(|b| b.radius_m).fold(0.0, f32::max);
+    }
+
+    /// All obstacles of the set.
+    pub fn as_slice(&self) -> &[Obstacle] {
+        &self.obstacles
+    }
+
+    /// The largest bounding radius of an obstacle in the set, metres.
+    pub fn max_radius_m(&self) -> f32 {
+        self.max_radius_m
+    }
+
+    /// Number of obstacles in the set.
+    pub fn len(&self) -> usize {
+        self.obstacles.len()
+    }
+
+    /// Is the set empty?
+    pub fn is_empty(&self) -> bool {
+        self.obstacles.is_empty()
+    }
+
+    /// Obstacle `k` if its surface may lie within `reach_m` of `p_m` (`None`
+    /// when it certainly does not, or there is no obstacle `k`).
+    pub fn get_if_near(&self, k: usize, p_m: Vec3, reach_m: f32) -> Option<&Obstacle> {
+        let b = self.bounds.get(k)?;
+        let r = b.radius_m + reach_m;
+        let near = p_m.y <= b.top_y_m + reach_m
+            && p_m.y >= b.bottom_y_m - reach_m
+            && Vec2::new(p_m.x, p_m.z).distance_squared(b.center_xz_m) <= r * r;
+        near.then(|| &self.obstacles[k])
+    }
+
+    /// The obstacles whose surface may lie within `reach_m` of `p_m` (a
+    /// superset: every obstacle closer than `reach_m` is among them).
+    pub fn near(&self, p_m: Vec3, reach_m: f32) -> impl Iterator<Item = &Obstacle> + '_ {
+        (0..self.len()).filter_map(move |k| self.get_if_near(k, p_m, reach_m))
+    }
+}
+
 /// The signed area of a closed polygon in m² (shoelace formula),
 /// positive for counter-clockwise corners in the (x, z) plane.
 pub fn signed_area_m2(vertices_m: &[Vec2]) -> f32 {
@@ -583,5 +670,166 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A reef ledge: a 2 m × 1 m box footprint from x = 1..3, z = −0.5..0.5,
+    /// 0.8 m high, corners counter-clockwise.
+    fn ledge() -> Obstacle {
+        Obstacle::Polygon {
+            footprint_m: vec![
+                Vec2::new(1.0, -0.5),
+                Vec2::new(3.0, -0.5),
+                Vec2::new(3.0, 0.5),
+                Vec2::new(1.0, 0.5),
+            ],
+            base_y_m: 0.0,
+            height_m: 0.8,
+        }
+    }
+
+    #[test]
+    fn polygon_signed_distance_to_sides_corner_top_and_inside() {
+        let l = ledge();
+        // Beside a long side, off a corner (a 3-4-5 triangle), above the top.
+        assert!(close(l.signed_distance_m(Vec3::new(2.0, 0.4, 1.5)), 1.0));
+        assert!(close(l.signed_distance_m(Vec3::new(3.3, 0.4, 0.9)), 0.5));
+        assert!(close(l.signed_distance_m(Vec3::new(2.0, 1.3, 0.0)), 0.5));
+        // Inside: the nearest face, the sand never counts.
+        assert!(close(l.signed_distance_m(Vec3::new(2.0, 0.4, 0.4)), -0.1));
+        assert!(close(l.signed_distance_m(Vec3::new(2.0, 0.7, 0.0)), -0.1));
+        assert!(close(l.signed_distance_m(Vec3::new(2.0, 0.05, 0.0)), -0.5));
+        // The same whichever way round the corners are listed.
+        let Obstacle::Polygon { footprint_m, .. } = ledge() else {
+            unreachable!()
+        };
+        let clockwise = Obstacle::Polygon {
+            footprint_m: footprint_m.into_iter().rev().collect(),
+            base_y_m: 0.0,
+            height_m: 0.8,
+        };
+        for p in [Vec3::new(3.3, 0.4, 0.9), Vec3::new(2.0, 0.4, 0.4)] {
+            assert!(close(
+                clockwise.signed_distance_m(p),
+                l.signed_distance_m(p)
+            ));
+        }
+    }
+
+    #[test]
+    fn polygon_normals_point_out_through_the_nearest_side_corner_or_top() {
+        let l = ledge();
+        let side = l.outward_normal(Vec3::new(2.0, 0.4, 1.5));
+        assert!((side - Vec3::Z).length() < EPS, "{side}");
+        let corner = l.outward_normal(Vec3::new(3.3, 0.4, 0.9));
+        assert!(
+            (corner - Vec3::new(0.6, 0.0, 0.8)).length() < EPS,
+            "{corner}"
+        );
+        assert_eq!(l.outward_normal(Vec3::new(2.0, 1.3, 0.0)), Vec3::Y);
+        let inside_near_side = l.outward_normal(Vec3::new(2.8, 0.2, 0.0));
+        assert!((inside_near_side - Vec3::X).length() < EPS);
+        let pushed = l.push_outside(Vec3::new(2.8, 0.2, 0.0), 0.05);
+        assert!(
+            (pushed - Vec3::new(3.05, 0.2, 0.0)).length() < EPS,
+            "{pushed}"
+        );
+    }
+
+    #[test]
+    fn validate_explains_what_is_wrong_in_plain_words() {
+        let tank = Tank::default();
+        let error = |o: Obstacle| o.validate(&tank).unwrap_err();
+        assert_eq!(ledge().validate(&tank), Ok(()));
+        assert!(
+            error(Obstacle::Rock {
+                center_m: Vec3::new(0.0, 0.0, 0.0),
+                radius_m: 3.0,
+            })
+            .contains("radius must be between")
+        );
+        assert!(
+            error(Obstacle::Cylinder {
+                base_center_m: Vec3::new(5.5, 0.0, 0.0),
+                radius_m: 0.3,
+                height_m: 1.0,
+            })
+            .contains("away from the glass")
+        );
+        assert!(
+            error(Obstacle::Rock {
+                center_m: Vec3::new(0.0, 2.0, 0.0),
+                radius_m: 0.5,
+            })
+            .contains("floats")
+        );
+        assert!(
+            error(Obstacle::Rock {
+                center_m: Vec3::new(0.0, -0.5, 0.0),
+                radius_m: 0.5,
+            })
+            .contains("buried")
+        );
+        assert!(
+            error(Obstacle::Cylinder {
+                base_center_m: Vec3::new(0.0, 0.0, 0.0),
+                radius_m: 0.3,
+                height_m: 4.4,
+            })
+            .contains("below the surface")
+        );
+        assert!(
+            error(Obstacle::Cylinder {
+                base_center_m: Vec3::new(0.0, 1.0, 0.0),
+                radius_m: 0.3,
+                height_m: 1.0,
+            })
+            .contains("stand on the sand")
+        );
+        let polygon = |corners: &[(f32, f32)]| Obstacle::Polygon {
+            footprint_m: corners.iter().map(|&(x, z)| Vec2::new(x, z)).collect(),
+            base_y_m: 0.0,
+            height_m: 1.0,
+        };
+        assert!(error(polygon(&[(0.0, 0.0), (1.0, 0.0)])).contains("3 to 12 corners"));
+        assert!(
+            error(polygon(&[(0.0, 0.0), (1.0, 0.0), (1.0, 0.01), (0.0, 0.0)]))
+                .contains("closer than")
+        );
+        assert!(error(polygon(&[(0.0, 0.0), (1.0, 0.0), (2.0, 0.0)])).contains("flat"));
+        assert!(
+            error(polygon(&[
+                (0.0, 0.0),
+                (2.0, 0.0),
+                (1.0, 0.5),
+                (2.0, 2.0),
+                (0.0, 2.0)
+            ]))
+            .contains("convex")
+        );
+        assert!(
+            error(polygon(&[(0.0, 0.0), (f32::NAN, 0.0), (1.0, 1.0)])).contains("pair of numbers")
+        );
+    }
+
+    #[test]
+    fn the_set_broad_phase_never_misses_a_near_obstacle() {
+        let obstacles = [rock(), pillar(), ledge()];
+        let mut set = ObstacleSet::default();
+        set.rebuild(&obstacles);
+        assert_eq!(set.len(), 3);
+        for i in 0..=60 {
+            for j in 0..=24 {
+                let p = Vec3::new(-1.0 + 0.1 * i as f32, -0.5 + 0.25 * j as f32, 0.3);
+                for reach_m in [0.0, 0.05, 1.0] {
+                    let near: Vec<&Obstacle> = set.near(p, reach_m).collect();
+                    for o in &obstacles {
+                        if o.signed_distance_m(p) < reach_m {
+                            assert!(near.contains(&o), "{p} {reach_m} {o:?}");
+                        }
+                    }
+                }
+            }
+        }
+        assert_eq!(set.near(Vec3::new(-5.0, 4.0, 3.0), 0.5).count(), 0);
     }
 }

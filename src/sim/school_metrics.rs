@@ -11,7 +11,7 @@
 //!   fish keep about one body length).
 //! - groups: clusters of fish linked by gaps of at most two body lengths.
 
-use glam::Vec3;
+use glam::{IVec3, Vec3};
 use serde::Serialize;
 
 use super::fish::Fish;
@@ -32,46 +32,80 @@ pub struct SchoolMetrics {
 /// keeps about one body length from its neighbours.
 pub const GROUP_LINK_BODY_LENGTHS: f32 = 2.0;
 
-/// Computes the metrics, reusing `grid` for neighbour queries (never all pairs).
-/// A convenience for one-off measurements; [`SchoolMeter`] also keeps its other
-/// buffers between calls.
-pub fn measure(
-    fish: &[Fish],
-    tank_min_m: Vec3,
-    tank_max_m: Vec3,
-    grid: &mut SpatialGrid,
-) -> SchoolMetrics {
-    let mut meter = SchoolMeter {
-        grid: std::mem::take(grid),
-        ..SchoolMeter::default()
-    };
-    let metrics = meter.measure(fish, tank_min_m, tank_max_m);
-    *grid = std::mem::take(&mut meter.grid);
-    metrics
+/// Computes the metrics once. A convenience for one-off measurements;
+/// [`SchoolMeter`] keeps its buffers between calls.
+pub fn measure(fish: &[Fish], tank_min_m: Vec3, tank_max_m: Vec3) -> SchoolMetrics {
+    SchoolMeter::default().measure(fish, tank_min_m, tank_max_m)
 }
 
+/// Target number of fish per cell, as a fish sees it, of the grid for the
+/// nearest-neighbour distance (dimensionless). Default 2.5 (chosen): the
+/// nearest neighbour then usually lies within one cell, so it is found among
+/// the cell and its neighbours, while a cell pair holds few pairs to check.
+const FISH_PER_NND_CELL: f32 = 2.5;
+
+/// The 13 cell offsets of a half shell: with the cell itself, visiting these
+/// from every cell meets every pair of neighbouring cells exactly once.
+const HALF_SHELL: [IVec3; 13] = [
+    IVec3::new(1, 0, 0),
+    IVec3::new(-1, 1, 0),
+    IVec3::new(0, 1, 0),
+    IVec3::new(1, 1, 0),
+    IVec3::new(-1, -1, 1),
+    IVec3::new(0, -1, 1),
+    IVec3::new(1, -1, 1),
+    IVec3::new(-1, 0, 1),
+    IVec3::new(0, 0, 1),
+    IVec3::new(1, 0, 1),
+    IVec3::new(-1, 1, 1),
+    IVec3::new(0, 1, 1),
+    IVec3::new(1, 1, 1),
+];
+
 /// Measures [`SchoolMetrics`] every step without allocating: keeps its grid and
-/// buffers. Cost O(N) plus the occupied cells' neighbourhoods (see
-/// [`SchoolMeter::measure`]).
+/// buffers. Cost O(N) plus a few operations per occupied grid cell; see
+/// [`SchoolMeter::measure`].
 #[derive(Clone, Debug, Default)]
 pub struct SchoolMeter {
+    /// Cells of a diagonal just under the shortest link (for the groups).
     grid: SpatialGrid,
+    /// Cells sized to the crowding (for the nearest neighbours).
+    nnd_grid: SpatialGrid,
     positions_m: Vec<Vec3>,
-    /// Union-find parent of each grid cell (groups are found cell by cell).
-    cell_parent: Vec<u32>,
-    /// Union-find parent of each fish (only when cells are too coarse, see below).
-    fish_parent: Vec<u32>,
+    /// Body length of the fish in each slot of `grid`.
+    slot_lengths_m: Vec<f32>,
+    /// Union-find parent of each slot of `grid`.
+    parent: Vec<u32>,
+    /// Squared distance to the nearest neighbour found so far, per slot of
+    /// `nnd_grid`.
+    nearest_sq_m2: Vec<f32>,
+    /// Occupied cells grouped by block: `block_cells[block_start[b]..block_start[b + 1]]`.
+    block_start: Vec<u32>,
+    block_cells: Vec<IVec3>,
+    /// Is every fish of the block known to be in one group?
+    block_united: Vec<bool>,
 }
 
 impl SchoolMeter {
     /// The metrics of `fish` in the tank `tank_min_m..tank_max_m`.
     ///
-    /// Groups: the fish are bucketed into cubes whose diagonal is the shortest
-    /// possible link (two of the smallest body lengths), so all fish in one cube
-    /// belong to one group; cubes are then joined when any pair of their fish is
-    /// linked. Union-find runs over cubes, not fish pairs, so a dense school of
-    /// 20,000 costs a few cube comparisons per cube. Nearest neighbour: a
-    /// ring-by-ring search from each fish ([`SpatialGrid::k_nearest`]).
+    /// Polarization, milling and mean speed: one pass over the fish.
+    ///
+    /// Groups (fish linked by gaps of at most [`GROUP_LINK_BODY_LENGTHS`] of
+    /// the larger one's length) by union-find over a grid whose cells have a
+    /// diagonal just under the shortest possible link, so all fish in one cell
+    /// belong to one group (the cell is joined by chaining its fish). Cells
+    /// are then joined when any pair of their fish is linked: first each cell
+    /// with its face neighbours, then blocks of cells as wide as the longest
+    /// link with their 13 forward neighbour blocks (a half shell), skipping
+    /// every pair of blocks already known to be one group. A dense school is
+    /// one group after the face pass, so 20,000 fish cost a few operations per
+    /// cell, not per pair.
+    ///
+    /// Nearest neighbour: every pair of fish in a cell and its 13 forward
+    /// neighbours (each pair once); a fish whose nearest neighbour is farther
+    /// than one cell (it may lie beyond those cells) searches ring by ring
+    /// ([`SpatialGrid::k_nearest`]). Exact in every case.
     pub fn measure(&mut self, fish: &[Fish], tank_min_m: Vec3, tank_max_m: Vec3) -> SchoolMetrics {
         let n = fish.len();
         if n == 0 {
@@ -107,43 +141,12 @@ impl SchoolMeter {
             .min(1.0);
         let mean_speed_m_per_s = speed_sum / count;
 
-        let min_length = min_length.max(1e-3);
-        let max_length = max_length.max(min_length);
-        let link_min_m = GROUP_LINK_BODY_LENGTHS * min_length;
-        let link_max_m = GROUP_LINK_BODY_LENGTHS * max_length;
-        // Cube diagonal just under the shortest link.
-        let cell_m = link_min_m / 3f32.sqrt() * 0.999;
-        self.grid
-            .rebuild(tank_min_m, tank_max_m, cell_m, &self.positions_m);
-        let actual_cell_m = self.grid.cell_m();
-        let reach = (link_max_m / actual_cell_m).ceil() as i32;
-        let groups = if actual_cell_m <= cell_m * 1.0001 {
-            self.count_groups_by_cell(fish, reach)
+        let groups = self.count_groups(fish, min_length, max_length, tank_min_m, tank_max_m);
+        let nnd_body_lengths = if n > 1 {
+            self.nearest_distance_sum_body_lengths(fish, tank_min_m, tank_max_m) / count
         } else {
-            // The grid had to use bigger cells (a huge tank or tiny fish): fall
-            // back to linking fish pairs.
-            self.count_groups_by_fish(fish, reach)
+            0.0
         };
-
-        // Nearest neighbour, in the fish's own body lengths.
-        let mut nnd_sum = 0.0_f32;
-        if n > 1 {
-            let far_m = (tank_max_m - tank_min_m).length() * 2.0 + 1.0;
-            for (i, f) in fish.iter().enumerate() {
-                let mut nearest = Nearest::new(1);
-                self.grid.k_nearest(
-                    f.position_m,
-                    &self.positions_m,
-                    far_m,
-                    &mut nearest,
-                    |j, _| j != i,
-                );
-                if let Some((_, d2)) = nearest.iter().next() {
-                    nnd_sum += d2.sqrt() / f.body_length_m.max(1e-3);
-                }
-            }
-        }
-        let nnd_body_lengths = if n > 1 { nnd_sum / count } else { 0.0 };
 
         SchoolMetrics {
             polarization,
@@ -154,67 +157,345 @@ impl SchoolMeter {
         }
     }
 
-    fn count_groups_by_cell(&mut self, fish: &[Fish], reach: i32) -> u32 {
-        let cells = self.grid.cell_count();
-        self.cell_parent.clear();
-        self.cell_parent.extend(0..cells as u32);
-        let positions = &self.positions_m;
-        let parent = &mut self.cell_parent;
+    /// Number of groups (see [`SchoolMeter::measure`]).
+    fn count_groups(
+        &mut self,
+        fish: &[Fish],
+        min_length_m: f32,
+        max_length_m: f32,
+        tank_min_m: Vec3,
+        tank_max_m: Vec3,
+    ) -> u32 {
+        let n = fish.len();
+        let min_length_m = min_length_m.max(1e-3);
+        let max_length_m = max_length_m.max(min_length_m);
+        let link_min_m = GROUP_LINK_BODY_LENGTHS * min_length_m;
+        let link_max_m = GROUP_LINK_BODY_LENGTHS * max_length_m;
+        // Cube diagonal just under the shortest link.
+        let cell_m = link_min_m / 3f32.sqrt() * 0.999;
         self.grid
-            .for_each_cell_pair(reach, |a, b, points_a, points_b| {
-                if a == b {
-                    return;
-                }
-                let (ra, rb) = (root(parent, a), root(parent, b));
-                if ra == rb {
-                    return;
-                }
-                let linked = points_a.iter().any(|&i| {
-                    points_b
-                        .iter()
-                        .any(|&j| linked(fish, positions, i as usize, j as usize))
-                });
-                if linked {
-                    parent[ra.max(rb)] = ra.min(rb) as u32;
-                }
-            });
-        let mut groups = 0;
-        self.grid.for_each_cell_pair(0, |a, _, _, _| {
-            if root(parent, a) == a {
-                groups += 1;
-            }
-        });
-        groups
+            .rebuild(tank_min_m, tank_max_m, cell_m, &self.positions_m);
+        self.slot_lengths_m.clear();
+        self.slot_lengths_m.extend(
+            self.grid
+                .slots()
+                .iter()
+                .map(|&i| fish[i as usize].body_length_m),
+        );
+        // The grid may have had to use bigger cells (a huge tank or tiny
+        // fish): then fish sharing a cell are not necessarily linked.
+        let cells_are_groups = self.grid.cell_m() <= cell_m * 1.0001;
+        self.parent.clear();
+        self.parent.extend(0..n as u32);
+        self.join_cells_and_faces(cells_are_groups);
+        self.join_blocks(cells_are_groups, link_max_m);
+        (0..n).filter(|&s| root(&mut self.parent, s) == s).count() as u32
     }
 
-    fn count_groups_by_fish(&mut self, fish: &[Fish], reach: i32) -> u32 {
-        self.fish_parent.clear();
-        self.fish_parent.extend(0..fish.len() as u32);
-        let positions = &self.positions_m;
-        let parent = &mut self.fish_parent;
-        self.grid
-            .for_each_cell_pair(reach, |_, _, points_a, points_b| {
-                for &i in points_a {
-                    for &j in points_b {
-                        let (i, j) = (i as usize, j as usize);
-                        if i < j || (i > j && !std::ptr::eq(points_a, points_b)) {
-                            let (ri, rj) = (root(parent, i), root(parent, j));
-                            if ri != rj && linked(fish, positions, i, j) {
-                                parent[ri.max(rj)] = ri.min(rj) as u32;
+    /// Joins the fish of each cell into one group (when cells are groups:
+    /// chained to the cell's first fish; otherwise pair by pair), and each
+    /// cell with its +x, +y and +z neighbours when a pair of their fish is
+    /// linked.
+    fn join_cells_and_faces(&mut self, cells_are_groups: bool) {
+        let dims = self.grid.dims();
+        for z in 0..dims.z {
+            for y in 0..dims.y {
+                for x in 0..dims.x {
+                    let c = IVec3::new(x, y, z);
+                    let here = self.grid.cell_slots(c);
+                    if here.is_empty() {
+                        continue;
+                    }
+                    if !cells_are_groups {
+                        for a in here.clone() {
+                            for b in a + 1..here.end {
+                                if self.linked_slots(a, b) {
+                                    union(&mut self.parent, a, b);
+                                }
                             }
+                        }
+                        continue;
+                    }
+                    for s in here.start + 1..here.end {
+                        self.parent[s] = here.start as u32;
+                    }
+                    for face in [IVec3::X, IVec3::Y, IVec3::Z] {
+                        let there = self.grid.cell_slots(c + face);
+                        if there.is_empty() {
+                            continue;
+                        }
+                        let (ra, rb) = (
+                            root(&mut self.parent, here.start),
+                            root(&mut self.parent, there.start),
+                        );
+                        if ra != rb && self.any_link(here.clone(), there) {
+                            self.parent[ra.max(rb)] = ra.min(rb) as u32;
                         }
                     }
                 }
-            });
-        (0..fish.len()).filter(|&i| root(parent, i) == i).count() as u32
+            }
+        }
     }
+
+    /// Sum over the fish of the distance to the nearest other fish, in the
+    /// fish's own body lengths.
+    fn nearest_distance_sum_body_lengths(
+        &mut self,
+        fish: &[Fish],
+        tank_min_m: Vec3,
+        tank_max_m: Vec3,
+    ) -> f32 {
+        let n = fish.len();
+        // Cells sized so that about FISH_PER_NND_CELL fish share one, judged
+        // from the group grid's crowding.
+        let crowding = self.grid.crowding().max(1.0);
+        let cell_m = self.grid.cell_m() * (FISH_PER_NND_CELL / crowding).cbrt();
+        self.nnd_grid
+            .rebuild(tank_min_m, tank_max_m, cell_m, &self.positions_m);
+        let grid = &self.nnd_grid;
+        let positions = grid.slot_positions_m();
+        let nearest = &mut self.nearest_sq_m2;
+        nearest.clear();
+        nearest.resize(n, f32::INFINITY);
+        // Every pair of fish in a cell, or in a cell and one of its 13
+        // forward neighbours, once.
+        let dims = grid.dims();
+        for z in 0..dims.z {
+            for y in 0..dims.y {
+                for x in 0..dims.x {
+                    let c = IVec3::new(x, y, z);
+                    let here = grid.cell_slots(c);
+                    if here.is_empty() {
+                        continue;
+                    }
+                    for a in here.clone() {
+                        for b in a + 1..here.end {
+                            let d2 = positions[a].distance_squared(positions[b]);
+                            nearest[a] = nearest[a].min(d2);
+                            nearest[b] = nearest[b].min(d2);
+                        }
+                    }
+                    for offset in HALF_SHELL {
+                        let there = grid.cell_slots(c + offset);
+                        for a in here.clone() {
+                            let pa = positions[a];
+                            let mut best = nearest[a];
+                            for b in there.clone() {
+                                let d2 = pa.distance_squared(positions[b]);
+                                best = best.min(d2);
+                                nearest[b] = nearest[b].min(d2);
+                            }
+                            nearest[a] = best;
+                        }
+                    }
+                }
+            }
+        }
+        // A nearest neighbour farther than a cell may lie beyond the cells
+        // searched: look again, ring by ring.
+        let certain_sq_m2 = grid.cell_m() * grid.cell_m();
+        let far_m = (tank_max_m - tank_min_m).length() * 2.0 + 1.0;
+        let grid_max_m = tank_min_m + dims.as_vec3() * grid.cell_m();
+        let mut sum = 0.0_f32;
+        for slot in 0..n {
+            let p = positions[slot];
+            let me = grid.slots()[slot] as usize;
+            let mut d2 = nearest[slot];
+            let inside = p.cmpge(tank_min_m).all() && p.cmple(grid_max_m).all();
+            if d2 > certain_sq_m2 || !inside {
+                let mut found = Nearest::new(1);
+                grid.k_nearest(p, far_m, &mut found, |j, _, _| j != me);
+                d2 = found.iter().next().map_or(d2, |(_, d2)| d2);
+            }
+            sum += d2.sqrt() / fish[me].body_length_m.max(1e-3);
+        }
+        sum
+    }
+
+    /// Are the fish in slots `a` and `b` of `grid` linked?
+    fn linked_slots(&self, a: usize, b: usize) -> bool {
+        let reach_m = GROUP_LINK_BODY_LENGTHS * self.slot_lengths_m[a].max(self.slot_lengths_m[b]);
+        let positions = self.grid.slot_positions_m();
+        positions[a].distance_squared(positions[b]) <= reach_m * reach_m
+    }
+
+    /// Joins linked cells of the same or neighbouring blocks (cubes of cells
+    /// at least as wide as the longest link, so linked fish are never more
+    /// than one block apart).
+    fn join_blocks(&mut self, cells_are_groups: bool, link_max_m: f32) {
+        let dims = self.grid.dims();
+        let cell_m = self.grid.cell_m();
+        let k = ((link_max_m / cell_m).ceil() as i32).max(1);
+        let block_dims = (dims + IVec3::splat(k - 1)) / k;
+        let blocks = (block_dims.x * block_dims.y * block_dims.z) as usize;
+        let block_index = |b: IVec3| (b.x + block_dims.x * (b.y + block_dims.y * b.z)) as usize;
+        // Occupied cells, grouped by block (a counting sort).
+        self.block_start.clear();
+        self.block_start.resize(blocks + 1, 0);
+        self.block_cells.clear();
+        for pass in 0..2 {
+            for z in 0..dims.z {
+                for y in 0..dims.y {
+                    for x in 0..dims.x {
+                        let c = IVec3::new(x, y, z);
+                        if self.grid.cell_slots(c).is_empty() {
+                            continue;
+                        }
+                        let b = block_index(c / k);
+                        if pass == 0 {
+                            self.block_start[b + 1] += 1;
+                        } else {
+                            let slot = &mut self.block_start[b];
+                            self.block_cells[*slot as usize] = c;
+                            *slot += 1;
+                        }
+                    }
+                }
+            }
+            if pass == 0 {
+                for b in 0..blocks {
+                    self.block_start[b + 1] += self.block_start[b];
+                }
+                self.block_cells
+                    .resize(self.block_start[blocks] as usize, IVec3::ZERO);
+            } else {
+                // Filling advanced each start to the next block's: shift back.
+                for b in (0..blocks).rev() {
+                    self.block_start[b + 1] = self.block_start[b];
+                }
+                self.block_start[0] = 0;
+            }
+        }
+        self.block_united.clear();
+        self.block_united.resize(blocks, false);
+
+        let link_cells_sq_m2 = link_max_m * link_max_m;
+        for bz in 0..block_dims.z {
+            for by in 0..block_dims.y {
+                for bx in 0..block_dims.x {
+                    let p = IVec3::new(bx, by, bz);
+                    if self.block_cell_range(block_index(p)).is_empty() {
+                        continue;
+                    }
+                    for offset in std::iter::once(IVec3::ZERO).chain(HALF_SHELL) {
+                        let q = p + offset;
+                        if q.cmplt(IVec3::ZERO).any() || q.cmpge(block_dims).any() {
+                            continue;
+                        }
+                        let (bp, bq) = (block_index(p), block_index(q));
+                        if self.block_cell_range(bq).is_empty() {
+                            continue;
+                        }
+                        if cells_are_groups {
+                            self.join_block_pair(bp, bq, link_cells_sq_m2);
+                        } else {
+                            self.link_all_pairs(bp, bq, link_cells_sq_m2);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    fn block_cell_range(&self, b: usize) -> std::ops::Range<usize> {
+        self.block_start[b] as usize..self.block_start[b + 1] as usize
+    }
+
+    /// The group of every fish of block `b`, if they are all in one.
+    fn united_root(&mut self, b: usize) -> Option<usize> {
+        let cells = self.block_cell_range(b);
+        let first = self.grid.cell_slots(self.block_cells[cells.start]).start;
+        let r = root(&mut self.parent, first);
+        if !self.block_united[b] {
+            for &c in &self.block_cells[cells] {
+                let s = self.grid.cell_slots(c).start;
+                if root(&mut self.parent, s) != r {
+                    return None;
+                }
+            }
+            // Once united, always united: unions only merge groups.
+            self.block_united[b] = true;
+        }
+        Some(r)
+    }
+
+    /// Joins the cells of blocks `bp` and `bq` (the same block or neighbours)
+    /// that hold a linked pair of fish; each cell is one group already.
+    fn join_block_pair(&mut self, bp: usize, bq: usize, max_link_sq_m2: f32) {
+        let (up, uq) = (self.united_root(bp), self.united_root(bq));
+        if up.is_some() && (bp == bq || up == uq) {
+            return;
+        }
+        let (cells_p, cells_q) = (self.block_cell_range(bp), self.block_cell_range(bq));
+        for ia in cells_p.clone() {
+            let first_b = if bp == bq { ia + 1 } else { cells_q.start };
+            for ib in first_b..cells_q.end {
+                let (a, b) = (self.block_cells[ia], self.block_cells[ib]);
+                if box_gap_sq(a, b) * self.grid.cell_m().powi(2) > max_link_sq_m2 {
+                    continue;
+                }
+                let (sa, sb) = (self.grid.cell_slots(a), self.grid.cell_slots(b));
+                let (ra, rb) = (
+                    root(&mut self.parent, sa.start),
+                    root(&mut self.parent, sb.start),
+                );
+                if ra != rb && self.any_link(sa, sb) {
+                    self.parent[ra.max(rb)] = ra.min(rb) as u32;
+                }
+            }
+        }
+    }
+
+    /// Is any fish of `a` linked to any fish of `b` (slot ranges)?
+    fn any_link(&self, a: std::ops::Range<usize>, b: std::ops::Range<usize>) -> bool {
+        a.into_iter()
+            .any(|i| b.clone().any(|j| self.linked_slots(i, j)))
+    }
+
+    /// Fallback when cells are not groups: links every linked pair of fish in
+    /// blocks `bp` and `bq` (pairs within one cell were linked already).
+    fn link_all_pairs(&mut self, bp: usize, bq: usize, max_link_sq_m2: f32) {
+        let (cells_p, cells_q) = (self.block_cell_range(bp), self.block_cell_range(bq));
+        for ia in cells_p {
+            let first_b = if bp == bq { ia + 1 } else { cells_q.start };
+            for ib in first_b..cells_q.end {
+                let (a, b) = (self.block_cells[ia], self.block_cells[ib]);
+                if box_gap_sq(a, b) * self.grid.cell_m().powi(2) > max_link_sq_m2 {
+                    continue;
+                }
+                for i in self.grid.cell_slots(a) {
+                    for j in self.grid.cell_slots(b) {
+                        if self.linked_slots(i, j) {
+                            union(&mut self.parent, i, j);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The squared gap between cells `a` and `b`, in cells: Σ max(|Δ| − 1, 0)².
+fn box_gap_sq(a: IVec3, b: IVec3) -> f32 {
+    let gap = ((a - b).abs() - IVec3::ONE).max(IVec3::ZERO).as_vec3();
+    gap.length_squared()
 }
 
 /// Are fish `i` and `j` within [`GROUP_LINK_BODY_LENGTHS`] of the larger one's
 /// body length?
+#[cfg(test)]
 fn linked(fish: &[Fish], positions_m: &[Vec3], i: usize, j: usize) -> bool {
     let reach_m = GROUP_LINK_BODY_LENGTHS * fish[i].body_length_m.max(fish[j].body_length_m);
     positions_m[i].distance_squared(positions_m[j]) <= reach_m * reach_m
+}
+
+/// Joins the groups of `a` and `b` (the smaller root becomes the parent, so
+/// the result does not depend on the order of unions).
+fn union(parent: &mut [u32], a: usize, b: usize) {
+    let (ra, rb) = (root(parent, a), root(parent, b));
+    if ra != rb {
+        parent[ra.max(rb)] = ra.min(rb) as u32;
+    }
 }
 
 /// Union-find root with path halving.
@@ -239,7 +520,7 @@ mod tests {
     }
 
     fn metrics(fish: &[Fish]) -> SchoolMetrics {
-        measure(fish, LO, HI, &mut SpatialGrid::default())
+        measure(fish, LO, HI)
     }
 
     #[test]

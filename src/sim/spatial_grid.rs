@@ -3,19 +3,34 @@
 //!
 //! Rebuilt from scratch whenever positions change (a counting sort into cells,
 //! O(N), no allocation once the buffers have grown). Cells are cubes of side
-//! `cell_m`; a query of radius r ≤ `cell_m` visits the 27 cells around a point.
+//! `cell_m`, numbered with x fastest, so a row of cells along x is one
+//! contiguous run of slots. The grid keeps its own copy of the positions in
+//! slot order (structure of arrays), so a query scans memory front to back
+//! instead of jumping around the fish list.
 
-use glam::{IVec3, Vec3};
+use glam::{IVec3, Vec3, Vec4};
 
-/// Fish indices bucketed by grid cell.
+/// Most cells along one axis. Default 64 (at most 64³ ≈ 262,000 cells):
+/// bounds the memory whatever cell size is asked for.
+const MAX_CELLS_PER_AXIS: f32 = 64.0;
+
+/// Points bucketed by grid cell.
 #[derive(Clone, Debug, Default)]
 pub struct SpatialGrid {
     origin_m: Vec3,
     cell_m: f32,
     dims: IVec3,
-    /// `cell_start[c]..cell_start[c + 1]` indexes `sorted` for cell `c`.
+    /// `cell_start[c]..cell_start[c + 1]` are the slots of cell `c`.
     cell_start: Vec<u32>,
+    /// The point (index into the positions given to `rebuild`) in each slot.
     sorted: Vec<u32>,
+    /// The position of the point in each slot.
+    sorted_positions_m: Vec<Vec3>,
+    /// The same, as structure of arrays (x, y and z apart), so that a query
+    /// computes four distances at once.
+    sorted_x_m: Vec<f32>,
+    sorted_y_m: Vec<f32>,
+    sorted_z_m: Vec<f32>,
     cell_of: Vec<u32>,
 }
 
@@ -29,8 +44,8 @@ impl SpatialGrid {
             1.0
         };
         let extent = (max_m - min_m).max(Vec3::splat(cell_m));
-        // Bound the cell count (at most 64³) whatever the radius asked for.
-        let cell_m = cell_m.max(extent.max_element() / 64.0);
+        // Bound the cell count whatever the radius asked for.
+        let cell_m = cell_m.max(extent.max_element() / MAX_CELLS_PER_AXIS);
         self.origin_m = min_m;
         self.cell_m = cell_m;
         self.dims = (extent / cell_m).ceil().as_ivec3().max(IVec3::ONE);
@@ -48,6 +63,9 @@ impl SpatialGrid {
         }
         self.sorted.clear();
         self.sorted.resize(positions_m.len(), 0);
+        self.sorted_positions_m.clear();
+        self.sorted_positions_m
+            .resize(positions_m.len(), Vec3::ZERO);
         // Fill each cell back to front, counting its start down; afterwards
         // `cell_start[c]` is the cell's first slot again (no extra buffer).
         for c in 0..cells {
@@ -57,6 +75,19 @@ impl SpatialGrid {
             let slot = &mut self.cell_start[c as usize];
             *slot -= 1;
             self.sorted[*slot as usize] = i as u32;
+            self.sorted_positions_m[*slot as usize] = positions_m[i];
+        }
+        let sorted = &self.sorted_positions_m;
+        for (axis, out) in [
+            &mut self.sorted_x_m,
+            &mut self.sorted_y_m,
+            &mut self.sorted_z_m,
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            out.clear();
+            out.extend(sorted.iter().map(|p| p[axis]));
         }
     }
 
@@ -65,8 +96,48 @@ impl SpatialGrid {
         self.cell_m
     }
 
-    fn cell_coords(&self, p: Vec3) -> IVec3 {
-        let q = ((p - self.origin_m) / self.cell_m).floor();
+    /// Number of cells along x, y and z.
+    pub fn dims(&self) -> IVec3 {
+        self.dims
+    }
+
+    /// The points in slot order (cell by cell): `slots()[s]` is the index of
+    /// the point in slot `s`.
+    pub fn slots(&self) -> &[u32] {
+        &self.sorted
+    }
+
+    /// The positions in slot order.
+    pub fn slot_positions_m(&self) -> &[Vec3] {
+        &self.sorted_positions_m
+    }
+
+    /// The slots of the cell at grid coordinates `c` (empty outside the grid).
+    pub fn cell_slots(&self, c: IVec3) -> std::ops::Range<usize> {
+        if c.cmplt(IVec3::ZERO).any() || c.cmpge(self.dims).any() {
+            return 0..0;
+        }
+        let i = self.cell_index(c);
+        self.cell_start[i] as usize..self.cell_start[i + 1] as usize
+    }
+
+    /// The slots of the cells from `(x_lo, y, z)` to `(x_hi, y, z)` (one
+    /// contiguous run; coordinates are clipped to the grid).
+    pub fn row_slots(&self, x_lo: i32, x_hi: i32, y: i32, z: i32) -> std::ops::Range<usize> {
+        let (x_lo, x_hi) = (x_lo.max(0), x_hi.min(self.dims.x - 1));
+        if x_lo > x_hi || y < 0 || z < 0 || y >= self.dims.y || z >= self.dims.z {
+            return 0..0;
+        }
+        let first = self.cell_index(IVec3::new(x_lo, y, z));
+        let last = self.cell_index(IVec3::new(x_hi, y, z));
+        self.cell_start[first] as usize..self.cell_start[last + 1] as usize
+    }
+
+    /// Grid coordinates of the cell holding `p` (clamped into the grid).
+    pub fn cell_coords(&self, p: Vec3) -> IVec3 {
+        // Truncation rounds negative values up, but those clamp to 0 either
+        // way; `floor` would be a slow library call on baseline x86-64.
+        let q = (p - self.origin_m) / self.cell_m;
         let q = if q.is_finite() {
             q.as_ivec3()
         } else {
@@ -89,17 +160,12 @@ impl SpatialGrid {
         let reach = (radius_m.max(0.0) / self.cell_m).ceil() as i32;
         let reach = reach.min(self.dims.max_element());
         let center = self.cell_coords(p);
-        let lo = (center - IVec3::splat(reach)).max(IVec3::ZERO);
-        let hi = (center + IVec3::splat(reach)).min(self.dims - IVec3::ONE);
-        for z in lo.z..=hi.z {
-            for y in lo.y..=hi.y {
-                for x in lo.x..=hi.x {
-                    let c = self.cell_index(IVec3::new(x, y, z));
-                    let (start, end) =
-                        (self.cell_start[c] as usize, self.cell_start[c + 1] as usize);
-                    for &j in &self.sorted[start..end] {
-                        visit(j as usize);
-                    }
+        let lo = center - IVec3::splat(reach);
+        let hi = center + IVec3::splat(reach);
+        for z in lo.z.max(0)..=hi.z.min(self.dims.z - 1) {
+            for y in lo.y.max(0)..=hi.y.min(self.dims.y - 1) {
+                for &j in &self.sorted[self.row_slots(lo.x, hi.x, y, z)] {
+                    visit(j as usize);
                 }
             }
         }
@@ -116,6 +182,8 @@ pub const MAX_NEAREST: usize = 16;
 pub struct Nearest {
     k: usize,
     len: usize,
+    /// Squared distance of the k-th kept point (infinity until full).
+    bound_sq_m2: f32,
     index: [u32; MAX_NEAREST],
     distance_sq_m2: [f32; MAX_NEAREST],
 }
@@ -126,6 +194,7 @@ impl Nearest {
         Self {
             k: k.min(MAX_NEAREST),
             len: 0,
+            bound_sq_m2: if k == 0 { 0.0 } else { f32::INFINITY },
             index: [0; MAX_NEAREST],
             distance_sq_m2: [f32::INFINITY; MAX_NEAREST],
         }
@@ -148,6 +217,9 @@ impl Nearest {
         self.index[slot] = j as u32;
         self.distance_sq_m2[slot] = distance_sq_m2;
         self.len = (self.len + 1).min(self.k);
+        if self.len == self.k {
+            self.bound_sq_m2 = self.distance_sq_m2[self.k - 1];
+        }
     }
 
     /// Is the list full (`k` points kept)?
@@ -155,13 +227,10 @@ impl Nearest {
         self.len == self.k
     }
 
-    /// Squared distance of the farthest kept point, or infinity when not full.
+    /// Squared distance of the farthest kept point, or infinity when not full
+    /// (zero when `k` is zero: nothing can be kept).
     pub fn bound_sq_m2(&self) -> f32 {
-        if self.is_full() && self.k > 0 {
-            self.distance_sq_m2[self.k - 1]
-        } else {
-            f32::INFINITY
-        }
+        self.bound_sq_m2
     }
 
     /// The kept points as (index, squared distance), nearest first.
@@ -182,7 +251,8 @@ impl Nearest {
 
 impl SpatialGrid {
     /// The `nearest.k` points nearest to `p` among those within `max_radius_m`
-    /// for which `accept(j, distance_sq_m2)` is true, found by visiting cells in
+    /// for which `accept(j, position_m, distance_sq_m2)` is true (`j` the
+    /// point's index, `position_m` its position), found by visiting cells in
     /// rings (shells of cells) of growing distance around `p`'s cell and
     /// stopping as soon as no unvisited cell can hold a nearer point. Costs
     /// about the cells and points within the k-th distance, not within
@@ -191,58 +261,159 @@ impl SpatialGrid {
     pub fn k_nearest(
         &self,
         p: Vec3,
-        positions_m: &[Vec3],
         max_radius_m: f32,
         nearest: &mut Nearest,
-        mut accept: impl FnMut(usize, f32) -> bool,
+        mut accept: impl FnMut(usize, Vec3, f32) -> bool,
     ) {
-        if self.sorted.is_empty() || !p.is_finite() {
+        if self.sorted.is_empty() || !p.is_finite() || nearest.k == 0 {
             return;
         }
         let max_radius_sq_m2 = max_radius_m * max_radius_m;
         let center = self.cell_coords(p);
+        // Distance from p to the nearest face of its own cell (0 if p lies
+        // outside the grid): the block of rings 0..=r reaches at least
+        // r·cell plus this far from p in every direction.
+        let local = (p - self.origin_m) / self.cell_m - center.as_vec3();
+        let margin_m = local.min(Vec3::ONE - local).min_element().max(0.0) * self.cell_m;
         let max_ring = ((max_radius_m.max(0.0) / self.cell_m).ceil() as i32)
             .min(self.dims.max_element())
             .max(0);
-        for ring in 0..=max_ring {
+        // p in cell units, relative to the grid's origin.
+        let p_cells = (p - self.origin_m) / self.cell_m;
+        let cell_sq_m2 = self.cell_m * self.cell_m;
+        // Squared distance, in cells², from p to the slab of cells `c` along
+        // one axis (0 inside it).
+        let gap_sq = |coord: f32, c: i32| {
+            let gap = (c as f32 - coord).max(coord - (c + 1) as f32).max(0.0);
+            gap * gap
+        };
+        // Scans the cells x_lo..=x_hi of row (y, z), or only the part of it
+        // that reaches into the sphere of the current k-th distance.
+        let mut scan_row = |x_lo: i32, x_hi: i32, y: i32, z: i32, nearest: &mut Nearest| {
+            let bound_cells_sq = nearest.bound_sq_m2 / cell_sq_m2;
+            let gap_yz_sq = gap_sq(p_cells.z, z) + gap_sq(p_cells.y, y);
+            if gap_yz_sq >= bound_cells_sq {
+                return;
+            }
+            let half_width = (bound_cells_sq - gap_yz_sq).sqrt();
+            // (Truncation, not `floor`: it differs only below 0, where there
+            // are no cells.)
+            let (x_lo, x_hi) = if half_width.is_finite() {
+                (
+                    ((p_cells.x - half_width) as i32).max(x_lo),
+                    ((p_cells.x + half_width) as i32).min(x_hi),
+                )
+            } else {
+                (x_lo, x_hi)
+            };
+            let slots = self.row_slots(x_lo, x_hi, y, z);
+            self.scan(slots, p, max_radius_sq_m2, nearest, &mut accept);
+        };
+        // Rings 0 and 1 (the 3×3×3 block) row by row, nearest rows first, so
+        // the k-th distance shrinks early and prunes the rest.
+        const BLOCK_ROWS: [(i32, i32); 9] = [
+            (0, 0),
+            (-1, 0),
+            (1, 0),
+            (0, -1),
+            (0, 1),
+            (-1, -1),
+            (1, -1),
+            (-1, 1),
+            (1, 1),
+        ];
+        let first_ring = if max_ring >= 1 {
+            for (dy, dz) in BLOCK_ROWS {
+                scan_row(
+                    center.x - 1,
+                    center.x + 1,
+                    center.y + dy,
+                    center.z + dz,
+                    nearest,
+                );
+            }
+            1
+        } else {
+            scan_row(center.x, center.x, center.y, center.z, nearest);
+            0
+        };
+        let done = |ring: i32, nearest: &Nearest| {
+            // Every point in a farther ring is at least this far away.
+            let reach_m = ring as f32 * self.cell_m + margin_m;
+            nearest.bound_sq_m2 <= reach_m * reach_m
+        };
+        if done(first_ring, nearest) {
+            return;
+        }
+        for ring in first_ring + 1..=max_ring {
             let lo = center - IVec3::splat(ring);
             let hi = center + IVec3::splat(ring);
             for z in lo.z.max(0)..=hi.z.min(self.dims.z - 1) {
                 let z_on_shell = z == lo.z || z == hi.z;
                 for y in lo.y.max(0)..=hi.y.min(self.dims.y - 1) {
-                    let on_shell = z_on_shell || y == lo.y || y == hi.y;
-                    let step = if on_shell { 1 } else { (2 * ring).max(1) };
-                    let mut x = lo.x;
-                    while x <= hi.x {
-                        if x >= 0 && x < self.dims.x {
-                            let c = self.cell_index(IVec3::new(x, y, z));
-                            let (start, end) =
-                                (self.cell_start[c] as usize, self.cell_start[c + 1] as usize);
-                            for &j in &self.sorted[start..end] {
-                                let j = j as usize;
-                                let d2 = positions_m[j].distance_squared(p);
-                                if d2 <= max_radius_sq_m2
-                                    && d2 < nearest.bound_sq_m2()
-                                    && accept(j, d2)
-                                {
-                                    nearest.offer(j, d2);
-                                }
-                            }
-                        }
-                        x += step;
+                    if z_on_shell || y == lo.y || y == hi.y {
+                        // A row of the shell.
+                        scan_row(lo.x, hi.x, y, z, nearest);
+                    } else {
+                        // Inside the shell's cross-section: only the two ends.
+                        scan_row(lo.x, lo.x, y, z, nearest);
+                        scan_row(hi.x, hi.x, y, z, nearest);
                     }
                 }
             }
-            // Every point in a farther ring is at least ring·cell away.
-            let reach_m = ring as f32 * self.cell_m;
-            if nearest.bound_sq_m2() <= reach_m * reach_m {
-                break;
+            if done(ring, nearest) {
+                return;
             }
         }
     }
 
-    /// The mean number of points per occupied cell as a fish sees it (Σ n² / Σ n): how crowded
-    /// the grid is around a typical point, used to size the next grid.
+    /// Offers to `nearest` the points of `slots` within `max_radius_sq_m2` of
+    /// `p` that are nearer than its k-th and that `accept` takes, computing
+    /// distances four at a time.
+    fn scan(
+        &self,
+        slots: std::ops::Range<usize>,
+        p: Vec3,
+        max_radius_sq_m2: f32,
+        nearest: &mut Nearest,
+        accept: &mut impl FnMut(usize, Vec3, f32) -> bool,
+    ) {
+        let xs = &self.sorted_x_m[slots.clone()];
+        let ys = &self.sorted_y_m[slots.clone()];
+        let zs = &self.sorted_z_m[slots.clone()];
+        let mut offer = |k: usize, d2: f32, nearest: &mut Nearest| {
+            if d2 <= max_radius_sq_m2 && d2 < nearest.bound_sq_m2 {
+                let j = self.sorted[slots.start + k] as usize;
+                if accept(j, Vec3::new(xs[k], ys[k], zs[k]), d2) {
+                    nearest.offer(j, d2);
+                }
+            }
+        };
+        let (px, py, pz) = (Vec4::splat(p.x), Vec4::splat(p.y), Vec4::splat(p.z));
+        let mut k = 0;
+        while k + 4 <= xs.len() {
+            let dx = Vec4::from_slice(&xs[k..k + 4]) - px;
+            let dy = Vec4::from_slice(&ys[k..k + 4]) - py;
+            let dz = Vec4::from_slice(&zs[k..k + 4]) - pz;
+            let d2 = dx * dx + dy * dy + dz * dz;
+            let limit = Vec4::splat(nearest.bound_sq_m2.min(max_radius_sq_m2.next_up()));
+            let mut hits = d2.cmplt(limit).bitmask();
+            while hits != 0 {
+                let lane = hits.trailing_zeros() as usize;
+                offer(k + lane, d2[lane], nearest);
+                hits &= hits - 1;
+            }
+            k += 4;
+        }
+        for k in k..xs.len() {
+            let d2 = Vec3::new(xs[k], ys[k], zs[k]).distance_squared(p);
+            offer(k, d2, nearest);
+        }
+    }
+
+    /// The mean number of points per occupied cell as a point sees it
+    /// (Σ n² / Σ n): how crowded the grid is around a typical point, used to
+    /// size the next grid.
     pub fn crowding(&self) -> f32 {
         let cells = self.cell_start.len().saturating_sub(1);
         let mut sum = 0u64;
@@ -256,54 +427,6 @@ impl SpatialGrid {
             0.0
         } else {
             sum_sq as f32 / sum as f32
-        }
-    }
-
-    /// Number of cells (including empty ones).
-    pub fn cell_count(&self) -> usize {
-        self.cell_start.len().saturating_sub(1)
-    }
-
-    /// Calls `visit(a, b, points_a, points_b)` once for every unordered pair of
-    /// distinct non-empty cells `a < b` whose grid coordinates differ by at most
-    /// `reach` on every axis, and `visit(a, a, points_a, points_a)` for every
-    /// non-empty cell. Used to find linked groups without visiting all pairs.
-    pub fn for_each_cell_pair(
-        &self,
-        reach: i32,
-        mut visit: impl FnMut(usize, usize, &[u32], &[u32]),
-    ) {
-        let reach = reach.max(0);
-        for c in 0..self.cell_count() {
-            let (start, end) = (self.cell_start[c] as usize, self.cell_start[c + 1] as usize);
-            if start == end {
-                continue;
-            }
-            let a = &self.sorted[start..end];
-            visit(c, c, a, a);
-            let ci = c as i32;
-            let coords = IVec3::new(
-                ci % self.dims.x,
-                (ci / self.dims.x) % self.dims.y,
-                ci / (self.dims.x * self.dims.y),
-            );
-            let lo = (coords - IVec3::splat(reach)).max(IVec3::ZERO);
-            let hi = (coords + IVec3::splat(reach)).min(self.dims - IVec3::ONE);
-            for z in lo.z..=hi.z {
-                for y in lo.y..=hi.y {
-                    for x in lo.x..=hi.x {
-                        let d = self.cell_index(IVec3::new(x, y, z));
-                        if d <= c {
-                            continue;
-                        }
-                        let (s2, e2) =
-                            (self.cell_start[d] as usize, self.cell_start[d + 1] as usize);
-                        if s2 < e2 {
-                            visit(c, d, a, &self.sorted[s2..e2]);
-                        }
-                    }
-                }
-            }
         }
     }
 }
@@ -384,9 +507,7 @@ mod tests {
                 for (k, radius) in [(7, 5.0), (1, 5.0), (16, 0.6)] {
                     let mut nearest = Nearest::new(k);
                     // Only even indices are "seen".
-                    grid.k_nearest(p, &points, radius, &mut nearest, |j, _| {
-                        j != i && j % 2 == 0
-                    });
+                    grid.k_nearest(p, radius, &mut nearest, |j, _, _| j != i && j % 2 == 0);
                     let found: Vec<usize> = nearest.iter().map(|(j, _)| j).collect();
                     let mut all: Vec<(f32, usize)> = (0..points.len())
                         .filter(|&j| j != i && j % 2 == 0 && points[j].distance(p) <= radius)
@@ -398,33 +519,5 @@ mod tests {
                 }
             }
         }
-    }
-
-    #[test]
-    fn cell_pairs_cover_every_pair_of_points_within_reach_once() {
-        let points = lcg_points(300, 9);
-        let mut grid = SpatialGrid::default();
-        grid.rebuild(
-            Vec3::new(-6.0, 0.0, -4.0),
-            Vec3::new(6.0, 4.5, 4.0),
-            1.0,
-            &points,
-        );
-        let mut pairs = 0usize;
-        grid.for_each_cell_pair(1, |ca, cb, a, b| {
-            if ca == cb {
-                pairs += a.len() * (a.len() - 1) / 2;
-            } else {
-                pairs += a.len() * b.len();
-            }
-        });
-        let mut expected = 0usize;
-        grid.for_each_candidate(Vec3::ZERO, 0.0, |_| {});
-        for (i, &p) in points.iter().enumerate() {
-            let mut count = 0;
-            grid.for_each_candidate(p, 1.0, |j| count += usize::from(j != i));
-            expected += count;
-        }
-        assert_eq!(pairs * 2, expected);
     }
 }

@@ -508,10 +508,10 @@ fn turn_towards(goal: Vec3, heading: Vec3, tie_break: Vec3) -> Vec3 {
 ///
 /// A fish aimed exactly at the core sways to its right. The push has no
 /// backward component, and it is not limited here: the caller limits the sum.
-pub fn avoid_obstacles(
+pub fn avoid_obstacles<'a>(
     pos_m: Vec3,
     vel_m_per_s: Vec3,
-    obstacles: &[Obstacle],
+    obstacles: impl IntoIterator<Item = &'a Obstacle>,
     look_ahead_m: f32,
     clearance_m: f32,
     max_speed_m_per_s: f32,
@@ -738,5 +738,144 @@ mod tests {
                 assert!(tank.contains(p, 0.1), "too close to the glass: {p}");
             }
         }
+    }
+
+    #[test]
+    fn flee_points_straight_away_from_the_threat_at_most_max_force() {
+        let steer = flee(Vec3::ZERO, Vec3::ZERO, Vec3::new(1.0, 0.0, 0.0), 0.8, 10.0);
+        assert!((steer - Vec3::new(-0.8, 0.0, 0.0)).length() < 1e-6);
+        // Swimming towards the threat: turn round, limited to the max force.
+        let steer = flee(Vec3::ZERO, Vec3::X * 0.8, Vec3::X, 0.8, 1.0);
+        assert!((steer - Vec3::NEG_X).length() < 1e-6);
+        // Already fleeing at full speed: nothing to change.
+        let calm = flee(Vec3::ZERO, Vec3::NEG_X * 0.8, Vec3::X, 0.8, 1.0);
+        assert!(calm.length() < 1e-6);
+        // At the threat itself there is no way to flee: brake, never NaN.
+        assert!(flee(Vec3::ONE, Vec3::Z, Vec3::ONE, 0.8, 1.0).is_finite());
+    }
+
+    #[test]
+    fn arrive_slows_down_inside_the_arrival_distance_and_stops_at_the_target() {
+        let target = Vec3::new(4.0, 0.0, 0.0);
+        // Far away it is seek.
+        let far = arrive(Vec3::ZERO, Vec3::ZERO, target, 0.8, 1.0, 10.0);
+        assert!((far - Vec3::X * 0.8).length() < 1e-6);
+        // At half the arrival distance it asks for half speed.
+        let near = arrive(Vec3::new(3.5, 0.0, 0.0), Vec3::ZERO, target, 0.8, 1.0, 10.0);
+        assert!((near - Vec3::X * 0.4).length() < 1e-6);
+        // A fish swimming on at full speed near the target brakes.
+        let braking = arrive(
+            Vec3::new(3.5, 0.0, 0.0),
+            Vec3::X * 0.8,
+            target,
+            0.8,
+            1.0,
+            10.0,
+        );
+        assert!(braking.x < 0.0);
+        // Followed step by step, it comes to rest at the target; it may
+        // overshoot a little (the steering is a spring of one second), but by
+        // much less than the arrival distance.
+        let params = SteeringParams {
+            min_speed_m_per_s: 0.0,
+            max_force_m_per_s2: 2.0,
+            ..SteeringParams::default()
+        };
+        let mut fish = Fish::new(Vec3::ZERO, Vec3::X * 0.5, 0.3, 0.0);
+        let mut max_x_m: f32 = 0.0;
+        for _ in 0..1_200 {
+            let steer = arrive(
+                fish.position_m,
+                fish.velocity_m_per_s,
+                target,
+                0.8,
+                1.0,
+                params.max_force_m_per_s2,
+            );
+            fish.integrate(steer, &params, DT_SECS);
+            max_x_m = max_x_m.max(fish.position_m.x);
+        }
+        assert!(
+            fish.position_m.distance(target) < 0.05,
+            "{}",
+            fish.position_m
+        );
+        assert!(max_x_m < target.x + 0.35, "overshot to {max_x_m}");
+    }
+
+    #[test]
+    fn pursue_aims_ahead_of_a_moving_target_and_evade_away_from_where_it_will_be() {
+        // A target 2 m ahead crossing sideways at 1 m/s: the pursuer (top speed
+        // 1 m/s) predicts 2 s ahead and aims 2 m to the side.
+        let (pos, target, target_vel) = (Vec3::ZERO, Vec3::X * 2.0, Vec3::Z);
+        assert!(
+            (predicted_position_m(pos, target, target_vel, 1.0) - Vec3::new(2.0, 0.0, 2.0))
+                .length()
+                < 1e-6
+        );
+        let chase = pursue(pos, Vec3::ZERO, target, target_vel, 1.0, 10.0);
+        assert!(chase.x > 0.0 && chase.z > 0.0, "leads the target: {chase}");
+        assert!(
+            (chase.x - chase.z).abs() < 1e-5,
+            "aims at (2, 0, 2): {chase}"
+        );
+        // Seeking the target itself would not lead it.
+        assert!(seek(pos, Vec3::ZERO, target, 1.0).z.abs() < 1e-6);
+        // Evade flees the predicted position: away in x, and away from +z.
+        let escape = evade(pos, Vec3::ZERO, target, target_vel, 1.0, 10.0);
+        assert!(escape.x < 0.0 && escape.z < 0.0, "{escape}");
+        // The prediction is bounded, so a far target is not extrapolated forever.
+        let far = predicted_position_m(pos, Vec3::X * 100.0, Vec3::Z, 1.0);
+        assert!((far.z - MAX_PREDICTION_S).abs() < 1e-5);
+        // Limits hold.
+        assert!(pursue(pos, Vec3::NEG_X, target, target_vel, 1.0, 0.5).length() <= 0.5 + 1e-6);
+    }
+
+    #[test]
+    fn a_fish_near_a_wall_turns_along_it_instead_of_reversing() {
+        // Lim & Tan's wall algorithm: a fish swimming at 45° into the +x glass
+        // keeps its along-the-wall velocity (+z) and turns its into-the-wall
+        // velocity round, ending up along the wall or leaving it.
+        let tank = Tank::default();
+        let params = SteeringParams {
+            max_force_m_per_s2: 2.0,
+            ..SteeringParams::default()
+        };
+        let start = Fish::new(
+            Vec3::new(tank.max_m.x - 1.2, 2.0, -2.0),
+            Vec3::new(0.5, 0.0, 0.5),
+            0.3,
+            0.0,
+        );
+        let path = swim(start, 4.0, |f| {
+            glass_walls(
+                f.position_m,
+                f.velocity_m_per_s,
+                &tank,
+                1.5,
+                params.max_force_m_per_s2,
+            )
+        });
+        for fish in &path {
+            assert!(fish.velocity_m_per_s.z > 0.0, "reversed along the wall");
+            assert!(fish.position_m.x < tank.max_m.x - 0.1, "hit the glass");
+        }
+        let end = path.last().map(|f| f.velocity_m_per_s).unwrap_or_default();
+        assert!(end.x <= 0.05, "still heading into the glass: {end}");
+        assert!(end.z > 0.3, "not swimming along the glass: {end}");
+        // Straight at the glass, it turns towards the middle of the tank
+        // rather than bouncing straight back.
+        let head_on = follow_wall(Vec3::X * 0.8, Vec3::X, 0.5, 1.5, Vec3::Z, 0.3, 1.0, 100.0);
+        let turned = Vec3::X * 0.8 + head_on;
+        assert!(turned.z > 0.7 && turned.x < 0.3, "{turned}");
+        // Out of range or heading away: no force.
+        assert_eq!(
+            follow_wall(Vec3::X, Vec3::X, 2.0, 1.5, Vec3::Z, 0.3, 1.0, 1.0),
+            Vec3::ZERO
+        );
+        assert_eq!(
+            follow_wall(Vec3::NEG_X, Vec3::X, 0.5, 1.5, Vec3::Z, 0.3, 1.0, 1.0),
+            Vec3::ZERO
+        );
     }
 }

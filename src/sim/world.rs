@@ -19,8 +19,8 @@ use serde::{Deserialize, Serialize};
 
 use super::boid_forces::{self, Perception};
 use super::control_mode::{self, ControlMode};
-use super::fish::Fish;
-use super::obstacle::{Obstacle, WALL_CLEARANCE_M};
+use super::fish::{Fish, heading_of};
+use super::obstacle::{Obstacle, ObstacleSet, WALL_CLEARANCE_M};
 use super::school_metrics::SchoolMeter;
 use super::shark::{self, MAX_SHARKS, Shark};
 use super::spatial_grid::{Nearest, SpatialGrid};
@@ -229,16 +229,25 @@ pub struct World {
     metrics: WorldMetrics,
     forces: ForceWindow,
     // Scratch, kept between steps so that a step allocates nothing.
+    /// The fish's positions at the start of the step, bucketed for the
+    /// neighbour search.
     grid: SpatialGrid,
     grid_cell_m: f32,
-    snapshot: Vec<Fish>,
+    /// What every fish perceives this step (all see the same snapshot):
+    /// positions and velocities at the start of the step.
     positions_m: Vec<Vec3>,
+    velocities_m_per_s: Vec<Vec3>,
+    /// Do `grid` and the snapshot hold the last boid step's school (so that
+    /// [`World::interaction_neighbours`] can replay it)?
+    snapshot_is_last_boid_step: bool,
+    /// The fixed obstacles with their bounds (the hard rule's broad phase).
+    fixed_solids: ObstacleSet,
     /// The stingrays as the fish avoid them (discs and cluster polygons).
     stingray_avoid: Vec<Obstacle>,
     /// The stingrays as solid discs (the hard rule).
-    stingray_solids: Vec<Obstacle>,
+    stingray_solids: ObstacleSet,
     /// Fixed obstacles followed by the stingrays' avoidance shapes.
-    avoid_all: Vec<Obstacle>,
+    avoid_all: ObstacleSet,
     meter: SchoolMeter,
     far_field: boid_forces::FarField,
 }
@@ -280,14 +289,17 @@ impl World {
             forces: ForceWindow::default(),
             grid: SpatialGrid::default(),
             grid_cell_m: 0.0,
-            snapshot: Vec::new(),
             positions_m: Vec::new(),
+            velocities_m_per_s: Vec::new(),
+            snapshot_is_last_boid_step: false,
+            fixed_solids: ObstacleSet::default(),
             stingray_avoid: Vec::new(),
-            stingray_solids: Vec::new(),
-            avoid_all: Vec::new(),
+            stingray_solids: ObstacleSet::default(),
+            avoid_all: ObstacleSet::default(),
             meter: SchoolMeter::default(),
             far_field: boid_forces::FarField::default(),
         };
+        world.fixed_solids.rebuild(&world.obstacles);
         world.set_species_counts(config.sharks, config.stingrays);
         world.set_fish_count(config.fish_count);
         world.measure();
@@ -372,6 +384,31 @@ impl World {
     /// Steer with the SIMBA boid layer (`Some`) or wander alone (`None`).
     pub fn set_boids(&mut self, boids: Option<BoidParams>) {
         self.boids = boids;
+        self.snapshot_is_last_boid_step = false;
+    }
+
+    /// Puts into `out` the neighbours fish `i` heeded in the last step: its up
+    /// to [`Perception::max_neighbours`] nearest neighbours that it saw, nearest
+    /// first, as the boid layer found them (the "show vision" links). Empty
+    /// without the boid layer, for a fish that does not exist, and until the
+    /// first step after the boid settings or the number of fish changed.
+    /// Costs one neighbour search.
+    pub fn interaction_neighbours(&self, i: usize, out: &mut Vec<usize>) {
+        out.clear();
+        let Some(boids) = &self.boids else {
+            return;
+        };
+        if !self.snapshot_is_last_boid_step || i >= self.positions_m.len() {
+            return;
+        }
+        let nearest = boid_forces::heeded_neighbours(
+            &self.positions_m,
+            &self.velocities_m_per_s,
+            i,
+            &self.grid,
+            &boids.perception,
+        );
+        out.extend(nearest.iter().map(|(j, _)| j));
     }
 
     /// The boid-layer settings, when on.
@@ -405,10 +442,12 @@ impl World {
     /// Then the stingrays and sharks move, and the metrics are measured.
     pub fn step(&mut self) {
         self.rebuild_stingray_obstacles();
-        self.snapshot.clone_from(&self.fish);
         self.positions_m.clear();
         self.positions_m
-            .extend(self.snapshot.iter().map(|f| f.position_m));
+            .extend(self.fish.iter().map(|f| f.position_m));
+        self.velocities_m_per_s.clear();
+        self.velocities_m_per_s
+            .extend(self.fish.iter().map(|f| f.velocity_m_per_s));
         let vision_m = self
             .boids
             .map_or(FEAR_RADIUS_M, |b| b.perception.vision_distance_m);
@@ -417,6 +456,7 @@ impl World {
             Some(boids) => self.step_boid_fish(&boids),
             None => self.step_wandering_fish(),
         }
+        self.snapshot_is_last_boid_step = self.boids.is_some();
         self.step_stingrays();
         self.step_sharks();
         self.steps += 1;
@@ -428,23 +468,29 @@ impl World {
     fn step_wandering_fish(&mut self) {
         let params = self.params;
         for i in 0..self.fish.len() {
-            let before = self.snapshot[i];
+            let before = self.fish[i];
             let fish = &mut self.fish[i];
             let wander = steering::wander(fish, &mut self.rng, &params);
             let (containment, avoidance) =
                 glass_and_rock_forces(&before, &self.tank, &self.avoid_all, &params);
-            let escape = escape_force(&before, &self.sharks, &params);
+            let escape = escape_force(
+                before.position_m,
+                before.velocity_m_per_s,
+                &self.sharks,
+                &params,
+            );
             let steering_m_per_s2 = wander * params.wander_weight
                 + containment * params.containment_weight
                 + avoidance * params.avoidance_weight
                 + escape.unwrap_or(Vec3::ZERO);
             self.non_finite_repairs += move_fish(
                 fish,
-                &before,
+                before.position_m,
+                before.heading(),
                 steering_m_per_s2,
                 &params,
                 &self.tank,
-                &self.obstacles,
+                &self.fixed_solids,
                 &self.stingray_solids,
             );
         }
@@ -467,34 +513,42 @@ impl World {
             perception.vision_distance_m * FAR_FIELD_CELL_SHARE,
             &self.positions_m,
         );
-        for i in 0..self.fish.len() {
-            let me = self.snapshot[i];
+        // Obstacles can only be in a fish's path within this reach.
+        let avoid_reach_m =
+            params.avoidance_look_ahead_m + AVOIDANCE_CLEARANCE_M + self.avoid_all.max_radius_m();
+        // Fish in grid order: neighbours of consecutive fish share cells, so
+        // the searches stay in the cache. (The result does not depend on the
+        // order: every fish sees the snapshot.)
+        for slot in 0..self.fish.len() {
+            let i = self.grid.slots()[slot] as usize;
+            let position_m = self.positions_m[i];
+            let velocity_m_per_s = self.velocities_m_per_s[i];
             let neighbours = boid_forces::neighbour_forces(
-                &self.snapshot,
                 &self.positions_m,
+                &self.velocities_m_per_s,
                 i,
                 &self.grid,
                 Some(&self.far_field),
                 perception,
             );
             let containment = steering::contain_in_tank(
-                me.position_m,
-                me.velocity_m_per_s,
+                position_m,
+                velocity_m_per_s,
                 &self.tank,
                 BOID_WALL_RANGE_M,
                 &params,
                 f32::INFINITY,
             );
             let containment = boid_forces::steer_towards(
-                me.velocity_m_per_s + containment,
-                me.velocity_m_per_s,
+                velocity_m_per_s + containment,
+                velocity_m_per_s,
                 perception,
             );
             let avoidance = steering::limit(
                 steering::avoid_obstacles(
-                    me.position_m,
-                    me.velocity_m_per_s,
-                    &self.avoid_all,
+                    position_m,
+                    velocity_m_per_s,
+                    self.avoid_all.near(position_m, avoid_reach_m),
                     params.avoidance_look_ahead_m,
                     AVOIDANCE_CLEARANCE_M,
                     params.max_speed_m_per_s,
@@ -508,7 +562,7 @@ impl World {
                 neighbours.separation_m_per_s2,
                 avoidance,
             ];
-            let escape = escape_force(&me, &self.sharks, &params);
+            let escape = escape_force(position_m, velocity_m_per_s, &self.sharks, &params);
             let mut weights = boids.weights;
             if escape.is_some() {
                 weights[2] = (weights[2] * FEAR_COHESION_FACTOR).min(100.0);
@@ -528,11 +582,12 @@ impl World {
             let steering_m_per_s2 = combined.force_m_per_s2 + wander + escape.unwrap_or(Vec3::ZERO);
             self.non_finite_repairs += move_fish(
                 fish,
-                &me,
+                position_m,
+                heading_of(velocity_m_per_s),
                 steering_m_per_s2,
                 &params,
                 &self.tank,
-                &self.obstacles,
+                &self.fixed_solids,
                 &self.stingray_solids,
             );
         }
@@ -567,14 +622,16 @@ impl World {
     /// everything the fish avoid.
     fn rebuild_stingray_obstacles(&mut self) {
         let floor_y_m = self.tank.min_m.y;
-        self.stingray_solids.clear();
-        self.stingray_solids
-            .extend(self.stingrays.iter().map(|s| s.obstacle(floor_y_m)));
+        let discs: Vec<Obstacle> = self
+            .stingrays
+            .iter()
+            .map(|s| s.obstacle(floor_y_m))
+            .collect();
+        self.stingray_solids.rebuild(&discs);
         self.stingray_avoid.clear();
         stingray::cluster_obstacles(&self.stingrays, floor_y_m, &mut self.stingray_avoid);
-        self.avoid_all.clear();
-        self.avoid_all.extend(self.obstacles.iter().cloned());
-        self.avoid_all.extend(self.stingray_avoid.iter().cloned());
+        self.avoid_all
+            .rebuild(self.obstacles.iter().chain(&self.stingray_avoid));
     }
 
     /// Stingrays glide: level wander, the glass, the fixed obstacles, and a
@@ -668,10 +725,9 @@ impl World {
             if shark.target.is_none() && shark.is_hungry() && shark.refocus_secs <= 0.0 {
                 let mut nearest = Nearest::new(1);
                 let (p, heading) = (shark.body.position_m, shark.body.heading());
-                let positions = &self.positions_m;
                 self.grid
-                    .k_nearest(p, positions, shark::SHARK_VISION_M, &mut nearest, |j, _| {
-                        boid_forces::sees(p, heading, positions[j], &shark_perception)
+                    .k_nearest(p, shark::SHARK_VISION_M, &mut nearest, |_, q, _| {
+                        boid_forces::sees(p, heading, q, &shark_perception)
                     });
                 shark.target = nearest.iter().next().map(|(j, _)| j);
                 shark.lock_secs = 0.0;
@@ -699,7 +755,7 @@ impl World {
             let avoidance = steering::avoid_obstacles(
                 before.position_m,
                 before.velocity_m_per_s,
-                &self.avoid_all,
+                self.avoid_all.as_slice(),
                 3.0,
                 0.5,
                 params.max_speed_m_per_s,
@@ -714,8 +770,8 @@ impl World {
             push_clear(
                 &mut shark.body,
                 &self.tank,
-                &self.obstacles,
-                &[],
+                &self.fixed_solids,
+                &ObstacleSet::EMPTY,
                 SHARK_MARGIN_M,
                 SHARK_MARGIN_M,
             );
@@ -743,13 +799,10 @@ impl World {
     /// counted up to [`shark::MAX_CONFUSING_NEIGHBOURS`] (snapshot positions).
     fn count_near(&self, p: Vec3, except: usize) -> u32 {
         let mut nearest = Nearest::new(shark::MAX_CONFUSING_NEIGHBOURS as usize);
-        self.grid.k_nearest(
-            p,
-            &self.positions_m,
-            shark::CONFUSION_RADIUS_M,
-            &mut nearest,
-            |j, _| j != except,
-        );
+        self.grid
+            .k_nearest(p, shark::CONFUSION_RADIUS_M, &mut nearest, |j, _, _| {
+                j != except
+            });
         nearest.len() as u32
     }
 
@@ -783,6 +836,7 @@ impl World {
             }
         }
         self.config.fish_count = fish_count;
+        self.snapshot_is_last_boid_step = false;
     }
 
     /// Keep the first `sharks` sharks and `stingrays` stingrays, or add new ones
@@ -798,7 +852,7 @@ impl World {
         }
         self.sharks.truncate(sharks);
         while self.sharks.len() < sharks {
-            let shark = spawn_shark(&self.tank, &self.obstacles, &mut self.rng);
+            let shark = spawn_shark(&self.tank, &self.fixed_solids, &mut self.rng);
             self.sharks.push(shark);
         }
         self.config.sharks = sharks;
@@ -874,6 +928,7 @@ impl World {
 
     fn obstacles_changed(&mut self) {
         self.config.obstacles = Some(self.obstacles.clone());
+        self.fixed_solids.rebuild(&self.obstacles);
         for i in 0..self.stingrays.len() {
             if !stingray_fits(
                 self.stingrays[i].body.position_m,
@@ -891,14 +946,14 @@ impl World {
     fn settle(&mut self) {
         self.rebuild_stingray_obstacles();
         for fish in &mut self.fish {
-            enforce_hard_constraints(fish, &self.tank, &self.obstacles, &self.stingray_solids);
+            enforce_hard_constraints(fish, &self.tank, &self.fixed_solids, &self.stingray_solids);
         }
         for shark in &mut self.sharks {
             push_clear(
                 &mut shark.body,
                 &self.tank,
-                &self.obstacles,
-                &[],
+                &self.fixed_solids,
+                &ObstacleSet::EMPTY,
                 SHARK_MARGIN_M,
                 SHARK_MARGIN_M,
             );
@@ -908,7 +963,7 @@ impl World {
     /// Fixed obstacles and stingray discs: what a new fish must not start in.
     fn solids(&self) -> Vec<Obstacle> {
         let mut solids = self.obstacles.clone();
-        solids.extend(self.stingray_solids.iter().cloned());
+        solids.extend(self.stingray_solids.as_slice().iter().cloned());
         solids
     }
 
@@ -988,12 +1043,17 @@ fn footprint_gap_m(a: &Obstacle, b: &Obstacle) -> f32 {
 /// distant shark makes the school veer away together rather than scatter), or
 /// `None` when it notices none. A shark is noticed within [`FEAR_RADIUS_M`] inside the 300°
 /// field of view, or within [`LATERAL_LINE_M`] from any direction.
-fn escape_force(fish: &Fish, sharks: &[Shark], params: &SteeringParams) -> Option<Vec3> {
-    let heading = fish.heading();
+fn escape_force(
+    position_m: Vec3,
+    velocity_m_per_s: Vec3,
+    sharks: &[Shark],
+    params: &SteeringParams,
+) -> Option<Vec3> {
+    let heading = heading_of(velocity_m_per_s);
     let cos_half_view = (150f32.to_radians()).cos();
     let mut nearest: Option<(f32, &Shark)> = None;
     for shark in sharks {
-        let offset_m = shark.body.position_m - fish.position_m;
+        let offset_m = shark.body.position_m - position_m;
         let distance_m = offset_m.length();
         let in_view = heading.dot(offset_m) >= cos_half_view * distance_m;
         let noticed = distance_m < LATERAL_LINE_M || (distance_m < FEAR_RADIUS_M && in_view);
@@ -1008,8 +1068,8 @@ fn escape_force(fish: &Fish, sharks: &[Shark], params: &SteeringParams) -> Optio
         1.0 - 0.75 * (distance_m - LATERAL_LINE_M) / (FEAR_RADIUS_M - LATERAL_LINE_M)
     };
     let evade = steering::evade(
-        fish.position_m,
-        fish.velocity_m_per_s,
+        position_m,
+        velocity_m_per_s,
         shark.body.position_m,
         shark.body.velocity_m_per_s,
         params.max_speed_m_per_s,
@@ -1023,9 +1083,10 @@ fn escape_force(fish: &Fish, sharks: &[Shark], params: &SteeringParams) -> Optio
 fn glass_and_rock_forces(
     fish: &Fish,
     tank: &Tank,
-    obstacles: &[Obstacle],
+    obstacles: &ObstacleSet,
     params: &SteeringParams,
 ) -> (Vec3, Vec3) {
+    let reach_m = params.avoidance_look_ahead_m + AVOIDANCE_CLEARANCE_M + obstacles.max_radius_m();
     let containment = steering::containment(
         fish.position_m,
         fish.velocity_m_per_s,
@@ -1037,7 +1098,7 @@ fn glass_and_rock_forces(
     let avoidance = steering::avoid_obstacles(
         fish.position_m,
         fish.velocity_m_per_s,
-        obstacles,
+        obstacles.near(fish.position_m, reach_m),
         params.avoidance_look_ahead_m,
         AVOIDANCE_CLEARANCE_M,
         params.max_speed_m_per_s,
@@ -1048,14 +1109,16 @@ fn glass_and_rock_forces(
 /// Moves one fish by one step under `steering_m_per_s2`: integrate, repair any
 /// non-finite value (back to `before`, at minimum speed), enforce the hard rules
 /// and beat the tail. Returns how many repairs were needed (0, 1 or 2).
+#[allow(clippy::too_many_arguments)]
 fn move_fish(
     fish: &mut Fish,
-    before: &Fish,
+    before_position_m: Vec3,
+    before_heading: Vec3,
     steering_m_per_s2: Vec3,
     params: &SteeringParams,
     tank: &Tank,
-    obstacles: &[Obstacle],
-    stingrays: &[Obstacle],
+    obstacles: &ObstacleSet,
+    stingrays: &ObstacleSet,
 ) -> u64 {
     let mut repairs = 0;
     let steering_m_per_s2 = if steering_m_per_s2.is_finite() {
@@ -1067,8 +1130,8 @@ fn move_fish(
     fish.integrate(steering_m_per_s2, params, DT_SECS);
     if !(fish.position_m.is_finite() && fish.velocity_m_per_s.is_finite()) {
         repairs += 1;
-        fish.position_m = before.position_m;
-        fish.velocity_m_per_s = before.heading() * params.min_speed_m_per_s.max(0.0);
+        fish.position_m = before_position_m;
+        fish.velocity_m_per_s = before_heading * params.min_speed_m_per_s.max(0.0);
     }
     enforce_hard_constraints(fish, tank, obstacles, stingrays);
     fish.advance_tail_phase(DT_SECS);
@@ -1089,8 +1152,8 @@ fn move_fish(
 fn enforce_hard_constraints(
     fish: &mut Fish,
     tank: &Tank,
-    obstacles: &[Obstacle],
-    stingrays: &[Obstacle],
+    obstacles: &ObstacleSet,
+    stingrays: &ObstacleSet,
 ) {
     push_clear(
         fish,
@@ -1107,8 +1170,8 @@ fn enforce_hard_constraints(
 fn push_clear(
     body: &mut Fish,
     tank: &Tank,
-    obstacles: &[Obstacle],
-    stingrays: &[Obstacle],
+    obstacles: &ObstacleSet,
+    stingrays: &ObstacleSet,
     tank_margin_m: f32,
     obstacle_margin_m: f32,
 ) {
@@ -1131,20 +1194,23 @@ fn push_clear(
             }
         }
     };
-    for obstacle in obstacles {
-        push(body, obstacle);
-    }
-    if stingrays.is_empty() {
-        return;
+    // Broad phase: an obstacle pushes only when the body (where it is now,
+    // after the pushes before) is within the margin of it.
+    for k in 0..obstacles.len() {
+        if let Some(obstacle) = obstacles.get_if_near(k, body.position_m, obstacle_margin_m) {
+            push(body, obstacle);
+        }
     }
     for _ in 0..2 {
-        for disc in stingrays {
-            push(body, disc);
+        for k in 0..stingrays.len() {
+            if let Some(disc) = stingrays.get_if_near(k, body.position_m, obstacle_margin_m) {
+                push(body, disc);
+            }
         }
     }
     // Overlapping discs: lift over every disc that still holds the fish.
     let mut lift_to_m = body.position_m.y;
-    for disc in stingrays {
+    for disc in stingrays.near(body.position_m, 0.0) {
         if disc.signed_distance_m(body.position_m) < 0.0 {
             lift_to_m = lift_to_m.max(disc.vertical_extent_m().1 + obstacle_margin_m);
         }
@@ -1319,13 +1385,14 @@ fn random_point(tank: &Tank, rng: &mut ChaCha8Rng) -> Vec3 {
 /// A new shark, 1.5–2 m long, at a random place at least 1 m from the glass,
 /// the floor, the surface and every obstacle, cruising level in a random
 /// direction.
-fn spawn_shark(tank: &Tank, obstacles: &[Obstacle], rng: &mut ChaCha8Rng) -> Shark {
+fn spawn_shark(tank: &Tank, obstacles: &ObstacleSet, rng: &mut ChaCha8Rng) -> Shark {
     const CLEARANCE_M: f32 = 1.0;
     let mut position_m = tank.center_m();
     for _ in 0..PLACEMENT_ATTEMPTS {
         let p = random_point(tank, rng);
         if tank.contains(p, CLEARANCE_M)
             && obstacles
+                .as_slice()
                 .iter()
                 .all(|o| o.signed_distance_m(p) >= CLEARANCE_M)
         {
@@ -1339,7 +1406,7 @@ fn spawn_shark(tank: &Tank, obstacles: &[Obstacle], rng: &mut ChaCha8Rng) -> Sha
         &mut new.body,
         tank,
         obstacles,
-        &[],
+        &ObstacleSet::EMPTY,
         SHARK_MARGIN_M,
         SHARK_MARGIN_M,
     );
@@ -1983,18 +2050,48 @@ mod tests {
     }
 
     #[test]
+    fn show_vision_links_are_the_seven_nearest_neighbours_the_fish_sees() {
+        let mut w = boid_world(BoidParams::group(), 300);
+        let mut links = Vec::new();
+        w.interaction_neighbours(0, &mut links);
+        assert!(links.is_empty(), "no step yet");
+        let before: Vec<Fish> = w.fish().to_vec();
+        w.step();
+        let perception = BoidParams::group().perception;
+        for i in [0, 17, 299] {
+            w.interaction_neighbours(i, &mut links);
+            // Brute force over the school as it was when the fish chose.
+            let me = before[i];
+            let mut seen: Vec<(f32, usize)> = (0..before.len())
+                .filter(|&j| {
+                    j != i
+                        && boid_forces::sees(
+                            me.position_m,
+                            me.heading(),
+                            before[j].position_m,
+                            &perception,
+                        )
+                })
+                .map(|j| (before[j].position_m.distance_squared(me.position_m), j))
+                .collect();
+            seen.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let expected: Vec<usize> = seen.iter().take(7).map(|&(_, j)| j).collect();
+            assert_eq!(links, expected, "fish {i}");
+        }
+        w.interaction_neighbours(300, &mut links);
+        assert!(links.is_empty(), "no such fish");
+        w.set_fish_count(100);
+        w.interaction_neighbours(0, &mut links);
+        assert!(links.is_empty(), "stale after a change of fish count");
+    }
+
+    #[test]
     fn metrics_are_measured_after_every_step() {
         let mut w = boid_world(BoidParams::group(), 300);
         for _ in 0..90 {
             w.step();
         }
-        let mut grid = SpatialGrid::default();
-        let fresh = crate::sim::school_metrics::measure(
-            w.fish(),
-            w.tank().min_m,
-            w.tank().max_m,
-            &mut grid,
-        );
+        let fresh = crate::sim::school_metrics::measure(w.fish(), w.tank().min_m, w.tank().max_m);
         assert_eq!(w.metrics().school, fresh);
         // Blended mode applies every weighted force on every fish-step.
         assert_eq!(w.metrics().force_frequencies_recent, [1.0; 5]);
