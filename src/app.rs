@@ -579,29 +579,17 @@ fn draw_vision(
         1.0,
         egui::Color32::from_rgba_unmultiplied(255, 255, 160, 90),
     );
-    let mut seen: Vec<(f32, usize)> = Vec::new();
-    let candidates = fish.len().min(4 * VISION_OBSERVERS_MAX);
+    // The neighbours each fish actually heeds this step, as the simulation chose them.
+    let mut heeded: Vec<usize> = Vec::new();
     for i in 0..fish.len().min(VISION_OBSERVERS_MAX) {
-        let me = &fish[i];
-        seen.clear();
-        for (j, other) in fish[..candidates].iter().enumerate() {
-            if j != i
-                && crate::sim::boid_forces::sees(
-                    me.position_m,
-                    me.heading(),
-                    other.position_m,
-                    &perception,
-                )
-            {
-                seen.push((me.position_m.distance_squared(other.position_m), j));
-            }
-        }
-        seen.sort_by(|a, b| a.0.total_cmp(&b.0));
+        run.world().interaction_neighbours(i, &mut heeded);
         let Some(a) = to_screen(run.drawn_position_m(i, alpha)) else {
             continue;
         };
-        for &(_, j) in seen.iter().take(VISION_LINKS_PER_FISH) {
-            if let Some(b) = to_screen(run.drawn_position_m(j, alpha)) {
+        for &j in heeded.iter().take(VISION_LINKS_PER_FISH) {
+            if j < fish.len()
+                && let Some(b) = to_screen(run.drawn_position_m(j, alpha))
+            {
                 painter.line_segment([a, b], link_stroke);
             }
         }
