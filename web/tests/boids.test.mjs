@@ -21,8 +21,24 @@ const widget = (page, name) => page.evaluate((n) => window.shoal.widgets()[n], n
 
 /** Waits until a named widget is on screen (the panel may still be laying out). */
 async function waitForWidget(page, name) {
-  await page.waitForFunction((n) => !!window.shoal.widgets()[n], name, { timeout: 30_000 });
+  await page.waitForFunction((n) => !!window.shoal.widgets()[n], name, { timeout: 60_000 });
   return widget(page, name);
+}
+
+/** Clicks an idempotent widget (a radio or preset button) until `predicate` holds:
+ * on a software-rendered, loaded machine a frame can take seconds, and a click that
+ * lands while egui is still laying out the previous frame may be missed. */
+async function clickUntil(page, name, predicate, arg) {
+  for (let attempt = 0; attempt < 4; attempt++) {
+    await clickWidget(page, name);
+    try {
+      await page.waitForFunction(predicate, arg, { timeout: 20_000 });
+      return;
+    } catch {
+      // Not applied yet: click again.
+    }
+  }
+  throw new Error(`clicking ${name} had no effect`);
 }
 
 /** Drags the handle of slider `name` to `fraction` of its width, as a person would. */
@@ -63,8 +79,7 @@ describe("schooling lab", () => {
   });
 
   test("clicking the scene button opens the schooling lab with its controls and metrics", async () => {
-    await clickWidget(page, "scene_boids");
-    await page.waitForFunction(() => window.shoal.state().scene === "boids", null, { timeout: 30_000 });
+    await clickUntil(page, "scene_boids", () => window.shoal.state().scene === "boids");
     await waitForWidget(page, "weight_cohesion");
     await waitForWidget(page, "plot_0");
     const s = await state(page);
@@ -90,8 +105,7 @@ describe("schooling lab", () => {
   });
 
   test("preset and control-mode buttons switch what the fish do", async () => {
-    await clickWidget(page, "preset_group");
-    await page.waitForFunction(() => window.shoal.settings().left.preset === "group", null, { timeout: 30_000 });
+    await clickUntil(page, "preset_group", () => window.shoal.settings().left.preset === "group");
     const group = await settings(page);
     assert.deepEqual(
       [group.left.containment, group.left.alignment, group.left.cohesion, group.left.separation, group.left.avoidance],
@@ -101,20 +115,15 @@ describe("schooling lab", () => {
     const grouped = await polarizationAfter(page, 3600);
     assert.ok(grouped > 0.8, `group preset polarises: ${grouped}`);
 
-    await clickWidget(page, "mode_monte_carlo");
-    await page.waitForFunction(() => window.shoal.settings().left.mode === "monte_carlo", null, { timeout: 30_000 });
+    await clickUntil(page, "mode_monte_carlo", () => window.shoal.settings().left.mode === "monte_carlo");
     await polarizationAfter(page, 600);
     const shares = (await state(page)).metrics.force_frequencies;
     const total = 26 + 26 + 29 + 26 + 98;
     for (const [name, w] of Object.entries({ containment: 26, alignment: 26, cohesion: 29, separation: 26, avoidance: 98 })) {
       assert.ok(Math.abs(shares[name] - w / total) < 0.03, `${name}: ${shares[name]} vs ${w / total}`);
     }
-    await clickWidget(page, "preset_monte_carlo_paper");
-    await page.waitForFunction(() => window.shoal.settings().left.preset === "monte_carlo_paper", null, {
-      timeout: 30_000,
-    });
-    await clickWidget(page, "mode_blended");
-    await page.waitForFunction(() => window.shoal.settings().left.mode === "blended", null, { timeout: 30_000 });
+    await clickUntil(page, "preset_monte_carlo_paper", () => window.shoal.settings().left.preset === "monte_carlo_paper");
+    await clickUntil(page, "mode_blended", () => window.shoal.settings().left.mode === "blended");
     assert.equal((await settings(page)).left.preset, "custom");
   });
 
@@ -154,7 +163,7 @@ describe("schooling lab", () => {
       window.shoal.set({ seed: 77, right: { cohesion: 55, sharks: 1 }, left: { vision_angle_deg: 270 } })
     );
     await clickWidget(page, "copy_link");
-    await page.waitForFunction(() => /copied/i.test(window.shoal.state().notice || ""), null, { timeout: 30_000 });
+    await page.waitForFunction(() => /copied/i.test(window.shoal.state().notice || ""), null, { timeout: 60_000 });
     const link = await page.evaluate(() => navigator.clipboard.readText());
     assert.equal(link, await page.evaluate(() => window.shoal.share_link()));
     assert.ok(link.includes("#v1."), link);
@@ -179,7 +188,7 @@ describe("schooling lab", () => {
 
   test("the CSV button downloads the metrics table", async () => {
     await page.evaluate(() => window.shoal.step(600));
-    const download = page.waitForEvent("download", { timeout: 30_000 });
+    const download = page.waitForEvent("download", { timeout: 60_000 });
     await clickWidget(page, "export_csv");
     const file = await download;
     assert.equal(file.suggestedFilename(), "shoal-metrics.csv");
@@ -217,7 +226,7 @@ describe("schooling lab", () => {
       timeout: 30_000,
     });
     await clickWidget(page, "restore_rocks");
-    await page.waitForFunction(() => window.shoal.settings().left.obstacles === null, null, { timeout: 30_000 });
+    await page.waitForFunction(() => window.shoal.settings().left.obstacles === null, null, { timeout: 60_000 });
     await clickWidget(page, "tool_look");
   });
 
@@ -227,7 +236,7 @@ describe("schooling lab", () => {
     await page.waitForTimeout(300);
     const plain = decode(await page.screenshot({ clip: view }));
     await clickWidget(page, "show_vision");
-    await page.waitForFunction(() => window.shoal.settings().show_vision, null, { timeout: 30_000 });
+    await page.waitForFunction(() => window.shoal.settings().show_vision, null, { timeout: 60_000 });
     await page.waitForTimeout(600);
     const shot = await page.screenshot({ clip: view });
     saveArtifact("show-vision-webgl2.png", shot);
