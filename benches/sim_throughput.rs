@@ -1,14 +1,16 @@
 //! Native benchmark: simulation throughput and the CPU side of a frame.
 //!
-//! Run with `./dev bench` (or `cargo bench --bench sim_throughput`). Prints figures;
-//! asserts nothing. The in-browser counterpart is the `?bench` page mode.
+//! Run with `./dev bench` (or `cargo bench --bench sim_throughput`; add
+//! `-- 20000` to time only the boid layer with that many fish, e.g. under
+//! `perf`). Prints figures; asserts nothing. The in-browser counterpart is the `?bench` page mode.
 
 use std::time::{Duration, Instant};
 
 use shoal::lab::Lab;
 use shoal::render::{FrameBuilder, OrbitCamera};
 use shoal::settings::Settings;
-use shoal::sim::school_metrics::SchoolMeter;
+use shoal::sim::school_metrics::{SchoolMeter, order_parameters};
+use shoal::sim::world::SPATIAL_METRICS_EVERY_STEPS;
 use shoal::sim::{BoidParams, World, WorldConfig};
 
 /// Runs `f` repeatedly for about `budget`, returning calls per second.
@@ -33,12 +35,14 @@ fn world(fish_count: usize) -> World {
 fn main() {
     println!("Shoal native benchmark (one thread)");
     println!();
+    println!("Boid layer, group preset (7 nearest seen neighbours, 5 m vision), metrics included:");
     println!(
-        "Boid layer, group preset (7 nearest seen neighbours, 5 m vision), metrics every step:"
+        "(metrics: polarization, milling and speed every step; NND and groups every {} steps)",
+        SPATIAL_METRICS_EVERY_STEPS
     );
     println!(
-        "{:>7} | {:>10} | {:>16} | {:>18}",
-        "fish", "steps/s", "boid-steps/s", "metrics (ms/step)"
+        "{:>7} | {:>10} | {:>14} | {:>15} | {:>16} | {:>16}",
+        "fish", "steps/s", "boid-steps/s", "full metrics ms", "every-step ms", "metrics ms/step"
     );
     let only: Option<usize> = std::env::args().skip(1).find_map(|a| a.parse().ok());
     for fish_count in [500, 5_000, 20_000] {
@@ -55,13 +59,18 @@ fn main() {
         let steps_per_sec = rate(Duration::from_secs(3), || w.step());
         let mut meter = SchoolMeter::default();
         let (lo, hi) = (w.tank().min_m, w.tank().max_m);
-        let measures_per_sec = rate(Duration::from_secs(1), || {
+        let full_per_sec = rate(Duration::from_secs(1), || {
             std::hint::black_box(meter.measure(w.fish(), lo, hi));
         });
+        let order_per_sec = rate(Duration::from_secs(1), || {
+            std::hint::black_box(order_parameters(w.fish()));
+        });
+        let (full_ms, order_ms) = (1000.0 / full_per_sec, 1000.0 / order_per_sec);
+        let every = SPATIAL_METRICS_EVERY_STEPS as f64;
         println!(
-            "{fish_count:>7} | {steps_per_sec:>10.1} | {:>16.0} | {:>18.3}",
+            "{fish_count:>7} | {steps_per_sec:>10.1} | {:>14.0} | {full_ms:>15.3} | {order_ms:>16.3} | {:>16.3}",
             steps_per_sec * fish_count as f64,
-            1000.0 / measures_per_sec
+            (full_ms + (every - 1.0) * order_ms) / every
         );
     }
     println!();

@@ -272,10 +272,29 @@ pub fn neighbour_forces(
     far_field: Option<&FarField>,
     perception: &Perception,
 ) -> NeighbourForces {
+    let nearest = heeded_neighbours(positions_m, velocities_m_per_s, i, grid, perception);
+    forces_from_neighbours(
+        positions_m,
+        velocities_m_per_s,
+        i,
+        &nearest,
+        far_field,
+        perception,
+    )
+}
+
+/// [`neighbour_forces`] from the heeded neighbours already found.
+pub fn forces_from_neighbours(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    i: usize,
+    nearest: &Nearest,
+    far_field: Option<&FarField>,
+    perception: &Perception,
+) -> NeighbourForces {
     let position_m = positions_m[i];
     let velocity_m_per_s = velocities_m_per_s[i];
     let heading = heading_of(velocity_m_per_s);
-    let nearest = heeded_neighbours(positions_m, velocities_m_per_s, i, grid, perception);
     let far_centre_m = far_field.and_then(|f| f.seen_centre_m(position_m, heading, perception));
     if nearest.is_empty() && far_centre_m.is_none() {
         return NeighbourForces::default();

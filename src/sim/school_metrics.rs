@@ -112,35 +112,15 @@ impl SchoolMeter {
             return SchoolMetrics::default();
         }
         let count = n as f32;
-        let mut heading_sum = Vec3::ZERO;
-        let mut center = Vec3::ZERO;
-        let mut speed_sum = 0.0_f32;
+        let order = order_parameters(fish);
         let mut min_length = f32::INFINITY;
         let mut max_length = 0.0_f32;
         self.positions_m.clear();
         for f in fish {
-            heading_sum += f.velocity_m_per_s.normalize_or_zero();
-            center += f.position_m;
-            speed_sum += f.speed_m_per_s();
             min_length = min_length.min(f.body_length_m);
             max_length = max_length.max(f.body_length_m);
             self.positions_m.push(f.position_m);
         }
-        center /= count;
-        let polarization = (heading_sum.length() / count).min(1.0);
-        let milling = (fish
-            .iter()
-            .map(|f| {
-                (f.position_m - center)
-                    .normalize_or_zero()
-                    .cross(f.velocity_m_per_s.normalize_or_zero())
-            })
-            .sum::<Vec3>()
-            .length()
-            / count)
-            .min(1.0);
-        let mean_speed_m_per_s = speed_sum / count;
-
         let groups = self.count_groups(fish, min_length, max_length, tank_min_m, tank_max_m);
         let nnd_body_lengths = if n > 1 {
             self.nearest_distance_sum_body_lengths(fish, tank_min_m, tank_max_m) / count
@@ -149,11 +129,9 @@ impl SchoolMeter {
         };
 
         SchoolMetrics {
-            polarization,
-            milling,
             nnd_body_lengths,
             groups,
-            mean_speed_m_per_s,
+            ..order
         }
     }
 
@@ -472,6 +450,43 @@ impl SchoolMeter {
                 }
             }
         }
+    }
+}
+
+/// Polarization, milling and mean speed of `fish` (one pass, O(N)); the
+/// nearest-neighbour distance and groups are left at zero.
+pub fn order_parameters(fish: &[Fish]) -> SchoolMetrics {
+    if fish.is_empty() {
+        return SchoolMetrics::default();
+    }
+    let count = fish.len() as f32;
+    let mut heading_sum = Vec3::ZERO;
+    let mut center = Vec3::ZERO;
+    let mut speed_sum = 0.0_f32;
+    for f in fish {
+        heading_sum += f.velocity_m_per_s.normalize_or_zero();
+        center += f.position_m;
+        speed_sum += f.speed_m_per_s();
+    }
+    center /= count;
+    let polarization = (heading_sum.length() / count).min(1.0);
+    let milling = (fish
+        .iter()
+        .map(|f| {
+            (f.position_m - center)
+                .normalize_or_zero()
+                .cross(f.velocity_m_per_s.normalize_or_zero())
+        })
+        .sum::<Vec3>()
+        .length()
+        / count)
+        .min(1.0);
+    SchoolMetrics {
+        polarization,
+        milling,
+        nnd_body_lengths: 0.0,
+        groups: 0,
+        mean_speed_m_per_s: speed_sum / count,
     }
 }
 

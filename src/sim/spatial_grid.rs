@@ -172,6 +172,12 @@ impl SpatialGrid {
     }
 }
 
+/// What visiting one row of cells costs, in points scanned. Default 8
+/// (measured roughly: a row's bookkeeping takes as long as checking eight
+/// points four at a time). Decides when [`SpatialGrid::k_nearest`] scans all
+/// points instead of another shell of cells.
+const ROW_COST_IN_POINTS: usize = 8;
+
 /// Most neighbours a [`Nearest`] list can hold. Default 16: twice the 6–7
 /// neighbours starlings interact with (Ballerini et al. 2008), room for tuning.
 pub const MAX_NEAREST: usize = 16;
@@ -257,7 +263,10 @@ impl SpatialGrid {
     /// stopping as soon as no unvisited cell can hold a nearer point. Costs
     /// about the cells and points within the k-th distance, not within
     /// `max_radius_m`: the search for 7 neighbours in a dense school stays
-    /// local however far the fish can see.
+    /// local however far the fish can see. Where the next shell of cells would
+    /// cost more than scanning every point, it scans every point instead (so
+    /// `accept` may be asked about a point twice; it must not have side
+    /// effects).
     pub fn k_nearest(
         &self,
         p: Vec3,
@@ -346,6 +355,21 @@ impl SpatialGrid {
             return;
         }
         for ring in first_ring + 1..=max_ring {
+            // A sparse neighbourhood (a straggler far from its school): when
+            // a shell has more rows than there are points, scanning every
+            // point once is cheaper than visiting the shells. Start afresh.
+            let shell_rows = (2 * ring + 1) * (2 * ring + 1);
+            if (shell_rows as usize) * ROW_COST_IN_POINTS > self.sorted.len() {
+                *nearest = Nearest::new(nearest.k);
+                self.scan(
+                    0..self.sorted.len(),
+                    p,
+                    max_radius_sq_m2,
+                    nearest,
+                    &mut accept,
+                );
+                return;
+            }
             let lo = center - IVec3::splat(ring);
             let hi = center + IVec3::splat(ring);
             for z in lo.z.max(0)..=hi.z.min(self.dims.z - 1) {
