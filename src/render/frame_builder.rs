@@ -99,13 +99,7 @@ impl FrameBuilder {
         let (mut near, mut far) = (0, count);
         for (i, f) in world.fish().iter().enumerate() {
             let position = run.drawn_position_m(i, alpha);
-            let instance = FishInstance {
-                position_m: position.to_array(),
-                body_length_m: f.body_length_m,
-                forward: f.heading().to_array(),
-                tail_phase_rad: f.tail_phase_rad,
-                color: livery(f.hue).rgba(),
-            };
+            let instance = instance(f, position, livery(f.hue).rgba());
             // Drawn length ≈ focal × length / distance, compared without a root.
             let length = f.body_length_m;
             if length * length >= lod_below * lod_below * position.distance_squared(eye) {
@@ -129,25 +123,13 @@ impl FrameBuilder {
         sharks.clear();
         sharks.extend(world.sharks().iter().enumerate().map(|(i, shark)| {
             let f = &shark.body;
-            FishInstance {
-                position_m: run.drawn_shark_m(i, alpha).to_array(),
-                body_length_m: f.body_length_m,
-                forward: f.heading().to_array(),
-                tail_phase_rad: f.tail_phase_rad,
-                color: shark_livery(f.hue).rgba(),
-            }
+            instance(f, run.drawn_shark_m(i, alpha), shark_livery(f.hue).rgba())
         }));
         let rays = Arc::make_mut(&mut view.rays);
         rays.clear();
         rays.extend(world.stingrays().iter().enumerate().map(|(i, ray)| {
             let f = &ray.body;
-            FishInstance {
-                position_m: run.drawn_stingray_m(i, alpha).to_array(),
-                body_length_m: f.body_length_m,
-                forward: f.heading().to_array(),
-                tail_phase_rad: f.tail_phase_rad,
-                color: ray_livery(f.hue).rgba(),
-            }
+            instance(f, run.drawn_stingray_m(i, alpha), ray_livery(f.hue).rgba())
         }));
 
         let aspect = size_px[0] as f32 / size_px[1].max(1) as f32;
@@ -167,6 +149,17 @@ impl FrameBuilder {
             statics,
             size_px,
         }
+    }
+}
+
+/// The instance of an animal drawn at `position_m` with colour `rgba`.
+fn instance(animal: &crate::sim::Fish, position_m: Vec3, rgba: [f32; 4]) -> FishInstance {
+    FishInstance {
+        position_m: position_m.to_array(),
+        body_length_m: animal.body_length_m,
+        forward: animal.heading().to_array(),
+        tail_phase_rad: animal.tail_phase_rad,
+        color: rgba,
     }
 }
 

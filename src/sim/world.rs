@@ -839,14 +839,7 @@ impl World {
                 shark.body.velocity_m_per_s = before.heading() * params.min_speed_m_per_s;
                 self.non_finite_repairs += 1;
             }
-            push_clear(
-                &mut shark.body,
-                &self.tank,
-                &self.fixed_solids,
-                &ObstacleSet::EMPTY,
-                SHARK_MARGIN_M,
-                SHARK_MARGIN_M,
-            );
+            push_shark_clear(&mut shark.body, &self.tank, &self.fixed_solids);
             shark.body.advance_tail_phase(DT_SECS);
             // The bite.
             if let Some(t) = shark.target
@@ -1032,14 +1025,7 @@ impl World {
             enforce_hard_constraints(fish, &self.tank, &self.fixed_solids, &self.stingray_solids);
         }
         for shark in &mut self.sharks {
-            push_clear(
-                &mut shark.body,
-                &self.tank,
-                &self.fixed_solids,
-                &ObstacleSet::EMPTY,
-                SHARK_MARGIN_M,
-                SHARK_MARGIN_M,
-            );
+            push_shark_clear(&mut shark.body, &self.tank, &self.fixed_solids);
         }
     }
 
@@ -1262,6 +1248,19 @@ fn enforce_hard_constraints(
         stingrays,
         TANK_MARGIN_M,
         OBSTACLE_MARGIN_M,
+    );
+}
+
+/// [`push_clear`] for a shark: out of the glass and the rocks by
+/// [`SHARK_MARGIN_M`]; stingrays are not in a shark's way.
+fn push_shark_clear(body: &mut Fish, tank: &Tank, obstacles: &ObstacleSet) {
+    push_clear(
+        body,
+        tank,
+        obstacles,
+        &ObstacleSet::EMPTY,
+        SHARK_MARGIN_M,
+        SHARK_MARGIN_M,
     );
 }
 
