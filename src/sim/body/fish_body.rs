@@ -239,6 +239,13 @@ impl FishBody {
         &self.velocities_m_per_s
     }
 
+    /// Node positions and velocities for hard constraints applied between steps
+    /// (the world keeps every node in the tank and out of rocks). Positions in
+    /// metres, velocities in m/s.
+    pub fn nodes_mut(&mut self) -> (&mut [Vec3; NODE_COUNT], &mut [Vec3; NODE_COUNT]) {
+        (&mut self.positions_m, &mut self.velocities_m_per_s)
+    }
+
     /// Gives every node the same velocity (a rigid launch), m/s; non-finite is ignored.
     pub fn set_uniform_velocity_m_per_s(&mut self, velocity: Vec3) {
         if velocity.is_finite() {

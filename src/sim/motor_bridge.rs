@@ -1,0 +1,215 @@
+//! The bridge from the steering layer to the muscles: a *desired velocity* (what the
+//! boid forces of `boid_forces.rs` and `steering.rs` ask of a point-mass fish, or
+//! later what the fish's mind asks) becomes the three motor commands of Tu &
+//! Terzopoulos 1994 §3.3–3.4: a swim-MC speed, a turn-MC angle and pectoral fin
+//! angles.
+//!
+//! | desired velocity d, fish heading f           | command |
+//! |----------------------------------------------|---------|
+//! | ‖d‖                                          | swim-MC speed fraction ‖d‖ / top speed |
+//! | horizontal angle Δ from f to d, \|Δ\| > 10°   | turn-MC(Δ), left if Δ > 0; not re-planned while a turn runs unless the goal moves by more than 40° |
+//! | elevation of d minus the fish's pitch        | both fins pitched by 2 × the difference, at most ±0.5 rad (ascend, descend) |
+//! | ‖d‖ below half the current speed            | both fins across the flow (brake), no swimming |
+//!
+//! Why turns and not a continuous yaw: the body turns only through its muscles
+//! (a 90° turn takes about 7 s, see `body/turn_mc.rs`), and a turn-MC that is
+//! restarted every step never finishes its quick stroke. So a turn is planned
+//! towards the desired heading and left to run; only a big change of mind
+//! re-plans it. Headings within the dead band are corrected by the next turn.
+//!
+//! Frames: the steering layer lives in the tank frame (y up); the body in its own
+//! frame (z up, `body/fish_body.rs`). [`to_body_frame`] and [`to_tank_frame`]
+//! convert between them (a rotation of 90° about x).
+
+use std::f32::consts::PI;
+
+use glam::Vec3;
+use serde::{Deserialize, Serialize};
+
+use super::body::PectoralFins;
+
+/// Swimming speed of the default body at the swim-MC's top setting, body lengths
+/// per second. 0.6, measured (`body::tests::speed_table`, 3 Hz at full amplitude;
+/// checked by `top_speed_matches_the_body` below).
+pub const TOP_SPEED_BODY_LENGTHS_PER_SEC: f32 = 0.6;
+
+/// Smallest heading error that starts a turn, degrees. 10, chosen: the smallest
+/// turn the steering map makes accurately (10° requested → 10.9° measured).
+pub const TURN_DEAD_BAND_DEG: f32 = 10.0;
+
+/// A running turn is re-planned when the desired heading moves this far from its
+/// goal, degrees. 40, chosen: a wandering fish's goal drifts by less, a fleeing
+/// fish's jumps by more.
+pub const REPLAN_TURN_DEG: f32 = 40.0;
+
+/// Fin pitch per radian of elevation error (2, chosen: a 15° climb request tilts
+/// the fins by the full 0.5 rad).
+const PITCH_GAIN: f32 = 2.0;
+/// Largest fin pitch, radians (0.5, as in the fin tests of `body/tests.rs`).
+const MAX_FIN_PITCH_RAD: f32 = 0.5;
+/// Smallest swim-MC speed while a turn runs: the turn comes from the tail's thrust
+/// on the bent body (`body/turn_mc.rs`), so a turn without swimming barely turns.
+pub const MIN_TURN_SPEED_FRACTION: f32 = 0.5;
+
+/// Tank frame (y up) → body frame (z up).
+pub fn to_body_frame(v: Vec3) -> Vec3 {
+    Vec3::new(v.x, -v.z, v.y)
+}
+
+/// Body frame (z up) → tank frame (y up).
+pub fn to_tank_frame(v: Vec3) -> Vec3 {
+    Vec3::new(v.x, v.z, -v.y)
+}
+
+/// What the bridge asks of the motor controllers this step.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct MotorIntent {
+    /// swim-MC speed, fraction of the top speed in [0, 1].
+    pub speed_fraction: f32,
+    /// A new turn to start, degrees (+ = left); `None` keeps the current one.
+    pub start_turn_deg: Option<f32>,
+    /// Pectoral fin angles.
+    pub fins: PectoralFins,
+}
+
+/// The bridge's memory: the heading the running turn aims for.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct MotorBridge {
+    goal_heading_rad: Option<f32>,
+}
+
+/// Angle wrapped to (−π, π].
+fn wrap(a: f32) -> f32 {
+    let w = (a + PI).rem_euclid(2.0 * PI) - PI;
+    if w <= -PI { w + 2.0 * PI } else { w }
+}
+
+impl MotorBridge {
+    /// Plans this step's motor commands for a fish with unit `forward` (tank
+    /// frame), moving at `speed_m_per_s`, whose top swimming speed is
+    /// `top_speed_m_per_s`, that wants `desired_m_per_s` (tank frame). `turning`
+    /// says whether its turn-MC is still busy. Non-finite input asks for nothing.
+    pub fn plan(
+        &mut self,
+        desired_m_per_s: Vec3,
+        forward: Vec3,
+        speed_m_per_s: f32,
+        top_speed_m_per_s: f32,
+        turning: bool,
+    ) -> MotorIntent {
+        let idle = MotorIntent {
+            speed_fraction: 0.0,
+            start_turn_deg: None,
+            fins: PectoralFins::NEUTRAL,
+        };
+        if !(desired_m_per_s.is_finite() && forward.is_finite() && top_speed_m_per_s > 0.0) {
+            return idle;
+        }
+        if !turning {
+            self.goal_heading_rad = None;
+        }
+        let d = to_body_frame(desired_m_per_s);
+        let f = to_body_frame(forward);
+        let desired_speed = d.length();
+        let speed = if speed_m_per_s.is_finite() {
+            speed_m_per_s.max(0.0)
+        } else {
+            0.0
+        };
+        if desired_speed < 0.5 * speed && speed > 0.3 * top_speed_m_per_s {
+            return MotorIntent {
+                fins: PectoralFins::BRAKE,
+                ..idle
+            };
+        }
+        let mut speed_fraction = (desired_speed / top_speed_m_per_s).clamp(0.0, 1.0);
+
+        // Yaw: a turn towards the desired horizontal heading.
+        let horizontal = d.truncate();
+        let mut start_turn_deg = None;
+        if horizontal.length() > 1e-3 * top_speed_m_per_s && f.truncate().length() > 1e-3 {
+            let goal = horizontal.y.atan2(horizontal.x);
+            let heading = f.y.atan2(f.x);
+            let error_deg = wrap(goal - heading).to_degrees();
+            let replan = match self.goal_heading_rad {
+                None => error_deg.abs() > TURN_DEAD_BAND_DEG,
+                Some(planned) => wrap(goal - planned).to_degrees().abs() > REPLAN_TURN_DEG,
+            };
+            if replan {
+                start_turn_deg = Some(error_deg);
+                self.goal_heading_rad = Some(goal);
+            }
+        }
+        if turning || start_turn_deg.is_some() {
+            speed_fraction = speed_fraction.max(MIN_TURN_SPEED_FRACTION);
+        }
+
+        // Pitch: climb or dive with the fins.
+        let elevation = d.z.atan2(horizontal.length());
+        let pitch = f.z.clamp(-1.0, 1.0).asin();
+        let fin_pitch =
+            (PITCH_GAIN * (elevation - pitch)).clamp(-MAX_FIN_PITCH_RAD, MAX_FIN_PITCH_RAD);
+        MotorIntent {
+            speed_fraction,
+            start_turn_deg,
+            fins: if desired_speed > 0.0 {
+                PectoralFins::pitch(fin_pitch)
+            } else {
+                PectoralFins::NEUTRAL
+            },
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frames_convert_back_and_forth_and_up_is_up() {
+        let v = Vec3::new(1.0, 2.0, 3.0);
+        assert_eq!(to_tank_frame(to_body_frame(v)), v);
+        assert_eq!(to_body_frame(Vec3::Y), Vec3::Z);
+        // A right-handed rotation: x × y = z in both frames.
+        assert_eq!(
+            to_body_frame(Vec3::X).cross(to_body_frame(Vec3::Y)),
+            to_body_frame(Vec3::Z)
+        );
+    }
+
+    #[test]
+    fn desired_velocity_maps_to_speed_turn_and_fins() {
+        let mut bridge = MotorBridge::default();
+        // Straight ahead at half the top speed: no turn, level fins.
+        let ahead = bridge.plan(Vec3::X * 0.1, Vec3::X, 0.1, 0.2, false);
+        assert!((ahead.speed_fraction - 0.5).abs() < 1e-5);
+        assert_eq!(ahead.start_turn_deg, None);
+        assert!((ahead.fins.left_angle_rad - std::f32::consts::FRAC_PI_2).abs() < 1e-5);
+        // 60° to the left in the tank frame (y up, so left of +x is −z).
+        let left = Vec3::new(0.5, 0.0, -(3f32.sqrt()) / 2.0) * 0.2;
+        let turn = bridge.plan(left, Vec3::X, 0.1, 0.2, false);
+        let angle = turn.start_turn_deg.unwrap();
+        assert!((angle - 60.0).abs() < 0.1, "{angle}");
+        // While that turn runs, a goal that moves a little is not re-planned ...
+        let nearly = Vec3::new(0.6, 0.0, -0.8) * 0.2;
+        assert_eq!(
+            bridge.plan(nearly, Vec3::X, 0.1, 0.2, true).start_turn_deg,
+            None
+        );
+        // ... a reversal is, to the right.
+        let right = bridge.plan(Vec3::Z * 0.2, Vec3::X, 0.1, 0.2, true);
+        assert!(right.start_turn_deg.unwrap() < -80.0);
+        // Up: fins pitched up; down: pitched down.
+        let up = bridge.plan(Vec3::new(1.0, 0.5, 0.0), Vec3::X, 0.1, 0.2, false);
+        assert!(up.fins.left_angle_rad > std::f32::consts::FRAC_PI_2);
+        let down = bridge.plan(Vec3::new(1.0, -0.5, 0.0), Vec3::X, 0.1, 0.2, false);
+        assert!(down.fins.left_angle_rad < std::f32::consts::FRAC_PI_2);
+        // Stop while fast: brake.
+        let stop = bridge.plan(Vec3::ZERO, Vec3::X, 0.2, 0.2, false);
+        assert_eq!(stop.fins, PectoralFins::BRAKE);
+        assert_eq!(stop.speed_fraction, 0.0);
+        // Garbage in, nothing out.
+        let nan = bridge.plan(Vec3::NAN, Vec3::X, 0.1, 0.2, false);
+        assert_eq!(nan.speed_fraction, 0.0);
+    }
+}

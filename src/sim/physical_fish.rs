@@ -1,0 +1,265 @@
+//! A muscle-driven fish in the tank: the spring–mass body of `body/` with its swim
+//! and turn motor controllers, the bridge from the steering layer
+//! (`motor_bridge.rs`) and a point-mass summary (centre of mass and velocity) that
+//! the steering layer and the school metrics read like any boid.
+//!
+//! Species differ by size, mass and colour only (Tu & Terzopoulos: "species differ
+//! by scale and mass"): the body scales its masses with the square of its length
+//! (see `body/fish_body.rs`), so a shark twice as long is four times heavier
+//! and swims twice as fast in metres per second.
+
+use glam::Vec3;
+use serde::{Deserialize, Serialize};
+
+use super::body::{BodyCommand, FishBody, MUSCLE_COUNT, NODE_COUNT, PectoralFins, SwimMc, TurnMc};
+use super::fish::Fish;
+use super::motor_bridge::{
+    MotorBridge, MotorIntent, TOP_SPEED_BODY_LENGTHS_PER_SEC, to_body_frame, to_tank_frame,
+};
+
+/// Time constant of the heading average, seconds. 0.5, chosen: one and a half
+/// tail beats at 3 Hz. The fore body yaws ±20° with every beat (measured), and a
+/// bridge reading the raw direction started turns the wrong way.
+pub const HEADING_SMOOTHING_SECS: f32 = 0.5;
+
+/// What kind of animal a physical fish is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BodySpecies {
+    /// A reef fish about half a metre long.
+    Fish,
+    /// A shark: the same body, twice as long.
+    Shark,
+}
+
+impl BodySpecies {
+    /// Typical body length, metres (fish 0.5 m, chosen so a fish at top speed,
+    /// 0.3 m/s, crosses the 12 m tank in 40 s; shark 1.0 m, a small reef shark:
+    /// larger ones turn in circles wider than the 8 m tank is deep).
+    pub fn body_length_m(self) -> f32 {
+        match self {
+            Self::Fish => 0.5,
+            Self::Shark => 1.0,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Fish => "fish",
+            Self::Shark => "shark",
+        }
+    }
+}
+
+/// The motor command in use, for the inspector and the plots.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct MotorState {
+    /// swim-MC speed fraction in [0, 1].
+    pub speed_fraction: f32,
+    /// Pectoral fins.
+    pub fins: PectoralFins,
+    /// Is a turn running?
+    pub turning: bool,
+    /// The 12 muscle contractions sent to the body (order of `body_layout::MUSCLES`).
+    pub muscles: [f32; MUSCLE_COUNT],
+}
+
+/// One physical fish.
+#[derive(Clone, Debug)]
+pub struct PhysicalFish {
+    pub species: BodySpecies,
+    /// Colour around the colour wheel, 0..1.
+    pub hue: f32,
+    body: FishBody,
+    swim: SwimMc,
+    turn: TurnMc,
+    bridge: MotorBridge,
+    motor: MotorState,
+    /// Where the fish is heading: the fore body's direction averaged over
+    /// [`HEADING_SMOOTHING_SECS`] (tank frame, unit).
+    heading: Vec3,
+    /// The fish as the steering layer sees it: centre of mass, velocity, wander
+    /// state (tank frame).
+    pub point: Fish,
+}
+
+impl PhysicalFish {
+    /// A fish at rest with its centre of mass at `position_m` heading along
+    /// `heading` (tank frame, y up).
+    pub fn new(
+        species: BodySpecies,
+        body_length_m: f32,
+        position_m: Vec3,
+        heading: Vec3,
+        hue: f32,
+    ) -> Self {
+        let body = FishBody::new(
+            body_length_m,
+            to_body_frame(position_m),
+            to_body_frame(heading),
+        );
+        let mut fish = Self {
+            species,
+            hue,
+            body,
+            swim: SwimMc::default(),
+            turn: TurnMc::default(),
+            bridge: MotorBridge::default(),
+            motor: MotorState::default(),
+            heading: heading.normalize_or(Vec3::X),
+            point: Fish::new(position_m, Vec3::ZERO, body_length_m, hue),
+        };
+        fish.sync_point();
+        fish
+    }
+
+    pub fn body(&self) -> &FishBody {
+        &self.body
+    }
+
+    pub fn motor(&self) -> &MotorState {
+        &self.motor
+    }
+
+    pub fn body_length_m(&self) -> f32 {
+        self.body.rest_body_length_m()
+    }
+
+    /// Top swimming speed, m/s.
+    pub fn top_speed_m_per_s(&self) -> f32 {
+        TOP_SPEED_BODY_LENGTHS_PER_SEC * self.body_length_m()
+    }
+
+    /// Node positions in the tank frame, metres.
+    pub fn nodes_m(&self) -> [Vec3; NODE_COUNT] {
+        self.body.positions_m().map(to_tank_frame)
+    }
+
+    /// Unit forward direction of the fore body now (tank frame); it swings with
+    /// the tail beat.
+    pub fn forward(&self) -> Vec3 {
+        to_tank_frame(self.body.forward())
+    }
+
+    /// Where the fish is heading: [`Self::forward`] averaged over about a tail
+    /// beat (tank frame, unit).
+    pub fn heading(&self) -> Vec3 {
+        self.heading
+    }
+
+    /// Unit dorsal direction (tank frame).
+    pub fn up(&self) -> Vec3 {
+        to_tank_frame(self.body.up())
+    }
+
+    /// Starts a turn of `angle_deg` (+ = left), as a hand command would.
+    pub fn turn(&mut self, angle_deg: f32) {
+        self.turn.start_turn(angle_deg);
+    }
+
+    /// Is a turn running?
+    pub fn is_turning(&self) -> bool {
+        self.turn.is_turning()
+    }
+
+    /// What the bridge makes of `desired_m_per_s` (tank frame) now.
+    pub fn plan(&mut self, desired_m_per_s: Vec3) -> MotorIntent {
+        let top = self.top_speed_m_per_s();
+        self.bridge.plan(
+            desired_m_per_s,
+            self.heading,
+            self.point.velocity_m_per_s.length(),
+            top,
+            self.turn.is_turning(),
+        )
+    }
+
+    /// Advances one body step under `intent` in water moving at
+    /// `water_m_per_s` (tank frame).
+    pub fn step(&mut self, intent: &MotorIntent, water_m_per_s: Vec3) {
+        if let Some(angle) = intent.start_turn_deg {
+            self.turn.start_turn(angle);
+        }
+        let dt = self.body.dt_secs();
+        let params = self.swim.params_for_speed(intent.speed_fraction);
+        let swim = self.swim.step(&params, dt);
+        let turning = self.turn.is_turning();
+        let turn = self.turn.step(dt);
+        let muscles = super::body::turn_mc::combine_swim_and_turn(&swim, &turn);
+        let command = BodyCommand {
+            muscle_contractions: muscles,
+            fins: intent.fins,
+        };
+        self.body.step(&command, to_body_frame(water_m_per_s));
+        let forward = self.forward();
+        if forward != Vec3::ZERO {
+            let k = (dt / HEADING_SMOOTHING_SECS).clamp(0.0, 1.0);
+            self.heading = self.heading.lerp(forward, k).normalize_or(forward);
+        }
+        self.motor = MotorState {
+            speed_fraction: intent.speed_fraction.clamp(0.0, 1.0),
+            fins: intent.fins,
+            turning,
+            muscles: *self.body.muscle_contractions(),
+        };
+        self.sync_point();
+    }
+
+    /// Keeps every node inside the box `[min_m, max_m]` (tank frame) and outside
+    /// the solids (`push_out` moves a point inside a solid to its surface). The
+    /// body is moved as a whole: it is translated by the deepest node's push, up
+    /// to four times (a corner, a wall and a rock), and loses the velocity that
+    /// carried it in. Moving nodes one by one flattened bodies against rocks
+    /// (measured: 0.78 of their length). Returns how many pushes were needed and,
+    /// if the head or the fore body touched something, the direction it was
+    /// pushed (tank frame, unit).
+    pub fn constrain(
+        &mut self,
+        min_m: Vec3,
+        max_m: Vec3,
+        push_out: impl Fn(Vec3) -> Option<Vec3>,
+    ) -> (usize, Option<Vec3>) {
+        /// The head tip and rings 1–2.
+        const FORE_NODES: usize = 9;
+        const MAX_PUSHES: usize = 4;
+        let (positions, velocities) = self.body.nodes_mut();
+        let mut pushes = 0;
+        let mut touch = None;
+        for _ in 0..MAX_PUSHES {
+            let mut deepest: Option<(usize, Vec3)> = None;
+            for (node, p) in positions.iter().enumerate() {
+                let tank_p = to_tank_frame(*p);
+                let mut q = tank_p.clamp(min_m, max_m);
+                if let Some(out) = push_out(q) {
+                    q = out;
+                }
+                let push = q - tank_p;
+                if push != Vec3::ZERO
+                    && deepest.is_none_or(|(_, d)| push.length_squared() > d.length_squared())
+                {
+                    deepest = Some((node, push));
+                }
+            }
+            let Some((node, push)) = deepest else { break };
+            pushes += 1;
+            let normal = push.normalize_or_zero();
+            if node < FORE_NODES && touch.is_none() {
+                touch = Some(normal);
+            }
+            let (push_b, normal_b) = (to_body_frame(push), to_body_frame(normal));
+            for (p, v) in positions.iter_mut().zip(velocities.iter_mut()) {
+                *p += push_b;
+                *v -= v.dot(normal_b).min(0.0) * normal_b;
+            }
+        }
+        if pushes > 0 {
+            self.sync_point();
+        }
+        (pushes, touch)
+    }
+
+    fn sync_point(&mut self) {
+        self.point.position_m = to_tank_frame(self.body.centre_of_mass_m());
+        self.point.velocity_m_per_s = to_tank_frame(self.body.velocity_m_per_s());
+    }
+}
