@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 
 use shoal::lab::Lab;
 use shoal::render::{FrameBuilder, OrbitCamera};
-use shoal::settings::Settings;
+use shoal::settings::{Scene, Settings};
 use shoal::sim::school_metrics::{SchoolMeter, order_parameters};
 use shoal::sim::world::SPATIAL_METRICS_EVERY_STEPS;
 use shoal::sim::{BoidParams, World, WorldConfig};
@@ -101,6 +101,39 @@ fn main() {
         println!(
             "{fish_count:>7} | {steps_per_sec:>12.0} | {:>16.0} | {:>17.3}",
             steps_per_sec * fish_count as f64,
+            1000.0 / frames_per_sec
+        );
+    }
+
+    println!();
+    println!("Muscle-driven fish (Tu & Terzopoulos body, schooling, Δt = 0.055 s, 8 substeps):");
+    println!(
+        "{:>7} | {:>10} | {:>14} | {:>19} | {:>17}",
+        "fish", "steps/s", "fish-steps/s", "× real time (1/Δt)", "frame build (ms)"
+    );
+    for fish_count in [10u32, 50, 200] {
+        if only.is_some() {
+            break;
+        }
+        let mut settings = Settings {
+            scene: Scene::Physics,
+            ..Settings::default()
+        };
+        settings.physics.fish_count = fish_count;
+        settings.physics.sharks = 0;
+        let mut lab = Lab::new(settings);
+        lab.step(40);
+        let steps_per_sec = rate(Duration::from_secs(3), || lab.step(1));
+        let tank = lab.world().tank();
+        let camera = OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0);
+        let mut builder = FrameBuilder::default();
+        let frames_per_sec = rate(Duration::from_secs(1), || {
+            std::hint::black_box(builder.build(&lab.runs()[0], 0.5, &camera, [1920, 1080], 0.0, 0));
+        });
+        println!(
+            "{fish_count:>7} | {steps_per_sec:>10.1} | {:>14.0} | {:>19.2} | {:>17.3}",
+            steps_per_sec * f64::from(fish_count),
+            steps_per_sec * lab.step_secs(),
             1000.0 / frames_per_sec
         );
     }

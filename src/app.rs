@@ -16,9 +16,13 @@ use crate::render::{FrameBuilder, OrbitCamera, RenderCaps, SceneRenderer};
 use crate::settings::{Scene, Settings, Side};
 use crate::sim::Obstacle;
 use crate::ui::{
-    EditTool, PanelAction, PanelState, WidgetRects, control_panel_ui, metrics_panel_ui, mode_label,
-    side_color, status_line_ui,
+    EditTool, PanelAction, PanelState, WidgetRects, body_overlay, body_plots_ui, control_panel_ui,
+    metrics_panel_ui, mode_label, side_color, status_line_ui,
 };
+
+/// Share of the way the follow camera moves towards the selected fish each frame
+/// (0.12, chosen: smooth at 30–60 frames/s, and the fish never leaves the view).
+const FOLLOW_SMOOTHING: f32 = 0.12;
 
 /// Radius of a rock a teacher adds by clicking, metres. Default 0.6 m: clearly
 /// visible, two fish lengths across, small enough to place between others.
@@ -271,6 +275,7 @@ impl ShoalApp {
     fn views_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings) {
         let full = ui.available_rect_before_wrap();
         self.widget_rects.insert("aquarium", full);
+        self.follow_selected(settings);
         let count = self.lab.runs().len();
         let gap = if count > 1 { 4.0 } else { 0.0 };
         let width = (full.width() - gap * (count as f32 - 1.0)) / count as f32;
@@ -285,6 +290,56 @@ impl ShoalApp {
                 egui::vec2(width, full.height()),
             );
             self.view_ui(ui, rect, index, settings);
+        }
+    }
+
+    /// Physics scene: glides the camera's target towards the selected fish.
+    fn follow_selected(&mut self, settings: &Settings) {
+        let physics = &settings.physics;
+        if settings.scene != Scene::Physics || !physics.follow {
+            return;
+        }
+        let Some(selected) = physics.selected else {
+            return;
+        };
+        let run = &self.lab.runs()[0];
+        if run
+            .physics()
+            .is_none_or(|p| selected as usize >= p.animals().len())
+        {
+            return;
+        }
+        let nodes = run.drawn_nodes_m(selected as usize, self.lab.draw_alpha());
+        let centre = nodes.iter().sum::<Vec3>() / nodes.len() as f32;
+        self.camera.target_m = self.camera.target_m.lerp(centre, FOLLOW_SMOOTHING);
+        // Close enough to see the body bend (about 4 m), unless the teacher zooms.
+        if self.camera_is_default {
+            self.camera.distance_m = 4.0;
+        }
+        self.camera_is_default = false;
+        self.ctx.request_repaint();
+    }
+
+    /// Physics scene: a click on a fish selects it, a click on open water lets go.
+    fn pick_input(&mut self, response: &egui::Response, rect: egui::Rect, settings: &mut Settings) {
+        if !response.clicked() {
+            return;
+        }
+        let Some(pointer) = response.interact_pointer_pos() else {
+            return;
+        };
+        let picked = body_overlay::pick_animal(
+            pointer,
+            rect,
+            &self.camera,
+            &self.lab.runs()[0],
+            self.lab.draw_alpha(),
+        );
+        let physics = &mut settings.physics;
+        physics.selected = picked;
+        if picked.is_none() {
+            physics.hand_control = false;
+            physics.follow = false;
         }
     }
 
@@ -307,6 +362,9 @@ impl ShoalApp {
         if settings.scene == Scene::Boids {
             self.rock_tool_input(&response, rect, aspect, side, settings);
         }
+        if settings.scene == Scene::Physics {
+            self.pick_input(&response, rect, settings);
+        }
         self.camera_input(ui, &response, rect);
 
         let pixels_per_point = ui.ctx().pixels_per_point();
@@ -316,7 +374,7 @@ impl ShoalApp {
         ];
         let run = &self.lab.runs()[index];
         // The water animates with simulated time: pausing freezes the whole picture.
-        let time_secs = run.world().time_secs() as f32;
+        let time_secs = run.time_secs() as f32;
         let frame = self.frame_builders[index].build(
             run,
             self.lab.draw_alpha(),
@@ -331,6 +389,32 @@ impl ShoalApp {
         let painter = ui.painter_at(rect);
         if settings.show_vision && settings.scene == Scene::Boids {
             draw_vision(&painter, rect, &self.camera, run, self.lab.draw_alpha());
+        }
+        if settings.scene == Scene::Physics {
+            let (alpha, physics) = (self.lab.draw_alpha(), &settings.physics);
+            if physics.show_body {
+                body_overlay::draw_skeletons(
+                    &painter,
+                    rect,
+                    &self.camera,
+                    run,
+                    alpha,
+                    physics.selected,
+                );
+            }
+            if physics.show_forces {
+                body_overlay::draw_forces(
+                    &painter,
+                    rect,
+                    &self.camera,
+                    run,
+                    alpha,
+                    physics.selected,
+                );
+            }
+            if let Some(selected) = physics.selected {
+                body_overlay::draw_selection(&painter, rect, &self.camera, run, alpha, selected);
+            }
         }
         if self.lab.comparing() {
             let tank = settings.tank(side);
@@ -479,6 +563,14 @@ impl ShoalApp {
                         is_error: message.is_err(),
                         text: message.unwrap_or_else(|e| e),
                     });
+                }
+                PanelAction::Turn(angle_deg) => {
+                    if let Err(text) = self.lab.turn_selected(angle_deg) {
+                        self.notice = Some(Notice {
+                            text,
+                            is_error: true,
+                        });
+                    }
                 }
                 PanelAction::RestoreObstacles => {
                     let mut settings = self.lab.settings().clone();
@@ -709,6 +801,16 @@ impl eframe::App for ShoalApp {
                 .default_size(170.0)
                 .show(ui, |ui| {
                     metrics_panel_ui(ui, self.lab.runs(), &labels, &mut self.widget_rects);
+                });
+        }
+
+        if self.lab.settings().scene == Scene::Physics {
+            let selected = self.lab.settings().physics.selected;
+            egui::Panel::bottom("body_plots")
+                .resizable(true)
+                .default_size(170.0)
+                .show(ui, |ui| {
+                    body_plots_ui(ui, &self.lab.runs()[0], selected, &mut self.widget_rects);
                 });
         }
 

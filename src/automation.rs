@@ -8,6 +8,7 @@
 //! | `shoal.step(n)` | runs `n` simulation steps now (1 ≤ n ≤ 100,000), even while paused |
 //! | `shoal.pause()` / `shoal.play()` | stops / resumes the simulation |
 //! | `shoal.reset(seed?)` | rebuilds the world, from `seed` when given |
+//! | `shoal.turn(deg)` | physics scene: the selected fish starts a turn of `deg` degrees (+ left, −180 to 180) |
 //! | `shoal.share_link()` | the link that reopens exactly the current settings |
 //! | `shoal.metrics_csv()` | the metrics of the last minutes as CSV text (what "Download data" saves) |
 //! | `shoal.widgets()` | where the main widgets are on the page, `{name: {x, y, width, height}}` in CSS pixels (for tests that click real widgets) |
@@ -36,6 +37,7 @@ pub enum Command {
     Pause,
     Play,
     Reset(Option<u64>),
+    Turn(f32),
 }
 
 /// Why a call was refused.
@@ -70,6 +72,20 @@ impl Command {
         }
     }
 
+    /// `shoal.turn(deg)`.
+    pub fn turn(angle: Option<&Value>) -> Result<Self, AutomationError> {
+        match angle.and_then(Value::as_f64) {
+            Some(deg) if deg.abs() <= f64::from(crate::physics_settings::TURN_MAX_DEG) => {
+                Ok(Self::Turn(deg as f32))
+            }
+            _ => Err(AutomationError::BadArgument(format!(
+                "turn(deg): expected a number of degrees from -{0} to {0} (+ turns left), got {1}",
+                crate::physics_settings::TURN_MAX_DEG,
+                angle.map_or("nothing".to_owned(), Value::to_string)
+            ))),
+        }
+    }
+
     /// Carries the command out on `lab`.
     pub fn execute(self, lab: &mut Lab) -> Result<(), AutomationError> {
         match self {
@@ -87,6 +103,9 @@ impl Command {
                 lab.apply_settings(settings);
             }
             Self::Reset(seed) => lab.reset(seed),
+            Self::Turn(deg) => lab
+                .turn_selected(deg)
+                .map_err(AutomationError::BadArgument)?,
         }
         Ok(())
     }
@@ -137,9 +156,90 @@ pub struct StateReport {
     /// could not be opened).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub notice: Option<String>,
+    /// The physics scene: the selected fish, in detail.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub physics: Option<PhysicsReport>,
     /// Benchmark progress and results, in `?bench` mode only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bench: Option<crate::bench::BenchReport>,
+}
+
+/// The physics scene as `shoal.state().physics` reports it.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct PhysicsReport {
+    /// Muscle-driven fish and sharks.
+    pub fish: usize,
+    pub sharks: usize,
+    /// Node moves made by the hard rule (glass and rocks) since the start.
+    pub constraint_moves: u64,
+    /// The selected animal, if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub selected: Option<SelectedFishReport>,
+}
+
+/// One physical fish, in the tank frame (y up), SI units.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct SelectedFishReport {
+    pub index: usize,
+    pub species: &'static str,
+    pub body_length_m: f32,
+    /// Length along the spine over the rest length (1 when relaxed).
+    pub length_ratio: f32,
+    pub position_m: [f32; 3],
+    pub velocity_m_per_s: [f32; 3],
+    pub speed_m_per_s: f32,
+    /// Where the fore body points, averaged over a tail beat (unit).
+    pub heading: [f32; 3],
+    /// The velocity the steering layer (or the hand command) asked for.
+    pub desired_velocity_m_per_s: [f32; 3],
+    /// swim-MC speed, fraction of the top speed.
+    pub swim_speed_fraction: f32,
+    pub turning: bool,
+    /// Pectoral fin angles θ, radians (π/2 flat, π brake).
+    pub fin_left_rad: f32,
+    pub fin_right_rad: f32,
+    /// The 12 muscle contractions in [0, 1]: anterior, middle, posterior
+    /// segment; each left dorsal, left ventral, right dorsal, right ventral.
+    pub muscles: [f32; crate::sim::body::MUSCLE_COUNT],
+    /// The water current at the fish.
+    pub water_m_per_s: [f32; 3],
+    /// Is the teacher driving it?
+    pub hand_control: bool,
+}
+
+impl PhysicsReport {
+    fn new(lab: &Lab) -> Option<Self> {
+        let physics = lab.runs()[0].physics()?;
+        let settings = &lab.settings().physics;
+        let selected = settings.selected.and_then(|i| {
+            let index = i as usize;
+            let a = physics.animals().get(index)?;
+            Some(SelectedFishReport {
+                index,
+                species: a.species.name(),
+                body_length_m: a.body_length_m(),
+                length_ratio: a.body().spine_length_m() / a.body_length_m(),
+                position_m: a.point.position_m.to_array(),
+                velocity_m_per_s: a.point.velocity_m_per_s.to_array(),
+                speed_m_per_s: a.point.velocity_m_per_s.length(),
+                heading: a.heading().to_array(),
+                desired_velocity_m_per_s: physics.desired_m_per_s(index).to_array(),
+                swim_speed_fraction: a.motor().speed_fraction,
+                turning: a.motor().turning,
+                fin_left_rad: a.motor().fins.left_angle_rad,
+                fin_right_rad: a.motor().fins.right_angle_rad,
+                muscles: a.motor().muscles,
+                water_m_per_s: physics.water_at(a.point.position_m).to_array(),
+                hand_control: settings.hand_control,
+            })
+        });
+        Some(Self {
+            fish: physics.fish_count(),
+            sharks: physics.shark_count(),
+            constraint_moves: physics.constraint_moves(),
+            selected,
+        })
+    }
 }
 
 /// The orbit camera, as `shoal.state().camera` reports it.
@@ -153,12 +253,14 @@ pub struct CameraReport {
 
 impl StateReport {
     pub fn new(lab: &Lab, tier: &'static str, fps: f64) -> Self {
-        let world = lab.world();
+        let run = &lab.runs()[0];
         let settings = lab.settings();
         Self {
-            time_secs: world.time_secs(),
-            steps: world.steps(),
-            fish_count: world.fish().len(),
+            time_secs: run.time_secs(),
+            steps: run.steps(),
+            fish_count: run
+                .physics()
+                .map_or(run.world().fish().len(), |p| p.fish_count()),
             tier,
             fps,
             steps_per_sec: lab.steps_per_sec(),
@@ -172,6 +274,7 @@ impl StateReport {
             compare: lab.comparing(),
             notice: None,
             camera: None,
+            physics: PhysicsReport::new(lab),
             bench: None,
         }
     }
@@ -260,5 +363,38 @@ mod tests {
         assert!(err.to_string().contains("speed"), "{err}");
         assert_eq!(lab.settings(), &Settings::default());
         assert_eq!(lab.world().fish().len(), 200);
+    }
+
+    #[test]
+    fn turn_and_the_physics_report() {
+        for bad in [json!("left"), json!(181), json!(-400), json!(null)] {
+            let err = Command::turn(Some(&bad)).unwrap_err();
+            assert!(err.to_string().starts_with("turn(deg):"), "{err}");
+        }
+        let mut lab = Lab::new(Settings::default());
+        let state = serde_json::to_value(StateReport::new(&lab, "webgl2", 0.0)).unwrap();
+        assert!(state.get("physics").is_none(), "only in the physics scene");
+        Command::Set(json!({"scene": "physics", "physics": {"fish_count": 3, "selected": 1}}))
+            .execute(&mut lab)
+            .unwrap();
+        let err = Command::Set(json!({"physics": {"selected": 9}}))
+            .execute(&mut lab)
+            .unwrap_err();
+        assert!(err.to_string().contains("physics.selected"), "{err}");
+        Command::turn(Some(&json!(-60)))
+            .unwrap()
+            .execute(&mut lab)
+            .unwrap();
+        Command::Step(5).execute(&mut lab).unwrap();
+        let state = serde_json::to_value(StateReport::new(&lab, "webgl2", 0.0)).unwrap();
+        assert_eq!(state["scene"], "physics");
+        assert_eq!(state["fish_count"], 3);
+        assert_eq!(state["physics"]["fish"], 3);
+        let selected = &state["physics"]["selected"];
+        assert_eq!(selected["index"], 1);
+        assert_eq!(selected["species"], "fish");
+        assert_eq!(selected["turning"], true);
+        assert_eq!(selected["muscles"].as_array().unwrap().len(), 12);
+        assert!((state["time_secs"].as_f64().unwrap() - 5.0 * 0.055).abs() < 1e-4);
     }
 }

@@ -6,18 +6,24 @@ use serde::Serialize;
 use web_time::Instant;
 
 use crate::lab::Lab;
+use crate::physics_settings::PhysicsSettings;
 use crate::settings::{Scene, Settings};
 use crate::tank_settings::{Preset, TankSettings};
 
-/// Scenes and fish counts the benchmark visits: the wandering aquarium, and the boid
-/// layer with the group preset at the 500, 5,000 and 20,000 fish.
-pub const PHASES: [(Scene, u32); 6] = [
+/// Scenes and fish counts the benchmark visits: the wandering aquarium, the boid
+/// layer with the group preset at the 500, 5,000 and 20,000 fish, and the
+/// muscle-driven fish (schooling, no shark) at 10 (the paper's demo), 50 and 200
+/// (the goal: 200 fish at 60 steps/s).
+pub const PHASES: [(Scene, u32); 9] = [
     (Scene::Aquarium, 200),
     (Scene::Aquarium, 5_000),
     (Scene::Aquarium, 20_000),
     (Scene::Boids, 500),
     (Scene::Boids, 5_000),
     (Scene::Boids, 20_000),
+    (Scene::Physics, 10),
+    (Scene::Physics, 50),
+    (Scene::Physics, 200),
 ];
 /// Real seconds of rendered frames measured per fish count.
 const FRAMES_PHASE_SECS: f64 = 3.0;
@@ -103,6 +109,11 @@ impl Benchmark {
             settings.left = TankSettings {
                 fish_count: fish,
                 ..TankSettings::with_preset(Preset::Group)
+            };
+            settings.physics = PhysicsSettings {
+                fish_count: fish,
+                sharks: 0,
+                ..PhysicsSettings::default()
             };
             lab.apply_settings(settings);
             self.sim_steps_per_sec = measure_steps_per_sec(lab);

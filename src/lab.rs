@@ -6,15 +6,43 @@
 
 use glam::Vec3;
 
+use std::collections::VecDeque;
+
 use crate::clock::{FixedStepClock, RateMeter};
 use crate::metrics_history::{MetricsHistory, MetricsSample, SAMPLE_EVERY_STEPS};
 use crate::settings::{Scene, Settings, Side};
-use crate::sim::{World, WorldConfig};
+use crate::sim::body::{MUSCLE_COUNT, NODE_COUNT};
+use crate::sim::{HandCommand, PhysicsConfig, PhysicsWorld, World, WorldConfig};
+
+/// Physics steps between two metrics samples: 5 × 0.055 s = 0.275 s, about the
+/// boid scenes' 15 × 1/60 s.
+const PHYSICS_SAMPLE_EVERY_STEPS: u64 = 5;
+
+/// Seconds of the selected fish's muscles and speed kept for the plots.
+pub const BODY_TRACE_SECS: f64 = 20.0;
+
+/// One step of the selected physical fish, for the muscle and speed plots.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BodySample {
+    pub time_secs: f64,
+    /// Speed of the centre of mass, m/s.
+    pub speed_m_per_s: f32,
+    /// The 12 muscle contractions in [0, 1] (order of `body_layout::MUSCLES`).
+    pub muscles: [f32; MUSCLE_COUNT],
+}
 
 /// One tank's run: its world, what is needed to draw it smoothly, and its metrics.
 pub struct Run {
     side: Side,
+    /// The boid world; in the physics scene it holds only the tank and its rocks.
     world: World,
+    /// The muscle-driven fish of the physics scene.
+    physics: Option<PhysicsWorld>,
+    /// Node positions of every physical animal before the last step.
+    previous_nodes_m: Vec<[Vec3; NODE_COUNT]>,
+    /// The selected physical fish's last seconds, and which fish it is.
+    body_trace: VecDeque<BodySample>,
+    traced: Option<u32>,
     /// Fish positions before the last step, for interpolated drawing.
     previous_positions_m: Vec<Vec3>,
     history: MetricsHistory,
@@ -30,9 +58,15 @@ impl Run {
     fn new(side: Side, settings: &Settings, generation: u64) -> Self {
         let mut world = World::new(world_config(settings, side));
         world.set_boids(boid_params(settings, side));
+        let physics = (settings.scene == Scene::Physics)
+            .then(|| PhysicsWorld::new(physics_config(settings, world.obstacles())));
         let mut run = Self {
             side,
             world,
+            physics,
+            previous_nodes_m: Vec::new(),
+            body_trace: VecDeque::new(),
+            traced: None,
             previous_positions_m: Vec::new(),
             history: MetricsHistory::default(),
             generation,
@@ -40,8 +74,59 @@ impl Run {
             obstacle_edits: 0,
         };
         run.snapshot_positions();
+        run.follow_physics(settings);
         run.sample_metrics();
         run
+    }
+
+    /// The physical fish, in the physics scene.
+    pub fn physics(&self) -> Option<&PhysicsWorld> {
+        self.physics.as_ref()
+    }
+
+    /// Simulated seconds since the run began.
+    pub fn time_secs(&self) -> f64 {
+        match &self.physics {
+            Some(physics) => physics.time_secs(),
+            None => self.world.time_secs(),
+        }
+    }
+
+    /// Steps since the run began.
+    pub fn steps(&self) -> u64 {
+        match &self.physics {
+            Some(physics) => physics.steps(),
+            None => self.world.steps(),
+        }
+    }
+
+    /// Animals in the tank: fish (boids or physical), sharks and stingrays.
+    pub fn animal_count(&self) -> usize {
+        match &self.physics {
+            Some(physics) => physics.animals().len(),
+            None => {
+                self.world.fish().len() + self.world.sharks().len() + self.world.stingrays().len()
+            }
+        }
+    }
+
+    /// Where physical animal `index`'s nodes should be drawn: `alpha` of the way
+    /// from their previous to their current positions (tank frame, metres).
+    pub fn drawn_nodes_m(&self, index: usize, alpha: f32) -> [Vec3; NODE_COUNT] {
+        let Some(animal) = self.physics.as_ref().and_then(|p| p.animals().get(index)) else {
+            return [Vec3::ZERO; NODE_COUNT];
+        };
+        let current = animal.nodes_m();
+        match self.previous_nodes_m.get(index) {
+            Some(previous) => std::array::from_fn(|k| previous[k].lerp(current[k], alpha)),
+            None => current,
+        }
+    }
+
+    /// The selected physical fish's muscles and speed over the last
+    /// [`BODY_TRACE_SECS`], oldest first.
+    pub fn body_trace(&self) -> &VecDeque<BodySample> {
+        &self.body_trace
     }
 
     pub fn side(&self) -> Side {
@@ -69,6 +154,33 @@ impl Run {
     }
 
     fn step(&mut self, snapshot: bool) {
+        if let Some(physics) = &mut self.physics {
+            if snapshot {
+                self.previous_nodes_m.clear();
+                self.previous_nodes_m
+                    .extend(physics.animals().iter().map(|a| a.nodes_m()));
+            }
+            physics.step();
+            if let Some(animal) = self.traced.and_then(|i| physics.animals().get(i as usize)) {
+                let sample = BodySample {
+                    time_secs: physics.time_secs(),
+                    speed_m_per_s: animal.point.velocity_m_per_s.length(),
+                    muscles: animal.motor().muscles,
+                };
+                self.body_trace.push_back(sample);
+                while self
+                    .body_trace
+                    .front()
+                    .is_some_and(|s| s.time_secs < sample.time_secs - BODY_TRACE_SECS)
+                {
+                    self.body_trace.pop_front();
+                }
+            }
+            if physics.steps().is_multiple_of(PHYSICS_SAMPLE_EVERY_STEPS) {
+                self.sample_metrics();
+            }
+            return;
+        }
         if snapshot {
             self.snapshot_positions();
         }
@@ -81,6 +193,15 @@ impl Run {
     /// Records the world's latest metrics (computed by the simulation every step).
     /// Force shares are over the last second, so a mode switch shows at once.
     fn sample_metrics(&mut self) {
+        if let Some(physics) = &self.physics {
+            self.history.push(MetricsSample::new(
+                physics.time_secs(),
+                &physics.school_metrics(),
+                [0.0; 5],
+                0,
+            ));
+            return;
+        }
         let metrics = self.world.metrics();
         let force_frequencies = if self.world.boids().is_some() {
             metrics.force_frequencies_recent
@@ -134,8 +255,53 @@ impl Run {
         self.interpolated(slot, self.world.stingrays()[index].body.position_m, alpha)
     }
 
+    /// Follows the physics scene's settings: counts, behaviour, current, the
+    /// selected fish's hand command and its trace.
+    fn follow_physics(&mut self, settings: &Settings) {
+        let Some(physics) = &mut self.physics else {
+            return;
+        };
+        let wanted = &settings.physics;
+        let counts = (wanted.fish_count as usize, wanted.sharks as usize);
+        if counts != (physics.fish_count(), physics.shark_count()) {
+            physics.set_counts(counts.0, counts.1);
+            self.previous_nodes_m.clear();
+        }
+        if physics.behaviour() != wanted.behaviour {
+            physics.set_behaviour(wanted.behaviour);
+        }
+        if physics.current().strength_m_per_s != wanted.current_m_per_s {
+            physics.set_current(wanted.current_m_per_s);
+        }
+        let hand = wanted.selected.filter(|_| wanted.hand_control).map(|i| {
+            (
+                i as usize,
+                HandCommand {
+                    speed_fraction: wanted.hand_speed,
+                    pitch_rad: wanted.hand_pitch_deg.to_radians(),
+                },
+            )
+        });
+        physics.set_hand_command(hand);
+        if self.traced != wanted.selected {
+            self.traced = wanted.selected;
+            self.body_trace.clear();
+        }
+    }
+
+    /// Starts a turn of `angle_deg` (+ left) on physical animal `index`.
+    fn turn(&mut self, index: usize, angle_deg: f32) {
+        if let Some(physics) = &mut self.physics {
+            physics.turn(index, angle_deg);
+        }
+    }
+
     /// Follows new settings for this tank without restarting where possible.
     fn follow(&mut self, settings: &Settings) {
+        if self.physics.is_some() {
+            self.follow_physics(settings);
+            return;
+        }
         let tank = settings.tank(self.side);
         let fish_count = tank.fish_count as usize;
         if fish_count != self.world.fish().len() {
@@ -200,9 +366,10 @@ impl Lab {
     pub fn new(settings: Settings) -> Self {
         let mut settings = settings;
         settings.clamp();
+        let scene = settings.scene;
         let mut lab = Self {
             settings,
-            clock: FixedStepClock::new(f64::from(World::DT_SECS)),
+            clock: FixedStepClock::new(step_secs(scene)),
             runs: Vec::new(),
             steps_meter: RateMeter::default(),
             rebuilds: 0,
@@ -273,6 +440,10 @@ impl Lab {
     }
 
     fn rebuild(&mut self) {
+        let max_steps = self.clock.max_steps_per_frame;
+        self.clock = FixedStepClock::new(step_secs(self.settings.scene));
+        self.clock.max_steps_per_frame = max_steps;
+        self.step_cost_secs = 0.0;
         self.runs = Side::BOTH[..self.wanted_runs()]
             .iter()
             .map(|&side| {
@@ -332,6 +503,29 @@ impl Lab {
         steps
     }
 
+    /// Starts a turn of `angle_deg` degrees (+ left) on the selected physical fish.
+    pub fn turn_selected(&mut self, angle_deg: f32) -> Result<(), String> {
+        if self.settings.scene != Scene::Physics {
+            return Err("turn() works in the physics fish scene only".to_owned());
+        }
+        let Some(selected) = self.settings.physics.selected else {
+            return Err("turn(): select a fish first (physics.selected)".to_owned());
+        };
+        if !angle_deg.is_finite() || angle_deg.abs() > crate::physics_settings::TURN_MAX_DEG {
+            return Err(format!(
+                "turn(): {angle_deg} is out of range: choose from -{0} to {0} degrees",
+                crate::physics_settings::TURN_MAX_DEG
+            ));
+        }
+        self.runs[0].turn(selected as usize, angle_deg);
+        Ok(())
+    }
+
+    /// Length of one simulation step of the current scene, seconds.
+    pub fn step_secs(&self) -> f64 {
+        step_secs(self.settings.scene)
+    }
+
     /// Runs exactly `n` steps now, paused or not (single step, `shoal.step(n)`).
     pub fn step(&mut self, n: u32) {
         self.run_steps(n);
@@ -379,12 +573,38 @@ impl Lab {
     }
 }
 
+/// Length of one simulation step, seconds: the body's Δt = 0.055 s (Tu &
+/// Terzopoulos's value) for physical fish, 1/60 s for boids.
+fn step_secs(scene: Scene) -> f64 {
+    match scene {
+        Scene::Physics => f64::from(crate::sim::body::BodyParams::default().dt_secs),
+        Scene::Aquarium | Scene::Boids => f64::from(World::DT_SECS),
+    }
+}
+
+fn physics_config(settings: &Settings, obstacles: &[crate::sim::Obstacle]) -> PhysicsConfig {
+    let physics = &settings.physics;
+    PhysicsConfig {
+        seed: settings.seed,
+        fish_count: physics.fish_count as usize,
+        sharks: physics.sharks as usize,
+        behaviour: physics.behaviour,
+        current_m_per_s: physics.current_m_per_s,
+        obstacles: obstacles.to_vec(),
+    }
+}
+
 fn world_config(settings: &Settings, side: Side) -> WorldConfig {
     let tank = settings.tank(side);
     let boids = settings.scene == Scene::Boids;
     WorldConfig {
         seed: settings.seed,
-        fish_count: tank.fish_count as usize,
+        // In the physics scene the boid world only holds the tank and its rocks.
+        fish_count: if settings.scene == Scene::Physics {
+            0
+        } else {
+            tank.fish_count as usize
+        },
         // Predators, stingrays and edited rocks belong to the schooling lab.
         sharks: if boids { tank.sharks as usize } else { 0 },
         stingrays: if boids { tank.stingrays as usize } else { 0 },
@@ -486,5 +706,92 @@ mod tests {
             assert!(drawn.distance(previous) <= total + 1e-5);
             assert!(drawn.distance(fish.position_m) <= total + 1e-5);
         }
+    }
+
+    fn physics_lab() -> Lab {
+        let mut settings = Settings {
+            scene: Scene::Physics,
+            ..Settings::default()
+        };
+        settings.physics.fish_count = 4;
+        settings.physics.sharks = 1;
+        Lab::new(settings)
+    }
+
+    #[test]
+    fn the_physics_scene_steps_muscle_fish_at_the_body_step_and_follows_its_settings() {
+        let mut lab = physics_lab();
+        let run = &lab.runs()[0];
+        assert_eq!(run.physics().unwrap().animals().len(), 5);
+        assert!(
+            lab.world().fish().is_empty(),
+            "no boids in the physics tank"
+        );
+        assert!(
+            !lab.world().obstacles().is_empty(),
+            "the seed's rocks are there"
+        );
+        lab.advance_frame(0.2, 0.2);
+        let steps = lab.runs()[0].steps();
+        assert!(
+            (3..=4).contains(&steps),
+            "0.2 s at 0.055 s per step: {steps}"
+        );
+        assert!((lab.runs()[0].time_secs() - steps as f64 * 0.055).abs() < 1e-4);
+
+        let mut settings = lab.settings().clone();
+        settings.physics.fish_count = 6;
+        settings.physics.selected = Some(2);
+        settings.physics.hand_control = true;
+        settings.physics.hand_speed = 1.0;
+        lab.apply_settings(settings);
+        assert_eq!(lab.runs()[0].steps(), steps, "more fish, same run");
+        let physics = lab.runs()[0].physics().unwrap();
+        assert_eq!((physics.fish_count(), physics.shark_count()), (6, 1));
+        lab.step(40);
+        let run = &lab.runs()[0];
+        let trace = run.body_trace();
+        assert_eq!(trace.len(), 40, "the selected fish is traced every step");
+        let last = trace.back().unwrap();
+        assert!(last.speed_m_per_s > 0.0);
+        assert!(last.muscles.iter().any(|&u| u > 0.1), "{:?}", last.muscles);
+        // Drawn nodes lie between the last two states.
+        let drawn = run.drawn_nodes_m(2, 0.5);
+        let now = run.physics().unwrap().animals()[2].nodes_m();
+        assert!(drawn.iter().zip(now).all(|(a, b)| a.distance(b) < 0.1));
+    }
+
+    #[test]
+    fn a_turn_needs_the_physics_scene_and_a_selected_fish() {
+        let mut boids = Lab::new(Settings::default());
+        assert!(boids.turn_selected(30.0).is_err());
+        let mut lab = physics_lab();
+        let err = lab.turn_selected(30.0).unwrap_err();
+        assert!(err.contains("select"), "{err}");
+        let mut settings = lab.settings().clone();
+        settings.physics.selected = Some(0);
+        lab.apply_settings(settings);
+        assert!(lab.turn_selected(f32::NAN).is_err());
+        assert!(lab.turn_selected(500.0).is_err());
+        lab.turn_selected(45.0).unwrap();
+        lab.step(1);
+        assert!(lab.runs()[0].physics().unwrap().animals()[0].is_turning());
+    }
+
+    #[test]
+    fn switching_scenes_changes_the_step_length() {
+        let mut lab = Lab::new(Settings::default());
+        assert!((lab.step_secs() - 1.0 / 60.0).abs() < 1e-9);
+        let mut settings = lab.settings().clone();
+        settings.scene = Scene::Physics;
+        lab.apply_settings(settings.clone());
+        assert!((lab.step_secs() - 0.055).abs() < 1e-6);
+        lab.advance_frame(0.11, 0.0);
+        assert_eq!(lab.runs()[0].steps(), 2);
+        settings.scene = Scene::Boids;
+        lab.apply_settings(settings);
+        assert!(lab.runs()[0].physics().is_none());
+        lab.advance_frame(0.06, 0.1);
+        assert_eq!(lab.runs()[0].steps(), 3, "a new run at 1/60 s per step");
     }
 }

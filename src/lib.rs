@@ -13,6 +13,7 @@ pub mod bench;
 pub mod clock;
 pub mod lab;
 pub mod metrics_history;
+pub mod physics_settings;
 pub mod render;
 pub mod settings;
 pub mod share_link;

@@ -7,6 +7,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::physics_settings::PhysicsSettings;
 use crate::sim::Tank;
 use crate::tank_settings::{Preset, TankSettings};
 
@@ -20,16 +21,20 @@ pub enum Scene {
     /// The SIMBA boid layer: five steering urges on sliders, control modes,
     /// sharks and stingrays, and the solo-versus-school comparison.
     Boids,
+    /// Muscle-driven fish (Tu & Terzopoulos §3): spring–mass bodies that swim
+    /// because their muscles contract against the water.
+    Physics,
 }
 
 impl Scene {
-    pub const ALL: [Self; 2] = [Self::Aquarium, Self::Boids];
+    pub const ALL: [Self; 3] = [Self::Aquarium, Self::Boids, Self::Physics];
 
     /// The name used in the automation API and share links.
     pub fn name(self) -> &'static str {
         match self {
             Self::Aquarium => "aquarium",
             Self::Boids => "boids",
+            Self::Physics => "physics",
         }
     }
 
@@ -38,6 +43,7 @@ impl Scene {
         match self {
             Self::Aquarium => "Aquarium",
             Self::Boids => "Schooling lab",
+            Self::Physics => "Physics fish",
         }
     }
 
@@ -48,6 +54,10 @@ impl Scene {
             Self::Boids => {
                 "Each fish follows five urges: stay in the tank, swim like the others, \
                  stay close, keep space and dodge rocks. Change them and watch a school form."
+            }
+            Self::Physics => {
+                "Each fish is a body of 23 masses and 91 springs. Twelve springs are muscles: \
+                 they pull the tail from side to side, the water pushes back, and the fish swims."
             }
         }
     }
@@ -106,6 +116,10 @@ pub struct Settings {
     pub left: TankSettings,
     /// The right tank when comparing.
     pub right: TankSettings,
+    /// The physics fish scene. Links made before this scene existed lack it and
+    /// get the defaults.
+    #[serde(default)]
+    pub physics: PhysicsSettings,
 }
 
 impl Default for Settings {
@@ -121,6 +135,7 @@ impl Default for Settings {
             show_vision: false,
             left: TankSettings::with_preset(Preset::Individual),
             right: TankSettings::with_preset(Preset::Group),
+            physics: PhysicsSettings::default(),
         }
     }
 }
@@ -188,6 +203,9 @@ impl Settings {
                 return invalid(&key, reason);
             }
         }
+        if let Err((key, reason)) = self.physics.validate("physics.") {
+            return invalid(&key, reason);
+        }
         Ok(())
     }
 
@@ -202,6 +220,7 @@ impl Settings {
         let tank = Tank::default();
         self.left.clamp(&tank);
         self.right.clamp(&tank);
+        self.physics.clamp();
     }
 
     /// Makes each tank's preset label true after an edit (see

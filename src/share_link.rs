@@ -120,6 +120,30 @@ mod tests {
             show_vision: rng.random_bool(0.5),
             left: random_tank(rng),
             right: random_tank(rng),
+            physics: random_physics(rng),
+        }
+    }
+
+    fn random_physics(rng: &mut ChaCha8Rng) -> crate::physics_settings::PhysicsSettings {
+        use crate::physics_settings::*;
+        let fish_count = rng.random_range(1..=PHYSICS_FISH_MAX);
+        let sharks = rng.random_range(0..=PHYSICS_SHARKS_MAX);
+        let selected = rng
+            .random_bool(0.5)
+            .then(|| rng.random_range(0..fish_count + sharks));
+        PhysicsSettings {
+            fish_count,
+            sharks,
+            behaviour: crate::sim::PhysicsBehaviour::ALL[rng.random_range(0..3)],
+            current_m_per_s: rng.random_range(0.0..=CURRENT_MAX_M_PER_S),
+            selected,
+            hand_control: selected.is_some() && rng.random_bool(0.5),
+            hand_speed: rng.random_range(0.0..=1.0),
+            hand_pitch_deg: rng.random_range(-HAND_PITCH_MAX_DEG..=HAND_PITCH_MAX_DEG),
+            turn_angle_deg: rng.random_range(-TURN_MAX_DEG..=TURN_MAX_DEG),
+            follow: selected.is_some() && rng.random_bool(0.5),
+            show_body: rng.random_bool(0.5),
+            show_forces: rng.random_bool(0.5),
         }
     }
 

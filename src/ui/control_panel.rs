@@ -70,7 +70,7 @@ impl Default for PanelState {
 }
 
 /// One-off things the teacher asked for this frame.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PanelAction {
     /// Advance the simulation by one step.
     Step,
@@ -86,6 +86,8 @@ pub enum PanelAction {
     ExportCsv,
     /// Bring back the rocks the seed placed in the tank being edited.
     RestoreObstacles,
+    /// Physics scene: the selected fish starts a turn of this many degrees (+ left).
+    Turn(f32),
 }
 
 /// Draws the control panel, editing `settings` in place, and records where the
@@ -137,7 +139,11 @@ pub fn control_panel_ui(
         }
         let step = ui
             .button("Step")
-            .on_hover_text("Move time forward by one tiny step, 1/60 of a second (S)");
+            .on_hover_text(if settings.scene == Scene::Physics {
+                "Move time forward by one step of the muscle physics, 0.055 seconds (S)"
+            } else {
+                "Move time forward by one tiny step, 1/60 of a second (S)"
+            });
         rects.insert("step", step.rect);
         if step.clicked() {
             actions.push(PanelAction::Step);
@@ -205,6 +211,13 @@ pub fn control_panel_ui(
 
     if settings.scene == Scene::Boids {
         boids_ui(ui, settings, state, rects, &mut actions);
+    }
+    if settings.scene == Scene::Physics {
+        actions.extend(super::physics_panel::physics_controls_ui(
+            ui,
+            &mut settings.physics,
+            rects,
+        ));
     }
 
     ui.separator();

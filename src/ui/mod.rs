@@ -1,13 +1,16 @@
 //! The egui panels around the aquarium. They edit `Settings` and report one-off
 //! actions; they never touch the simulation directly.
 
+pub mod body_overlay;
 mod control_panel;
 mod metrics_panel;
+mod physics_panel;
 mod status_line;
 mod tank_panel;
 
 pub use control_panel::{EditTool, PanelAction, PanelState, control_panel_ui};
 pub use metrics_panel::{metrics_panel_ui, side_color};
+pub use physics_panel::body_plots_ui;
 pub use status_line::status_line_ui;
 pub use tank_panel::mode_label;
 

@@ -15,7 +15,7 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 11] = [
+    let methods: [(&str, Box<Method>); 12] = [
         ("state", Box::new(|app, _| to_json(&app.state_report()))),
         (
             "share_link",
@@ -67,6 +67,13 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
             "reset",
             Box::new(|app, arg| {
                 app.run_command(Command::reset(arg.as_ref())?)?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "turn",
+            Box::new(|app, arg| {
+                app.run_command(Command::turn(arg.as_ref())?)?;
                 Ok(serde_json::Value::Null)
             }),
         ),

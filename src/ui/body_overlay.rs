@@ -1,0 +1,253 @@
+//! Drawn over the physics scene's 3D view with egui's painter: the spring–mass
+//! skeleton of the physical fish (nodes, springs, muscles coloured by how much they
+//! contract), force arrows (the water's push on each node, where the fish wants to
+//! go, where it goes, the current), and picking a fish with the mouse.
+
+use eframe::egui;
+use glam::Vec3;
+
+use crate::lab::Run;
+use crate::render::OrbitCamera;
+use crate::sim::body::NODE_COUNT;
+use crate::sim::body::body_layout::{MUSCLES, SPRINGS, SpringKind};
+use crate::sim::body::hydrodynamics::add_water_forces;
+use crate::sim::motor_bridge::{to_body_frame, to_tank_frame};
+
+/// Skeletons drawn at most when no fish is selected. 40, chosen: 3,600 lines stay
+/// cheap and readable; with a selection only the selected fish is drawn.
+pub const SKELETONS_MAX: usize = 40;
+
+/// Screen distance within which a click picks a fish, points (plus its drawn
+/// half-length). 12, chosen: easy to hit on a touch screen.
+const PICK_SLACK_PT: f32 = 12.0;
+
+/// The colour of a muscle contracted by `u` in [0, 1]: relaxed pale blue, fully
+/// contracted red.
+pub fn muscle_color(u: f32) -> egui::Color32 {
+    let u = if u.is_finite() {
+        u.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let lerp = |a: f32, b: f32| (a + (b - a) * u).round() as u8;
+    egui::Color32::from_rgb(lerp(140.0, 255.0), lerp(190.0, 50.0), lerp(255.0, 40.0))
+}
+
+struct Projector<'a> {
+    camera: &'a OrbitCamera,
+    rect: egui::Rect,
+    aspect: f32,
+}
+
+impl Projector<'_> {
+    fn new(camera: &OrbitCamera, rect: egui::Rect) -> Projector<'_> {
+        Projector {
+            camera,
+            rect,
+            aspect: rect.width() / rect.height().max(1.0),
+        }
+    }
+
+    fn point(&self, p: Vec3) -> Option<egui::Pos2> {
+        self.camera.project(p, self.aspect).map(|uv| {
+            self.rect.min + egui::vec2(uv.x * self.rect.width(), uv.y * self.rect.height())
+        })
+    }
+
+    fn arrow(&self, painter: &egui::Painter, from: Vec3, to: Vec3, stroke: egui::Stroke) {
+        if let (Some(a), Some(b)) = (self.point(from), self.point(to)) {
+            painter.arrow(a, b - a, stroke);
+        }
+    }
+}
+
+/// Which animals to draw: the selected one, or the first [`SKELETONS_MAX`].
+fn shown(run: &Run, selected: Option<u32>) -> Vec<usize> {
+    let count = run.physics().map_or(0, |p| p.animals().len());
+    match selected {
+        Some(i) if (i as usize) < count => vec![i as usize],
+        _ => (0..count.min(SKELETONS_MAX)).collect(),
+    }
+}
+
+/// Nodes and springs; muscles coloured by contraction, thicker.
+pub fn draw_skeletons(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    camera: &OrbitCamera,
+    run: &Run,
+    alpha: f32,
+    selected: Option<u32>,
+) {
+    let Some(physics) = run.physics() else {
+        return;
+    };
+    let project = Projector::new(camera, rect);
+    let spring_stroke = egui::Stroke::new(
+        1.0,
+        egui::Color32::from_rgba_unmultiplied(230, 230, 230, 110),
+    );
+    let cross_stroke = egui::Stroke::new(
+        0.7,
+        egui::Color32::from_rgba_unmultiplied(200, 200, 200, 55),
+    );
+    for i in shown(run, selected) {
+        let nodes = run.drawn_nodes_m(i, alpha);
+        let screen: [Option<egui::Pos2>; NODE_COUNT] = nodes.map(|p| project.point(p));
+        let muscles = physics.animals()[i].motor().muscles;
+        for spring in SPRINGS.iter() {
+            if let (Some(a), Some(b)) = (screen[spring.a], screen[spring.b]) {
+                let stroke = if spring.kind == SpringKind::Cross {
+                    cross_stroke
+                } else {
+                    spring_stroke
+                };
+                painter.line_segment([a, b], stroke);
+            }
+        }
+        for (muscle, u) in MUSCLES.iter().zip(muscles) {
+            let spring = &SPRINGS[muscle.spring];
+            if let (Some(a), Some(b)) = (screen[spring.a], screen[spring.b]) {
+                painter.line_segment([a, b], egui::Stroke::new(3.0, muscle_color(u)));
+            }
+        }
+        for p in screen.into_iter().flatten() {
+            painter.circle_filled(p, 2.5, egui::Color32::WHITE);
+        }
+    }
+}
+
+/// Force arrows: the water's push on each node (yellow, the thrust comes from the
+/// tail), the velocity the fish wants (green), its velocity (white) and the
+/// current where it is (cyan).
+pub fn draw_forces(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    camera: &OrbitCamera,
+    run: &Run,
+    alpha: f32,
+    selected: Option<u32>,
+) {
+    let Some(physics) = run.physics() else {
+        return;
+    };
+    let project = Projector::new(camera, rect);
+    for i in shown(run, selected) {
+        let animal = &physics.animals()[i];
+        let length = animal.body_length_m();
+        let nodes = run.drawn_nodes_m(i, alpha);
+        let body = animal.body();
+        let water = physics.water_at(animal.point.position_m);
+        // The paper's water force on the body as it is now (drag coefficient 1:
+        // only the directions and relative sizes matter for the picture).
+        let mut forces = [Vec3::ZERO; NODE_COUNT];
+        add_water_forces(
+            body.positions_m(),
+            body.velocities_m_per_s(),
+            to_body_frame(water),
+            1.0,
+            &mut forces,
+            None,
+        );
+        let largest = forces.iter().map(|f| f.length()).fold(0.0, f32::max);
+        if largest > 0.0 {
+            let scale = 0.35 * length / largest;
+            let stroke = egui::Stroke::new(1.5, egui::Color32::from_rgb(255, 220, 60));
+            for (p, f) in nodes.iter().zip(forces) {
+                if f.length() > 0.05 * largest {
+                    project.arrow(painter, *p, *p + to_tank_frame(f) * scale, stroke);
+                }
+            }
+        }
+        let centre = nodes.iter().sum::<Vec3>() / NODE_COUNT as f32;
+        // Velocities as the distance covered in 3 seconds.
+        let seconds = 3.0;
+        let arrows = [
+            (
+                physics.desired_m_per_s(i),
+                egui::Color32::from_rgb(90, 255, 120),
+            ),
+            (animal.point.velocity_m_per_s, egui::Color32::WHITE),
+            (water, egui::Color32::from_rgb(80, 220, 255)),
+        ];
+        for (v, color) in arrows {
+            if v.length() > 1e-3 {
+                project.arrow(
+                    painter,
+                    centre,
+                    centre + v * seconds,
+                    egui::Stroke::new(2.0, color),
+                );
+            }
+        }
+    }
+}
+
+/// A ring around the selected fish so it stands out in a school.
+pub fn draw_selection(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    camera: &OrbitCamera,
+    run: &Run,
+    alpha: f32,
+    selected: u32,
+) {
+    let Some(physics) = run.physics() else {
+        return;
+    };
+    let i = selected as usize;
+    let Some(animal) = physics.animals().get(i) else {
+        return;
+    };
+    let project = Projector::new(camera, rect);
+    let nodes = run.drawn_nodes_m(i, alpha);
+    let centre = nodes.iter().sum::<Vec3>() / NODE_COUNT as f32;
+    let (Some(c), Some(edge)) = (
+        project.point(centre),
+        project.point(centre + camera_right(camera) * 0.6 * animal.body_length_m()),
+    ) else {
+        return;
+    };
+    let radius = c.distance(edge).max(10.0);
+    painter.circle_stroke(
+        c,
+        radius,
+        egui::Stroke::new(2.0, egui::Color32::from_rgb(255, 230, 90)),
+    );
+}
+
+fn camera_right(camera: &OrbitCamera) -> Vec3 {
+    let forward = (camera.target_m - camera.eye_m()).normalize_or(Vec3::NEG_Z);
+    forward.cross(Vec3::Y).normalize_or(Vec3::X)
+}
+
+/// The physical animal drawn nearest to `pointer` (within its drawn half-length
+/// plus a little slack), the nearest to the camera first when several overlap.
+pub fn pick_animal(
+    pointer: egui::Pos2,
+    rect: egui::Rect,
+    camera: &OrbitCamera,
+    run: &Run,
+    alpha: f32,
+) -> Option<u32> {
+    let physics = run.physics()?;
+    let project = Projector::new(camera, rect);
+    let eye = camera.eye_m();
+    physics
+        .animals()
+        .iter()
+        .enumerate()
+        .filter_map(|(i, animal)| {
+            let nodes = run.drawn_nodes_m(i, alpha);
+            let centre = nodes.iter().sum::<Vec3>() / NODE_COUNT as f32;
+            let c = project.point(centre)?;
+            let half = project
+                .point(centre + camera_right(camera) * 0.5 * animal.body_length_m())
+                .map_or(0.0, |e| c.distance(e));
+            let reach = half + PICK_SLACK_PT;
+            let d = c.distance(pointer);
+            (d <= reach).then_some((i as u32, centre.distance(eye)))
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(i, _)| i)
+}

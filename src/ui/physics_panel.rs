@@ -1,0 +1,318 @@
+//! The "Physics fish" controls (how many fish, how they steer, the current, the
+//! overlays, the selected fish and its hand command) and the selected fish's live
+//! plots: its twelve muscle contractions and its speed.
+
+use eframe::egui;
+use egui_plot::{Legend, Line, Plot, PlotPoints};
+
+use super::WidgetRects;
+use super::body_overlay::muscle_color;
+use super::control_panel::PanelAction;
+use crate::lab::{BODY_TRACE_SECS, Run};
+use crate::physics_settings::{
+    CURRENT_MAX_M_PER_S, HAND_PITCH_MAX_DEG, PHYSICS_FISH_MAX, PHYSICS_SHARKS_MAX, PhysicsSettings,
+    TURN_MAX_DEG,
+};
+use crate::sim::PhysicsBehaviour;
+use crate::sim::body::body_layout::muscle_index;
+use crate::sim::body::{MuscleSegment, Side};
+
+/// The physics scene's section of the control panel.
+pub fn physics_controls_ui(
+    ui: &mut egui::Ui,
+    physics: &mut PhysicsSettings,
+    rects: &mut WidgetRects,
+) -> Vec<PanelAction> {
+    let mut actions = Vec::new();
+    ui.separator();
+    ui.label(egui::RichText::new("Physical fish").strong());
+    egui::Grid::new("physics_grid")
+        .num_columns(2)
+        .spacing([8.0, 6.0])
+        .show(ui, |ui| {
+            let help = "How many muscle-driven fish swim in the tank. Each one is 23 masses \
+                        joined by 91 springs";
+            ui.label("Fish").on_hover_text(help);
+            let fish = ui
+                .add(
+                    egui::Slider::new(&mut physics.fish_count, 1..=PHYSICS_FISH_MAX)
+                        .logarithmic(true),
+                )
+                .on_hover_text(help);
+            rects.insert("physics_fish", fish.rect);
+            ui.end_row();
+
+            let help = "Sharks are built like the fish, only twice as long and four times heavier";
+            ui.label("Sharks").on_hover_text(help);
+            ui.horizontal(|ui| {
+                let minus = ui
+                    .add_enabled(physics.sharks > 0, egui::Button::new("−"))
+                    .on_hover_text("One shark fewer");
+                rects.insert("physics_sharks_minus", minus.rect);
+                if minus.clicked() {
+                    physics.sharks -= 1;
+                }
+                ui.label(physics.sharks.to_string()).on_hover_text(help);
+                let plus = ui
+                    .add_enabled(physics.sharks < PHYSICS_SHARKS_MAX, egui::Button::new("+"))
+                    .on_hover_text("One more shark");
+                rects.insert("physics_sharks_plus", plus.rect);
+                if plus.clicked() {
+                    physics.sharks += 1;
+                }
+            });
+            ui.end_row();
+
+            let help = "How fast the water flows round the tank. A fish that stops \
+                        swimming drifts with it; to stay put it must swim against it";
+            ui.label("Current").on_hover_text(help);
+            let current = ui
+                .add(
+                    egui::Slider::new(&mut physics.current_m_per_s, 0.0..=CURRENT_MAX_M_PER_S)
+                        .suffix(" m/s")
+                        .max_decimals(2),
+                )
+                .on_hover_text(help);
+            rects.insert("physics_current", current.rect);
+            ui.end_row();
+        });
+
+    ui.label("The fish…");
+    for behaviour in PhysicsBehaviour::ALL {
+        let radio = ui
+            .radio_value(&mut physics.behaviour, behaviour, behaviour.label())
+            .on_hover_text(behaviour.explanation());
+        rects.insert(
+            &format!("physics_{}", behaviour.label().to_lowercase()),
+            radio.rect,
+        );
+    }
+    ui.label(egui::RichText::new(physics.behaviour.explanation()).weak());
+
+    ui.add_space(4.0);
+    let body = ui
+        .checkbox(&mut physics.show_body, "Show masses and springs")
+        .on_hover_text(
+            "Draw each fish's skeleton: white dots are the 23 masses, lines the springs. \
+             The 12 muscles glow red when they pull and pale blue when they rest",
+        );
+    rects.insert("show_body", body.rect);
+    let forces = ui
+        .checkbox(&mut physics.show_forces, "Show forces")
+        .on_hover_text(
+            "Yellow: the water pushing on the body (the push on the beating tail drives the \
+             fish forward). Green: where the fish wants to go. White: where it goes. \
+             Blue: the current",
+        );
+    rects.insert("show_forces", forces.rect);
+
+    ui.separator();
+    match physics.selected {
+        None => {
+            ui.label(egui::RichText::new("Selected fish").strong());
+            ui.label(
+                egui::RichText::new(
+                    "Click a fish in the tank to select it: then you can steer it by hand, \
+                     follow it with the camera and watch its muscles.",
+                )
+                .weak(),
+            );
+        }
+        Some(index) => {
+            ui.horizontal(|ui| {
+                ui.label(
+                    egui::RichText::new(format!(
+                        "Selected: {} {index}",
+                        if index < physics.fish_count {
+                            "fish"
+                        } else {
+                            "shark"
+                        }
+                    ))
+                    .strong(),
+                );
+                let clear = ui
+                    .small_button("Deselect")
+                    .on_hover_text("Let go of this fish");
+                rects.insert("deselect", clear.rect);
+                if clear.clicked() {
+                    physics.selected = None;
+                    physics.hand_control = false;
+                    physics.follow = false;
+                }
+            });
+            if physics.selected.is_some() {
+                selected_fish_ui(ui, physics, rects, &mut actions);
+            }
+        }
+    }
+    actions
+}
+
+fn selected_fish_ui(
+    ui: &mut egui::Ui,
+    physics: &mut PhysicsSettings,
+    rects: &mut WidgetRects,
+    actions: &mut Vec<PanelAction>,
+) {
+    let follow = ui
+        .checkbox(&mut physics.follow, "Camera follows it")
+        .on_hover_text("Keep this fish in the middle of the view as it swims");
+    rects.insert("follow", follow.rect);
+    let hand = ui
+        .checkbox(&mut physics.hand_control, "Steer it by hand")
+        .on_hover_text(
+            "You give the orders: how fast its tail beats and when it turns. \
+             The other fish keep steering themselves",
+        );
+    rects.insert("hand_control", hand.rect);
+    ui.add_enabled_ui(physics.hand_control, |ui| {
+        egui::Grid::new("hand_grid")
+            .num_columns(2)
+            .spacing([8.0, 6.0])
+            .show(ui, |ui| {
+                let help = "How hard the tail muscles beat: 0 rests, 1 is the fastest swimming";
+                ui.label("Swim").on_hover_text(help);
+                let speed = ui
+                    .add(egui::Slider::new(&mut physics.hand_speed, 0.0..=1.0).max_decimals(2))
+                    .on_hover_text(help);
+                rects.insert("hand_speed", speed.rect);
+                ui.end_row();
+
+                let help = "Tilt the side fins: up makes the fish climb, down makes it dive \
+                            (only while it swims)";
+                ui.label("Fins").on_hover_text(help);
+                let pitch = ui
+                    .add(
+                        egui::Slider::new(
+                            &mut physics.hand_pitch_deg,
+                            -HAND_PITCH_MAX_DEG..=HAND_PITCH_MAX_DEG,
+                        )
+                        .suffix("°")
+                        .max_decimals(0),
+                    )
+                    .on_hover_text(help);
+                rects.insert("hand_pitch", pitch.rect);
+                ui.end_row();
+
+                let help = "The turn the button asks for: positive to the fish's left, \
+                            negative to its right. Turns above 90° are made of smaller ones";
+                ui.label("Turn").on_hover_text(help);
+                ui.horizontal(|ui| {
+                    let angle = ui
+                        .add(
+                            egui::DragValue::new(&mut physics.turn_angle_deg)
+                                .range(-TURN_MAX_DEG..=TURN_MAX_DEG)
+                                .suffix("°")
+                                .speed(1.0),
+                        )
+                        .on_hover_text(help);
+                    rects.insert("turn_angle", angle.rect);
+                    let left = physics.turn_angle_deg >= 0.0;
+                    let turn = ui
+                        .button(if left { "Turn left" } else { "Turn right" })
+                        .on_hover_text(
+                            "Contract the muscles on one side quickly, then let them go \
+                             slowly: the fish bends and swims round",
+                        );
+                    rects.insert("turn", turn.rect);
+                    if turn.clicked() {
+                        actions.push(PanelAction::Turn(physics.turn_angle_deg));
+                    }
+                });
+                ui.end_row();
+            });
+    });
+}
+
+/// The selected fish's muscles (three plots, one per body segment, four muscles
+/// each) and speed over the last [`BODY_TRACE_SECS`].
+pub fn body_plots_ui(ui: &mut egui::Ui, run: &Run, selected: Option<u32>, rects: &mut WidgetRects) {
+    let Some(index) = selected else {
+        ui.centered_and_justified(|ui| {
+            ui.label(
+                egui::RichText::new(
+                    "Click a fish to see its twelve muscles at work and how fast it swims.",
+                )
+                .weak(),
+            );
+        });
+        return;
+    };
+    let trace = run.body_trace();
+    let now = trace.back().map_or(0.0, |s| s.time_secs);
+    let start = now - BODY_TRACE_SECS;
+    let segments = [
+        (MuscleSegment::Anterior, "Front muscles (turning)"),
+        (
+            MuscleSegment::Middle,
+            "Middle muscles (turning and swimming)",
+        ),
+        (MuscleSegment::Posterior, "Tail muscles (swimming)"),
+    ];
+    let width = (ui.available_width() - 3.0 * 8.0) / 4.0;
+    let height = ui.available_height().max(60.0);
+    ui.horizontal(|ui| {
+        for (k, (segment, title)) in segments.into_iter().enumerate() {
+            ui.vertical(|ui| {
+                ui.set_width(width);
+                ui.label(egui::RichText::new(title).small()).on_hover_text(
+                    "How hard each muscle of this part pulls, from 0 (resting) to 1 (fully \
+                     contracted). Left and right take turns: that is the tail beat",
+                );
+                let plot = Plot::new(("muscles", index, k))
+                    .height(height - 22.0)
+                    .include_y(0.0)
+                    .include_y(1.0)
+                    .include_x(start)
+                    .include_x(now)
+                    .allow_drag(false)
+                    .allow_zoom(false)
+                    .allow_scroll(false)
+                    .legend(Legend::default().position(egui_plot::Corner::LeftTop))
+                    .show(ui, |plot| {
+                        for (side, side_name) in [(Side::Left, "left"), (Side::Right, "right")] {
+                            for (offset, part) in [(0, "top"), (1, "bottom")] {
+                                let m = muscle_index(segment, side) + offset;
+                                let points: PlotPoints = trace
+                                    .iter()
+                                    .map(|s| [s.time_secs, f64::from(s.muscles[m])])
+                                    .collect();
+                                let color = match side {
+                                    Side::Left => muscle_color(0.9 - 0.3 * offset as f32),
+                                    Side::Right => {
+                                        egui::Color32::from_rgb(90, 180 - 40 * offset as u8, 255)
+                                    }
+                                };
+                                plot.line(
+                                    Line::new(format!("{side_name} {part}"), points).color(color),
+                                );
+                            }
+                        }
+                    });
+                rects.insert(&format!("muscle_plot_{k}"), plot.response.rect);
+            });
+        }
+        ui.vertical(|ui| {
+            ui.set_width(width);
+            ui.label(egui::RichText::new("Speed (m/s)").small())
+                .on_hover_text("How fast the fish's middle moves, in metres per second");
+            let plot = Plot::new(("speed", index))
+                .height(height - 22.0)
+                .include_y(0.0)
+                .include_x(start)
+                .include_x(now)
+                .allow_drag(false)
+                .allow_zoom(false)
+                .allow_scroll(false)
+                .show(ui, |plot| {
+                    let points: PlotPoints = trace
+                        .iter()
+                        .map(|s| [s.time_secs, f64::from(s.speed_m_per_s)])
+                        .collect();
+                    plot.line(Line::new("speed", points).color(egui::Color32::WHITE));
+                });
+            rects.insert("speed_plot", plot.response.rect);
+        });
+    });
+}
