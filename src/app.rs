@@ -20,6 +20,10 @@ use crate::ui::{
     metrics_panel_ui, mode_label, side_color, status_line_ui,
 };
 
+/// Physical animals whose screen rectangles `shoal.widgets()` reports (`animal_0`,
+/// …), for tests that click a fish. 20: the default tank's ten fish and shark.
+const ANIMAL_RECTS_MAX: usize = 20;
+
 /// Share of the way the follow camera moves towards the selected fish each frame
 /// (0.12, chosen: smooth at 30–60 frames/s, and the fish never leaves the view).
 const FOLLOW_SMOOTHING: f32 = 0.12;
@@ -414,6 +418,16 @@ impl ShoalApp {
             }
             if let Some(selected) = physics.selected {
                 body_overlay::draw_selection(&painter, rect, &self.camera, run, alpha, selected);
+            }
+            // Where the first animals are on screen, so browser tests can click one.
+            for (i, r) in body_overlay::animal_screen_rects(rect, &self.camera, run, alpha)
+                .into_iter()
+                .take(ANIMAL_RECTS_MAX)
+                .enumerate()
+            {
+                if let Some(r) = r {
+                    self.widget_rects.insert(&format!("animal_{i}"), r);
+                }
             }
         }
         if self.lab.comparing() {

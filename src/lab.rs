@@ -19,7 +19,7 @@ use crate::sim::{HandCommand, PhysicsConfig, PhysicsWorld, World, WorldConfig};
 const PHYSICS_SAMPLE_EVERY_STEPS: u64 = 5;
 
 /// Seconds of the selected fish's muscles and speed kept for the plots.
-pub const BODY_TRACE_SECS: f64 = 20.0;
+pub const BODY_TRACE_SECS: f64 = 10.0;
 
 /// One step of the selected physical fish, for the muscle and speed plots.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -221,6 +221,37 @@ fn camera_right(camera: &OrbitCamera) -> Vec3 {
     forward.cross(Vec3::Y).normalize_or(Vec3::X)
 }
 
+/// Each physical animal's square on screen (centred on its middle, as wide as its
+/// drawn length), `None` when behind the camera.
+pub fn animal_screen_rects(
+    rect: egui::Rect,
+    camera: &OrbitCamera,
+    run: &Run,
+    alpha: f32,
+) -> Vec<Option<egui::Rect>> {
+    let Some(physics) = run.physics() else {
+        return Vec::new();
+    };
+    let project = Projector::new(camera, rect);
+    physics
+        .animals()
+        .iter()
+        .enumerate()
+        .map(|(i, animal)| {
+            let nodes = run.drawn_nodes_m(i, alpha);
+            let centre = nodes.iter().sum::<Vec3>() / NODE_COUNT as f32;
+            let c = project.point(centre)?;
+            let half = project
+                .point(centre + camera_right(camera) * 0.5 * animal.body_length_m())
+                .map_or(4.0, |e| c.distance(e).max(4.0));
+            Some(egui::Rect::from_center_size(
+                c,
+                egui::vec2(2.0 * half, 2.0 * half),
+            ))
+        })
+        .collect()
+}
+
 /// The physical animal drawn nearest to `pointer` (within its drawn half-length
 /// plus a little slack), the nearest to the camera first when several overlap.
 pub fn pick_animal(

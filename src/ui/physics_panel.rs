@@ -3,7 +3,7 @@
 //! plots: its twelve muscle contractions and its speed.
 
 use eframe::egui;
-use egui_plot::{Legend, Line, Plot, PlotPoints};
+use egui_plot::{Line, Plot, PlotPoints};
 
 use super::WidgetRects;
 use super::body_overlay::muscle_color;
@@ -256,9 +256,21 @@ pub fn body_plots_ui(ui: &mut egui::Ui, run: &Run, selected: Option<u32>, rects:
         for (k, (segment, title)) in segments.into_iter().enumerate() {
             ui.vertical(|ui| {
                 ui.set_width(width);
-                ui.label(egui::RichText::new(title).small()).on_hover_text(
+                ui.horizontal(|ui| {
+                    ui.label(egui::RichText::new(title).small());
+                    ui.label(egui::RichText::new("left").small().color(muscle_color(0.9)));
+                    ui.label(
+                        egui::RichText::new("right")
+                            .small()
+                            .color(egui::Color32::from_rgb(90, 180, 255)),
+                    );
+                })
+                .response
+                .on_hover_text(
                     "How hard each muscle of this part pulls, from 0 (resting) to 1 (fully \
-                     contracted). Left and right take turns: that is the tail beat",
+                     contracted), over the last seconds. Red: the fish's left side, blue: its \
+                     right side (two muscles each, top and bottom). Left and right take \
+                     turns: that is the tail beat",
                 );
                 let plot = Plot::new(("muscles", index, k))
                     .height(height - 22.0)
@@ -269,7 +281,6 @@ pub fn body_plots_ui(ui: &mut egui::Ui, run: &Run, selected: Option<u32>, rects:
                     .allow_drag(false)
                     .allow_zoom(false)
                     .allow_scroll(false)
-                    .legend(Legend::default().position(egui_plot::Corner::LeftTop))
                     .show(ui, |plot| {
                         for (side, side_name) in [(Side::Left, "left"), (Side::Right, "right")] {
                             for (offset, part) in [(0, "top"), (1, "bottom")] {
