@@ -1,6 +1,6 @@
-// The aquarium: background (room + water volume), static meshes, instanced animals
-// (fish and sharks swim with `vs_fish`, stingrays with `vs_ray`) and the water
-// surface. Lighting is computed in linear RGB; the output is gamma-encoded
+// The aquarium: background (room + water volume), static meshes, deformed bodies
+// (physical fish skinned on the CPU, `vs_body`), instanced animals (fish and sharks
+// swim with `vs_fish`, stingrays with `vs_ray`) and the water surface. Lighting is computed in linear RGB; the output is gamma-encoded
 // because the scene image is a plain Rgba8Unorm texture (see render_tier.rs).
 
 struct Scene {
@@ -24,6 +24,19 @@ const FISH_EYE: u32 = 5u;
 const SHARK_SKIN: u32 = 6u;
 const RAY_BACK: u32 = 7u;
 const RAY_BELLY: u32 = 8u;
+const SKIN_FISH: u32 = 9u;
+const SKIN_FIN: u32 = 10u;
+const SKIN_SHARK: u32 = 11u;
+const SKIN_SHARK_FIN: u32 = 12u;
+
+// The material word of a vertex: the material in bits 0-4, a highlight level 0-7
+// in bits 5-7 (deformed bodies only), and for deformed bodies the skin coordinates
+// in bits 8-31 (body_skin.rs: `SKIN_LOCAL_MIN`, `SKIN_LOCAL_MAX`, `MATERIAL_MASK`).
+const MATERIAL_MASK: u32 = 31u;
+const SKIN_LOCAL_MIN: vec3<f32> = vec3<f32>(-0.65, -0.4, -0.4);
+const SKIN_LOCAL_MAX: vec3<f32> = vec3<f32>(0.6, 0.4, 0.4);
+// Undersides of shark fins (body_skin.rs `SHARK_BELLY_RGB`).
+const SHARK_BELLY: vec3<f32> = vec3<f32>(0.80, 0.81, 0.80);
 
 const TAU: f32 = 6.2831853;
 
@@ -47,9 +60,11 @@ struct Varyings {
     @location(1) normal: vec3<f32>,
     @location(2) color: vec4<f32>,
     // Position in the animal's mesh before animation (body lengths; x forward, y up);
-    // zero for static meshes. Patterns are painted in this frame so they stay on the
-    // skin as the body bends.
+    // zero for static meshes; for deformed bodies their skin coordinates (snout at
+    // x = 0.5, tail-fin nodes at -0.5, y up). Patterns are painted in this frame so
+    // they stay on the skin as the body bends.
     @location(3) local: vec3<f32>,
+    // Material word, bits 0-7 (material and highlight level).
     @location(4) @interpolate(flat) material: u32,
 };
 
@@ -165,6 +180,23 @@ fn vs_static(v: VertexIn) -> Varyings {
     return out;
 }
 
+// ---------------------------------------------------------------- deformed bodies
+
+// Physical fish, skinned to their nodes on the CPU (body_skin.rs): world-space
+// vertices; the skin coordinates come packed in the material word.
+@vertex
+fn vs_body(v: VertexIn) -> Varyings {
+    var out: Varyings;
+    out.world = v.position;
+    out.clip = scene.world_to_clip * vec4<f32>(v.position, 1.0);
+    out.normal = v.normal;
+    out.color = v.color;
+    let q = vec3<u32>(v.material >> 8u, v.material >> 16u, v.material >> 24u) & vec3<u32>(255u);
+    out.local = mix(SKIN_LOCAL_MIN, SKIN_LOCAL_MAX, vec3<f32>(q) / 255.0);
+    out.material = v.material & 255u;
+    return out;
+}
+
 // ---------------------------------------------------------------- animals
 
 // Places an animated mesh point `p` with normal `n` (mesh frame: body lengths, x
@@ -255,8 +287,12 @@ fn fs_lit(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) vec4
     var albedo = in.color.rgb;
     var shininess = 0.0;
     var caustic_gain = 0.55;
+    // Light passing through thin fins from behind.
+    var translucency = 0.0;
+    let material = in.material & MATERIAL_MASK;
+    let highlight = f32(in.material >> 5u) / 7.0;
 
-    switch in.material {
+    switch material {
         case SAND: {
             let ripple = sin(in.world.x * 5.0 + sin(in.world.z * 1.3) * 2.0) * 0.5 + 0.5;
             let grain = hash2(floor(in.world.xz * 90.0));
@@ -325,17 +361,62 @@ fn fs_lit(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) vec4
             albedo = vec3<f32>(0.86, 0.82, 0.74);
             shininess = 8.0;
         }
+        case SKIN_FISH: {
+            // Countershading is in the vertex colour. Vertical bars (pattern
+            // strength in alpha) from behind the head to the caudal peduncle.
+            let l = in.local;
+            let bars = smoothstep(0.55, 0.75, sin(l.x * 45.0) * 0.5 + 0.5) * in.color.a;
+            let span = smoothstep(-0.33, -0.29, l.x) * (1.0 - smoothstep(0.3, 0.34, l.x));
+            albedo = mix(albedo, albedo * 0.25, bars * span);
+            shininess = 40.0;
+        }
+        case SKIN_FIN: {
+            albedo = in.color.rgb * 0.8 + vec3<f32>(0.12);
+            shininess = 8.0;
+            translucency = 0.35;
+        }
+        case SKIN_SHARK: {
+            // Countershading is in the vertex colour. Five gill slits behind the eye,
+            // on the sides around the axis.
+            let l = in.local;
+            let gx = (l.x - 0.277) / 0.069;
+            if (gx > 0.0 && gx < 1.0 && abs(l.z) > 0.03 && abs(l.y + 0.005) < 0.04) {
+                let slit = smoothstep(0.7, 0.95, sin(gx * 5.0 * TAU) * 0.5 + 0.5);
+                albedo *= 1.0 - 0.45 * slit;
+            }
+            shininess = 20.0;
+        }
+        case SKIN_SHARK_FIN: {
+            let l = in.local;
+            // Pale where the fin faces down (pectoral and pelvic undersides).
+            albedo = mix(albedo, SHARK_BELLY, 0.85 * (1.0 - smoothstep(-0.35, 0.05, n.y)));
+            // Dusky or black tips (pattern strength in alpha): the first dorsal's
+            // apex, the pectoral tips, the tail's lobe tips.
+            let dorsal = smoothstep(0.215, 0.25, l.y);
+            let pectoral = smoothstep(0.17, 0.21, abs(l.z));
+            let upper_lobe = 1.0 - smoothstep(-0.565, -0.53, l.x);
+            let lower_lobe = smoothstep(0.065, 0.09, -l.y) * (1.0 - smoothstep(-0.44, -0.4, l.x));
+            let tip = max(max(dorsal, pectoral), max(upper_lobe, lower_lobe));
+            albedo = mix(albedo, albedo * 0.15, tip * in.color.a);
+            shininess = 20.0;
+            translucency = 0.1;
+        }
         default: {}
     }
 
     let diffuse = max(dot(n, sun), 0.0);
     let sky = 0.5 + 0.5 * n.y;
-    let light = 0.28 + 0.22 * sky + 0.75 * diffuse;
+    let light = 0.28 + 0.22 * sky + 0.75 * diffuse + translucency * max(-dot(n, sun), 0.0);
     let caustic = caustics(in.world) * caustic_gain * max(n.y, 0.0);
     var color = albedo * (light + caustic);
     if (shininess > 0.0) {
         let h = normalize(sun + to_eye);
         color += vec3<f32>(0.5) * pow(max(dot(n, h), 0.0), shininess) * diffuse;
+    }
+    if (highlight > 0.0) {
+        // A selected fish: a warm tint, strongest at the rim.
+        let rim = 1.0 - abs(dot(n, to_eye));
+        color = mix(color, vec3<f32>(1.0, 0.86, 0.35), highlight * (0.2 + 0.7 * rim * rim));
     }
     return to_gamma(fog(color, in.world));
 }

@@ -44,6 +44,8 @@ struct BuiltView {
     fish: Arc<Vec<FishInstance>>,
     sharks: Arc<Vec<FishInstance>>,
     rays: Arc<Vec<FishInstance>>,
+    /// Deformed bodies of physical fish (`BodySkin::append_deformed`); empty for now.
+    bodies: Arc<Mesh>,
 }
 
 /// Builds a [`SceneCallback`] each frame for each view, reusing allocations.
@@ -147,6 +149,7 @@ impl FrameBuilder {
             sharks: Arc::clone(&view.sharks),
             rays: Arc::clone(&view.rays),
             statics,
+            bodies: Arc::clone(&view.bodies),
             size_px,
         }
     }

@@ -40,6 +40,16 @@ pub enum Material {
     RayBack = 7,
     /// Stingray's underside: pale cream.
     RayBelly = 8,
+    /// Deformed fish body (`body_skin`): the vertex colour is already countershaded;
+    /// dark vertical bars by the pattern strength (colour alpha).
+    SkinFish = 9,
+    /// Deformed fish fins: lighter than the body, lit through from behind.
+    SkinFin = 10,
+    /// Deformed shark body: the vertex colour is already countershaded; gill slits.
+    SkinShark = 11,
+    /// Deformed shark fins: pale where they face down, dark tips by the pattern
+    /// strength (colour alpha).
+    SkinSharkFin = 12,
 }
 
 /// One vertex of a static or fish mesh. 32 bytes.
@@ -47,9 +57,12 @@ pub enum Material {
 #[repr(C)]
 pub struct Vertex {
     pub position: [f32; 3],
+    /// A [`Material`]; deformed bodies also pack a highlight level and their skin
+    /// coordinates in the upper bits (see `body_skin`).
     pub material: u32,
     pub normal: [f32; 3],
-    /// Packed RGBA8 colour (rocks, pillars); unused for fish.
+    /// Packed RGBA8 colour (rocks, pillars, deformed bodies); unused for instanced
+    /// animals.
     pub color: u32,
 }
 

@@ -1,6 +1,7 @@
 //! Rendering: reads the simulation, never writes it. wgpu only; no egui widgets here
 //! except the paint callback that puts the 3D view inside egui.
 
+pub mod body_skin;
 pub mod fish_palette;
 pub mod frame_builder;
 pub mod mesh;
@@ -8,6 +9,7 @@ pub mod orbit_camera;
 pub mod render_tier;
 pub mod scene_renderer;
 
+pub use body_skin::{BodyLook, BodyShape, BodySkin};
 pub use frame_builder::FrameBuilder;
 pub use orbit_camera::OrbitCamera;
 pub use render_tier::{RenderCaps, RenderTier};

@@ -8,8 +8,9 @@
 //!
 //! Passes, in order: the room and the water volume behind everything (a full-screen
 //! triangle that ray-casts the tank box), static meshes (sand, rocks, pillars, tank
-//! frame), instanced animals (fish near and far, sharks, stingrays), and the
-//! translucent water surface.
+//! frame), deformed bodies (physical fish skinned to their nodes on the CPU each
+//! frame, `body_skin`), instanced animals (fish near and far, sharks, stingrays),
+//! and the translucent water surface.
 //!
 //! Several 3D views can be drawn in one frame (compare mode shows two tanks), each
 //! its own paint callback with its own `view_id`. egui runs every callback's
@@ -111,6 +112,10 @@ pub struct SceneCallback {
     /// Stingrays, drawn with `mesh::stingray`; `tail_phase_rad` drives the wing beat.
     pub rays: Arc<Vec<FishInstance>>,
     pub statics: StaticScene,
+    /// World-space meshes rebuilt every frame: physical fish, filled with
+    /// `BodySkin::append_deformed`. Uploaded each frame into a buffer of the view
+    /// that grows as needed; empty costs nothing.
+    pub bodies: Arc<Mesh>,
     /// Size of the 3D view in physical pixels.
     pub size_px: [u32; 2],
 }
@@ -237,6 +242,92 @@ impl GpuMesh {
     }
 }
 
+/// A mesh rewritten every frame (deformed bodies), in buffers that only grow.
+struct DynamicMesh {
+    vertices: wgpu::Buffer,
+    indices: wgpu::Buffer,
+    index_count: u32,
+    /// The indices last written: they stay the same from frame to frame while the
+    /// same bodies are drawn, and are then not written again.
+    written_indices: Vec<u32>,
+}
+
+impl DynamicMesh {
+    /// Bytes a buffer holds at first; it grows to the next power of two.
+    const FIRST_CAPACITY: u64 = 1 << 16;
+
+    fn buffer(
+        device: &wgpu::Device,
+        label: &str,
+        size: u64,
+        usage: wgpu::BufferUsages,
+    ) -> wgpu::Buffer {
+        device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(label),
+            size,
+            usage: usage | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        })
+    }
+
+    fn new(device: &wgpu::Device) -> Self {
+        Self {
+            vertices: Self::buffer(
+                device,
+                "bodies",
+                Self::FIRST_CAPACITY,
+                wgpu::BufferUsages::VERTEX,
+            ),
+            indices: Self::buffer(
+                device,
+                "bodies",
+                Self::FIRST_CAPACITY,
+                wgpu::BufferUsages::INDEX,
+            ),
+            index_count: 0,
+            written_indices: Vec::new(),
+        }
+    }
+
+    /// Writes `mesh`, growing a buffer when it is too small; draws nothing if the
+    /// mesh is empty or larger than the device allows.
+    fn write(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, mesh: &Mesh) {
+        self.index_count = 0;
+        if mesh.indices.is_empty() || mesh.vertices.is_empty() {
+            return;
+        }
+        let vertex_bytes: &[u8] = bytemuck::cast_slice(&mesh.vertices);
+        let index_bytes: &[u8] = bytemuck::cast_slice(&mesh.indices);
+        let grown = |buffer: &wgpu::Buffer, needed: usize| -> Option<Option<u64>> {
+            let needed = needed as u64;
+            if needed <= buffer.size() {
+                return Some(None);
+            }
+            let max = device.limits().max_buffer_size;
+            (needed <= max).then(|| Some(needed.next_power_of_two().min(max)))
+        };
+        let (Some(vertex_size), Some(index_size)) = (
+            grown(&self.vertices, vertex_bytes.len()),
+            grown(&self.indices, index_bytes.len()),
+        ) else {
+            return;
+        };
+        if let Some(size) = vertex_size {
+            self.vertices = Self::buffer(device, "bodies", size, wgpu::BufferUsages::VERTEX);
+        }
+        if let Some(size) = index_size {
+            self.indices = Self::buffer(device, "bodies", size, wgpu::BufferUsages::INDEX);
+            self.written_indices.clear();
+        }
+        queue.write_buffer(&self.vertices, 0, vertex_bytes);
+        if self.written_indices != mesh.indices {
+            queue.write_buffer(&self.indices, 0, index_bytes);
+            self.written_indices.clone_from(&mesh.indices);
+        }
+        self.index_count = mesh.indices.len() as u32;
+    }
+}
+
 /// The instanced meshes, by what they draw.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Animal {
@@ -294,6 +385,8 @@ struct ViewState {
     ranges: [(Animal, Range<u32>); 4],
     statics: Option<GpuMesh>,
     static_generation: Option<u64>,
+    /// Deformed bodies; made when the view first draws some.
+    bodies: Option<DynamicMesh>,
     targets: Option<Targets>,
 }
 
@@ -307,6 +400,8 @@ pub struct SceneRenderer {
     swim_pipeline: wgpu::RenderPipeline,
     /// Stingrays (`vs_ray`).
     ray_pipeline: wgpu::RenderPipeline,
+    /// Deformed bodies in world space (`vs_body`), both faces drawn.
+    body_pipeline: wgpu::RenderPipeline,
     surface_pipeline: wgpu::RenderPipeline,
     blit_pipeline: wgpu::RenderPipeline,
     blit_layout: wgpu::BindGroupLayout,
@@ -454,8 +549,19 @@ impl SceneRenderer {
             "stingrays",
             "vs_ray",
             "fs_lit",
-            &[Some(vertex_layout), Some(instance_layout)],
+            &[Some(vertex_layout.clone()), Some(instance_layout)],
             Some(wgpu::Face::Back),
+            depth(true),
+            None,
+        );
+        // Deformed bodies: fins are single sheets and `fs_lit` turns normals to the
+        // eye, so no culling (which also keeps a mirrored placement visible).
+        let body_pipeline = pipeline(
+            "deformed bodies",
+            "vs_body",
+            "fs_lit",
+            &[Some(vertex_layout)],
+            None,
             depth(true),
             None,
         );
@@ -540,6 +646,7 @@ impl SceneRenderer {
             static_pipeline,
             swim_pipeline,
             ray_pipeline,
+            body_pipeline,
             surface_pipeline,
             blit_pipeline,
             blit_layout,
@@ -582,6 +689,7 @@ impl SceneRenderer {
             ranges: Animal::ALL.map(|animal| (animal, 0..0)),
             statics: None,
             static_generation: None,
+            bodies: None,
             targets: None,
         }
     }
@@ -640,8 +748,8 @@ impl SceneRenderer {
     }
 
     /// Uploads one view's frame: uniforms, every animal into one instance buffer
-    /// (grown to the next power of two when too small), and the static mesh when its
-    /// generation changed.
+    /// (grown to the next power of two when too small), the deformed bodies (a
+    /// buffer that grows likewise), and the static mesh when its generation changed.
     fn upload(
         view: &mut ViewState,
         device: &wgpu::Device,
@@ -665,6 +773,13 @@ impl SceneRenderer {
                 );
             }
             offset += animals.len();
+        }
+        if !frame.bodies.indices.is_empty() {
+            view.bodies
+                .get_or_insert_with(|| DynamicMesh::new(device))
+                .write(device, queue, &frame.bodies);
+        } else if let Some(bodies) = &mut view.bodies {
+            bodies.index_count = 0;
         }
         if view.static_generation != Some(frame.statics.generation) {
             view.statics = GpuMesh::upload(device, "static scene", &frame.statics.mesh);
@@ -713,6 +828,13 @@ impl SceneRenderer {
             pass.set_vertex_buffer(0, statics.vertices.slice(..));
             pass.set_index_buffer(statics.indices.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..statics.index_count, 0, 0..1);
+        }
+
+        if let Some(bodies) = view.bodies.as_ref().filter(|b| b.index_count > 0) {
+            pass.set_pipeline(&self.body_pipeline);
+            pass.set_vertex_buffer(0, bodies.vertices.slice(..));
+            pass.set_index_buffer(bodies.indices.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..bodies.index_count, 0, 0..1);
         }
 
         let stride = size_of::<FishInstance>() as u64;
@@ -859,6 +981,28 @@ mod tests {
         assert!(cache.get(10).is_some() && cache.get(11).is_some() && cache.get(20).is_some());
     }
 
+    /// The scene shader parses and validates (naga, as wgpu does natively) and has
+    /// every entry point the pipelines name.
+    #[cfg(not(target_arch = "wasm32"))]
+    #[test]
+    fn scene_shader_is_valid_wgsl() {
+        use wgpu::naga;
+        let module = naga::front::wgsl::parse_str(SCENE_SHADER)
+            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(SCENE_SHADER)));
+        naga::valid::Validator::new(
+            naga::valid::ValidationFlags::all(),
+            naga::valid::Capabilities::default(),
+        )
+        .validate(&module)
+        .unwrap_or_else(|e| panic!("{}", e.emit_to_string(SCENE_SHADER)));
+        for name in ["vs_static", "vs_body", "vs_fish", "vs_ray", "fs_lit"] {
+            assert!(
+                module.entry_points.iter().any(|e| e.name == name),
+                "no entry point {name}"
+            );
+        }
+    }
+
     #[test]
     fn animals_share_one_instance_buffer_in_kind_order() {
         let one = FishInstance::zeroed();
@@ -873,6 +1017,7 @@ mod tests {
                 generation: 0,
                 mesh: Arc::new(Mesh::default()),
             },
+            bodies: Arc::new(Mesh::default()),
             size_px: [1, 1],
         };
         assert_eq!(
