@@ -77,6 +77,8 @@ pub struct ShoalApp {
     page_url: Option<String>,
     /// The obstacle being dragged with the Move tool: tank and index.
     dragging: Option<(Side, usize)>,
+    /// Is the camera following the selected fish (physics scene)?
+    following: bool,
     ctx: egui::Context,
 }
 
@@ -115,6 +117,7 @@ impl ShoalApp {
             notice: None,
             page_url: None,
             dragging: None,
+            following: false,
             ctx: cc.egui_ctx.clone(),
         })
     }
@@ -301,6 +304,7 @@ impl ShoalApp {
     fn follow_selected(&mut self, settings: &Settings) {
         let physics = &settings.physics;
         if settings.scene != Scene::Physics || !physics.follow {
+            self.following = false;
             return;
         }
         let Some(selected) = physics.selected else {
@@ -316,9 +320,14 @@ impl ShoalApp {
         let nodes = run.drawn_nodes_m(selected as usize, self.lab.draw_alpha());
         let centre = nodes.iter().sum::<Vec3>() / nodes.len() as f32;
         self.camera.target_m = self.camera.target_m.lerp(centre, FOLLOW_SMOOTHING);
-        // Close enough to see the body bend (about 4 m), unless the teacher zooms.
-        if self.camera_is_default {
-            self.camera.distance_m = 4.0;
+        // On starting to follow, come close enough to see the body bend: about eight
+        // body lengths away (the teacher may zoom afterwards).
+        if !self.following {
+            self.following = true;
+            let length = run
+                .physics()
+                .map_or(0.5, |p| p.animals()[selected as usize].body_length_m());
+            self.camera.distance_m = self.camera.distance_m.min(8.0 * length);
         }
         self.camera_is_default = false;
         self.ctx.request_repaint();
@@ -379,6 +388,7 @@ impl ShoalApp {
         let run = &self.lab.runs()[index];
         // The water animates with simulated time: pausing freezes the whole picture.
         let time_secs = run.time_secs() as f32;
+        self.frame_builders[index].set_selected(settings.physics.selected);
         let frame = self.frame_builders[index].build(
             run,
             self.lab.draw_alpha(),

@@ -225,7 +225,7 @@ impl PhysicsReport {
                 heading: a.heading().to_array(),
                 desired_velocity_m_per_s: physics.desired_m_per_s(index).to_array(),
                 swim_speed_fraction: a.motor().speed_fraction,
-                turning: a.motor().turning,
+                turning: a.is_turning(),
                 fin_left_rad: a.motor().fins.left_angle_rad,
                 fin_right_rad: a.motor().fins.right_angle_rad,
                 muscles: a.motor().muscles,

@@ -15,11 +15,13 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use bytemuck::Zeroable;
 use glam::Vec3;
 
+use super::body_skin::{BodyLook, BodyShape, BodySkin};
 use super::fish_palette::{livery, ray_livery, shark_livery};
 use super::mesh::{self, Mesh};
 use super::orbit_camera::OrbitCamera;
 use super::scene_renderer::{FishInstance, SceneCallback, SceneUniforms, StaticScene, ViewCache};
 use crate::lab::Run;
+use crate::sim::BodySpecies;
 
 /// Fish drawn shorter than this (physical pixels, snout to tail root) use the
 /// low-poly mesh. Chosen by eye: below about 30 pixels the two meshes are hard to
@@ -44,17 +46,67 @@ struct BuiltView {
     fish: Arc<Vec<FishInstance>>,
     sharks: Arc<Vec<FishInstance>>,
     rays: Arc<Vec<FishInstance>>,
-    /// Deformed bodies of physical fish (`BodySkin::append_deformed`); empty for now.
+    /// Deformed bodies of the physical fish (physics scene), rebuilt every frame.
     bodies: Arc<Mesh>,
 }
+
+/// The two skinned shapes, built once.
+struct Skins {
+    fish: BodySkin,
+    shark: BodySkin,
+}
+
+/// How much the selected physical fish is tinted (the skin's highlight, 0–1).
+const SELECTED_HIGHLIGHT: f32 = 0.8;
 
 /// Builds a [`SceneCallback`] each frame for each view, reusing allocations.
 #[derive(Default)]
 pub struct FrameBuilder {
     views: ViewCache<BuiltView>,
+    skins: Option<Skins>,
+    /// The physical animal drawn highlighted.
+    selected: Option<usize>,
+}
+
+/// Skins every physical animal of `run` into `out`, interpolated by `alpha`,
+/// highlighting animal `selected`.
+fn build_bodies(
+    skins: &mut Option<Skins>,
+    selected: Option<usize>,
+    run: &Run,
+    alpha: f32,
+    out: &mut Mesh,
+) {
+    out.vertices.clear();
+    out.indices.clear();
+    let Some(physics) = run.physics() else {
+        return;
+    };
+    let skins = skins.get_or_insert_with(|| Skins {
+        fish: BodySkin::new(BodyShape::Fish),
+        shark: BodySkin::new(BodyShape::Shark),
+    });
+    for (i, animal) in physics.animals().iter().enumerate() {
+        let nodes = run.drawn_nodes_m(i, alpha);
+        let (skin, look) = match animal.species {
+            BodySpecies::Fish => (&skins.fish, BodyLook::fish(livery(animal.hue))),
+            BodySpecies::Shark => (&skins.shark, BodyLook::shark(shark_livery(animal.hue))),
+        };
+        let look = if selected == Some(i) {
+            look.highlighted(SELECTED_HIGHLIGHT)
+        } else {
+            look
+        };
+        skin.append_deformed(&nodes, &look, out);
+    }
 }
 
 impl FrameBuilder {
+    /// Highlights physical animal `index` (the selected fish) from the next frame on.
+    pub fn set_selected(&mut self, index: Option<u32>) {
+        self.selected = index.map(|i| i as usize);
+    }
+
     /// The frame for 3D view `view_id` (see [`SceneCallback::view_id`]) of
     /// `size_px` physical pixels at animation time `time_secs`.
     ///
@@ -133,6 +185,14 @@ impl FrameBuilder {
             let f = &ray.body;
             instance(f, run.drawn_stingray_m(i, alpha), ray_livery(f.hue).rgba())
         }));
+
+        build_bodies(
+            &mut self.skins,
+            self.selected,
+            run,
+            alpha,
+            Arc::make_mut(&mut view.bodies),
+        );
 
         let aspect = size_px[0] as f32 / size_px[1].max(1) as f32;
         SceneCallback {
