@@ -263,3 +263,97 @@ impl PhysicalFish {
         self.point.velocity_m_per_s = to_tank_frame(self.body.velocity_m_per_s());
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f32::consts::{FRAC_PI_2, PI};
+
+    fn level_angle_deg(from: Vec3, to: Vec3) -> f32 {
+        // + = to the fish's left in the tank frame (y up): left of h is y × h.
+        let (a, b) = (
+            Vec3::new(from.x, 0.0, from.z).normalize_or_zero(),
+            Vec3::new(to.x, 0.0, to.z).normalize_or_zero(),
+        );
+        Vec3::Y.cross(a).dot(b).atan2(a.dot(b)).to_degrees()
+    }
+
+    #[test]
+    fn the_bridge_steers_a_physical_fish_to_a_target_beside_it() {
+        let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+        // 4 m away, 90° to the fish's left (left of +x is −z with y up).
+        let target = Vec3::new(0.0, 0.0, -4.0);
+        let dt = fish.body().dt_secs();
+        let mut reached = None;
+        for step in 0..(90.0 / dt) as usize {
+            let to_target = target - fish.point.position_m;
+            if to_target.length() < fish.body_length_m() {
+                reached = Some(step as f32 * dt);
+                break;
+            }
+            let desired = to_target.normalize_or_zero() * fish.top_speed_m_per_s();
+            let intent = fish.plan(desired);
+            fish.step(&intent, Vec3::ZERO);
+        }
+        let secs = reached.expect("the fish reaches the target within 90 s");
+        assert!(secs > 10.0, "it swims there, no teleport: {secs} s");
+    }
+
+    #[test]
+    fn unequal_fins_yaw_and_roll_the_fish() {
+        // Returns the heading change (degrees, + left) and the mean signed roll
+        // (degrees, + = dorsal side leaning to the fish's right) while the fins hold.
+        let swim = |fins: PectoralFins| {
+            let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+            let cruise = MotorIntent {
+                speed_fraction: 1.0,
+                start_turn_deg: None,
+                fins: PectoralFins::NEUTRAL,
+            };
+            for _ in 0..40 {
+                fish.step(&cruise, Vec3::ZERO);
+            }
+            let heading = fish.heading();
+            let mut roll_sum = 0.0;
+            for _ in 0..100 {
+                fish.step(&MotorIntent { fins, ..cruise }, Vec3::ZERO);
+                let right = fish.heading().cross(Vec3::Y).normalize_or_zero();
+                roll_sum += fish.up().dot(right).asin().to_degrees();
+            }
+            (level_angle_deg(heading, fish.heading()), roll_sum / 100.0)
+        };
+        let (straight, level) = swim(PectoralFins::NEUTRAL);
+        // The left fin across the flow drags the left side back: the fish yaws left.
+        let (left_drag, _) = swim(PectoralFins {
+            left_angle_rad: PI,
+            right_angle_rad: FRAC_PI_2,
+        });
+        let (right_drag, _) = swim(PectoralFins {
+            left_angle_rad: FRAC_PI_2,
+            right_angle_rad: PI,
+        });
+        assert!(
+            left_drag > straight + 3.0,
+            "left drag {left_drag}°, straight {straight}°"
+        );
+        assert!(
+            right_drag < straight - 3.0,
+            "right drag {right_drag}°, straight {straight}°"
+        );
+        // Left fin lifting, right fin diving: the left side rises, the fish rolls to
+        // its right; the mirror image rolls it left. The righting couple (the swim
+        // bladder keeping the fish upright) keeps the roll small.
+        let (_, to_right) = swim(PectoralFins {
+            left_angle_rad: FRAC_PI_2 + 0.5,
+            right_angle_rad: FRAC_PI_2 - 0.5,
+        });
+        let (_, to_left) = swim(PectoralFins {
+            left_angle_rad: FRAC_PI_2 - 0.5,
+            right_angle_rad: FRAC_PI_2 + 0.5,
+        });
+        assert!(
+            to_right > level + 0.1 && to_left < level - 0.1,
+            "roll: right {to_right}°, left {to_left}°, level {level}°"
+        );
+    }
+}
