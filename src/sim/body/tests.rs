@@ -267,6 +267,50 @@ fn speed_table() {
     );
 }
 
+/// Timing of [`FishBody::step`] behind the figures in the `fish_body.rs` module doc:
+/// `cargo test --release --lib step_cost -- --ignored --nocapture`. A fish swimming
+/// at top speed (tail beating, water faces switching), after a 10 s warm-up; seven
+/// batches of 2000 steps, min and median reported (the machine may be shared).
+#[test]
+#[ignore]
+fn step_cost() {
+    let mut fish = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
+    let mut mc = SwimMc::default();
+    let mut step = |fish: &mut FishBody| {
+        let u = mc.step(&SwimParams::MAX, fish.dt_secs());
+        fish.step(
+            &BodyCommand {
+                muscle_contractions: u,
+                ..Default::default()
+            },
+            Vec3::ZERO,
+        );
+    };
+    for _ in 0..(10.0 / fish.dt_secs()) as usize {
+        step(&mut fish);
+    }
+    let batch = 2000;
+    let mut micros: Vec<f64> = (0..7)
+        .map(|_| {
+            let t0 = std::time::Instant::now();
+            for _ in 0..batch {
+                step(&mut fish);
+            }
+            t0.elapsed().as_secs_f64() * 1e6 / batch as f64
+        })
+        .collect();
+    micros.sort_by(f64::total_cmp);
+    let substeps = f64::from(fish.params().substeps);
+    println!(
+        "step cost: min {:.1} µs, median {:.1} µs per step; {:.2} / {:.2} µs per substep ({substeps} substeps)",
+        micros[0],
+        micros[3],
+        micros[0] / substeps,
+        micros[3] / substeps
+    );
+    assert!(fish.positions_m().iter().all(|p| p.is_finite()));
+}
+
 /// Search routine behind `SteeringMap::DEFAULT` and the turn table in `turn_mc.rs`:
 /// `cargo test --release turn_table -- --ignored --nocapture`.
 #[test]
