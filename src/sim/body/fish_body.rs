@@ -478,23 +478,24 @@ impl FishBody {
                 f64::from(spring_damping),
             );
             let mut kb = [[0.0; 3]; 3];
-            let mut block = [[0.0; 3]; 3];
-            for r_ in 0..3 {
-                for c_ in 0..3 {
+            let mut block = [0.0; 6];
+            let mut slot = 0;
+            for c_ in 0..3 {
+                for r_ in 0..3 {
                     let outer = d[r_] * d[c_];
                     let identity = if r_ == c_ { 1.0 } else { 0.0 };
                     kb[r_][c_] = c64 * (outer + t64 * (identity - outer));
-                    block[r_][c_] = h64 * h64 * kb[r_][c_] + h64 * sd64 * outer;
+                    if r_ >= c_ {
+                        block[slot] = h64 * h64 * kb[r_][c_] + h64 * sd64 * outer;
+                        slot += 1;
+                    }
                 }
             }
             let dv = v[sp.a] - v[sp.b];
             let kdv = mat_vec(&kb, dv);
             k_v[sp.a] += kdv;
             k_v[sp.b] -= kdv;
-            system.add_block(sp.a, sp.a, block);
-            system.add_block(sp.b, sp.b, block);
-            let neg = block.map(|row| row.map(|q| -q));
-            system.add_block(sp.a, sp.b, neg);
+            system.add_spring_block(sp.a, sp.b, &block);
         }
 
         // Water.

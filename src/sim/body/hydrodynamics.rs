@@ -16,7 +16,7 @@
 
 use glam::Vec3;
 
-use super::banded_cholesky::BandedCholesky;
+use super::banded_cholesky::{BandedCholesky, sym3_outer};
 use super::body_layout::{NODE_COUNT, TRIANGLES};
 
 /// Adds the water force of every triangle to `forces`, and, when `system` is given,
@@ -49,19 +49,8 @@ pub fn add_water_forces(
         }
         if let Some((matrix, dt)) = system.as_mut() {
             let k = *dt * f64::from(drag_coefficient * area) / 9.0;
-            let n64 = [f64::from(n.x), f64::from(n.y), f64::from(n.z)];
-            let mut block = [[0.0; 3]; 3];
-            for (r, row) in block.iter_mut().enumerate() {
-                for (col, v) in row.iter_mut().enumerate() {
-                    *v = k * n64[r] * n64[col];
-                }
-            }
-            for (i, &p) in tri.iter().enumerate() {
-                matrix.add_block(p, p, block);
-                for &q in &tri[i + 1..] {
-                    matrix.add_block(p, q, block);
-                }
-            }
+            let block = sym3_outer([f64::from(n.x), f64::from(n.y), f64::from(n.z)], k, 0.0);
+            matrix.add_triangle_block(tri, &block);
         }
     }
 }
