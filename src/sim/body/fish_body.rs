@@ -61,7 +61,7 @@
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::banded_cholesky::{BandedCholesky, SYSTEM_SIZE};
+use super::banded_cholesky::{BandedCholesky, SYSTEM_SIZE, sym3_outer};
 use super::body_layout::{
     HEAD_NODE, MASSES, MUSCLE_COUNT, MUSCLES, NODE_COUNT, PAPER_BODY_LENGTH, REST_POSITIONS,
     RING_COUNT, SPRING_COUNT, SPRINGS, TAIL_FIN_NODES, ring_nodes,
@@ -71,6 +71,8 @@ use super::pectoral_fins::PectoralFins;
 
 /// Largest accepted [`BodyParams::substeps`].
 pub const MAX_SUBSTEPS: u32 = 64;
+
+const JACOBIAN_EVERY: u32 = 1;
 
 /// Physical parameters of the body, in paper units (a 26-unit fish); [`FishBody`]
 /// scales them by its size (see the module doc).
@@ -406,14 +408,15 @@ impl FishBody {
             {
                 *u = a + (b - a) * t;
             }
-            self.substep(&command.fins, water, h);
+            let refresh = (j - 1) % JACOBIAN_EVERY == 0;
+            self.substep(&command.fins, water, h, refresh);
         }
         self.steps += 1;
     }
 
     /// One linearised implicit Euler step of `h` seconds with the current muscle
     /// contractions.
-    fn substep(&mut self, fins: &PectoralFins, water: Vec3, h: f32) {
+    fn substep(&mut self, fins: &PectoralFins, water: Vec3, h: f32, refresh: bool) {
         let h64 = f64::from(h);
         let mass_scale = self.mass_scale();
         let k_time = self.time_scale();
@@ -439,7 +442,9 @@ impl FishBody {
             * k_time;
 
         let system = &mut *self.system;
-        system.clear();
+        if refresh {
+            system.clear();
+        }
         let mut forces = [Vec3::ZERO; NODE_COUNT];
         // K v₀ (for the right-hand side).
         let mut k_v = [Vec3::ZERO; NODE_COUNT];
@@ -449,7 +454,9 @@ impl FishBody {
         for i in 0..NODE_COUNT {
             let diag = f64::from(MASSES[i] * mass_scale) + h64 * f64::from(gamma);
             for c in 0..3 {
-                system.add_diagonal(3 * i + c, diag);
+                if refresh {
+                    system.add_diagonal(3 * i + c, diag);
+                }
             }
             forces[i] -= gamma * (v[i] - water);
         }
@@ -471,31 +478,20 @@ impl FishBody {
             } else {
                 0.0
             };
-            let d = [f64::from(dir.x), f64::from(dir.y), f64::from(dir.z)];
-            let (c64, t64, sd64) = (
-                f64::from(c),
-                f64::from(transverse),
-                f64::from(spring_damping),
-            );
-            let mut kb = [[0.0; 3]; 3];
-            let mut block = [0.0; 6];
-            let mut slot = 0;
-            for c_ in 0..3 {
-                for r_ in 0..3 {
-                    let outer = d[r_] * d[c_];
-                    let identity = if r_ == c_ { 1.0 } else { 0.0 };
-                    kb[r_][c_] = c64 * (outer + t64 * (identity - outer));
-                    if r_ >= c_ {
-                        block[slot] = h64 * h64 * kb[r_][c_] + h64 * sd64 * outer;
-                        slot += 1;
-                    }
-                }
-            }
+            // K_s = c [(1 − t) r̂r̂ᵀ + t I]; the matrix gets h² K_s + h d r̂r̂ᵀ.
             let dv = v[sp.a] - v[sp.b];
-            let kdv = mat_vec(&kb, dv);
+            let kdv = c * ((1.0 - transverse) * dir.dot(dv) * dir + transverse * dv);
             k_v[sp.a] += kdv;
             k_v[sp.b] -= kdv;
-            system.add_spring_block(sp.a, sp.b, &block);
+            let (c64, t64) = (f64::from(c), f64::from(transverse));
+            let block = sym3_outer(
+                [f64::from(dir.x), f64::from(dir.y), f64::from(dir.z)],
+                h64 * h64 * c64 * (1.0 - t64) + h64 * f64::from(spring_damping),
+                h64 * h64 * c64 * t64,
+            );
+            if refresh {
+                system.add_spring_block(sp.a, sp.b, &block);
+            }
         }
 
         // Water.
@@ -505,7 +501,7 @@ impl FishBody {
             water,
             self.params.water_drag_coefficient * k_time,
             &mut forces,
-            Some((system, h64)),
+            if refresh { Some((&mut *system, h64)) } else { None },
         );
 
         // Pectoral fins (explicit), spread over the six midsection nodes of each side.
@@ -539,7 +535,9 @@ impl FishBody {
             rhs[3 * i + 1] = f64::from(b.y);
             rhs[3 * i + 2] = f64::from(b.z);
         }
-        system.factorize();
+        if refresh {
+            system.factorize();
+        }
         system.solve(&mut rhs);
         for i in 0..NODE_COUNT {
             let dv = Vec3::new(
@@ -555,10 +553,4 @@ impl FishBody {
             }
         }
     }
-}
-
-fn mat_vec(m: &[[f64; 3]; 3], v: Vec3) -> Vec3 {
-    let v = [f64::from(v.x), f64::from(v.y), f64::from(v.z)];
-    let row = |r: usize| (m[r][0] * v[0] + m[r][1] * v[1] + m[r][2] * v[2]) as f32;
-    Vec3::new(row(0), row(1), row(2))
 }
