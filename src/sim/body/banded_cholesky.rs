@@ -121,7 +121,7 @@ impl BandedCholesky {
 
     /// Adds the symmetric block `s` to the diagonal blocks of nodes `a` and `b` and
     /// subtracts it from their coupling: the Jacobian pattern of a spring from a to b.
-    #[inline]
+    #[inline(always)]
     pub fn add_spring_block(&mut self, a: usize, b: usize, s: &Sym3) {
         self.add_diagonal_block(a, s);
         self.add_diagonal_block(b, s);
@@ -136,7 +136,7 @@ impl BandedCholesky {
     /// Adds the symmetric block `s` to all nine blocks (p, q) of the three distinct
     /// nodes of `triangle`: the Jacobian pattern of a force that depends on the mean
     /// velocity of the triangle's nodes.
-    #[inline]
+    #[inline(always)]
     pub fn add_triangle_block(&mut self, triangle: [usize; 3], s: &Sym3) {
         for (i, &p) in triangle.iter().enumerate() {
             self.add_diagonal_block(p, s);
@@ -151,7 +151,7 @@ impl BandedCholesky {
     }
 
     /// Adds the lower triangle `s` to the diagonal block of `node`.
-    #[inline]
+    #[inline(always)]
     fn add_diagonal_block(&mut self, node: usize, s: &Sym3) {
         let j = 3 * node;
         if let Some([c0, c1, c2]) = self.band.get_mut(j..j + 3) {
@@ -167,7 +167,7 @@ impl BandedCholesky {
 
     /// Adds the symmetric `s` to the block (row node `hi`, column node `lo`),
     /// `hi > lo`, of the lower triangle. Ignored outside the band (debug-asserted).
-    #[inline]
+    #[inline(always)]
     fn add_coupling_block(&mut self, hi: usize, lo: usize, s: &Sym3) {
         debug_assert!(hi > lo && hi - lo <= NODE_BANDWIDTH, "nodes {hi},{lo}");
         let o = 3 * (hi - lo);

@@ -461,35 +461,38 @@ impl FishBody {
             forces[i] -= gamma * (v[i] - water);
         }
 
-        // Springs.
+        // Springs: gathered into arrays, the arithmetic as one loop over the arrays
+        // (which the compiler vectorises), then scattered to the nodes.
         let spring_damping = self.params.spring_damping * damping_scale;
+        let mut r = [[0.0f32; SPRING_COUNT]; 3];
+        let mut w = [[0.0f32; SPRING_COUNT]; 3];
         for (k, sp) in SPRINGS.iter().enumerate() {
-            let r = x[sp.b] - x[sp.a];
-            let len = r.length();
-            let dir = r.normalize_or_zero();
-            let c = sp.kind.stiffness() * stiffness_scale;
-            let e = len - rest[k];
-            let rel_speed = (v[sp.b] - v[sp.a]).dot(dir);
-            let f = (c * e + spring_damping * rel_speed) * dir;
+            let (d, u) = (x[sp.b] - x[sp.a], v[sp.b] - v[sp.a]);
+            [r[0][k], r[1][k], r[2][k]] = d.to_array();
+            [w[0][k], w[1][k], w[2][k]] = u.to_array();
+        }
+        let terms = spring_terms(
+            &r,
+            &w,
+            &rest,
+            stiffness_scale,
+            spring_damping,
+            h,
+        );
+        for (k, sp) in SPRINGS.iter().enumerate() {
+            let dir = Vec3::new(terms.dir[0][k], terms.dir[1][k], terms.dir[2][k]);
+            let f = terms.force[k] * dir;
             forces[sp.a] += f;
             forces[sp.b] -= f;
-            let transverse = if len > 0.0 {
-                (1.0 - rest[k] / len).max(0.0)
-            } else {
-                0.0
-            };
-            // K_s = c [(1 − t) r̂r̂ᵀ + t I]; the matrix gets h² K_s + h d r̂r̂ᵀ.
-            let dv = v[sp.a] - v[sp.b];
-            let kdv = c * ((1.0 - transverse) * dir.dot(dv) * dir + transverse * dv);
+            let kdv = Vec3::new(terms.k_v[0][k], terms.k_v[1][k], terms.k_v[2][k]);
             k_v[sp.a] += kdv;
             k_v[sp.b] -= kdv;
-            let (c64, t64) = (f64::from(c), f64::from(transverse));
-            let block = sym3_outer(
-                [f64::from(dir.x), f64::from(dir.y), f64::from(dir.z)],
-                h64 * h64 * c64 * (1.0 - t64) + h64 * f64::from(spring_damping),
-                h64 * h64 * c64 * t64,
-            );
             if refresh {
+                let block = sym3_outer(
+                    [f64::from(dir.x), f64::from(dir.y), f64::from(dir.z)],
+                    f64::from(terms.along[k]),
+                    f64::from(terms.across[k]),
+                );
                 system.add_spring_block(sp.a, sp.b, &block);
             }
         }
@@ -554,3 +557,80 @@ impl FishBody {
         }
     }
 }
+
+/// Per-spring results of [`spring_terms`], one array entry per spring of
+/// [`SPRINGS`].
+struct SpringTerms {
+    /// Unit direction r̂ from node a to node b (zero for a collapsed spring).
+    dir: [[f32; SPRING_COUNT]; 3],
+    /// Scalar force along r̂ on node a (node b gets the opposite):
+    /// c (‖r‖ − l) + d (v_b − v_a)·r̂.
+    force: [f32; SPRING_COUNT],
+    /// K_s (v_a − v_b) with K_s = c [(1 − t) r̂r̂ᵀ + t I], t = max(0, 1 − l/‖r‖).
+    k_v: [[f32; SPRING_COUNT]; 3],
+    /// The spring's block of the system matrix, h² K_s + h d r̂r̂ᵀ = along · r̂r̂ᵀ +
+    /// across · I: along = h² c (1 − t) + h d, across = h² c t.
+    along: [f32; SPRING_COUNT],
+    across: [f32; SPRING_COUNT],
+}
+
+/// The arithmetic of every spring at once from its vector `r` = x_b − x_a and
+/// relative velocity `w` = v_b − v_a (component arrays), `rest` lengths, the
+/// stiffness scale, damping `d` and substep `h`. Straight-line code over arrays, so
+/// the compiler runs it on four springs at a time.
+fn spring_terms(
+    r: &[[f32; SPRING_COUNT]; 3],
+    w: &[[f32; SPRING_COUNT]; 3],
+    rest: &[f32; SPRING_COUNT],
+    stiffness_scale: f32,
+    d: f32,
+    h: f32,
+) -> SpringTerms {
+    let mut out = SpringTerms {
+        dir: [[0.0; SPRING_COUNT]; 3],
+        force: [0.0; SPRING_COUNT],
+        k_v: [[0.0; SPRING_COUNT]; 3],
+        along: [0.0; SPRING_COUNT],
+        across: [0.0; SPRING_COUNT],
+    };
+    for k in 0..SPRING_COUNT {
+        let (rx, ry, rz) = (r[0][k], r[1][k], r[2][k]);
+        let (wx, wy, wz) = (w[0][k], w[1][k], w[2][k]);
+        let len = (rx * rx + ry * ry + rz * rz).sqrt();
+        let inverse = 1.0 / len;
+        // As `normalize_or_zero`: a zero or non-finite length gives no direction.
+        let valid = inverse.is_finite() && inverse > 0.0;
+        let inverse = if valid { inverse } else { 0.0 };
+        let (dx, dy, dz) = (rx * inverse, ry * inverse, rz * inverse);
+        let c = STIFFNESS[k] * stiffness_scale;
+        let rel_speed = wx * dx + wy * dy + wz * dz;
+        let transverse = if valid {
+            (1.0 - rest[k] * inverse).max(0.0)
+        } else {
+            0.0
+        };
+        let g = c * (1.0 - transverse) * rel_speed;
+        let ct = c * transverse;
+        out.dir[0][k] = dx;
+        out.dir[1][k] = dy;
+        out.dir[2][k] = dz;
+        out.force[k] = c * (len - rest[k]) + d * rel_speed;
+        out.k_v[0][k] = -(g * dx + ct * wx);
+        out.k_v[1][k] = -(g * dy + ct * wy);
+        out.k_v[2][k] = -(g * dz + ct * wz);
+        out.along[k] = h * h * c * (1.0 - transverse) + h * d;
+        out.across[k] = h * h * ct;
+    }
+    out
+}
+
+/// Stiffness of every spring, paper units (footnote 2).
+const STIFFNESS: [f32; SPRING_COUNT] = {
+    let mut c = [0.0; SPRING_COUNT];
+    let mut k = 0;
+    while k < SPRING_COUNT {
+        c[k] = SPRINGS[k].kind.stiffness();
+        k += 1;
+    }
+    c
+};
