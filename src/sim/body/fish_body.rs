@@ -57,6 +57,70 @@
 //! symmetric positive definite and a banded Cholesky solves it
 //! (`banded_cholesky.rs`). Fin forces and the righting couple are explicit (small
 //! and smooth).
+//!
+//! # Cost
+//! Measured with `tests::step_cost` (`cargo test --release --lib step_cost --
+//! --ignored --nocapture`): native release build, a fish swimming at top speed,
+//! minimum of seven batches of 2000 steps, on the development machine (2 cores
+//! shared with other builds; the old code measured 187 µs there when quiet and
+//! 255–280 µs under load, the earlier note said 26–34 µs per substep).
+//!
+//! | version | µs per step (8 substeps) | µs per substep |
+//! |---------|-------------------------:|---------------:|
+//! | before: row-by-row Cholesky over the full band, 3×3 f64 block loops | 187 | 23.4 |
+//! | now, exact matrix every substep (default) | 55.5 | 6.9 |
+//! | now, [`BodyParams::jacobian_interval`] = 2 | 38.5 | 4.8 |
+//! | now, [`BodyParams::jacobian_interval`] = 4 | 29.7 | 3.7 |
+//!
+//! The default is 3.4× faster with the same scheme. A substep now spends about
+//! 45 % factorising, 12 % solving, 12 % on the water and the rest on springs, fins,
+//! the righting couple and assembly (perf). What did it: the factorisation follows
+//! the envelope of the matrix instead of the full band (9 300 instead of 14 700
+//! multiply-adds) and works column-major, a node (three columns) at a time, in
+//! contiguous loops the compiler vectorises (`banded_cholesky.rs`); the spring and
+//! water arithmetic runs over arrays (four springs or faces at a time), the blocks
+//! are added straight into the band with no 3×3 loops, and the solve multiplies by
+//! stored reciprocal pivots. Tried and dropped: f32 for the matrix (the tables
+//! printed the same, but a factorisation was only 0.2–0.3 µs faster natively and
+//! would gain nothing on wasm without SIMD, not worth the lost precision);
+//! fixed-length sweeps over zero-padded columns (slower: the compiler no longer
+//! vectorised them); tracking the envelope during assembly instead of scanning each
+//! column, and a branch-free scan (both measured slower).
+//!
+//! The arithmetic is reordered (reciprocal pivots, three products summed before the
+//! subtraction), so results differ from the old code in the last bits, but the speed
+//! table (`tests::speed_table`, all 11 rows to 3 decimals) and the turn table
+//! (`tests::turn_table`: key amplitudes to 4 decimals, all measured turns to 0.1°)
+//! print exactly as before. Still deterministic: no threads, no clocks, no
+//! allocation.
+//!
+//! # Lagged Jacobian (optional, off by default)
+//! [`BodyParams::jacobian_interval`] = n reuses one assembled and factorised matrix
+//! for n substeps (a "frozen Jacobian" semi-implicit scheme): every substep still
+//! evaluates the forces and the K v₀ term of the right-hand side at its own state,
+//! only the matrix (spring directions and lengths, the water's active faces and
+//! normals) is up to n − 1 substeps old. Each step starts with a fresh matrix, so
+//! steps stay independent. Measured with the tables' own routines:
+//!
+//! | n | µs per step | top speed at 1 / 3 / 5 Hz (BL/s) | r of the 30/45/60/90° keys | 50° / 75° turn | 135° / 180° sequence |
+//! |---|------------:|------------------------------|----------------------------|----------------|----------------------|
+//! | 1 | 55.5 | 0.175 / 0.600 / 0.662 | 0.348 / 0.449 / 0.542 / 0.700 | 49.6° / 74.1° | 132.6° / 183.5° |
+//! | 2 | 38.5 | 0.175 / 0.592 / 0.642 | 0.353 / 0.460 / 0.560 / 0.717 | 47.7° / 70.8° | 129.0° / 177.2° |
+//! | 4 | 29.7 | 0.174 / 0.563 / 0.584 | 0.363 / 0.478 / 0.576 / 0.736 | 45.3° / 67.8° | 123.0° / 168.0° |
+//! | 8 | — | diverges | | | |
+//!
+//! Stability: with n = 2 and n = 4 every test of `tests.rs` passes, including the
+//! ten-minute random run (random speeds, fins and currents every 5 s: finite,
+//! spine within ±10 %, no inverted volume, no clamped pivot), and
+//! `tests::a_lagged_jacobian_swims_nearly_like_the_exact_one` checks n = 2 (speed
+//! within 5 %). With n = 8 (one matrix per step) the solve turns non-finite from
+//! 1.5 Hz up, the fish stalls (0.000 BL/s in the speed table) and the random run
+//! and four other tests fail. Chosen: n = 1. The exact scheme already meets the
+//! budget of about 80 µs per fish-step natively, and the lag slows swimming
+//! (n = 2: −1 to −3 % above 2 Hz) and turning (up to −5 %) enough to leave the
+//! tuned speed table (`motor_controller.rs`) and steering map (`turn_mc.rs`)
+//! slightly off; n = 2 stays available per fish where a third of the cost matters
+//! more than that (re-tune both tables if it becomes the default).
 
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
@@ -71,8 +135,6 @@ use super::pectoral_fins::PectoralFins;
 
 /// Largest accepted [`BodyParams::substeps`].
 pub const MAX_SUBSTEPS: u32 = 64;
-
-const JACOBIAN_EVERY: u32 = 1;
 
 /// Physical parameters of the body, in paper units (a 26-unit fish); [`FishBody`]
 /// scales them by its size (see the module doc).
@@ -110,9 +172,20 @@ pub struct BodyParams {
     /// Implicit Euler substeps per step, count (clamped to 1..=[`MAX_SUBSTEPS`]).
     /// Default 8, tuned: each substep is 0.0069 s = 0.275 paper time units at the
     /// default k = 40. Top speed at 3 Hz: 0.155 (1 substep), 0.525 (5), 0.600 (8)
-    /// body lengths/s. Cost grows linearly (about 26–34 µs per substep on the
-    /// development machine, see `tests::speed_table`).
+    /// body lengths/s. Cost grows linearly (about 7 µs per substep on the
+    /// development machine, see the module doc, "Cost", and `tests::step_cost`).
     pub substeps: u32,
+    /// Substeps that share one system matrix and its factorisation (a lagged or
+    /// "frozen" Jacobian), count, clamped to 1..=`substeps`. Default 1, chosen: every
+    /// substep solves with its own exact matrix, the scheme the speed table
+    /// (`motor_controller.rs`) and the steering map (`turn_mc.rs`) were tuned with.
+    /// Forces and the right-hand side are always evaluated at the current state;
+    /// only the matrix is reused. Larger values are cheaper but change the motion
+    /// (measured, see the module doc, "Lagged Jacobian"): 2 saves a third of the
+    /// cost (38 instead of 56 µs per step) and slows swimming by 0–3 % and turns by
+    /// up to 5 %; 4 costs 30 µs, −2 to −12 % and up to −10 %; 8 blows up.
+    #[serde(default = "one")]
+    pub jacobian_interval: u32,
     /// Strength of the righting couple per ring, paper force units per unit of
     /// sin(tilt). Default 20.0, chosen (not tuned): keeps the fish level and upright
     /// in every test run; without it the body pitches nose-down by about 24° while
@@ -136,10 +209,15 @@ impl Default for BodyParams {
             water_drag_coefficient: 1.0,
             paper_time_units_per_sec: 40.0,
             substeps: 8,
+            jacobian_interval: 1,
             righting_force: 20.0,
             pectoral_fin_area: 6.0,
         }
     }
+}
+
+fn one() -> u32 {
+    1
 }
 
 /// What the brain sends the body each step.
@@ -399,6 +477,7 @@ impl FishBody {
         });
         let substeps = self.params.substeps.clamp(1, MAX_SUBSTEPS);
         let h = self.params.dt_secs / substeps as f32;
+        let interval = self.params.jacobian_interval.clamp(1, substeps);
         for j in 1..=substeps {
             let t = j as f32 / substeps as f32;
             for (u, (a, b)) in self
@@ -408,14 +487,15 @@ impl FishBody {
             {
                 *u = a + (b - a) * t;
             }
-            let refresh = (j - 1) % JACOBIAN_EVERY == 0;
+            let refresh = (j - 1) % interval == 0;
             self.substep(&command.fins, water, h, refresh);
         }
         self.steps += 1;
     }
 
     /// One linearised implicit Euler step of `h` seconds with the current muscle
-    /// contractions.
+    /// contractions. With `refresh` the system matrix is assembled and factorised
+    /// anew; otherwise the factorisation of an earlier substep is reused.
     fn substep(&mut self, fins: &PectoralFins, water: Vec3, h: f32, refresh: bool) {
         let h64 = f64::from(h);
         let mass_scale = self.mass_scale();
@@ -452,9 +532,9 @@ impl FishBody {
         // Mass and node damping.
         let gamma = self.params.node_damping * damping_scale;
         for i in 0..NODE_COUNT {
-            let diag = f64::from(MASSES[i] * mass_scale) + h64 * f64::from(gamma);
-            for c in 0..3 {
-                if refresh {
+            if refresh {
+                let diag = f64::from(MASSES[i] * mass_scale) + h64 * f64::from(gamma);
+                for c in 0..3 {
                     system.add_diagonal(3 * i + c, diag);
                 }
             }
@@ -471,14 +551,7 @@ impl FishBody {
             [r[0][k], r[1][k], r[2][k]] = d.to_array();
             [w[0][k], w[1][k], w[2][k]] = u.to_array();
         }
-        let terms = spring_terms(
-            &r,
-            &w,
-            &rest,
-            stiffness_scale,
-            spring_damping,
-            h,
-        );
+        let terms = spring_terms(&r, &w, &rest, stiffness_scale, spring_damping, h);
         for (k, sp) in SPRINGS.iter().enumerate() {
             let dir = Vec3::new(terms.dir[0][k], terms.dir[1][k], terms.dir[2][k]);
             let f = terms.force[k] * dir;
@@ -504,7 +577,11 @@ impl FishBody {
             water,
             self.params.water_drag_coefficient * k_time,
             &mut forces,
-            if refresh { Some((&mut *system, h64)) } else { None },
+            if refresh {
+                Some((&mut *system, h64))
+            } else {
+                None
+            },
         );
 
         // Pectoral fins (explicit), spread over the six midsection nodes of each side.
