@@ -57,11 +57,75 @@
 //! symmetric positive definite and a banded Cholesky solves it
 //! (`banded_cholesky.rs`). Fin forces and the righting couple are explicit (small
 //! and smooth).
+//!
+//! # Cost
+//! Measured with `tests::step_cost` (`cargo test --release --lib step_cost --
+//! --ignored --nocapture`): native release build, a fish swimming at top speed,
+//! minimum of seven batches of 2000 steps, on the development machine (2 cores
+//! shared with other builds; the old code measured 187 µs there when quiet and
+//! 255–280 µs under load, the earlier note said 26–34 µs per substep).
+//!
+//! | version | µs per step (8 substeps) | µs per substep |
+//! |---------|-------------------------:|---------------:|
+//! | before: row-by-row Cholesky over the full band, 3×3 f64 block loops | 187 | 23.4 |
+//! | now, exact matrix every substep (default) | 55.5 | 6.9 |
+//! | now, [`BodyParams::jacobian_interval`] = 2 | 38.5 | 4.8 |
+//! | now, [`BodyParams::jacobian_interval`] = 4 | 29.7 | 3.7 |
+//!
+//! The default is 3.4× faster with the same scheme. A substep now spends about
+//! 45 % factorising, 12 % solving, 12 % on the water and the rest on springs, fins,
+//! the righting couple and assembly (perf). What did it: the factorisation follows
+//! the envelope of the matrix instead of the full band (9 300 instead of 14 700
+//! multiply-adds) and works column-major, a node (three columns) at a time, in
+//! contiguous loops the compiler vectorises (`banded_cholesky.rs`); the spring and
+//! water arithmetic runs over arrays (four springs or faces at a time), the blocks
+//! are added straight into the band with no 3×3 loops, and the solve multiplies by
+//! stored reciprocal pivots. Tried and dropped: f32 for the matrix (the tables
+//! printed the same, but a factorisation was only 0.2–0.3 µs faster natively and
+//! would gain nothing on wasm without SIMD, not worth the lost precision);
+//! fixed-length sweeps over zero-padded columns (slower: the compiler no longer
+//! vectorised them); tracking the envelope during assembly instead of scanning each
+//! column, and a branch-free scan (both measured slower).
+//!
+//! The arithmetic is reordered (reciprocal pivots, three products summed before the
+//! subtraction), so results differ from the old code in the last bits, but the speed
+//! table (`tests::speed_table`, all 11 rows to 3 decimals) and the turn table
+//! (`tests::turn_table`: key amplitudes to 4 decimals, all measured turns to 0.1°)
+//! print exactly as before. Still deterministic: no threads, no clocks, no
+//! allocation.
+//!
+//! # Lagged Jacobian (optional, off by default)
+//! [`BodyParams::jacobian_interval`] = n reuses one assembled and factorised matrix
+//! for n substeps (a "frozen Jacobian" semi-implicit scheme): every substep still
+//! evaluates the forces and the K v₀ term of the right-hand side at its own state,
+//! only the matrix (spring directions and lengths, the water's active faces and
+//! normals) is up to n − 1 substeps old. Each step starts with a fresh matrix, so
+//! steps stay independent. Measured with the tables' own routines:
+//!
+//! | n | µs per step | top speed at 1 / 3 / 5 Hz (BL/s) | r of the 30/45/60/90° keys | 50° / 75° turn | 135° / 180° sequence |
+//! |---|------------:|------------------------------|----------------------------|----------------|----------------------|
+//! | 1 | 55.5 | 0.175 / 0.600 / 0.662 | 0.348 / 0.449 / 0.542 / 0.700 | 49.6° / 74.1° | 132.6° / 183.5° |
+//! | 2 | 38.5 | 0.175 / 0.592 / 0.642 | 0.353 / 0.460 / 0.560 / 0.717 | 47.7° / 70.8° | 129.0° / 177.2° |
+//! | 4 | 29.7 | 0.174 / 0.563 / 0.584 | 0.363 / 0.478 / 0.576 / 0.736 | 45.3° / 67.8° | 123.0° / 168.0° |
+//! | 8 | — | diverges | | | |
+//!
+//! Stability: with n = 2 and n = 4 every test of `tests.rs` passes, including the
+//! ten-minute random run (random speeds, fins and currents every 5 s: finite,
+//! spine within ±10 %, no inverted volume, no clamped pivot), and
+//! `tests::a_lagged_jacobian_swims_nearly_like_the_exact_one` checks n = 2 (speed
+//! within 5 %). With n = 8 (one matrix per step) the solve turns non-finite from
+//! 1.5 Hz up, the fish stalls (0.000 BL/s in the speed table) and the random run
+//! and four other tests fail. Chosen: n = 1. The exact scheme already meets the
+//! budget of about 80 µs per fish-step natively, and the lag slows swimming
+//! (n = 2: −1 to −3 % above 2 Hz) and turning (up to −5 %) enough to leave the
+//! tuned speed table (`motor_controller.rs`) and steering map (`turn_mc.rs`)
+//! slightly off; n = 2 stays available per fish where a third of the cost matters
+//! more than that (re-tune both tables if it becomes the default).
 
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::banded_cholesky::{BandedCholesky, SYSTEM_SIZE};
+use super::banded_cholesky::{BandedCholesky, SYSTEM_SIZE, sym3_outer};
 use super::body_layout::{
     HEAD_NODE, MASSES, MUSCLE_COUNT, MUSCLES, NODE_COUNT, PAPER_BODY_LENGTH, REST_POSITIONS,
     RING_COUNT, SPRING_COUNT, SPRINGS, TAIL_FIN_NODES, ring_nodes,
@@ -108,9 +172,20 @@ pub struct BodyParams {
     /// Implicit Euler substeps per step, count (clamped to 1..=[`MAX_SUBSTEPS`]).
     /// Default 8, tuned: each substep is 0.0069 s = 0.275 paper time units at the
     /// default k = 40. Top speed at 3 Hz: 0.155 (1 substep), 0.525 (5), 0.600 (8)
-    /// body lengths/s. Cost grows linearly (about 26–34 µs per substep on the
-    /// development machine, see `tests::speed_table`).
+    /// body lengths/s. Cost grows linearly (about 7 µs per substep on the
+    /// development machine, see the module doc, "Cost", and `tests::step_cost`).
     pub substeps: u32,
+    /// Substeps that share one system matrix and its factorisation (a lagged or
+    /// "frozen" Jacobian), count, clamped to 1..=`substeps`. Default 1, chosen: every
+    /// substep solves with its own exact matrix, the scheme the speed table
+    /// (`motor_controller.rs`) and the steering map (`turn_mc.rs`) were tuned with.
+    /// Forces and the right-hand side are always evaluated at the current state;
+    /// only the matrix is reused. Larger values are cheaper but change the motion
+    /// (measured, see the module doc, "Lagged Jacobian"): 2 saves a third of the
+    /// cost (38 instead of 56 µs per step) and slows swimming by 0–3 % and turns by
+    /// up to 5 %; 4 costs 30 µs, −2 to −12 % and up to −10 %; 8 blows up.
+    #[serde(default = "one")]
+    pub jacobian_interval: u32,
     /// Strength of the righting couple per ring, paper force units per unit of
     /// sin(tilt). Default 20.0, chosen (not tuned): keeps the fish level and upright
     /// in every test run; without it the body pitches nose-down by about 24° while
@@ -134,10 +209,15 @@ impl Default for BodyParams {
             water_drag_coefficient: 1.0,
             paper_time_units_per_sec: 40.0,
             substeps: 8,
+            jacobian_interval: 1,
             righting_force: 20.0,
             pectoral_fin_area: 6.0,
         }
     }
+}
+
+fn one() -> u32 {
+    1
 }
 
 /// What the brain sends the body each step.
@@ -404,6 +484,7 @@ impl FishBody {
         });
         let substeps = self.params.substeps.clamp(1, MAX_SUBSTEPS);
         let h = self.params.dt_secs / substeps as f32;
+        let interval = self.params.jacobian_interval.clamp(1, substeps);
         for j in 1..=substeps {
             let t = j as f32 / substeps as f32;
             for (u, (a, b)) in self
@@ -413,14 +494,16 @@ impl FishBody {
             {
                 *u = a + (b - a) * t;
             }
-            self.substep(&command.fins, water, h);
+            let refresh = (j - 1) % interval == 0;
+            self.substep(&command.fins, water, h, refresh);
         }
         self.steps += 1;
     }
 
     /// One linearised implicit Euler step of `h` seconds with the current muscle
-    /// contractions.
-    fn substep(&mut self, fins: &PectoralFins, water: Vec3, h: f32) {
+    /// contractions. With `refresh` the system matrix is assembled and factorised
+    /// anew; otherwise the factorisation of an earlier substep is reused.
+    fn substep(&mut self, fins: &PectoralFins, water: Vec3, h: f32, refresh: bool) {
         let h64 = f64::from(h);
         let mass_scale = self.mass_scale();
         let k_time = self.time_scale();
@@ -446,7 +529,9 @@ impl FishBody {
             * k_time;
 
         let system = &mut *self.system;
-        system.clear();
+        if refresh {
+            system.clear();
+        }
         let mut forces = [Vec3::ZERO; NODE_COUNT];
         // K v₀ (for the right-hand side).
         let mut k_v = [Vec3::ZERO; NODE_COUNT];
@@ -454,54 +539,42 @@ impl FishBody {
         // Mass and node damping.
         let gamma = self.params.node_damping * damping_scale;
         for i in 0..NODE_COUNT {
-            let diag = f64::from(MASSES[i] * mass_scale) + h64 * f64::from(gamma);
-            for c in 0..3 {
-                system.add_diagonal(3 * i + c, diag);
+            if refresh {
+                let diag = f64::from(MASSES[i] * mass_scale) + h64 * f64::from(gamma);
+                for c in 0..3 {
+                    system.add_diagonal(3 * i + c, diag);
+                }
             }
             forces[i] -= gamma * (v[i] - water);
         }
 
-        // Springs.
+        // Springs: gathered into arrays, the arithmetic as one loop over the arrays
+        // (which the compiler vectorises), then scattered to the nodes.
         let spring_damping = self.params.spring_damping * damping_scale;
+        let mut r = [[0.0f32; SPRING_COUNT]; 3];
+        let mut w = [[0.0f32; SPRING_COUNT]; 3];
         for (k, sp) in SPRINGS.iter().enumerate() {
-            let r = x[sp.b] - x[sp.a];
-            let len = r.length();
-            let dir = r.normalize_or_zero();
-            let c = sp.kind.stiffness() * stiffness_scale;
-            let e = len - rest[k];
-            let rel_speed = (v[sp.b] - v[sp.a]).dot(dir);
-            let f = (c * e + spring_damping * rel_speed) * dir;
+            let (d, u) = (x[sp.b] - x[sp.a], v[sp.b] - v[sp.a]);
+            [r[0][k], r[1][k], r[2][k]] = d.to_array();
+            [w[0][k], w[1][k], w[2][k]] = u.to_array();
+        }
+        let terms = spring_terms(&r, &w, &rest, stiffness_scale, spring_damping, h);
+        for (k, sp) in SPRINGS.iter().enumerate() {
+            let dir = Vec3::new(terms.dir[0][k], terms.dir[1][k], terms.dir[2][k]);
+            let f = terms.force[k] * dir;
             forces[sp.a] += f;
             forces[sp.b] -= f;
-            let transverse = if len > 0.0 {
-                (1.0 - rest[k] / len).max(0.0)
-            } else {
-                0.0
-            };
-            let d = [f64::from(dir.x), f64::from(dir.y), f64::from(dir.z)];
-            let (c64, t64, sd64) = (
-                f64::from(c),
-                f64::from(transverse),
-                f64::from(spring_damping),
-            );
-            let mut kb = [[0.0; 3]; 3];
-            let mut block = [[0.0; 3]; 3];
-            for r_ in 0..3 {
-                for c_ in 0..3 {
-                    let outer = d[r_] * d[c_];
-                    let identity = if r_ == c_ { 1.0 } else { 0.0 };
-                    kb[r_][c_] = c64 * (outer + t64 * (identity - outer));
-                    block[r_][c_] = h64 * h64 * kb[r_][c_] + h64 * sd64 * outer;
-                }
-            }
-            let dv = v[sp.a] - v[sp.b];
-            let kdv = mat_vec(&kb, dv);
+            let kdv = Vec3::new(terms.k_v[0][k], terms.k_v[1][k], terms.k_v[2][k]);
             k_v[sp.a] += kdv;
             k_v[sp.b] -= kdv;
-            system.add_block(sp.a, sp.a, block);
-            system.add_block(sp.b, sp.b, block);
-            let neg = block.map(|row| row.map(|q| -q));
-            system.add_block(sp.a, sp.b, neg);
+            if refresh {
+                let block = sym3_outer(
+                    [f64::from(dir.x), f64::from(dir.y), f64::from(dir.z)],
+                    f64::from(terms.along[k]),
+                    f64::from(terms.across[k]),
+                );
+                system.add_spring_block(sp.a, sp.b, &block);
+            }
         }
 
         // Water.
@@ -511,7 +584,11 @@ impl FishBody {
             water,
             self.params.water_drag_coefficient * k_time,
             &mut forces,
-            Some((system, h64)),
+            if refresh {
+                Some((&mut *system, h64))
+            } else {
+                None
+            },
         );
 
         // Pectoral fins (explicit), spread over the six midsection nodes of each side.
@@ -545,7 +622,9 @@ impl FishBody {
             rhs[3 * i + 1] = f64::from(b.y);
             rhs[3 * i + 2] = f64::from(b.z);
         }
-        system.factorize();
+        if refresh {
+            system.factorize();
+        }
         system.solve(&mut rhs);
         for i in 0..NODE_COUNT {
             let dv = Vec3::new(
@@ -563,8 +642,79 @@ impl FishBody {
     }
 }
 
-fn mat_vec(m: &[[f64; 3]; 3], v: Vec3) -> Vec3 {
-    let v = [f64::from(v.x), f64::from(v.y), f64::from(v.z)];
-    let row = |r: usize| (m[r][0] * v[0] + m[r][1] * v[1] + m[r][2] * v[2]) as f32;
-    Vec3::new(row(0), row(1), row(2))
+/// Per-spring results of [`spring_terms`], one array entry per spring of
+/// [`SPRINGS`].
+struct SpringTerms {
+    /// Unit direction r̂ from node a to node b (zero for a collapsed spring).
+    dir: [[f32; SPRING_COUNT]; 3],
+    /// Scalar force along r̂ on node a (node b gets the opposite):
+    /// c (‖r‖ − l) + d (v_b − v_a)·r̂.
+    force: [f32; SPRING_COUNT],
+    /// K_s (v_a − v_b) with K_s = c [(1 − t) r̂r̂ᵀ + t I], t = max(0, 1 − l/‖r‖).
+    k_v: [[f32; SPRING_COUNT]; 3],
+    /// The spring's block of the system matrix, h² K_s + h d r̂r̂ᵀ = along · r̂r̂ᵀ +
+    /// across · I: along = h² c (1 − t) + h d, across = h² c t.
+    along: [f32; SPRING_COUNT],
+    across: [f32; SPRING_COUNT],
 }
+
+/// The arithmetic of every spring at once from its vector `r` = x_b − x_a and
+/// relative velocity `w` = v_b − v_a (component arrays), `rest` lengths, the
+/// stiffness scale, damping `d` and substep `h`. Straight-line code over arrays, so
+/// the compiler runs it on four springs at a time.
+fn spring_terms(
+    r: &[[f32; SPRING_COUNT]; 3],
+    w: &[[f32; SPRING_COUNT]; 3],
+    rest: &[f32; SPRING_COUNT],
+    stiffness_scale: f32,
+    d: f32,
+    h: f32,
+) -> SpringTerms {
+    let mut out = SpringTerms {
+        dir: [[0.0; SPRING_COUNT]; 3],
+        force: [0.0; SPRING_COUNT],
+        k_v: [[0.0; SPRING_COUNT]; 3],
+        along: [0.0; SPRING_COUNT],
+        across: [0.0; SPRING_COUNT],
+    };
+    for k in 0..SPRING_COUNT {
+        let (rx, ry, rz) = (r[0][k], r[1][k], r[2][k]);
+        let (wx, wy, wz) = (w[0][k], w[1][k], w[2][k]);
+        let len = (rx * rx + ry * ry + rz * rz).sqrt();
+        let inverse = 1.0 / len;
+        // As `normalize_or_zero`: a zero or non-finite length gives no direction.
+        let valid = inverse.is_finite() && inverse > 0.0;
+        let inverse = if valid { inverse } else { 0.0 };
+        let (dx, dy, dz) = (rx * inverse, ry * inverse, rz * inverse);
+        let c = STIFFNESS[k] * stiffness_scale;
+        let rel_speed = wx * dx + wy * dy + wz * dz;
+        let transverse = if valid {
+            (1.0 - rest[k] * inverse).max(0.0)
+        } else {
+            0.0
+        };
+        let g = c * (1.0 - transverse) * rel_speed;
+        let ct = c * transverse;
+        out.dir[0][k] = dx;
+        out.dir[1][k] = dy;
+        out.dir[2][k] = dz;
+        out.force[k] = c * (len - rest[k]) + d * rel_speed;
+        out.k_v[0][k] = -(g * dx + ct * wx);
+        out.k_v[1][k] = -(g * dy + ct * wy);
+        out.k_v[2][k] = -(g * dz + ct * wz);
+        out.along[k] = h * h * c * (1.0 - transverse) + h * d;
+        out.across[k] = h * h * ct;
+    }
+    out
+}
+
+/// Stiffness of every spring, paper units (footnote 2).
+const STIFFNESS: [f32; SPRING_COUNT] = {
+    let mut c = [0.0; SPRING_COUNT];
+    let mut k = 0;
+    while k < SPRING_COUNT {
+        c[k] = SPRINGS[k].kind.stiffness();
+        k += 1;
+    }
+    c
+};

@@ -16,8 +16,8 @@
 
 use glam::Vec3;
 
-use super::banded_cholesky::BandedCholesky;
-use super::body_layout::{NODE_COUNT, TRIANGLES};
+use super::banded_cholesky::{BandedCholesky, sym3_outer};
+use super::body_layout::{NODE_COUNT, TRIANGLE_COUNT, TRIANGLES};
 
 /// Adds the water force of every triangle to `forces`, and, when `system` is given,
 /// `dt · (−∂f/∂v)` to the implicit system matrix.
@@ -33,35 +33,55 @@ pub fn add_water_forces(
     forces: &mut [Vec3; NODE_COUNT],
     mut system: Option<(&mut BandedCholesky, f64)>,
 ) {
-    for tri in TRIANGLES {
-        let [a, b, c] = tri;
-        let area_normal = 0.5 * (positions[b] - positions[a]).cross(positions[c] - positions[a]);
-        let area = area_normal.length();
-        let n = area_normal.normalize_or_zero();
+    // Gathered into arrays, the arithmetic as one loop over them (vectorised by the
+    // compiler), then scattered to the nodes of the active triangles.
+    let mut edge_b = [[0.0f32; TRIANGLE_COUNT]; 3];
+    let mut edge_c = [[0.0f32; TRIANGLE_COUNT]; 3];
+    let mut velocity = [[0.0f32; TRIANGLE_COUNT]; 3];
+    for (t, &[a, b, c]) in TRIANGLES.iter().enumerate() {
+        let (pa, pb, pc) = (positions[a], positions[b], positions[c]);
+        [edge_b[0][t], edge_b[1][t], edge_b[2][t]] = (pb - pa).to_array();
+        [edge_c[0][t], edge_c[1][t], edge_c[2][t]] = (pc - pa).to_array();
         let v_rel = (velocities[a] + velocities[b] + velocities[c]) / 3.0 - water_velocity;
-        let normal_speed = n.dot(v_rel);
-        if normal_speed <= 0.0 {
+        [velocity[0][t], velocity[1][t], velocity[2][t]] = v_rel.to_array();
+    }
+    let mut normal = [[0.0f32; TRIANGLE_COUNT]; 3];
+    let mut area = [0.0f32; TRIANGLE_COUNT];
+    let mut normal_speed = [0.0f32; TRIANGLE_COUNT];
+    for t in 0..TRIANGLE_COUNT {
+        let (bx, by, bz) = (edge_b[0][t], edge_b[1][t], edge_b[2][t]);
+        let (cx, cy, cz) = (edge_c[0][t], edge_c[1][t], edge_c[2][t]);
+        let nx = 0.5 * (by * cz - bz * cy);
+        let ny = 0.5 * (bz * cx - bx * cz);
+        let nz = 0.5 * (bx * cy - by * cx);
+        let a = (nx * nx + ny * ny + nz * nz).sqrt();
+        let inverse = 1.0 / a;
+        // As `normalize_or_zero`: a degenerate triangle has no normal.
+        let inverse = if inverse.is_finite() && inverse > 0.0 {
+            inverse
+        } else {
+            0.0
+        };
+        let (nx, ny, nz) = (nx * inverse, ny * inverse, nz * inverse);
+        normal[0][t] = nx;
+        normal[1][t] = ny;
+        normal[2][t] = nz;
+        area[t] = a;
+        normal_speed[t] = nx * velocity[0][t] + ny * velocity[1][t] + nz * velocity[2][t];
+    }
+    for (t, tri) in TRIANGLES.into_iter().enumerate() {
+        if normal_speed[t] <= 0.0 {
             continue;
         }
-        let f = -drag_coefficient * area * normal_speed * n;
+        let n = Vec3::new(normal[0][t], normal[1][t], normal[2][t]);
+        let f = -drag_coefficient * area[t] * normal_speed[t] * n;
         for node in tri {
             forces[node] += f / 3.0;
         }
         if let Some((matrix, dt)) = system.as_mut() {
-            let k = *dt * f64::from(drag_coefficient * area) / 9.0;
-            let n64 = [f64::from(n.x), f64::from(n.y), f64::from(n.z)];
-            let mut block = [[0.0; 3]; 3];
-            for (r, row) in block.iter_mut().enumerate() {
-                for (col, v) in row.iter_mut().enumerate() {
-                    *v = k * n64[r] * n64[col];
-                }
-            }
-            for (i, &p) in tri.iter().enumerate() {
-                matrix.add_block(p, p, block);
-                for &q in &tri[i + 1..] {
-                    matrix.add_block(p, q, block);
-                }
-            }
+            let k = *dt * f64::from(drag_coefficient * area[t]) / 9.0;
+            let block = sym3_outer([f64::from(n.x), f64::from(n.y), f64::from(n.z)], k, 0.0);
+            matrix.add_triangle_block(tri, &block);
         }
     }
 }

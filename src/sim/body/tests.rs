@@ -7,7 +7,7 @@
 use glam::Vec3;
 
 use super::body_layout::{REST_POSITIONS, TRIANGLES};
-use super::{BodyCommand, FishBody, PectoralFins, SwimMc, SwimParams};
+use super::{BodyCommand, BodyParams, FishBody, PectoralFins, SwimMc, SwimParams};
 
 /// Length of the test fish in metres: the paper's 26 units, so numbers read as paper
 /// units.
@@ -16,7 +16,21 @@ const LENGTH_M: f32 = 26.0;
 /// Swims for `secs` with fixed parameters and fins; returns the fish and its centre
 /// of mass at the half-way time.
 fn swim(params: SwimParams, fins: PectoralFins, secs: f32) -> (FishBody, Vec3) {
-    let mut fish = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
+    swim_from(
+        FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X),
+        params,
+        fins,
+        secs,
+    )
+}
+
+/// As [`swim`] from a given fish.
+fn swim_from(
+    mut fish: FishBody,
+    params: SwimParams,
+    fins: PectoralFins,
+    secs: f32,
+) -> (FishBody, Vec3) {
     let mut mc = SwimMc::default();
     let steps = (secs / fish.dt_secs()) as usize;
     let mut half = Vec3::ZERO;
@@ -198,6 +212,28 @@ fn long_random_run_stays_finite_and_intact() {
 }
 
 #[test]
+fn a_lagged_jacobian_swims_nearly_like_the_exact_one() {
+    // `BodyParams::jacobian_interval` = 2: one factorisation per two substeps.
+    let lagged = FishBody::with_params(
+        LENGTH_M,
+        Vec3::ZERO,
+        Vec3::X,
+        BodyParams {
+            jacobian_interval: 2,
+            ..Default::default()
+        },
+    );
+    let secs = 20.0;
+    let (exact, h0) = swim(SwimParams::MAX, PectoralFins::NEUTRAL, secs);
+    let (lagged, h1) = swim_from(lagged, SwimParams::MAX, PectoralFins::NEUTRAL, secs);
+    assert!(lagged.positions_m().iter().all(|p| p.is_finite()));
+    let v0 = (exact.centre_of_mass_m() - h0).x;
+    let v1 = (lagged.centre_of_mass_m() - h1).x;
+    assert!((v1 / v0 - 1.0).abs() < 0.05, "lagged {v1} exact {v0}");
+    assert!(lagged.up().z > 0.95, "not upright: {}", lagged.up());
+}
+
+#[test]
 fn pectoral_fin_pitch_makes_the_fish_ascend_or_descend() {
     let (level, h0) = swim(SwimParams::MAX, PectoralFins::NEUTRAL, 60.0);
     let (up, h1) = swim(SwimParams::MAX, PectoralFins::pitch(0.5), 60.0);
@@ -265,6 +301,58 @@ fn speed_table() {
         "cost per step: {:.1} µs",
         t0.elapsed().as_secs_f64() * 1e6 / n as f64
     );
+}
+
+/// Timing of [`FishBody::step`] behind the figures in the `fish_body.rs` module doc:
+/// `cargo test --release --lib step_cost -- --ignored --nocapture`. A fish swimming
+/// at top speed (tail beating, water faces switching), after a 10 s warm-up; seven
+/// batches of 2000 steps, min and median reported (the machine may be shared). Once
+/// with the default exact Jacobian, then with `jacobian_interval` 2 and 4.
+#[test]
+#[ignore]
+fn step_cost() {
+    for interval in [1, 2, 4] {
+        let params = BodyParams {
+            jacobian_interval: interval,
+            ..Default::default()
+        };
+        let mut fish = FishBody::with_params(LENGTH_M, Vec3::ZERO, Vec3::X, params);
+        let mut mc = SwimMc::default();
+        let mut step = |fish: &mut FishBody| {
+            let u = mc.step(&SwimParams::MAX, fish.dt_secs());
+            fish.step(
+                &BodyCommand {
+                    muscle_contractions: u,
+                    ..Default::default()
+                },
+                Vec3::ZERO,
+            );
+        };
+        for _ in 0..(10.0 / fish.dt_secs()) as usize {
+            step(&mut fish);
+        }
+        let batch = 2000;
+        let mut micros: Vec<f64> = (0..7)
+            .map(|_| {
+                let t0 = std::time::Instant::now();
+                for _ in 0..batch {
+                    step(&mut fish);
+                }
+                t0.elapsed().as_secs_f64() * 1e6 / batch as f64
+            })
+            .collect();
+        micros.sort_by(f64::total_cmp);
+        let substeps = f64::from(params.substeps);
+        println!(
+            "jacobian_interval {interval}: step cost min {:.1} µs, median {:.1} µs per step; \
+             {:.2} / {:.2} µs per substep ({substeps} substeps)",
+            micros[0],
+            micros[3],
+            micros[0] / substeps,
+            micros[3] / substeps
+        );
+        assert!(fish.positions_m().iter().all(|p| p.is_finite()));
+    }
 }
 
 /// Search routine behind `SteeringMap::DEFAULT` and the turn table in `turn_mc.rs`:
