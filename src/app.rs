@@ -24,9 +24,9 @@ use crate::ui::{
 /// …), for tests that click a fish. 20: the default tank's ten fish and shark.
 const ANIMAL_RECTS_MAX: usize = 20;
 
-/// Share of the way the follow camera moves towards the selected fish each frame
-/// (0.12, chosen: smooth at 30–60 frames/s, and the fish never leaves the view).
-const FOLLOW_SMOOTHING: f32 = 0.12;
+/// Time constant of the follow camera gliding to the selected fish, seconds (0.4,
+/// chosen: smooth, and a fish at top speed never leaves the view, at any frame rate).
+const FOLLOW_TIME_CONSTANT_SECS: f32 = 0.4;
 
 /// Radius of a rock a teacher adds by clicking, metres. Default 0.6 m: clearly
 /// visible, two fish lengths across, small enough to place between others.
@@ -282,7 +282,8 @@ impl ShoalApp {
     fn views_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings) {
         let full = ui.available_rect_before_wrap();
         self.widget_rects.insert("aquarium", full);
-        self.follow_selected(settings);
+        let frame_secs = ui.input(|i| i.stable_dt).min(0.5);
+        self.follow_selected(settings, frame_secs);
         let count = self.lab.runs().len();
         let gap = if count > 1 { 4.0 } else { 0.0 };
         let width = (full.width() - gap * (count as f32 - 1.0)) / count as f32;
@@ -301,7 +302,7 @@ impl ShoalApp {
     }
 
     /// Physics scene: glides the camera's target towards the selected fish.
-    fn follow_selected(&mut self, settings: &Settings) {
+    fn follow_selected(&mut self, settings: &Settings, frame_secs: f32) {
         let physics = &settings.physics;
         if settings.scene != Scene::Physics || !physics.follow {
             self.following = false;
@@ -319,7 +320,8 @@ impl ShoalApp {
         }
         let nodes = run.drawn_nodes_m(selected as usize, self.lab.draw_alpha());
         let centre = nodes.iter().sum::<Vec3>() / nodes.len() as f32;
-        self.camera.target_m = self.camera.target_m.lerp(centre, FOLLOW_SMOOTHING);
+        let share = 1.0 - (-frame_secs.max(0.0) / FOLLOW_TIME_CONSTANT_SECS).exp();
+        self.camera.target_m = self.camera.target_m.lerp(centre, share);
         // On starting to follow, come close enough to see the body bend: about eight
         // body lengths away (the teacher may zoom afterwards).
         if !self.following {
