@@ -831,13 +831,29 @@ impl eframe::App for ShoalApp {
         }
 
         if self.lab.settings().scene == Scene::Physics {
-            let selected = self.lab.settings().physics.selected;
-            egui::Panel::bottom("body_plots")
-                .resizable(true)
-                .default_size(170.0)
-                .show(ui, |ui| {
-                    body_plots_ui(ui, &self.lab.runs()[0], selected, &mut self.widget_rects);
-                });
+            // The plots need a selected fish; until then one line says how to get them.
+            match self.lab.settings().physics.selected {
+                Some(selected) => {
+                    egui::Panel::bottom("body_plots")
+                        .resizable(true)
+                        .default_size(170.0)
+                        .show(ui, |ui| {
+                            body_plots_ui(
+                                ui,
+                                &self.lab.runs()[0],
+                                Some(selected),
+                                &mut self.widget_rects,
+                            );
+                        });
+                }
+                None => {
+                    egui::Panel::bottom("body_plots_hint")
+                        .resizable(false)
+                        .show(ui, |ui| {
+                            body_plots_ui(ui, &self.lab.runs()[0], None, &mut self.widget_rects);
+                        });
+                }
+            }
         }
 
         let mut settings = self.lab.settings().clone();

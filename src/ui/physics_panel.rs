@@ -229,7 +229,7 @@ fn selected_fish_ui(
 /// each) and speed over the last [`BODY_TRACE_SECS`].
 pub fn body_plots_ui(ui: &mut egui::Ui, run: &Run, selected: Option<u32>, rects: &mut WidgetRects) {
     let Some(index) = selected else {
-        ui.centered_and_justified(|ui| {
+        ui.vertical_centered(|ui| {
             ui.label(
                 egui::RichText::new(
                     "Click a fish to see its twelve muscles at work and how fast it swims.",
