@@ -61,6 +61,24 @@ impl Projector<'_> {
     }
 }
 
+/// Where physical animal `i` is drawn: its middle in the tank, its middle on screen
+/// and half its length on screen (at least 4 points); `None` behind the camera.
+fn screen_disc(
+    project: &Projector,
+    run: &Run,
+    alpha: f32,
+    i: usize,
+    body_length_m: f32,
+) -> Option<(Vec3, egui::Pos2, f32)> {
+    let nodes = run.drawn_nodes_m(i, alpha);
+    let centre = nodes.iter().sum::<Vec3>() / NODE_COUNT as f32;
+    let c = project.point(centre)?;
+    let half = project
+        .point(centre + camera_right(project.camera) * 0.5 * body_length_m)
+        .map_or(4.0, |e| c.distance(e).max(4.0));
+    Some((centre, c, half))
+}
+
 /// Which animals to draw: the selected one, or the first [`SKELETONS_MAX`].
 fn shown(run: &Run, selected: Option<u32>) -> Vec<usize> {
     let count = run.physics().map_or(0, |p| p.animals().len());
@@ -200,15 +218,11 @@ pub fn draw_selection(
         return;
     };
     let project = Projector::new(camera, rect);
-    let nodes = run.drawn_nodes_m(i, alpha);
-    let centre = nodes.iter().sum::<Vec3>() / NODE_COUNT as f32;
-    let (Some(c), Some(edge)) = (
-        project.point(centre),
-        project.point(centre + camera_right(camera) * 0.6 * animal.body_length_m()),
-    ) else {
+    let Some((_, c, half)) = screen_disc(&project, run, alpha, i, 1.2 * animal.body_length_m())
+    else {
         return;
     };
-    let radius = c.distance(edge).max(10.0);
+    let radius = half.max(10.0);
     painter.circle_stroke(
         c,
         radius,
@@ -238,12 +252,7 @@ pub fn animal_screen_rects(
         .iter()
         .enumerate()
         .map(|(i, animal)| {
-            let nodes = run.drawn_nodes_m(i, alpha);
-            let centre = nodes.iter().sum::<Vec3>() / NODE_COUNT as f32;
-            let c = project.point(centre)?;
-            let half = project
-                .point(centre + camera_right(camera) * 0.5 * animal.body_length_m())
-                .map_or(4.0, |e| c.distance(e).max(4.0));
+            let (_, c, half) = screen_disc(&project, run, alpha, i, animal.body_length_m())?;
             Some(egui::Rect::from_center_size(
                 c,
                 egui::vec2(2.0 * half, 2.0 * half),
@@ -269,15 +278,9 @@ pub fn pick_animal(
         .iter()
         .enumerate()
         .filter_map(|(i, animal)| {
-            let nodes = run.drawn_nodes_m(i, alpha);
-            let centre = nodes.iter().sum::<Vec3>() / NODE_COUNT as f32;
-            let c = project.point(centre)?;
-            let half = project
-                .point(centre + camera_right(camera) * 0.5 * animal.body_length_m())
-                .map_or(0.0, |e| c.distance(e));
-            let reach = half + PICK_SLACK_PT;
-            let d = c.distance(pointer);
-            (d <= reach).then_some((i as u32, centre.distance(eye)))
+            let (centre, c, half) = screen_disc(&project, run, alpha, i, animal.body_length_m())?;
+            (c.distance(pointer) <= half + PICK_SLACK_PT)
+                .then_some((i as u32, centre.distance(eye)))
         })
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .map(|(i, _)| i)

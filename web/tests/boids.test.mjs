@@ -13,33 +13,13 @@ import {
   fishPixels,
   saveArtifact,
   clickWidget,
+  clickUntil,
+  waitForWidget,
 } from "./harness.mjs";
 
 const state = (page) => page.evaluate(() => window.shoal.state());
 const settings = (page) => page.evaluate(() => window.shoal.settings());
 const widget = (page, name) => page.evaluate((n) => window.shoal.widgets()[n], name);
-
-/** Waits until a named widget is on screen (the panel may still be laying out). */
-async function waitForWidget(page, name) {
-  await page.waitForFunction((n) => !!window.shoal.widgets()[n], name, { timeout: 60_000 });
-  return widget(page, name);
-}
-
-/** Clicks an idempotent widget (a radio or preset button) until `predicate` holds:
- * on a software-rendered, loaded machine a frame can take seconds, and a click that
- * lands while egui is still laying out the previous frame may be missed. */
-async function clickUntil(page, name, predicate, arg) {
-  for (let attempt = 0; attempt < 4; attempt++) {
-    await clickWidget(page, name);
-    try {
-      await page.waitForFunction(predicate, arg, { timeout: 20_000 });
-      return;
-    } catch {
-      // Not applied yet: click again.
-    }
-  }
-  throw new Error(`clicking ${name} had no effect`);
-}
 
 /** Drags the handle of slider `name` to `fraction` of its width, as a person would. */
 async function dragSlider(page, name, fraction) {

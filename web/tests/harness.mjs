@@ -168,3 +168,27 @@ export async function clickWidget(page, name) {
 }
 
 export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+
+/** Waits until a named widget is on screen (the panel may still be laying out) and
+ * returns its rectangle. */
+export async function waitForWidget(page, name) {
+  await page.waitForFunction((n) => !!window.shoal.widgets()[n], name, { timeout: 60_000 });
+  return page.evaluate((n) => window.shoal.widgets()[n], name);
+}
+
+/** Clicks an idempotent widget (a radio, a check box, a preset button) until
+ * `predicate` holds: on a software-rendered, loaded machine a frame can take
+ * seconds, and a click that lands while egui is still laying out the previous frame
+ * may be missed. */
+export async function clickUntil(page, name, predicate, arg) {
+  for (let attempt = 0; attempt < 4; attempt++) {
+    await clickWidget(page, name);
+    try {
+      await page.waitForFunction(predicate, arg, { timeout: 20_000 });
+      return;
+    } catch {
+      // Not applied yet: click again.
+    }
+  }
+  throw new Error(`clicking ${name} had no effect`);
+}

@@ -4,31 +4,21 @@
 // refused with a message. WebGL2 (SwiftShader).
 import { test, describe, before, after } from "node:test";
 import assert from "node:assert/strict";
-import { serveDist, launch, openShoal, decode, pixelStats, fishPixels, saveArtifact, clickWidget } from "./harness.mjs";
+import {
+  serveDist,
+  launch,
+  openShoal,
+  decode,
+  pixelStats,
+  fishPixels,
+  saveArtifact,
+  clickUntil,
+  waitForWidget,
+} from "./harness.mjs";
 
 const state = (page) => page.evaluate(() => window.shoal.state());
 const settings = (page) => page.evaluate(() => window.shoal.settings());
 const widgets = (page) => page.evaluate(() => window.shoal.widgets());
-
-async function waitForWidget(page, name) {
-  await page.waitForFunction((n) => !!window.shoal.widgets()[n], name, { timeout: 60_000 });
-  return (await widgets(page))[name];
-}
-
-/** Clicks a widget until `predicate` holds (a click during a slow software-rendered
- * frame can be missed); see boids.test.mjs. */
-async function clickUntil(page, name, predicate, arg) {
-  for (let attempt = 0; attempt < 4; attempt++) {
-    await clickWidget(page, name);
-    try {
-      await page.waitForFunction(predicate, arg, { timeout: 20_000 });
-      return;
-    } catch {
-      // Not applied yet: click again.
-    }
-  }
-  throw new Error(`clicking ${name} had no effect`);
-}
 
 /** Signed horizontal angle from heading a to heading b, degrees (+ = the fish's left
  * in the tank frame, y up). */
