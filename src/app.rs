@@ -432,10 +432,10 @@ impl ShoalApp {
                 body_overlay::draw_selection(&painter, rect, &self.camera, run, alpha, selected);
             }
             // Where the first animals are on screen, so browser tests can click one.
-            for (i, r) in body_overlay::animal_screen_rects(rect, &self.camera, run, alpha)
-                .into_iter()
-                .take(ANIMAL_RECTS_MAX)
-                .enumerate()
+            for (i, r) in
+                body_overlay::animal_screen_rects(rect, &self.camera, run, alpha, ANIMAL_RECTS_MAX)
+                    .into_iter()
+                    .enumerate()
             {
                 if let Some(r) = r {
                     self.widget_rects.insert(&format!("animal_{i}"), r);

@@ -61,6 +61,15 @@ pub fn to_tank_frame(v: Vec3) -> Vec3 {
     Vec3::new(v.x, v.z, -v.y)
 }
 
+/// The level (horizontal) angle from heading `from` to heading `to` in the tank
+/// frame, degrees, + = to the fish's left (left of h is y × h); 0 for a vertical or
+/// zero vector.
+pub fn level_turn_deg(from: Vec3, to: Vec3) -> f32 {
+    let level = |v: Vec3| Vec3::new(v.x, 0.0, v.z).normalize_or_zero();
+    let (a, b) = (level(from), level(to));
+    Vec3::Y.cross(a).dot(b).atan2(a.dot(b)).to_degrees()
+}
+
 /// What the bridge asks of the motor controllers this step.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct MotorIntent {
@@ -175,6 +184,9 @@ mod tests {
             to_body_frame(Vec3::X).cross(to_body_frame(Vec3::Y)),
             to_body_frame(Vec3::Z)
         );
+        // Left of +x (y up) is −z, and the body frame agrees: +y_body.
+        assert!((level_turn_deg(Vec3::X, Vec3::NEG_Z) - 90.0).abs() < 1e-4);
+        assert_eq!(to_tank_frame(Vec3::Y), Vec3::NEG_Z);
     }
 
     #[test]

@@ -267,16 +267,8 @@ impl PhysicalFish {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sim::motor_bridge::level_turn_deg;
     use std::f32::consts::{FRAC_PI_2, PI};
-
-    fn level_angle_deg(from: Vec3, to: Vec3) -> f32 {
-        // + = to the fish's left in the tank frame (y up): left of h is y × h.
-        let (a, b) = (
-            Vec3::new(from.x, 0.0, from.z).normalize_or_zero(),
-            Vec3::new(to.x, 0.0, to.z).normalize_or_zero(),
-        );
-        Vec3::Y.cross(a).dot(b).atan2(a.dot(b)).to_degrees()
-    }
 
     #[test]
     fn the_bridge_steers_a_physical_fish_to_a_target_beside_it() {
@@ -320,7 +312,7 @@ mod tests {
                 let right = fish.heading().cross(Vec3::Y).normalize_or_zero();
                 roll_sum += fish.up().dot(right).asin().to_degrees();
             }
-            (level_angle_deg(heading, fish.heading()), roll_sum / 100.0)
+            (level_turn_deg(heading, fish.heading()), roll_sum / 100.0)
         };
         let (straight, level) = swim(PectoralFins::NEUTRAL);
         // The left fin across the flow drags the left side back: the fish yaws left.

@@ -750,10 +750,7 @@ mod tests {
             w.step();
         }
         let after = w.animals()[0].heading();
-        let flat = |v: Vec3| Vec3::new(v.x, 0.0, v.z).normalize_or_zero();
-        let (b, a) = (flat(before), flat(after));
-        // Left of heading h in the tank frame (y up) is y × h.
-        let turned = (Vec3::Y.cross(b).dot(a)).atan2(b.dot(a)).to_degrees();
+        let turned = crate::sim::motor_bridge::level_turn_deg(before, after);
         assert!((60.0..=120.0).contains(&turned), "turned {turned}°");
     }
 

@@ -235,13 +235,14 @@ fn camera_right(camera: &OrbitCamera) -> Vec3 {
     forward.cross(Vec3::Y).normalize_or(Vec3::X)
 }
 
-/// Each physical animal's square on screen (centred on its middle, as wide as its
-/// drawn length), `None` when behind the camera.
+/// The squares on screen of the first `max` physical animals (centred on each
+/// one's middle, as wide as its drawn length), `None` when behind the camera.
 pub fn animal_screen_rects(
     rect: egui::Rect,
     camera: &OrbitCamera,
     run: &Run,
     alpha: f32,
+    max: usize,
 ) -> Vec<Option<egui::Rect>> {
     let Some(physics) = run.physics() else {
         return Vec::new();
@@ -251,6 +252,7 @@ pub fn animal_screen_rects(
         .animals()
         .iter()
         .enumerate()
+        .take(max)
         .map(|(i, animal)| {
             let (_, c, half) = screen_disc(&project, run, alpha, i, animal.body_length_m())?;
             Some(egui::Rect::from_center_size(
