@@ -9,9 +9,12 @@
 pub mod body;
 pub mod boid_forces;
 pub mod control_mode;
+pub mod environment;
 pub mod fish;
+pub mod mind;
 pub mod motor_bridge;
 pub mod obstacle;
+pub mod perception;
 pub mod physical_fish;
 pub mod physics_world;
 pub mod school_metrics;

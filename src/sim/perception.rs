@@ -1,0 +1,476 @@
+//! The artificial fish's vision sensor (Tu & Terzopoulos 1994 §5.1, Fig. 10): a
+//! cyclopean eye with a 300° spherical field of view (a 60° blind cone behind)
+//! reaching out to an effective radius V_r set by the water's visibility. An
+//! object is *seen* when some part of it enters this view volume and it is not
+//! fully occluded behind an opaque object (a rock, or another fish's body).
+//!
+//! Occlusion is tested with rays from the eye to the object's centre and to four
+//! points on its silhouette (its bounding sphere seen from the eye): the object
+//! is seen if any ray is clear. Fish bodies block rays as spheres of half a body
+//! length; rocks, pillars and ledges by their exact shapes (sphere tracing of
+//! `Obstacle::signed_distance_m`).
+//!
+//! [`Retina`] renders the fish-eye "retinal image" of Fig. 11 by casting one ray
+//! per pixel (equidistant fisheye over the 300° field): fish, rocks, food, sand,
+//! glass and the surface, lit by the water's light field and fogged by distance.
+//! The fish reads the image's mean brightness (§5.1: "the fish determines only
+//! the overall brightness of its environment by computing the mean intensity of
+//! the retinal image").
+
+use glam::Vec3;
+
+use super::environment::Environment;
+use super::obstacle::Obstacle;
+
+/// The paper's field of view, radians (300°).
+pub const FIELD_OF_VIEW_RAD: f32 = 300.0 * std::f32::consts::PI / 180.0;
+
+/// A sphere that may be seen or may hide things.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere {
+    pub center_m: Vec3,
+    pub radius_m: f32,
+}
+
+/// The eye of one fish.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Eye {
+    /// Where the eye is (the head), metres.
+    pub position_m: Vec3,
+    /// Where the fish looks (unit).
+    pub forward: Vec3,
+    /// V_r, metres.
+    pub radius_m: f32,
+    /// Full angle of the field of view, radians (300° in the paper).
+    pub field_of_view_rad: f32,
+}
+
+impl Eye {
+    pub fn new(position_m: Vec3, forward: Vec3, radius_m: f32) -> Self {
+        Self {
+            position_m,
+            forward: forward.normalize_or(Vec3::X),
+            radius_m,
+            field_of_view_rad: FIELD_OF_VIEW_RAD,
+        }
+    }
+
+    /// Does some part of `object` enter the view volume (within V_r and outside
+    /// the blind cone behind)?
+    pub fn in_view_volume(&self, object: Sphere) -> bool {
+        let to = object.center_m - self.position_m;
+        let d = to.length();
+        if !d.is_finite() || d - object.radius_m > self.radius_m {
+            return false;
+        }
+        if d <= object.radius_m {
+            return true;
+        }
+        let angle = self.forward.dot(to / d).clamp(-1.0, 1.0).acos();
+        let angular_radius = (object.radius_m / d).clamp(-1.0, 1.0).asin();
+        angle - angular_radius <= 0.5 * self.field_of_view_rad
+    }
+
+    /// Is `object` seen: in the view volume and not fully hidden behind one of
+    /// `occluders` (other fish; the object itself and the viewer must not be in
+    /// the list) or `obstacles`?
+    pub fn sees(&self, object: Sphere, occluders: &[Sphere], obstacles: &[Obstacle]) -> bool {
+        if !self.in_view_volume(object) {
+            return false;
+        }
+        silhouette_points(self.position_m, object)
+            .iter()
+            .any(|&p| self.in_field(p) && clear_line(self.position_m, p, occluders, obstacles))
+    }
+
+    /// Is the direction to `p_m` outside the blind cone and within V_r?
+    fn in_field(&self, p_m: Vec3) -> bool {
+        let to = p_m - self.position_m;
+        let d = to.length();
+        if d < 1e-6 {
+            return true;
+        }
+        d <= self.radius_m
+            && self.forward.dot(to / d) >= (0.5 * self.field_of_view_rad).cos() - 1e-6
+    }
+}
+
+/// The centre of `object` and four points on its outline as seen from `eye_m`
+/// (pulled in by 10 % so that grazing rays count as blocked).
+fn silhouette_points(eye_m: Vec3, object: Sphere) -> [Vec3; 5] {
+    let axis = (object.center_m - eye_m).normalize_or(Vec3::X);
+    let side = axis.any_orthonormal_vector();
+    let up = axis.cross(side);
+    let r = 0.9 * object.radius_m;
+    let c = object.center_m;
+    [c, c + side * r, c - side * r, c + up * r, c - up * r]
+}
+
+/// Is the straight line from `a` to `b` free of `occluders` and `obstacles`?
+pub fn clear_line(a: Vec3, b: Vec3, occluders: &[Sphere], obstacles: &[Obstacle]) -> bool {
+    let ab = b - a;
+    let len = ab.length();
+    if len < 1e-6 {
+        return true;
+    }
+    let dir = ab / len;
+    for s in occluders {
+        if let Some(t) = ray_sphere(a, dir, *s)
+            && t < len
+        {
+            return false;
+        }
+    }
+    obstacles
+        .iter()
+        .filter(|o| segment_near_obstacle(a, b, o))
+        .all(|o| sphere_trace(a, dir, len, |p| o.signed_distance_m(p)).is_none())
+}
+
+/// Distance along the ray (`dir` unit) to its first entry into `s`, if ahead.
+pub fn ray_sphere(origin: Vec3, dir: Vec3, s: Sphere) -> Option<f32> {
+    let oc = origin - s.center_m;
+    let b = oc.dot(dir);
+    let c = oc.length_squared() - s.radius_m * s.radius_m;
+    if c <= 0.0 {
+        // Starts inside: a fish does not see out of a sphere around itself,
+        // but the caller never lists the viewer; treat as not blocking.
+        return None;
+    }
+    let disc = b * b - c;
+    if disc < 0.0 || b > 0.0 {
+        return None;
+    }
+    Some(-b - disc.sqrt())
+}
+
+/// Cheap reject: the segment passes farther from the obstacle's bounding
+/// sphere than its radius.
+fn segment_near_obstacle(a: Vec3, b: Vec3, o: &Obstacle) -> bool {
+    let (lo, hi) = o.vertical_extent_m();
+    let footprint = o.footprint_center_m();
+    let centre = Vec3::new(footprint.x, 0.5 * (lo + hi), footprint.y);
+    let radius = o.radius_m().max(0.5 * (hi - lo)) * 1.5 + 0.01;
+    let ab = b - a;
+    let t = ((centre - a).dot(ab) / ab.length_squared().max(1e-12)).clamp(0.0, 1.0);
+    (a + ab * t).distance(centre) <= radius
+}
+
+/// March along the ray by the signed distance until it enters the solid
+/// (returns the distance) or passes `max_t_m`.
+pub fn sphere_trace(
+    origin: Vec3,
+    dir: Vec3,
+    max_t_m: f32,
+    sdf: impl Fn(Vec3) -> f32,
+) -> Option<f32> {
+    let mut t = 0.0;
+    for _ in 0..64 {
+        let d = sdf(origin + dir * t);
+        if !d.is_finite() {
+            return None;
+        }
+        if d < 2e-3 {
+            return Some(t);
+        }
+        t += d;
+        if t >= max_t_m {
+            return None;
+        }
+    }
+    None
+}
+
+/// What the retina can see: everything drawn is an opaque sphere, ellipsoid or
+/// obstacle; food is small bright spheres.
+#[derive(Clone, Debug, Default)]
+pub struct RetinaScene<'a> {
+    /// Fish bodies: centre, heading (unit), body length, colour (linear RGB).
+    pub fish: Vec<(Vec3, Vec3, f32, [f32; 3])>,
+    pub food_m: Vec<Vec3>,
+    pub obstacles: &'a [Obstacle],
+}
+
+/// A fish-eye retinal image: `size` × `size` RGB pixels, an equidistant
+/// fisheye (distance from the centre ∝ angle from the optical axis) covering
+/// the whole field of view; pixels outside the disc are black.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Retina {
+    pub size: usize,
+    /// Row-major, top row first, linear RGB in [0, 1].
+    pub pixels: Vec<[f32; 3]>,
+    /// Mean intensity (luminance) over the field of view, each pixel weighted
+    /// by the solid angle it covers, [0, 1].
+    pub mean_brightness: f32,
+}
+
+/// Colour of sand, water and rocks in the retinal image (linear RGB).
+const SAND: [f32; 3] = [0.76, 0.68, 0.5];
+const WATER: [f32; 3] = [0.05, 0.28, 0.38];
+const ROCK: [f32; 3] = [0.42, 0.4, 0.38];
+const SURFACE: [f32; 3] = [0.75, 0.9, 0.95];
+const FOOD: [f32; 3] = [0.95, 0.9, 0.45];
+/// Radius of a food particle in the retina, metres.
+const FOOD_RADIUS_M: f32 = 0.06;
+
+impl Retina {
+    /// Renders what `eye` sees (its `up` gives the image's vertical).
+    pub fn render(
+        eye: &Eye,
+        up: Vec3,
+        size: usize,
+        scene: &RetinaScene,
+        env: &Environment,
+    ) -> Self {
+        let size = size.clamp(4, 256);
+        let forward = eye.forward;
+        let right = forward
+            .cross(up)
+            .normalize_or(forward.any_orthonormal_vector());
+        let up = right.cross(forward);
+        let half_fov = 0.5 * eye.field_of_view_rad;
+        let mut pixels = vec![[0.0; 3]; size * size];
+        let (mut sum, mut total_weight) = (0.0f32, 0.0f32);
+        for row in 0..size {
+            for col in 0..size {
+                let x = (col as f32 + 0.5) / size as f32 * 2.0 - 1.0;
+                let y = 1.0 - (row as f32 + 0.5) / size as f32 * 2.0;
+                let r = (x * x + y * y).sqrt();
+                if r > 1.0 {
+                    continue;
+                }
+                let theta = r * half_fov;
+                let (sin_t, cos_t) = theta.sin_cos();
+                let (cx, cy) = if r > 1e-6 { (x / r, y / r) } else { (0.0, 0.0) };
+                let dir = (forward * cos_t + (right * cx + up * cy) * sin_t).normalize_or(forward);
+                let c = shade_ray(eye, dir, scene, env);
+                pixels[row * size + col] = c;
+                // Weighted by the pixel's solid angle, sin θ / θ in an
+                // equidistant fisheye, so the stretched rim behind does not
+                // outweigh the view ahead.
+                let weight = if theta > 1e-6 { sin_t / theta } else { 1.0 };
+                sum += weight * (0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]);
+                total_weight += weight;
+            }
+        }
+        Self {
+            size,
+            pixels,
+            mean_brightness: if total_weight > 0.0 {
+                (sum / total_weight).clamp(0.0, 1.0)
+            } else {
+                0.0
+            },
+        }
+    }
+
+    /// The image as 8-bit sRGB-ish RGBA (gamma 2.2), for display.
+    pub fn to_rgba8(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(self.pixels.len() * 4);
+        for p in &self.pixels {
+            for c in p {
+                out.push((c.clamp(0.0, 1.0).powf(1.0 / 2.2) * 255.0).round() as u8);
+            }
+            out.push(255);
+        }
+        out
+    }
+}
+
+/// The colour seen along one ray.
+fn shade_ray(eye: &Eye, dir: Vec3, scene: &RetinaScene, env: &Environment) -> [f32; 3] {
+    let o = eye.position_m;
+    let far = eye.radius_m;
+    let mut best_t = far;
+    let mut colour = WATER;
+    // Tank walls, floor and surface.
+    let tank = env.tank;
+    for axis in 0..3 {
+        let d = dir[axis];
+        if d.abs() < 1e-6 {
+            continue;
+        }
+        let bound = if d > 0.0 {
+            tank.max_m[axis]
+        } else {
+            tank.min_m[axis]
+        };
+        let t = (bound - o[axis]) / d;
+        if t > 0.0 && t < best_t {
+            best_t = t;
+            colour = match (axis, d > 0.0) {
+                (1, false) => SAND,
+                (1, true) => SURFACE,
+                _ => [0.12, 0.3, 0.36],
+            };
+        }
+    }
+    for &(centre, heading, length, c) in &scene.fish {
+        if let Some(t) = ray_ellipsoid(o, dir, centre, heading, 0.5 * length, 0.15 * length)
+            && t < best_t
+        {
+            best_t = t;
+            colour = c;
+        }
+    }
+    for &f in &scene.food_m {
+        let s = Sphere {
+            center_m: f,
+            radius_m: FOOD_RADIUS_M,
+        };
+        if let Some(t) = ray_sphere(o, dir, s)
+            && t < best_t
+        {
+            best_t = t;
+            colour = FOOD;
+        }
+    }
+    for obstacle in scene.obstacles {
+        if let Some(t) = sphere_trace(o, dir, best_t, |p| obstacle.signed_distance_m(p))
+            && t < best_t
+        {
+            best_t = t;
+            colour = ROCK;
+        }
+    }
+    let hit = o + dir * best_t;
+    let light = if colour == SURFACE {
+        1.0
+    } else {
+        0.25 + 0.75 * env.brightness_at(hit)
+    };
+    // Fog towards the water colour with distance (visibility V_r).
+    let fog = (best_t / far.max(1e-3)).clamp(0.0, 1.0).powf(0.8);
+    let water = env.brightness_at(o) * 0.8 + 0.2;
+    let mut out = [0.0; 3];
+    for k in 0..3 {
+        out[k] = (colour[k] * light) * (1.0 - fog) + WATER[k] * water * fog;
+    }
+    out
+}
+
+/// Distance to an ellipsoid with semi-axis `a` along `axis` (unit) and `b`
+/// across, centred at `centre`.
+fn ray_ellipsoid(o: Vec3, dir: Vec3, centre: Vec3, axis: Vec3, a: f32, b: f32) -> Option<f32> {
+    let axis = axis.normalize_or(Vec3::X);
+    let squash = |v: Vec3| {
+        let along = axis * v.dot(axis);
+        along / a.max(1e-4) + (v - along) / b.max(1e-4)
+    };
+    let o2 = squash(o - centre);
+    let d2 = squash(dir);
+    let len = d2.length();
+    if len < 1e-9 {
+        return None;
+    }
+    let t = ray_sphere(
+        o2,
+        d2 / len,
+        Sphere {
+            center_m: Vec3::ZERO,
+            radius_m: 1.0,
+        },
+    )?;
+    Some(t / len)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sim::tank::Tank;
+
+    fn eye() -> Eye {
+        Eye::new(Vec3::new(0.0, 2.0, 0.0), Vec3::X, 5.0)
+    }
+
+    fn ball(x: f32, z: f32) -> Sphere {
+        Sphere {
+            center_m: Vec3::new(x, 2.0, z),
+            radius_m: 0.1,
+        }
+    }
+
+    #[test]
+    fn the_field_of_view_is_300_degrees() {
+        let e = eye();
+        // 140° off the heading: seen; 160° off: in the blind cone.
+        for (deg, seen) in [
+            (0.0f32, true),
+            (90.0, true),
+            (140.0, true),
+            (160.0, false),
+            (180.0, false),
+        ] {
+            let a = deg.to_radians();
+            let target = ball(3.0 * a.cos(), 3.0 * a.sin());
+            assert_eq!(e.sees(target, &[], &[]), seen, "{deg}°");
+        }
+    }
+
+    #[test]
+    fn objects_beyond_the_radius_are_not_seen() {
+        let e = eye();
+        assert!(e.sees(ball(4.8, 0.0), &[], &[]));
+        assert!(!e.sees(ball(5.5, 0.0), &[], &[]));
+    }
+
+    #[test]
+    fn a_rock_or_a_fish_in_between_hides_a_target() {
+        let e = eye();
+        let target = ball(4.0, 0.0);
+        let rock = Obstacle::Rock {
+            center_m: Vec3::new(2.0, 2.0, 0.0),
+            radius_m: 0.5,
+        };
+        assert!(!e.sees(target, &[], std::slice::from_ref(&rock)));
+        let fish = Sphere {
+            center_m: Vec3::new(2.0, 2.0, 0.0),
+            radius_m: 0.25,
+        };
+        assert!(!e.sees(target, &[fish], &[]));
+        // A rock off to the side does not hide it.
+        let aside = Obstacle::Rock {
+            center_m: Vec3::new(2.0, 2.0, 2.0),
+            radius_m: 0.5,
+        };
+        assert!(e.sees(target, &[], std::slice::from_ref(&aside)));
+        // A target larger than the occluder peeks out around it.
+        let big = Sphere {
+            center_m: Vec3::new(4.0, 2.0, 0.0),
+            radius_m: 1.0,
+        };
+        assert!(e.sees(big, &[fish], &[]));
+    }
+
+    #[test]
+    fn the_retina_is_brighter_looking_up_than_down() {
+        let env = Environment::new(Tank::default());
+        let scene = RetinaScene::default();
+        let at = Vec3::new(0.0, 2.0, 0.0);
+        let up = Retina::render(&Eye::new(at, Vec3::Y, 8.0), Vec3::X, 24, &scene, &env);
+        let down = Retina::render(&Eye::new(at, -Vec3::Y, 8.0), Vec3::X, 24, &scene, &env);
+        assert!(
+            up.mean_brightness > down.mean_brightness,
+            "{} {}",
+            up.mean_brightness,
+            down.mean_brightness
+        );
+        assert_eq!(up.pixels.len(), 24 * 24);
+        assert!(up.pixels.iter().flatten().all(|c| c.is_finite()));
+        assert_eq!(up.to_rgba8().len(), 24 * 24 * 4);
+    }
+
+    #[test]
+    fn the_retina_shows_a_fish_in_front_in_its_colour() {
+        let env = Environment::new(Tank::default());
+        let red = [0.9, 0.1, 0.1];
+        let scene = RetinaScene {
+            fish: vec![(Vec3::new(1.0, 2.0, 0.0), Vec3::Z, 0.5, red)],
+            ..Default::default()
+        };
+        let e = Eye::new(Vec3::new(0.0, 2.0, 0.0), Vec3::X, 8.0);
+        let img = Retina::render(&e, Vec3::Y, 33, &scene, &env);
+        let centre = img.pixels[16 * 33 + 16];
+        assert!(centre[0] > 2.0 * centre[2] && centre[0] > 0.3, "{centre:?}");
+    }
+}
