@@ -6,6 +6,7 @@
 //! its unit (`speed_m_per_s`, `radius_m`, `dt_secs`). The y axis points up and
 //! the sand floor is at y = 0. A run is fully determined by its seed.
 
+pub mod behaviour;
 pub mod body;
 pub mod boid_forces;
 pub mod control_mode;
@@ -17,6 +18,7 @@ pub mod obstacle;
 pub mod perception;
 pub mod physical_fish;
 pub mod physics_world;
+pub mod reef_world;
 pub mod school_metrics;
 pub mod shark;
 pub mod spatial_grid;

@@ -162,6 +162,20 @@ impl PhysicalFish {
         self.turn.is_turning()
     }
 
+    /// Adds `dv_m_per_s` (tank frame) to every node's velocity: an outside
+    /// impulse, such as the pull of a predator's open mouth (§7.1).
+    pub fn add_velocity(&mut self, dv_m_per_s: Vec3) {
+        if !dv_m_per_s.is_finite() {
+            return;
+        }
+        let dv = to_body_frame(dv_m_per_s);
+        let (_, velocities) = self.body.nodes_mut();
+        for v in velocities.iter_mut() {
+            *v += dv;
+        }
+        self.sync_point();
+    }
+
     /// What the bridge makes of `desired_m_per_s` (tank frame) now.
     pub fn plan(&mut self, desired_m_per_s: Vec3) -> MotorIntent {
         let top = self.top_speed_m_per_s();

@@ -82,7 +82,7 @@ const MAX_INTENT_PITCH_RAD: f32 = 0.44;
 /// [`MAX_INTENT_TURN_RAD_PER_SEC`]·`dt` from `previous` and at most
 /// [`MAX_INTENT_LEAD_RAD`] from `forward`, and
 /// at most [`MAX_INTENT_PITCH_RAD`] from level.
-fn within_reach(previous: Vec3, wanted: Vec3, forward: Vec3, dt: f32) -> Vec3 {
+pub(crate) fn within_reach(previous: Vec3, wanted: Vec3, forward: Vec3, dt: f32) -> Vec3 {
     let speed = wanted.length();
     let towards = |from: Vec3, to: Vec3, max: f32| -> Vec3 {
         let (from, to) = (from.normalize_or_zero(), to.normalize_or_zero());
@@ -102,6 +102,68 @@ fn within_reach(previous: Vec3, wanted: Vec3, forward: Vec3, dt: f32) -> Vec3 {
     let level = (direction * Vec3::new(1.0, 0.0, 1.0)).normalize_or(forward);
     let direction = towards(level, direction, MAX_INTENT_PITCH_RAD);
     direction * speed
+}
+
+/// Turns a steering force on a physical animal into its motor intent: the
+/// force changes the animal's intended velocity (`intended`, a point-mass
+/// velocity like a boid's), the touch reflex and the body's reach
+/// ([`within_reach`]) shape it, and the bridge plans the muscles. Shared by
+/// every tank of physical fish.
+pub(crate) fn drive_physical(
+    animal: &mut PhysicalFish,
+    intended: &mut Vec3,
+    steering_m_per_s2: Vec3,
+    touch: Option<Vec3>,
+    dt: f32,
+) -> MotorIntent {
+    let top = animal.top_speed_m_per_s();
+    let mut v = steering::limit(*intended + steering_m_per_s2 * dt, top);
+    // Touch reflex: a fish whose head touched the glass or a rock wants to swim
+    // away from it, slowly (pushing on at full speed crushed the body to 0.78 of
+    // its length, measured).
+    if let Some(away) = touch {
+        let away = (away * Vec3::new(1.0, 0.0, 1.0)).normalize_or(away);
+        let into = v.dot(away).min(0.0);
+        v = (v - 2.0 * into * away).normalize_or(away) * TOUCH_SPEED_FRACTION * top;
+    }
+    let v = if v.length() < 0.3 * top {
+        v.normalize_or(animal.heading()) * 0.3 * top
+    } else {
+        v
+    };
+    let v = within_reach(*intended, v, animal.heading(), dt);
+    *intended = v;
+    let mut intent = animal.plan(v);
+    if touch.is_some() {
+        intent.speed_fraction = intent.speed_fraction.min(TOUCH_SPEED_FRACTION);
+    }
+    intent
+}
+
+/// One body step of a physical animal, then the hard rule: no node leaves the
+/// tank or enters a rock. Returns the hard rule's node moves and the direction
+/// the head was pushed, if it touched something.
+pub(crate) fn step_and_constrain(
+    animal: &mut PhysicalFish,
+    intent: &MotorIntent,
+    water_m_per_s: Vec3,
+    tank: &Tank,
+    obstacles: &[Obstacle],
+) -> (usize, Option<Vec3>) {
+    animal.step(intent, water_m_per_s);
+    let (lo, hi) = (
+        tank.min_m + Vec3::splat(GLASS_MARGIN_M),
+        tank.max_m - Vec3::splat(GLASS_MARGIN_M),
+    );
+    let centre = animal.point.position_m;
+    let reach = animal.body_length_m();
+    animal.constrain(lo, hi, |p| {
+        obstacles
+            .iter()
+            .filter(|o| o.signed_distance_m(centre) < reach)
+            .find(|o| o.signed_distance_m(p) < 0.0)
+            .map(|o| o.push_outside(p, 0.005))
+    })
 }
 
 /// How the fish choose where to swim.
@@ -441,48 +503,23 @@ impl PhysicsWorld {
                 }
             } else {
                 let steering = self.steering(i, &perception_of(&self.animals[i]), &sharks);
-                let a = &self.animals[i];
-                let top = a.top_speed_m_per_s();
-                let mut v = steering::limit(self.intended_m_per_s[i] + steering * dt, top);
-                // Touch reflex: a fish whose head touched the glass or a rock
-                // wants to swim away from it, slowly (pushing on at full speed
-                // crushed the body to 0.78 of its length, measured).
-                if let Some(away) = self.touch[i] {
-                    let away = (away * Vec3::new(1.0, 0.0, 1.0)).normalize_or(away);
-                    let into = v.dot(away).min(0.0);
-                    v = (v - 2.0 * into * away).normalize_or(away) * TOUCH_SPEED_FRACTION * top;
-                }
-                let v = if v.length() < 0.3 * top {
-                    v.normalize_or(a.heading()) * 0.3 * top
-                } else {
-                    v
-                };
-                let v = within_reach(self.intended_m_per_s[i], v, a.heading(), dt);
-                self.intended_m_per_s[i] = v;
-                let mut intent = self.animals[i].plan(v);
-                if self.touch[i].is_some() {
-                    intent.speed_fraction = intent.speed_fraction.min(TOUCH_SPEED_FRACTION);
-                }
-                intent
+                drive_physical(
+                    &mut self.animals[i],
+                    &mut self.intended_m_per_s[i],
+                    steering,
+                    self.touch[i],
+                    dt,
+                )
             };
             self.desired_m_per_s[i] = self.intended_m_per_s[i];
             let water = self.water_at(self.animals[i].point.position_m);
-            let animal = &mut self.animals[i];
-            animal.step(&intent, water);
-            let (lo, hi) = (
-                self.tank.min_m + Vec3::splat(GLASS_MARGIN_M),
-                self.tank.max_m - Vec3::splat(GLASS_MARGIN_M),
+            let (moved, touch) = step_and_constrain(
+                &mut self.animals[i],
+                &intent,
+                water,
+                &self.tank,
+                &self.obstacles,
             );
-            let centre = animal.point.position_m;
-            let reach = animal.body_length_m();
-            let obstacles = &self.obstacles;
-            let (moved, touch) = animal.constrain(lo, hi, |p| {
-                obstacles
-                    .iter()
-                    .filter(|o| o.signed_distance_m(centre) < reach)
-                    .find(|o| o.signed_distance_m(p) < 0.0)
-                    .map(|o| o.push_outside(p, 0.005))
-            });
             self.constraint_moves += moved as u64;
             self.touch[i] = touch;
         }

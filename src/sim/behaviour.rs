@@ -1,0 +1,253 @@
+//! The behaviour routines of Tu & Terzopoulos 1994 §6.4: given the intention
+//! and the focusser's target, bring the fish one step closer to its goal. Each
+//! routine returns the velocity the fish wants now (tank frame, m/s); the world
+//! turns it into a steering force and the body's motor controllers follow it
+//! (`motor_bridge.rs` for the muscle-driven body).
+//!
+//! - *avoiding-static-obstacle* and *avoiding-fish*: turn away from the side the
+//!   obstacle is on, slowing down (the paper picks a left or right turn-MC);
+//! - *eating-food*: chase the food (chasing-target) until it is within reach of
+//!   the mouth, then hover while the vacuum sucks it in (the world applies the
+//!   suck-in);
+//! - *mating*: chase the partner (the courtship sequence is in `courtship.rs`);
+//! - *leaving*: swim up the gradient of the light or temperature the fish likes;
+//! - *wandering*: the wander steering of the boid layer;
+//! - *escaping*: swim away from the predator, sideways if it is ahead;
+//! - *schooling* (Fig. 16): match the neighbours' heading, keep about one body
+//!   length from the nearest, close up on the group if it drifts away.
+//!
+//! *chasing-target* underlies eating, mating and (for predators) hunting.
+
+use glam::Vec3;
+
+/// Cruising speed, fraction of the top speed (0.7, the physics scene's value).
+pub const CRUISE_FRACTION: f32 = 0.7;
+/// Speed while avoiding, fraction of the top speed: slow enough to turn
+/// tightly, fast enough for the turn-MC's thrust (0.5).
+pub const AVOID_FRACTION: f32 = 0.5;
+/// Distance kept between schooling neighbours, body lengths ("roughly one body
+/// length", §7.2).
+pub const SCHOOL_SPACING_BODY_LENGTHS: f32 = 1.0;
+
+/// The fish whose behaviour is computed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Me {
+    pub position_m: Vec3,
+    pub head_m: Vec3,
+    pub heading: Vec3,
+    pub velocity_m_per_s: Vec3,
+    pub body_length_m: f32,
+    pub top_speed_m_per_s: f32,
+}
+
+/// chasing-target: head for `target_m` at `speed_fraction` of top speed,
+/// slowing inside `arrival_m` so the fish does not overshoot. A body that turns
+/// in circles of radius `turn_radius_m` (0 for the point-mass body) cannot
+/// reach a target inside one of its turning circles by turning towards it: it
+/// would circle it for ever. It swims straight on until the target leaves the
+/// circle, then turns (the shortest path of a car that cannot turn tighter,
+/// Dubins 1957).
+pub fn chase(
+    me: &Me,
+    target_m: Vec3,
+    speed_fraction: f32,
+    arrival_m: f32,
+    turn_radius_m: f32,
+) -> Vec3 {
+    let offset = target_m - me.head_m;
+    let d = offset.length();
+    let mut speed = speed_fraction * me.top_speed_m_per_s;
+    if arrival_m > 0.0 && d < arrival_m {
+        speed *= (d / arrival_m).max(0.3);
+    }
+    if turn_radius_m > 0.0 {
+        let flat = Vec3::new(1.0, 0.0, 1.0);
+        let forward = (me.heading * flat).normalize_or(Vec3::X);
+        let left = Vec3::Y.cross(forward);
+        let level = offset * flat;
+        let side = if level.dot(left) >= 0.0 { left } else { -left };
+        let centre = side * turn_radius_m;
+        let inside_circle =
+            (level - centre).length() < turn_radius_m && level.dot(forward) < 2.0 * turn_radius_m;
+        let horizontal = if inside_circle {
+            forward
+        } else {
+            level.normalize_or(forward)
+        };
+        // Climb or dive no steeper than the body can: a target overhead is
+        // reached by spiralling up.
+        let pitch = offset
+            .y
+            .atan2(level.length())
+            .clamp(-MAX_CHASE_PITCH_RAD, MAX_CHASE_PITCH_RAD);
+        // Slow down for a sharp turn: the circle shrinks with the speed.
+        let bearing_cos = horizontal.dot(forward).max(0.0);
+        let speed = speed * (0.5 + 0.5 * bearing_cos);
+        return (horizontal * pitch.cos() + Vec3::Y * pitch.sin()) * speed;
+    }
+    offset.normalize_or(me.heading) * speed
+}
+
+/// Steepest climb or dive of a chase by a body that turns in circles, radians
+/// (25°, the physics tank's limit on intended pitch).
+const MAX_CHASE_PITCH_RAD: f32 = 0.44;
+
+/// avoiding-static-obstacle / avoiding-fish: turn away from `obstacle_m`
+/// (the nearest point of the obstacle), towards the side it is not on.
+pub fn avoid(me: &Me, obstacle_m: Vec3) -> Vec3 {
+    let to = obstacle_m - me.position_m;
+    let flat = Vec3::new(1.0, 0.0, 1.0);
+    let forward = (me.heading * flat).normalize_or(Vec3::X);
+    let right = forward.cross(Vec3::Y);
+    let side = if to.dot(right) > 0.0 { -right } else { right };
+    let away_up = if to.y > 0.2 * me.body_length_m {
+        -0.3
+    } else {
+        0.0
+    };
+    let direction = (forward * 0.4 + side + Vec3::Y * away_up).normalize_or(side);
+    direction * AVOID_FRACTION * me.top_speed_m_per_s
+}
+
+/// escaping: away from the predator at full speed; if it is ahead, mostly
+/// sideways (turning straight back would swim past it).
+pub fn escape(me: &Me, predator_m: Vec3) -> Vec3 {
+    let away = (me.position_m - predator_m).normalize_or(-me.heading);
+    let ahead = me.heading.dot(-away) > 0.5;
+    let direction = if ahead {
+        let right = me.heading.cross(Vec3::Y).normalize_or(Vec3::Z);
+        let side = if away.dot(right) >= 0.0 {
+            right
+        } else {
+            -right
+        };
+        (side * 2.0 + away).normalize_or(side)
+    } else {
+        away
+    };
+    // Stay roughly level: fleeing into the sand or the surface is no escape.
+    let direction = (direction * Vec3::new(1.0, 0.4, 1.0)).normalize_or(direction);
+    direction * me.top_speed_m_per_s
+}
+
+/// A schooling neighbour as the fish sees it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Neighbour {
+    pub position_m: Vec3,
+    pub heading: Vec3,
+}
+
+/// schooling (Fig. 16): too close to the nearest → veer away; too far from the
+/// group → swim to it faster; otherwise match the neighbours' heading and
+/// speed. `urgency` in [0, 1] (fear) makes the school swim faster and tighter.
+pub fn school(me: &Me, neighbours: &[Neighbour], urgency: f32) -> Vec3 {
+    if neighbours.is_empty() {
+        return me.heading * CRUISE_FRACTION * me.top_speed_m_per_s;
+    }
+    let spacing = SCHOOL_SPACING_BODY_LENGTHS * me.body_length_m * (1.0 - 0.3 * urgency);
+    let n = neighbours.len() as f32;
+    let centre = neighbours.iter().map(|o| o.position_m).sum::<Vec3>() / n;
+    let heading = neighbours
+        .iter()
+        .map(|o| o.heading)
+        .sum::<Vec3>()
+        .normalize_or(me.heading);
+    let mut separation = Vec3::ZERO;
+    for o in neighbours {
+        let away = me.position_m - o.position_m;
+        let d = away.length();
+        if d < spacing && d > 1e-4 {
+            separation += away / d * (1.0 - d / spacing);
+        }
+    }
+    let to_centre = centre - me.position_m;
+    let gap = to_centre.length();
+    let cohesion = if gap > 1.5 * spacing {
+        to_centre / gap
+    } else {
+        Vec3::ZERO
+    };
+    let direction = (heading + 1.5 * separation + cohesion).normalize_or(me.heading);
+    let catch_up = if gap > 3.0 * spacing { 0.2 } else { 0.0 };
+    let speed = (CRUISE_FRACTION + 0.3 * urgency.clamp(0.0, 1.0) + catch_up).min(1.0);
+    direction * speed * me.top_speed_m_per_s
+}
+
+/// leaving: swim up `gradient` (unit, towards water the fish likes), level-ish.
+pub fn leave(me: &Me, gradient: Vec3) -> Vec3 {
+    let direction = (gradient * Vec3::new(1.0, 0.5, 1.0)).normalize_or(me.heading);
+    direction * CRUISE_FRACTION * me.top_speed_m_per_s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn me() -> Me {
+        Me {
+            position_m: Vec3::ZERO,
+            head_m: Vec3::X * 0.25,
+            heading: Vec3::X,
+            velocity_m_per_s: Vec3::X * 0.2,
+            body_length_m: 0.5,
+            top_speed_m_per_s: 0.3,
+        }
+    }
+
+    #[test]
+    fn chase_heads_for_the_target_and_slows_on_arrival() {
+        let v = chase(&me(), Vec3::new(0.25, 0.0, 3.0), 1.0, 1.0, 0.0);
+        assert!(v.normalize_or_zero().dot(Vec3::Z) > 0.99 && (v.length() - 0.3).abs() < 1e-5);
+        let slow = chase(&me(), Vec3::new(0.25, 0.0, 0.5), 1.0, 1.0, 0.0);
+        assert!(slow.length() < 0.2);
+        // Inside the left turning circle of a body turning in 1 m circles: on.
+        let on = chase(&me(), Vec3::new(0.6, 0.0, -0.5), 1.0, 0.0, 1.0);
+        assert!(on.normalize_or_zero().dot(Vec3::X) > 0.99, "{on}");
+        // Outside it: turn towards the target.
+        let turn = chase(&me(), Vec3::new(0.6, 0.0, -2.5), 1.0, 0.0, 1.0);
+        assert!(turn.normalize_or_zero().dot(-Vec3::Z) > 0.9, "{turn}");
+        assert!(slow.length() < 0.2);
+    }
+
+    #[test]
+    fn avoid_turns_to_the_free_side() {
+        let right = Vec3::X.cross(Vec3::Y);
+        let v = avoid(&me(), Vec3::new(1.0, 0.0, 0.0) + right * 0.3);
+        assert!(v.dot(right) < 0.0, "{v}");
+        let v = avoid(&me(), Vec3::new(1.0, 0.0, 0.0) - right * 0.3);
+        assert!(v.dot(right) > 0.0, "{v}");
+    }
+
+    #[test]
+    fn escape_swims_away_from_a_predator_behind_and_sideways_from_one_ahead() {
+        let v = escape(&me(), Vec3::new(-2.0, 0.0, 0.0));
+        assert!(v.normalize_or_zero().dot(Vec3::X) > 0.9);
+        let v = escape(&me(), Vec3::new(2.0, 0.0, 0.3));
+        assert!(v.normalize_or_zero().dot(Vec3::Z).abs() > 0.7, "{v}");
+    }
+
+    #[test]
+    fn schooling_spaces_aligns_and_closes_up() {
+        let close = [Neighbour {
+            position_m: Vec3::new(0.0, 0.0, 0.2),
+            heading: Vec3::X,
+        }];
+        assert!(school(&me(), &close, 0.0).z < 0.0);
+        let aligned = [Neighbour {
+            position_m: Vec3::new(0.0, 0.0, 0.5),
+            heading: Vec3::Z,
+        }];
+        assert!(
+            school(&me(), &aligned, 0.0)
+                .normalize_or_zero()
+                .dot(Vec3::Z)
+                > 0.9
+        );
+        let far = [Neighbour {
+            position_m: Vec3::new(0.0, 0.0, -3.0),
+            heading: Vec3::X,
+        }];
+        let v = school(&me(), &far, 0.0);
+        assert!(v.z < 0.0 && v.length() > CRUISE_FRACTION * 0.3);
+    }
+}

@@ -1,0 +1,1752 @@
+//! The living reef of Tu & Terzopoulos 1994 (Plate 1): fish with minds. Each
+//! step every animal
+//! 1. **perceives** (`perception.rs`): what it sees with its 300° occluded
+//!    vision out to the water's visibility V_r, the temperature at its centre
+//!    and the brightness of its retinal image;
+//! 2. updates its **mental state** and lets the **intention generator** choose an
+//!    intention and a focus (`mind/`);
+//! 3. runs the **behaviour routine** for it (`behaviour.rs`), which gives the
+//!    velocity it wants; the boid layer's containment and rock avoidance stay on
+//!    underneath as motor preferences;
+//! 4. moves its **body**: the muscle-driven spring–mass fish by default, or the
+//!    light point-mass fish of the boid layer for big scenes — the same mind
+//!    drives either.
+//!
+//! Then mouths suck in food and prey, plankton drifts and is replenished,
+//! seaweed sways in the current, and readable events are logged ("shark 12 ate
+//! fish 3"). Deterministic for a seed: one ChaCha8 generator, animals in
+//! index order.
+
+use std::collections::VecDeque;
+
+use glam::Vec3;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
+
+use super::behaviour::{self, Me, Neighbour};
+use super::body::body_layout::HEAD_NODE;
+use super::environment::Environment;
+use super::fish::Fish;
+use super::mind::{
+    FishKind, Focus, Habits, Intention, IntentionGenerator, Liking, MentalState, Percept, Sex,
+    Target,
+};
+use super::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
+use super::obstacle::Obstacle;
+use super::perception::{Eye, Retina, RetinaScene, Sphere};
+use super::physical_fish::{BodySpecies, PhysicalFish};
+use super::physics_world::{drive_physical, step_and_constrain};
+use super::steering::{self, SteeringParams};
+use super::tank::Tank;
+use super::water_current::WaterCurrent;
+
+/// Most animals in a reef.
+pub const MAX_REEF_ANIMALS: usize = 200;
+/// Most plankton particles kept in the water.
+pub const MAX_FOOD: usize = 200;
+/// Time step of the point-mass body, seconds (the muscle body's 0.055 s, so
+/// both bodies see the same world clock).
+pub const POINT_BODY_DT_SECS: f32 = 0.055;
+/// Time in which a behaviour's wish becomes a steering force, seconds (0.25,
+/// the boid layer's value).
+const RESPONSE_TIME_SECS: f32 = 0.25;
+/// Food within this distance of the mouth, and in front of it
+/// ([`SUCK_CONE_COS`]), is sucked in, body lengths (1.0, chosen: the muscle
+/// body turns in circles of about two body lengths, so it passes food at
+/// about a body length more often than it meets it head on; with 0.4 and
+/// 0.8 six hungry fish ate 0 and 1 particles in a minute, measured).
+const SUCK_RANGE_BODY_LENGTHS: f32 = 1.0;
+/// The vacuum acts in the half-space ahead of the mouth (cos 90° = 0).
+const SUCK_CONE_COS: f32 = 0.0;
+/// A predator opens its mouth on prey within this distance, body lengths.
+const PREDATOR_SUCK_RANGE_BODY_LENGTHS: f32 = 0.6;
+/// Prey whose centre comes this close to the predator's mouth is swallowed,
+/// body lengths of the predator (0.3, chosen).
+const SWALLOW_BODY_LENGTHS: f32 = 0.3;
+/// Pull of the vacuum on food, m/s at the mouth.
+const VACUUM_SPEED_M_PER_S: f32 = 0.6;
+/// Pull of the vacuum on prey, m/s² (2, chosen: a fleeing fish at top speed
+/// still slips away from a mouth it is not already in).
+const VACUUM_ACCEL_M_PER_S2: f32 = 2.0;
+/// A food particle this close to the mouth is eaten, metres.
+const EAT_DISTANCE_M: f32 = 0.06;
+/// Sinking speed of plankton, m/s.
+const PLANKTON_SINK_M_PER_S: f32 = 0.01;
+/// One new particle is released every this many seconds while fewer than the
+/// target count drift in the water.
+const FOOD_RELEASE_SECS: f32 = 1.5;
+/// Seconds between mind-history samples.
+const HISTORY_EVERY_SECS: f64 = 0.5;
+/// Mind-history samples kept per animal (2 minutes).
+const HISTORY_LEN: usize = 240;
+/// How fast the muscle body turns, radians per second (12°/s, measured in
+/// `body/turn_mc.rs`).
+const BODY_TURN_RATE_RAD_PER_SEC: f32 = 0.21;
+/// A predator that leaves the field of view still frightens for this long,
+/// seconds, at the place it was last seen (3, chosen: the paper's fear counts
+/// sighted predators only, and a fleeing fish that turned its blind cone to the
+/// shark stopped, turned back to look, and fled again, measured).
+pub const THREAT_MEMORY_SECS: f32 = 3.0;
+/// Events kept in the log.
+const EVENT_LOG_LEN: usize = 200;
+/// Two bodies whose centres are closer than this share of their mean length
+/// count as colliding (0.5: their bodies overlap).
+const COLLISION_BODY_LENGTHS: f32 = 0.5;
+
+/// Which body carries the minds.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ReefBodyKind {
+    /// The muscle-driven spring–mass fish (Tu & Terzopoulos §3).
+    #[default]
+    Physical,
+    /// The boid layer's point-mass fish: cheap, for big scenes.
+    PointMass,
+}
+
+/// The demo scenes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ReefScene {
+    /// Plate 1: fishes feeding on plankton, a predator hunting a prey school,
+    /// pacifists courting, seaweed swaying.
+    #[default]
+    Reef,
+    PredatorAndSchool,
+    Courtship,
+    Feeding,
+    SchoolMeetsObstacle,
+}
+
+impl ReefScene {
+    pub const ALL: [Self; 5] = [
+        Self::Reef,
+        Self::PredatorAndSchool,
+        Self::Courtship,
+        Self::Feeding,
+        Self::SchoolMeetsObstacle,
+    ];
+
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Reef => "Reef",
+            Self::PredatorAndSchool => "Predator and school",
+            Self::Courtship => "Courtship",
+            Self::Feeding => "Feeding",
+            Self::SchoolMeetsObstacle => "School meets obstacle",
+        }
+    }
+
+    /// One sentence for the UI.
+    pub fn explanation(self) -> &'static str {
+        match self {
+            Self::Reef => {
+                "A whole reef: fish feed on plankton, a shark hunts a school, pairs court."
+            }
+            Self::PredatorAndSchool => "A hungry shark and a school of prey: who gets caught?",
+            Self::Courtship => "Two males court one female; she prefers the bigger one.",
+            Self::Feeding => "Hungry fish find plankton and suck it in.",
+            Self::SchoolMeetsObstacle => "A school splits around a pillar and joins up again.",
+        }
+    }
+}
+
+/// What to build.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ReefConfig {
+    pub seed: u64,
+    pub scene: ReefScene,
+    pub body: ReefBodyKind,
+    /// V_r: how far fish see in this water, metres (6, chosen: half the tank).
+    pub visibility_m: f32,
+    /// Speed of the fastest water, m/s.
+    pub current_m_per_s: f32,
+    /// Plankton particles kept in the water (the scene's default if `None`).
+    pub food_count: Option<usize>,
+}
+
+impl Default for ReefConfig {
+    fn default() -> Self {
+        Self {
+            seed: 1,
+            scene: ReefScene::Reef,
+            body: ReefBodyKind::Physical,
+            visibility_m: 6.0,
+            current_m_per_s: 0.03,
+            food_count: None,
+        }
+    }
+}
+
+/// The body of one reef animal.
+#[derive(Clone, Debug)]
+pub enum ReefBody {
+    Physical(Box<PhysicalFish>),
+    Point(Fish),
+}
+
+impl ReefBody {
+    pub fn position_m(&self) -> Vec3 {
+        match self {
+            Self::Physical(p) => p.point.position_m,
+            Self::Point(f) => f.position_m,
+        }
+    }
+
+    pub fn velocity_m_per_s(&self) -> Vec3 {
+        match self {
+            Self::Physical(p) => p.point.velocity_m_per_s,
+            Self::Point(f) => f.velocity_m_per_s,
+        }
+    }
+
+    /// Where the fish points (unit).
+    pub fn heading(&self) -> Vec3 {
+        match self {
+            Self::Physical(p) => p.heading(),
+            Self::Point(f) => f.heading(),
+        }
+    }
+
+    pub fn body_length_m(&self) -> f32 {
+        match self {
+            Self::Physical(p) => p.body_length_m(),
+            Self::Point(f) => f.body_length_m,
+        }
+    }
+
+    /// Top speed, m/s (the same for both bodies of a given length).
+    pub fn top_speed_m_per_s(&self) -> f32 {
+        TOP_SPEED_BODY_LENGTHS_PER_SEC * self.body_length_m()
+    }
+
+    /// The mouth (the head node of the muscle body).
+    pub fn head_m(&self) -> Vec3 {
+        match self {
+            Self::Physical(p) => p.nodes_m()[HEAD_NODE],
+            Self::Point(f) => f.position_m + f.heading() * 0.5 * f.body_length_m,
+        }
+    }
+
+    /// Adds `dv_m_per_s` to the whole body's velocity (the vacuum's pull).
+    fn nudge(&mut self, dv_m_per_s: Vec3) {
+        match self {
+            Self::Physical(p) => p.add_velocity(dv_m_per_s),
+            Self::Point(f) => f.velocity_m_per_s += dv_m_per_s,
+        }
+    }
+}
+
+/// One sample of an animal's mind, for the inspector's history plot.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct MindSample {
+    pub time_secs: f32,
+    pub hunger: f32,
+    pub libido: f32,
+    pub fear: f32,
+}
+
+/// An animal of the reef: body and mind.
+#[derive(Clone, Debug)]
+pub struct ReefAnimal {
+    pub habits: Habits,
+    pub mental: MentalState,
+    pub generator: IntentionGenerator,
+    /// This step's intention and target.
+    pub focus: Focus,
+    pub body: ReefBody,
+    /// Colour around the colour wheel, 0..1.
+    pub hue: f32,
+    /// Eaten animals stay in the list (indices are names) but no longer live.
+    pub alive: bool,
+    /// Is the mouth open (sucking in)?
+    pub mouth_open: bool,
+    /// The velocity the behaviour asked for last step, m/s.
+    pub desired_m_per_s: Vec3,
+    /// Mean brightness of the retinal image (refreshed every second).
+    pub brightness: f32,
+    /// Water temperature at the centre, °C.
+    pub temperature_c: f32,
+    /// Recent hunger, libido and fear.
+    pub history: VecDeque<MindSample>,
+    /// Point-mass velocity the muscle body chases (see `physics_world.rs`).
+    intended_m_per_s: Vec3,
+    touch: Option<Vec3>,
+    /// The predator last seen, where, and for how many more seconds it is
+    /// remembered (see [`THREAT_MEMORY_SECS`]).
+    last_threat: Option<(u32, Vec3, f32)>,
+    /// Wander state for the point body and the wander routine.
+    wander: Fish,
+}
+
+impl ReefAnimal {
+    /// "shark 3", "prey 7", "pacifist 2".
+    pub fn name(&self, index: usize) -> String {
+        let kind = match self.habits.kind {
+            FishKind::Predator => "shark",
+            FishKind::Prey => "fish",
+            FishKind::Pacifist => "pacifist",
+        };
+        format!("{kind} {index}")
+    }
+}
+
+/// A plankton particle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FoodParticle {
+    pub id: u32,
+    pub position_m: Vec3,
+}
+
+/// A strand of seaweed: a chain of points rooted in the sand.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Seaweed {
+    /// Node 0 is the root.
+    pub nodes_m: Vec<Vec3>,
+    pub segment_m: f32,
+    phase_rad: f32,
+}
+
+/// Seaweed nodes per strand.
+pub const SEAWEED_NODES: usize = 10;
+
+/// Something a student can read.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ReefEvent {
+    pub time_secs: f64,
+    pub kind: ReefEventKind,
+    pub text: String,
+}
+
+/// What happened.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", tag = "kind")]
+pub enum ReefEventKind {
+    AtePrey { predator: u32, prey: u32 },
+    AteFood { fish: u32 },
+    BeganEscape { fish: u32, predator: u32 },
+    BeganMating { fish: u32, partner: u32 },
+    Intention { fish: u32 },
+}
+
+/// Counters over the run.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct ReefCounts {
+    pub prey_eaten: u32,
+    /// Of those, prey that was schooling when caught.
+    pub schooling_prey_eaten: u32,
+    pub food_eaten: u32,
+    /// Starts of body overlaps between two fish.
+    pub fish_collisions: u32,
+    /// Body-steps inside a rock (should stay 0).
+    pub inside_rock_steps: u32,
+}
+
+/// The reef.
+#[derive(Clone, Debug)]
+pub struct ReefWorld {
+    tank: Tank,
+    env: Environment,
+    obstacles: Vec<Obstacle>,
+    animals: Vec<ReefAnimal>,
+    food: Vec<FoodParticle>,
+    food_target: usize,
+    next_food_id: u32,
+    food_release_secs: f32,
+    seaweed: Vec<Seaweed>,
+    current: WaterCurrent,
+    config: ReefConfig,
+    rng: ChaCha8Rng,
+    time_secs: f64,
+    steps: u64,
+    next_history_secs: f64,
+    events: VecDeque<ReefEvent>,
+    counts: ReefCounts,
+    /// Pairs in contact last step (for counting collision starts).
+    touching: Vec<(u32, u32)>,
+    /// Constraint node moves of the muscle bodies.
+    constraint_moves: u64,
+}
+
+/// Inputs of one animal's decision, read before anyone moves.
+#[derive(Clone, Copy)]
+struct Seen {
+    position_m: Vec3,
+    head_m: Vec3,
+    heading: Vec3,
+    velocity_m_per_s: Vec3,
+    length_m: f32,
+    alive: bool,
+    kind: FishKind,
+    sex: Sex,
+    species: u8,
+    schooling: bool,
+}
+
+impl ReefWorld {
+    pub fn new(config: ReefConfig) -> Self {
+        let tank = Tank::default();
+        let mut config = config;
+        config.visibility_m = if config.visibility_m.is_finite() {
+            config.visibility_m.clamp(1.0, 20.0)
+        } else {
+            6.0
+        };
+        let mut world = Self {
+            tank,
+            env: Environment::new(tank),
+            obstacles: Vec::new(),
+            animals: Vec::new(),
+            food: Vec::new(),
+            food_target: 0,
+            next_food_id: 0,
+            food_release_secs: 0.0,
+            seaweed: Vec::new(),
+            current: WaterCurrent::new(tank, config.current_m_per_s),
+            rng: ChaCha8Rng::seed_from_u64(config.seed ^ 0x00EE_F5EA),
+            config: config.clone(),
+            time_secs: 0.0,
+            steps: 0,
+            next_history_secs: 0.0,
+            events: VecDeque::new(),
+            counts: ReefCounts::default(),
+            touching: Vec::new(),
+            constraint_moves: 0,
+        };
+        world.populate(config.scene);
+        if let Some(n) = config.food_count {
+            world.food_target = n.min(MAX_FOOD);
+        }
+        for _ in 0..world.food_target {
+            let p = world.random_free_point(0.3);
+            world.add_food(p);
+        }
+        world
+    }
+
+    pub fn tank(&self) -> &Tank {
+        &self.tank
+    }
+    pub fn environment(&self) -> &Environment {
+        &self.env
+    }
+    pub fn obstacles(&self) -> &[Obstacle] {
+        &self.obstacles
+    }
+    pub fn animals(&self) -> &[ReefAnimal] {
+        &self.animals
+    }
+    pub fn food(&self) -> &[FoodParticle] {
+        &self.food
+    }
+    pub fn seaweed(&self) -> &[Seaweed] {
+        &self.seaweed
+    }
+    pub fn events(&self) -> &VecDeque<ReefEvent> {
+        &self.events
+    }
+    pub fn counts(&self) -> ReefCounts {
+        self.counts
+    }
+    pub fn config(&self) -> &ReefConfig {
+        &self.config
+    }
+    pub fn time_secs(&self) -> f64 {
+        self.time_secs
+    }
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+    pub fn constraint_moves(&self) -> u64 {
+        self.constraint_moves
+    }
+    pub fn dt_secs(&self) -> f32 {
+        POINT_BODY_DT_SECS
+    }
+    /// The water velocity at `p_m` now.
+    pub fn water_at(&self, p_m: Vec3) -> Vec3 {
+        self.current.velocity_m_per_s(p_m, self.time_secs)
+    }
+    /// Living animals.
+    pub fn alive_count(&self) -> usize {
+        self.animals.iter().filter(|a| a.alive).count()
+    }
+
+    /// Mutable access for tests and teachers' edits (habits, mental state).
+    pub fn animal_mut(&mut self, i: usize) -> Option<&mut ReefAnimal> {
+        self.animals.get_mut(i)
+    }
+
+    /// Moves animal `i` (a test or a teacher's drag) to `position_m` heading
+    /// `heading`, at rest.
+    pub fn place(&mut self, i: usize, position_m: Vec3, heading: Vec3) {
+        let Some(a) = self.animals.get_mut(i) else {
+            return;
+        };
+        let p = self.tank.clamp_inside(position_m, 0.6);
+        let length = a.body.body_length_m();
+        a.body = match &a.body {
+            ReefBody::Physical(old) => ReefBody::Physical(Box::new(PhysicalFish::new(
+                old.species,
+                length,
+                p,
+                heading,
+                old.hue,
+            ))),
+            ReefBody::Point(f) => ReefBody::Point(Fish::new(
+                p,
+                heading.normalize_or(Vec3::X) * 0.3 * TOP_SPEED_BODY_LENGTHS_PER_SEC * length,
+                length,
+                f.hue,
+            )),
+        };
+        a.intended_m_per_s = a.body.heading() * 0.5 * a.body.top_speed_m_per_s();
+        a.wander.position_m = p;
+        a.touch = None;
+    }
+
+    /// Adds a plankton particle at `p_m` (if there is room).
+    pub fn add_food(&mut self, p_m: Vec3) {
+        if self.food.len() >= MAX_FOOD {
+            return;
+        }
+        self.food.push(FoodParticle {
+            id: self.next_food_id,
+            position_m: self.tank.clamp_inside(p_m, 0.05),
+        });
+        self.next_food_id = self.next_food_id.wrapping_add(1);
+    }
+
+    /// Renders animal `i`'s retinal image (`size` × `size`).
+    pub fn retina(&self, i: usize, size: usize) -> Option<Retina> {
+        let a = self.animals.get(i)?;
+        let eye = Eye::new(a.body.head_m(), a.body.heading(), self.config.visibility_m);
+        let scene = self.retina_scene(i);
+        Some(Retina::render(&eye, Vec3::Y, size, &scene, &self.env))
+    }
+
+    fn retina_scene(&self, viewer: usize) -> RetinaScene<'_> {
+        RetinaScene {
+            fish: self
+                .animals
+                .iter()
+                .enumerate()
+                .filter(|(j, a)| *j != viewer && a.alive)
+                .map(|(_, a)| {
+                    (
+                        a.body.position_m(),
+                        a.body.heading(),
+                        a.body.body_length_m(),
+                        hue_rgb(a.hue, a.habits.kind),
+                    )
+                })
+                .collect(),
+            food_m: self.food.iter().map(|f| f.position_m).collect(),
+            obstacles: &self.obstacles,
+        }
+    }
+
+    // ----- Building scenes -----
+
+    fn populate(&mut self, scene: ReefScene) {
+        let t = self.tank;
+        let c = t.center_m();
+        match scene {
+            ReefScene::Reef => {
+                self.obstacles = vec![
+                    Obstacle::Rock {
+                        center_m: Vec3::new(-3.0, 0.2, -1.5),
+                        radius_m: 0.9,
+                    },
+                    Obstacle::Cylinder {
+                        base_center_m: Vec3::new(2.5, 0.0, 1.5),
+                        radius_m: 0.45,
+                        height_m: 2.2,
+                    },
+                    Obstacle::Rock {
+                        center_m: Vec3::new(1.0, 0.1, -2.5),
+                        radius_m: 0.7,
+                    },
+                ];
+                self.food_target = 25;
+                for k in 0..10 {
+                    let p = Vec3::new(-3.5, 2.5, 1.5) + self.jitter(1.2);
+                    self.spawn(p, Vec3::X, prey_habits(k), 0.45);
+                }
+                self.spawn(Vec3::new(4.0, 2.0, -2.5), -Vec3::X, predator_habits(), 1.0);
+                // Two courting pairs of species 1 and 2, plus a rival male.
+                for (species, at) in [
+                    (1u8, Vec3::new(2.0, 3.0, -1.0)),
+                    (2, Vec3::new(-1.5, 1.5, 2.5)),
+                ] {
+                    let mut female = Habits::new(FishKind::Pacifist, Sex::Female, species);
+                    female.light = Liking::High;
+                    self.spawn(at, Vec3::Z, female, 0.5);
+                    let male = Habits::new(FishKind::Pacifist, Sex::Male, species);
+                    self.spawn(at + Vec3::new(1.0, 0.0, 0.0), -Vec3::Z, male, 0.55);
+                }
+                // Solitary grazers with different tastes.
+                for (k, (light, temperature)) in [
+                    (Liking::Low, Liking::Indifferent),
+                    (Liking::Indifferent, Liking::High),
+                    (Liking::High, Liking::Low),
+                ]
+                .into_iter()
+                .enumerate()
+                {
+                    let mut h = Habits::new(FishKind::Pacifist, Sex::Female, 3 + k as u8);
+                    h.light = light;
+                    h.temperature = temperature;
+                    let p = self.random_free_point(1.0);
+                    self.spawn(p, Vec3::X, h, 0.4);
+                }
+                self.plant_seaweed(9);
+            }
+            ReefScene::PredatorAndSchool => {
+                self.obstacles = vec![Obstacle::Rock {
+                    center_m: Vec3::new(0.0, 0.1, 2.5),
+                    radius_m: 0.8,
+                }];
+                for k in 0..14 {
+                    let p = Vec3::new(-2.5, 2.3, 0.0) + self.jitter(1.3);
+                    self.spawn(p, Vec3::Z, prey_habits(k), 0.45);
+                }
+                let mut shark = predator_habits();
+                shark.mental.digestion_rate_per_step =
+                    super::mind::mental_state::RAVENOUS_DIGESTION_RATE;
+                self.spawn(Vec3::new(4.0, 2.3, -2.0), -Vec3::X, shark, 1.0);
+                self.food_target = 0;
+                self.plant_seaweed(4);
+            }
+            ReefScene::Courtship => {
+                let mut female = Habits::new(FishKind::Pacifist, Sex::Female, 1);
+                female.mental.libido_rate_per_step = super::mind::mental_state::MANIC_LIBIDO_RATE;
+                self.spawn(c + Vec3::new(0.0, 0.3, 0.0), Vec3::X, female, 0.5);
+                for (k, length) in [0.45f32, 0.6].into_iter().enumerate() {
+                    let mut male = Habits::new(FishKind::Pacifist, Sex::Male, 1);
+                    male.mental.libido_rate_per_step = super::mind::mental_state::MANIC_LIBIDO_RATE;
+                    let p = c + Vec3::new(-2.5 + 5.0 * k as f32, 0.0, 1.5);
+                    self.spawn(p, -Vec3::Z, male, length);
+                }
+                self.food_target = 6;
+                self.plant_seaweed(5);
+            }
+            ReefScene::Feeding => {
+                for k in 0..6 {
+                    let mut h = Habits::new(FishKind::Pacifist, Sex::Female, k as u8);
+                    h.mental.digestion_rate_per_step =
+                        super::mind::mental_state::RAVENOUS_DIGESTION_RATE;
+                    h.mental.libido_rate_per_step = 0.0;
+                    let p = self.random_free_point(1.0);
+                    self.spawn(p, Vec3::X, h, 0.45);
+                }
+                self.food_target = 30;
+                self.plant_seaweed(6);
+            }
+            ReefScene::SchoolMeetsObstacle => {
+                self.obstacles = vec![Obstacle::Cylinder {
+                    base_center_m: Vec3::new(0.0, 0.0, 0.0),
+                    radius_m: 0.6,
+                    height_m: t.size_m().y - super::obstacle::SURFACE_CLEARANCE_M,
+                }];
+                for k in 0..16 {
+                    let p = Vec3::new(-4.5, 2.2, 0.0) + self.jitter(1.0);
+                    self.spawn(p, Vec3::X, prey_habits(k), 0.45);
+                }
+                self.food_target = 0;
+            }
+        }
+        // Everyone starts fed and content with a random clock, so the urges
+        // do not all rise in step.
+        let fed_for: Vec<f32> = (0..self.animals.len())
+            .map(|_| self.rng.random_range(0.0..30.0))
+            .collect();
+        for (a, secs) in self.animals.iter_mut().zip(fed_for) {
+            let starving = matches!(scene, ReefScene::Feeding | ReefScene::PredatorAndSchool)
+                && a.habits.kind != FishKind::Prey;
+            let eaten = if starving {
+                0.0
+            } else {
+                0.7 * a.habits.mental.appetite_food_units
+            };
+            a.mental = MentalState::new(&a.habits.mental, eaten, secs);
+            a.mental.update(&a.habits.mental, secs, std::iter::empty());
+            a.mental.secs_since_mating = secs;
+        }
+    }
+
+    fn jitter(&mut self, r: f32) -> Vec3 {
+        Vec3::new(
+            self.rng.random_range(-r..r),
+            self.rng.random_range(-0.5 * r..0.5 * r),
+            self.rng.random_range(-r..r),
+        )
+    }
+
+    fn random_free_point(&mut self, margin: f32) -> Vec3 {
+        let (lo, hi) = (
+            self.tank.min_m + Vec3::splat(margin),
+            self.tank.max_m - Vec3::splat(margin),
+        );
+        let mut p = self.tank.center_m();
+        for _ in 0..100 {
+            p = Vec3::new(
+                self.rng.random_range(lo.x..hi.x),
+                self.rng.random_range(lo.y..hi.y),
+                self.rng.random_range(lo.z..hi.z),
+            );
+            if self
+                .obstacles
+                .iter()
+                .all(|o| o.signed_distance_m(p) > margin)
+            {
+                break;
+            }
+        }
+        p
+    }
+
+    fn spawn(&mut self, position_m: Vec3, heading: Vec3, habits: Habits, length_m: f32) {
+        if self.animals.len() >= MAX_REEF_ANIMALS {
+            return;
+        }
+        let length = length_m * self.rng.random_range(0.95..1.05);
+        let mut p = self.tank.clamp_inside(position_m, length.max(0.6));
+        for o in &self.obstacles {
+            if o.signed_distance_m(p) < length {
+                p = o.push_outside(p, length);
+            }
+        }
+        let hue = match habits.kind {
+            FishKind::Predator => 0.58,
+            FishKind::Prey => 0.08 + 0.04 * self.rng.random_range(-1.0..1.0f32),
+            FishKind::Pacifist => (0.3 + 0.17 * f32::from(habits.species)).fract(),
+        };
+        let heading = heading.normalize_or(Vec3::X);
+        let body = match self.config.body {
+            ReefBodyKind::Physical => {
+                let species = if habits.kind == FishKind::Predator {
+                    BodySpecies::Shark
+                } else {
+                    BodySpecies::Fish
+                };
+                ReefBody::Physical(Box::new(PhysicalFish::new(
+                    species, length, p, heading, hue,
+                )))
+            }
+            ReefBodyKind::PointMass => ReefBody::Point(Fish::new(
+                p,
+                heading * 0.5 * TOP_SPEED_BODY_LENGTHS_PER_SEC * length,
+                length,
+                hue,
+            )),
+        };
+        let top = TOP_SPEED_BODY_LENGTHS_PER_SEC * length;
+        let habits = habits.sanitized();
+        self.animals.push(ReefAnimal {
+            mental: MentalState::new(&habits.mental, 0.0, 0.0),
+            habits,
+            generator: IntentionGenerator::default(),
+            focus: Focus::WANDER,
+            body,
+            hue,
+            alive: true,
+            mouth_open: false,
+            desired_m_per_s: heading * 0.5 * top,
+            brightness: self.env.brightness_at(p),
+            temperature_c: self.env.temperature_c_at(p),
+            history: VecDeque::new(),
+            intended_m_per_s: heading * 0.5 * top,
+            touch: None,
+            last_threat: None,
+            wander: Fish::new(p, heading * 0.5 * top, length, hue),
+        });
+    }
+
+    fn plant_seaweed(&mut self, strands: usize) {
+        for k in 0..strands {
+            let mut root = self.random_free_point(0.5);
+            root.y = self.tank.min_m.y;
+            let height = self.rng.random_range(1.2..2.6f32);
+            let segment = height / (SEAWEED_NODES - 1) as f32;
+            let nodes = (0..SEAWEED_NODES)
+                .map(|n| root + Vec3::Y * segment * n as f32)
+                .collect();
+            self.seaweed.push(Seaweed {
+                nodes_m: nodes,
+                segment_m: segment,
+                phase_rad: k as f32 * 1.7,
+            });
+        }
+    }
+
+    // ----- Stepping -----
+
+    /// Advances the reef by one step.
+    pub fn step(&mut self) {
+        let dt = self.dt_secs();
+        let seen: Vec<Seen> = self
+            .animals
+            .iter()
+            .map(|a| Seen {
+                position_m: a.body.position_m(),
+                head_m: a.body.head_m(),
+                heading: a.body.heading(),
+                velocity_m_per_s: a.body.velocity_m_per_s(),
+                length_m: a.body.body_length_m(),
+                alive: a.alive,
+                kind: a.habits.kind,
+                sex: a.habits.sex,
+                species: a.habits.species,
+                schooling: a.focus.intention == Intention::School,
+            })
+            .collect();
+        let bodies: Vec<Sphere> = seen
+            .iter()
+            .map(|s| Sphere {
+                center_m: s.position_m,
+                radius_m: if s.alive { 0.3 * s.length_m } else { 0.0 },
+            })
+            .collect();
+        let refresh_brightness = self.steps.is_multiple_of(18);
+        for i in 0..self.animals.len() {
+            if !self.animals[i].alive {
+                continue;
+            }
+            if refresh_brightness && (i as u64 + self.steps / 18).is_multiple_of(4) {
+                let scene = self.retina_scene(i);
+                let a = &self.animals[i];
+                let eye = Eye::new(a.body.head_m(), a.body.heading(), self.config.visibility_m);
+                let b = Retina::render(&eye, Vec3::Y, 10, &scene, &self.env).mean_brightness;
+                self.animals[i].brightness = b;
+            }
+            let (percept, neighbours, predator_distances, sighted) =
+                self.perceive(i, &seen, &bodies);
+            let a = &mut self.animals[i];
+            a.last_threat = match sighted {
+                Some(j) => Some((j, seen[j as usize].position_m, THREAT_MEMORY_SECS)),
+                None => a
+                    .last_threat
+                    .map(|(j, at, left)| (j, at, left - dt))
+                    .filter(|t| t.2 > 0.0),
+            };
+            let a = &mut self.animals[i];
+            a.temperature_c = self.env.temperature_c_at(seen[i].position_m);
+            a.mental.update(&a.habits.mental, dt, predator_distances);
+            let mate_locked = false;
+            let before = a.focus;
+            a.focus = a
+                .generator
+                .decide(&a.habits, &a.mental, &percept, mate_locked);
+            let focus = a.focus;
+            if focus.intention != before.intention || focus.target != before.target {
+                self.log_decision(i, before, focus);
+            }
+            let desired = self.behave(i, &seen, &neighbours);
+            self.move_body(i, desired, dt);
+        }
+        self.suck_in(dt);
+        self.drift_food(dt);
+        self.sway_seaweed(dt);
+        self.count_contacts();
+        self.time_secs += f64::from(dt);
+        self.steps += 1;
+        if self.time_secs >= self.next_history_secs {
+            self.next_history_secs += HISTORY_EVERY_SECS;
+            let t = self.time_secs as f32;
+            for a in self.animals.iter_mut().filter(|a| a.alive) {
+                if a.history.len() == HISTORY_LEN {
+                    a.history.pop_front();
+                }
+                a.history.push_back(MindSample {
+                    time_secs: t,
+                    hunger: a.mental.hunger,
+                    libido: a.mental.libido,
+                    fear: a.mental.fear,
+                });
+            }
+        }
+    }
+
+    /// What animal `i` sees: the percept for its intention generator, its
+    /// schooling neighbours, and its distances (in its body lengths) to the
+    /// predators it fears, and the most frightening predator actually in view.
+    fn perceive(
+        &self,
+        i: usize,
+        seen: &[Seen],
+        bodies: &[Sphere],
+    ) -> (Percept, Vec<Neighbour>, Vec<f32>, Option<u32>) {
+        let me = seen[i];
+        let habits = &self.animals[i].habits;
+        let eye = Eye::new(me.head_m, me.heading, self.config.visibility_m);
+        let sees_animal = |j: usize| -> bool {
+            let target = bodies[j];
+            if !eye.in_view_volume(target) {
+                return false;
+            }
+            let others: Vec<Sphere> = bodies
+                .iter()
+                .enumerate()
+                .filter(|(k, s)| *k != i && *k != j && s.radius_m > 0.0)
+                .map(|(_, s)| *s)
+                .filter(|s| {
+                    s.center_m.distance(me.head_m)
+                        < target.center_m.distance(me.head_m) + target.radius_m
+                })
+                .collect();
+            eye.sees(target, &others, &self.obstacles)
+        };
+        let mut percept = Percept {
+            content: habits.light.content_at(self.animals[i].brightness)
+                && habits
+                    .temperature
+                    .content_at(self.env.temperature_01_at(me.position_m)),
+            ..Default::default()
+        };
+        // Candidates by distance, nearest first.
+        let mut others: Vec<(usize, f32)> = seen
+            .iter()
+            .enumerate()
+            .filter(|(j, s)| *j != i && s.alive)
+            .map(|(j, s)| (j, s.position_m.distance(me.head_m)))
+            .filter(|(_, d)| *d < self.config.visibility_m + 1.0)
+            .collect();
+        others.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+
+        // Predators (prey and pacifists look out for them).
+        let mut predator_distances = Vec::new();
+        if habits.kind != FishKind::Predator {
+            for &(j, d) in others
+                .iter()
+                .filter(|(j, _)| seen[*j].kind == FishKind::Predator)
+            {
+                if sees_animal(j) {
+                    let body_lengths = d / me.length_m.max(1e-3);
+                    predator_distances.push(body_lengths);
+                    let fear = super::mind::mental_state::fear_of(&habits.mental, body_lengths);
+                    percept.predators.push((j as u32, fear));
+                }
+            }
+        }
+        // The most frightening predator in view, then one just lost from view,
+        // still feared where it was seen.
+        let sighted = percept
+            .predators
+            .iter()
+            .max_by(|x, y| x.1.total_cmp(&y.1).then(y.0.cmp(&x.0)))
+            .map(|p| p.0);
+        if habits.kind != FishKind::Predator {
+            match (percept.predators.first(), self.animals[i].last_threat) {
+                (None, Some((j, at, left)))
+                    if left > 0.0 && seen.get(j as usize).is_some_and(|s| s.alive) =>
+                {
+                    let body_lengths = at.distance(me.head_m) / me.length_m.max(1e-3);
+                    predator_distances.push(body_lengths);
+                    let fear = super::mind::mental_state::fear_of(&habits.mental, body_lengths);
+                    percept.predators.push((j, fear));
+                }
+                _ => {}
+            }
+        }
+        // Prey for predators: cost C_k = d_k (1 + β1 S_k + β2 E_k / π).
+        if habits.kind == FishKind::Predator {
+            let mut candidates: Vec<(usize, f32)> = others
+                .iter()
+                .filter(|(j, _)| seen[*j].kind == FishKind::Prey)
+                .map(|&(j, d)| {
+                    let to = (seen[j].position_m - me.head_m).normalize_or(me.heading);
+                    let turn = me.heading.dot(to).clamp(-1.0, 1.0).acos();
+                    let schooling = if seen[j].schooling { 1.0 } else { 0.0 };
+                    (
+                        j,
+                        d * (1.0
+                            + PREY_BETA_SCHOOL * schooling
+                            + PREY_BETA_TURN * turn / std::f32::consts::PI),
+                    )
+                })
+                .collect();
+            candidates.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+            // The current target is always checked, then the cheapest few.
+            let current = match self.animals[i].focus.target {
+                Some(Target::Animal(id)) => candidates.iter().position(|c| c.0 == id as usize),
+                _ => None,
+            };
+            // The cheapest three in view (and the current target, if in view).
+            for (k, &(j, cost)) in candidates.iter().enumerate() {
+                if (percept.prey.len() < 3 || Some(k) == current) && sees_animal(j) {
+                    percept.prey.push((j as u32, cost));
+                }
+            }
+        }
+        // Food (prey and pacifists): the nearest few seen particles.
+        if habits.kind != FishKind::Predator {
+            let mut food: Vec<(u32, f32)> = self
+                .food
+                .iter()
+                .map(|f| (f.id, f.position_m.distance(me.head_m)))
+                .filter(|(_, d)| *d < self.config.visibility_m)
+                .collect();
+            food.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+            let current = match self.animals[i].focus.target {
+                Some(Target::Food(id)) => Some(id),
+                _ => None,
+            };
+            for (k, &(id, d)) in food.iter().enumerate() {
+                if k >= 4 && Some(id) != current {
+                    continue;
+                }
+                let Some(f) = self.food.iter().find(|f| f.id == id) else {
+                    continue;
+                };
+                let s = Sphere {
+                    center_m: f.position_m,
+                    radius_m: 0.03,
+                };
+                let blockers: Vec<Sphere> = bodies
+                    .iter()
+                    .enumerate()
+                    .filter(|(k, b)| {
+                        *k != i && b.radius_m > 0.0 && b.center_m.distance(me.head_m) < d
+                    })
+                    .map(|(_, b)| *b)
+                    .collect();
+                if eye.sees(s, &blockers, &self.obstacles) {
+                    percept.food.push((id, d));
+                }
+            }
+        }
+        // Partners (pacifists): same species first, then nearer; females
+        // prefer bigger males.
+        if habits.kind == FishKind::Pacifist {
+            let mut mates: Vec<(usize, f32)> = others
+                .iter()
+                .filter(|(j, _)| seen[*j].kind == FishKind::Pacifist && seen[*j].sex != habits.sex)
+                .map(|&(j, d)| {
+                    let other_species = if seen[j].species == habits.species {
+                        0.0
+                    } else {
+                        20.0
+                    };
+                    let rank = match habits.sex {
+                        Sex::Male => d,
+                        Sex::Female => 0.2 * d - 10.0 * seen[j].length_m,
+                    };
+                    (j, rank + other_species)
+                })
+                .collect();
+            mates.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+            for &(j, rank) in mates.iter().take(4) {
+                if sees_animal(j) {
+                    percept.mates.push((j as u32, rank));
+                }
+            }
+        }
+        // Schoolmates: the seven nearest seen schooling fish of the species.
+        let mut neighbours = Vec::new();
+        if habits.schools {
+            for &(j, _) in others
+                .iter()
+                .filter(|(j, _)| seen[*j].kind == habits.kind && seen[*j].species == habits.species)
+            {
+                if neighbours.len() >= 7 {
+                    break;
+                }
+                if eye.in_view_volume(bodies[j]) {
+                    neighbours.push(Neighbour {
+                        position_m: seen[j].position_m,
+                        heading: seen[j].heading,
+                    });
+                }
+            }
+            percept.schoolmates_seen = neighbours.len();
+        }
+        percept.collision = self.collision_check(i, seen, &neighbours);
+        (percept, neighbours, predator_distances, sighted)
+    }
+
+    /// The most dangerous thing inside animal `i`'s collision-sensitivity box:
+    /// a box ahead of the head, as wide as the body, `collision_box_ahead`
+    /// long (halved for a schooling fish in formation, §7.2).
+    fn collision_check(&self, i: usize, seen: &[Seen], neighbours: &[Neighbour]) -> Option<Target> {
+        let me = seen[i];
+        let a = &self.animals[i];
+        let in_formation = a.focus.intention == Intention::School && neighbours.len() >= 2;
+        let mut ahead = a.habits.collision_box_ahead_body_lengths * me.length_m;
+        if in_formation {
+            ahead *= 0.5;
+        }
+        let half_width = 0.3 * me.length_m;
+        // The glass, the sand and the surface.
+        let probe = me.head_m + me.heading * ahead;
+        if !self.tank.contains(probe, 0.3 * me.length_m) {
+            return Some(Target::Glass);
+        }
+        // Rocks.
+        let mut best: Option<(f32, Target)> = None;
+        for (k, o) in self.obstacles.iter().enumerate() {
+            let steps = 4;
+            for s in 0..=steps {
+                let p = me.head_m + me.heading * (ahead * s as f32 / steps as f32);
+                let d = o.signed_distance_m(p);
+                if d < half_width && best.is_none_or(|b| d < b.0) {
+                    best = Some((d, Target::Obstacle(k as u32)));
+                }
+            }
+        }
+        // Other fish, except the prey a predator is about to swallow.
+        let exempt = match a.focus.target {
+            Some(Target::Animal(j)) if a.focus.intention == Intention::Eat => Some(j as usize),
+            _ => None,
+        };
+        for (j, o) in seen.iter().enumerate() {
+            if j == i || !o.alive || Some(j) == exempt {
+                continue;
+            }
+            // Prey do not swerve from the shark here: fear handles it.
+            let offset = o.position_m - me.head_m;
+            let along = offset.dot(me.heading);
+            if along < -0.2 * me.length_m || along > ahead + 0.5 * o.length_m {
+                continue;
+            }
+            let across = (offset - me.heading * along).length();
+            if across < half_width + 0.15 * o.length_m {
+                let d = offset.length();
+                if best.is_none_or(|b| d < b.0) {
+                    best = Some((d, Target::Animal(j as u32)));
+                }
+            }
+        }
+        best.map(|b| b.1)
+    }
+
+    /// The velocity animal `i`'s behaviour routine asks for.
+    fn behave(&mut self, i: usize, seen: &[Seen], neighbours: &[Neighbour]) -> Vec3 {
+        let s = seen[i];
+        let me = Me {
+            position_m: s.position_m,
+            head_m: s.head_m,
+            heading: s.heading,
+            velocity_m_per_s: s.velocity_m_per_s,
+            body_length_m: s.length_m,
+            top_speed_m_per_s: TOP_SPEED_BODY_LENGTHS_PER_SEC * s.length_m,
+        };
+        let focus = self.animals[i].focus;
+        // Radius of the body's turning circle at its speed now (none for the
+        // point mass, which turns as fast as its steering force allows).
+        let turn_radius = match self.animals[i].body {
+            ReefBody::Physical(_) => {
+                s.velocity_m_per_s.length().max(0.5 * me.top_speed_m_per_s)
+                    / BODY_TURN_RATE_RAD_PER_SEC
+            }
+            ReefBody::Point(_) => 0.0,
+        };
+        let animal_at = |t: Option<Target>| match t {
+            Some(Target::Animal(j)) => seen
+                .get(j as usize)
+                .filter(|o| o.alive)
+                .map(|o| o.position_m),
+            _ => None,
+        };
+        let wander = |world: &mut Self| {
+            let a = &mut world.animals[i];
+            a.wander.position_m = s.position_m;
+            a.wander.velocity_m_per_s = a.intended_m_per_s;
+            let params = SteeringParams {
+                max_speed_m_per_s: me.top_speed_m_per_s,
+                wander_distance_m: 2.0 * s.length_m,
+                wander_radius_m: s.length_m,
+                wander_jitter_rad: 0.36,
+                ..SteeringParams::default()
+            };
+            let push = steering::wander(&mut a.wander, &mut world.rng, &params);
+            (s.heading + push.normalize_or_zero() * 0.8).normalize_or(s.heading)
+                * behaviour::CRUISE_FRACTION
+                * me.top_speed_m_per_s
+        };
+        match focus.intention {
+            Intention::Avoid => {
+                let point = match focus.target {
+                    Some(Target::Obstacle(k)) => self
+                        .obstacles
+                        .get(k as usize)
+                        .map(|o| o.core_point_m(s.head_m))
+                        .unwrap_or(s.head_m + s.heading),
+                    Some(Target::Animal(j)) => {
+                        animal_at(Some(Target::Animal(j))).unwrap_or(s.head_m + s.heading)
+                    }
+                    _ => {
+                        // The glass: the nearest point of it ahead.
+                        let probe = s.head_m + s.heading * s.length_m * 2.0;
+                        let inside = self.tank.clamp_inside(probe, 0.0);
+                        probe + (probe - inside)
+                    }
+                };
+                behaviour::avoid(&me, point)
+            }
+            Intention::Escape => match animal_at(focus.target) {
+                Some(p) => behaviour::escape(&me, p),
+                None => wander(self),
+            },
+            Intention::School => {
+                let urgency = self.animals[i].mental.fear;
+                if neighbours.is_empty() {
+                    wander(self)
+                } else {
+                    behaviour::school(&me, neighbours, urgency)
+                }
+            }
+            Intention::Eat => match focus.target {
+                Some(Target::Food(id)) => match self.food.iter().find(|f| f.id == id) {
+                    Some(f) => behaviour::chase(
+                        &me,
+                        f.position_m,
+                        behaviour::CRUISE_FRACTION,
+                        0.8 * s.length_m,
+                        turn_radius,
+                    ),
+                    None => wander(self),
+                },
+                Some(Target::Animal(j)) => match seen.get(j as usize).filter(|o| o.alive) {
+                    Some(prey) => {
+                        // chasing-target with a short prediction of where the prey swims.
+                        let lead =
+                            (prey.position_m.distance(s.head_m) / me.top_speed_m_per_s).min(2.0);
+                        behaviour::chase(
+                            &me,
+                            prey.position_m + prey.velocity_m_per_s * lead,
+                            1.0,
+                            0.0,
+                            turn_radius,
+                        )
+                    }
+                    None => wander(self),
+                },
+                _ => wander(self),
+            },
+            Intention::Mate => match animal_at(focus.target) {
+                Some(p) => behaviour::chase(
+                    &me,
+                    p,
+                    behaviour::CRUISE_FRACTION,
+                    1.5 * s.length_m,
+                    turn_radius,
+                ),
+                None => wander(self),
+            },
+            Intention::Leave => {
+                let h = self.animals[i].habits;
+                let sign = |l: Liking| match l {
+                    Liking::High => 1.0,
+                    Liking::Low => -1.0,
+                    Liking::Indifferent => 0.0,
+                };
+                let g = self
+                    .env
+                    .gradient_direction(s.position_m, Environment::brightness_at)
+                    * sign(h.light)
+                    + self
+                        .env
+                        .gradient_direction(s.position_m, Environment::temperature_01_at)
+                        * sign(h.temperature);
+                behaviour::leave(&me, g.normalize_or(s.heading))
+            }
+            Intention::Wander => wander(self),
+        }
+    }
+
+    /// Steers animal `i`'s body towards `desired` (plus containment and rock
+    /// avoidance) and steps it.
+    fn move_body(&mut self, i: usize, desired: Vec3, dt: f32) {
+        let water = self.water_at(self.animals[i].body.position_m());
+        let a = &mut self.animals[i];
+        a.desired_m_per_s = desired;
+        let top = a.body.top_speed_m_per_s();
+        let length = a.body.body_length_m();
+        let max_force = top / RESPONSE_TIME_SECS;
+        let position = a.body.position_m();
+        let velocity = a.intended_m_per_s;
+        let steer = steering::limit((desired - velocity) / RESPONSE_TIME_SECS, max_force);
+        // Motor preferences under every routine: keep off the glass, sand,
+        // surface and rocks (full strength, like the physics tank).
+        let containment =
+            steering::containment(position, velocity, &self.tank, 8.0, 1.5 * length, top);
+        let containment = steering::limit(containment / RESPONSE_TIME_SECS, max_force);
+        let avoidance = steering::limit(
+            steering::avoid_obstacles(
+                position,
+                velocity,
+                self.obstacles.iter(),
+                3.0,
+                steering::AVOIDANCE_CLEARANCE_M + 0.5 * length,
+                top,
+            ) / RESPONSE_TIME_SECS,
+            max_force,
+        );
+        let force = steering::limit(steer + containment + avoidance, max_force);
+        match &mut a.body {
+            ReefBody::Physical(p) => {
+                let intent = drive_physical(p, &mut a.intended_m_per_s, force, a.touch, dt);
+                let (moved, touch) =
+                    step_and_constrain(p, &intent, water, &self.tank, &self.obstacles);
+                self.constraint_moves += moved as u64;
+                a.touch = touch;
+            }
+            ReefBody::Point(f) => {
+                let params = SteeringParams {
+                    max_speed_m_per_s: top,
+                    min_speed_m_per_s: 0.2 * top,
+                    max_force_m_per_s2: max_force,
+                    ..SteeringParams::default()
+                };
+                f.velocity_m_per_s = a.intended_m_per_s;
+                f.integrate(force, &params, dt);
+                f.position_m += water * dt;
+                f.position_m = self.tank.clamp_inside(f.position_m, 0.5 * length.min(0.5));
+                for o in &self.obstacles {
+                    if o.signed_distance_m(f.position_m) < 0.1 * length {
+                        f.position_m = o.push_outside(f.position_m, 0.1 * length);
+                    }
+                }
+                f.advance_tail_phase(dt);
+                a.intended_m_per_s = f.velocity_m_per_s;
+            }
+        }
+        if self
+            .obstacles
+            .iter()
+            .any(|o| o.signed_distance_m(a.body.position_m()) < 0.0)
+        {
+            self.counts.inside_rock_steps += 1;
+        }
+    }
+
+    /// Open mouths suck in food and prey; what reaches the mouth is eaten.
+    fn suck_in(&mut self, dt: f32) {
+        for i in 0..self.animals.len() {
+            let a = &self.animals[i];
+            if !a.alive || a.focus.intention != Intention::Eat {
+                self.animals[i].mouth_open = false;
+                continue;
+            }
+            let mouth = a.body.head_m();
+            let length = a.body.body_length_m();
+            let mut open = false;
+            match a.focus.target {
+                Some(Target::Food(id)) => {
+                    if let Some(k) = self.food.iter().position(|f| f.id == id) {
+                        let d = self.food[k].position_m.distance(mouth);
+                        let ahead = (self.food[k].position_m - mouth)
+                            .normalize_or_zero()
+                            .dot(a.body.heading());
+                        if d < SUCK_RANGE_BODY_LENGTHS * length
+                            && (ahead > SUCK_CONE_COS || d < 0.2 * length)
+                        {
+                            open = true;
+                            let pull = (mouth - self.food[k].position_m).normalize_or_zero()
+                                * VACUUM_SPEED_M_PER_S
+                                * dt;
+                            self.food[k].position_m = if pull.length() > d {
+                                mouth
+                            } else {
+                                self.food[k].position_m + pull
+                            };
+                        }
+                        if self.food[k].position_m.distance(mouth)
+                            < EAT_DISTANCE_M.max(0.1 * length)
+                        {
+                            self.food.swap_remove(k);
+                            let a = &mut self.animals[i];
+                            let before = a.mental.hunger;
+                            a.mental.eat(&a.habits.mental, 1.0);
+                            self.counts.food_eaten += 1;
+                            let text = format!(
+                                "{} ate plankton (hunger {:.2} → {:.2})",
+                                a.name(i),
+                                before,
+                                a.mental.hunger
+                            );
+                            self.log(ReefEventKind::AteFood { fish: i as u32 }, text);
+                        }
+                    }
+                }
+                Some(Target::Animal(j)) if a.habits.kind == FishKind::Predator => {
+                    let j = j as usize;
+                    if j < self.animals.len() && self.animals[j].alive {
+                        let prey_at = self.animals[j].body.position_m();
+                        let d = prey_at.distance(mouth);
+                        let ahead = (prey_at - mouth).normalize_or_zero().dot(a.body.heading());
+                        if d < PREDATOR_SUCK_RANGE_BODY_LENGTHS * length && ahead > SUCK_CONE_COS {
+                            open = true;
+                            let pull =
+                                (mouth - prey_at).normalize_or_zero() * VACUUM_ACCEL_M_PER_S2 * dt;
+                            self.animals[j].body.nudge(pull);
+                        }
+                        if d < SWALLOW_BODY_LENGTHS * length {
+                            let schooling = self.animals[j].focus.intention == Intention::School;
+                            self.animals[j].alive = false;
+                            self.animals[j].mouth_open = false;
+                            let a = &mut self.animals[i];
+                            a.mental
+                                .eat(&a.habits.mental, super::mind::mental_state::PREY_FOOD_UNITS);
+                            self.counts.prey_eaten += 1;
+                            if schooling {
+                                self.counts.schooling_prey_eaten += 1;
+                            }
+                            let text = format!(
+                                "{} ate {}",
+                                self.animals[i].name(i),
+                                self.animals[j].name(j)
+                            );
+                            self.log(
+                                ReefEventKind::AtePrey {
+                                    predator: i as u32,
+                                    prey: j as u32,
+                                },
+                                text,
+                            );
+                        }
+                    }
+                }
+                _ => {}
+            }
+            self.animals[i].mouth_open = open;
+        }
+    }
+
+    fn drift_food(&mut self, dt: f32) {
+        let t = self.time_secs;
+        for k in 0..self.food.len() {
+            let p = self.food[k].position_m;
+            let water = self.current.velocity_m_per_s(p, t);
+            let jiggle = Vec3::new(
+                self.rng.random_range(-1.0..1.0),
+                self.rng.random_range(-1.0..1.0),
+                self.rng.random_range(-1.0..1.0),
+            ) * 0.02;
+            let mut q = p + (water + jiggle - Vec3::Y * PLANKTON_SINK_M_PER_S) * dt;
+            q = self.tank.clamp_inside(q, 0.05);
+            for o in &self.obstacles {
+                if o.signed_distance_m(q) < 0.02 {
+                    q = o.push_outside(q, 0.02);
+                }
+            }
+            self.food[k].position_m = q;
+        }
+        // Plankton that settled on the sand is gone; new plankton is released
+        // near the surface.
+        let floor = self.tank.min_m.y + 0.08;
+        self.food.retain(|f| f.position_m.y > floor);
+        self.food_release_secs -= dt;
+        if self.food.len() < self.food_target && self.food_release_secs <= 0.0 {
+            self.food_release_secs = FOOD_RELEASE_SECS;
+            let mut p = self.random_free_point(0.5);
+            p.y = self.rng.random_range(0.6..0.95) * self.tank.max_m.y;
+            self.add_food(p);
+        }
+    }
+
+    fn sway_seaweed(&mut self, dt: f32) {
+        let t = self.time_secs as f32;
+        for w in &mut self.seaweed {
+            let root = w.nodes_m[0];
+            for n in 1..w.nodes_m.len() {
+                let p = w.nodes_m[n];
+                let water = self.current.velocity_m_per_s(p, f64::from(t));
+                let along = n as f32 / (SEAWEED_NODES - 1) as f32;
+                let sway = Vec3::new(
+                    (0.7 * t + w.phase_rad + 0.6 * along).sin(),
+                    0.0,
+                    (0.45 * t + 1.3 * w.phase_rad).cos(),
+                ) * 0.06;
+                let lift = Vec3::Y * 0.15;
+                w.nodes_m[n] = p + (water * 3.0 + sway + lift) * dt * along;
+            }
+            // Keep the segment lengths, from the root out.
+            w.nodes_m[0] = root;
+            for n in 1..w.nodes_m.len() {
+                let prev = w.nodes_m[n - 1];
+                let dir = (w.nodes_m[n] - prev).normalize_or(Vec3::Y);
+                let mut q = prev + dir * w.segment_m;
+                q.y = q.y.max(self.tank.min_m.y + 0.02);
+                w.nodes_m[n] = q;
+            }
+        }
+    }
+
+    fn count_contacts(&mut self) {
+        let mut now = Vec::new();
+        for i in 0..self.animals.len() {
+            if !self.animals[i].alive {
+                continue;
+            }
+            for j in i + 1..self.animals.len() {
+                if !self.animals[j].alive {
+                    continue;
+                }
+                let (a, b) = (&self.animals[i].body, &self.animals[j].body);
+                let mean = 0.5 * (a.body_length_m() + b.body_length_m());
+                if a.position_m().distance(b.position_m()) < COLLISION_BODY_LENGTHS * mean {
+                    now.push((i as u32, j as u32));
+                }
+            }
+        }
+        for pair in &now {
+            if !self.touching.contains(pair) {
+                self.counts.fish_collisions += 1;
+            }
+        }
+        self.touching = now;
+    }
+
+    fn log_decision(&mut self, i: usize, before: Focus, after: Focus) {
+        let name = self.animals[i].name(i);
+        match (before.intention, after.intention, after.target) {
+            (b, Intention::Escape, Some(Target::Animal(p))) if b != Intention::Escape => {
+                let text = format!(
+                    "{name} fled from {}",
+                    self.animals[p as usize].name(p as usize)
+                );
+                self.log(
+                    ReefEventKind::BeganEscape {
+                        fish: i as u32,
+                        predator: p,
+                    },
+                    text,
+                );
+            }
+            (_, Intention::Mate, Some(Target::Animal(p))) if before.target != after.target => {
+                let text = format!(
+                    "{name} courts {}",
+                    self.animals[p as usize].name(p as usize)
+                );
+                self.log(
+                    ReefEventKind::BeganMating {
+                        fish: i as u32,
+                        partner: p,
+                    },
+                    text,
+                );
+            }
+            _ => {}
+        }
+    }
+
+    fn log(&mut self, kind: ReefEventKind, text: String) {
+        if self.events.len() == EVENT_LOG_LEN {
+            self.events.pop_front();
+        }
+        self.events.push_back(ReefEvent {
+            time_secs: self.time_secs,
+            kind,
+            text,
+        });
+    }
+}
+
+/// β1 of the prey cost: schooling prey are harder to take (paper: 0.5).
+pub const PREY_BETA_SCHOOL: f32 = 0.5;
+/// β2 of the prey cost: prey that needs a large turn costs more (paper: 0.2).
+pub const PREY_BETA_TURN: f32 = 0.2;
+
+fn prey_habits(k: usize) -> Habits {
+    let sex = if k.is_multiple_of(2) {
+        Sex::Female
+    } else {
+        Sex::Male
+    };
+    Habits::new(FishKind::Prey, sex, 0)
+}
+
+fn predator_habits() -> Habits {
+    Habits::new(FishKind::Predator, Sex::Male, 9)
+}
+
+/// A display colour for the retina (linear RGB) from a hue.
+fn hue_rgb(hue: f32, kind: FishKind) -> [f32; 3] {
+    if kind == FishKind::Predator {
+        return [0.35, 0.38, 0.42];
+    }
+    let h = hue.rem_euclid(1.0) * 6.0;
+    let x = 1.0 - (h % 2.0 - 1.0).abs();
+    let (r, g, b) = match h as u32 {
+        0 => (1.0, x, 0.0),
+        1 => (x, 1.0, 0.0),
+        2 => (0.0, 1.0, x),
+        3 => (0.0, x, 1.0),
+        4 => (x, 0.0, 1.0),
+        _ => (1.0, 0.0, x),
+    };
+    [0.15 + 0.75 * r, 0.15 + 0.75 * g, 0.15 + 0.75 * b]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn reef(scene: ReefScene, body: ReefBodyKind, seed: u64) -> ReefWorld {
+        ReefWorld::new(ReefConfig {
+            seed,
+            scene,
+            body,
+            ..ReefConfig::default()
+        })
+    }
+
+    fn run(w: &mut ReefWorld, secs: f32) {
+        for _ in 0..(secs / w.dt_secs()).round() as u32 {
+            w.step();
+        }
+    }
+
+    #[test]
+    fn same_seed_same_reef() {
+        for body in [ReefBodyKind::PointMass, ReefBodyKind::Physical] {
+            let go = || {
+                let mut w = reef(ReefScene::Reef, body, 5);
+                run(&mut w, 5.0);
+                w.animals()
+                    .iter()
+                    .map(|a| a.body.position_m().to_array().map(f32::to_bits))
+                    .collect::<Vec<_>>()
+            };
+            assert_eq!(go(), go(), "{body:?}");
+        }
+    }
+
+    #[test]
+    fn a_long_reef_run_stays_finite_in_the_tank_and_out_of_rocks() {
+        for (body, secs) in [
+            (ReefBodyKind::PointMass, 180.0),
+            (ReefBodyKind::Physical, 60.0),
+        ] {
+            let mut w = reef(ReefScene::Reef, body, 2);
+            let tank = *w.tank();
+            let steps = (secs / w.dt_secs()) as u32;
+            for step in 0..steps {
+                w.step();
+                for (i, a) in w.animals().iter().enumerate().filter(|(_, a)| a.alive) {
+                    let p = a.body.position_m();
+                    assert!(p.is_finite(), "{body:?} animal {i} NaN at {step}");
+                    assert!(
+                        tank.contains(p, 0.0),
+                        "{body:?} animal {i} at {p} outside at {step}"
+                    );
+                    for v in [a.mental.hunger, a.mental.libido, a.mental.fear] {
+                        assert!((0.0..=1.0).contains(&v));
+                    }
+                }
+                for f in w.food() {
+                    assert!(tank.contains(f.position_m, 0.0));
+                }
+            }
+            let c = w.counts();
+            assert_eq!(c.inside_rock_steps, 0, "{body:?}");
+            // Collisions stay rare: fewer than one start per animal per minute.
+            let per_animal_minute =
+                c.fish_collisions as f32 / w.animals().len() as f32 / (secs / 60.0);
+            assert!(per_animal_minute < 1.0, "{body:?}: {c:?}");
+            eprintln!("{body:?}: {c:?}, events {}", w.events().len());
+        }
+    }
+
+    #[test]
+    fn hungry_fish_find_and_eat_plankton() {
+        for (body, at_least) in [(ReefBodyKind::PointMass, 12), (ReefBodyKind::Physical, 2)] {
+            let mut w = reef(ReefScene::Feeding, body, 3);
+            let start: Vec<f32> = w.animals().iter().map(|a| a.mental.hunger).collect();
+            assert!(start.iter().all(|h| *h == 1.0), "{start:?}");
+            run(&mut w, 60.0);
+            let c = w.counts();
+            eprintln!("{body:?} {c:?}");
+            assert!(c.food_eaten >= at_least, "{body:?} {c:?}");
+            // Every meal lowered the eater's hunger (the log says by how much).
+            for e in w.events() {
+                if let ReefEventKind::AteFood { .. } = e.kind {
+                    let (before, after) = e
+                        .text
+                        .split_once("hunger ")
+                        .and_then(|(_, h)| h.trim_end_matches(')').split_once(" → "))
+                        .unwrap();
+                    assert!(
+                        after.parse::<f32>().unwrap() < before.parse::<f32>().unwrap(),
+                        "{}",
+                        e.text
+                    );
+                }
+            }
+            let drops = w
+                .events()
+                .iter()
+                .filter(|e| matches!(e.kind, ReefEventKind::AteFood { .. }))
+                .count();
+            assert_eq!(drops as u32, c.food_eaten.min(EVENT_LOG_LEN as u32));
+        }
+    }
+
+    #[test]
+    fn the_shark_eats_prey() {
+        let mut w = reef(ReefScene::PredatorAndSchool, ReefBodyKind::PointMass, 4);
+        let prey = w
+            .animals()
+            .iter()
+            .filter(|a| a.habits.kind == FishKind::Prey)
+            .count();
+        run(&mut w, 150.0);
+        let c = w.counts();
+        assert!(c.prey_eaten >= 1, "{c:?}");
+        assert_eq!(w.alive_count(), prey + 1 - c.prey_eaten as usize);
+        let shark = w
+            .animals()
+            .iter()
+            .find(|a| a.habits.kind == FishKind::Predator)
+            .map(|a| a.mental.hunger);
+        eprintln!("{c:?} shark hunger {shark:?}");
+    }
+
+    #[test]
+    fn prey_that_sees_the_shark_flees() {
+        for body in [ReefBodyKind::PointMass, ReefBodyKind::Physical] {
+            let mut w = reef(ReefScene::PredatorAndSchool, body, 6);
+            let shark = w
+                .animals()
+                .iter()
+                .position(|a| a.habits.kind == FishKind::Predator)
+                .unwrap();
+            let c = w.tank().center_m();
+            w.place(0, c, Vec3::X);
+            // A fed shark cruises by instead of chasing.
+            let s = w.animal_mut(shark).unwrap();
+            let constants = s.habits.mental;
+            s.mental.eat(&constants, 10.0);
+            w.place(shark, c - Vec3::Z * 1.6, Vec3::X);
+            let d0 = w.animals()[0]
+                .body
+                .position_m()
+                .distance(w.animals()[shark].body.position_m());
+            run(&mut w, 0.5);
+            assert!(
+                w.animals()[0].mental.fear > 0.5,
+                "{body:?} fear {}",
+                w.animals()[0].mental.fear
+            );
+            assert_eq!(
+                w.animals()[0].focus.intention,
+                Intention::Escape,
+                "{body:?}"
+            );
+            run(&mut w, 2.5);
+            let a = &w.animals()[0];
+            let d1 = a
+                .body
+                .position_m()
+                .distance(w.animals()[shark].body.position_m());
+            assert!(
+                !a.alive || d1 > d0 || a.focus.intention == Intention::Escape,
+                "{body:?}"
+            );
+            assert!(d1 > d0 - 0.3, "{body:?} {d0} → {d1}");
+        }
+    }
+}
