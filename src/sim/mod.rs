@@ -10,6 +10,7 @@ pub mod behaviour;
 pub mod body;
 pub mod boid_forces;
 pub mod control_mode;
+pub mod courtship;
 pub mod environment;
 pub mod fish;
 pub mod mind;

@@ -26,6 +26,7 @@ use serde::{Deserialize, Serialize};
 
 use super::behaviour::{self, Me, Neighbour};
 use super::body::body_layout::HEAD_NODE;
+use super::courtship::{Pair, Partner, Phase};
 use super::environment::Environment;
 use super::fish::Fish;
 use super::mind::{
@@ -276,6 +277,9 @@ pub struct ReefAnimal {
     /// The predator last seen, where, and for how many more seconds it is
     /// remembered (see [`THREAT_MEMORY_SECS`]).
     last_threat: Option<(u32, Vec3, f32)>,
+    /// A female that left this male for another, and for how many more
+    /// seconds he leaves her alone.
+    rejected_by: Option<(u32, f32)>,
     /// Wander state for the point body and the wander routine.
     wander: Fish,
 }
@@ -323,17 +327,46 @@ pub struct ReefEvent {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case", tag = "kind")]
 pub enum ReefEventKind {
-    AtePrey { predator: u32, prey: u32 },
-    AteFood { fish: u32 },
-    BeganEscape { fish: u32, predator: u32 },
-    BeganMating { fish: u32, partner: u32 },
-    Intention { fish: u32 },
+    AtePrey {
+        predator: u32,
+        prey: u32,
+    },
+    AteFood {
+        fish: u32,
+    },
+    BeganEscape {
+        fish: u32,
+        predator: u32,
+    },
+    BeganMating {
+        fish: u32,
+        partner: u32,
+    },
+    Courtship {
+        male: u32,
+        female: u32,
+        phase: Phase,
+    },
+    LeftForLarger {
+        female: u32,
+        old: u32,
+        new: u32,
+    },
+    BrokeUp {
+        male: u32,
+        female: u32,
+    },
+    Intention {
+        fish: u32,
+    },
 }
 
 /// Counters over the run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ReefCounts {
     pub prey_eaten: u32,
+    /// Pairs that completed the courtship sequence.
+    pub spawnings: u32,
     /// Of those, prey that was schooling when caught.
     pub schooling_prey_eaten: u32,
     pub food_eaten: u32,
@@ -367,6 +400,8 @@ pub struct ReefWorld {
     touching: Vec<(u32, u32)>,
     /// Constraint node moves of the muscle bodies.
     constraint_moves: u64,
+    /// Courting pairs.
+    pairs: Vec<Pair>,
 }
 
 /// Inputs of one animal's decision, read before anyone moves.
@@ -413,6 +448,7 @@ impl ReefWorld {
             counts: ReefCounts::default(),
             touching: Vec::new(),
             constraint_moves: 0,
+            pairs: Vec::new(),
         };
         world.populate(config.scene);
         if let Some(n) = config.food_count {
@@ -446,6 +482,17 @@ impl ReefWorld {
     pub fn events(&self) -> &VecDeque<ReefEvent> {
         &self.events
     }
+    /// Courting pairs.
+    pub fn pairs(&self) -> &[Pair] {
+        &self.pairs
+    }
+
+    /// The pair animal `i` belongs to.
+    pub fn pair_of(&self, i: usize) -> Option<&Pair> {
+        let i = i as u32;
+        self.pairs.iter().find(|p| p.male == i || p.female == i)
+    }
+
     pub fn counts(&self) -> ReefCounts {
         self.counts
     }
@@ -760,6 +807,7 @@ impl ReefWorld {
             intended_m_per_s: heading * 0.5 * top,
             touch: None,
             last_threat: None,
+            rejected_by: None,
             wander: Fish::new(p, heading * 0.5 * top, length, hue),
         });
     }
@@ -834,11 +882,18 @@ impl ReefWorld {
             let a = &mut self.animals[i];
             a.temperature_c = self.env.temperature_c_at(seen[i].position_m);
             a.mental.update(&a.habits.mental, dt, predator_distances);
-            let mate_locked = false;
+            if let Some((f, left)) = a.rejected_by {
+                a.rejected_by = (left > dt).then_some((f, left - dt));
+            }
+            let me = i as u32;
+            let partner = self
+                .pairs
+                .iter()
+                .find(|p| p.bonded() && (p.male == me || p.female == me))
+                .map(|p| if p.male == me { p.female } else { p.male });
+            let a = &mut self.animals[i];
             let before = a.focus;
-            a.focus = a
-                .generator
-                .decide(&a.habits, &a.mental, &percept, mate_locked);
+            a.focus = a.generator.decide(&a.habits, &a.mental, &percept, partner);
             let focus = a.focus;
             if focus.intention != before.intention || focus.target != before.target {
                 self.log_decision(i, before, focus);
@@ -847,6 +902,7 @@ impl ReefWorld {
             self.move_body(i, desired, dt);
         }
         self.suck_in(dt);
+        self.court(dt);
         self.drift_food(dt);
         self.sway_seaweed(dt);
         self.count_contacts();
@@ -1022,7 +1078,13 @@ impl ReefWorld {
         if habits.kind == FishKind::Pacifist {
             let mut mates: Vec<(usize, f32)> = others
                 .iter()
-                .filter(|(j, _)| seen[*j].kind == FishKind::Pacifist && seen[*j].sex != habits.sex)
+                .filter(|(j, _)| {
+                    seen[*j].kind == FishKind::Pacifist
+                        && seen[*j].sex != habits.sex
+                        && self.animals[i]
+                            .rejected_by
+                            .is_none_or(|r| r.0 as usize != *j)
+                })
                 .map(|&(j, d)| {
                     let other_species = if seen[j].species == habits.species {
                         0.0
@@ -1096,9 +1158,17 @@ impl ReefWorld {
             }
         }
         // Other fish, except the prey a predator is about to swallow.
+        // and a courting partner (the pair's sensitivity regions are set
+        // tightly to their bodies, §7.3).
         let exempt = match a.focus.target {
             Some(Target::Animal(j)) if a.focus.intention == Intention::Eat => Some(j as usize),
-            _ => None,
+            _ => self.pair_of(i).map(|p| {
+                if p.male as usize == i {
+                    p.female as usize
+                } else {
+                    p.male as usize
+                }
+            }),
         };
         for (j, o) in seen.iter().enumerate() {
             if j == i || !o.alive || Some(j) == exempt {
@@ -1225,16 +1295,71 @@ impl ReefWorld {
                 },
                 _ => wander(self),
             },
-            Intention::Mate => match animal_at(focus.target) {
-                Some(p) => behaviour::chase(
-                    &me,
-                    p,
-                    behaviour::CRUISE_FRACTION,
-                    1.5 * s.length_m,
-                    turn_radius,
-                ),
-                None => wander(self),
-            },
+            Intention::Mate => {
+                let partner_of = |k: u32| {
+                    seen.get(k as usize).map(|o| Partner {
+                        position_m: o.position_m,
+                        head_m: o.head_m,
+                        heading: o.heading,
+                        body_length_m: o.length_m,
+                    })
+                };
+                let t = self.time_secs as f32;
+                let surface = self.tank.max_m.y;
+                let mine = self.pair_of(i).copied();
+                let theirs = match focus.target {
+                    Some(Target::Animal(j)) => self.pair_of(j as usize).copied(),
+                    _ => None,
+                };
+                match (mine, theirs, focus.target) {
+                    // In a pair: the courtship routine.
+                    (Some(pair), _, _) => match (partner_of(pair.male), partner_of(pair.female)) {
+                        (Some(m), Some(f)) => {
+                            let (male_wish, female_wish) = pair.wishes(&m, &f, t, surface);
+                            let wish = if pair.male as usize == i {
+                                male_wish
+                            } else {
+                                female_wish
+                            };
+                            behaviour::chase(
+                                &me,
+                                wish.target_m,
+                                wish.speed_fraction,
+                                0.0,
+                                turn_radius,
+                            )
+                        }
+                        _ => wander(self),
+                    },
+                    // Her partner is another male: join the looping display
+                    // (case 2); she may prefer him.
+                    (None, Some(pair), Some(Target::Animal(j)))
+                        if pair.female == j && !pair.bonded() =>
+                    {
+                        match partner_of(j) {
+                            Some(f) => behaviour::chase(
+                                &me,
+                                pair.loop_point_m(&f, t),
+                                0.9,
+                                0.0,
+                                turn_radius,
+                            ),
+                            None => wander(self),
+                        }
+                    }
+                    // Not yet a pair: follow the chosen partner around (case 1).
+                    _ => match animal_at(focus.target) {
+                        Some(p) => behaviour::chase(
+                            &me,
+                            p,
+                            behaviour::CRUISE_FRACTION,
+                            1.5 * s.length_m,
+                            turn_radius,
+                        ),
+                        None => wander(self),
+                    },
+                }
+            }
             Intention::Leave => {
                 let h = self.animals[i].habits;
                 let sign = |l: Liking| match l {
@@ -1415,6 +1540,171 @@ impl ReefWorld {
         }
     }
 
+    /// Forms courting pairs from mutual choices, lets a female change to a
+    /// larger male during looping, advances each pair's sequence and ends it.
+    fn court(&mut self, dt: f32) {
+        let mates_with = |a: &ReefAnimal| match (a.alive, a.focus) {
+            (
+                true,
+                Focus {
+                    intention: Intention::Mate,
+                    target: Some(Target::Animal(j)),
+                },
+            ) => Some(j),
+            _ => None,
+        };
+        // A female in a looping pair who now chooses another male who
+        // chooses her: she leaves the first (he turns away for a while).
+        for k in 0..self.pairs.len() {
+            let pair = self.pairs[k];
+            if pair.bonded() {
+                continue;
+            }
+            let chosen = mates_with(&self.animals[pair.female as usize]);
+            if let Some(new) = chosen
+                && new != pair.male
+                && mates_with(&self.animals[new as usize]) == Some(pair.female)
+                && self.pair_of(new as usize).is_none()
+                && self.animals[new as usize].body.body_length_m()
+                    > self.animals[pair.male as usize].body.body_length_m()
+            {
+                self.pairs[k] = Pair::new(
+                    new,
+                    pair.female,
+                    self.animals[pair.female as usize].body.heading(),
+                );
+                self.animals[pair.male as usize].rejected_by = Some((pair.female, 30.0));
+                let text = format!(
+                    "{} left {} for the larger {}",
+                    self.animals[pair.female as usize].name(pair.female as usize),
+                    self.animals[pair.male as usize].name(pair.male as usize),
+                    self.animals[new as usize].name(new as usize)
+                );
+                self.log(
+                    ReefEventKind::LeftForLarger {
+                        female: pair.female,
+                        old: pair.male,
+                        new,
+                    },
+                    text,
+                );
+            }
+        }
+        // New pairs: a male and a female who choose each other.
+        for i in 0..self.animals.len() {
+            let a = &self.animals[i];
+            if a.habits.kind != FishKind::Pacifist
+                || a.habits.sex != Sex::Male
+                || self.pair_of(i).is_some()
+            {
+                continue;
+            }
+            let Some(j) = mates_with(a) else {
+                continue;
+            };
+            if mates_with(&self.animals[j as usize]) == Some(i as u32)
+                && self.pair_of(j as usize).is_none()
+            {
+                self.pairs.push(Pair::new(
+                    i as u32,
+                    j,
+                    self.animals[j as usize].body.heading(),
+                ));
+                let text = format!(
+                    "{} and {} began courting: looping",
+                    self.animals[i].name(i),
+                    self.animals[j as usize].name(j as usize)
+                );
+                self.log(
+                    ReefEventKind::Courtship {
+                        male: i as u32,
+                        female: j,
+                        phase: Phase::Looping,
+                    },
+                    text,
+                );
+            }
+        }
+        // Advance, finish or break up.
+        let t = self.time_secs as f32;
+        let surface = self.tank.max_m.y;
+        let visibility = self.config.visibility_m;
+        let mut k = 0;
+        while k < self.pairs.len() {
+            let pair = self.pairs[k];
+            let partner = |i: u32| {
+                let a = &self.animals[i as usize];
+                Partner {
+                    position_m: a.body.position_m(),
+                    head_m: a.body.head_m(),
+                    heading: a.body.heading(),
+                    body_length_m: a.body.body_length_m(),
+                }
+            };
+            let (m, f) = (partner(pair.male), partner(pair.female));
+            let both_alive =
+                self.animals[pair.male as usize].alive && self.animals[pair.female as usize].alive;
+            let (mut pair, entered) = {
+                let mut p = pair;
+                let entered = p.advance(&m, &f, t, surface, dt);
+                p.lost_secs = if m.position_m.distance(f.position_m) > visibility {
+                    p.lost_secs + dt
+                } else {
+                    0.0
+                };
+                (p, entered)
+            };
+            let names = (
+                self.animals[pair.male as usize].name(pair.male as usize),
+                self.animals[pair.female as usize].name(pair.female as usize),
+            );
+            if let Some(phase) = entered {
+                let text = if phase == Phase::Spawned {
+                    format!("{} and {} spawned", names.0, names.1)
+                } else {
+                    format!("{} and {} began {}", names.0, names.1, phase.label())
+                };
+                self.log(
+                    ReefEventKind::Courtship {
+                        male: pair.male,
+                        female: pair.female,
+                        phase,
+                    },
+                    text,
+                );
+            }
+            if pair.phase == Phase::Spawned {
+                self.counts.spawnings += 1;
+                for id in [pair.male, pair.female] {
+                    let a = &mut self.animals[id as usize];
+                    let constants = a.habits.mental;
+                    a.mental.mated(&constants);
+                    a.generator = IntentionGenerator::default();
+                }
+                self.pairs.remove(k);
+                continue;
+            }
+            let wanted = mates_with(&self.animals[pair.male as usize]) == Some(pair.female)
+                || mates_with(&self.animals[pair.female as usize]) == Some(pair.male)
+                || self.animals[pair.male as usize].focus.intention == Intention::Avoid
+                || self.animals[pair.female as usize].focus.intention == Intention::Avoid;
+            if !both_alive || pair.timed_out() || (!pair.bonded() && !wanted) {
+                pair.phase_secs = 0.0;
+                self.pairs.remove(k);
+                self.log(
+                    ReefEventKind::BrokeUp {
+                        male: pair.male,
+                        female: pair.female,
+                    },
+                    format!("{} and {} stopped courting", names.0, names.1),
+                );
+                continue;
+            }
+            self.pairs[k] = pair;
+            k += 1;
+        }
+    }
+
     fn drift_food(&mut self, dt: f32) {
         let t = self.time_secs;
         for k in 0..self.food.len() {
@@ -1512,19 +1802,6 @@ impl ReefWorld {
                     ReefEventKind::BeganEscape {
                         fish: i as u32,
                         predator: p,
-                    },
-                    text,
-                );
-            }
-            (_, Intention::Mate, Some(Target::Animal(p))) if before.target != after.target => {
-                let text = format!(
-                    "{name} courts {}",
-                    self.animals[p as usize].name(p as usize)
-                );
-                self.log(
-                    ReefEventKind::BeganMating {
-                        fish: i as u32,
-                        partner: p,
                     },
                     text,
                 );
@@ -1747,6 +2024,23 @@ mod tests {
                 "{body:?}"
             );
             assert!(d1 > d0 - 0.3, "{body:?} {d0} → {d1}");
+        }
+    }
+}
+#[cfg(test)]
+mod debug_tests {
+    use super::*;
+    #[test]
+    fn dbg_courtship() {
+        for seed in [1, 2] {
+        let mut w = ReefWorld::new(ReefConfig { seed, scene: ReefScene::Courtship, body: ReefBodyKind::Physical, ..ReefConfig::default() });
+        let mut maxc = 0;
+        for _ in 0..(400.0 / 0.055) as u32 {
+            w.step();
+            if let Some(p) = w.pairs().first() { maxc = maxc.max(p.count); }
+        }
+        for e in w.events().iter().filter(|e| !matches!(e.kind, ReefEventKind::AteFood{..})) { eprintln!("{seed} {:.1} {}", e.time_secs, e.text); }
+        eprintln!("maxcount {maxc}");
         }
     }
 }

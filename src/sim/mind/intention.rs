@@ -156,15 +156,16 @@ impl Default for IntentionGenerator {
 
 impl IntentionGenerator {
     /// Chooses this step's intention and target. `state.fear` must already
-    /// include the seen predators (see `MentalState::update`). `mate_locked`:
-    /// the fish is in a courtship sequence with its current partner and keeps
-    /// it whatever the ranks say.
+    /// include the seen predators (see `MentalState::update`). `partner`: the
+    /// fish is bonded in a courtship sequence (past looping, `courtship.rs`) and
+    /// keeps courting this partner whatever its urges and ranks say; only a
+    /// danger of collision interrupts it.
     pub fn decide(
         &mut self,
         habits: &Habits,
         state: &MentalState,
         percept: &Percept,
-        mate_locked: bool,
+        partner: Option<u32>,
     ) -> Focus {
         // 1. Immediate danger of collision.
         if let Some(obstacle) = percept.collision {
@@ -213,22 +214,28 @@ impl IntentionGenerator {
             };
             return self.current;
         }
-        // 4. Hunger and libido.
+        // 4. A bonded courtship goes on; otherwise hunger and libido.
+        if let Some(p) = partner {
+            self.current = Focus {
+                intention: Intention::Mate,
+                target: Some(Target::Animal(p)),
+            };
+            return self.current;
+        }
         let libido = if habits.kind == FishKind::Pacifist {
             state.libido
         } else {
             0.0
         };
         let hunger = state.hunger;
-        if hunger.max(libido) > habits.urge_threshold || mate_locked {
-            let (intention, candidates): (Intention, &[(u32, f32)]) =
-                if mate_locked || libido > hunger {
-                    (Intention::Mate, &percept.mates)
-                } else if habits.kind == FishKind::Predator {
-                    (Intention::Eat, &percept.prey)
-                } else {
-                    (Intention::Eat, &percept.food)
-                };
+        if hunger.max(libido) > habits.urge_threshold {
+            let (intention, candidates): (Intention, &[(u32, f32)]) = if libido > hunger {
+                (Intention::Mate, &percept.mates)
+            } else if habits.kind == FishKind::Predator {
+                (Intention::Eat, &percept.prey)
+            } else {
+                (Intention::Eat, &percept.food)
+            };
             let wrap = |id: u32| match (intention, habits.kind) {
                 (Intention::Eat, FishKind::Predator) | (Intention::Mate, _) => Target::Animal(id),
                 _ => Target::Food(id),
@@ -239,7 +246,6 @@ impl IntentionGenerator {
                 .and_then(|t| percept.rank_of(t).map(|rank| (t, rank)));
             let best = candidates.first().map(|&(id, rank)| (wrap(id), rank));
             let target = match (kept, best) {
-                (Some((t, _)), _) if mate_locked => Some(t),
                 (Some((t, kept_rank)), Some((new, new_rank))) => {
                     let threshold = habits.persistence_body_lengths * body_length_unit(habits);
                     if kept_rank - new_rank > threshold {
@@ -303,20 +309,20 @@ mod tests {
             content: true,
             ..Default::default()
         };
-        let f = g.decide(&prey(), &hungry, &p, false);
+        let f = g.decide(&prey(), &hungry, &p, None);
         assert_eq!(f.intention, Intention::Eat);
         assert_eq!(f.target, Some(Target::Food(7)));
         p.collision = Some(Target::Obstacle(0));
-        let f = g.decide(&prey(), &hungry, &p, false);
+        let f = g.decide(&prey(), &hungry, &p, None);
         assert_eq!(f.intention, Intention::Avoid);
         assert_eq!(g.memory.map(|m| m.target), Some(Some(Target::Food(7))));
         // Still avoiding: memory kept.
-        g.decide(&prey(), &hungry, &p, false);
+        g.decide(&prey(), &hungry, &p, None);
         assert!(g.memory.is_some());
         p.collision = None;
         // A nearer particle is now in view, but the remembered one is resumed.
         p.food.insert(0, (9, 0.3));
-        let f = g.decide(&prey(), &hungry, &p, false);
+        let f = g.decide(&prey(), &hungry, &p, None);
         assert_eq!(
             f,
             Focus {
@@ -336,12 +342,12 @@ mod tests {
             content: true,
             ..Default::default()
         };
-        g.decide(&prey(), &hungry, &p, false);
+        g.decide(&prey(), &hungry, &p, None);
         p.collision = Some(Target::Glass);
-        g.decide(&prey(), &hungry, &p, false);
+        g.decide(&prey(), &hungry, &p, None);
         p.collision = None;
         p.food = vec![(3, 4.0)];
-        let f = g.decide(&prey(), &hungry, &p, false);
+        let f = g.decide(&prey(), &hungry, &p, None);
         assert_eq!(f.target, Some(Target::Food(3)));
     }
 
@@ -354,13 +360,13 @@ mod tests {
             ..Default::default()
         };
         // F above f0 = 0.3, F_m = 0.5 < f1 = 0.8: school.
-        let f = g.decide(&h, &state(1.0, 0.0, 0.5), &p, false);
+        let f = g.decide(&h, &state(1.0, 0.0, 0.5), &p, None);
         assert_eq!(f.intention, Intention::School);
         let p = Percept {
             predators: vec![(4, 0.9), (5, 0.2)],
             ..Default::default()
         };
-        let f = g.decide(&h, &state(1.0, 0.0, 1.0), &p, false);
+        let f = g.decide(&h, &state(1.0, 0.0, 1.0), &p, None);
         assert_eq!(
             f,
             Focus {
@@ -378,12 +384,12 @@ mod tests {
             ..Default::default()
         };
         assert_eq!(
-            g.decide(&loner, &state(0.0, 0.0, 0.4), &p, false).intention,
+            g.decide(&loner, &state(0.0, 0.0, 0.4), &p, None).intention,
             Intention::Escape
         );
         // Below f0: no evasive action.
         assert_eq!(
-            g.decide(&h, &state(0.0, 0.0, 0.2), &p, false).intention,
+            g.decide(&h, &state(0.0, 0.0, 0.2), &p, None).intention,
             Intention::School
         );
     }
@@ -398,9 +404,9 @@ mod tests {
             content: false,
             ..Default::default()
         };
-        let f = g.decide(&shark, &state(0.2, 0.9, 1.0), &p, false);
+        let f = g.decide(&shark, &state(0.2, 0.9, 1.0), &p, None);
         assert_eq!(f.intention, Intention::Wander);
-        let f = g.decide(&shark, &state(0.6, 0.9, 1.0), &p, false);
+        let f = g.decide(&shark, &state(0.6, 0.9, 1.0), &p, None);
         assert_eq!(
             f,
             Focus {
@@ -421,7 +427,7 @@ mod tests {
             content: false,
             ..Default::default()
         };
-        let f = g.decide(&h, &state(0.3, 0.6, 1.0), &p, false);
+        let f = g.decide(&h, &state(0.3, 0.6, 1.0), &p, None);
         assert_eq!(
             f,
             Focus {
@@ -429,7 +435,7 @@ mod tests {
                 target: Some(Target::Animal(5))
             }
         );
-        let f = g.decide(&h, &state(0.6, 0.3, 1.0), &p, false);
+        let f = g.decide(&h, &state(0.6, 0.3, 1.0), &p, None);
         assert_eq!(
             f,
             Focus {
@@ -437,11 +443,11 @@ mod tests {
                 target: Some(Target::Food(1))
             }
         );
-        let f = g.decide(&h, &state(0.1, 0.1, 0.0), &p, false);
+        let f = g.decide(&h, &state(0.1, 0.1, 0.0), &p, None);
         assert_eq!(f.intention, Intention::Leave);
         let content = Percept { content: true, ..p };
         assert_eq!(
-            g.decide(&h, &state(0.1, 0.1, 0.0), &content, false)
+            g.decide(&h, &state(0.1, 0.1, 0.0), &content, None)
                 .intention,
             Intention::Wander
         );
@@ -460,9 +466,9 @@ mod tests {
                 food: vec![(1, 3.0)],
                 ..Default::default()
             };
-            g.decide(&h, &hungry, &p, false);
+            g.decide(&h, &hungry, &p, None);
             p.food = vec![(2, 1.0), (1, 3.0)];
-            let f = g.decide(&h, &hungry, &p, false);
+            let f = g.decide(&h, &hungry, &p, None);
             let expected = if switches {
                 Target::Food(2)
             } else {

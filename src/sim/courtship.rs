@@ -1,0 +1,378 @@
+//! The courtship routine of pacifists (Tu & Terzopoulos 1994 §7.3, Plate 1b):
+//! **looping** (the male swims up and down through a point in front of the
+//! female's head; she hovers and bobs) until his mouth has passed it
+//! [`LOOPS_TO_CIRCLE`] times → **circling** (each chases the other's tail) until
+//! the female has turned [`CIRCLING_TURNS`] full turns → **spawning ascent**
+//! (she swims fast towards the surface, he follows her abdomen) → **nuzzling**
+//! (he touches her abdomen from below, backs off, and again, [`NUZZLES`] times)
+//! → spawned.
+//!
+//! A female may leave her male for a larger one who joins the looping display
+//! (until circling starts); the first male then turns away. A pair whose
+//! partner is lost from view for [`LOST_SECS`], or that spends more than
+//! [`PHASE_TIMEOUT_SECS`] in one phase, breaks up.
+//!
+//! This module holds the pair's state machine and where each partner wants to
+//! go; the reef world (`reef_world.rs`) forms pairs and moves the bodies.
+
+use glam::Vec3;
+use serde::{Deserialize, Serialize};
+
+/// Passes of the male's mouth through the looping point before circling (the
+/// paper: "currently 6").
+pub const LOOPS_TO_CIRCLE: u32 = 6;
+/// Full turns the female makes while circling before the ascent (the paper: "a
+/// fixed number"; 1.5, chosen: long enough to see, short for a slow body).
+pub const CIRCLING_TURNS: f32 = 1.5;
+/// Touches of the male's mouth on the female's abdomen (the paper: "e.g., 3").
+pub const NUZZLES: u32 = 3;
+/// Seconds the male backs off after a touch (2, chosen).
+pub const BACK_OFF_SECS: f32 = 2.0;
+/// Seconds of ascent before the female hovers (6, chosen), or until she is a
+/// body length under the surface.
+pub const ASCENT_SECS: f32 = 6.0;
+/// A phase that lasts longer than this breaks the pair up, seconds.
+pub const PHASE_TIMEOUT_SECS: f32 = 150.0;
+/// A partner out of sight this long breaks the pair up, seconds.
+pub const LOST_SECS: f32 = 10.0;
+/// Frequency of the looping point's up-and-down motion, Hz (0.2, chosen).
+pub const LOOP_HZ: f32 = 0.2;
+/// The male's mouth within this many body lengths of the looping point counts
+/// one pass (the paper: "reaches the vicinity"; 1.0, chosen: the muscle body
+/// loops in circles about two body lengths wide and passed within half a
+/// length too rarely to finish in minutes, measured).
+pub const PASS_BODY_LENGTHS: f32 = 1.0;
+/// Seconds between two counted passes (3, chosen: one pass per swing).
+pub const PASS_INTERVAL_SECS: f32 = 3.0;
+/// The male's mouth within this many body lengths of her abdomen is a touch.
+pub const TOUCH_BODY_LENGTHS: f32 = 0.35;
+
+/// The phases in order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Phase {
+    Looping,
+    Circling,
+    Ascending,
+    Nuzzling,
+    Spawned,
+}
+
+impl Phase {
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Looping => "looping",
+            Self::Circling => "circling",
+            Self::Ascending => "spawning ascent",
+            Self::Nuzzling => "nuzzling",
+            Self::Spawned => "spawned",
+        }
+    }
+}
+
+/// Where one partner is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Partner {
+    pub position_m: Vec3,
+    pub head_m: Vec3,
+    pub heading: Vec3,
+    pub body_length_m: f32,
+}
+
+/// What a partner wants this step: a point to chase and a speed fraction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Wish {
+    pub target_m: Vec3,
+    pub speed_fraction: f32,
+}
+
+/// A courting pair.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Pair {
+    pub male: u32,
+    pub female: u32,
+    pub phase: Phase,
+    /// Seconds in this phase.
+    pub phase_secs: f32,
+    /// Counted passes (looping) or touches (nuzzling).
+    pub count: u32,
+    /// Radians the female has turned while circling.
+    pub turned_rad: f32,
+    /// Seconds since the last counted pass or touch.
+    pub since_count_secs: f32,
+    /// Seconds either partner has been out of the other's sight.
+    pub lost_secs: f32,
+    /// The female's heading last step (for counting turns).
+    last_heading: Vec3,
+}
+
+impl Pair {
+    pub fn new(male: u32, female: u32, female_heading: Vec3) -> Self {
+        Self {
+            male,
+            female,
+            phase: Phase::Looping,
+            phase_secs: 0.0,
+            count: 0,
+            turned_rad: 0.0,
+            since_count_secs: PASS_INTERVAL_SECS,
+            lost_secs: 0.0,
+            last_heading: female_heading,
+        }
+    }
+
+    /// Is the pair past the point where the female may still change males?
+    pub fn bonded(&self) -> bool {
+        self.phase != Phase::Looping
+    }
+
+    /// The looping point: in front of her head, swinging up and down.
+    pub fn loop_point_m(&self, female: &Partner, time_secs: f32) -> Vec3 {
+        let swing = (std::f32::consts::TAU * LOOP_HZ * time_secs).sin();
+        female.head_m
+            + female.heading * 0.8 * female.body_length_m
+            + Vec3::Y * (0.3 + 0.5 * swing) * female.body_length_m
+    }
+
+    /// Her abdomen: under the middle of her body.
+    pub fn abdomen_m(female: &Partner) -> Vec3 {
+        female.position_m - Vec3::Y * 0.2 * female.body_length_m
+    }
+
+    /// What each wants now: (male, female).
+    pub fn wishes(
+        &self,
+        male: &Partner,
+        female: &Partner,
+        time_secs: f32,
+        surface_y_m: f32,
+    ) -> (Wish, Wish) {
+        let hover = |p: &Partner, bob: f32| Wish {
+            target_m: p.head_m + p.heading * p.body_length_m + Vec3::Y * bob * p.body_length_m,
+            speed_fraction: 0.25,
+        };
+        let bob = 0.3 * (std::f32::consts::TAU * 0.5 * time_secs).sin();
+        match self.phase {
+            Phase::Looping => (
+                Wish {
+                    target_m: self.loop_point_m(female, time_secs),
+                    speed_fraction: 0.9,
+                },
+                hover(female, bob),
+            ),
+            Phase::Circling => (
+                Wish {
+                    target_m: female.position_m - female.heading * female.body_length_m,
+                    speed_fraction: 0.8,
+                },
+                Wish {
+                    target_m: male.position_m - male.heading * male.body_length_m,
+                    speed_fraction: 0.7,
+                },
+            ),
+            Phase::Ascending => {
+                let top = surface_y_m - female.body_length_m;
+                (
+                    Wish {
+                        target_m: Self::abdomen_m(female)
+                            - female.heading * 0.3 * female.body_length_m,
+                        speed_fraction: 1.0,
+                    },
+                    Wish {
+                        target_m: Vec3::new(female.head_m.x, top, female.head_m.z)
+                            + female.heading * female.body_length_m,
+                        speed_fraction: 1.0,
+                    },
+                )
+            }
+            Phase::Nuzzling | Phase::Spawned => {
+                let backing_off = self.since_count_secs < BACK_OFF_SECS;
+                let abdomen = Self::abdomen_m(female);
+                let male_wish = if backing_off {
+                    Wish {
+                        target_m: abdomen
+                            - Vec3::Y * 1.5 * male.body_length_m
+                            - female.heading * male.body_length_m,
+                        speed_fraction: 0.5,
+                    }
+                } else {
+                    // From below: aim under her abdomen, then up into it.
+                    let below = abdomen - Vec3::Y * 0.3 * male.body_length_m;
+                    let target = if male.head_m.y < abdomen.y {
+                        abdomen
+                    } else {
+                        below
+                    };
+                    Wish {
+                        target_m: target,
+                        speed_fraction: 0.6,
+                    }
+                };
+                (male_wish, hover(female, 0.0))
+            }
+        }
+    }
+
+    /// Advances the pair by `dt_secs`; returns the phase it entered, if any.
+    pub fn advance(
+        &mut self,
+        male: &Partner,
+        female: &Partner,
+        time_secs: f32,
+        surface_y_m: f32,
+        dt_secs: f32,
+    ) -> Option<Phase> {
+        self.phase_secs += dt_secs;
+        self.since_count_secs += dt_secs;
+        let turn = self
+            .last_heading
+            .normalize_or_zero()
+            .dot(female.heading)
+            .clamp(-1.0, 1.0)
+            .acos();
+        self.last_heading = female.heading;
+        let next = match self.phase {
+            Phase::Looping => {
+                let point = self.loop_point_m(female, time_secs);
+                if male.head_m.distance(point) < PASS_BODY_LENGTHS * male.body_length_m
+                    && self.since_count_secs >= PASS_INTERVAL_SECS
+                {
+                    self.count += 1;
+                    self.since_count_secs = 0.0;
+                }
+                (self.count >= LOOPS_TO_CIRCLE).then_some(Phase::Circling)
+            }
+            Phase::Circling => {
+                if turn.is_finite() {
+                    self.turned_rad += turn;
+                }
+                (self.turned_rad >= CIRCLING_TURNS * std::f32::consts::TAU)
+                    .then_some(Phase::Ascending)
+            }
+            Phase::Ascending => {
+                let high = female.position_m.y > surface_y_m - 1.5 * female.body_length_m;
+                (high || self.phase_secs >= ASCENT_SECS).then_some(Phase::Nuzzling)
+            }
+            Phase::Nuzzling => {
+                if self.since_count_secs >= BACK_OFF_SECS
+                    && male.head_m.distance(Self::abdomen_m(female))
+                        < TOUCH_BODY_LENGTHS * male.body_length_m
+                {
+                    self.count += 1;
+                    self.since_count_secs = 0.0;
+                }
+                (self.count >= NUZZLES).then_some(Phase::Spawned)
+            }
+            Phase::Spawned => None,
+        };
+        if let Some(phase) = next {
+            self.phase = phase;
+            self.phase_secs = 0.0;
+            self.count = 0;
+            self.turned_rad = 0.0;
+            self.since_count_secs = if phase == Phase::Nuzzling {
+                BACK_OFF_SECS
+            } else {
+                PASS_INTERVAL_SECS
+            };
+        }
+        next
+    }
+
+    /// Has the pair been stuck too long in one phase?
+    pub fn timed_out(&self) -> bool {
+        self.phase_secs > PHASE_TIMEOUT_SECS || self.lost_secs > LOST_SECS
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn partner(at: Vec3, heading: Vec3) -> Partner {
+        Partner {
+            position_m: at,
+            head_m: at + heading * 0.25,
+            heading,
+            body_length_m: 0.5,
+        }
+    }
+
+    #[test]
+    fn the_phases_follow_in_order_when_their_conditions_are_met() {
+        let female = partner(Vec3::new(0.0, 2.0, 0.0), Vec3::X);
+        let mut pair = Pair::new(1, 2, Vec3::X);
+        let dt = 0.055;
+        let mut t = 0.0;
+        let mut seen = vec![pair.phase];
+        // Looping: the male's mouth sits on the looping point.
+        while pair.phase == Phase::Looping && t < 100.0 {
+            let point = pair.loop_point_m(&female, t);
+            let male = partner(point - Vec3::X * 0.25, Vec3::X);
+            if let Some(p) = pair.advance(&male, &female, t, 4.5, dt) {
+                seen.push(p);
+            }
+            t += dt;
+        }
+        assert!(
+            (6.0 * PASS_INTERVAL_SECS - 0.5..6.0 * PASS_INTERVAL_SECS + 1.0).contains(&t),
+            "{t}"
+        );
+        // Circling: she turns 20° a step.
+        let mut angle: f32 = 0.0;
+        let male = partner(Vec3::ZERO, Vec3::Z);
+        while pair.phase == Phase::Circling {
+            angle += 20f32.to_radians();
+            let f = partner(
+                Vec3::new(0.0, 2.0, 0.0),
+                Vec3::new(angle.cos(), 0.0, angle.sin()),
+            );
+            if let Some(p) = pair.advance(&male, &f, t, 4.5, dt) {
+                seen.push(p);
+            }
+            t += dt;
+        }
+        assert!(angle.to_degrees() >= 540.0 - 1.0 && angle.to_degrees() < 560.0);
+        // Ascending: she reaches the surface.
+        let high = partner(Vec3::new(0.0, 4.0, 0.0), Vec3::X);
+        seen.push(
+            pair.advance(&male, &high, t, 4.5, dt)
+                .expect("near the surface"),
+        );
+        // Nuzzling: touches need the back-off in between.
+        let mut touches = 0;
+        while pair.phase == Phase::Nuzzling && touches < 1000 {
+            let m = partner(Pair::abdomen_m(&high) - Vec3::X * 0.25, Vec3::X);
+            if let Some(p) = pair.advance(&m, &high, t, 4.5, dt) {
+                seen.push(p);
+            }
+            t += dt;
+            touches += 1;
+        }
+        assert!(touches as f32 * dt >= 2.0 * BACK_OFF_SECS, "{touches}");
+        assert_eq!(
+            seen,
+            vec![
+                Phase::Looping,
+                Phase::Circling,
+                Phase::Ascending,
+                Phase::Nuzzling,
+                Phase::Spawned
+            ]
+        );
+    }
+
+    #[test]
+    fn the_male_aims_at_her_abdomen_from_below() {
+        let female = partner(Vec3::new(0.0, 3.0, 0.0), Vec3::X);
+        let mut pair = Pair::new(1, 2, Vec3::X);
+        pair.phase = Phase::Nuzzling;
+        pair.since_count_secs = BACK_OFF_SECS;
+        let above = partner(Vec3::new(0.0, 3.5, 0.0), Vec3::X);
+        let (wish, _) = pair.wishes(&above, &female, 0.0, 4.5);
+        assert!(wish.target_m.y < Pair::abdomen_m(&female).y);
+        let below = partner(Vec3::new(-0.3, 2.5, 0.0), Vec3::X);
+        let (wish, _) = pair.wishes(&below, &female, 0.0, 4.5);
+        assert_eq!(wish.target_m, Pair::abdomen_m(&female));
+    }
+}
