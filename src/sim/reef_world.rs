@@ -2026,21 +2026,83 @@ mod tests {
             assert!(d1 > d0 - 0.3, "{body:?} {d0} → {d1}");
         }
     }
-}
-#[cfg(test)]
-mod debug_tests {
-    use super::*;
+
     #[test]
-    fn dbg_courtship() {
-        for seed in [1, 2] {
-        let mut w = ReefWorld::new(ReefConfig { seed, scene: ReefScene::Courtship, body: ReefBodyKind::Physical, ..ReefConfig::default() });
-        let mut maxc = 0;
-        for _ in 0..(400.0 / 0.055) as u32 {
+    fn a_pacifist_pair_completes_the_courtship_sequence_in_order() {
+        let mut w = reef(ReefScene::Courtship, ReefBodyKind::PointMass, 1);
+        run(&mut w, 120.0);
+        let phases: Vec<(u32, u32, Phase)> = w
+            .events()
+            .iter()
+            .filter_map(|e| match e.kind {
+                ReefEventKind::Courtship {
+                    male,
+                    female,
+                    phase,
+                } => Some((male, female, phase)),
+                _ => None,
+            })
+            .collect();
+        let order = [
+            Phase::Looping,
+            Phase::Circling,
+            Phase::Ascending,
+            Phase::Nuzzling,
+            Phase::Spawned,
+        ];
+        let complete = phases.windows(5).any(|w| {
+            w.iter()
+                .zip(order)
+                .all(|(e, p)| e.2 == p && e.0 == w[0].0 && e.1 == w[0].1)
+        });
+        assert!(complete, "{phases:?}");
+        assert!(w.counts().spawnings >= 1);
+        // Spawning satisfied both: their libido restarted from 0.
+        let female = w
+            .animals()
+            .iter()
+            .position(|a| a.habits.sex == Sex::Female)
+            .unwrap();
+        assert!(w.events().iter().any(|e| matches!(e.kind, ReefEventKind::Courtship { female: f, phase: Phase::Spawned, .. } if f as usize == female)));
+        // A female only ever leaves a male for a larger one.
+        for e in w.events() {
+            if let ReefEventKind::LeftForLarger { old, new, .. } = e.kind {
+                let len = |k: u32| w.animals()[k as usize].body.body_length_m();
+                assert!(len(new) > len(old), "{}", e.text);
+            }
+        }
+    }
+
+    #[test]
+    fn an_eat_intention_interrupted_by_avoiding_is_resumed() {
+        let mut w = reef(ReefScene::Feeding, ReefBodyKind::PointMass, 2);
+        // Per fish: the last eat focus before an avoidance.
+        let mut interrupted: Vec<Option<Target>> = vec![None; w.animals().len()];
+        let mut last: Vec<Focus> = w.animals().iter().map(|a| a.focus).collect();
+        let (mut interruptions, mut resumed) = (0, 0);
+        for _ in 0..(90.0 / w.dt_secs()) as u32 {
             w.step();
-            if let Some(p) = w.pairs().first() { maxc = maxc.max(p.count); }
+            for (i, a) in w.animals().iter().enumerate() {
+                let (before, now) = (last[i], a.focus);
+                if before.intention == Intention::Eat && now.intention == Intention::Avoid {
+                    interrupted[i] = before.target;
+                    interruptions += 1;
+                    assert_eq!(a.generator.memory.map(|m| m.target), Some(before.target));
+                }
+                if before.intention == Intention::Avoid && now.intention != Intention::Avoid {
+                    if let Some(t) = interrupted[i].take()
+                        && now.intention == Intention::Eat
+                        && now.target == Some(t)
+                    {
+                        resumed += 1;
+                    }
+                }
+                last[i] = now;
+            }
         }
-        for e in w.events().iter().filter(|e| !matches!(e.kind, ReefEventKind::AteFood{..})) { eprintln!("{seed} {:.1} {}", e.time_secs, e.text); }
-        eprintln!("maxcount {maxc}");
-        }
+        assert!(
+            interruptions >= 3 && resumed >= 2,
+            "{interruptions} interruptions, {resumed} resumed"
+        );
     }
 }
