@@ -2089,13 +2089,13 @@ mod tests {
                     interruptions += 1;
                     assert_eq!(a.generator.memory.map(|m| m.target), Some(before.target));
                 }
-                if before.intention == Intention::Avoid && now.intention != Intention::Avoid {
-                    if let Some(t) = interrupted[i].take()
-                        && now.intention == Intention::Eat
-                        && now.target == Some(t)
-                    {
-                        resumed += 1;
-                    }
+                if before.intention == Intention::Avoid
+                    && now.intention != Intention::Avoid
+                    && let Some(t) = interrupted[i].take()
+                    && now.intention == Intention::Eat
+                    && now.target == Some(t)
+                {
+                    resumed += 1;
                 }
                 last[i] = now;
             }
