@@ -17,7 +17,7 @@ use crate::settings::{Scene, Settings, Side};
 use crate::sim::Obstacle;
 use crate::ui::{
     EditTool, PanelAction, PanelState, WidgetRects, body_overlay, body_plots_ui, control_panel_ui,
-    metrics_panel_ui, mode_label, side_color, status_line_ui,
+    metrics_panel_ui, mode_label, reef_overlay, reef_panel, side_color, status_line_ui,
 };
 
 /// Physical animals whose screen rectangles `shoal.widgets()` reports (`animal_0`,
@@ -79,7 +79,25 @@ pub struct ShoalApp {
     dragging: Option<(Side, usize)>,
     /// Is the camera following the selected fish (physics scene)?
     following: bool,
+    /// The reef's selected fish's retinal image: which fish, the texture, its mean
+    /// brightness and when (app time, seconds) it was rendered.
+    fish_eye: Option<(u32, egui::TextureHandle, f32, f64)>,
     ctx: egui::Context,
+}
+
+/// Seconds between two renders of the fish-eye view (0.2, chosen: smooth enough
+/// to follow, cheap: one 96 × 96 ray cast).
+const FISH_EYE_EVERY_SECS: f64 = 0.2;
+/// Pixels across the fish-eye view.
+const FISH_EYE_SIZE_PX: usize = 96;
+
+/// The fish selected in the current scene (physics or reef).
+fn selected_of(settings: &Settings) -> Option<u32> {
+    match settings.scene {
+        Scene::Physics => settings.physics.selected,
+        Scene::Reef => settings.reef.selected,
+        Scene::Aquarium | Scene::Boids => None,
+    }
 }
 
 impl ShoalApp {
@@ -118,6 +136,7 @@ impl ShoalApp {
             page_url: None,
             dragging: None,
             following: false,
+            fish_eye: None,
             ctx: cc.egui_ctx.clone(),
         })
     }
@@ -301,34 +320,70 @@ impl ShoalApp {
         }
     }
 
-    /// Physics scene: glides the camera's target towards the selected fish.
-    fn follow_selected(&mut self, settings: &Settings, frame_secs: f32) {
-        let physics = &settings.physics;
-        if settings.scene != Scene::Physics || !physics.follow {
-            self.following = false;
+    /// Renders the selected reef fish's retinal image every [`FISH_EYE_EVERY_SECS`].
+    fn refresh_fish_eye(&mut self, now_secs: f64, selected: Option<u32>) {
+        let Some(selected) = selected else {
+            self.fish_eye = None;
+            return;
+        };
+        let fresh = self
+            .fish_eye
+            .as_ref()
+            .is_some_and(|f| f.0 == selected && now_secs - f.3 < FISH_EYE_EVERY_SECS);
+        if fresh {
             return;
         }
-        let Some(selected) = physics.selected else {
+        let Some(retina) = self.lab.runs()[0]
+            .reef()
+            .and_then(|r| r.retina(selected as usize, FISH_EYE_SIZE_PX))
+        else {
+            self.fish_eye = None;
+            return;
+        };
+        let image = egui::ColorImage::from_rgba_unmultiplied(
+            [retina.size, retina.size],
+            &retina.to_rgba8(),
+        );
+        match &mut self.fish_eye {
+            Some((id, texture, brightness, at)) => {
+                texture.set(image, egui::TextureOptions::LINEAR);
+                (*id, *brightness, *at) = (selected, retina.mean_brightness, now_secs);
+            }
+            None => {
+                let texture =
+                    self.ctx
+                        .load_texture("fish_eye", image, egui::TextureOptions::LINEAR);
+                self.fish_eye = Some((selected, texture, retina.mean_brightness, now_secs));
+            }
+        }
+    }
+
+    /// Physics and reef scenes: glides the camera's target towards the selected
+    /// fish.
+    fn follow_selected(&mut self, settings: &Settings, frame_secs: f32) {
+        let follow = match settings.scene {
+            Scene::Physics => settings.physics.follow,
+            Scene::Reef => settings.reef.follow,
+            Scene::Aquarium | Scene::Boids => false,
+        };
+        let Some(selected) = selected_of(settings).filter(|_| follow) else {
+            self.following = false;
             return;
         };
         let run = &self.lab.runs()[0];
-        if run
-            .physics()
-            .is_none_or(|p| selected as usize >= p.animals().len())
-        {
+        let Some((_, centre, length)) = run
+            .selectable_animals(self.lab.draw_alpha())
+            .into_iter()
+            .find(|a| a.0 == selected as usize)
+        else {
             return;
-        }
-        let nodes = run.drawn_nodes_m(selected as usize, self.lab.draw_alpha());
-        let centre = nodes.iter().sum::<Vec3>() / nodes.len() as f32;
+        };
         let share = 1.0 - (-frame_secs.max(0.0) / FOLLOW_TIME_CONSTANT_SECS).exp();
         self.camera.target_m = self.camera.target_m.lerp(centre, share);
         // On starting to follow, come close enough to see the body bend: about eight
         // body lengths away (the teacher may zoom afterwards).
         if !self.following {
             self.following = true;
-            let length = run
-                .physics()
-                .map_or(0.5, |p| p.animals()[selected as usize].body_length_m());
             self.camera.distance_m = self.camera.distance_m.min(8.0 * length);
         }
         self.camera_is_default = false;
@@ -350,6 +405,13 @@ impl ShoalApp {
             &self.lab.runs()[0],
             self.lab.draw_alpha(),
         );
+        if settings.scene == Scene::Reef {
+            settings.reef.selected = picked;
+            if picked.is_none() {
+                settings.reef.follow = false;
+            }
+            return;
+        }
         let physics = &mut settings.physics;
         physics.selected = picked;
         if picked.is_none() {
@@ -377,7 +439,7 @@ impl ShoalApp {
         if settings.scene == Scene::Boids {
             self.rock_tool_input(&response, rect, aspect, side, settings);
         }
-        if settings.scene == Scene::Physics {
+        if matches!(settings.scene, Scene::Physics | Scene::Reef) {
             self.pick_input(&response, rect, settings);
         }
         self.camera_input(ui, &response, rect);
@@ -390,7 +452,7 @@ impl ShoalApp {
         let run = &self.lab.runs()[index];
         // The water animates with simulated time: pausing freezes the whole picture.
         let time_secs = run.time_secs() as f32;
-        self.frame_builders[index].set_selected(settings.physics.selected);
+        self.frame_builders[index].set_selected(selected_of(settings));
         let frame = self.frame_builders[index].build(
             run,
             self.lab.draw_alpha(),
@@ -432,6 +494,25 @@ impl ShoalApp {
                 body_overlay::draw_selection(&painter, rect, &self.camera, run, alpha, selected);
             }
             // Where the first animals are on screen, so browser tests can click one.
+            for (i, r) in
+                body_overlay::animal_screen_rects(rect, &self.camera, run, alpha, ANIMAL_RECTS_MAX)
+                    .into_iter()
+                    .enumerate()
+            {
+                if let Some(r) = r {
+                    self.widget_rects.insert(&format!("animal_{i}"), r);
+                }
+            }
+        }
+        if settings.scene == Scene::Reef {
+            let alpha = self.lab.draw_alpha();
+            reef_overlay::draw_water(&painter, rect, &self.camera, run, settings.reef.overlay);
+            if let Some(selected) = settings.reef.selected {
+                if settings.reef.show_vision {
+                    reef_overlay::draw_vision(&painter, rect, &self.camera, run, alpha, selected);
+                }
+                body_overlay::draw_selection(&painter, rect, &self.camera, run, alpha, selected);
+            }
             for (i, r) in
                 body_overlay::animal_screen_rects(rect, &self.camera, run, alpha, ANIMAL_RECTS_MAX)
                     .into_iter()
@@ -854,6 +935,31 @@ impl eframe::App for ShoalApp {
                         });
                 }
             }
+        }
+
+        if self.lab.settings().scene == Scene::Reef {
+            let selected = self.lab.settings().reef.selected;
+            self.refresh_fish_eye(now_secs, selected);
+            let fish_eye = self
+                .fish_eye
+                .as_ref()
+                .filter(|f| Some(f.0) == selected)
+                .map(|(_, texture, brightness, _)| reef_panel::FishEyeView {
+                    texture,
+                    mean_brightness: *brightness,
+                });
+            egui::Panel::bottom("reef_inspector")
+                .resizable(true)
+                .default_size(if selected.is_some() { 230.0 } else { 120.0 })
+                .show(ui, |ui| {
+                    reef_panel::reef_inspector_ui(
+                        ui,
+                        &self.lab.runs()[0],
+                        selected,
+                        fish_eye,
+                        &mut self.widget_rects,
+                    );
+                });
         }
 
         let mut settings = self.lab.settings().clone();

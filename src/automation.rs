@@ -159,6 +159,9 @@ pub struct StateReport {
     /// The physics scene: the selected fish, in detail.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub physics: Option<PhysicsReport>,
+    /// The reef scene: counts, the selected fish's mind, the latest events.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reef: Option<ReefReport>,
     /// Benchmark progress and results, in `?bench` mode only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bench: Option<crate::bench::BenchReport>,
@@ -242,6 +245,121 @@ impl PhysicsReport {
     }
 }
 
+/// The reef scene as `shoal.state().reef` reports it.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct ReefReport {
+    pub demo: crate::sim::reef_world::ReefScene,
+    pub body: crate::sim::reef_world::ReefBodyKind,
+    /// Living animals by kind.
+    pub predators: usize,
+    pub prey: usize,
+    pub pacifists: usize,
+    pub food: usize,
+    pub counts: crate::sim::reef_world::ReefCounts,
+    /// Courting pairs: male, female, phase.
+    pub pairs: Vec<(u32, u32, crate::sim::courtship::Phase)>,
+    /// The last 20 events, oldest first.
+    pub events: Vec<crate::sim::reef_world::ReefEvent>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub selected: Option<SelectedMindReport>,
+}
+
+/// The selected reef fish: body, habits and mind.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct SelectedMindReport {
+    pub index: usize,
+    pub name: String,
+    pub alive: bool,
+    pub habits: crate::sim::mind::Habits,
+    pub hunger: f32,
+    pub libido: f32,
+    pub fear: f32,
+    pub intention: crate::sim::mind::Intention,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub target: Option<crate::sim::mind::Target>,
+    /// The single-item memory: an intention interrupted by an avoidance.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub remembered: Option<crate::sim::mind::Focus>,
+    pub mouth_open: bool,
+    /// Mean brightness of its retinal image, [0, 1].
+    pub brightness: f32,
+    pub temperature_c: f32,
+    pub position_m: [f32; 3],
+    pub heading: [f32; 3],
+    pub speed_m_per_s: f32,
+    /// The velocity its behaviour routine asked for.
+    pub desired_velocity_m_per_s: [f32; 3],
+    /// Muscle body only: swim-MC speed fraction and the 12 muscles.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub swim_speed_fraction: Option<f32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub muscles: Option<[f32; crate::sim::body::MUSCLE_COUNT]>,
+}
+
+impl ReefReport {
+    fn new(lab: &Lab) -> Option<Self> {
+        use crate::sim::mind::FishKind;
+        use crate::sim::reef_world::ReefBody;
+        let reef = lab.runs()[0].reef()?;
+        let alive = |kind: FishKind| {
+            reef.animals()
+                .iter()
+                .filter(|a| a.alive && a.habits.kind == kind)
+                .count()
+        };
+        let selected = lab.settings().reef.selected.and_then(|i| {
+            let index = i as usize;
+            let a = reef.animals().get(index)?;
+            let (swim_speed_fraction, muscles) = match &a.body {
+                ReefBody::Physical(p) => (Some(p.motor().speed_fraction), Some(p.motor().muscles)),
+                ReefBody::Point(_) => (None, None),
+            };
+            Some(SelectedMindReport {
+                index,
+                name: a.name(index),
+                alive: a.alive,
+                habits: a.habits,
+                hunger: a.mental.hunger,
+                libido: a.mental.libido,
+                fear: a.mental.fear,
+                intention: a.focus.intention,
+                target: a.focus.target,
+                remembered: a.generator.memory,
+                mouth_open: a.mouth_open,
+                brightness: a.brightness,
+                temperature_c: a.temperature_c,
+                position_m: a.body.position_m().to_array(),
+                heading: a.body.heading().to_array(),
+                speed_m_per_s: a.body.velocity_m_per_s().length(),
+                desired_velocity_m_per_s: a.desired_m_per_s.to_array(),
+                swim_speed_fraction,
+                muscles,
+            })
+        });
+        let events = reef.events();
+        Some(Self {
+            demo: reef.config().scene,
+            body: reef.config().body,
+            predators: alive(FishKind::Predator),
+            prey: alive(FishKind::Prey),
+            pacifists: alive(FishKind::Pacifist),
+            food: reef.food().len(),
+            counts: reef.counts(),
+            pairs: reef
+                .pairs()
+                .iter()
+                .map(|p| (p.male, p.female, p.phase))
+                .collect(),
+            events: events
+                .iter()
+                .skip(events.len().saturating_sub(20))
+                .cloned()
+                .collect(),
+            selected,
+        })
+    }
+}
+
 /// The orbit camera, as `shoal.state().camera` reports it.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct CameraReport {
@@ -258,9 +376,11 @@ impl StateReport {
         Self {
             time_secs: run.time_secs(),
             steps: run.steps(),
-            fish_count: run
-                .physics()
-                .map_or(run.world().fish().len(), |p| p.fish_count()),
+            fish_count: match (run.physics(), run.reef()) {
+                (Some(p), _) => p.fish_count(),
+                (_, Some(r)) => r.alive_count(),
+                _ => run.world().fish().len(),
+            },
             tier,
             fps,
             steps_per_sec: lab.steps_per_sec(),
@@ -275,6 +395,7 @@ impl StateReport {
             notice: None,
             camera: None,
             physics: PhysicsReport::new(lab),
+            reef: ReefReport::new(lab),
             bench: None,
         }
     }

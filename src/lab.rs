@@ -12,6 +12,7 @@ use crate::clock::{FixedStepClock, RateMeter};
 use crate::metrics_history::{MetricsHistory, MetricsSample, SAMPLE_EVERY_STEPS};
 use crate::settings::{Scene, Settings, Side};
 use crate::sim::body::{MUSCLE_COUNT, NODE_COUNT};
+use crate::sim::reef_world::{ReefBody, ReefWorld};
 use crate::sim::{HandCommand, PhysicsConfig, PhysicsWorld, World, WorldConfig};
 
 /// Physics steps between two metrics samples: 5 × 0.055 s = 0.275 s, about the
@@ -38,6 +39,8 @@ pub struct Run {
     world: World,
     /// The muscle-driven fish of the physics scene.
     physics: Option<PhysicsWorld>,
+    /// The fish with minds of the reef scene.
+    reef: Option<ReefWorld>,
     /// Node positions of every physical animal before the last step.
     previous_nodes_m: Vec<[Vec3; NODE_COUNT]>,
     /// The selected physical fish's last seconds, and which fish it is.
@@ -60,10 +63,17 @@ impl Run {
         world.set_boids(boid_params(settings, side));
         let physics = (settings.scene == Scene::Physics)
             .then(|| PhysicsWorld::new(physics_config(settings, world.obstacles())));
+        let reef = (settings.scene == Scene::Reef)
+            .then(|| ReefWorld::new(settings.reef.config(settings.seed)));
+        if let Some(reef) = &reef {
+            // The boid world only holds the tank and the reef's rocks, for drawing.
+            world.set_obstacles(reef.obstacles().to_vec());
+        }
         let mut run = Self {
             side,
             world,
             physics,
+            reef,
             previous_nodes_m: Vec::new(),
             body_trace: VecDeque::new(),
             traced: None,
@@ -75,6 +85,7 @@ impl Run {
         };
         run.snapshot_positions();
         run.follow_physics(settings);
+        run.follow_reef(settings);
         run.sample_metrics();
         run
     }
@@ -84,43 +95,91 @@ impl Run {
         self.physics.as_ref()
     }
 
+    /// The fish with minds, in the reef scene.
+    pub fn reef(&self) -> Option<&ReefWorld> {
+        self.reef.as_ref()
+    }
+
     /// Simulated seconds since the run began.
     pub fn time_secs(&self) -> f64 {
-        match &self.physics {
-            Some(physics) => physics.time_secs(),
-            None => self.world.time_secs(),
+        match (&self.physics, &self.reef) {
+            (Some(physics), _) => physics.time_secs(),
+            (_, Some(reef)) => reef.time_secs(),
+            _ => self.world.time_secs(),
         }
     }
 
     /// Steps since the run began.
     pub fn steps(&self) -> u64 {
-        match &self.physics {
-            Some(physics) => physics.steps(),
-            None => self.world.steps(),
+        match (&self.physics, &self.reef) {
+            (Some(physics), _) => physics.steps(),
+            (_, Some(reef)) => reef.steps(),
+            _ => self.world.steps(),
         }
     }
 
-    /// Animals in the tank: fish (boids or physical), sharks and stingrays.
+    /// Animals in the tank: fish (boids, physical or with minds; eaten ones
+    /// not counted), sharks and stingrays.
     pub fn animal_count(&self) -> usize {
-        match &self.physics {
-            Some(physics) => physics.animals().len(),
-            None => {
-                self.world.fish().len() + self.world.sharks().len() + self.world.stingrays().len()
-            }
+        match (&self.physics, &self.reef) {
+            (Some(physics), _) => physics.animals().len(),
+            (_, Some(reef)) => reef.alive_count(),
+            _ => self.world.fish().len() + self.world.sharks().len() + self.world.stingrays().len(),
+        }
+    }
+
+    /// The nodes of muscle-driven animal `index` (physics scene, or a reef
+    /// animal with the muscle body).
+    fn nodes_now(&self, index: usize) -> Option<[Vec3; NODE_COUNT]> {
+        if let Some(physics) = &self.physics {
+            return physics.animals().get(index).map(|a| a.nodes_m());
+        }
+        match self.reef.as_ref()?.animals().get(index).map(|a| &a.body) {
+            Some(ReefBody::Physical(p)) => Some(p.nodes_m()),
+            _ => None,
         }
     }
 
     /// Where physical animal `index`'s nodes should be drawn: `alpha` of the way
     /// from their previous to their current positions (tank frame, metres).
     pub fn drawn_nodes_m(&self, index: usize, alpha: f32) -> [Vec3; NODE_COUNT] {
-        let Some(animal) = self.physics.as_ref().and_then(|p| p.animals().get(index)) else {
+        let Some(current) = self.nodes_now(index) else {
             return [Vec3::ZERO; NODE_COUNT];
         };
-        let current = animal.nodes_m();
         match self.previous_nodes_m.get(index) {
             Some(previous) => std::array::from_fn(|k| previous[k].lerp(current[k], alpha)),
             None => current,
         }
+    }
+
+    /// Every animal that can be selected (physics scene; living reef animals):
+    /// index, drawn centre (`alpha` of the way from the last step) and body
+    /// length.
+    pub fn selectable_animals(&self, alpha: f32) -> Vec<(usize, Vec3, f32)> {
+        let centre = |nodes: [Vec3; NODE_COUNT]| nodes.iter().sum::<Vec3>() / NODE_COUNT as f32;
+        if let Some(physics) = &self.physics {
+            return physics
+                .animals()
+                .iter()
+                .enumerate()
+                .map(|(i, a)| (i, centre(self.drawn_nodes_m(i, alpha)), a.body_length_m()))
+                .collect();
+        }
+        let Some(reef) = &self.reef else {
+            return Vec::new();
+        };
+        reef.animals()
+            .iter()
+            .enumerate()
+            .filter(|(_, a)| a.alive)
+            .map(|(i, a)| {
+                let c = match &a.body {
+                    ReefBody::Physical(_) => centre(self.drawn_nodes_m(i, alpha)),
+                    ReefBody::Point(_) => self.drawn_reef_m(i, alpha),
+                };
+                (i, c, a.body.body_length_m())
+            })
+            .collect()
     }
 
     /// The selected physical fish's muscles and speed over the last
@@ -154,6 +213,45 @@ impl Run {
     }
 
     fn step(&mut self, snapshot: bool) {
+        if let Some(reef) = &mut self.reef {
+            if snapshot {
+                self.previous_nodes_m.clear();
+                self.previous_positions_m.clear();
+                for a in reef.animals() {
+                    self.previous_positions_m.push(a.body.position_m());
+                    if let ReefBody::Physical(p) = &a.body {
+                        self.previous_nodes_m.push(p.nodes_m());
+                    } else {
+                        self.previous_nodes_m
+                            .push([a.body.position_m(); NODE_COUNT]);
+                    }
+                }
+            }
+            reef.step();
+            if let Some(ReefBody::Physical(p)) = self
+                .traced
+                .and_then(|i| reef.animals().get(i as usize))
+                .map(|a| &a.body)
+            {
+                let sample = BodySample {
+                    time_secs: reef.time_secs(),
+                    speed_m_per_s: p.point.velocity_m_per_s.length(),
+                    muscles: p.motor().muscles,
+                };
+                self.body_trace.push_back(sample);
+                while self
+                    .body_trace
+                    .front()
+                    .is_some_and(|s| s.time_secs < sample.time_secs - BODY_TRACE_SECS)
+                {
+                    self.body_trace.pop_front();
+                }
+            }
+            if reef.steps().is_multiple_of(PHYSICS_SAMPLE_EVERY_STEPS) {
+                self.sample_metrics();
+            }
+            return;
+        }
         if let Some(physics) = &mut self.physics {
             if snapshot {
                 self.previous_nodes_m.clear();
@@ -193,6 +291,15 @@ impl Run {
     /// Records the world's latest metrics (computed by the simulation every step).
     /// Force shares are over the last second, so a mode switch shows at once.
     fn sample_metrics(&mut self) {
+        if let Some(reef) = &self.reef {
+            self.history.push(MetricsSample::new(
+                reef.time_secs(),
+                &reef.school_metrics(),
+                [0.0; 5],
+                u64::from(reef.counts().prey_eaten),
+            ));
+            return;
+        }
         if let Some(physics) = &self.physics {
             self.history.push(MetricsSample::new(
                 physics.time_secs(),
@@ -241,6 +348,15 @@ impl Run {
     /// its current simulated position.
     pub fn drawn_position_m(&self, index: usize, alpha: f32) -> Vec3 {
         self.interpolated(index, self.world.fish()[index].position_m, alpha)
+    }
+
+    /// Where reef animal `index`'s centre should be drawn (see
+    /// [`Self::drawn_position_m`]).
+    pub fn drawn_reef_m(&self, index: usize, alpha: f32) -> Vec3 {
+        match self.reef.as_ref().and_then(|r| r.animals().get(index)) {
+            Some(a) => self.interpolated(index, a.body.position_m(), alpha),
+            None => Vec3::ZERO,
+        }
     }
 
     /// Where shark `index` should be drawn (see [`Self::drawn_position_m`]).
@@ -296,8 +412,30 @@ impl Run {
         }
     }
 
+    /// Follows the reef scene's live settings (water) and the selected fish.
+    fn follow_reef(&mut self, settings: &Settings) {
+        let Some(reef) = &mut self.reef else {
+            return;
+        };
+        let wanted = &settings.reef;
+        if reef.config().visibility_m != wanted.visibility_m {
+            reef.set_visibility(wanted.visibility_m);
+        }
+        if reef.config().current_m_per_s != wanted.current_m_per_s {
+            reef.set_current(wanted.current_m_per_s);
+        }
+        if self.traced != wanted.selected {
+            self.traced = wanted.selected;
+            self.body_trace.clear();
+        }
+    }
+
     /// Follows new settings for this tank without restarting where possible.
     fn follow(&mut self, settings: &Settings) {
+        if self.reef.is_some() {
+            self.follow_reef(settings);
+            return;
+        }
         if self.physics.is_some() {
             self.follow_physics(settings);
             return;
@@ -421,6 +559,8 @@ impl Lab {
         let before = std::mem::replace(&mut self.settings, new);
         let rebuild = before.seed != self.settings.seed
             || before.scene != self.settings.scene
+            || (self.settings.scene == Scene::Reef
+                && before.reef.rebuild_key() != self.settings.reef.rebuild_key())
             || self.runs.len() != self.wanted_runs();
         let unpaused = before.paused && !self.settings.paused;
         if rebuild {
@@ -578,6 +718,7 @@ impl Lab {
 fn step_secs(scene: Scene) -> f64 {
     match scene {
         Scene::Physics => f64::from(crate::sim::body::BodyParams::default().dt_secs),
+        Scene::Reef => f64::from(crate::sim::reef_world::POINT_BODY_DT_SECS),
         Scene::Aquarium | Scene::Boids => f64::from(World::DT_SECS),
     }
 }
@@ -759,6 +900,62 @@ mod tests {
         let drawn = run.drawn_nodes_m(2, 0.5);
         let now = run.physics().unwrap().animals()[2].nodes_m();
         assert!(drawn.iter().zip(now).all(|(a, b)| a.distance(b) < 0.1));
+    }
+
+    #[test]
+    fn the_reef_scene_runs_minds_and_rebuilds_only_for_demo_body_and_counts() {
+        use crate::sim::reef_world::{ReefBodyKind, ReefScene};
+        let settings = Settings {
+            scene: Scene::Reef,
+            ..Settings::default()
+        };
+        let mut lab = Lab::new(settings);
+        let reef = lab.runs()[0].reef().expect("a reef");
+        assert_eq!(reef.config().scene, ReefScene::Reef);
+        assert_eq!(
+            lab.world().obstacles(),
+            reef.obstacles(),
+            "the reef's rocks are drawn"
+        );
+        let animals = reef.animals().len();
+        assert_eq!(lab.runs()[0].animal_count(), animals);
+        lab.step(20);
+        assert_eq!(lab.runs()[0].steps(), 20);
+        assert!((lab.step_secs() - 0.055).abs() < 1e-9);
+        // Live: visibility, current, selection. Same run.
+        let mut s = lab.settings().clone();
+        s.reef.visibility_m = 3.0;
+        s.reef.selected = Some(0);
+        lab.apply_settings(s);
+        assert_eq!(lab.runs()[0].steps(), 20);
+        assert_eq!(lab.runs()[0].reef().unwrap().config().visibility_m, 3.0);
+        lab.step(5);
+        assert_eq!(
+            lab.runs()[0].body_trace().len(),
+            5,
+            "muscles of the selected fish"
+        );
+        assert_eq!(lab.runs()[0].selectable_animals(1.0).len(), animals);
+        // A new demo, body or count: a new reef.
+        let mut s = lab.settings().clone();
+        s.reef.demo = ReefScene::Courtship;
+        s.reef.body = ReefBodyKind::PointMass;
+        lab.apply_settings(s);
+        let reef = lab.runs()[0].reef().unwrap();
+        assert_eq!(lab.runs()[0].steps(), 0);
+        assert_eq!(reef.animals().len(), 3);
+        let mut s = lab.settings().clone();
+        s.reef.demo = ReefScene::PredatorAndSchool;
+        s.reef.prey_count = Some(30);
+        lab.apply_settings(s);
+        assert_eq!(lab.runs()[0].reef().unwrap().animals().len(), 31);
+        // Drawn positions of point-mass fish lie between the last two states.
+        lab.step(3);
+        let run = &lab.runs()[0];
+        for (i, c, _) in run.selectable_animals(0.5) {
+            let now = run.reef().unwrap().animals()[i].body.position_m();
+            assert!(c.distance(now) < 0.1);
+        }
     }
 
     #[test]

@@ -14,6 +14,7 @@ pub mod clock;
 pub mod lab;
 pub mod metrics_history;
 pub mod physics_settings;
+pub mod reef_settings;
 pub mod render;
 pub mod settings;
 pub mod share_link;

@@ -8,10 +8,11 @@
 use serde::{Deserialize, Serialize};
 
 use crate::physics_settings::PhysicsSettings;
+use crate::reef_settings::ReefSettings;
 use crate::sim::Tank;
 use crate::tank_settings::{Preset, TankSettings};
 
-/// The scenes Shoal can show. Later issues add more (physical fish, reef).
+/// The scenes Shoal can show.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Scene {
@@ -24,10 +25,13 @@ pub enum Scene {
     /// Muscle-driven fish (Tu & Terzopoulos §3): spring–mass bodies that swim
     /// because their muscles contract against the water.
     Physics,
+    /// Fish with minds (Tu & Terzopoulos §5–7): they see, get hungry, flee, school,
+    /// hunt and court.
+    Reef,
 }
 
 impl Scene {
-    pub const ALL: [Self; 3] = [Self::Aquarium, Self::Boids, Self::Physics];
+    pub const ALL: [Self; 4] = [Self::Aquarium, Self::Boids, Self::Physics, Self::Reef];
 
     /// The name used in the automation API and share links.
     pub fn name(self) -> &'static str {
@@ -35,6 +39,7 @@ impl Scene {
             Self::Aquarium => "aquarium",
             Self::Boids => "boids",
             Self::Physics => "physics",
+            Self::Reef => "reef",
         }
     }
 
@@ -44,6 +49,7 @@ impl Scene {
             Self::Aquarium => "Aquarium",
             Self::Boids => "Schooling lab",
             Self::Physics => "Physics fish",
+            Self::Reef => "Reef",
         }
     }
 
@@ -58,6 +64,10 @@ impl Scene {
             Self::Physics => {
                 "Each fish is a body of 23 masses and 91 springs. Twelve springs are muscles: \
                  they pull the tail from side to side, the water pushes back, and the fish swims."
+            }
+            Self::Reef => {
+                "Fish that see, get hungry, get scared and fall in love. Each one decides what \
+                 to do next from what it sees and how it feels. Click a fish to look inside its head."
             }
         }
     }
@@ -120,6 +130,9 @@ pub struct Settings {
     /// get the defaults.
     #[serde(default)]
     pub physics: PhysicsSettings,
+    /// The reef scene (fish with minds). Links made before it existed lack it.
+    #[serde(default)]
+    pub reef: ReefSettings,
 }
 
 impl Default for Settings {
@@ -136,6 +149,7 @@ impl Default for Settings {
             left: TankSettings::with_preset(Preset::Individual),
             right: TankSettings::with_preset(Preset::Group),
             physics: PhysicsSettings::default(),
+            reef: ReefSettings::default(),
         }
     }
 }
@@ -206,6 +220,9 @@ impl Settings {
         if let Err((key, reason)) = self.physics.validate("physics.") {
             return invalid(&key, reason);
         }
+        if let Err((key, reason)) = self.reef.validate("reef.") {
+            return invalid(&key, reason);
+        }
         Ok(())
     }
 
@@ -221,6 +238,7 @@ impl Settings {
         self.left.clamp(&tank);
         self.right.clamp(&tank);
         self.physics.clamp();
+        self.reef.clamp();
     }
 
     /// Makes each tank's preset label true after an edit (see

@@ -121,6 +121,32 @@ mod tests {
             left: random_tank(rng),
             right: random_tank(rng),
             physics: random_physics(rng),
+            reef: random_reef(rng),
+        }
+    }
+
+    fn random_reef(rng: &mut ChaCha8Rng) -> crate::reef_settings::ReefSettings {
+        use crate::reef_settings::*;
+        use crate::sim::reef_world::{ReefBodyKind, ReefScene};
+        ReefSettings {
+            demo: ReefScene::ALL[rng.random_range(0..ReefScene::ALL.len())],
+            body: if rng.random_bool(0.5) {
+                ReefBodyKind::Physical
+            } else {
+                ReefBodyKind::PointMass
+            },
+            prey_count: rng
+                .random_bool(0.5)
+                .then(|| rng.random_range(0..=REEF_PREY_MAX)),
+            food_count: rng
+                .random_bool(0.5)
+                .then(|| rng.random_range(0..=REEF_FOOD_MAX)),
+            visibility_m: rng.random_range(VISIBILITY_MIN_M..=VISIBILITY_MAX_M),
+            current_m_per_s: rng.random_range(0.0..=REEF_CURRENT_MAX_M_PER_S),
+            selected: rng.random_bool(0.5).then(|| rng.random_range(0..40)),
+            follow: rng.random_bool(0.5),
+            show_vision: rng.random_bool(0.5),
+            overlay: ReefOverlay::ALL[rng.random_range(0..3)],
         }
     }
 

@@ -22,6 +22,8 @@ use super::orbit_camera::OrbitCamera;
 use super::scene_renderer::{FishInstance, SceneCallback, SceneUniforms, StaticScene, ViewCache};
 use crate::lab::Run;
 use crate::sim::BodySpecies;
+use crate::sim::mind::FishKind;
+use crate::sim::reef_world::{ReefBody, ReefWorld};
 
 /// Fish drawn shorter than this (physical pixels, snout to tail root) use the
 /// low-poly mesh. Chosen by eye: below about 30 pixels the two meshes are hard to
@@ -79,18 +81,37 @@ fn build_bodies(
 ) {
     out.vertices.clear();
     out.indices.clear();
-    let Some(physics) = run.physics() else {
+    // (index, species, hue) of every living muscle-driven animal.
+    let animals: Vec<(usize, BodySpecies, f32)> = if let Some(physics) = run.physics() {
+        physics
+            .animals()
+            .iter()
+            .enumerate()
+            .map(|(i, a)| (i, a.species, a.hue))
+            .collect()
+    } else if let Some(reef) = run.reef() {
+        append_reef_scenery(reef, out);
+        reef.animals()
+            .iter()
+            .enumerate()
+            .filter(|(_, a)| a.alive)
+            .filter_map(|(i, a)| match &a.body {
+                ReefBody::Physical(p) => Some((i, p.species, a.hue)),
+                ReefBody::Point(_) => None,
+            })
+            .collect()
+    } else {
         return;
     };
     let skins = skins.get_or_insert_with(|| Skins {
         fish: BodySkin::new(BodyShape::Fish),
         shark: BodySkin::new(BodyShape::Shark),
     });
-    for (i, animal) in physics.animals().iter().enumerate() {
+    for (i, species, hue) in animals {
         let nodes = run.drawn_nodes_m(i, alpha);
-        let (skin, look) = match animal.species {
-            BodySpecies::Fish => (&skins.fish, BodyLook::fish(livery(animal.hue))),
-            BodySpecies::Shark => (&skins.shark, BodyLook::shark(shark_livery(animal.hue))),
+        let (skin, look) = match species {
+            BodySpecies::Fish => (&skins.fish, BodyLook::fish(livery(hue))),
+            BodySpecies::Shark => (&skins.shark, BodyLook::shark(shark_livery(hue))),
         };
         let look = if selected == Some(i) {
             look.highlighted(SELECTED_HIGHLIGHT)
@@ -100,6 +121,29 @@ fn build_bodies(
         skin.append_deformed(&nodes, &look, out);
     }
 }
+
+/// Plankton and seaweed of the reef, lit with their vertex colours.
+fn append_reef_scenery(reef: &ReefWorld, out: &mut Mesh) {
+    let food: Vec<Vec3> = reef.food().iter().map(|f| f.position_m).collect();
+    mesh::append_particles(out, &food, PLANKTON_DRAWN_RADIUS_M, mesh::FOOD_RGB);
+    for (k, weed) in reef.seaweed().iter().enumerate() {
+        let angle = k as f32 * 2.4;
+        let across = Vec3::new(angle.cos(), 0.0, angle.sin());
+        mesh::append_ribbon(
+            out,
+            &weed.nodes_m,
+            SEAWEED_WIDTH_M,
+            across,
+            mesh::SEAWEED_RGB,
+        );
+    }
+}
+
+/// Drawn radius of a plankton particle, metres (larger than life, 4 cm, so a
+/// class sees it from across the tank).
+const PLANKTON_DRAWN_RADIUS_M: f32 = 0.04;
+/// Width of a seaweed blade, metres.
+const SEAWEED_WIDTH_M: f32 = 0.12;
 
 impl FrameBuilder {
     /// Highlights physical animal `index` (the selected fish) from the next frame on.
@@ -142,8 +186,57 @@ impl FrameBuilder {
             }
         };
 
-        // Near fish from the front of the list, far ones from the back.
         let eye = camera.eye_m();
+        if let Some(reef) = run.reef() {
+            let (fish, sharks) = (
+                Arc::make_mut(&mut view.fish),
+                Arc::make_mut(&mut view.sharks),
+            );
+            fish.clear();
+            sharks.clear();
+            for (i, a) in reef.animals().iter().enumerate() {
+                let ReefBody::Point(f) = &a.body else {
+                    continue;
+                };
+                if !a.alive {
+                    continue;
+                }
+                let position = run.drawn_reef_m(i, alpha);
+                if a.habits.kind == FishKind::Predator {
+                    sharks.push(instance(f, position, shark_livery(a.hue).rgba()));
+                } else {
+                    fish.push(instance(f, position, livery(a.hue).rgba()));
+                }
+            }
+            let detailed = fish.len();
+            Arc::make_mut(&mut view.rays).clear();
+            build_bodies(
+                &mut self.skins,
+                self.selected,
+                run,
+                alpha,
+                Arc::make_mut(&mut view.bodies),
+            );
+            let aspect = size_px[0] as f32 / size_px[1].max(1) as f32;
+            return SceneCallback {
+                view_id,
+                uniforms: SceneUniforms::new(
+                    camera.world_to_clip(aspect),
+                    eye,
+                    tank.min_m,
+                    tank.max_m,
+                    time_secs,
+                ),
+                fish: Arc::clone(&view.fish),
+                fish_detailed: detailed,
+                sharks: Arc::clone(&view.sharks),
+                rays: Arc::clone(&view.rays),
+                statics,
+                bodies: Arc::clone(&view.bodies),
+                size_px,
+            };
+        }
+        // Near fish from the front of the list, far ones from the back.
         let focal_px = size_px[1] as f32 / (2.0 * (camera.fov_y_rad * 0.5).tan());
         let lod_below = FISH_LOD_BELOW_PX / focal_px.max(1e-3);
         let fish = Arc::make_mut(&mut view.fish);

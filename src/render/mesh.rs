@@ -782,6 +782,80 @@ pub fn tank_frame(tank: &Tank) -> Mesh {
     mesh
 }
 
+/// Colour of plankton particles (linear RGB): pale gold, easy to spot.
+pub const FOOD_RGB: [f32; 3] = [0.98, 0.88, 0.45];
+/// Colour of seaweed (linear RGB).
+pub const SEAWEED_RGB: [f32; 3] = [0.16, 0.5, 0.2];
+
+/// Appends one small octahedron of radius `radius_m` per particle (plankton),
+/// lit with the vertex colour.
+pub fn append_particles(mesh: &mut Mesh, positions_m: &[Vec3], radius_m: f32, rgb: [f32; 3]) {
+    let color = pack_rgb(rgb);
+    let axes = [Vec3::X, -Vec3::X, Vec3::Y, -Vec3::Y, Vec3::Z, -Vec3::Z];
+    // The eight faces as (x, y, z) sign choices, wound outwards.
+    let faces = [
+        (0, 2, 4),
+        (2, 1, 4),
+        (1, 3, 4),
+        (3, 0, 4),
+        (2, 0, 5),
+        (1, 2, 5),
+        (3, 1, 5),
+        (0, 3, 5),
+    ];
+    for &p in positions_m {
+        if !p.is_finite() {
+            continue;
+        }
+        for &(a, b, c) in &faces {
+            let normal = (axes[a] + axes[b] + axes[c]).normalize_or_zero();
+            let ia = mesh.push(p + axes[a] * radius_m, normal, Material::Plain, color);
+            let ib = mesh.push(p + axes[b] * radius_m, normal, Material::Plain, color);
+            let ic = mesh.push(p + axes[c] * radius_m, normal, Material::Plain, color);
+            mesh.triangle(ia, ib, ic);
+        }
+    }
+}
+
+/// Appends a double-sided ribbon `width_m` wide along `spine_m` (a seaweed
+/// strand, root first), narrowing to half its width at the tip, facing
+/// `across` (horizontal, unit).
+pub fn append_ribbon(mesh: &mut Mesh, spine_m: &[Vec3], width_m: f32, across: Vec3, rgb: [f32; 3]) {
+    if spine_m.len() < 2 || !spine_m.iter().all(|p| p.is_finite()) {
+        return;
+    }
+    let n = spine_m.len();
+    for side in [1.0f32, -1.0] {
+        let base = mesh.vertices.len() as u32;
+        for (k, &p) in spine_m.iter().enumerate() {
+            let along =
+                (spine_m[(k + 1).min(n - 1)] - spine_m[k.saturating_sub(1)]).normalize_or(Vec3::Y);
+            let normal = along.cross(across).normalize_or(Vec3::Z) * side;
+            let half = 0.5 * width_m * (1.0 - 0.5 * k as f32 / (n - 1) as f32);
+            // Darker at the root, lighter towards the sunlit tip.
+            let t = k as f32 / (n - 1) as f32;
+            let color = pack_rgb(rgb.map(|c| c * (0.7 + 0.5 * t)));
+            mesh.push(p - across * half, normal, Material::Plain, color);
+            mesh.push(p + across * half, normal, Material::Plain, color);
+        }
+        for k in 0..(n as u32 - 1) {
+            let (a, b, c, d) = (
+                base + 2 * k,
+                base + 2 * k + 1,
+                base + 2 * k + 2,
+                base + 2 * k + 3,
+            );
+            if side > 0.0 {
+                mesh.triangle(a, b, d);
+                mesh.triangle(a, d, c);
+            } else {
+                mesh.triangle(a, d, b);
+                mesh.triangle(a, c, d);
+            }
+        }
+    }
+}
+
 /// Rocks and pillars for a world's obstacles. `seed` varies the rock shapes.
 pub fn obstacles(obstacles: &[Obstacle], seed: u64) -> Mesh {
     let mut mesh = Mesh::default();

@@ -139,6 +139,26 @@ impl ReefScene {
         }
     }
 
+    /// Prey fish in this scene unless the teacher chose a number.
+    pub fn default_prey_count(self) -> usize {
+        match self {
+            Self::Reef => 10,
+            Self::PredatorAndSchool => 14,
+            Self::SchoolMeetsObstacle => 16,
+            Self::Courtship | Self::Feeding => 0,
+        }
+    }
+
+    /// Plankton kept in the water unless the teacher chose a number.
+    pub fn default_food_count(self) -> usize {
+        match self {
+            Self::Reef => 25,
+            Self::Courtship => 6,
+            Self::Feeding => 30,
+            Self::PredatorAndSchool | Self::SchoolMeetsObstacle => 0,
+        }
+    }
+
     /// One sentence for the UI.
     pub fn explanation(self) -> &'static str {
         match self {
@@ -165,6 +185,8 @@ pub struct ReefConfig {
     pub current_m_per_s: f32,
     /// Plankton particles kept in the water (the scene's default if `None`).
     pub food_count: Option<usize>,
+    /// Prey fish in the scenes that have a school (the scene's default if `None`).
+    pub prey_count: Option<usize>,
 }
 
 impl Default for ReefConfig {
@@ -176,6 +198,7 @@ impl Default for ReefConfig {
             visibility_m: 6.0,
             current_m_per_s: 0.03,
             food_count: None,
+            prey_count: None,
         }
     }
 }
@@ -520,6 +543,40 @@ impl ReefWorld {
         self.animals.iter().filter(|a| a.alive).count()
     }
 
+    /// Sets V_r, metres (clamped to 1–20).
+    pub fn set_visibility(&mut self, visibility_m: f32) {
+        if visibility_m.is_finite() {
+            self.config.visibility_m = visibility_m.clamp(1.0, 20.0);
+        }
+    }
+
+    /// Sets the current's strength, m/s.
+    pub fn set_current(&mut self, strength_m_per_s: f32) {
+        self.config.current_m_per_s = strength_m_per_s;
+        self.current = WaterCurrent::new(self.tank, strength_m_per_s);
+    }
+
+    /// The prey school's order parameters (living prey only).
+    pub fn school_metrics(&self) -> super::school_metrics::SchoolMetrics {
+        let fish: Vec<Fish> = self
+            .animals
+            .iter()
+            .filter(|a| a.alive && a.habits.kind == FishKind::Prey)
+            .map(|a| {
+                let mut f = Fish::new(
+                    a.body.position_m(),
+                    a.body.velocity_m_per_s(),
+                    a.body.body_length_m(),
+                    a.hue,
+                );
+                f.velocity_m_per_s =
+                    a.body.heading() * a.body.velocity_m_per_s().length().max(1e-3);
+                f
+            })
+            .collect();
+        super::school_metrics::measure(&fish, self.tank.min_m, self.tank.max_m)
+    }
+
     /// Mutable access for tests and teachers' edits (habits, mental state).
     pub fn animal_mut(&mut self, i: usize) -> Option<&mut ReefAnimal> {
         self.animals.get_mut(i)
@@ -612,12 +669,11 @@ impl ReefWorld {
                         height_m: 2.2,
                     },
                     Obstacle::Rock {
-                        center_m: Vec3::new(1.0, 0.1, -2.5),
+                        center_m: Vec3::new(1.0, 0.1, -2.2),
                         radius_m: 0.7,
                     },
                 ];
-                self.food_target = 25;
-                for k in 0..10 {
+                for k in 0..self.config.prey_count.unwrap_or(scene.default_prey_count()) {
                     let p = Vec3::new(-3.5, 2.5, 1.5) + self.jitter(1.2);
                     self.spawn(p, Vec3::X, prey_habits(k), 0.45);
                 }
@@ -652,10 +708,10 @@ impl ReefWorld {
             }
             ReefScene::PredatorAndSchool => {
                 self.obstacles = vec![Obstacle::Rock {
-                    center_m: Vec3::new(0.0, 0.1, 2.5),
+                    center_m: Vec3::new(0.0, 0.1, 2.0),
                     radius_m: 0.8,
                 }];
-                for k in 0..14 {
+                for k in 0..self.config.prey_count.unwrap_or(scene.default_prey_count()) {
                     let p = Vec3::new(-2.5, 2.3, 0.0) + self.jitter(1.3);
                     self.spawn(p, Vec3::Z, prey_habits(k), 0.45);
                 }
@@ -663,7 +719,6 @@ impl ReefWorld {
                 shark.mental.digestion_rate_per_step =
                     super::mind::mental_state::RAVENOUS_DIGESTION_RATE;
                 self.spawn(Vec3::new(4.0, 2.3, -2.0), -Vec3::X, shark, 1.0);
-                self.food_target = 0;
                 self.plant_seaweed(4);
             }
             ReefScene::Courtship => {
@@ -676,7 +731,6 @@ impl ReefWorld {
                     let p = c + Vec3::new(-2.5 + 5.0 * k as f32, 0.0, 1.5);
                     self.spawn(p, -Vec3::Z, male, length);
                 }
-                self.food_target = 6;
                 self.plant_seaweed(5);
             }
             ReefScene::Feeding => {
@@ -688,7 +742,6 @@ impl ReefWorld {
                     let p = self.random_free_point(1.0);
                     self.spawn(p, Vec3::X, h, 0.45);
                 }
-                self.food_target = 30;
                 self.plant_seaweed(6);
             }
             ReefScene::SchoolMeetsObstacle => {
@@ -697,13 +750,13 @@ impl ReefWorld {
                     radius_m: 0.6,
                     height_m: t.size_m().y - super::obstacle::SURFACE_CLEARANCE_M,
                 }];
-                for k in 0..16 {
+                for k in 0..self.config.prey_count.unwrap_or(scene.default_prey_count()) {
                     let p = Vec3::new(-4.5, 2.2, 0.0) + self.jitter(1.0);
                     self.spawn(p, Vec3::X, prey_habits(k), 0.45);
                 }
-                self.food_target = 0;
             }
         }
+        self.food_target = scene.default_food_count();
         // Everyone starts fed and content with a random clock, so the urges
         // do not all rise in step.
         let fed_for: Vec<f32> = (0..self.animals.len())
@@ -1874,6 +1927,31 @@ mod tests {
     fn run(w: &mut ReefWorld, secs: f32) {
         for _ in 0..(secs / w.dt_secs()).round() as u32 {
             w.step();
+        }
+    }
+
+    #[test]
+    fn every_demo_has_valid_rocks_and_starts_everyone_in_the_water() {
+        for scene in ReefScene::ALL {
+            let w = reef(scene, ReefBodyKind::PointMass, 1);
+            for o in w.obstacles() {
+                assert_eq!(o.validate(w.tank()), Ok(()), "{scene:?}");
+            }
+            for a in w.animals() {
+                let p = a.body.position_m();
+                assert!(w.tank().contains(p, 0.2), "{scene:?} {p}");
+                assert!(
+                    w.obstacles().iter().all(|o| o.signed_distance_m(p) > 0.0),
+                    "{scene:?}"
+                );
+            }
+            let prey = w
+                .animals()
+                .iter()
+                .filter(|a| a.habits.kind == FishKind::Prey)
+                .count();
+            assert_eq!(prey, scene.default_prey_count(), "{scene:?}");
+            assert_eq!(w.food().len(), scene.default_food_count(), "{scene:?}");
         }
     }
 

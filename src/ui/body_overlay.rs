@@ -61,22 +61,14 @@ impl Projector<'_> {
     }
 }
 
-/// Where physical animal `i` is drawn: its middle in the tank, its middle on screen
+/// Where an animal whose middle is at `centre` is drawn: its middle on screen
 /// and half its length on screen (at least 4 points); `None` behind the camera.
-fn screen_disc(
-    project: &Projector,
-    run: &Run,
-    alpha: f32,
-    i: usize,
-    body_length_m: f32,
-) -> Option<(Vec3, egui::Pos2, f32)> {
-    let nodes = run.drawn_nodes_m(i, alpha);
-    let centre = nodes.iter().sum::<Vec3>() / NODE_COUNT as f32;
+fn screen_disc(project: &Projector, centre: Vec3, body_length_m: f32) -> Option<(egui::Pos2, f32)> {
     let c = project.point(centre)?;
     let half = project
         .point(centre + camera_right(project.camera) * 0.5 * body_length_m)
         .map_or(4.0, |e| c.distance(e).max(4.0));
-    Some((centre, c, half))
+    Some((c, half))
 }
 
 /// Which animals to draw: the selected one, or the first [`SKELETONS_MAX`].
@@ -210,16 +202,15 @@ pub fn draw_selection(
     alpha: f32,
     selected: u32,
 ) {
-    let Some(physics) = run.physics() else {
-        return;
-    };
-    let i = selected as usize;
-    let Some(animal) = physics.animals().get(i) else {
+    let Some((_, centre, length)) = run
+        .selectable_animals(alpha)
+        .into_iter()
+        .find(|a| a.0 == selected as usize)
+    else {
         return;
     };
     let project = Projector::new(camera, rect);
-    let Some((_, c, half)) = screen_disc(&project, run, alpha, i, 1.2 * animal.body_length_m())
-    else {
+    let Some((c, half)) = screen_disc(&project, centre, 1.2 * length) else {
         return;
     };
     let radius = half.max(10.0);
@@ -235,8 +226,9 @@ fn camera_right(camera: &OrbitCamera) -> Vec3 {
     forward.cross(Vec3::Y).normalize_or(Vec3::X)
 }
 
-/// The squares on screen of the first `max` physical animals (centred on each
-/// one's middle, as wide as its drawn length), `None` when behind the camera.
+/// The squares on screen of the selectable animals with index below `max`
+/// (centred on each one's middle, as wide as its drawn length), by index;
+/// `None` when behind the camera or gone.
 pub fn animal_screen_rects(
     rect: egui::Rect,
     camera: &OrbitCamera,
@@ -244,27 +236,21 @@ pub fn animal_screen_rects(
     alpha: f32,
     max: usize,
 ) -> Vec<Option<egui::Rect>> {
-    let Some(physics) = run.physics() else {
-        return Vec::new();
-    };
     let project = Projector::new(camera, rect);
-    physics
-        .animals()
-        .iter()
-        .enumerate()
-        .take(max)
-        .map(|(i, animal)| {
-            let (_, c, half) = screen_disc(&project, run, alpha, i, animal.body_length_m())?;
-            Some(egui::Rect::from_center_size(
-                c,
-                egui::vec2(2.0 * half, 2.0 * half),
-            ))
-        })
-        .collect()
+    let mut rects = Vec::new();
+    for (i, centre, length) in run.selectable_animals(alpha) {
+        if i >= max {
+            break;
+        }
+        rects.resize(i + 1, None);
+        rects[i] = screen_disc(&project, centre, length)
+            .map(|(c, half)| egui::Rect::from_center_size(c, egui::vec2(2.0 * half, 2.0 * half)));
+    }
+    rects
 }
 
-/// The physical animal drawn nearest to `pointer` (within its drawn half-length
-/// plus a little slack), the nearest to the camera first when several overlap.
+/// The animal drawn nearest to `pointer` (within its drawn half-length plus a
+/// little slack), the nearest to the camera first when several overlap.
 pub fn pick_animal(
     pointer: egui::Pos2,
     rect: egui::Rect,
@@ -272,15 +258,12 @@ pub fn pick_animal(
     run: &Run,
     alpha: f32,
 ) -> Option<u32> {
-    let physics = run.physics()?;
     let project = Projector::new(camera, rect);
     let eye = camera.eye_m();
-    physics
-        .animals()
-        .iter()
-        .enumerate()
-        .filter_map(|(i, animal)| {
-            let (centre, c, half) = screen_disc(&project, run, alpha, i, animal.body_length_m())?;
+    run.selectable_animals(alpha)
+        .into_iter()
+        .filter_map(|(i, centre, length)| {
+            let (c, half) = screen_disc(&project, centre, length)?;
             (c.distance(pointer) <= half + PICK_SLACK_PT)
                 .then_some((i as u32, centre.distance(eye)))
         })

@@ -219,6 +219,13 @@ pub fn control_panel_ui(
             rects,
         ));
     }
+    if settings.scene == Scene::Reef {
+        actions.extend(super::reef_panel::reef_controls_ui(
+            ui,
+            &mut settings.reef,
+            rects,
+        ));
+    }
 
     ui.separator();
     ui.label(egui::RichText::new("Share").strong());

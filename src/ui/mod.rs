@@ -5,6 +5,8 @@ pub mod body_overlay;
 mod control_panel;
 mod metrics_panel;
 mod physics_panel;
+pub mod reef_overlay;
+pub mod reef_panel;
 mod status_line;
 mod tank_panel;
 

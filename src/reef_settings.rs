@@ -1,0 +1,232 @@
+//! The settings of the "Reef" scene (`Settings::reef`): fish with minds (Tu &
+//! Terzopoulos §5–7). Which demo, which body carries the minds, the water, the
+//! selected fish and the overlays. Field names are the automation API's names
+//! (`shoal.set({reef: {demo: "courtship"}})`).
+
+use serde::{Deserialize, Serialize};
+
+use crate::sim::reef_world::{MAX_FOOD, MAX_REEF_ANIMALS, ReefBodyKind, ReefConfig, ReefScene};
+
+/// Most prey fish the slider offers.
+pub const REEF_PREY_MAX: u32 = 150;
+/// Most plankton particles the slider offers.
+pub const REEF_FOOD_MAX: u32 = MAX_FOOD as u32;
+/// Water visibility V_r range, metres.
+pub const VISIBILITY_MIN_M: f32 = 1.0;
+pub const VISIBILITY_MAX_M: f32 = 12.0;
+/// Strongest current, m/s (as in the physics scene).
+pub const REEF_CURRENT_MAX_M_PER_S: f32 = 0.3;
+
+/// A colour overlay of the water.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ReefOverlay {
+    #[default]
+    None,
+    /// Brightness: bright near the sunlit surface, dark deep and in the shade.
+    Light,
+    /// Temperature: warm near the vent, cold deep at the far end.
+    Temperature,
+}
+
+impl ReefOverlay {
+    pub const ALL: [Self; 3] = [Self::None, Self::Light, Self::Temperature];
+
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::None => "None",
+            Self::Light => "Light",
+            Self::Temperature => "Temperature",
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct ReefSettings {
+    /// Which demo scene.
+    pub demo: ReefScene,
+    /// The muscle-driven body (default) or the light point-mass body.
+    pub body: ReefBodyKind,
+    /// Prey fish in the demos with a school (`None`: the demo's own number),
+    /// 0 to [`REEF_PREY_MAX`].
+    pub prey_count: Option<u32>,
+    /// Plankton kept in the water (`None`: the demo's own number), 0 to
+    /// [`REEF_FOOD_MAX`].
+    pub food_count: Option<u32>,
+    /// How far fish see, metres, [`VISIBILITY_MIN_M`] to [`VISIBILITY_MAX_M`].
+    /// Default 6.
+    pub visibility_m: f32,
+    /// Speed of the fastest water, m/s. Default 0.03.
+    pub current_m_per_s: f32,
+    /// The fish the inspector shows, if any.
+    pub selected: Option<u32>,
+    /// The camera follows the selected fish.
+    pub follow: bool,
+    /// Draw the selected fish's view volume and focus line.
+    pub show_vision: bool,
+    /// Colour the water by light or temperature.
+    pub overlay: ReefOverlay,
+}
+
+impl Default for ReefSettings {
+    fn default() -> Self {
+        Self {
+            demo: ReefScene::Reef,
+            body: ReefBodyKind::Physical,
+            prey_count: None,
+            food_count: None,
+            visibility_m: 6.0,
+            current_m_per_s: 0.03,
+            selected: None,
+            follow: false,
+            show_vision: true,
+            overlay: ReefOverlay::None,
+        }
+    }
+}
+
+impl ReefSettings {
+    /// The world these settings build from `seed`.
+    pub fn config(&self, seed: u64) -> ReefConfig {
+        ReefConfig {
+            seed,
+            scene: self.demo,
+            body: self.body,
+            visibility_m: self.visibility_m,
+            current_m_per_s: self.current_m_per_s,
+            food_count: self.food_count.map(|n| n as usize),
+            prey_count: self.prey_count.map(|n| n as usize),
+        }
+    }
+
+    /// What, when changed, needs a new reef (the others apply live).
+    pub fn rebuild_key(&self) -> (ReefScene, ReefBodyKind, Option<u32>, Option<u32>) {
+        (self.demo, self.body, self.prey_count, self.food_count)
+    }
+
+    /// The first out-of-range value as (key under `prefix`, reason).
+    pub fn validate(&self, prefix: &str) -> Result<(), (String, String)> {
+        let out = |key: &str, value: String, lo: String, hi: String| {
+            Err((
+                format!("{prefix}{key}"),
+                format!("{value} is out of range: choose from {lo} to {hi}"),
+            ))
+        };
+        if let Some(n) = self.prey_count
+            && n > REEF_PREY_MAX
+        {
+            return out(
+                "prey_count",
+                n.to_string(),
+                "0".into(),
+                REEF_PREY_MAX.to_string(),
+            );
+        }
+        if let Some(n) = self.food_count
+            && n > REEF_FOOD_MAX
+        {
+            return out(
+                "food_count",
+                n.to_string(),
+                "0".into(),
+                REEF_FOOD_MAX.to_string(),
+            );
+        }
+        let range = |key: &str, value: f32, lo: f32, hi: f32| {
+            if value.is_finite() && (lo..=hi).contains(&value) {
+                Ok(())
+            } else {
+                out(key, value.to_string(), lo.to_string(), hi.to_string())
+            }
+        };
+        range(
+            "visibility_m",
+            self.visibility_m,
+            VISIBILITY_MIN_M,
+            VISIBILITY_MAX_M,
+        )?;
+        range(
+            "current_m_per_s",
+            self.current_m_per_s,
+            0.0,
+            REEF_CURRENT_MAX_M_PER_S,
+        )?;
+        if let Some(i) = self.selected
+            && i as usize >= MAX_REEF_ANIMALS
+        {
+            return out(
+                "selected",
+                i.to_string(),
+                "0".into(),
+                (MAX_REEF_ANIMALS - 1).to_string(),
+            );
+        }
+        Ok(())
+    }
+
+    /// Brings every value into range.
+    pub fn clamp(&mut self) {
+        let fix = |v: f32, lo: f32, hi: f32, default: f32| {
+            if v.is_finite() {
+                v.clamp(lo, hi)
+            } else {
+                default
+            }
+        };
+        self.prey_count = self.prey_count.map(|n| n.min(REEF_PREY_MAX));
+        self.food_count = self.food_count.map(|n| n.min(REEF_FOOD_MAX));
+        self.visibility_m = fix(self.visibility_m, VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0);
+        self.current_m_per_s = fix(self.current_m_per_s, 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03);
+        self.selected = self.selected.filter(|&i| (i as usize) < MAX_REEF_ANIMALS);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_valid_and_out_of_range_values_are_named() {
+        let s = ReefSettings::default();
+        assert_eq!(s.validate("reef."), Ok(()));
+        let bad = ReefSettings {
+            visibility_m: 40.0,
+            ..s.clone()
+        };
+        let (key, reason) = bad.validate("reef.").unwrap_err();
+        assert_eq!(key, "reef.visibility_m");
+        assert!(reason.contains("choose from 1 to 12"), "{reason}");
+        let bad = ReefSettings {
+            prey_count: Some(1000),
+            ..s.clone()
+        };
+        assert_eq!(bad.validate("reef.").unwrap_err().0, "reef.prey_count");
+        let mut nan = ReefSettings {
+            current_m_per_s: f32::NAN,
+            prey_count: Some(999),
+            ..s
+        };
+        nan.clamp();
+        assert_eq!(nan.current_m_per_s, 0.03);
+        assert_eq!(nan.prey_count, Some(REEF_PREY_MAX));
+        assert_eq!(nan.validate("reef."), Ok(()));
+    }
+
+    #[test]
+    fn the_demo_names_round_trip_through_json() {
+        for demo in ReefScene::ALL {
+            let s = ReefSettings {
+                demo,
+                ..ReefSettings::default()
+            };
+            let json = serde_json::to_string(&s).unwrap();
+            assert_eq!(serde_json::from_str::<ReefSettings>(&json).unwrap(), s);
+        }
+        let v: ReefSettings =
+            serde_json::from_str(r#"{"demo": "school_meets_obstacle", "body": "point_mass"}"#)
+                .unwrap();
+        assert_eq!(v.demo, ReefScene::SchoolMeetsObstacle);
+        assert_eq!(v.body, ReefBodyKind::PointMass);
+    }
+}

@@ -1,0 +1,179 @@
+//! Drawn over the reef's 3D view with egui's painter: the selected fish's view
+//! volume (300° out to the water's visibility, the blind cone behind) and a line to
+//! what its mind is focused on; and the light or temperature of the water as
+//! coloured dots.
+
+use eframe::egui;
+use glam::Vec3;
+
+use super::reef_panel::intention_color;
+use crate::lab::Run;
+use crate::reef_settings::ReefOverlay;
+use crate::render::OrbitCamera;
+use crate::sim::mind::Target;
+use crate::sim::perception::FIELD_OF_VIEW_RAD;
+
+fn project(camera: &OrbitCamera, rect: egui::Rect, p: Vec3) -> Option<egui::Pos2> {
+    let aspect = rect.width() / rect.height().max(1.0);
+    camera
+        .project(p, aspect)
+        .map(|uv| rect.min + egui::vec2(uv.x * rect.width(), uv.y * rect.height()))
+}
+
+/// The selected fish's field of view (a horizontal fan of 300° out to the
+/// visibility, the 60° blind sector left open) and its focus line.
+pub fn draw_vision(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    camera: &OrbitCamera,
+    run: &Run,
+    alpha: f32,
+    selected: u32,
+) {
+    let Some(reef) = run.reef() else {
+        return;
+    };
+    let Some(a) = reef.animals().get(selected as usize).filter(|a| a.alive) else {
+        return;
+    };
+    let Some((_, centre, _)) = run
+        .selectable_animals(alpha)
+        .into_iter()
+        .find(|s| s.0 == selected as usize)
+    else {
+        return;
+    };
+    let heading = a.body.heading();
+    let eye = centre + heading * 0.5 * a.body.body_length_m();
+    let radius = reef.config().visibility_m;
+    let flat = (heading * Vec3::new(1.0, 0.0, 1.0)).normalize_or(Vec3::X);
+    let yaw = flat.z.atan2(flat.x);
+    let half = 0.5 * FIELD_OF_VIEW_RAD;
+    let fan = egui::Color32::from_rgba_unmultiplied(255, 255, 200, 70);
+    // The rim of the field of view, and spokes every 30°.
+    let steps = 60;
+    let rim: Vec<egui::Pos2> = (0..=steps)
+        .filter_map(|k| {
+            let angle = yaw - half + FIELD_OF_VIEW_RAD * k as f32 / steps as f32;
+            project(
+                camera,
+                rect,
+                eye + Vec3::new(angle.cos(), 0.0, angle.sin()) * radius,
+            )
+        })
+        .collect();
+    painter.add(egui::Shape::line(rim, egui::Stroke::new(1.5, fan)));
+    if let Some(e) = project(camera, rect, eye) {
+        for k in 0..=10 {
+            let angle = yaw - half + FIELD_OF_VIEW_RAD * k as f32 / 10.0;
+            if let Some(p) = project(
+                camera,
+                rect,
+                eye + Vec3::new(angle.cos(), 0.0, angle.sin()) * radius,
+            ) {
+                let edge = k == 0 || k == 10;
+                let stroke = egui::Stroke::new(
+                    if edge { 1.5 } else { 0.7 },
+                    if edge {
+                        egui::Color32::from_rgba_unmultiplied(255, 120, 120, 140)
+                    } else {
+                        fan
+                    },
+                );
+                painter.line_segment([e, p], stroke);
+            }
+        }
+        // The focus line.
+        let focus = a.focus;
+        let target_m = match focus.target {
+            Some(Target::Animal(j)) => run
+                .selectable_animals(alpha)
+                .into_iter()
+                .find(|s| s.0 == j as usize)
+                .map(|s| s.1),
+            Some(Target::Food(id)) => reef
+                .food()
+                .iter()
+                .find(|f| f.id == id)
+                .map(|f| f.position_m),
+            Some(Target::Obstacle(k)) => reef
+                .obstacles()
+                .get(k as usize)
+                .map(|o| o.core_point_m(eye)),
+            Some(Target::Glass) => Some(reef.tank().clamp_inside(eye + heading * 2.0, 0.0)),
+            None => None,
+        };
+        if let Some(t) = target_m.and_then(|t| project(camera, rect, t)) {
+            let color = intention_color(focus.intention);
+            painter.line_segment([e, t], egui::Stroke::new(2.5, color));
+            painter.circle_stroke(t, 7.0, egui::Stroke::new(2.0, color));
+            painter.text(
+                t + egui::vec2(9.0, -9.0),
+                egui::Align2::LEFT_BOTTOM,
+                focus.intention.label(),
+                egui::FontId::proportional(14.0),
+                color,
+            );
+        }
+    }
+}
+
+/// Dots through the water coloured by brightness (dark blue → pale yellow) or
+/// temperature (blue → red).
+pub fn draw_water(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    camera: &OrbitCamera,
+    run: &Run,
+    overlay: ReefOverlay,
+) {
+    let Some(reef) = run.reef() else {
+        return;
+    };
+    if overlay == ReefOverlay::None {
+        return;
+    }
+    let env = reef.environment();
+    let tank = reef.tank();
+    let size = tank.size_m();
+    let (nx, ny, nz) = (13, 6, 9);
+    for ix in 0..nx {
+        for iy in 0..ny {
+            for iz in 0..nz {
+                let t = Vec3::new(
+                    (ix as f32 + 0.5) / nx as f32,
+                    (iy as f32 + 0.5) / ny as f32,
+                    (iz as f32 + 0.5) / nz as f32,
+                );
+                let p = tank.min_m + t * size;
+                let Some(s) = project(camera, rect, p) else {
+                    continue;
+                };
+                let color = match overlay {
+                    ReefOverlay::Light => {
+                        let b = env.brightness_at(p);
+                        let lerp = |a: f32, c: f32| (a + (c - a) * b).round() as u8;
+                        egui::Color32::from_rgba_unmultiplied(
+                            lerp(20.0, 255.0),
+                            lerp(30.0, 245.0),
+                            lerp(90.0, 170.0),
+                            170,
+                        )
+                    }
+                    ReefOverlay::Temperature => {
+                        let w = env.temperature_01_at(p);
+                        let lerp = |a: f32, c: f32| (a + (c - a) * w).round() as u8;
+                        egui::Color32::from_rgba_unmultiplied(
+                            lerp(40.0, 255.0),
+                            lerp(110.0, 80.0),
+                            lerp(255.0, 40.0),
+                            170,
+                        )
+                    }
+                    ReefOverlay::None => continue,
+                };
+                painter.circle_filled(s, 4.0, color);
+            }
+        }
+    }
+}
