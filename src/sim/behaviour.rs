@@ -93,8 +93,10 @@ pub fn chase(
 const MAX_CHASE_PITCH_RAD: f32 = 0.44;
 
 /// avoiding-static-obstacle / avoiding-fish: turn away from `obstacle_m`
-/// (the nearest point of the obstacle), towards the side it is not on.
-pub fn avoid(me: &Me, obstacle_m: Vec3) -> Vec3 {
+/// (the nearest point of the obstacle), towards the side it is not on. A calm
+/// fish slows down to turn tightly; a frightened one (`fear` in [0, 1]) keeps
+/// its speed, swerving without losing ground to the predator.
+pub fn avoid(me: &Me, obstacle_m: Vec3, fear: f32) -> Vec3 {
     let to = obstacle_m - me.position_m;
     let flat = Vec3::new(1.0, 0.0, 1.0);
     let forward = (me.heading * flat).normalize_or(Vec3::X);
@@ -106,7 +108,7 @@ pub fn avoid(me: &Me, obstacle_m: Vec3) -> Vec3 {
         0.0
     };
     let direction = (forward * 0.4 + side + Vec3::Y * away_up).normalize_or(side);
-    direction * AVOID_FRACTION * me.top_speed_m_per_s
+    direction * AVOID_FRACTION.max(fear.clamp(0.0, 1.0)) * me.top_speed_m_per_s
 }
 
 /// escaping: away from the predator at full speed; if it is ahead, mostly
@@ -139,10 +141,15 @@ pub struct Neighbour {
 
 /// schooling (Fig. 16): too close to the nearest → veer away; too far from the
 /// group → swim to it faster; otherwise match the neighbours' heading and
-/// speed. `urgency` in [0, 1] (fear) makes the school swim faster and tighter.
-pub fn school(me: &Me, neighbours: &[Neighbour], urgency: f32) -> Vec3 {
+/// speed. `urgency` in [0, 1] (fear) makes the school swim faster and tighter,
+/// and away from `threat_m` (the predator the fish fears, if any): a
+/// frightened school moves off together instead of scattering.
+pub fn school(me: &Me, neighbours: &[Neighbour], urgency: f32, threat_m: Option<Vec3>) -> Vec3 {
     if neighbours.is_empty() {
-        return me.heading * CRUISE_FRACTION * me.top_speed_m_per_s;
+        return match threat_m {
+            Some(t) if urgency > 0.0 => escape(me, t),
+            _ => me.heading * CRUISE_FRACTION * me.top_speed_m_per_s,
+        };
     }
     let spacing = SCHOOL_SPACING_BODY_LENGTHS * me.body_length_m * (1.0 - 0.3 * urgency);
     let n = neighbours.len() as f32;
@@ -167,7 +174,13 @@ pub fn school(me: &Me, neighbours: &[Neighbour], urgency: f32) -> Vec3 {
     } else {
         Vec3::ZERO
     };
-    let direction = (heading + 1.5 * separation + cohesion).normalize_or(me.heading);
+    let away = threat_m.map_or(Vec3::ZERO, |t| {
+        (me.position_m - t).normalize_or_zero()
+            * Vec3::new(1.0, 0.4, 1.0)
+            * 1.5
+            * urgency.clamp(0.0, 1.0)
+    });
+    let direction = (heading + 1.5 * separation + cohesion + away).normalize_or(me.heading);
     let catch_up = if gap > 3.0 * spacing { 0.2 } else { 0.0 };
     let speed = (CRUISE_FRACTION + 0.3 * urgency.clamp(0.0, 1.0) + catch_up).min(1.0);
     direction * speed * me.top_speed_m_per_s
@@ -212,9 +225,9 @@ mod tests {
     #[test]
     fn avoid_turns_to_the_free_side() {
         let right = Vec3::X.cross(Vec3::Y);
-        let v = avoid(&me(), Vec3::new(1.0, 0.0, 0.0) + right * 0.3);
+        let v = avoid(&me(), Vec3::new(1.0, 0.0, 0.0) + right * 0.3, 0.0);
         assert!(v.dot(right) < 0.0, "{v}");
-        let v = avoid(&me(), Vec3::new(1.0, 0.0, 0.0) - right * 0.3);
+        let v = avoid(&me(), Vec3::new(1.0, 0.0, 0.0) - right * 0.3, 0.0);
         assert!(v.dot(right) > 0.0, "{v}");
     }
 
@@ -232,13 +245,13 @@ mod tests {
             position_m: Vec3::new(0.0, 0.0, 0.2),
             heading: Vec3::X,
         }];
-        assert!(school(&me(), &close, 0.0).z < 0.0);
+        assert!(school(&me(), &close, 0.0, None).z < 0.0);
         let aligned = [Neighbour {
             position_m: Vec3::new(0.0, 0.0, 0.5),
             heading: Vec3::Z,
         }];
         assert!(
-            school(&me(), &aligned, 0.0)
+            school(&me(), &aligned, 0.0, None)
                 .normalize_or_zero()
                 .dot(Vec3::Z)
                 > 0.9
@@ -247,7 +260,7 @@ mod tests {
             position_m: Vec3::new(0.0, 0.0, -3.0),
             heading: Vec3::X,
         }];
-        let v = school(&me(), &far, 0.0);
+        let v = school(&me(), &far, 0.0, None);
         assert!(v.z < 0.0 && v.length() > CRUISE_FRACTION * 0.3);
     }
 }

@@ -89,6 +89,8 @@ const BODY_TURN_RATE_RAD_PER_SEC: f32 = 0.21;
 /// sighted predators only, and a fleeing fish that turned its blind cone to the
 /// shark stopped, turned back to look, and fled again, measured).
 pub const THREAT_MEMORY_SECS: f32 = 3.0;
+/// Seconds between two "fled" events of one fish.
+const ESCAPE_LOG_EVERY_SECS: f64 = 15.0;
 /// Events kept in the log.
 const EVENT_LOG_LEN: usize = 200;
 /// Two bodies whose centres are closer than this share of their mean length
@@ -300,6 +302,9 @@ pub struct ReefAnimal {
     /// The predator last seen, where, and for how many more seconds it is
     /// remembered (see [`THREAT_MEMORY_SECS`]).
     last_threat: Option<(u32, Vec3, f32)>,
+    /// When this animal's last escape was logged (the log says "fled" once per
+    /// [`ESCAPE_LOG_EVERY_SECS`], not at every glance at the shark).
+    last_escape_logged_secs: Option<f64>,
     /// A female that left this male for another, and for how many more
     /// seconds he leaves her alone.
     rejected_by: Option<(u32, f32)>,
@@ -861,6 +866,7 @@ impl ReefWorld {
             touch: None,
             last_threat: None,
             rejected_by: None,
+            last_escape_logged_secs: None,
             wander: Fish::new(p, heading * 0.5 * top, length, hue),
         });
     }
@@ -935,6 +941,12 @@ impl ReefWorld {
             let a = &mut self.animals[i];
             a.temperature_c = self.env.temperature_c_at(seen[i].position_m);
             a.mental.update(&a.habits.mental, dt, predator_distances);
+            // Predators feel no fear and no libido; prey do not mate (§7.1–7.2).
+            match a.habits.kind {
+                FishKind::Predator => (a.mental.fear, a.mental.libido) = (0.0, 0.0),
+                FishKind::Prey => a.mental.libido = 0.0,
+                FishKind::Pacifist => {}
+            }
             if let Some((f, left)) = a.rejected_by {
                 a.rejected_by = (left > dt).then_some((f, left - dt));
             }
@@ -1306,7 +1318,7 @@ impl ReefWorld {
                         probe + (probe - inside)
                     }
                 };
-                behaviour::avoid(&me, point)
+                behaviour::avoid(&me, point, self.animals[i].mental.fear)
             }
             Intention::Escape => match animal_at(focus.target) {
                 Some(p) => behaviour::escape(&me, p),
@@ -1314,10 +1326,11 @@ impl ReefWorld {
             },
             Intention::School => {
                 let urgency = self.animals[i].mental.fear;
-                if neighbours.is_empty() {
+                let threat = animal_at(focus.target);
+                if neighbours.is_empty() && threat.is_none() {
                     wander(self)
                 } else {
-                    behaviour::school(&me, neighbours, urgency)
+                    behaviour::school(&me, neighbours, urgency, threat)
                 }
             }
             Intention::Eat => match focus.target {
@@ -1846,7 +1859,13 @@ impl ReefWorld {
     fn log_decision(&mut self, i: usize, before: Focus, after: Focus) {
         let name = self.animals[i].name(i);
         match (before.intention, after.intention, after.target) {
-            (b, Intention::Escape, Some(Target::Animal(p))) if b != Intention::Escape => {
+            (b, Intention::Escape, Some(Target::Animal(p)))
+                if b != Intention::Escape
+                    && self.animals[i]
+                        .last_escape_logged_secs
+                        .is_none_or(|t| self.time_secs - t >= ESCAPE_LOG_EVERY_SECS) =>
+            {
+                self.animals[i].last_escape_logged_secs = Some(self.time_secs);
                 let text = format!(
                     "{name} fled from {}",
                     self.animals[p as usize].name(p as usize)
@@ -2041,23 +2060,29 @@ mod tests {
     }
 
     #[test]
-    fn the_shark_eats_prey() {
-        let mut w = reef(ReefScene::PredatorAndSchool, ReefBodyKind::PointMass, 4);
-        let prey = w
-            .animals()
-            .iter()
-            .filter(|a| a.habits.kind == FishKind::Prey)
-            .count();
-        run(&mut w, 150.0);
-        let c = w.counts();
-        assert!(c.prey_eaten >= 1, "{c:?}");
-        assert_eq!(w.alive_count(), prey + 1 - c.prey_eaten as usize);
-        let shark = w
-            .animals()
-            .iter()
-            .find(|a| a.habits.kind == FishKind::Predator)
-            .map(|a| a.mental.hunger);
-        eprintln!("{c:?} shark hunger {shark:?}");
+    fn the_shark_eats_prey_over_time() {
+        let mut eaten = 0;
+        for seed in 1..=4 {
+            let mut w = reef(ReefScene::PredatorAndSchool, ReefBodyKind::PointMass, seed);
+            let prey = w
+                .animals()
+                .iter()
+                .filter(|a| a.habits.kind == FishKind::Prey)
+                .count();
+            let shark = w
+                .animals()
+                .iter()
+                .position(|a| a.habits.kind == FishKind::Predator)
+                .unwrap();
+            run(&mut w, 300.0);
+            let c = w.counts();
+            assert_eq!(w.alive_count(), prey + 1 - c.prey_eaten as usize);
+            // Each meal is logged and filled the shark.
+            let meals = w.events().iter().filter(|e| matches!(e.kind, ReefEventKind::AtePrey { predator, .. } if predator as usize == shark)).count();
+            assert_eq!(meals as u32, c.prey_eaten);
+            eaten += c.prey_eaten;
+        }
+        assert!(eaten >= 4, "{eaten} prey eaten in 4 × 5 minutes");
     }
 
     #[test]
@@ -2181,6 +2206,53 @@ mod tests {
         assert!(
             interruptions >= 3 && resumed >= 2,
             "{interruptions} interruptions, {resumed} resumed"
+        );
+    }
+
+    #[test]
+    fn the_shark_picks_lone_prey_over_schooling_prey_at_the_same_distance() {
+        // C_k = d_k (1 + β1 S_k + β2 E_k / π): at equal distance and turn, the
+        // schooling fish costs 1.5 times more.
+        let mut w = reef(ReefScene::PredatorAndSchool, ReefBodyKind::PointMass, 1);
+        let shark = w
+            .animals()
+            .iter()
+            .position(|a| a.habits.kind == FishKind::Predator)
+            .unwrap();
+        let c = w.tank().center_m();
+        w.place(shark, c, Vec3::X);
+        {
+            let s = w.animal_mut(shark).unwrap();
+            s.mental.food_eaten = 0.0;
+            // A fresh mind that takes the cheapest prey at once (no earlier
+            // target to be devoted to).
+            s.generator = IntentionGenerator::default();
+            s.habits.persistence_body_lengths = 0.0;
+        }
+        let prey: Vec<usize> = (0..w.animals().len()).filter(|&i| i != shark).collect();
+        // A school of five to the right, one loner to the left and a little
+        // farther (2.6 m against 2.2 m: without β1 the shark would take the
+        // nearer schooling fish), the rest far behind.
+        for (k, &i) in prey.iter().enumerate() {
+            let at = match k {
+                0 => c + Vec3::new(2.3, 0.0, 1.2),
+                1..=5 => {
+                    c + Vec3::new(2.0, 0.0, -1.0) + Vec3::new(0.0, 0.0, -0.35 * (k - 1) as f32)
+                }
+                _ => c + Vec3::new(-5.5, 0.0, 3.5 - 0.3 * k as f32),
+            };
+            w.place(i, at, Vec3::X);
+            w.animal_mut(i).unwrap().habits.schools = k != 0;
+        }
+        for _ in 0..3 {
+            w.step();
+        }
+        let focus = w.animals()[shark].focus;
+        assert_eq!(focus.intention, Intention::Eat);
+        assert_eq!(
+            focus.target,
+            Some(Target::Animal(prey[0] as u32)),
+            "the loner"
         );
     }
 }

@@ -174,7 +174,7 @@ pub fn total_fear(
     let sum: f32 = predator_distances_body_lengths
         .into_iter()
         .map(|d| fear_of(constants, d))
-        .sum();
+        .fold(0.0, |a, b| a + b);
     sum.min(1.0)
 }
 
