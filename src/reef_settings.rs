@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::sim::reef_world::{MAX_FOOD, MAX_REEF_ANIMALS, ReefBodyKind, ReefConfig, ReefScene};
+use crate::sim::reef_world::{MAX_FOOD, ReefBodyKind, ReefConfig, ReefScene};
 
 /// Most prey fish the slider offers.
 pub const REEF_PREY_MAX: u32 = 150;
@@ -100,6 +100,14 @@ impl ReefSettings {
         }
     }
 
+    /// Animals in the reef these settings build.
+    pub fn animal_count(&self) -> usize {
+        let prey = self
+            .prey_count
+            .map_or(self.demo.default_prey_count(), |n| n as usize);
+        self.demo.animal_count(prey)
+    }
+
     /// What, when changed, needs a new reef (the others apply live).
     pub fn rebuild_key(&self) -> (ReefScene, ReefBodyKind, Option<u32>, Option<u32>) {
         (self.demo, self.body, self.prey_count, self.food_count)
@@ -152,14 +160,15 @@ impl ReefSettings {
             0.0,
             REEF_CURRENT_MAX_M_PER_S,
         )?;
+        let animals = self.animal_count();
         if let Some(i) = self.selected
-            && i as usize >= MAX_REEF_ANIMALS
+            && i as usize >= animals
         {
             return out(
                 "selected",
                 i.to_string(),
                 "0".into(),
-                (MAX_REEF_ANIMALS - 1).to_string(),
+                animals.saturating_sub(1).to_string(),
             );
         }
         Ok(())
@@ -178,7 +187,8 @@ impl ReefSettings {
         self.food_count = self.food_count.map(|n| n.min(REEF_FOOD_MAX));
         self.visibility_m = fix(self.visibility_m, VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0);
         self.current_m_per_s = fix(self.current_m_per_s, 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03);
-        self.selected = self.selected.filter(|&i| (i as usize) < MAX_REEF_ANIMALS);
+        let animals = self.animal_count();
+        self.selected = self.selected.filter(|&i| (i as usize) < animals);
     }
 }
 

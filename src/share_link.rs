@@ -128,7 +128,7 @@ mod tests {
     fn random_reef(rng: &mut ChaCha8Rng) -> crate::reef_settings::ReefSettings {
         use crate::reef_settings::*;
         use crate::sim::reef_world::{ReefBodyKind, ReefScene};
-        ReefSettings {
+        let mut reef = ReefSettings {
             demo: ReefScene::ALL[rng.random_range(0..ReefScene::ALL.len())],
             body: if rng.random_bool(0.5) {
                 ReefBodyKind::Physical
@@ -143,11 +143,14 @@ mod tests {
                 .then(|| rng.random_range(0..=REEF_FOOD_MAX)),
             visibility_m: rng.random_range(VISIBILITY_MIN_M..=VISIBILITY_MAX_M),
             current_m_per_s: rng.random_range(0.0..=REEF_CURRENT_MAX_M_PER_S),
-            selected: rng.random_bool(0.5).then(|| rng.random_range(0..40)),
+            selected: None,
             follow: rng.random_bool(0.5),
             show_vision: rng.random_bool(0.5),
             overlay: ReefOverlay::ALL[rng.random_range(0..3)],
-        }
+        };
+        let animals = reef.animal_count() as u32;
+        reef.selected = (animals > 0 && rng.random_bool(0.5)).then(|| rng.random_range(0..animals));
+        reef
     }
 
     fn random_physics(rng: &mut ChaCha8Rng) -> crate::physics_settings::PhysicsSettings {

@@ -151,6 +151,25 @@ impl ReefScene {
         }
     }
 
+    /// Animals in this scene with `prey` prey fish (capped at
+    /// [`MAX_REEF_ANIMALS`]).
+    pub fn animal_count(self, prey: usize) -> usize {
+        let others = match self {
+            // A shark, two courting pairs and three grazers.
+            Self::Reef => 1 + 4 + 3,
+            Self::PredatorAndSchool => 1,
+            Self::Courtship => 3,
+            Self::Feeding => 6,
+            Self::SchoolMeetsObstacle => 0,
+        };
+        let prey = if self.default_prey_count() > 0 {
+            prey
+        } else {
+            0
+        };
+        (prey + others).min(MAX_REEF_ANIMALS)
+    }
+
     /// Plankton kept in the water unless the teacher chose a number.
     pub fn default_food_count(self) -> usize {
         match self {
@@ -1970,6 +1989,7 @@ mod tests {
                 .filter(|a| a.habits.kind == FishKind::Prey)
                 .count();
             assert_eq!(prey, scene.default_prey_count(), "{scene:?}");
+            assert_eq!(w.animals().len(), scene.animal_count(prey), "{scene:?}");
             assert_eq!(w.food().len(), scene.default_food_count(), "{scene:?}");
         }
     }

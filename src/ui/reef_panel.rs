@@ -13,7 +13,7 @@ use crate::reef_settings::{
     REEF_CURRENT_MAX_M_PER_S, REEF_FOOD_MAX, REEF_PREY_MAX, ReefOverlay, ReefSettings,
     VISIBILITY_MAX_M, VISIBILITY_MIN_M,
 };
-use crate::sim::mind::{Intention, Liking, Sex, Target};
+use crate::sim::mind::{FishKind, Intention, Liking, Sex, Target};
 use crate::sim::reef_world::{ReefAnimal, ReefBody, ReefBodyKind, ReefScene, ReefWorld};
 
 /// Colours of the three urges, used by the bars, the plot and the focus line.
@@ -337,11 +337,15 @@ fn mind_summary_ui(
         });
     }
     let focus = a.focus;
+    let sentence = match (focus.intention, h.kind) {
+        (Intention::Eat, FishKind::Predator) => "it is hungry: it hunts",
+        (intention, _) => intention_sentence(intention),
+    };
     let r = ui.label(
         egui::RichText::new(format!(
             "Intends to {}: {}",
             focus.intention.label(),
-            intention_sentence(focus.intention)
+            sentence
         ))
         .color(intention_color(focus.intention)),
     );

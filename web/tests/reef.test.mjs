@@ -1,0 +1,149 @@
+// The reef scene (issue 5) as a teacher uses it: real clicks on the scene button,
+// the demo buttons, a fish and the overlay choices; the inspector shows the fish's
+// mind and its fish-eye view; the event log fills; bad input is refused with a
+// message. WebGL2 (SwiftShader).
+import { test, describe, before, after } from "node:test";
+import assert from "node:assert/strict";
+import {
+  serveDist,
+  launch,
+  openShoal,
+  decode,
+  pixelStats,
+  fishPixels,
+  saveArtifact,
+  clickUntil,
+  waitForWidget,
+} from "./harness.mjs";
+
+const state = (page) => page.evaluate(() => window.shoal.state());
+const settings = (page) => page.evaluate(() => window.shoal.settings());
+const widgets = (page) => page.evaluate(() => window.shoal.widgets());
+
+/** Pixels that differ by more than a little between two screenshots, in `rect`. */
+function changedPixels(a, b, rect) {
+  let changed = 0;
+  for (let y = Math.floor(rect.y); y < rect.y + rect.height; y++) {
+    for (let x = Math.floor(rect.x); x < rect.x + rect.width; x++) {
+      const i = (y * a.width + x) * 4;
+      const d = Math.abs(a.data[i] - b.data[i]) + Math.abs(a.data[i + 1] - b.data[i + 1]) + Math.abs(a.data[i + 2] - b.data[i + 2]);
+      if (d > 60) changed++;
+    }
+  }
+  return changed;
+}
+
+describe("reef", () => {
+  let server, browser, page, errors;
+
+  before(async () => {
+    server = await serveDist();
+    browser = await launch("webgl2");
+    const context = await browser.newContext({ viewport: { width: 1366, height: 1000 } });
+    ({ page, errors } = await openShoal(context, server.url));
+  });
+
+  after(async () => {
+    await browser?.close();
+    await server?.close();
+  });
+
+  test("the scene button opens the reef: a school, a shark, pacifists, plankton", async () => {
+    await clickUntil(page, "scene_reef", () => window.shoal.state().scene === "reef");
+    await waitForWidget(page, "reef_demo_courtship");
+    const s = await state(page);
+    assert.equal(s.reef.demo, "reef");
+    assert.equal(s.reef.body, "physical");
+    assert.equal(s.reef.predators, 1);
+    assert.equal(s.reef.prey, 10);
+    assert.equal(s.reef.pacifists, 7);
+    assert.ok(s.reef.food > 20, `plankton: ${s.reef.food}`);
+    const shot = await page.screenshot();
+    saveArtifact("reef-webgl2.png", shot);
+    const view = (await widgets(page)).view_left;
+    assert.ok(fishPixels(decode(shot), view).size > 100, "fish are drawn");
+  });
+
+  test("clicking a fish opens its mind: bars, plan, memory, fish-eye view", async () => {
+    await page.evaluate(() => window.shoal.step(40));
+    await page.evaluate(() => window.shoal.pause());
+    // The shark swims alone: its square on screen is its own.
+    await waitForWidget(page, "animal_10");
+    await clickUntil(page, "animal_10", () => window.shoal.settings().reef.selected != null);
+    await page.evaluate(() => window.shoal.step(30));
+    await waitForWidget(page, "fish_eye");
+    const s = await state(page);
+    const fish = s.reef.selected;
+    assert.equal(fish.index, s.reef.selected.index);
+    assert.match(fish.name, /^(fish|shark|pacifist) \d+$/);
+    assert.ok(["predator", "prey", "pacifist"].includes(fish.habits.kind));
+    for (const v of [fish.hunger, fish.libido, fish.fear, fish.brightness]) {
+      assert.ok(v >= 0 && v <= 1, `in [0, 1]: ${v}`);
+    }
+    assert.ok(["avoid", "escape", "school", "eat", "wander", "leave"].includes(fish.intention), fish.intention);
+    const shot = await page.screenshot();
+    saveArtifact("reef-selected-webgl2.png", shot);
+    const png = decode(shot);
+    const w = await widgets(page);
+    for (const name of ["reef_inspector", "reef_bar_hunger", "reef_intention", "reef_mind_plot"]) {
+      assert.ok(w[name], `${name} is on screen`);
+    }
+    const eye = pixelStats(png, w.fish_eye);
+    assert.ok(eye.distinctColours > 20, `the fish-eye view shows a picture: ${JSON.stringify(eye)}`);
+  });
+
+  test("the water overlay and the vision fan change the picture", async () => {
+    const view = await waitForWidget(page, "view_left");
+    const plain = decode(await page.screenshot());
+    await clickUntil(page, "reef_overlay_temperature", () => window.shoal.settings().reef.overlay === "temperature");
+    const warm = decode(await page.screenshot());
+    assert.ok(changedPixels(plain, warm, view) > 500, "temperature dots drawn");
+    await clickUntil(page, "reef_show_vision", () => !window.shoal.settings().reef.show_vision);
+    const blind = decode(await page.screenshot());
+    assert.ok(changedPixels(warm, blind, view) > 100, "the vision fan disappears");
+  });
+
+  test("the demo buttons build the courtship demo; the event log fills", async () => {
+    await clickUntil(page, "reef_demo_courtship", () => window.shoal.state().reef.demo === "courtship");
+    await clickUntil(page, "reef_body_point", () => window.shoal.state().reef.body === "point_mass");
+    let s = await state(page);
+    assert.equal(s.reef.pacifists, 3);
+    assert.equal(s.reef.selected, undefined, "a new demo lets go of the fish");
+    await page.evaluate(() => window.shoal.step(1500));
+    s = await state(page);
+    assert.ok(s.reef.events.length > 0, "something happened");
+    assert.ok(
+      s.reef.events.some((e) => /courting|looping|circling/.test(e.text)),
+      JSON.stringify(s.reef.events.map((e) => e.text)),
+    );
+    await page.evaluate(() => window.shoal.play());
+    await page.waitForFunction((n) => window.shoal.state().steps > n + 3, s.steps, { timeout: 60_000 });
+    const log = (await widgets(page)).reef_events;
+    assert.ok(log, "the event log is on screen");
+    const stats = pixelStats(decode(await page.screenshot()), log);
+    assert.ok(stats.distinctColours > 4, "the log has text");
+  });
+
+  test("bad values are refused with a message and change nothing", async () => {
+    const before = await settings(page);
+    for (const [call, pattern] of [
+      [() => window.shoal.set({ reef: { visibility_m: 99 } }), /reef\.visibility_m/],
+      [() => window.shoal.set({ reef: { selected: 50 } }), /reef\.selected/],
+      [() => window.shoal.set({ reef: { demo: "disco" } }), /reef\.demo|unknown variant/],
+      [() => window.shoal.set({ reef: { prey_count: -3 } }), /reef\.prey_count|invalid value/],
+    ]) {
+      const message = await page.evaluate(async (source) => {
+        try {
+          // eslint-disable-next-line no-new-func
+          new Function(`return (${source})()`)();
+          return "no error";
+        } catch (err) {
+          return String(err.message);
+        }
+      }, call.toString());
+      assert.match(message, pattern);
+    }
+    assert.deepEqual(await settings(page), before);
+    assert.deepEqual(errors, []);
+  });
+});
