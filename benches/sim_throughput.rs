@@ -9,6 +9,7 @@ use std::time::{Duration, Instant};
 use shoal::lab::Lab;
 use shoal::render::{FrameBuilder, OrbitCamera};
 use shoal::settings::{Scene, Settings};
+use shoal::sim::reef_world::ReefBodyKind;
 use shoal::sim::school_metrics::{SchoolMeter, order_parameters};
 use shoal::sim::world::SPATIAL_METRICS_EVERY_STEPS;
 use shoal::sim::{BoidParams, World, WorldConfig};
@@ -136,5 +137,37 @@ fn main() {
             steps_per_sec * lab.step_secs(),
             1000.0 / frames_per_sec
         );
+    }
+
+    println!();
+    println!("Fish with minds (the Reef demo: perception with occlusion, mind, behaviour, body):");
+    println!(
+        "{:>7} | {:>10} | {:>10} | {:>14} | {:>19}",
+        "animals", "body", "steps/s", "fish-steps/s", "× real time (1/Δt)"
+    );
+    for body in [ReefBodyKind::Physical, ReefBodyKind::PointMass] {
+        for animals in [10u32, 50, 200] {
+            if only.is_some() {
+                break;
+            }
+            let mut settings = Settings {
+                scene: Scene::Reef,
+                ..Settings::default()
+            };
+            settings.reef = shoal::bench::reef_with_animals(animals);
+            settings.reef.body = body;
+            let mut lab = Lab::new(settings);
+            lab.step(20);
+            let steps_per_sec = rate(Duration::from_secs(3), || lab.step(1));
+            println!(
+                "{animals:>7} | {:>10} | {steps_per_sec:>10.1} | {:>14.0} | {:>19.2}",
+                match body {
+                    ReefBodyKind::Physical => "muscles",
+                    ReefBodyKind::PointMass => "points",
+                },
+                steps_per_sec * f64::from(animals),
+                steps_per_sec * lab.step_secs()
+            );
+        }
     }
 }

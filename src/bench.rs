@@ -7,14 +7,17 @@ use web_time::Instant;
 
 use crate::lab::Lab;
 use crate::physics_settings::PhysicsSettings;
+use crate::reef_settings::ReefSettings;
 use crate::settings::{Scene, Settings};
+use crate::sim::reef_world::ReefScene;
 use crate::tank_settings::{Preset, TankSettings};
 
 /// Scenes and fish counts the benchmark visits: the wandering aquarium, the boid
 /// layer with the group preset at the 500, 5,000 and 20,000 fish, and the
 /// muscle-driven fish (schooling, no shark) at 10 (the paper's demo), 50 and 200
-/// (the goal: 200 fish at 60 steps/s).
-pub const PHASES: [(Scene, u32); 9] = [
+/// (the goal: 200 fish at 60 steps/s), and the reef's fish with minds
+/// (muscle bodies, perception with occlusion) at 10, 50 and 200 animals.
+pub const PHASES: [(Scene, u32); 12] = [
     (Scene::Aquarium, 200),
     (Scene::Aquarium, 5_000),
     (Scene::Aquarium, 20_000),
@@ -24,6 +27,9 @@ pub const PHASES: [(Scene, u32); 9] = [
     (Scene::Physics, 10),
     (Scene::Physics, 50),
     (Scene::Physics, 200),
+    (Scene::Reef, 10),
+    (Scene::Reef, 50),
+    (Scene::Reef, 200),
 ];
 /// Real seconds of rendered frames measured per fish count.
 const FRAMES_PHASE_SECS: f64 = 3.0;
@@ -115,6 +121,7 @@ impl Benchmark {
                 sharks: 0,
                 ..PhysicsSettings::default()
             };
+            settings.reef = reef_with_animals(fish);
             lab.apply_settings(settings);
             self.sim_steps_per_sec = measure_steps_per_sec(lab);
             self.phase_start_secs = Some(now_secs);
@@ -151,6 +158,17 @@ impl Benchmark {
                 lab.apply_settings(Settings::default());
             }
         }
+    }
+}
+
+/// The Reef demo with `animals` animals in all (its eight non-prey animals and
+/// the rest prey), muscle bodies.
+pub fn reef_with_animals(animals: u32) -> ReefSettings {
+    let others = ReefScene::Reef.animal_count(0) as u32;
+    ReefSettings {
+        demo: ReefScene::Reef,
+        prey_count: Some(animals.saturating_sub(others)),
+        ..ReefSettings::default()
     }
 }
 

@@ -7,8 +7,9 @@ use serde::{Deserialize, Serialize};
 
 use crate::sim::reef_world::{MAX_FOOD, ReefBodyKind, ReefConfig, ReefScene};
 
-/// Most prey fish the slider offers.
-pub const REEF_PREY_MAX: u32 = 150;
+/// Most prey fish the slider offers: the Reef demo then holds
+/// `MAX_REEF_ANIMALS` (200) animals.
+pub const REEF_PREY_MAX: u32 = 192;
 /// Most plankton particles the slider offers.
 pub const REEF_FOOD_MAX: u32 = MAX_FOOD as u32;
 /// Water visibility V_r range, metres.
