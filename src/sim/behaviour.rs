@@ -111,6 +111,19 @@ pub fn avoid(me: &Me, obstacle_m: Vec3, fear: f32) -> Vec3 {
     direction * AVOID_FRACTION.max(fear.clamp(0.0, 1.0)) * me.top_speed_m_per_s
 }
 
+/// avoiding-fish for a fish swimming the same way just ahead: fall back to a
+/// little slower than it, edging to the side it is not on.
+pub fn fall_back(me: &Me, other_m: Vec3, other_velocity_m_per_s: Vec3) -> Vec3 {
+    let right = me.heading.cross(Vec3::Y).normalize_or(Vec3::Z);
+    let side = if (other_m - me.position_m).dot(right) > 0.0 {
+        -right
+    } else {
+        right
+    };
+    let speed = (0.8 * other_velocity_m_per_s.length()).min(AVOID_FRACTION * me.top_speed_m_per_s);
+    (me.heading + 0.3 * side).normalize_or(me.heading) * speed
+}
+
 /// escaping: away from the predator at full speed; if it is ahead, mostly
 /// sideways (turning straight back would swim past it).
 pub fn escape(me: &Me, predator_m: Vec3) -> Vec3 {
@@ -229,6 +242,19 @@ mod tests {
         assert!(v.dot(right) < 0.0, "{v}");
         let v = avoid(&me(), Vec3::new(1.0, 0.0, 0.0) - right * 0.3, 0.0);
         assert!(v.dot(right) > 0.0, "{v}");
+    }
+
+    #[test]
+    fn a_fish_falls_back_behind_one_swimming_the_same_way() {
+        let ahead = Vec3::new(0.5, 0.0, 0.05);
+        let v = fall_back(&me(), ahead, Vec3::X * 0.2);
+        assert!(v.length() <= 0.8 * 0.2 + 1e-6);
+        assert!(v.normalize_or_zero().dot(Vec3::X) > 0.9);
+        let right = Vec3::X.cross(Vec3::Y);
+        assert!(
+            v.dot(right) < 0.0,
+            "edges away from the side the other is on: {v}"
+        );
     }
 
     #[test]

@@ -1218,7 +1218,13 @@ impl ReefWorld {
     fn collision_check(&self, i: usize, seen: &[Seen], neighbours: &[Neighbour]) -> Option<Target> {
         let me = seen[i];
         let a = &self.animals[i];
-        let in_formation = a.focus.intention == Intention::School && neighbours.len() >= 2;
+        // In formation: schooling, or swerving within the school (an avoidance
+        // that interrupted schooling).
+        let schooling = a.focus.intention == Intention::School
+            || a.generator
+                .memory
+                .is_some_and(|m| m.intention == Intention::School);
+        let in_formation = schooling && neighbours.len() >= 2;
         let mut ahead = a.habits.collision_box_ahead_body_lengths * me.length_m;
         if in_formation {
             ahead *= 0.5;
@@ -1328,6 +1334,14 @@ impl ReefWorld {
                         .map(|o| o.core_point_m(s.head_m))
                         .unwrap_or(s.head_m + s.heading),
                     Some(Target::Animal(j)) => {
+                        // The other fish is a box moving in a direction (§6.4): one
+                        // swimming the same way ahead is avoided by falling back,
+                        // not by swerving out of the school.
+                        if let Some(o) = seen.get(j as usize).filter(|o| o.alive)
+                            && o.heading.dot(s.heading) > 0.7
+                        {
+                            return behaviour::fall_back(&me, o.position_m, o.velocity_m_per_s);
+                        }
                         animal_at(Some(Target::Animal(j))).unwrap_or(s.head_m + s.heading)
                     }
                     _ => {
@@ -1378,6 +1392,11 @@ impl ReefWorld {
                     }
                     None => wander(self),
                 },
+                // No food in view: a schooling fish forages with its school, others
+                // search alone.
+                _ if self.animals[i].habits.schools && !neighbours.is_empty() => {
+                    behaviour::school(&me, neighbours, 0.0, None)
+                }
                 _ => wander(self),
             },
             Intention::Mate => {
@@ -2273,6 +2292,41 @@ mod tests {
             focus.target,
             Some(Target::Animal(prey[0] as u32)),
             "the loner"
+        );
+    }
+
+    #[test]
+    fn a_school_splits_around_the_pillar_and_joins_again() {
+        // Fig. 17: muscle-driven prey swim from the left past a pillar in the
+        // middle of the tank.
+        let mut w = reef(ReefScene::SchoolMeetsObstacle, ReefBodyKind::Physical, 1);
+        let n = w.animals().len() as f32;
+        let (mut before, mut split, mut rejoined) = (false, false, false);
+        for step in 0..(60.0 / w.dt_secs()) as u32 {
+            w.step();
+            if step % 9 != 0 {
+                continue;
+            }
+            let x = w
+                .animals()
+                .iter()
+                .map(|a| a.body.position_m().x)
+                .sum::<f32>()
+                / n;
+            let m = w.school_metrics();
+            if x < -2.0 && m.groups == 1 {
+                before = true;
+            }
+            if (-1.0..1.5).contains(&x) && m.groups >= 2 {
+                split = before;
+            }
+            if x > 2.0 && m.groups == 1 && m.polarization > 0.8 {
+                rejoined = split;
+            }
+        }
+        assert!(
+            before && split && rejoined,
+            "one school {before}, split {split}, rejoined {rejoined}"
         );
     }
 }
