@@ -10,6 +10,7 @@ pub mod body;
 pub mod boid_forces;
 pub mod control_mode;
 pub mod fish;
+pub mod learning;
 pub mod motor_bridge;
 pub mod obstacle;
 pub mod physical_fish;
