@@ -51,8 +51,10 @@ pub use annealing::{AnnealingSchedule, Checkpoint, HistoryPoint, Trainer};
 pub use learned_motor::{
     LearnedController, LearnedMapError, LearnedMotor, LearnedMotorMap, MotionMeasurement,
 };
-pub use learned_set::{LearnedControllerSet, LearnedSetError, TrainedDrill};
+pub use learned_set::{
+    LearnedControllerSet, LearnedSetError, TrainedDrill, routine_drills, train_set,
+};
 pub use muscle_spline::{Interpolation, MuscleSpline};
 pub use objective::{Evaluation, ObjectiveWeights, Task, TrainingSetup, evaluate};
-pub use race::{Race, RaceEntrant};
+pub use race::{PAPER_RACE_STEPS, Race, RaceEntrant};
 pub use target_tracking::BuoyTracker;

@@ -88,8 +88,11 @@ impl Race {
         self.steps += 1;
         let t = self.time_secs();
         for lane in &mut self.lanes {
+            // The first lap exactly as in training (its last step included), then
+            // looped.
             let period = lane.entrant.controls.duration_secs();
-            let u = lane.entrant.controls.value_at(t.rem_euclid(period));
+            let local = if t <= period { t } else { t.rem_euclid(period) };
+            let u = lane.entrant.controls.value_at(local);
             lane.body.step(
                 &BodyCommand {
                     muscle_contractions: u,
@@ -100,7 +103,7 @@ impl Race {
         }
     }
 
-    /// Runs until `secs` have passed since the start.
+    /// Runs until `secs` have passed since the start (to the nearest step).
     pub fn run(&mut self, secs: f32) {
         while self.time_secs() + 0.5 * self.dt_secs < secs {
             self.step();
@@ -185,6 +188,9 @@ mod tests {
         let length_m = BodySpecies::Shark.body_length_m();
         assert!(d[3] > d[0] + 0.1 * length_m, "distances {d:?} m");
         assert_eq!(race.leader(), Some(3));
+        // Over the training interval the race replays training exactly.
+        let trained = trainer.best_evaluation().forward_body_lengths * length_m;
+        assert!((d[3] - trained).abs() < 1e-3, "{} m vs {trained} m", d[3]);
         assert!(
             race.bodies()
                 .all(|b| b.positions_m().iter().all(|p| p.is_finite()))
