@@ -380,3 +380,53 @@ mod file_tests {
         assert_eq!(straight, 3);
     }
 }
+
+#[cfg(test)]
+mod live_tests {
+    use super::*;
+    use crate::sim::body::BodyParams;
+    use crate::sim::learning::learned_motor::{LearnedMotor, MEASURE_SECS, measure_motion_with};
+
+    /// The whole of §4 live, on a small budget: two drills of 1000 steps from a
+    /// brain-dead start, abstracted, mapped, driven. Seeds 4 (straight) and 5
+    /// (turn). Not every seed learns a lasting turn in 1000–1500 steps: with seed 6
+    /// the fish learns a one-off 43° swerve from rest that the periodic abstraction
+    /// does not keep (−1°/s), see docs/learning.md.
+    #[test]
+    fn a_brain_dead_fish_learns_to_swim_and_to_turn_left() {
+        let steps = 1000;
+        let schedule = AnnealingSchedule {
+            planned_evaluations: steps,
+            ..AnnealingSchedule::default()
+        };
+        let tasks = [
+            Task::SWIM_FAR,
+            Task::TurnHeading {
+                turn_rate_deg_per_sec: 30.0,
+                speed_body_lengths_per_sec: 0.2,
+            },
+        ];
+        let base = TrainingSetup::default();
+        let set = train_set(base, &tasks, schedule, &AbstractionSettings::default(), 4);
+        let map = set.motor_map().expect("a straight swim was learned");
+        let params = BodyParams::default();
+        let measure = |speed: f32, turn: f32| {
+            let mut motor = LearnedMotor::new(map.clone());
+            measure_motion_with(BodySpecies::Fish, params, MEASURE_SECS, |_| {
+                motor.step(speed, turn, params.dt_secs)
+            })
+        };
+        let (straight, left, right) = (measure(1.0, 0.0), measure(1.0, 1.0), measure(1.0, -1.0));
+        assert!(straight.speed_body_lengths_per_sec > 0.15, "{straight:?}");
+        let s = straight.turn_rate_deg_per_sec;
+        assert!(
+            left.turn_rate_deg_per_sec > s + 3.0,
+            "left {left:?}, straight {straight:?}"
+        );
+        // The right turn is the mirror image of the learned left one.
+        assert!(
+            right.turn_rate_deg_per_sec < s - 3.0,
+            "right {right:?}, straight {straight:?}"
+        );
+    }
+}
