@@ -9,6 +9,7 @@ use std::time::{Duration, Instant};
 use shoal::lab::Lab;
 use shoal::render::{FrameBuilder, OrbitCamera};
 use shoal::settings::{Scene, Settings};
+use shoal::sim::learning::Trainer;
 use shoal::sim::reef_world::ReefBodyKind;
 use shoal::sim::school_metrics::{SchoolMeter, order_parameters};
 use shoal::sim::world::SPATIAL_METRICS_EVERY_STEPS;
@@ -136,6 +137,24 @@ fn main() {
             steps_per_sec * f64::from(fish_count),
             steps_per_sec * lab.step_secs(),
             1000.0 / frames_per_sec
+        );
+    }
+
+    println!();
+    println!("Learning centre (Tu & Terzopoulos §4): simulated annealing, one forward simulation");
+    println!("per evaluation (0.5 m fish, 2.5 s interval = 45 body steps, default body):");
+    if only.is_none() {
+        let mut trainer = Trainer::benchmark();
+        trainer.run_evaluations(20);
+        let evaluations_per_sec = rate(Duration::from_secs(3), || {
+            trainer.run_evaluations(1);
+        });
+        let steps = trainer.setup().steps() as f64;
+        println!(
+            "{:>22} | {:>16}\n{evaluations_per_sec:>22.1} | {:>16.0}",
+            "evaluations/s",
+            "body steps/s",
+            evaluations_per_sec * steps
         );
     }
 

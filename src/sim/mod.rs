@@ -13,6 +13,7 @@ pub mod control_mode;
 pub mod courtship;
 pub mod environment;
 pub mod fish;
+pub mod learning;
 pub mod mind;
 pub mod motor_bridge;
 pub mod obstacle;
