@@ -82,6 +82,11 @@ pub struct ShoalApp {
     /// The reef's selected fish's retinal image: which fish, the texture, its mean
     /// brightness and when (app time, seconds) it was rendered.
     fish_eye: Option<(u32, egui::TextureHandle, f32, f64)>,
+    /// The learning lab's current drill abstracted (for Fig. 8), and when (app
+    /// time, seconds).
+    learning_abstraction: Option<(f64, crate::sim::learning::Abstraction)>,
+    /// A controllers file the user picked, read asynchronously in the browser.
+    pending_load: std::rc::Rc<std::cell::RefCell<Option<Result<String, String>>>>,
     ctx: egui::Context,
 }
 
@@ -96,7 +101,7 @@ fn selected_of(settings: &Settings) -> Option<u32> {
     match settings.scene {
         Scene::Physics => settings.physics.selected,
         Scene::Reef => settings.reef.selected,
-        Scene::Aquarium | Scene::Boids => None,
+        Scene::Aquarium | Scene::Boids | Scene::Learning => None,
     }
 }
 
@@ -137,6 +142,8 @@ impl ShoalApp {
             dragging: None,
             following: false,
             fish_eye: None,
+            learning_abstraction: None,
+            pending_load: Default::default(),
             ctx: cc.egui_ctx.clone(),
         })
     }
@@ -364,7 +371,7 @@ impl ShoalApp {
         let follow = match settings.scene {
             Scene::Physics => settings.physics.follow,
             Scene::Reef => settings.reef.follow,
-            Scene::Aquarium | Scene::Boids => false,
+            Scene::Aquarium | Scene::Boids | Scene::Learning => false,
         };
         let Some(selected) = selected_of(settings).filter(|_| follow) else {
             self.following = false;
@@ -684,8 +691,94 @@ impl ShoalApp {
                     settings.tank_mut(self.panel.edit_side).obstacles = None;
                     self.lab.apply_settings(settings);
                 }
+                PanelAction::ResetTraining => {
+                    self.lab.reset_training();
+                    self.learning_abstraction = None;
+                }
+                PanelAction::StartRace => {
+                    let result = self
+                        .lab
+                        .learning_mut()
+                        .ok_or_else(|| "Open the learning lab first.".to_owned())
+                        .and_then(|l| l.start_race());
+                    if let Err(reason) = result {
+                        self.notice = Some(Notice {
+                            text: format!("No race yet: {reason}."),
+                            is_error: false,
+                        });
+                    }
+                }
+                PanelAction::SaveControllers => {
+                    let message = self.controllers_json().and_then(|json| {
+                        save_text_file("shoal-controllers.json", "application/json", &json)
+                    });
+                    self.notice = Some(Notice {
+                        is_error: message.is_err(),
+                        text: message.unwrap_or_else(|e| e),
+                    });
+                }
+                PanelAction::LoadControllers => self.open_controllers_file(),
             }
         }
+    }
+
+    /// The learned controllers in use, as JSON (`shoal.save_controllers()`).
+    pub fn controllers_json(&self) -> Result<String, String> {
+        self.lab.runs()[0]
+            .learning()
+            .ok_or_else(|| "save_controllers() works in the learning lab only".to_owned())?
+            .save_json()
+    }
+
+    /// Opens a controllers file: the browser's file dialog (the text arrives in a
+    /// later frame, see [`Self::apply_loaded_controllers`]); natively
+    /// `shoal-controllers.json` in the working folder.
+    fn open_controllers_file(&mut self) {
+        #[cfg(target_arch = "wasm32")]
+        {
+            let ctx = self.ctx.clone();
+            if let Err(err) = crate::web::pick_text_file(
+                ".json,application/json",
+                self.pending_load.clone(),
+                move || {
+                    ctx.request_repaint();
+                },
+            ) {
+                self.notice = Some(Notice {
+                    text: format!("The file dialog did not open: {err}"),
+                    is_error: true,
+                });
+            }
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let text = std::fs::read_to_string("shoal-controllers.json")
+                .map_err(|err| format!("could not read shoal-controllers.json: {err}"));
+            *self.pending_load.borrow_mut() = Some(text);
+        }
+    }
+
+    /// Uses a controllers file the user picked, or says why it cannot be used.
+    fn apply_loaded_controllers(&mut self) {
+        let Some(text) = self.pending_load.borrow_mut().take() else {
+            return;
+        };
+        let result = text.and_then(|text| {
+            self.lab
+                .learning_mut()
+                .ok_or_else(|| "open the learning lab first".to_owned())
+                .and_then(|l| l.load_json(&text))
+        });
+        self.notice = Some(match result {
+            Ok(()) => Notice {
+                text: "Controllers loaded: the swimmer now uses them.".to_owned(),
+                is_error: false,
+            },
+            Err(reason) => Notice {
+                text: format!("That file cannot be used, nothing was changed: {reason}"),
+                is_error: true,
+            },
+        });
     }
 
     fn notice_ui(&mut self, ui: &mut egui::Ui) {
@@ -830,6 +923,22 @@ fn draw_vision(
 
 /// Saves the CSV: a browser download on the web, a file in the working folder on
 /// the desktop. Returns the message for the user.
+fn save_text_file(name: &str, mime: &str, text: &str) -> Result<String, String> {
+    #[cfg(target_arch = "wasm32")]
+    {
+        crate::web::download_text(name, mime, text)
+            .map(|()| format!("Downloading {name}."))
+            .map_err(|err| format!("The download did not start: {err}"))
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let _ = mime;
+        std::fs::write(name, text)
+            .map(|()| format!("Saved {name} in the folder Shoal was started from."))
+            .map_err(|err| format!("Could not save {name}: {err}"))
+    }
+}
+
 fn save_csv(csv: &str) -> Result<String, String> {
     let name = "shoal-metrics.csv";
     #[cfg(target_arch = "wasm32")]
@@ -937,6 +1046,27 @@ impl eframe::App for ShoalApp {
             }
         }
 
+        if self.lab.settings().scene == Scene::Learning {
+            self.apply_loaded_controllers();
+            let stale = self
+                .learning_abstraction
+                .as_ref()
+                .is_none_or(|(at, _)| now_secs - at > 0.5);
+            if stale && let Some(l) = self.lab.runs()[0].learning() {
+                self.learning_abstraction = Some((now_secs, l.current_abstraction()));
+            }
+            egui::Panel::bottom("learning_plots")
+                .resizable(true)
+                .default_size(240.0)
+                .show(ui, |ui| {
+                    crate::ui::learning_panel::learning_plots_ui(
+                        ui,
+                        &self.lab.runs()[0],
+                        self.learning_abstraction.as_ref().map(|(_, a)| a),
+                        &mut self.widget_rects,
+                    );
+                });
+        }
         if self.lab.settings().scene == Scene::Reef {
             let selected = self.lab.settings().reef.selected;
             self.refresh_fish_eye(now_secs, selected);

@@ -38,7 +38,17 @@ pub enum Command {
     Play,
     Reset(Option<u64>),
     Turn(f32),
+    /// Learning lab: run this many annealing steps now.
+    Train(u32),
+    /// Learning lab: start the race.
+    Race,
+    /// Learning lab: use the learned controllers in this JSON text.
+    LoadControllers(String),
 }
+
+/// Most annealing steps one `shoal.train(n)` call may ask for (a drill of the
+/// paper's longest training).
+pub const MAX_TRAIN_PER_CALL: u32 = 20_000;
 
 /// Why a call was refused.
 #[derive(Debug, thiserror::Error, PartialEq)]
@@ -86,6 +96,26 @@ impl Command {
         }
     }
 
+    /// `shoal.train(n)`.
+    pub fn train(n: Option<&Value>) -> Result<Self, AutomationError> {
+        match n {
+            None | Some(Value::Null) => Ok(Self::Train(1)),
+            Some(value) => whole_number(value, 1, u64::from(MAX_TRAIN_PER_CALL))
+                .map(|n| Self::Train(n as u32))
+                .map_err(|reason| AutomationError::BadArgument(format!("train(n): {reason}"))),
+        }
+    }
+
+    /// `shoal.load_controllers(text)`.
+    pub fn load_controllers(text: Option<&Value>) -> Result<Self, AutomationError> {
+        match text.and_then(Value::as_str) {
+            Some(text) => Ok(Self::LoadControllers(text.to_owned())),
+            None => Err(AutomationError::BadArgument(
+                "load_controllers(text): expected the text of a saved controllers file".to_owned(),
+            )),
+        }
+    }
+
     /// Carries the command out on `lab`.
     pub fn execute(self, lab: &mut Lab) -> Result<(), AutomationError> {
         match self {
@@ -106,6 +136,19 @@ impl Command {
             Self::Turn(deg) => lab
                 .turn_selected(deg)
                 .map_err(AutomationError::BadArgument)?,
+            Self::Train(n) => {
+                lab.train(n).map_err(AutomationError::BadArgument)?;
+            }
+            Self::Race => lab
+                .learning_mut()
+                .ok_or_else(|| "race() works in the learning lab only".to_owned())
+                .and_then(|l| l.start_race())
+                .map_err(AutomationError::BadArgument)?,
+            Self::LoadControllers(text) => lab
+                .learning_mut()
+                .ok_or_else(|| "load_controllers() works in the learning lab only".to_owned())
+                .and_then(|l| l.load_json(&text))
+                .map_err(|e| AutomationError::BadArgument(format!("load_controllers: {e}")))?,
         }
         Ok(())
     }
@@ -162,6 +205,9 @@ pub struct StateReport {
     /// The reef scene: counts, the selected fish's mind, the latest events.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reef: Option<ReefReport>,
+    /// The learning lab: training progress, the controllers in use, race, buoys.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub learning: Option<LearningReport>,
     /// Benchmark progress and results, in `?bench` mode only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bench: Option<crate::bench::BenchReport>,
@@ -360,6 +406,76 @@ impl ReefReport {
     }
 }
 
+/// The learning lab as `shoal.state().learning` reports it.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct LearningReport {
+    /// The drill in training (0-based), `null` when all are learned.
+    pub drill: Option<usize>,
+    pub drills: usize,
+    /// Whole training, 0–1.
+    pub progress: f32,
+    /// Annealing steps done in the current drill.
+    pub evaluations: u64,
+    pub annealing_steps: u64,
+    /// E of the best and of the current controls of the current drill.
+    pub best_objective: f32,
+    pub current_objective: f32,
+    /// E at the random start of the current drill.
+    pub start_objective: f32,
+    /// Drills learned: their objective and the energy kept by two modes.
+    pub finished: Vec<(f32, f32)>,
+    /// `"shipped"`, `"trained_here"` or `"loaded"`.
+    pub source: crate::sim::learning::learning_lab::SetSource,
+    pub controller: crate::sim::learning::learning_lab::ControllerChoice,
+    /// Seconds at which the swimmer reached a buoy.
+    pub buoy_times_secs: Vec<f32>,
+    /// The race: annealing steps and distance of each shark.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub race: Option<Vec<(u64, f32)>>,
+    /// Entrants ready for a race.
+    pub race_entrants: usize,
+}
+
+impl LearningReport {
+    fn new(lab: &Lab) -> Option<Self> {
+        let l = lab.runs()[0].learning()?;
+        let t = l.trainer();
+        let (_, source) = l.learned_set();
+        Some(Self {
+            drill: l.current_drill(),
+            drills: l.drills().len(),
+            progress: l.progress(),
+            evaluations: t.evaluations(),
+            annealing_steps: l.annealing_steps(),
+            best_objective: t.best_evaluation().objective,
+            current_objective: t.current_objective(),
+            start_objective: t
+                .history()
+                .first()
+                .map_or(t.current_objective(), |h| h.current_objective),
+            finished: (0..l.finished_drills().len())
+                .map(|k| {
+                    (
+                        l.finished_drills()[k].objective,
+                        l.abstraction(k)
+                            .map_or(0.0, |a| a.controller.energy_fraction),
+                    )
+                })
+                .collect(),
+            source,
+            controller: l.controller(),
+            buoy_times_secs: l.buoy_times_secs(),
+            race: l.race().map(|r| {
+                r.entrants()
+                    .map(|e| e.annealing_steps)
+                    .zip(r.distances_m())
+                    .collect()
+            }),
+            race_entrants: l.race_entrants().len(),
+        })
+    }
+}
+
 /// The orbit camera, as `shoal.state().camera` reports it.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct CameraReport {
@@ -396,6 +512,7 @@ impl StateReport {
             camera: None,
             physics: PhysicsReport::new(lab),
             reef: ReefReport::new(lab),
+            learning: LearningReport::new(lab),
             bench: None,
         }
     }

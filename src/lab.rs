@@ -12,6 +12,7 @@ use crate::clock::{FixedStepClock, RateMeter};
 use crate::metrics_history::{MetricsHistory, MetricsSample, SAMPLE_EVERY_STEPS};
 use crate::settings::{Scene, Settings, Side};
 use crate::sim::body::{MUSCLE_COUNT, NODE_COUNT};
+use crate::sim::learning::learning_lab::LearningLab;
 use crate::sim::reef_world::{ReefBody, ReefWorld};
 use crate::sim::{HandCommand, PhysicsConfig, PhysicsWorld, World, WorldConfig};
 
@@ -41,6 +42,9 @@ pub struct Run {
     physics: Option<PhysicsWorld>,
     /// The fish with minds of the reef scene.
     reef: Option<ReefWorld>,
+    /// The learning lab's training, demo fish and race (kept by the `Lab` while
+    /// another scene is shown, so progress survives a visit elsewhere).
+    learning: Option<LearningLab>,
     /// Node positions of every physical animal before the last step.
     previous_nodes_m: Vec<[Vec3; NODE_COUNT]>,
     /// The selected physical fish's last seconds, and which fish it is.
@@ -69,11 +73,16 @@ impl Run {
             // The boid world only holds the tank and the reef's rocks, for drawing.
             world.set_obstacles(reef.obstacles().to_vec());
         }
+        if settings.scene == Scene::Learning {
+            // Open water for the learners: no rocks.
+            world.set_obstacles(Vec::new());
+        }
         let mut run = Self {
             side,
             world,
             physics,
             reef,
+            learning: None,
             previous_nodes_m: Vec::new(),
             body_trace: VecDeque::new(),
             traced: None,
@@ -100,8 +109,26 @@ impl Run {
         self.reef.as_ref()
     }
 
+    /// The learning lab, in its scene.
+    pub fn learning(&self) -> Option<&LearningLab> {
+        self.learning.as_ref()
+    }
+
+    /// The muscle bodies of the learning scene (the demo fish, then the racing
+    /// sharks) now, tank frame.
+    fn learning_nodes(&self) -> Vec<[Vec3; NODE_COUNT]> {
+        self.learning.as_ref().map_or_else(Vec::new, |l| {
+            std::iter::once(l.demo_nodes_m())
+                .chain(l.race_nodes_m().into_iter().map(|(_, n)| n))
+                .collect()
+        })
+    }
+
     /// Simulated seconds since the run began.
     pub fn time_secs(&self) -> f64 {
+        if self.learning.is_some() {
+            return self.steps() as f64 * step_secs(Scene::Learning);
+        }
         match (&self.physics, &self.reef) {
             (Some(physics), _) => physics.time_secs(),
             (_, Some(reef)) => reef.time_secs(),
@@ -111,6 +138,9 @@ impl Run {
 
     /// Steps since the run began.
     pub fn steps(&self) -> u64 {
+        if let Some(l) = &self.learning {
+            return l.demo_steps();
+        }
         match (&self.physics, &self.reef) {
             (Some(physics), _) => physics.steps(),
             (_, Some(reef)) => reef.steps(),
@@ -131,6 +161,9 @@ impl Run {
     /// The nodes of muscle-driven animal `index` (physics scene, or a reef
     /// animal with the muscle body).
     fn nodes_now(&self, index: usize) -> Option<[Vec3; NODE_COUNT]> {
+        if self.learning.is_some() {
+            return self.learning_nodes().get(index).copied();
+        }
         if let Some(physics) = &self.physics {
             return physics.animals().get(index).map(|a| a.nodes_m());
         }
@@ -213,6 +246,15 @@ impl Run {
     }
 
     fn step(&mut self, snapshot: bool) {
+        if self.learning.is_some() {
+            if snapshot {
+                self.previous_nodes_m = self.learning_nodes();
+            }
+            if let Some(learning) = &mut self.learning {
+                learning.step();
+            }
+            return;
+        }
         if let Some(reef) = &mut self.reef {
             if snapshot {
                 self.previous_nodes_m.clear();
@@ -492,7 +534,15 @@ pub struct Lab {
     frame_budget_secs: Option<f64>,
     /// Smoothed wall-clock cost of one step of every tank, seconds.
     step_cost_secs: f64,
+    /// The learning lab while another scene is shown.
+    parked_learning: Option<LearningLab>,
+    /// Smoothed wall-clock cost of one annealing evaluation, seconds.
+    evaluation_cost_secs: f64,
 }
+
+/// Share of the frame budget that training may use in the learning scene (0.5:
+/// the rest draws the demo fish and the plots).
+const TRAINING_SHARE_OF_BUDGET: f64 = 0.5;
 
 /// The frame budget the app uses, seconds. Default 0.025 s: with drawing and the
 /// UI a frame stays near 30 frames/s or better, so the camera and sliders stay
@@ -513,6 +563,8 @@ impl Lab {
             rebuilds: 0,
             frame_budget_secs: None,
             step_cost_secs: 0.0,
+            parked_learning: None,
+            evaluation_cost_secs: 0.0,
         };
         lab.rebuild();
         lab
@@ -557,8 +609,15 @@ impl Lab {
         new.settle(&self.settings);
         new.clamp();
         let before = std::mem::replace(&mut self.settings, new);
+        if self.settings.scene == Scene::Learning
+            && before.learning.controller != self.settings.learning.controller
+            && let Some(l) = self.runs[0].learning.as_mut()
+        {
+            l.set_controller(self.settings.learning.controller);
+        }
         let rebuild = before.seed != self.settings.seed
             || before.scene != self.settings.scene
+            || before.learning.training_key() != self.settings.learning.training_key()
             || (self.settings.scene == Scene::Reef
                 && before.reef.rebuild_key() != self.settings.reef.rebuild_key())
             || self.runs.len() != self.wanted_runs();
@@ -580,6 +639,9 @@ impl Lab {
     }
 
     fn rebuild(&mut self) {
+        if let Some(l) = self.runs.first_mut().and_then(|r| r.learning.take()) {
+            self.parked_learning = Some(l);
+        }
         let max_steps = self.clock.max_steps_per_frame;
         self.clock = FixedStepClock::new(step_secs(self.settings.scene));
         self.clock.max_steps_per_frame = max_steps;
@@ -591,7 +653,76 @@ impl Lab {
                 Run::new(side, &self.settings, self.rebuilds)
             })
             .collect();
+        if self.settings.scene == Scene::Learning {
+            let wanted = &self.settings.learning;
+            let keep = self.parked_learning.take().filter(|l| {
+                l.species() == wanted.species
+                    && l.annealing_steps() == u64::from(wanted.annealing_steps)
+                    && l.seed() == self.settings.seed
+            });
+            let mut learning = keep.unwrap_or_else(|| {
+                LearningLab::new(
+                    wanted.species,
+                    u64::from(wanted.annealing_steps),
+                    self.settings.seed,
+                    wanted.controller,
+                    self.runs[0].world.tank(),
+                )
+            });
+            if learning.controller() != wanted.controller {
+                learning.set_controller(wanted.controller);
+            }
+            self.runs[0].learning = Some(learning);
+        }
         self.clock.clear();
+    }
+
+    /// Runs `n` annealing evaluations of the learning lab now (`shoal.train(n)`).
+    pub fn train(&mut self, n: u32) -> Result<u32, String> {
+        let Some(l) = self.runs[0].learning.as_mut() else {
+            return Err("train() works in the learning lab only".to_owned());
+        };
+        Ok(l.train(n as usize) as u32)
+    }
+
+    /// Starts the learning lab's training again from a brain-dead fish.
+    pub fn reset_training(&mut self) {
+        if self.settings.scene == Scene::Learning {
+            self.parked_learning = None;
+            self.runs[0].learning = None;
+            self.rebuild();
+        }
+    }
+
+    /// The learning lab, for the app's actions (race, save, load).
+    pub fn learning_mut(&mut self) -> Option<&mut LearningLab> {
+        self.runs[0].learning.as_mut()
+    }
+
+    /// Trains for a share of the frame budget while `learning.training` is on.
+    fn train_for_frame(&mut self) {
+        if !self.settings.learning.training || self.settings.paused {
+            return;
+        }
+        let budget = self.frame_budget_secs.unwrap_or(0.02) * TRAINING_SHARE_OF_BUDGET;
+        let n = if self.evaluation_cost_secs > 0.0 {
+            ((budget / self.evaluation_cost_secs).floor() as usize).clamp(1, 200)
+        } else {
+            1
+        };
+        let Some(l) = self.runs[0].learning.as_mut() else {
+            return;
+        };
+        let started = web_time::Instant::now();
+        let done = l.train(n);
+        if done > 0 {
+            let cost = started.elapsed().as_secs_f64() / done as f64;
+            self.evaluation_cost_secs = if self.evaluation_cost_secs > 0.0 {
+                0.8 * self.evaluation_cost_secs + 0.2 * cost
+            } else {
+                cost
+            };
+        }
     }
 
     /// Rebuilds the worlds from `seed` (or the current seed), keeping every other
@@ -628,6 +759,7 @@ impl Lab {
             self.clock
                 .steps_for_frame(frame_secs, f64::from(self.settings.speed))
         };
+        self.train_for_frame();
         let started = web_time::Instant::now();
         self.run_steps(steps);
         if steps > 0 {
@@ -719,6 +851,7 @@ fn step_secs(scene: Scene) -> f64 {
     match scene {
         Scene::Physics => f64::from(crate::sim::body::BodyParams::default().dt_secs),
         Scene::Reef => f64::from(crate::sim::reef_world::POINT_BODY_DT_SECS),
+        Scene::Learning => f64::from(crate::sim::body::BodyParams::default().dt_secs),
         Scene::Aquarium | Scene::Boids => f64::from(World::DT_SECS),
     }
 }
@@ -740,11 +873,11 @@ fn world_config(settings: &Settings, side: Side) -> WorldConfig {
     let boids = settings.scene == Scene::Boids;
     WorldConfig {
         seed: settings.seed,
-        // In the physics scene the boid world only holds the tank and its rocks.
-        fish_count: if settings.scene == Scene::Physics {
-            0
-        } else {
+        // In the other scenes the boid world only holds the tank and its rocks.
+        fish_count: if matches!(settings.scene, Scene::Aquarium | Scene::Boids) {
             tank.fish_count as usize
+        } else {
+            0
         },
         // Predators, stingrays and edited rocks belong to the schooling lab.
         sharks: if boids { tank.sharks as usize } else { 0 },
@@ -956,6 +1089,46 @@ mod tests {
             let now = run.reef().unwrap().animals()[i].body.position_m();
             assert!(c.distance(now) < 0.1);
         }
+    }
+
+    #[test]
+    fn the_learning_lab_trains_on_request_and_keeps_its_progress_across_scenes() {
+        let mut settings = Settings {
+            scene: Scene::Learning,
+            ..Settings::default()
+        };
+        settings.learning.annealing_steps = 90;
+        let mut lab = Lab::new(settings);
+        assert!(lab.world().fish().is_empty() && lab.world().obstacles().is_empty());
+        assert_eq!(lab.train(30), Ok(30));
+        lab.step(10);
+        assert_eq!(lab.runs()[0].steps(), 10, "the swimmer swims");
+        assert!(lab.runs()[0].drawn_nodes_m(0, 0.5).iter().all(|p| p.is_finite()));
+        // To the reef and back: the training is where it was.
+        let mut s = lab.settings().clone();
+        s.scene = Scene::Reef;
+        lab.apply_settings(s);
+        assert!(lab.train(1).is_err(), "train() needs the learning lab");
+        let mut s = lab.settings().clone();
+        s.scene = Scene::Learning;
+        lab.apply_settings(s);
+        assert_eq!(lab.runs()[0].learning().unwrap().trainer().evaluations(), 30);
+        // Training runs a little each frame while it is on.
+        let mut s = lab.settings().clone();
+        s.learning.training = true;
+        lab.apply_settings(s);
+        lab.advance_frame(0.1, 0.1);
+        lab.advance_frame(0.1, 0.2);
+        assert!(lab.runs()[0].learning().unwrap().trainer().evaluations() > 30);
+        // A different length, or Reset training, starts from a brain-dead fish.
+        lab.reset_training();
+        assert_eq!(lab.runs()[0].learning().unwrap().trainer().evaluations(), 0);
+        let mut s = lab.settings().clone();
+        s.learning.annealing_steps = 120;
+        lab.train(5).unwrap();
+        lab.apply_settings(s);
+        assert_eq!(lab.runs()[0].learning().unwrap().annealing_steps(), 120);
+        assert_eq!(lab.runs()[0].learning().unwrap().trainer().evaluations(), 0);
     }
 
     #[test]

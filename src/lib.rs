@@ -12,6 +12,7 @@ pub mod automation;
 pub mod bench;
 pub mod clock;
 pub mod lab;
+pub mod learning_settings;
 pub mod metrics_history;
 pub mod physics_settings;
 pub mod reef_settings;

@@ -7,6 +7,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::learning_settings::LearningSettings;
 use crate::physics_settings::PhysicsSettings;
 use crate::reef_settings::ReefSettings;
 use crate::sim::Tank;
@@ -28,10 +29,19 @@ pub enum Scene {
     /// Fish with minds (Tu & Terzopoulos §5–7): they see, get hungry, flee, school,
     /// hunt and court.
     Reef,
+    /// Fish that learn to swim (Tu & Terzopoulos §4): simulated annealing of the
+    /// muscle controls, their Fourier abstraction, the race, buoy tracking.
+    Learning,
 }
 
 impl Scene {
-    pub const ALL: [Self; 4] = [Self::Aquarium, Self::Boids, Self::Physics, Self::Reef];
+    pub const ALL: [Self; 5] = [
+        Self::Aquarium,
+        Self::Boids,
+        Self::Physics,
+        Self::Reef,
+        Self::Learning,
+    ];
 
     /// The name used in the automation API and share links.
     pub fn name(self) -> &'static str {
@@ -40,6 +50,7 @@ impl Scene {
             Self::Boids => "boids",
             Self::Physics => "physics",
             Self::Reef => "reef",
+            Self::Learning => "learning",
         }
     }
 
@@ -50,6 +61,7 @@ impl Scene {
             Self::Boids => "Schooling lab",
             Self::Physics => "Physics fish",
             Self::Reef => "Reef",
+            Self::Learning => "Learning lab",
         }
     }
 
@@ -68,6 +80,10 @@ impl Scene {
             Self::Reef => {
                 "Fish that see, get hungry, get scared and fall in love. Each one decides what \
                  to do next from what it sees and how it feels. Click a fish to look inside its head."
+            }
+            Self::Learning => {
+                "A fish that does not know how to swim tries random muscle moves, keeps what \
+                 works and slowly learns to swim and turn, like practising a new sport."
             }
         }
     }
@@ -133,6 +149,9 @@ pub struct Settings {
     /// The reef scene (fish with minds). Links made before it existed lack it.
     #[serde(default)]
     pub reef: ReefSettings,
+    /// The learning lab. Links made before it existed lack it.
+    #[serde(default)]
+    pub learning: LearningSettings,
 }
 
 impl Default for Settings {
@@ -150,6 +169,7 @@ impl Default for Settings {
             right: TankSettings::with_preset(Preset::Group),
             physics: PhysicsSettings::default(),
             reef: ReefSettings::default(),
+            learning: LearningSettings::default(),
         }
     }
 }
@@ -223,6 +243,9 @@ impl Settings {
         if let Err((key, reason)) = self.reef.validate("reef.") {
             return invalid(&key, reason);
         }
+        if let Err((key, reason)) = self.learning.validate("learning.") {
+            return invalid(&key, reason);
+        }
         Ok(())
     }
 
@@ -239,6 +262,7 @@ impl Settings {
         self.right.clamp(&tank);
         self.physics.clamp();
         self.reef.clamp();
+        self.learning.clamp();
     }
 
     /// Makes each tank's preset label true after an edit (see

@@ -122,6 +122,20 @@ mod tests {
             right: random_tank(rng),
             physics: random_physics(rng),
             reef: random_reef(rng),
+            learning: crate::learning_settings::LearningSettings {
+                species: if rng.random_bool(0.5) {
+                    crate::sim::BodySpecies::Fish
+                } else {
+                    crate::sim::BodySpecies::Shark
+                },
+                annealing_steps: rng.random_range(90..=20_000),
+                training: rng.random_bool(0.5),
+                controller: if rng.random_bool(0.5) {
+                    crate::sim::learning::learning_lab::ControllerChoice::Learned
+                } else {
+                    crate::sim::learning::learning_lab::ControllerChoice::HandTuned
+                },
+            },
         }
     }
 

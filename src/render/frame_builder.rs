@@ -89,6 +89,18 @@ fn build_bodies(
             .enumerate()
             .map(|(i, a)| (i, a.species, a.hue))
             .collect()
+    } else if let Some(learning) = run.learning() {
+        mesh::append_particles(
+            out,
+            &learning.buoys_m(),
+            BUOY_DRAWN_RADIUS_M,
+            mesh::BUOY_RGB,
+        );
+        let species = learning.species();
+        let racers = learning.race_nodes_m().len();
+        std::iter::once((0, species, 0.1))
+            .chain((1..=racers).map(|k| (k, species, 0.55 + 0.05 * k as f32)))
+            .collect()
     } else if let Some(reef) = run.reef() {
         append_reef_scenery(reef, out);
         reef.animals()
@@ -142,6 +154,8 @@ fn append_reef_scenery(reef: &ReefWorld, out: &mut Mesh) {
 /// Drawn radius of a plankton particle, metres (larger than life, 4 cm, so a
 /// class sees it from across the tank).
 const PLANKTON_DRAWN_RADIUS_M: f32 = 0.04;
+/// Drawn radius of a buoy of the learning lab, metres.
+const BUOY_DRAWN_RADIUS_M: f32 = 0.15;
 /// Width of a seaweed blade, metres.
 const SEAWEED_WIDTH_M: f32 = 0.12;
 

@@ -784,6 +784,8 @@ pub fn tank_frame(tank: &Tank) -> Mesh {
 
 /// Colour of plankton particles (linear RGB): pale gold, easy to spot.
 pub const FOOD_RGB: [f32; 3] = [0.98, 0.88, 0.45];
+/// Colour of the learning lab's buoys (linear RGB): signal orange.
+pub const BUOY_RGB: [f32; 3] = [1.0, 0.45, 0.1];
 /// Colour of seaweed (linear RGB).
 pub const SEAWEED_RGB: [f32; 3] = [0.16, 0.5, 0.2];
 

@@ -88,6 +88,14 @@ pub enum PanelAction {
     RestoreObstacles,
     /// Physics scene: the selected fish starts a turn of this many degrees (+ left).
     Turn(f32),
+    /// Learning lab: forget the training.
+    ResetTraining,
+    /// Learning lab: start the race.
+    StartRace,
+    /// Learning lab: download the learned controllers.
+    SaveControllers,
+    /// Learning lab: open a controllers file.
+    LoadControllers,
 }
 
 /// Draws the control panel, editing `settings` in place, and records where the

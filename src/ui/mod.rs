@@ -3,6 +3,7 @@
 
 pub mod body_overlay;
 mod control_panel;
+pub mod learning_panel;
 mod metrics_panel;
 mod physics_panel;
 pub mod reef_overlay;

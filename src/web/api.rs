@@ -15,7 +15,7 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 12] = [
+    let methods: [(&str, Box<Method>); 16] = [
         ("state", Box::new(|app, _| to_json(&app.state_report()))),
         (
             "share_link",
@@ -75,6 +75,36 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
             Box::new(|app, arg| {
                 app.run_command(Command::turn(arg.as_ref())?)?;
                 Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "train",
+            Box::new(|app, arg| {
+                app.run_command(Command::train(arg.as_ref())?)?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "race",
+            Box::new(|app, _| {
+                app.run_command(Command::Race)?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "load_controllers",
+            Box::new(|app, arg| {
+                app.run_command(Command::load_controllers(arg.as_ref())?)?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "save_controllers",
+            Box::new(|app, _| {
+                let text = app
+                    .controllers_json()
+                    .map_err(AutomationError::BadArgument)?;
+                Ok(serde_json::Value::String(text))
             }),
         ),
     ];

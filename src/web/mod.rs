@@ -7,7 +7,7 @@ mod page;
 use crate::ShoalApp;
 use crate::settings::Settings;
 
-pub use page::download_text;
+pub use page::{download_text, pick_text_file};
 
 /// Starts Shoal in the page. Called once from `main`.
 pub async fn start() {

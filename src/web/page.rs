@@ -124,6 +124,47 @@ pub fn download_text(name: &str, mime: &str, text: &str) -> Result<(), String> {
     Ok(())
 }
 
+/// Opens the browser's file dialog for one text file; when the user picks one,
+/// its text (or a reason it could not be read) is put in `into` and
+/// `on_done` runs (the app then repaints).
+pub fn pick_text_file(
+    accept: &str,
+    into: std::rc::Rc<std::cell::RefCell<Option<Result<String, String>>>>,
+    on_done: impl Fn() + 'static,
+) -> Result<(), String> {
+    use wasm_bindgen::closure::Closure;
+    let describe = |err: wasm_bindgen::JsValue| format!("{err:?}");
+    let document = document().ok_or("no document")?;
+    let input: web_sys::HtmlInputElement = document
+        .create_element("input")
+        .map_err(describe)?
+        .dyn_into()
+        .map_err(|_| "not an input".to_owned())?;
+    input.set_type("file");
+    input.set_accept(accept);
+    let picked = input.clone();
+    let on_change = Closure::once(move |_event: web_sys::Event| {
+        let Some(file) = picked.files().and_then(|files| files.get(0)) else {
+            return;
+        };
+        let into = into.clone();
+        wasm_bindgen_futures::spawn_local(async move {
+            let text = wasm_bindgen_futures::JsFuture::from(file.text()).await;
+            *into.borrow_mut() = Some(match text {
+                Ok(value) => value
+                    .as_string()
+                    .ok_or_else(|| "the file is not text".to_owned()),
+                Err(err) => Err(format!("the file could not be read: {err:?}")),
+            });
+            on_done();
+        });
+    });
+    input.set_onchange(Some(on_change.as_ref().unchecked_ref()));
+    on_change.forget();
+    input.click();
+    Ok(())
+}
+
 /// The page's address without its fragment (for share links).
 pub fn url_without_fragment() -> Option<String> {
     let location = web_sys::window()?.location();

@@ -39,6 +39,7 @@ pub mod annealing;
 mod figures;
 pub mod learned_motor;
 pub mod learned_set;
+pub mod learning_lab;
 pub mod muscle_spline;
 pub mod objective;
 pub mod race;

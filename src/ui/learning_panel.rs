@@ -1,0 +1,366 @@
+//! The "Learning lab" scene's controls (who learns, how long, start/pause/reset,
+//! which controllers drive the demo fish, the race, saving and loading) and its
+//! plots: training progress, the objective over the annealing steps, and Fig. 8's
+//! three rows (learned controls, primary Fourier modes, abstracted controls).
+
+use eframe::egui;
+use egui_plot::{Legend, Line, Plot, PlotPoints};
+
+use super::WidgetRects;
+use super::body_overlay::muscle_color;
+use super::control_panel::PanelAction;
+use crate::lab::Run;
+use crate::learning_settings::{ANNEALING_STEPS_MAX, ANNEALING_STEPS_MIN, LearningSettings};
+use crate::sim::BodySpecies;
+use crate::sim::body::body_layout::muscle_index;
+use crate::sim::body::{MuscleSegment, Side};
+use crate::sim::learning::learning_lab::{ControllerChoice, LearningLab, SetSource};
+use crate::sim::learning::{Abstraction, Task};
+
+/// A drill in words.
+pub fn drill_label(task: &Task) -> String {
+    match *task {
+        Task::ReachTarget { .. } => "swim as far as it can".to_owned(),
+        Task::HoldSpeed {
+            speed_body_lengths_per_sec,
+        } => format!("swim straight at {speed_body_lengths_per_sec} body lengths/s"),
+        Task::TurnHeading {
+            turn_rate_deg_per_sec,
+            ..
+        } => format!(
+            "turn {} at {}°/s",
+            if turn_rate_deg_per_sec >= 0.0 {
+                "left"
+            } else {
+                "right"
+            },
+            turn_rate_deg_per_sec.abs()
+        ),
+    }
+}
+
+/// The learning lab's section of the control panel.
+pub fn learning_controls_ui(
+    ui: &mut egui::Ui,
+    learning: &mut LearningSettings,
+    rects: &mut WidgetRects,
+) -> Vec<PanelAction> {
+    let mut actions = Vec::new();
+    ui.separator();
+    ui.label(egui::RichText::new("Learning to swim").strong());
+    egui::Grid::new("learning_grid")
+        .num_columns(2)
+        .spacing([8.0, 6.0])
+        .show(ui, |ui| {
+            let help = "Who learns. A shark is the same body, twice as long";
+            ui.label("Learner").on_hover_text(help);
+            ui.horizontal(|ui| {
+                for (species, label, name) in [
+                    (BodySpecies::Fish, "Fish", "learning_fish"),
+                    (BodySpecies::Shark, "Shark", "learning_shark"),
+                ] {
+                    let r = ui
+                        .radio_value(&mut learning.species, species, label)
+                        .on_hover_text(help);
+                    rects.insert(name, r.rect);
+                }
+            });
+            ui.end_row();
+            let help = "How many tries the fish gets for each drill. More tries, better \
+                        swimming (the paper's best shark had 6840). Changing it starts again";
+            ui.label("Tries per drill").on_hover_text(help);
+            let r = ui
+                .add(
+                    egui::Slider::new(
+                        &mut learning.annealing_steps,
+                        ANNEALING_STEPS_MIN..=ANNEALING_STEPS_MAX,
+                    )
+                    .logarithmic(true),
+                )
+                .on_hover_text(help);
+            rects.insert("learning_steps", r.rect);
+            ui.end_row();
+        });
+    ui.horizontal(|ui| {
+        let label = if learning.training {
+            "Pause training"
+        } else {
+            "Start training"
+        };
+        let r = ui.button(label).on_hover_text(
+            "The fish practises a little every frame: it changes its muscle timing at random, \
+             keeps changes that take it farther, and sometimes keeps a worse one to explore",
+        );
+        rects.insert("learning_train", r.rect);
+        if r.clicked() {
+            learning.training = !learning.training;
+        }
+        let r = ui
+            .button("Reset training")
+            .on_hover_text("Forget everything: the fish is brain-dead again");
+        rects.insert("learning_reset", r.rect);
+        if r.clicked() {
+            actions.push(PanelAction::ResetTraining);
+            learning.training = false;
+        }
+    });
+    let help = "Which controllers swim the fish between the two orange buoys: the hand-tuned \
+                ones its designers wrote, or the ones it learned by itself";
+    ui.label("The swimmer between the buoys uses")
+        .on_hover_text(help);
+    ui.horizontal(|ui| {
+        for (choice, label, name) in [
+            (ControllerChoice::Learned, "Learned", "learning_learned"),
+            (
+                ControllerChoice::HandTuned,
+                "Hand-tuned",
+                "learning_hand_tuned",
+            ),
+        ] {
+            let r = ui
+                .radio_value(&mut learning.controller, choice, label)
+                .on_hover_text(help);
+            rects.insert(name, r.rect);
+        }
+    });
+    ui.horizontal(|ui| {
+        let r = ui.button("Run the race").on_hover_text(
+            "Copies of the fish, saved after more and more tries of the first drill, race \
+             from the same start line (the paper's Fig. 7)",
+        );
+        rects.insert("learning_race", r.rect);
+        if r.clicked() {
+            actions.push(PanelAction::StartRace);
+        }
+    });
+    ui.horizontal(|ui| {
+        let r = ui
+            .button("Save controllers")
+            .on_hover_text("Download what the fish learned as a file");
+        rects.insert("learning_save", r.rect);
+        if r.clicked() {
+            actions.push(PanelAction::SaveControllers);
+        }
+        let r = ui
+            .button("Load controllers")
+            .on_hover_text("Open a file saved before; the swimmer then uses it");
+        rects.insert("learning_load", r.rect);
+        if r.clicked() {
+            actions.push(PanelAction::LoadControllers);
+        }
+    });
+    actions
+}
+
+/// The bottom panel: progress, the objective curve and Fig. 8.
+pub fn learning_plots_ui(
+    ui: &mut egui::Ui,
+    run: &Run,
+    abstraction: Option<&Abstraction>,
+    rects: &mut WidgetRects,
+) {
+    let Some(lab) = run.learning() else {
+        return;
+    };
+    ui.horizontal_top(|ui| {
+        ui.vertical(|ui| {
+            ui.set_width(300.0);
+            progress_ui(ui, lab, rects);
+        });
+        ui.separator();
+        let width = ((ui.available_width() - 30.0) / 4.0).max(120.0);
+        let height = (ui.available_height() - 24.0).clamp(80.0, 220.0);
+        ui.vertical(|ui| {
+            ui.set_width(width);
+            objective_plot_ui(ui, lab, height, rects);
+        });
+        if let Some(a) = abstraction {
+            fig8_ui(ui, a, width, height, rects);
+        }
+    });
+}
+
+fn progress_ui(ui: &mut egui::Ui, lab: &LearningLab, rects: &mut WidgetRects) {
+    let drills = lab.drills().len();
+    let title = match lab.current_drill() {
+        Some(k) => format!(
+            "Drill {} of {drills}: {}",
+            k + 1,
+            drill_label(&lab.drills()[k])
+        ),
+        None => format!("All {drills} drills learned"),
+    };
+    ui.label(egui::RichText::new(title).strong());
+    let r = ui.add(
+        egui::ProgressBar::new(lab.progress())
+            .show_percentage()
+            .desired_width(280.0),
+    );
+    rects.insert("learning_progress", r.rect);
+    let t = lab.trainer();
+    if lab.current_drill().is_some() {
+        ui.label(format!(
+            "{} of {} tries · best E {:.3} · temperature {:.4}",
+            t.evaluations(),
+            lab.annealing_steps(),
+            t.best_evaluation().objective,
+            t.temperature()
+        ))
+        .on_hover_text(
+            "E is what the fish tries to make small: how far it ended from its goal, plus a \
+             little for jerky muscles. The temperature is how willing it still is to try worse \
+             moves; it cools down as training goes on",
+        );
+    }
+    let (_, source) = lab.learned_set();
+    ui.label(format!(
+        "Learned controllers in use: {}",
+        match source {
+            SetSource::Shipped => "the shipped set (trained before)",
+            SetSource::TrainedHere => "trained here",
+            SetSource::Loaded => "loaded from a file",
+        }
+    ));
+    let times = lab.buoy_times_secs();
+    ui.label(match times.as_slice() {
+        [] => "Swimmer: on its way to the first buoy".to_owned(),
+        [a] => format!("Swimmer: first buoy at {a:.1} s"),
+        [a, b, ..] => format!("Swimmer: buoys at {a:.1} s and {b:.1} s"),
+    });
+    if let Some(race) = lab.race() {
+        let distances = race.distances_m();
+        let leader = race.leader();
+        let line: Vec<String> = race
+            .entrants()
+            .zip(&distances)
+            .enumerate()
+            .map(|(k, (e, d))| {
+                format!(
+                    "{}{} tries: {:.2} m",
+                    if Some(k) == leader { "★ " } else { "" },
+                    e.annealing_steps,
+                    d
+                )
+            })
+            .collect();
+        let r = ui.label(format!(
+            "Race after {:.1} s · {}",
+            race.time_secs(),
+            line.join(" · ")
+        ));
+        rects.insert("learning_race_result", r.rect);
+    }
+}
+
+fn objective_plot_ui(ui: &mut egui::Ui, lab: &LearningLab, height: f32, rects: &mut WidgetRects) {
+    ui.label("How well it swims (E, lower is better)");
+    let history = lab.trainer().history();
+    // At most ~600 points drawn.
+    let every = (history.len() / 600).max(1);
+    let series = |best: bool| -> PlotPoints {
+        history
+            .iter()
+            .step_by(every)
+            .map(|h| {
+                let e = if best {
+                    h.best_objective
+                } else {
+                    h.current_objective
+                };
+                [h.evaluation as f64, f64::from(e)]
+            })
+            .collect()
+    };
+    let r = Plot::new("learning_objective")
+        .height(height)
+        .allow_scroll(false)
+        .allow_drag(false)
+        .legend(Legend::default())
+        .x_axis_label("tries")
+        .show(ui, |plot| {
+            plot.line(Line::new("now", series(false)).color(egui::Color32::from_gray(150)));
+            plot.line(
+                Line::new("best", series(true)).color(egui::Color32::from_rgb(120, 220, 120)),
+            );
+        });
+    rects.insert("learning_objective_plot", r.response.rect);
+}
+
+/// The four muscles of the left side that swim and turn (middle and tail
+/// segments, dorsal), the ones Fig. 8 shows.
+fn shown_muscles() -> [(usize, &'static str); 2] {
+    [
+        (muscle_index(MuscleSegment::Middle, Side::Left), "middle"),
+        (muscle_index(MuscleSegment::Posterior, Side::Left), "tail"),
+    ]
+}
+
+fn fig8_ui(ui: &mut egui::Ui, a: &Abstraction, width: f32, height: f32, rects: &mut WidgetRects) {
+    let rows: [(&str, &str, &str); 3] = [
+        ("learning_raw_plot", "What it learned (left muscles)", "raw"),
+        (
+            "learning_modes_plot",
+            "Main rhythms (Fourier modes)",
+            "modes",
+        ),
+        (
+            "learning_abstract_plot",
+            "Simplified controller",
+            "abstract",
+        ),
+    ];
+    for (name, title, kind) in rows {
+        ui.separator();
+        ui.vertical(|ui| {
+            ui.set_width(width);
+            ui.label(title).on_hover_text(match kind {
+                "raw" => "How hard each muscle pulls over the practice swim, as learned",
+                "modes" => "The few waves (frequencies) that carry most of the learned pattern",
+                _ => {
+                    "The learned pattern rebuilt from those few waves: this is what the fish keeps"
+                }
+            });
+            let r = Plot::new(name)
+                .height(height)
+                .include_y(0.0)
+                .include_y(1.0)
+                .allow_scroll(false)
+                .allow_drag(false)
+                .x_axis_label("time (s)")
+                .show(ui, |plot| {
+                    for (m, label) in shown_muscles() {
+                        let color = muscle_color(if label == "tail" { 1.0 } else { 0.45 });
+                        let points: PlotPoints = match kind {
+                            "raw" => a
+                                .times_secs
+                                .iter()
+                                .zip(&a.learned)
+                                .map(|(t, u)| [f64::from(*t), f64::from(u[m])])
+                                .collect(),
+                            "modes" => {
+                                let Some(mode) = a.controller.modes.first() else {
+                                    continue;
+                                };
+                                a.times_secs
+                                    .iter()
+                                    .map(|&t| {
+                                        [
+                                            f64::from(t),
+                                            f64::from(a.controller.mean[m] + mode.value_at(t)[m]),
+                                        ]
+                                    })
+                                    .collect()
+                            }
+                            _ => a
+                                .times_secs
+                                .iter()
+                                .map(|&t| [f64::from(t), f64::from(a.controller.value_at(t)[m])])
+                                .collect(),
+                        };
+                        plot.line(Line::new(label, points).color(color));
+                    }
+                });
+            rects.insert(name, r.response.rect);
+        });
+    }
+}
