@@ -85,10 +85,16 @@ pub struct ShoalApp {
     /// The learning lab's current drill abstracted (for Fig. 8), and when (app
     /// time, seconds).
     learning_abstraction: Option<(f64, crate::sim::learning::Abstraction)>,
+    /// The scene the camera was last framed for.
+    viewed_scene: Scene,
     /// A controllers file the user picked, read asynchronously in the browser.
     pending_load: std::rc::Rc<std::cell::RefCell<Option<Result<String, String>>>>,
     ctx: egui::Context,
 }
+
+/// How far the default camera stands from the learning lab's buoys, metres (7.5:
+/// the buoys, the swimmer and the race lanes fill the view).
+const LEARNING_VIEW_DISTANCE_M: f32 = 7.5;
 
 /// Seconds between two renders of the fish-eye view (0.2, chosen: smooth enough
 /// to follow, cheap: one 96 × 96 ray cast).
@@ -143,6 +149,7 @@ impl ShoalApp {
             following: false,
             fish_eye: None,
             learning_abstraction: None,
+            viewed_scene: Scene::Aquarium,
             pending_load: Default::default(),
             ctx: cc.egui_ctx.clone(),
         })
@@ -266,6 +273,13 @@ impl ShoalApp {
     fn reset_view(&mut self) {
         let tank = self.lab.world().tank();
         self.camera = OrbitCamera::framing(tank.min_m, tank.max_m, self.framed_aspect);
+        // The learning lab's swimmers are small in a big tank: look at them.
+        if let Some(l) = self.lab.runs()[0].learning() {
+            let buoys = l.buoys_m();
+            // Between the buoys and the race's start line behind the swimmer.
+            self.camera.target_m = (buoys[0] + buoys[1]) * 0.5 - Vec3::new(1.0, 0.0, 0.0);
+            self.camera.distance_m = LEARNING_VIEW_DISTANCE_M;
+        }
         self.camera_is_default = true;
     }
 
@@ -1132,6 +1146,13 @@ impl eframe::App for ShoalApp {
             self.lab.apply_settings(settings);
         }
         self.apply(actions);
+        // A new scene: an untouched camera frames what it shows.
+        if self.lab.settings().scene != self.viewed_scene {
+            self.viewed_scene = self.lab.settings().scene;
+            if self.camera_is_default {
+                self.reset_view();
+            }
+        }
 
         self.benchmark_ui(ui);
 

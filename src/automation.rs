@@ -492,9 +492,10 @@ impl StateReport {
         Self {
             time_secs: run.time_secs(),
             steps: run.steps(),
-            fish_count: match (run.physics(), run.reef()) {
-                (Some(p), _) => p.fish_count(),
-                (_, Some(r)) => r.alive_count(),
+            fish_count: match (run.physics(), run.reef(), run.learning()) {
+                (Some(p), _, _) => p.fish_count(),
+                (_, Some(r), _) => r.alive_count(),
+                (_, _, Some(l)) => 1 + l.race_nodes_m().len(),
                 _ => run.world().fish().len(),
             },
             tier,

@@ -1103,7 +1103,12 @@ mod tests {
         assert_eq!(lab.train(30), Ok(30));
         lab.step(10);
         assert_eq!(lab.runs()[0].steps(), 10, "the swimmer swims");
-        assert!(lab.runs()[0].drawn_nodes_m(0, 0.5).iter().all(|p| p.is_finite()));
+        assert!(
+            lab.runs()[0]
+                .drawn_nodes_m(0, 0.5)
+                .iter()
+                .all(|p| p.is_finite())
+        );
         // To the reef and back: the training is where it was.
         let mut s = lab.settings().clone();
         s.scene = Scene::Reef;
@@ -1112,7 +1117,10 @@ mod tests {
         let mut s = lab.settings().clone();
         s.scene = Scene::Learning;
         lab.apply_settings(s);
-        assert_eq!(lab.runs()[0].learning().unwrap().trainer().evaluations(), 30);
+        assert_eq!(
+            lab.runs()[0].learning().unwrap().trainer().evaluations(),
+            30
+        );
         // Training runs a little each frame while it is on.
         let mut s = lab.settings().clone();
         s.learning.training = true;

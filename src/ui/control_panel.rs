@@ -234,6 +234,13 @@ pub fn control_panel_ui(
             rects,
         ));
     }
+    if settings.scene == Scene::Learning {
+        actions.extend(super::learning_panel::learning_controls_ui(
+            ui,
+            &mut settings.learning,
+            rects,
+        ));
+    }
 
     ui.separator();
     ui.label(egui::RichText::new("Share").strong());
