@@ -7,15 +7,17 @@
 //! | desired velocity d, fish heading f           | command |
 //! |----------------------------------------------|---------|
 //! | ‖d‖                                          | swim-MC speed fraction ‖d‖ / top speed |
-//! | horizontal angle Δ from f to d, \|Δ\| > 10°   | turn-MC(Δ), left if Δ > 0; not re-planned while a turn runs unless the goal moves by more than 40° |
+//! | horizontal angle Δ from f to d              | steering command clamp(Δ × 3/rad, −1, 1), + = left (`body::turn_mc::add_steering`); none while a hand turn-MC turn runs |
 //! | elevation of d minus the fish's pitch        | both fins pitched by 2 × the difference, at most ±0.5 rad (ascend, descend) |
 //! | ‖d‖ below half the current speed            | both fins across the flow (brake), no swimming |
 //!
-//! Why turns and not a continuous yaw: the body turns only through its muscles
-//! (a 90° turn takes about 7 s, see `body/turn_mc.rs`), and a turn-MC that is
-//! restarted every step never finishes its quick stroke. So a turn is planned
-//! towards the desired heading and left to run; only a big change of mind
-//! re-plans it. Headings within the dead band are corrected by the next turn.
+//! Why a continuous steering command and not turn-MC turns: a turn-MC turn
+//! contracts quickly and restores twenty times slower, so a 90° turn takes 7.4 s
+//! (`body/turn_mc.rs`), and one restarted every step never finishes its quick
+//! stroke. The steering command holds the turning side's bend for as long as the
+//! heading error lasts, proportionally to it, and the tail's thrust on the bent
+//! body yaws the fish at up to about 28°/s (measured in `physical_fish.rs`,
+//! `agility`). The discrete turn-MC stays for hand commands (`PhysicalFish::turn`).
 //!
 //! Frames: the steering layer lives in the tank frame (y up); the body in its own
 //! frame (z up, `body/fish_body.rs`). [`to_body_frame`] and [`to_tank_frame`]
@@ -33,14 +35,10 @@ use super::body::PectoralFins;
 /// checked by `top_speed_matches_the_body` below).
 pub const TOP_SPEED_BODY_LENGTHS_PER_SEC: f32 = 0.6;
 
-/// Smallest heading error that starts a turn, degrees. 10, chosen: the smallest
-/// turn the steering map makes accurately (10° requested → 10.9° measured).
-pub const TURN_DEAD_BAND_DEG: f32 = 10.0;
-
-/// A running turn is re-planned when the desired heading moves this far from its
-/// goal, degrees. 40, chosen: a wandering fish's goal drifts by less, a fleeing
-/// fish's jumps by more.
-pub const REPLAN_TURN_DEG: f32 = 40.0;
+/// Steering command per radian of heading error, 1/rad. 3, tuned
+/// (`physical_fish::agility`): full steering from 19° of error; a 90° turn at
+/// 0.7 of top speed reaches 81° in 3.1 s (gain 1.5: 3.5 s).
+pub const STEER_GAIN_PER_RAD: f32 = 3.0;
 
 /// Fin pitch per radian of elevation error (2, chosen: a 15° climb request tilts
 /// the fins by the full 0.5 rad).
@@ -77,15 +75,15 @@ pub struct MotorIntent {
     pub speed_fraction: f32,
     /// A new turn to start, degrees (+ = left); `None` keeps the current one.
     pub start_turn_deg: Option<f32>,
+    /// Continuous steering in [−1, 1], + = left (`body::turn_mc::add_steering`).
+    pub steer: f32,
     /// Pectoral fin angles.
     pub fins: PectoralFins,
 }
 
-/// The bridge's memory: the heading the running turn aims for.
+/// The bridge (stateless: the steering command follows the heading error).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct MotorBridge {
-    goal_heading_rad: Option<f32>,
-}
+pub struct MotorBridge;
 
 /// Angle wrapped to (−π, π].
 fn wrap(a: f32) -> f32 {
@@ -109,13 +107,11 @@ impl MotorBridge {
         let idle = MotorIntent {
             speed_fraction: 0.0,
             start_turn_deg: None,
+            steer: 0.0,
             fins: PectoralFins::NEUTRAL,
         };
         if !(desired_m_per_s.is_finite() && forward.is_finite() && top_speed_m_per_s > 0.0) {
             return idle;
-        }
-        if !turning {
-            self.goal_heading_rad = None;
         }
         let d = to_body_frame(desired_m_per_s);
         let f = to_body_frame(forward);
@@ -133,25 +129,25 @@ impl MotorBridge {
         }
         let mut speed_fraction = (desired_speed / top_speed_m_per_s).clamp(0.0, 1.0);
 
-        // Yaw: a turn towards the desired horizontal heading.
+        // Yaw: steer towards the desired horizontal heading, unless a hand turn runs.
         let horizontal = d.truncate();
-        let mut start_turn_deg = None;
-        if horizontal.length() > 1e-3 * top_speed_m_per_s && f.truncate().length() > 1e-3 {
+        let mut steer = 0.0;
+        if !turning
+            && horizontal.length() > 1e-3 * top_speed_m_per_s
+            && f.truncate().length() > 1e-3
+        {
             let goal = horizontal.y.atan2(horizontal.x);
             let heading = f.y.atan2(f.x);
-            let error_deg = wrap(goal - heading).to_degrees();
-            let replan = match self.goal_heading_rad {
-                None => error_deg.abs() > TURN_DEAD_BAND_DEG,
-                Some(planned) => wrap(goal - planned).to_degrees().abs() > REPLAN_TURN_DEG,
-            };
-            if replan {
-                start_turn_deg = Some(error_deg);
-                self.goal_heading_rad = Some(goal);
-            }
+            steer = (STEER_GAIN_PER_RAD * wrap(goal - heading)).clamp(-1.0, 1.0);
         }
-        if turning || start_turn_deg.is_some() {
-            speed_fraction = speed_fraction.max(MIN_TURN_SPEED_FRACTION);
-        }
+        // A turn comes from the tail's thrust on the bent body: swim. Steering
+        // turns a circle of about 0.6 body lengths whatever the speed, so the
+        // heading rate grows with the speed and a sharp turn swims at full beat.
+        speed_fraction = if turning {
+            speed_fraction.max(MIN_TURN_SPEED_FRACTION)
+        } else {
+            speed_fraction.max(steer.abs())
+        };
 
         // Pitch: climb or dive with the fins.
         let elevation = d.z.atan2(horizontal.length());
@@ -160,7 +156,8 @@ impl MotorBridge {
             (PITCH_GAIN * (elevation - pitch)).clamp(-MAX_FIN_PITCH_RAD, MAX_FIN_PITCH_RAD);
         MotorIntent {
             speed_fraction,
-            start_turn_deg,
+            start_turn_deg: None,
+            steer,
             fins: if desired_speed > 0.0 {
                 PectoralFins::pitch(fin_pitch)
             } else {
@@ -191,26 +188,25 @@ mod tests {
 
     #[test]
     fn desired_velocity_maps_to_speed_turn_and_fins() {
-        let mut bridge = MotorBridge::default();
+        let mut bridge = MotorBridge;
         // Straight ahead at half the top speed: no turn, level fins.
         let ahead = bridge.plan(Vec3::X * 0.1, Vec3::X, 0.1, 0.2, false);
         assert!((ahead.speed_fraction - 0.5).abs() < 1e-5);
         assert_eq!(ahead.start_turn_deg, None);
+        assert_eq!(ahead.steer, 0.0);
         assert!((ahead.fins.left_angle_rad - std::f32::consts::FRAC_PI_2).abs() < 1e-5);
-        // 60° to the left in the tank frame (y up, so left of +x is −z).
+        // 60° to the left in the tank frame (y up, so left of +x is −z): full left.
         let left = Vec3::new(0.5, 0.0, -(3f32.sqrt()) / 2.0) * 0.2;
-        let turn = bridge.plan(left, Vec3::X, 0.1, 0.2, false);
-        let angle = turn.start_turn_deg.unwrap();
-        assert!((angle - 60.0).abs() < 0.1, "{angle}");
-        // While that turn runs, a goal that moves a little is not re-planned ...
-        let nearly = Vec3::new(0.6, 0.0, -0.8) * 0.2;
-        assert_eq!(
-            bridge.plan(nearly, Vec3::X, 0.1, 0.2, true).start_turn_deg,
-            None
+        assert_eq!(bridge.plan(left, Vec3::X, 0.1, 0.2, false).steer, 1.0);
+        // 10° to the right: proportional right steering.
+        let right10 = Vec3::new(10f32.to_radians().cos(), 0.0, 10f32.to_radians().sin());
+        let steer = bridge.plan(right10, Vec3::X, 0.1, 0.2, false).steer;
+        assert!(
+            (steer + STEER_GAIN_PER_RAD * 10f32.to_radians()).abs() < 1e-4,
+            "{steer}"
         );
-        // ... a reversal is, to the right.
-        let right = bridge.plan(Vec3::Z * 0.2, Vec3::X, 0.1, 0.2, true);
-        assert!(right.start_turn_deg.unwrap() < -80.0);
+        // A running hand turn is not fought.
+        assert_eq!(bridge.plan(left, Vec3::X, 0.1, 0.2, true).steer, 0.0);
         // Up: fins pitched up; down: pitched down.
         let up = bridge.plan(Vec3::new(1.0, 0.5, 0.0), Vec3::X, 0.1, 0.2, false);
         assert!(up.fins.left_angle_rad > std::f32::consts::FRAC_PI_2);

@@ -104,7 +104,7 @@ impl PhysicalFish {
             body,
             swim: SwimMc::default(),
             turn: TurnMc::default(),
-            bridge: MotorBridge::default(),
+            bridge: MotorBridge,
             motor: MotorState::default(),
             heading: heading.normalize_or(Vec3::X),
             point: Fish::new(position_m, Vec3::ZERO, body_length_m, hue),
@@ -199,7 +199,8 @@ impl PhysicalFish {
         let swim = self.swim.step(&params, dt);
         let turning = self.turn.is_turning();
         let turn = self.turn.step(dt);
-        let muscles = super::body::turn_mc::combine_swim_and_turn(&swim, &turn);
+        let mut muscles = super::body::turn_mc::combine_swim_and_turn(&swim, &turn);
+        super::body::turn_mc::add_steering(&mut muscles, intent.steer);
         let command = BodyCommand {
             muscle_contractions: muscles,
             fins: intent.fins,
@@ -314,6 +315,7 @@ mod tests {
             let cruise = MotorIntent {
                 speed_fraction: 1.0,
                 start_turn_deg: None,
+                steer: 0.0,
                 fins: PectoralFins::NEUTRAL,
             };
             for _ in 0..40 {
@@ -361,5 +363,178 @@ mod tests {
             to_right > level + 0.1 && to_left < level - 0.1,
             "roll: right {to_right}°, left {to_left}°, level {level}°"
         );
+    }
+}
+
+/// Turn measurements of the physical fish driven through the bridge, for
+/// `docs/fish-body.md`: `cargo test --lib turn_agility -- --ignored --nocapture`.
+#[cfg(test)]
+mod agility {
+    use super::*;
+    use crate::sim::motor_bridge::level_turn_deg;
+
+    /// A 0.5 m fish swims straight at `speed_fraction` for 3 s, then is told to
+    /// swim at the same speed in a fixed direction `angle_deg` to its left.
+    /// Returns (seconds until the heading has turned 90 % of the angle, peak
+    /// heading rate over 1 s in °/s, turning radius over that part in body
+    /// lengths: path length / heading change).
+    pub(super) fn closed_loop_turn(angle_deg: f32, speed_fraction: f32) -> (f32, f32, f32) {
+        let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+        let dt = fish.body().dt_secs();
+        let speed = speed_fraction * fish.top_speed_m_per_s();
+        for _ in 0..(3.0 / dt) as usize {
+            let intent = fish.plan(Vec3::X * speed);
+            fish.step(&intent, Vec3::ZERO);
+        }
+        let start = fish.heading();
+        let goal = glam::Quat::from_rotation_y(angle_deg.to_radians()) * start;
+        let mut turned = Vec::new();
+        let mut path_m = 0.0;
+        let mut last = fish.point.position_m;
+        let mut done = None;
+        let mut unwrapped = 0.0f32;
+        let mut prev = 0.0f32;
+        for step in 0..(30.0 / dt) as usize {
+            let intent = fish.plan(goal * speed);
+            fish.step(&intent, Vec3::ZERO);
+            let h = level_turn_deg(start, fish.heading());
+            unwrapped += (h - prev + 180.0).rem_euclid(360.0) - 180.0;
+            prev = h;
+            turned.push(unwrapped);
+            if done.is_none() {
+                path_m += fish.point.position_m.distance(last);
+            }
+            last = fish.point.position_m;
+            if done.is_none() && unwrapped * angle_deg.signum() >= 0.9 * angle_deg.abs() {
+                done = Some(step + 1);
+            }
+        }
+        let done = done.unwrap_or(turned.len());
+        let window = (1.0 / dt).round() as usize;
+        let peak = (window..turned.len())
+            .map(|i| (turned[i] - turned[i - window]).abs() / (window as f32 * dt))
+            .fold(0.0, f32::max);
+        let radius_bl = path_m / turned[done - 1].to_radians().abs().max(1e-3) / 0.5;
+        (done as f32 * dt, peak, radius_bl)
+    }
+
+    /// Open loop: a default body swims at `speed_fraction` for 3 s, then holds
+    /// `steer` with `biases` for 4 s. Returns the mean heading rate over the last
+    /// 3 s (°/s) and the radius of the path (body lengths).
+    pub(super) fn open_loop_steer(speed_fraction: f32, steer: f32, biases: [f32; 3]) -> (f32, f32) {
+        use crate::sim::body::turn_mc::add_steering_with;
+        let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+        let dt = fish.body().dt_secs();
+        let mut swim = SwimMc::default();
+        let mut run = |fish: &mut PhysicalFish, s: f32| {
+            let params = swim.params_for_speed(speed_fraction);
+            let mut u = swim.step(&params, dt);
+            add_steering_with(&mut u, s, biases);
+            fish.body.step(
+                &BodyCommand {
+                    muscle_contractions: u,
+                    fins: PectoralFins::NEUTRAL,
+                },
+                Vec3::ZERO,
+            );
+            let forward = fish.forward();
+            let k = dt / HEADING_SMOOTHING_SECS;
+            fish.heading = fish.heading.lerp(forward, k).normalize_or(forward);
+            fish.sync_point();
+        };
+        for _ in 0..(4.0 / dt) as usize {
+            run(&mut fish, 0.0);
+        }
+        for _ in 0..(1.0 / dt) as usize {
+            run(&mut fish, steer);
+        }
+        let h0 = fish.heading();
+        let mut path = 0.0;
+        let mut turned = 0.0;
+        let mut prev = h0;
+        for _ in 0..(3.0 / dt) as usize {
+            let last = fish.point.position_m;
+            run(&mut fish, steer);
+            path += fish.point.position_m.distance(last);
+            turned += level_turn_deg(prev, fish.heading());
+            prev = fish.heading();
+        }
+        (
+            turned / 3.0,
+            path / turned.to_radians().abs().max(1e-3) / 0.5,
+        )
+    }
+
+    #[test]
+    fn a_fish_told_to_swim_90_degrees_aside_turns_80_degrees_within_3_5_s() {
+        let (secs, _, radius_bl) = closed_loop_turn(90.0, 0.7);
+        assert!(secs <= 3.5, "{secs} s");
+        assert!(radius_bl < 1.0, "radius {radius_bl} body lengths");
+    }
+
+    #[test]
+    fn steering_left_and_right_is_symmetric() {
+        let (left, _) = open_loop_steer(1.0, 1.0, [1.0, 1.0, 0.5]);
+        let (right, _) = open_loop_steer(1.0, -1.0, [1.0, 1.0, 0.5]);
+        assert!(left > 20.0, "{left}°/s");
+        assert!(
+            (left + right).abs() < 0.05 * left,
+            "left {left}°/s, right {right}°/s"
+        );
+    }
+
+    #[test]
+    fn a_fish_chasing_a_point_beside_it_reaches_it() {
+        let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+        let dt = fish.body().dt_secs();
+        // 1.5 m away, 90° to the left: a point-mass chaser's job.
+        let target = Vec3::new(0.0, 0.0, -1.5);
+        let mut reached = None;
+        for step in 0..(30.0 / dt) as usize {
+            let to_target = target - fish.point.position_m;
+            if to_target.length() < 0.5 * fish.body_length_m() {
+                reached = Some(step as f32 * dt);
+                break;
+            }
+            let intent = fish.plan(to_target.normalize_or_zero() * 0.7 * fish.top_speed_m_per_s());
+            fish.step(&intent, Vec3::ZERO);
+        }
+        let secs = reached.expect("within half a body length in 30 s");
+        println!("reached in {secs} s");
+        assert!(secs < 15.0, "{secs} s");
+    }
+
+    #[test]
+    #[ignore]
+    fn steer_sweep() {
+        for biases in [
+            [1.0, 1.0, 0.3],
+            [1.0, 1.0, 0.5],
+            [1.0, 1.0, 0.7],
+            [1.0, 1.0, 1.0],
+            [0.5, 1.0, 0.5],
+        ] {
+            for speed in [1.0, 0.5] {
+                let (l, r) = open_loop_steer(speed, 1.0, biases);
+                let (rr, _) = open_loop_steer(speed, -1.0, biases);
+                let (half, _) = open_loop_steer(speed, 0.5, biases);
+                println!(
+                    "biases {biases:?} speed {speed}: left {l:5.1}°/s right {rr:5.1}°/s half {half:5.1}°/s radius {r:4.2} BL"
+                );
+            }
+        }
+    }
+
+    #[test]
+    #[ignore]
+    fn turn_agility() {
+        for speed in [1.0, 0.7, 0.4] {
+            for angle in [30.0, 90.0, 179.0, -90.0] {
+                let (secs, peak, radius) = closed_loop_turn(angle, speed);
+                println!(
+                    "speed {speed:.1} angle {angle:6.1}°: 90 % in {secs:5.2} s, peak {peak:5.1}°/s, radius {radius:4.2} BL"
+                );
+            }
+        }
     }
 }

@@ -64,11 +64,11 @@ const WANDER_JITTER_RAD: f32 = 0.36;
 /// enough to turn away, too little to crush the body.
 const TOUCH_SPEED_FRACTION: f32 = super::motor_bridge::MIN_TURN_SPEED_FRACTION;
 
-/// Fastest turn of the intended velocity, radians per second: 15°/s, a little
-/// faster than the body's measured 12°/s (90° in 7.4 s, `body/turn_mc.rs`), so the
-/// body always has a turn to chase but the steering layer never plans a path the
-/// body cannot swim.
-const MAX_INTENT_TURN_RAD_PER_SEC: f32 = 0.26;
+/// Fastest turn of the intended velocity, radians per second: 29°/s, a little
+/// faster than the body's measured 26–28°/s under continuous steering
+/// (`motor_bridge.rs`, `physical_fish::agility`), so the body always has a turn
+/// to chase but the steering layer never plans a path the body cannot swim.
+const MAX_INTENT_TURN_RAD_PER_SEC: f32 = 0.5;
 /// Largest angle between the intended velocity and where the body points, radians
 /// (60°, chosen): a fish thrown off course by a collision or the current plans
 /// from where it really heads, not from where it wished to be.
@@ -493,12 +493,14 @@ impl PhysicsWorld {
                 MotorIntent {
                     speed_fraction: command.speed_fraction.clamp(0.0, 1.0),
                     start_turn_deg: None,
+                    steer: 0.0,
                     fins: super::body::PectoralFins::pitch(command.pitch_rad.clamp(-0.5, 0.5)),
                 }
             } else if self.behaviour == PhysicsBehaviour::Drift {
                 MotorIntent {
                     speed_fraction: 0.0,
                     start_turn_deg: None,
+                    steer: 0.0,
                     fins: super::body::PectoralFins::NEUTRAL,
                 }
             } else {

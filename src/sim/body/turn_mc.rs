@@ -470,3 +470,51 @@ pub fn find_steering_map() -> (SteeringMap, [f32; 4]) {
     }
     (map, measured)
 }
+
+/// Contraction added to the turning side of the anterior segment at full steering
+/// (|steer| = 1), contraction factor. 1.0, tuned (`physical_fish::agility`; 0.5
+/// turns 2 % slower, 0 turns 20 % slower in a wider circle): the
+/// bend is held as long as the command lasts, so the tail's thrust on the bent
+/// body keeps yawing the fish (see the module doc).
+pub const STEER_ANTERIOR_BIAS: f32 = 1.0;
+/// The same for the middle segment, whose swim wave beats around the bent mean.
+/// 1.0, tuned like [`STEER_ANTERIOR_BIAS`].
+pub const STEER_MIDDLE_BIAS: f32 = 1.0;
+/// The same for the posterior segment. 0.5, tuned: at top speed and full
+/// steering 0.0 / 0.3 / 0.5 / 0.7 / 1.0 give 22 / 26 / 26 / 25 / 22°/s with
+/// radii 0.91 / 0.69 / 0.59 / 0.52 / 0.42 body lengths (`physical_fish::agility`).
+pub const STEER_POSTERIOR_BIAS: f32 = 0.5;
+
+/// Continuous steering (not in the paper, whose turns are discrete): `steer` in
+/// [−1, 1] (+ = left, NaN = 0) adds |steer| × the segment biases
+/// ([`STEER_ANTERIOR_BIAS`], …) to the contractions of the turning side and
+/// clamps them to 1, like a turn-MC bend held for as long as the command lasts.
+pub fn add_steering(u: &mut [f32; MUSCLE_COUNT], steer: f32) {
+    add_steering_with(
+        u,
+        steer,
+        [STEER_ANTERIOR_BIAS, STEER_MIDDLE_BIAS, STEER_POSTERIOR_BIAS],
+    );
+}
+
+/// [`add_steering`] with explicit segment biases (anterior, middle, posterior).
+pub fn add_steering_with(u: &mut [f32; MUSCLE_COUNT], steer: f32, biases: [f32; 3]) {
+    let s = sanitize(steer).clamp(-1.0, 1.0);
+    if s == 0.0 {
+        return;
+    }
+    let side = if s > 0.0 { Side::Left } else { Side::Right };
+    for (segment, bias) in [
+        MuscleSegment::Anterior,
+        MuscleSegment::Middle,
+        MuscleSegment::Posterior,
+    ]
+    .into_iter()
+    .zip(biases)
+    {
+        let i = muscle_index(segment, side);
+        for m in &mut u[i..i + 2] {
+            *m = (*m + s.abs() * bias).clamp(0.0, 1.0);
+        }
+    }
+}
