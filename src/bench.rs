@@ -56,6 +56,9 @@ pub struct BenchRow {
 pub struct BenchReport {
     pub done: bool,
     pub rows: Vec<BenchRow>,
+    /// Learning lab: annealing evaluations (forward simulations of a 2.5 s
+    /// swim, 45 body steps) per second, measured once all rows are done.
+    pub annealing_evaluations_per_sec: Option<f64>,
 }
 
 /// Drives the benchmark one frame at a time.
@@ -66,6 +69,7 @@ pub struct Benchmark {
     cpu_secs: f64,
     sim_steps_per_sec: f64,
     rows: Vec<BenchRow>,
+    annealing_evaluations_per_sec: Option<f64>,
 }
 
 impl Default for Benchmark {
@@ -83,6 +87,7 @@ impl Benchmark {
             cpu_secs: 0.0,
             sim_steps_per_sec: 0.0,
             rows: Vec::new(),
+            annealing_evaluations_per_sec: None,
         }
     }
 
@@ -94,6 +99,7 @@ impl Benchmark {
         BenchReport {
             done: self.is_done(),
             rows: self.rows.clone(),
+            annealing_evaluations_per_sec: self.annealing_evaluations_per_sec,
         }
     }
 
@@ -155,6 +161,9 @@ impl Benchmark {
             self.next += 1;
             self.phase_start_secs = None;
             if self.is_done() {
+                let rate = measure_annealing_per_sec();
+                log::info!("bench: learning lab | {rate:>6.1} annealing evaluations/s");
+                self.annealing_evaluations_per_sec = Some(rate);
                 lab.apply_settings(Settings::default());
             }
         }
@@ -170,6 +179,20 @@ pub fn reef_with_animals(animals: u32) -> ReefSettings {
         prey_count: Some(animals.saturating_sub(others)),
         ..ReefSettings::default()
     }
+}
+
+/// Annealing evaluations per second of the learning centre's benchmark trainer,
+/// over about a second.
+fn measure_annealing_per_sec() -> f64 {
+    let mut trainer = crate::sim::learning::Trainer::benchmark();
+    trainer.run_evaluations(2);
+    let start = Instant::now();
+    let mut n = 0u32;
+    while start.elapsed().as_secs_f64() < 1.0 {
+        trainer.run_evaluations(1);
+        n += 1;
+    }
+    f64::from(n) / start.elapsed().as_secs_f64()
 }
 
 /// Steps the lab as fast as it goes for about `SIM_PHASE_SECS`.

@@ -29,6 +29,9 @@ try {
       for (const r of bench.rows) {
         console.log(`  ${r.scene.padStart(8)} | ${String(r.fish).padStart(6)} | ${r.sim_steps_per_sec.toFixed(0).padStart(10)} | ${r.fish_steps_per_sec.toFixed(0).padStart(13)} | ${r.frame_ms.toFixed(2).padStart(8)} | ${r.cpu_frame_ms.toFixed(2).padStart(6)}`);
       }
+      if (bench.annealing_evaluations_per_sec != null) {
+        console.log(`  learning lab: ${bench.annealing_evaluations_per_sec.toFixed(1)} annealing evaluations/s`);
+      }
     } finally {
       await browser.close();
     }
