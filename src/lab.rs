@@ -275,19 +275,7 @@ impl Run {
                 .and_then(|i| reef.animals().get(i as usize))
                 .map(|a| &a.body)
             {
-                let sample = BodySample {
-                    time_secs: reef.time_secs(),
-                    speed_m_per_s: p.point.velocity_m_per_s.length(),
-                    muscles: p.motor().muscles,
-                };
-                self.body_trace.push_back(sample);
-                while self
-                    .body_trace
-                    .front()
-                    .is_some_and(|s| s.time_secs < sample.time_secs - BODY_TRACE_SECS)
-                {
-                    self.body_trace.pop_front();
-                }
+                push_trace(&mut self.body_trace, sample_of(p, reef.time_secs()));
             }
             if reef.steps().is_multiple_of(PHYSICS_SAMPLE_EVERY_STEPS) {
                 self.sample_metrics();
@@ -302,19 +290,7 @@ impl Run {
             }
             physics.step();
             if let Some(animal) = self.traced.and_then(|i| physics.animals().get(i as usize)) {
-                let sample = BodySample {
-                    time_secs: physics.time_secs(),
-                    speed_m_per_s: animal.point.velocity_m_per_s.length(),
-                    muscles: animal.motor().muscles,
-                };
-                self.body_trace.push_back(sample);
-                while self
-                    .body_trace
-                    .front()
-                    .is_some_and(|s| s.time_secs < sample.time_secs - BODY_TRACE_SECS)
-                {
-                    self.body_trace.pop_front();
-                }
+                push_trace(&mut self.body_trace, sample_of(animal, physics.time_secs()));
             }
             if physics.steps().is_multiple_of(PHYSICS_SAMPLE_EVERY_STEPS) {
                 self.sample_metrics();
@@ -518,6 +494,26 @@ impl Run {
             self.obstacles_from_settings = config.obstacles;
             self.obstacle_edits += 1;
         }
+    }
+}
+
+/// The selected physical fish's speed and muscles now.
+fn sample_of(animal: &crate::sim::PhysicalFish, time_secs: f64) -> BodySample {
+    BodySample {
+        time_secs,
+        speed_m_per_s: animal.point.velocity_m_per_s.length(),
+        muscles: animal.motor().muscles,
+    }
+}
+
+/// Appends `sample`, keeping the last [`BODY_TRACE_SECS`].
+fn push_trace(trace: &mut VecDeque<BodySample>, sample: BodySample) {
+    trace.push_back(sample);
+    while trace
+        .front()
+        .is_some_and(|s| s.time_secs < sample.time_secs - BODY_TRACE_SECS)
+    {
+        trace.pop_front();
     }
 }
 

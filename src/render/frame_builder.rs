@@ -201,7 +201,7 @@ impl FrameBuilder {
         };
 
         let eye = camera.eye_m();
-        if let Some(reef) = run.reef() {
+        let detailed = if let Some(reef) = run.reef() {
             let (fish, sharks) = (
                 Arc::make_mut(&mut view.fish),
                 Arc::make_mut(&mut view.sharks),
@@ -222,76 +222,54 @@ impl FrameBuilder {
                     fish.push(instance(f, position, livery(a.hue).rgba()));
                 }
             }
-            let detailed = fish.len();
             Arc::make_mut(&mut view.rays).clear();
-            build_bodies(
-                &mut self.skins,
-                self.selected,
-                run,
-                alpha,
-                Arc::make_mut(&mut view.bodies),
-            );
-            let aspect = size_px[0] as f32 / size_px[1].max(1) as f32;
-            return SceneCallback {
-                view_id,
-                uniforms: SceneUniforms::new(
-                    camera.world_to_clip(aspect),
-                    eye,
-                    tank.min_m,
-                    tank.max_m,
-                    time_secs,
-                ),
-                fish: Arc::clone(&view.fish),
-                fish_detailed: detailed,
-                sharks: Arc::clone(&view.sharks),
-                rays: Arc::clone(&view.rays),
-                statics,
-                bodies: Arc::clone(&view.bodies),
-                size_px,
-            };
-        }
-        // Near fish from the front of the list, far ones from the back.
-        let focal_px = size_px[1] as f32 / (2.0 * (camera.fov_y_rad * 0.5).tan());
-        let lod_below = FISH_LOD_BELOW_PX / focal_px.max(1e-3);
-        let fish = Arc::make_mut(&mut view.fish);
-        let count = world.fish().len();
-        fish.clear();
-        fish.resize(count, FishInstance::zeroed());
-        let (mut near, mut far) = (0, count);
-        for (i, f) in world.fish().iter().enumerate() {
-            let position = run.drawn_position_m(i, alpha);
-            let instance = instance(f, position, livery(f.hue).rgba());
-            // Drawn length ≈ focal × length / distance, compared without a root.
-            let length = f.body_length_m;
-            if length * length >= lod_below * lod_below * position.distance_squared(eye) {
-                fish[near] = instance;
-                near += 1;
-            } else {
-                far -= 1;
-                fish[far] = instance;
+            fish.len()
+        } else {
+            // Near fish from the front of the list, far ones from the back.
+            let focal_px = size_px[1] as f32 / (2.0 * (camera.fov_y_rad * 0.5).tan());
+            let lod_below = FISH_LOD_BELOW_PX / focal_px.max(1e-3);
+            let fish = Arc::make_mut(&mut view.fish);
+            let count = world.fish().len();
+            fish.clear();
+            fish.resize(count, FishInstance::zeroed());
+            let (mut near, mut far) = (0, count);
+            for (i, f) in world.fish().iter().enumerate() {
+                let position = run.drawn_position_m(i, alpha);
+                let instance = instance(f, position, livery(f.hue).rgba());
+                // Drawn length ≈ focal × length / distance, compared without a root.
+                let length = f.body_length_m;
+                if length * length >= lod_below * lod_below * position.distance_squared(eye) {
+                    fish[near] = instance;
+                    near += 1;
+                } else {
+                    far -= 1;
+                    fish[far] = instance;
+                }
             }
-        }
-        // Beyond the budget, only the nearest keep the full mesh.
-        let mut detailed = near;
-        if detailed > MAX_DETAILED_FISH {
-            let distance = |f: &FishInstance| Vec3::from(f.position_m).distance_squared(eye);
-            fish[..near].select_nth_unstable_by(MAX_DETAILED_FISH, |a, b| {
-                distance(a).total_cmp(&distance(b))
-            });
-            detailed = MAX_DETAILED_FISH;
-        }
-        let sharks = Arc::make_mut(&mut view.sharks);
-        sharks.clear();
-        sharks.extend(world.sharks().iter().enumerate().map(|(i, shark)| {
-            let f = &shark.body;
-            instance(f, run.drawn_shark_m(i, alpha), shark_livery(f.hue).rgba())
-        }));
-        let rays = Arc::make_mut(&mut view.rays);
-        rays.clear();
-        rays.extend(world.stingrays().iter().enumerate().map(|(i, ray)| {
-            let f = &ray.body;
-            instance(f, run.drawn_stingray_m(i, alpha), ray_livery(f.hue).rgba())
-        }));
+            // Beyond the budget, only the nearest keep the full mesh.
+            let mut detailed = near;
+            if detailed > MAX_DETAILED_FISH {
+                let distance = |f: &FishInstance| Vec3::from(f.position_m).distance_squared(eye);
+                fish[..near].select_nth_unstable_by(MAX_DETAILED_FISH, |a, b| {
+                    distance(a).total_cmp(&distance(b))
+                });
+                detailed = MAX_DETAILED_FISH;
+            }
+            let sharks = Arc::make_mut(&mut view.sharks);
+            sharks.clear();
+            sharks.extend(world.sharks().iter().enumerate().map(|(i, shark)| {
+                let f = &shark.body;
+                instance(f, run.drawn_shark_m(i, alpha), shark_livery(f.hue).rgba())
+            }));
+            let rays = Arc::make_mut(&mut view.rays);
+            rays.clear();
+            rays.extend(world.stingrays().iter().enumerate().map(|(i, ray)| {
+                let f = &ray.body;
+                instance(f, run.drawn_stingray_m(i, alpha), ray_livery(f.hue).rgba())
+            }));
+
+            detailed
+        };
 
         build_bodies(
             &mut self.skins,

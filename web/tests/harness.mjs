@@ -192,3 +192,17 @@ export async function clickUntil(page, name, predicate, arg) {
   }
   throw new Error(`clicking ${name} had no effect`);
 }
+
+/** Pixels that differ by more than a little (summed RGB difference over 60)
+ * between two decoded screenshots, inside `rect`. */
+export function changedPixels(a, b, rect) {
+  let changed = 0;
+  for (let y = Math.floor(rect.y); y < rect.y + rect.height; y++) {
+    for (let x = Math.floor(rect.x); x < rect.x + rect.width; x++) {
+      const i = (y * a.width + x) * 4;
+      const d = Math.abs(a.data[i] - b.data[i]) + Math.abs(a.data[i + 1] - b.data[i + 1]) + Math.abs(a.data[i + 2] - b.data[i + 2]);
+      if (d > 60) changed++;
+    }
+  }
+  return changed;
+}

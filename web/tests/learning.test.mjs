@@ -13,6 +13,7 @@ import {
   saveArtifact,
   clickUntil,
   waitForWidget,
+  changedPixels,
 } from "./harness.mjs";
 
 const state = (page) => page.evaluate(() => window.shoal.state());
@@ -75,14 +76,7 @@ describe("learning lab", () => {
     await page.waitForTimeout(500);
     const b = decode(await page.screenshot());
     await page.evaluate(() => window.shoal.play());
-    let changed = 0;
-    const v = w.view_left;
-    for (let y = Math.floor(v.y); y < v.y + v.height; y++) {
-      for (let x = Math.floor(v.x); x < v.x + v.width; x++) {
-        const i = (y * a.width + x) * 4;
-        if (Math.abs(a.data[i] - b.data[i]) + Math.abs(a.data[i + 1] - b.data[i + 1]) + Math.abs(a.data[i + 2] - b.data[i + 2]) > 60) changed++;
-      }
-    }
+    const changed = changedPixels(a, b, w.view_left);
     assert.ok(changed > 40, `the swimmer moved on screen: ${changed} pixels changed`);
   });
 

@@ -14,24 +14,12 @@ import {
   saveArtifact,
   clickUntil,
   waitForWidget,
+  changedPixels,
 } from "./harness.mjs";
 
 const state = (page) => page.evaluate(() => window.shoal.state());
 const settings = (page) => page.evaluate(() => window.shoal.settings());
 const widgets = (page) => page.evaluate(() => window.shoal.widgets());
-
-/** Pixels that differ by more than a little between two screenshots, in `rect`. */
-function changedPixels(a, b, rect) {
-  let changed = 0;
-  for (let y = Math.floor(rect.y); y < rect.y + rect.height; y++) {
-    for (let x = Math.floor(rect.x); x < rect.x + rect.width; x++) {
-      const i = (y * a.width + x) * 4;
-      const d = Math.abs(a.data[i] - b.data[i]) + Math.abs(a.data[i + 1] - b.data[i + 1]) + Math.abs(a.data[i + 2] - b.data[i + 2]);
-      if (d > 60) changed++;
-    }
-  }
-  return changed;
-}
 
 describe("reef", () => {
   let server, browser, page, errors;
