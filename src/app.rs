@@ -67,6 +67,8 @@ pub struct ShoalApp {
     panel: PanelState,
     fps_meter: RateMeter,
     last_frame_time_secs: Option<f64>,
+    /// Frames drawn since start (`state().frames`).
+    frames_drawn: u64,
     widget_rects: WidgetRects,
     /// The in-app benchmark, when started (`?bench`).
     benchmark: Option<Benchmark>,
@@ -140,6 +142,7 @@ impl ShoalApp {
             panel: PanelState::default(),
             fps_meter: RateMeter::default(),
             last_frame_time_secs: None,
+            frames_drawn: 0,
             widget_rects: WidgetRects::new(),
             benchmark: None,
             crash_requested: false,
@@ -177,6 +180,7 @@ impl ShoalApp {
             self.fps_meter.rate_per_sec(),
         );
         report.bench = self.benchmark.as_ref().map(Benchmark::report);
+        report.frames = self.frames_drawn;
         report.camera = Some(CameraReport {
             yaw_deg: self.camera.yaw_rad.to_degrees(),
             pitch_deg: self.camera.pitch_rad.to_degrees(),
@@ -1006,6 +1010,7 @@ impl eframe::App for ShoalApp {
         self.last_frame_time_secs = Some(now_secs);
         self.lab.advance_frame(frame_secs, now_secs);
         self.fps_meter.record(now_secs, 1);
+        self.frames_drawn += 1;
 
         let status = self.state_report();
         egui::Panel::bottom("status").show(ui, |ui| {

@@ -177,6 +177,9 @@ pub struct StateReport {
     pub tier: &'static str,
     /// Frames drawn per second over the last second.
     pub fps: f64,
+    /// Frames drawn since the page opened (filled in by the app): a test that
+    /// changed something waits for this to grow before it takes a screenshot.
+    pub frames: u64,
     /// Simulation steps per second of real time over the last second.
     pub steps_per_sec: f64,
     pub paused: bool,
@@ -500,6 +503,7 @@ impl StateReport {
             },
             tier,
             fps,
+            frames: 0,
             steps_per_sec: lab.steps_per_sec(),
             paused: settings.paused,
             seed: settings.seed,

@@ -5,7 +5,7 @@ import { describe, test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import {
   serveDist, launch, openShoal, decode, pixelStats, fishPixels, symmetricDifference,
-  saveArtifact, clickWidget, sleep,
+  saveArtifact, clickWidget, sleep, waitFrames,
 } from "./harness.mjs";
 
 const state = (page) => page.evaluate(() => window.shoal.state());
@@ -45,8 +45,16 @@ for (const tier of ["webgl2", "webgpu"]) {
       assert.ok(stats.mean > 25 && stats.mean < 230, `mean luminance ${stats.mean}`);
       assert.ok(stats.std > 12, `contrast (std of luminance) ${stats.std}`);
       assert.ok(stats.distinctColours > 150, `distinct colours ${stats.distinctColours}`);
-      const fish = fishPixels(decode(shot), aquarium);
-      assert.ok(fish.size > 80, `fish-coloured pixels ${fish.size}`);
+      // Fish are the only saturated, non-blue things in the tank: the same view
+      // with no fish has (almost) none of their pixels. (How many the 200 small
+      // fish cover depends on where they swim at the moment of the screenshot.)
+      const fish = fishPixels(decode(shot), aquarium).size;
+      await page.evaluate(() => window.shoal.set({ left: { fish_count: 0 } }));
+      await waitFrames(page, 2);
+      const empty = fishPixels(decode(await page.screenshot()), aquarium).size;
+      await page.evaluate(() => window.shoal.set({ left: { fish_count: 200 } }));
+      await waitFrames(page, 2);
+      assert.ok(fish > 40 && fish > 4 * empty, `fish-coloured pixels ${fish} with fish, ${empty} without`);
     });
 
     test("fish move between two screenshots while playing, and not while paused", async () => {

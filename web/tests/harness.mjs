@@ -169,6 +169,17 @@ export async function clickWidget(page, name) {
 
 export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 
+/** Waits until the app has drawn `n` more frames, so that a screenshot shows what a
+ * change just did (on a software GPU a frame can take a second; a fixed sleep is a
+ * guess). A paused app draws only when something asks it to, so wait for one frame
+ * after a command while paused. */
+export async function waitFrames(page, n = 1) {
+  const start = await page.evaluate(() => window.shoal.state().frames);
+  await page.waitForFunction(([s, k]) => window.shoal.state().frames >= s + k, [start, n], {
+    timeout: 60_000,
+  });
+}
+
 /** Waits until a named widget is on screen (the panel may still be laying out) and
  * returns its rectangle. */
 export async function waitForWidget(page, name) {

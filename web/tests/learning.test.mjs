@@ -14,6 +14,7 @@ import {
   clickUntil,
   waitForWidget,
   changedPixels,
+  waitFrames,
 } from "./harness.mjs";
 
 const state = (page) => page.evaluate(() => window.shoal.state());
@@ -61,6 +62,10 @@ describe("learning lab", () => {
     await clickUntil(page, "scene_learning", () => window.shoal.state().scene === "learning");
     s = await state(page);
     assert.equal(s.learning.progress, progress, "progress kept across scenes");
+    for (const name of ["learning_objective_plot", "learning_raw_plot", "learning_modes_plot", "learning_abstract_plot"]) {
+      await waitForWidget(page, name);
+    }
+    await waitFrames(page, 3);
     const shot = await page.screenshot();
     saveArtifact("learning-webgl2.png", shot);
     const png = decode(shot);
@@ -71,9 +76,11 @@ describe("learning lab", () => {
     }
     // The swimmer moves: the view changes between two moments.
     await page.evaluate(() => window.shoal.pause());
+    // Paused, the app draws only when asked: pause() and step() each ask once.
+    await waitFrames(page, 1);
     const a = decode(await page.screenshot());
     await page.evaluate(() => window.shoal.step(40));
-    await page.waitForTimeout(500);
+    await waitFrames(page, 1);
     const b = decode(await page.screenshot());
     await page.evaluate(() => window.shoal.play());
     const changed = changedPixels(a, b, w.view_left);
