@@ -20,7 +20,7 @@
 use glam::Vec3;
 
 use super::fish::heading_of;
-use super::spatial_grid::{Nearest, SpatialGrid};
+use super::spatial_grid::{MAX_NEAREST, Nearest, SpatialGrid};
 use super::steering::limit;
 
 /// Strength of the far field's pull relative to the near neighbours' (0–1).
@@ -63,65 +63,79 @@ pub struct Perception {
 /// that view.
 #[derive(Clone, Debug, Default)]
 pub struct FarField {
-    /// Non-empty cells as structure of arrays: mean position and count.
+    min_m: Vec3,
+    cell_m: f32,
+    /// Cells along x, y and z.
+    dims: [usize; 3],
+    /// Non-empty cells as structure of arrays: mean position, count and the
+    /// cell's index.
     mean_x_m: Vec<f32>,
     mean_y_m: Vec<f32>,
     mean_z_m: Vec<f32>,
     count: Vec<f32>,
+    cell: Vec<u32>,
     sums: Vec<(Vec3, u32)>,
 }
 
 impl FarField {
     /// Buckets `positions_m` into cubes of side `cell_m` over `min_m..max_m`.
     pub fn rebuild(&mut self, min_m: Vec3, max_m: Vec3, cell_m: f32, positions_m: &[Vec3]) {
-        let cell_m = if cell_m.is_finite() && cell_m > 0.1 {
+        self.cell_m = if cell_m.is_finite() && cell_m > 0.1 {
             cell_m
         } else {
             1.0
         };
-        let dims = ((max_m - min_m) / cell_m)
+        self.min_m = min_m;
+        let dims = ((max_m - min_m) / self.cell_m)
             .ceil()
             .max(Vec3::ONE)
             .min(Vec3::splat(32.0));
-        let (dx, dy, dz) = (dims.x as usize, dims.y as usize, dims.z as usize);
+        self.dims = [dims.x as usize, dims.y as usize, dims.z as usize];
         self.sums.clear();
-        self.sums.resize(dx * dy * dz, (Vec3::ZERO, 0));
+        self.sums
+            .resize(self.dims.iter().product(), (Vec3::ZERO, 0));
         for &p in positions_m {
-            // Truncation equals `floor` here: negative values clamp to 0.
-            let q = (p - min_m) / cell_m;
-            if !q.is_finite() {
-                continue;
+            if let Some(c) = self.cell_of(p) {
+                let cell = &mut self.sums[c];
+                cell.0 += p;
+                cell.1 += 1;
             }
-            let x = (q.x.max(0.0) as usize).min(dx - 1);
-            let y = (q.y.max(0.0) as usize).min(dy - 1);
-            let z = (q.z.max(0.0) as usize).min(dz - 1);
-            let cell = &mut self.sums[x + dx * (y + dy * z)];
-            cell.0 += p;
-            cell.1 += 1;
         }
         self.mean_x_m.clear();
         self.mean_y_m.clear();
         self.mean_z_m.clear();
         self.count.clear();
-        for &(sum, n) in self.sums.iter().filter(|c| c.1 > 0) {
+        self.cell.clear();
+        for (c, &(sum, n)) in self.sums.iter().enumerate().filter(|(_, c)| c.1 > 0) {
             let mean = sum / n as f32;
             self.mean_x_m.push(mean.x);
             self.mean_y_m.push(mean.y);
             self.mean_z_m.push(mean.z);
             self.count.push(n as f32);
+            self.cell.push(c as u32);
         }
     }
 
-    /// Centre of the fish in the cells whose mean position a fish at
-    /// `position_m` heading `heading` sees (within vision distance and angle),
-    /// or `None` if it sees none.
-    pub fn seen_centre_m(
-        &self,
-        position_m: Vec3,
-        heading: Vec3,
-        perception: &Perception,
-    ) -> Option<Vec3> {
-        let cone = ViewCone::new(perception);
+    /// The index of the cell holding `p` (points outside are clamped into the
+    /// border cells), or `None` for a point that is not finite.
+    fn cell_of(&self, p: Vec3) -> Option<usize> {
+        let q = (p - self.min_m) / self.cell_m;
+        if !q.is_finite() {
+            return None;
+        }
+        // Truncation equals `floor` here: negative values clamp to 0.
+        let [dx, dy, dz] = self.dims;
+        let x = (q.x.max(0.0) as usize).min(dx - 1);
+        let y = (q.y.max(0.0) as usize).min(dy - 1);
+        let z = (q.z.max(0.0) as usize).min(dz - 1);
+        Some(x + dx * (y + dy * z))
+    }
+
+    /// Centre of the other fish in the cells whose mean position the fish at
+    /// `position_m` (one of the bucketed fish) heading `heading` sees (inside
+    /// its field of view `cone`), or `None` if it sees none. The fish itself
+    /// is left out of its cell.
+    pub fn seen_centre_m(&self, position_m: Vec3, heading: Vec3, cone: &ViewCone) -> Option<Vec3> {
         let mut sum = Vec3::ZERO;
         let mut count = 0.0;
         let cells = self.count.len();
@@ -130,17 +144,20 @@ impl FarField {
             &self.mean_y_m[..cells],
             &self.mean_z_m[..cells],
         );
+        let mine = self.cell_of(position_m).map(|c| c as u32);
         for k in 0..cells {
-            let offset = Vec3::new(xs[k], ys[k], zs[k]) - position_m;
-            let n = if cone.sees(heading, offset) {
-                self.count[k]
-            } else {
-                0.0
-            };
-            sum += Vec3::new(xs[k], ys[k], zs[k]) * n;
-            count += n;
+            let mean_m = Vec3::new(xs[k], ys[k], zs[k]);
+            if cone.sees(heading, mean_m - position_m) {
+                let n = self.count[k];
+                sum += mean_m * n;
+                count += n;
+                if Some(self.cell[k]) == mine {
+                    sum -= position_m;
+                    count -= 1.0;
+                }
+            }
         }
-        (count > 0.0).then(|| sum / count)
+        (count > 0.5).then(|| sum / count)
     }
 }
 
@@ -148,14 +165,16 @@ impl FarField {
 /// distance and inside the cone of half-angle `vision_angle_rad / 2` around the
 /// heading.
 #[derive(Clone, Copy, Debug)]
-struct ViewCone {
+pub struct ViewCone {
     vision_sq_m2: f32,
     cos_half: f32,
     cos_half_sq: f32,
 }
 
 impl ViewCone {
-    fn new(perception: &Perception) -> Self {
+    /// The field of view of `perception` (one cosine: build it once per step,
+    /// not once per fish).
+    pub fn new(perception: &Perception) -> Self {
         let half_angle = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
         let cos_half = half_angle.cos() - 1e-6;
         Self {
@@ -235,10 +254,39 @@ pub fn heeded_neighbours(
     grid: &SpatialGrid,
     perception: &Perception,
 ) -> Nearest {
+    search_heeded(
+        positions_m,
+        velocities_m_per_s,
+        i,
+        grid,
+        perception,
+        &ViewCone::new(perception),
+        Nearest::new(perception.max_neighbours),
+    )
+}
+
+/// [`heeded_neighbours`] with the field of view `cone` (of `perception`), starting from `known`: neighbours the fish sees now
+/// with their distances now (those it heeded in the last step, as
+/// [`recheck_heeded`] gives them), kept unless nearer ones are found. Finds
+/// the same neighbours as a search from scratch (the order of ties aside),
+/// but the known ones bound the search from the start, so it visits fewer
+/// cells and points.
+pub fn search_heeded(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    i: usize,
+    grid: &SpatialGrid,
+    perception: &Perception,
+    cone: &ViewCone,
+    known: Nearest,
+) -> Nearest {
     let position_m = positions_m[i];
     let heading = heading_of(velocities_m_per_s[i]);
-    let cone = ViewCone::new(perception);
-    let mut nearest = Nearest::new(perception.max_neighbours);
+    let mut nearest = if known.capacity() == perception.max_neighbours.min(MAX_NEAREST) {
+        known
+    } else {
+        Nearest::new(perception.max_neighbours)
+    };
     grid.k_nearest(
         position_m,
         perception.vision_distance_m,
@@ -249,6 +297,37 @@ pub fn heeded_neighbours(
                 && cone.in_angle(heading.dot(other_m - position_m), distance_sq_m2)
         },
     );
+    nearest
+}
+
+/// The neighbours a fish heeded in an earlier step (`previous`, found by
+/// [`heeded_neighbours`]) as it sees them now: each one still inside the
+/// field of view `cone` of the fish at `positions_m[i]`,
+/// swimming with `velocities_m_per_s[i]`, with its distance now, nearest first;
+/// the others (and any index that is no longer a fish) are dropped. Costs a
+/// few multiplications per neighbour instead of a search: the boid layer
+/// searches each fish's neighbours every few steps and rechecks them in
+/// between (see `world::NEIGHBOUR_SEARCH_EVERY_STEPS`).
+pub fn recheck_heeded(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    i: usize,
+    previous: &Nearest,
+    cone: &ViewCone,
+) -> Nearest {
+    let position_m = positions_m[i];
+    let heading = heading_of(velocities_m_per_s[i]);
+    let mut nearest = Nearest::new(previous.capacity());
+    for (j, _) in previous.iter() {
+        let Some(&other_m) = positions_m.get(j) else {
+            continue;
+        };
+        let offset = other_m - position_m;
+        let distance_sq_m2 = offset.length_squared();
+        if j != i && distance_sq_m2 > 0.0 && cone.sees(heading, offset) {
+            nearest.offer(j, distance_sq_m2);
+        }
+    }
     nearest
 }
 
@@ -273,29 +352,35 @@ pub fn neighbour_forces(
     perception: &Perception,
 ) -> NeighbourForces {
     let nearest = heeded_neighbours(positions_m, velocities_m_per_s, i, grid, perception);
+    let far_centre_m = far_field.and_then(|f| {
+        f.seen_centre_m(
+            positions_m[i],
+            heading_of(velocities_m_per_s[i]),
+            &ViewCone::new(perception),
+        )
+    });
     forces_from_neighbours(
         positions_m,
         velocities_m_per_s,
         i,
         &nearest,
-        far_field,
+        far_centre_m,
         perception,
     )
 }
 
-/// [`neighbour_forces`] from the heeded neighbours already found.
+/// [`neighbour_forces`] from the heeded neighbours and the seen centre of the
+/// far field ([`FarField::seen_centre_m`]) already found.
 pub fn forces_from_neighbours(
     positions_m: &[Vec3],
     velocities_m_per_s: &[Vec3],
     i: usize,
     nearest: &Nearest,
-    far_field: Option<&FarField>,
+    far_centre_m: Option<Vec3>,
     perception: &Perception,
 ) -> NeighbourForces {
     let position_m = positions_m[i];
     let velocity_m_per_s = velocities_m_per_s[i];
-    let heading = heading_of(velocity_m_per_s);
-    let far_centre_m = far_field.and_then(|f| f.seen_centre_m(position_m, heading, perception));
     if nearest.is_empty() && far_centre_m.is_none() {
         return NeighbourForces::default();
     }
@@ -504,5 +589,112 @@ mod tests {
             &perception,
         );
         assert_eq!(f.neighbours, 7);
+    }
+
+    #[test]
+    fn the_far_field_is_the_centre_of_the_other_fish_seen() {
+        let tank = (Vec3::new(-6.0, 0.0, -4.0), Vec3::new(6.0, 4.5, 4.0));
+        let me = Vec3::new(-4.0, 2.0, 0.0);
+        let cone = ViewCone::new(&Perception {
+            vision_distance_m: 8.0,
+            ..PERCEPTION
+        });
+        let mut far = FarField::default();
+        far.rebuild(tank.0, tank.1, 2.5, &[me]);
+        assert_eq!(far.seen_centre_m(me, Vec3::X, &cone), None, "alone");
+        // Two fish ahead (one in the same cell as me), one behind in the blind cone.
+        let others = [
+            Vec3::new(-3.5, 2.0, 0.5),
+            Vec3::new(2.0, 2.0, 0.0),
+            Vec3::new(-5.9, 2.0, 0.0),
+        ];
+        let mut all = vec![me];
+        all.extend(others);
+        far.rebuild(tank.0, tank.1, 2.5, &all);
+        let centre = far.seen_centre_m(me, Vec3::X, &cone).unwrap();
+        let expected = (others[0] + others[1]) / 2.0;
+        assert!(centre.distance(expected) < 1e-4, "{centre} != {expected}");
+    }
+
+    #[test]
+    fn a_search_seeded_with_the_last_neighbours_finds_the_nearest_seen() {
+        // A school of 400 fish in a 3 m cube, all heading +x.
+        let mut s = 11u64;
+        let mut next = || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (s >> 40) as f32 / (1u64 << 24) as f32
+        };
+        let fish: Vec<Fish> = (0..400)
+            .map(|_| {
+                let p = Vec3::new(next() * 3.0 - 1.5, 1.0 + next() * 3.0, next() * 3.0 - 1.5);
+                let v = Vec3::new(0.5, next() * 0.2 - 0.1, next() * 0.2 - 0.1);
+                Fish::new(p, v, 0.3, 0.0)
+            })
+            .collect();
+        let (ps, vs) = (positions(&fish), velocities(&fish));
+        let mut grid = SpatialGrid::default();
+        grid.rebuild(
+            Vec3::new(-6.0, 0.0, -4.0),
+            Vec3::new(6.0, 4.5, 4.0),
+            0.4,
+            &ps,
+        );
+        let cone = ViewCone::new(&PERCEPTION);
+        for i in (0..fish.len()).step_by(13) {
+            let fresh = heeded_neighbours(&ps, &vs, i, &grid, &PERCEPTION);
+            assert_eq!(fresh.len(), 7);
+            // Seeds: every other of the true neighbours, plus a farther fish
+            // it sees that is not among them.
+            let mut seeds = Nearest::new(7);
+            for (j, d2) in fresh.iter().step_by(2) {
+                seeds.offer(j, d2);
+            }
+            let extra = (0..fish.len())
+                .find(|&j| {
+                    j != i
+                        && !fresh.contains(j)
+                        && sees(ps[i], heading_of(vs[i]), ps[j], &PERCEPTION)
+                })
+                .unwrap();
+            seeds.offer(extra, ps[extra].distance_squared(ps[i]));
+            let rechecked = recheck_heeded(&ps, &vs, i, &seeds, &cone);
+            assert_eq!(rechecked.len(), seeds.len(), "all seeds are still seen");
+            let seeded = search_heeded(&ps, &vs, i, &grid, &PERCEPTION, &cone, rechecked);
+            let a: Vec<usize> = fresh.iter().map(|(j, _)| j).collect();
+            let b: Vec<usize> = seeded.iter().map(|(j, _)| j).collect();
+            assert_eq!(a, b, "fish {i}: each found once, nearest first");
+        }
+    }
+
+    #[test]
+    fn a_rechecked_neighbour_that_left_the_view_is_dropped() {
+        let me = Fish::new(Vec3::new(0.0, 2.0, 0.0), Vec3::X * 0.5, 0.4, 0.0);
+        let ahead = Fish::new(Vec3::new(1.0, 2.0, 0.0), Vec3::X * 0.5, 0.4, 0.0);
+        let beside = Fish::new(Vec3::new(0.0, 2.0, 0.8), Vec3::X * 0.5, 0.4, 0.0);
+        let mut fish = vec![me, ahead, beside];
+        let heeded = heeded_neighbours(
+            &positions(&fish),
+            &velocities(&fish),
+            0,
+            &grid_for(&fish),
+            &PERCEPTION,
+        );
+        assert_eq!(heeded.len(), 2);
+        // The fish ahead is now straight behind (in the blind cone), the one
+        // beside too far; a removed fish's index is no fish at all.
+        fish[1].position_m = Vec3::new(-1.0, 2.0, 0.0);
+        fish[2].position_m = Vec3::new(0.0, 2.0, 3.0);
+        let cone = ViewCone::new(&PERCEPTION);
+        let now = recheck_heeded(&positions(&fish), &velocities(&fish), 0, &heeded, &cone);
+        assert!(now.is_empty());
+        fish[1].position_m = Vec3::new(1.2, 2.0, 0.0);
+        fish.truncate(2);
+        let now = recheck_heeded(&positions(&fish), &velocities(&fish), 0, &heeded, &cone);
+        let kept: Vec<(usize, f32)> = now.iter().collect();
+        assert_eq!(kept.len(), 1);
+        assert_eq!(kept[0].0, 1);
+        assert!((kept[0].1 - 1.44).abs() < 1e-4, "its distance now");
     }
 }

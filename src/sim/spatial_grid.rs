@@ -228,6 +228,16 @@ impl Nearest {
         }
     }
 
+    /// How many points the list keeps at most (`k`).
+    pub fn capacity(&self) -> usize {
+        self.k
+    }
+
+    /// Is point `j` in the list?
+    pub fn contains(&self, j: usize) -> bool {
+        self.index[..self.len].contains(&(j as u32))
+    }
+
     /// Is the list full (`k` points kept)?
     pub fn is_full(&self) -> bool {
         self.len == self.k
@@ -266,7 +276,10 @@ impl SpatialGrid {
     /// local however far the fish can see. Where the next shell of cells would
     /// cost more than scanning every point, it scans every point instead (so
     /// `accept` may be asked about a point twice; it must not have side
-    /// effects).
+    /// effects). Points already in `nearest` (accepted points within
+    /// `max_radius_m`, with their squared distances from `p`) are kept unless
+    /// nearer ones are found, and never offered twice: a search seeded with
+    /// good guesses is pruned from the start and finds the same points.
     pub fn k_nearest(
         &self,
         p: Vec3,
@@ -408,7 +421,7 @@ impl SpatialGrid {
         let mut offer = |k: usize, d2: f32, nearest: &mut Nearest| {
             if d2 <= max_radius_sq_m2 && d2 < nearest.bound_sq_m2 {
                 let j = self.sorted[slots.start + k] as usize;
-                if accept(j, Vec3::new(xs[k], ys[k], zs[k]), d2) {
+                if accept(j, Vec3::new(xs[k], ys[k], zs[k]), d2) && !nearest.contains(j) {
                     nearest.offer(j, d2);
                 }
             }

@@ -1,6 +1,6 @@
 //! What the world measures after every step, for the lab's charts: the school's
 //! order parameters ([`SchoolMetrics`]; the nearest-neighbour distance and the
-//! groups ten times a second, see [`super::world::SPATIAL_METRICS_EVERY_STEPS`]), how often each SIMBA force was applied
+//! groups four times a second, see [`super::world::SPATIAL_METRICS_EVERY_STEPS`]), how often each SIMBA force was applied
 //! (the control modes' lottery made visible), and the sharks' catches.
 
 use serde::Serialize;
