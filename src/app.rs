@@ -69,6 +69,8 @@ pub struct ShoalApp {
     last_frame_time_secs: Option<f64>,
     /// Frames drawn since start (`state().frames`).
     frames_drawn: u64,
+    /// Are the two compared tanks one above the other (a tall window)?
+    views_stacked: bool,
     widget_rects: WidgetRects,
     /// The in-app benchmark, when started (`?bench`).
     benchmark: Option<Benchmark>,
@@ -143,6 +145,7 @@ impl ShoalApp {
             fps_meter: RateMeter::default(),
             last_frame_time_secs: None,
             frames_drawn: 0,
+            views_stacked: false,
             widget_rects: WidgetRects::new(),
             benchmark: None,
             crash_requested: false,
@@ -322,25 +325,22 @@ impl ShoalApp {
         }
     }
 
-    /// The 3D views: one tank, or two side by side.
+    /// The 3D views: one tank, or two side by side (one above the other when
+    /// that shows the tanks clearly bigger, see [`compare_layout`]).
     fn views_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings) {
         let full = ui.available_rect_before_wrap();
         self.widget_rects.insert("aquarium", full);
         let frame_secs = ui.input(|i| i.stable_dt).min(0.5);
         self.follow_selected(settings, frame_secs);
         let count = self.lab.runs().len();
-        let gap = if count > 1 { 4.0 } else { 0.0 };
-        let width = (full.width() - gap * (count as f32 - 1.0)) / count as f32;
-        let aspect = width / full.height().max(1.0);
+        let rects = compare_layout(full, count);
+        self.views_stacked = rects.len() > 1 && rects[0].left() == rects[1].left();
+        let aspect = rects[0].width() / rects[0].height().max(1.0);
         if self.camera_is_default && (aspect - self.framed_aspect).abs() > 0.01 {
             self.framed_aspect = aspect;
             self.reset_view();
         }
-        for index in 0..count {
-            let rect = egui::Rect::from_min_size(
-                full.min + egui::vec2(index as f32 * (width + gap), 0.0),
-                egui::vec2(width, full.height()),
-            );
+        for (index, rect) in rects.into_iter().enumerate() {
             self.view_ui(ui, rect, index, settings);
         }
     }
@@ -551,10 +551,12 @@ impl ShoalApp {
         if self.lab.comparing() {
             let tank = settings.tank(side);
             let label = format!(
-                "{} tank · {} · {}",
-                match side {
-                    Side::Left => "Left",
-                    Side::Right => "Right",
+                "{} · {} · {}",
+                match (side, self.views_stacked) {
+                    (Side::Left, false) => "Left tank",
+                    (Side::Right, false) => "Right tank",
+                    (Side::Left, true) => "Left tank (top)",
+                    (Side::Right, true) => "Right tank (bottom)",
                 },
                 tank.preset.label(),
                 mode_label(tank.mode)
@@ -1171,5 +1173,78 @@ impl eframe::App for ShoalApp {
     #[cfg(target_arch = "wasm32")]
     fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
         Some(&mut *self)
+    }
+}
+
+/// Width over height of the tank as the default camera frames it (about 2:1).
+/// Used to judge which layout of two views shows the tanks bigger.
+const FRAMED_TANK_ASPECT: f32 = 1.9;
+
+/// Where `count` views (1 or 2) go in `full`. Two tanks sit side by side, or
+/// one above the other when that draws them at least 15 % bigger (a tall
+/// window, a portrait tablet): a framed tank fills the width of a view or the
+/// height times [`FRAMED_TANK_ASPECT`], whichever is smaller.
+fn compare_layout(full: egui::Rect, count: usize) -> Vec<egui::Rect> {
+    const GAP: f32 = 4.0;
+    if count < 2 {
+        return vec![full];
+    }
+    let (w, h) = (full.width(), full.height());
+    let side_by_side = ((w - GAP) / 2.0).min(h * FRAMED_TANK_ASPECT);
+    let stacked = w.min((h - GAP) / 2.0 * FRAMED_TANK_ASPECT);
+    if stacked > 1.15 * side_by_side {
+        let height = (h - GAP) / 2.0;
+        (0..count)
+            .map(|i| {
+                egui::Rect::from_min_size(
+                    full.min + egui::vec2(0.0, i as f32 * (height + GAP)),
+                    egui::vec2(w, height),
+                )
+            })
+            .collect()
+    } else {
+        let width = (w - GAP) / 2.0;
+        (0..count)
+            .map(|i| {
+                egui::Rect::from_min_size(
+                    full.min + egui::vec2(i as f32 * (width + GAP), 0.0),
+                    egui::vec2(width, h),
+                )
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rect(w: f32, h: f32) -> egui::Rect {
+        egui::Rect::from_min_size(egui::pos2(330.0, 0.0), egui::vec2(w, h))
+    }
+
+    #[test]
+    fn two_tanks_sit_side_by_side_on_a_wide_screen_and_stack_on_a_tall_one() {
+        // A projector (16:9 less the panel): side by side.
+        let wide = compare_layout(rect(1590.0, 800.0), 2);
+        assert_eq!(wide.len(), 2);
+        assert_eq!(wide[0].top(), wide[1].top());
+        assert!(wide[0].right() < wide[1].left());
+        // A portrait tablet: one above the other, each the full width.
+        let tall = compare_layout(rect(1036.0, 1000.0), 2);
+        assert_eq!(tall[0].left(), tall[1].left());
+        assert!(tall[0].bottom() < tall[1].top());
+        assert_eq!(tall[0].width(), 1036.0);
+        for layout in [wide, tall] {
+            assert!(
+                layout
+                    .iter()
+                    .all(|r| rect(1590.0, 1000.0).contains_rect(*r))
+            );
+        }
+        assert_eq!(
+            compare_layout(rect(800.0, 600.0), 1),
+            vec![rect(800.0, 600.0)]
+        );
     }
 }
