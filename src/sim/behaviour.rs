@@ -145,6 +145,26 @@ pub fn escape(me: &Me, predator_m: Vec3) -> Vec3 {
     direction * me.top_speed_m_per_s
 }
 
+/// escaping, for a fish that schools and sees schoolmates: away from the
+/// predator at top speed like [`escape`], but also towards the schoolmates'
+/// heading and centre (the school routine at full fright), so that the
+/// school flees as a group instead of scattering one by one. Weight of the
+/// flight against the school: [`ESCAPE_SHARE_IN_SCHOOL`]. Collective
+/// evasion keeps the confusion effect working on the predator (Magurran &
+/// Pitcher 1987 describe schools fleeing as one, "flash expansion" and
+/// re-forming; Pitcher & Parrish 1993).
+pub fn escape_with_school(me: &Me, neighbours: &[Neighbour], predator_m: Vec3) -> Vec3 {
+    let flee = escape(me, predator_m).normalize_or(me.heading);
+    let together = school(me, neighbours, 1.0, Some(predator_m)).normalize_or(flee);
+    (flee * ESCAPE_SHARE_IN_SCHOOL + together * (1.0 - ESCAPE_SHARE_IN_SCHOOL)).normalize_or(flee)
+        * me.top_speed_m_per_s
+}
+
+/// How much a fleeing schooling fish follows its own flight rather than its
+/// school (0–1). Default 0.6 (chosen: the school stays together but every
+/// fish still turns away from the predator).
+pub const ESCAPE_SHARE_IN_SCHOOL: f32 = 0.6;
+
 /// A schooling neighbour as the fish sees it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Neighbour {
