@@ -1115,6 +1115,15 @@ impl eframe::App for ShoalApp {
 
         let mut settings = self.lab.settings().clone();
         let mut actions = keyboard_shortcuts(ui, &mut settings);
+        // The Minds section shows the demo's own values under the teacher's.
+        self.panel.reef_demo_habits.clear();
+        if let Some(reef) = self.lab.runs()[0].reef() {
+            for kind in crate::sim::mind::FishKind::ALL {
+                if let Some(a) = reef.animals().iter().find(|a| a.demo_habits.kind == kind) {
+                    self.panel.reef_demo_habits.push(a.demo_habits);
+                }
+            }
+        }
         egui::Panel::left("controls")
             .default_size(270.0)
             .resizable(true)

@@ -442,6 +442,9 @@ impl Run {
         if reef.config().current_m_per_s != wanted.current_m_per_s {
             reef.set_current(wanted.current_m_per_s);
         }
+        if reef.config().traits != wanted.traits {
+            reef.set_traits(wanted.traits);
+        }
         if self.traced != wanted.selected {
             self.traced = wanted.selected;
             self.body_trace.clear();
@@ -1051,13 +1054,22 @@ mod tests {
         lab.step(20);
         assert_eq!(lab.runs()[0].steps(), 20);
         assert!((lab.step_secs() - 0.055).abs() < 1e-9);
-        // Live: visibility, current, selection. Same run.
+        // Live: visibility, current, selection, minds. Same run.
         let mut s = lab.settings().clone();
         s.reef.visibility_m = 3.0;
         s.reef.selected = Some(0);
+        s.reef.traits.predator.digestion_rate_per_step = Some(0.005);
         lab.apply_settings(s);
         assert_eq!(lab.runs()[0].steps(), 20);
-        assert_eq!(lab.runs()[0].reef().unwrap().config().visibility_m, 3.0);
+        let reef = lab.runs()[0].reef().unwrap();
+        assert_eq!(reef.config().visibility_m, 3.0);
+        for a in reef.animals() {
+            let ravenous = a.habits.mental.digestion_rate_per_step == 0.005;
+            assert_eq!(
+                ravenous,
+                a.habits.kind == crate::sim::mind::FishKind::Predator
+            );
+        }
         lab.step(5);
         assert_eq!(
             lab.runs()[0].body_trace().len(),

@@ -5,6 +5,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::sim::mind::FishKind;
+use crate::sim::mind::habits::{KindTraits, MindTraits};
 use crate::sim::reef_world::{MAX_FOOD, ReefBodyKind, ReefConfig, ReefScene};
 
 /// Most prey fish the slider offers: the Reef demo then holds
@@ -68,6 +70,9 @@ pub struct ReefSettings {
     pub show_vision: bool,
     /// Colour the water by light or temperature.
     pub overlay: ReefOverlay,
+    /// The teacher's changes to the minds of predators, prey and pacifists
+    /// (`null` values keep the demo's own); they apply at once.
+    pub traits: KindTraits,
 }
 
 impl Default for ReefSettings {
@@ -83,6 +88,7 @@ impl Default for ReefSettings {
             follow: false,
             show_vision: true,
             overlay: ReefOverlay::None,
+            traits: KindTraits::default(),
         }
     }
 }
@@ -98,6 +104,7 @@ impl ReefSettings {
             current_m_per_s: self.current_m_per_s,
             food_count: self.food_count.map(|n| n as usize),
             prey_count: self.prey_count.map(|n| n as usize),
+            traits: self.traits,
         }
     }
 
@@ -161,6 +168,11 @@ impl ReefSettings {
             0.0,
             REEF_CURRENT_MAX_M_PER_S,
         )?;
+        for kind in FishKind::ALL {
+            if let Err((name, reason)) = self.traits.of(kind).validate() {
+                return Err((format!("{prefix}traits.{}.{name}", kind.label()), reason));
+            }
+        }
         let animals = self.animal_count();
         if let Some(i) = self.selected
             && i as usize >= animals
@@ -188,6 +200,13 @@ impl ReefSettings {
         self.food_count = self.food_count.map(|n| n.min(REEF_FOOD_MAX));
         self.visibility_m = fix(self.visibility_m, VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0);
         self.current_m_per_s = fix(self.current_m_per_s, 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03);
+        for kind in FishKind::ALL {
+            let traits: &mut MindTraits = self.traits.of_mut(kind);
+            for t in &MindTraits::ALL {
+                let value = (t.get)(traits).filter(|v| v.is_finite());
+                (t.set)(traits, value.map(|v| v.clamp(t.min, t.max)));
+            }
+        }
         let animals = self.animal_count();
         self.selected = self.selected.filter(|&i| (i as usize) < animals);
     }
@@ -222,6 +241,28 @@ mod tests {
         assert_eq!(nan.current_m_per_s, 0.03);
         assert_eq!(nan.prey_count, Some(REEF_PREY_MAX));
         assert_eq!(nan.validate("reef."), Ok(()));
+    }
+
+    #[test]
+    fn traits_are_checked_named_and_clamped() {
+        let mut s = ReefSettings::default();
+        s.traits.predator.digestion_rate_per_step = Some(0.005);
+        s.traits.pacifist.libido_rate_per_step = Some(0.01);
+        assert_eq!(s.validate("reef."), Ok(()));
+        let json = serde_json::to_string(&s).unwrap();
+        assert_eq!(serde_json::from_str::<ReefSettings>(&json).unwrap(), s);
+        s.traits.prey.fear_threshold = Some(0.9);
+        let (key, reason) = s.validate("reef.").unwrap_err();
+        assert_eq!(key, "reef.traits.prey.fear_threshold");
+        assert!(reason.contains("choose from 0.1 to 0.5"), "{reason}");
+        s.traits.prey.urge_threshold = Some(f32::NAN);
+        s.clamp();
+        assert_eq!(s.traits.prey.fear_threshold, Some(0.5));
+        assert_eq!(s.traits.prey.urge_threshold, None);
+        assert_eq!(s.validate("reef."), Ok(()));
+        assert!(
+            serde_json::from_str::<ReefSettings>(r#"{"traits": {"prey": {"hunger": 1}}}"#).is_err()
+        );
     }
 
     #[test]

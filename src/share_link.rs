@@ -161,7 +161,17 @@ mod tests {
             follow: rng.random_bool(0.5),
             show_vision: rng.random_bool(0.5),
             overlay: ReefOverlay::ALL[rng.random_range(0..3)],
+            traits: Default::default(),
         };
+        for kind in crate::sim::mind::FishKind::ALL {
+            let traits = reef.traits.of_mut(kind);
+            for t in &crate::sim::mind::habits::MindTraits::ALL {
+                let value = rng
+                    .random_bool(0.3)
+                    .then(|| rng.random_range(t.min..=t.max));
+                (t.set)(traits, value);
+            }
+        }
         let animals = reef.animal_count() as u32;
         reef.selected = (animals > 0 && rng.random_bool(0.5)).then(|| rng.random_range(0..animals));
         reef

@@ -29,6 +29,7 @@ use super::body::body_layout::HEAD_NODE;
 use super::courtship::{Pair, Partner, Phase};
 use super::environment::Environment;
 use super::fish::Fish;
+use super::mind::habits::KindTraits;
 use super::mind::{
     FishKind, Focus, Habits, Intention, IntentionGenerator, Liking, MentalState, Percept, Sex,
     Target,
@@ -250,6 +251,8 @@ pub struct ReefConfig {
     pub food_count: Option<usize>,
     /// Prey fish in the scenes that have a school (the scene's default if `None`).
     pub prey_count: Option<usize>,
+    /// A teacher's changes to the minds of each kind of fish (none by default).
+    pub traits: KindTraits,
 }
 
 impl Default for ReefConfig {
@@ -262,6 +265,7 @@ impl Default for ReefConfig {
             current_m_per_s: 0.03,
             food_count: None,
             prey_count: None,
+            traits: KindTraits::default(),
         }
     }
 }
@@ -337,7 +341,10 @@ pub struct MindSample {
 /// An animal of the reef: body and mind.
 #[derive(Clone, Debug)]
 pub struct ReefAnimal {
+    /// The habits in use: the demo's own with the teacher's traits put in.
     pub habits: Habits,
+    /// The habits the demo gave this animal.
+    pub demo_habits: Habits,
     pub mental: MentalState,
     pub generator: IntentionGenerator,
     /// This step's intention and target.
@@ -552,6 +559,7 @@ impl ReefWorld {
             pairs: Vec::new(),
         };
         world.populate(config.scene);
+        world.set_traits(config.traits);
         if let Some(n) = config.food_count {
             world.food_target = n.min(MAX_FOOD);
         }
@@ -565,6 +573,17 @@ impl ReefWorld {
     pub fn tank(&self) -> &Tank {
         &self.tank
     }
+
+    /// Gives every animal its demo's habits with `traits` put in, at once
+    /// (the teacher's *Minds* panel). Hunger, libido and fear carry on from
+    /// where they are, under the new constants.
+    pub fn set_traits(&mut self, traits: KindTraits) {
+        self.config.traits = traits;
+        for a in &mut self.animals {
+            a.habits = traits.of(a.demo_habits.kind).applied_to(a.demo_habits);
+        }
+    }
+
     pub fn environment(&self) -> &Environment {
         &self.env
     }
@@ -925,6 +944,7 @@ impl ReefWorld {
         self.animals.push(ReefAnimal {
             mental: MentalState::new(&habits.mental, 0.0, 0.0),
             habits,
+            demo_habits: habits,
             generator: IntentionGenerator::default(),
             focus: Focus::WANDER,
             body,
@@ -2525,6 +2545,58 @@ mod tests {
             w.animal_mut(shark).unwrap().mental.food_eaten = 0.0;
             run(&mut w, 90.0);
             assert_eq!(w.counts().prey_eaten, 1, "{body:?}");
+        }
+    }
+
+    #[test]
+    fn a_teachers_traits_change_every_fish_of_the_kind_at_once() {
+        use super::super::mind::habits::{DEVOTED_BODY_LENGTHS, MindTraits};
+        use super::super::mind::mental_state::RAVENOUS_DIGESTION_RATE;
+        let mut w = reef(ReefScene::Reef, ReefBodyKind::PointMass, 2);
+        run(&mut w, 5.0);
+        let before: Vec<Habits> = w.animals().iter().map(|a| a.habits).collect();
+        let at = w.animals()[0].body.position_m();
+        let traits = KindTraits {
+            pacifist: MindTraits {
+                digestion_rate_per_step: Some(RAVENOUS_DIGESTION_RATE),
+                persistence_body_lengths: Some(DEVOTED_BODY_LENGTHS),
+                ..MindTraits::default()
+            },
+            ..KindTraits::default()
+        };
+        w.set_traits(traits);
+        for (a, b) in w.animals().iter().zip(&before) {
+            if a.habits.kind == FishKind::Pacifist {
+                assert_eq!(a.habits.mental.digestion_rate_per_step, 0.005);
+                assert_eq!(a.habits.persistence_body_lengths, 20.0);
+                assert_eq!(a.habits.light, b.light, "their own tastes stay");
+            } else {
+                assert_eq!(a.habits, *b, "other kinds unchanged");
+            }
+        }
+        assert_eq!(w.animals()[0].body.position_m(), at, "the reef goes on");
+        // Ravenous pacifists are hungry again sooner than nominal ones.
+        let mut nominal = reef(ReefScene::Reef, ReefBodyKind::PointMass, 2);
+        run(&mut nominal, 5.0);
+        run(&mut w, 20.0);
+        run(&mut nominal, 20.0);
+        let hunger = |w: &ReefWorld| {
+            w.animals()
+                .iter()
+                .filter(|a| a.habits.kind == FishKind::Pacifist)
+                .map(|a| a.mental.hunger)
+                .sum::<f32>()
+        };
+        assert!(
+            hunger(&w) > hunger(&nominal) + 0.5,
+            "{} vs {}",
+            hunger(&w),
+            hunger(&nominal)
+        );
+        // Back to the demo's own values.
+        w.set_traits(KindTraits::default());
+        for (a, b) in w.animals().iter().zip(&before) {
+            assert_eq!(a.habits, *b);
         }
     }
 

@@ -7,6 +7,7 @@ use eframe::egui;
 use super::WidgetRects;
 use super::tank_panel::tank_ui;
 use crate::settings::{FISH_COUNT_MAX, SEED_MAX, SPEED_MAX, SPEED_MIN, Scene, Settings, Side};
+use crate::sim::mind::{FishKind, Habits};
 
 /// What a click in the tank does.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -54,10 +55,15 @@ impl EditTool {
 }
 
 /// Panel state that is not a setting: which tank the controls edit, and the tool.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct PanelState {
     pub edit_side: Side,
     pub tool: EditTool,
+    /// Reef scene: whose mind the *Minds* section edits.
+    pub minds_kind: FishKind,
+    /// Reef scene: the habits the demo gives each kind of fish present (the
+    /// first of each kind), filled in by the app every frame.
+    pub reef_demo_habits: Vec<Habits>,
 }
 
 impl Default for PanelState {
@@ -65,6 +71,8 @@ impl Default for PanelState {
         Self {
             edit_side: Side::Left,
             tool: EditTool::Look,
+            minds_kind: FishKind::Predator,
+            reef_demo_habits: Vec::new(),
         }
     }
 }
@@ -233,6 +241,13 @@ pub fn control_panel_ui(
             &mut settings.reef,
             rects,
         ));
+        super::reef_panel::minds_ui(
+            ui,
+            &mut settings.reef.traits,
+            &mut state.minds_kind,
+            &state.reef_demo_habits,
+            rects,
+        );
     }
     if settings.scene == Scene::Learning {
         actions.extend(super::learning_panel::learning_controls_ui(

@@ -180,6 +180,22 @@ export async function waitFrames(page, n = 1) {
   });
 }
 
+/** Scrolls the side panel with the mouse wheel, as a person would, until the named
+ * widget lies within the visible part of the panel (above the bottom panels), and
+ * returns its rectangle. */
+export async function scrollPanelTo(page, name) {
+  for (let attempt = 0; attempt < 40; attempt++) {
+    const w = await page.evaluate(() => window.shoal.widgets());
+    const r = w[name];
+    const view = w.view_left;
+    if (r && view && r.y >= 0 && r.y + r.height <= view.y + view.height) return r;
+    await page.mouse.move(120, 300);
+    await page.mouse.wheel(0, r && r.y < 0 ? -100 : 100);
+    await waitFrames(page, 2);
+  }
+  throw new Error(`${name} cannot be scrolled into view`);
+}
+
 /** Waits until a named widget is on screen (the panel may still be laying out) and
  * returns its rectangle. */
 export async function waitForWidget(page, name) {

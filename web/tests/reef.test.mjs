@@ -15,6 +15,7 @@ import {
   clickUntil,
   waitForWidget,
   changedPixels,
+  scrollPanelTo,
 } from "./harness.mjs";
 
 const state = (page) => page.evaluate(() => window.shoal.state());
@@ -110,6 +111,45 @@ describe("reef", () => {
     assert.ok(log, "the event log is on screen");
     const stats = pixelStats(decode(await page.screenshot()), log);
     assert.ok(stats.distinctColours > 4, "the log has text");
+  });
+
+  test("the Minds section changes every fish of a kind: sexual mania, devoted, the demo's own", async () => {
+    // The courtship demo holds only pacifists, whose libido is manic already.
+    // (f32 values: compare within a part in a million.)
+    const near = (a, b) => Math.abs(a - b) < 1e-6 * Math.abs(b);
+    await clickUntil(page, "reef_minds", () => !!window.shoal.widgets().reef_minds_pacifist);
+    await clickUntil(page, "reef_minds_pacifist", () => !!window.shoal.widgets().reef_minds_mania);
+    await clickUntil(page, "reef_minds_nominal_libido", () =>
+      Math.abs(window.shoal.settings().reef.traits.pacifist.libido_rate_per_step - 0.0025) < 1e-9);
+    await scrollPanelTo(page, "reef_minds_persistence_devoted");
+    await clickUntil(page, "reef_minds_persistence_devoted", () =>
+      window.shoal.settings().reef.traits.pacifist.persistence_body_lengths === 20);
+    saveArtifact("reef-minds-webgl2.png", await page.screenshot());
+    const pacifist = async () => {
+      await page.evaluate(() => window.shoal.set({ reef: { selected: 0 } }));
+      await page.evaluate(() => window.shoal.step(1));
+      const fish = (await state(page)).reef.selected;
+      await page.evaluate(() => window.shoal.set({ reef: { selected: null } }));
+      return fish;
+    };
+    let fish = await pacifist();
+    assert.ok(near(fish.habits.mental.libido_rate_per_step, 0.0025), "nominal p1 applied at once");
+    assert.equal(fish.habits.persistence_body_lengths, 20, "devoted");
+    await scrollPanelTo(page, "reef_minds_reset");
+    await clickUntil(page, "reef_minds_reset", () =>
+      window.shoal.settings().reef.traits.pacifist.persistence_body_lengths == null);
+    fish = await pacifist();
+    assert.ok(near(fish.habits.mental.libido_rate_per_step, 0.01), "the demo's sexual mania again");
+    assert.equal(fish.habits.persistence_body_lengths, 2);
+    const refused = await page.evaluate(() => {
+      try {
+        window.shoal.set({ reef: { traits: { prey: { fear_threshold: 0.9 } } } });
+        return "no error";
+      } catch (err) {
+        return String(err.message);
+      }
+    });
+    assert.match(refused, /reef\.traits\.prey\.fear_threshold/);
   });
 
   test("bad values are refused with a message and change nothing", async () => {

@@ -172,6 +172,207 @@ impl Habits {
     }
 }
 
+/// A teacher's changes to the minds of one kind of fish (the reef's *Minds*
+/// panel, `reef.traits` in the settings): each value given replaces what the
+/// demo chose for every fish of the kind; `None` keeps the demo's own. Names
+/// are those of [`Habits`] and [`MentalConstants`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct MindTraits {
+    /// p0, digestion rate per paper step: nominal 0.00067, "ravenous" 0.005.
+    pub digestion_rate_per_step: Option<f32>,
+    /// p1, libido growth per paper step: nominal 0.0025, "sexual mania" 0.01.
+    pub libido_rate_per_step: Option<f32>,
+    /// α, appetite in food units.
+    pub appetite_food_units: Option<f32>,
+    /// D0, fear distance in body lengths (paper 3.85).
+    pub fear_distance_body_lengths: Option<f32>,
+    /// Collision box ahead, body lengths: "timid" 1.5, ordinary 0.8,
+    /// "courageous" 0.3.
+    pub collision_box_ahead_body_lengths: Option<f32>,
+    /// Persistence threshold, body lengths: "fickle" 0, ordinary 2,
+    /// "devoted" 20.
+    pub persistence_body_lengths: Option<f32>,
+    /// f0, the fear above which a fish takes evasive action.
+    pub fear_threshold: Option<f32>,
+    /// f1, the fear of the worst predator above which a schooling fish
+    /// escapes instead of schooling.
+    pub panic_threshold: Option<f32>,
+    /// r, the hunger or libido above which a fish eats or mates.
+    pub urge_threshold: Option<f32>,
+}
+
+/// One number a teacher can set in [`MindTraits`]: its name, its range and
+/// how to read and write it.
+pub struct MindTrait {
+    pub name: &'static str,
+    pub min: f32,
+    pub max: f32,
+    pub get: fn(&MindTraits) -> Option<f32>,
+    pub set: fn(&mut MindTraits, Option<f32>),
+    /// The value a fish has when nothing is set.
+    pub current: fn(&Habits) -> f32,
+}
+
+impl MindTraits {
+    /// Every trait with its range (the ranges [`Habits::sanitized`] keeps;
+    /// f0 and r within the paper's 0.1–0.5 and 0–0.5).
+    pub const ALL: [MindTrait; 9] = [
+        MindTrait {
+            name: "digestion_rate_per_step",
+            min: 0.0,
+            max: 0.05,
+            get: |t| t.digestion_rate_per_step,
+            set: |t, v| t.digestion_rate_per_step = v,
+            current: |h| h.mental.digestion_rate_per_step,
+        },
+        MindTrait {
+            name: "libido_rate_per_step",
+            min: 0.0,
+            max: 0.05,
+            get: |t| t.libido_rate_per_step,
+            set: |t, v| t.libido_rate_per_step = v,
+            current: |h| h.mental.libido_rate_per_step,
+        },
+        MindTrait {
+            name: "appetite_food_units",
+            min: 0.5,
+            max: 20.0,
+            get: |t| t.appetite_food_units,
+            set: |t, v| t.appetite_food_units = v,
+            current: |h| h.mental.appetite_food_units,
+        },
+        MindTrait {
+            name: "fear_distance_body_lengths",
+            min: 0.1,
+            max: 20.0,
+            get: |t| t.fear_distance_body_lengths,
+            set: |t, v| t.fear_distance_body_lengths = v,
+            current: |h| h.mental.fear_distance_body_lengths,
+        },
+        MindTrait {
+            name: "collision_box_ahead_body_lengths",
+            min: 0.1,
+            max: 3.0,
+            get: |t| t.collision_box_ahead_body_lengths,
+            set: |t, v| t.collision_box_ahead_body_lengths = v,
+            current: |h| h.collision_box_ahead_body_lengths,
+        },
+        MindTrait {
+            name: "persistence_body_lengths",
+            min: 0.0,
+            max: 50.0,
+            get: |t| t.persistence_body_lengths,
+            set: |t, v| t.persistence_body_lengths = v,
+            current: |h| h.persistence_body_lengths,
+        },
+        MindTrait {
+            name: "fear_threshold",
+            min: 0.1,
+            max: 0.5,
+            get: |t| t.fear_threshold,
+            set: |t, v| t.fear_threshold = v,
+            current: |h| h.fear_threshold,
+        },
+        MindTrait {
+            name: "panic_threshold",
+            min: 0.5,
+            max: 1.0,
+            get: |t| t.panic_threshold,
+            set: |t, v| t.panic_threshold = v,
+            current: |h| h.panic_threshold,
+        },
+        MindTrait {
+            name: "urge_threshold",
+            min: 0.01,
+            max: 0.5,
+            get: |t| t.urge_threshold,
+            set: |t, v| t.urge_threshold = v,
+            current: |h| h.urge_threshold,
+        },
+    ];
+
+    /// `habits` with every value given here put in (and kept in range).
+    pub fn applied_to(&self, mut habits: Habits) -> Habits {
+        let m = &mut habits.mental;
+        let pairs: [(Option<f32>, &mut f32); 4] = [
+            (self.digestion_rate_per_step, &mut m.digestion_rate_per_step),
+            (self.libido_rate_per_step, &mut m.libido_rate_per_step),
+            (self.appetite_food_units, &mut m.appetite_food_units),
+            (
+                self.fear_distance_body_lengths,
+                &mut m.fear_distance_body_lengths,
+            ),
+        ];
+        for (value, slot) in pairs {
+            if let Some(v) = value {
+                *slot = v;
+            }
+        }
+        let pairs: [(Option<f32>, &mut f32); 5] = [
+            (
+                self.collision_box_ahead_body_lengths,
+                &mut habits.collision_box_ahead_body_lengths,
+            ),
+            (
+                self.persistence_body_lengths,
+                &mut habits.persistence_body_lengths,
+            ),
+            (self.fear_threshold, &mut habits.fear_threshold),
+            (self.panic_threshold, &mut habits.panic_threshold),
+            (self.urge_threshold, &mut habits.urge_threshold),
+        ];
+        for (value, slot) in pairs {
+            if let Some(v) = value {
+                *slot = v;
+            }
+        }
+        habits.sanitized()
+    }
+
+    /// The first value out of its range, as (name, reason).
+    pub fn validate(&self) -> Result<(), (&'static str, String)> {
+        for t in &Self::ALL {
+            if let Some(v) = (t.get)(self)
+                && !(v.is_finite() && (t.min..=t.max).contains(&v))
+            {
+                return Err((
+                    t.name,
+                    format!("{v} is out of range: choose from {} to {}", t.min, t.max),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// [`MindTraits`] for each kind of fish.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct KindTraits {
+    pub predator: MindTraits,
+    pub prey: MindTraits,
+    pub pacifist: MindTraits,
+}
+
+impl KindTraits {
+    pub fn of(&self, kind: FishKind) -> &MindTraits {
+        match kind {
+            FishKind::Predator => &self.predator,
+            FishKind::Prey => &self.prey,
+            FishKind::Pacifist => &self.pacifist,
+        }
+    }
+
+    pub fn of_mut(&mut self, kind: FishKind) -> &mut MindTraits {
+        match kind {
+            FishKind::Predator => &mut self.predator,
+            FishKind::Prey => &mut self.prey,
+            FishKind::Pacifist => &mut self.pacifist,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -183,6 +384,39 @@ mod tests {
         assert!(Liking::Low.content_at(0.55));
         assert!(!Liking::Low.content_at(0.7));
         assert!(Liking::Indifferent.content_at(0.0));
+    }
+
+    #[test]
+    fn traits_replace_only_what_they_set_and_name_a_bad_value() {
+        let demo = Habits::new(FishKind::Predator, Sex::Male, 9);
+        assert_eq!(MindTraits::default().applied_to(demo), demo);
+        let ravenous = MindTraits {
+            digestion_rate_per_step: Some(super::super::mental_state::RAVENOUS_DIGESTION_RATE),
+            persistence_body_lengths: Some(DEVOTED_BODY_LENGTHS),
+            ..MindTraits::default()
+        };
+        let h = ravenous.applied_to(demo);
+        assert_eq!(h.mental.digestion_rate_per_step, 0.005);
+        assert_eq!(h.persistence_body_lengths, 20.0);
+        assert_eq!(
+            h.mental.appetite_food_units,
+            demo.mental.appetite_food_units
+        );
+        assert_eq!(h.fear_threshold, demo.fear_threshold);
+        for t in &MindTraits::ALL {
+            let mut bad = MindTraits::default();
+            (t.set)(&mut bad, Some(t.max + 1.0));
+            let (name, reason) = bad.validate().unwrap_err();
+            assert_eq!(name, t.name);
+            assert!(reason.contains("out of range"), "{reason}");
+            (t.set)(&mut bad, Some(f32::NAN));
+            assert!(bad.validate().is_err());
+            (t.set)(&mut bad, Some(t.min));
+            assert_eq!(bad.validate(), Ok(()));
+            let mut one = MindTraits::default();
+            (t.set)(&mut one, Some(t.min));
+            assert_eq!((t.current)(&one.applied_to(demo)), t.min, "{}", t.name);
+        }
     }
 
     #[test]
