@@ -168,7 +168,10 @@ pub fn learning_plots_ui(
             progress_ui(ui, lab, rects);
         });
         ui.separator();
-        let width = ((ui.available_width() - 30.0) / 4.0).max(120.0);
+        // Four plots and the three separators between them (a separator is 6
+        // points wide plus the item spacing on each side) fill the width.
+        let separator = 6.0 + 2.0 * ui.spacing().item_spacing.x;
+        let width = ((ui.available_width() - 3.0 * separator - 12.0) / 4.0).max(120.0);
         let height = (ui.available_height() - 24.0).clamp(80.0, 220.0);
         ui.vertical(|ui| {
             ui.set_width(width);
