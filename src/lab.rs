@@ -453,6 +453,11 @@ impl Run {
 
     /// Follows new settings for this tank without restarting where possible.
     fn follow(&mut self, settings: &Settings) {
+        if self.learning.is_some() {
+            // The lab applies the learning settings itself; the boid world
+            // stays empty open water.
+            return;
+        }
         if self.reef.is_some() {
             self.follow_reef(settings);
             return;
@@ -1136,6 +1141,14 @@ mod tests {
         lab.advance_frame(0.1, 0.1);
         lab.advance_frame(0.1, 0.2);
         assert!(lab.runs()[0].learning().unwrap().trainer().evaluations() > 30);
+        // Settings that change nothing here (the controller, the speed, the
+        // boid tank's fish) leave the water open: no aquarium fish, no rocks.
+        let mut s = lab.settings().clone();
+        s.learning.controller = crate::sim::learning::learning_lab::ControllerChoice::HandTuned;
+        s.speed = 2.0;
+        s.left.fish_count = 500;
+        lab.apply_settings(s);
+        assert!(lab.world().fish().is_empty() && lab.world().obstacles().is_empty());
         // A different length, or Reset training, starts from a brain-dead fish.
         lab.reset_training();
         assert_eq!(lab.runs()[0].learning().unwrap().trainer().evaluations(), 0);
