@@ -618,18 +618,21 @@ mod tests {
 
     #[test]
     fn a_search_seeded_with_the_last_neighbours_finds_the_nearest_seen() {
-        // A school of 400 fish in a 3 m cube, all heading +x.
-        let mut s = 11u64;
-        let mut next = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 40) as f32 / (1u64 << 24) as f32
-        };
+        // A school of 400 fish in a 3 m cube, all heading about +x.
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(11);
         let fish: Vec<Fish> = (0..400)
             .map(|_| {
-                let p = Vec3::new(next() * 3.0 - 1.5, 1.0 + next() * 3.0, next() * 3.0 - 1.5);
-                let v = Vec3::new(0.5, next() * 0.2 - 0.1, next() * 0.2 - 0.1);
+                let p = Vec3::new(
+                    rng.random_range(-1.5..1.5),
+                    rng.random_range(1.0..4.0),
+                    rng.random_range(-1.5..1.5),
+                );
+                let v = Vec3::new(
+                    0.5,
+                    rng.random_range(-0.1..0.1),
+                    rng.random_range(-0.1..0.1),
+                );
                 Fish::new(p, v, 0.3, 0.0)
             })
             .collect();

@@ -2147,6 +2147,14 @@ mod tests {
         })
     }
 
+    /// The (first) predator of a reef.
+    fn shark_of(w: &ReefWorld) -> usize {
+        w.animals()
+            .iter()
+            .position(|a| a.habits.kind == FishKind::Predator)
+            .expect("a predator")
+    }
+
     fn run(w: &mut ReefWorld, secs: f32) {
         for _ in 0..(secs / w.dt_secs()).round() as u32 {
             w.step();
@@ -2274,11 +2282,7 @@ mod tests {
                 .iter()
                 .filter(|a| a.habits.kind == FishKind::Prey)
                 .count();
-            let shark = w
-                .animals()
-                .iter()
-                .position(|a| a.habits.kind == FishKind::Predator)
-                .unwrap();
+            let shark = shark_of(&w);
             run(&mut w, 300.0);
             let c = w.counts();
             assert_eq!(w.alive_count(), prey + 1 - c.prey_eaten as usize);
@@ -2294,11 +2298,7 @@ mod tests {
     fn prey_that_sees_the_shark_flees() {
         for body in [ReefBodyKind::PointMass, ReefBodyKind::Physical] {
             let mut w = reef(ReefScene::PredatorAndSchool, body, 6);
-            let shark = w
-                .animals()
-                .iter()
-                .position(|a| a.habits.kind == FishKind::Predator)
-                .unwrap();
+            let shark = shark_of(&w);
             let c = w.tank().center_m();
             w.place(0, c, Vec3::X);
             // A fed shark cruises by instead of chasing.
@@ -2457,11 +2457,7 @@ mod tests {
         for seed in 1..=6 {
             for crowd in [0usize, 6] {
                 let mut w = reef(ReefScene::PredatorAndSchool, ReefBodyKind::PointMass, seed);
-                let shark = w
-                    .animals()
-                    .iter()
-                    .position(|a| a.habits.kind == FishKind::Predator)
-                    .unwrap();
+                let shark = shark_of(&w);
                 let c = w.tank().center_m();
                 w.place(shark, c, Vec3::X);
                 let prey: Vec<usize> = (0..w.animals().len()).filter(|&i| i != shark).collect();
@@ -2528,11 +2524,7 @@ mod tests {
     fn a_hungry_shark_reaches_prey_that_hides_at_the_glass() {
         for body in [ReefBodyKind::PointMass, ReefBodyKind::Physical] {
             let mut w = reef(ReefScene::PredatorAndSchool, body, 3);
-            let shark = w
-                .animals()
-                .iter()
-                .position(|a| a.habits.kind == FishKind::Predator)
-                .unwrap();
+            let shark = shark_of(&w);
             let prey: Vec<usize> = (0..w.animals().len()).filter(|&i| i != shark).collect();
             let (lo, hi) = (w.tank().min_m, w.tank().max_m);
             // One prey fish still at the far glass; the others gone.
@@ -2605,11 +2597,7 @@ mod tests {
         // C_k = d_k (1 + β1 S_k + β2 E_k / π): at equal distance and turn, the
         // schooling fish costs 1.5 times more.
         let mut w = reef(ReefScene::PredatorAndSchool, ReefBodyKind::PointMass, 1);
-        let shark = w
-            .animals()
-            .iter()
-            .position(|a| a.habits.kind == FishKind::Predator)
-            .unwrap();
+        let shark = shark_of(&w);
         let c = w.tank().center_m();
         w.place(shark, c, Vec3::X);
         {

@@ -2212,6 +2212,26 @@ mod tests {
         }
     }
 
+    /// The seven fish nearest to fish `i` of `school` that it sees, nearest
+    /// first, by brute force.
+    fn seven_nearest_seen(school: &[Fish], i: usize, perception: &Perception) -> Vec<usize> {
+        let me = school[i];
+        let mut seen: Vec<(f32, usize)> = (0..school.len())
+            .filter(|&j| {
+                j != i
+                    && boid_forces::sees(
+                        me.position_m,
+                        me.heading(),
+                        school[j].position_m,
+                        perception,
+                    )
+            })
+            .map(|j| (school[j].position_m.distance_squared(me.position_m), j))
+            .collect();
+        seen.sort_by(|a, b| a.0.total_cmp(&b.0));
+        seen.iter().take(7).map(|&(_, j)| j).collect()
+    }
+
     #[test]
     fn show_vision_links_are_the_seven_nearest_neighbours_the_fish_sees() {
         let mut w = boid_world(BoidParams::group(), 300);
@@ -2224,22 +2244,11 @@ mod tests {
         for i in [0, 17, 299] {
             w.interaction_neighbours(i, &mut links);
             // Brute force over the school as it was when the fish chose.
-            let me = before[i];
-            let mut seen: Vec<(f32, usize)> = (0..before.len())
-                .filter(|&j| {
-                    j != i
-                        && boid_forces::sees(
-                            me.position_m,
-                            me.heading(),
-                            before[j].position_m,
-                            &perception,
-                        )
-                })
-                .map(|j| (before[j].position_m.distance_squared(me.position_m), j))
-                .collect();
-            seen.sort_by(|a, b| a.0.total_cmp(&b.0));
-            let expected: Vec<usize> = seen.iter().take(7).map(|&(_, j)| j).collect();
-            assert_eq!(links, expected, "fish {i}");
+            assert_eq!(
+                links,
+                seven_nearest_seen(&before, i, &perception),
+                "fish {i}"
+            );
         }
         w.interaction_neighbours(300, &mut links);
         assert!(links.is_empty(), "no such fish");
@@ -2276,21 +2285,11 @@ mod tests {
                 }
                 if (i as u64 + step).is_multiple_of(NEIGHBOUR_SEARCH_EVERY_STEPS) {
                     searched += 1;
-                    let mut seen: Vec<(f32, usize)> = (0..before.len())
-                        .filter(|&j| {
-                            j != i
-                                && boid_forces::sees(
-                                    me.position_m,
-                                    me.heading(),
-                                    before[j].position_m,
-                                    &perception,
-                                )
-                        })
-                        .map(|j| (before[j].position_m.distance_squared(me.position_m), j))
-                        .collect();
-                    seen.sort_by(|a, b| a.0.total_cmp(&b.0));
-                    let nearest: Vec<usize> = seen.iter().take(7).map(|&(_, j)| j).collect();
-                    assert_eq!(links, nearest, "fish {i} searched at step {step}");
+                    assert_eq!(
+                        links,
+                        seven_nearest_seen(&before, i, &perception),
+                        "fish {i} searched at step {step}"
+                    );
                 } else {
                     assert!(links.len() <= 7);
                 }

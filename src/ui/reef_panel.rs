@@ -452,45 +452,210 @@ fn event_log_ui(ui: &mut egui::Ui, reef: &ReefWorld, rects: &mut WidgetRects) {
     rects.insert("reef_events", r.inner_rect);
 }
 
-/// One personality knob with three named settings (collision box,
-/// persistence): (label, value, help).
-type Personality = [(&'static str, f32, &'static str); 3];
+/// A row of the *Minds* section: one of [`MindTraits::ALL`] (by name), how it
+/// reads to a student, and its named values.
+struct MindRow {
+    /// The trait's settings name, in [`MindTraits::ALL`].
+    name: &'static str,
+    /// Short name for the widget rectangles (`reef_minds_<key>`).
+    key: &'static str,
+    label: &'static str,
+    help: &'static str,
+    suffix: &'static str,
+    /// A slider (logarithmic or not), or only the named values.
+    slider: Option<bool>,
+    /// Named values: (label, value, what it means).
+    presets: &'static [(&'static str, f32, &'static str)],
+    /// The kinds the row matters for.
+    kinds: &'static [FishKind],
+}
 
-const COLLISION_BOXES: Personality = [
-    (
-        "Timid",
-        TIMID_BOX_BODY_LENGTHS,
-        "swerves from anything far ahead (1.5 body lengths)",
-    ),
-    (
-        "Ordinary",
-        DEFAULT_BOX_BODY_LENGTHS,
-        "swerves from what is 0.8 body lengths ahead",
-    ),
-    (
-        "Courageous",
-        COURAGEOUS_BOX_BODY_LENGTHS,
-        "swerves only at the last moment (0.3 body lengths)",
-    ),
+const ALL_KINDS: &[FishKind] = &FishKind::ALL;
+const NOT_PREDATORS: &[FishKind] = &[FishKind::Prey, FishKind::Pacifist];
+
+const MIND_ROWS: [MindRow; 9] = [
+    MindRow {
+        name: "digestion_rate_per_step",
+        key: "hunger",
+        label: "Hunger grows (p0)",
+        help: "p0: how fast a meal is digested, so how soon the fish is hungry again \
+               (paper: 0.00067 per step; a ravenous fish 0.005)",
+        suffix: "",
+        slider: Some(true),
+        presets: &[
+            ("Nominal", NOMINAL_DIGESTION_RATE, "p0 = 0.00067"),
+            ("Ravenous", RAVENOUS_DIGESTION_RATE, "p0 = 0.005"),
+        ],
+        kinds: ALL_KINDS,
+    },
+    MindRow {
+        name: "libido_rate_per_step",
+        key: "libido",
+        label: "Libido grows (p1)",
+        help: "p1: how fast the wish to mate grows after mating (paper: 0.0025 per \
+               step; sexual mania 0.01)",
+        suffix: "",
+        slider: Some(true),
+        presets: &[
+            ("Nominal", NOMINAL_LIBIDO_RATE, "p1 = 0.0025"),
+            ("Sexual mania", MANIC_LIBIDO_RATE, "p1 = 0.01"),
+        ],
+        kinds: &[FishKind::Pacifist],
+    },
+    MindRow {
+        name: "appetite_food_units",
+        key: "appetite",
+        label: "Appetite (α)",
+        help: "α: how much food fills the fish (a plankton particle is 1, a prey fish 4)",
+        suffix: " food",
+        slider: Some(false),
+        presets: &[],
+        kinds: ALL_KINDS,
+    },
+    MindRow {
+        name: "fear_distance_body_lengths",
+        key: "fear_distance",
+        label: "Fear distance (D0)",
+        help: "D0: a shark nearer than this many body lengths frightens the fish as much \
+               as it can be (paper: 3.85)",
+        suffix: " BL",
+        slider: Some(false),
+        presets: &[],
+        kinds: NOT_PREDATORS,
+    },
+    MindRow {
+        name: "fear_threshold",
+        key: "alarm",
+        label: "Alarm at fear (f0)",
+        help: "f0: fear above this makes the fish take evasive action (paper: between 0.1 \
+               and 0.5)",
+        suffix: "",
+        slider: Some(false),
+        presets: &[],
+        kinds: NOT_PREDATORS,
+    },
+    MindRow {
+        name: "panic_threshold",
+        key: "panic",
+        label: "Panic at fear (f1)",
+        help: "f1: when the nearest shark frightens it more than this, a schooling fish \
+               stops schooling and flees alone",
+        suffix: "",
+        slider: Some(false),
+        presets: &[],
+        kinds: &[FishKind::Prey],
+    },
+    MindRow {
+        name: "urge_threshold",
+        key: "urge",
+        label: "Acts on urges at (r)",
+        help: "r: hunger (or the wish to mate) above this sends the fish looking for food \
+               (or a partner) (paper: below 0.5)",
+        suffix: "",
+        slider: Some(false),
+        presets: &[],
+        kinds: ALL_KINDS,
+    },
+    MindRow {
+        name: "collision_box_ahead_body_lengths",
+        key: "box",
+        label: "Collision box",
+        help: "How far ahead the fish watches for things in its way",
+        suffix: "",
+        slider: None,
+        presets: &[
+            (
+                "Timid",
+                TIMID_BOX_BODY_LENGTHS,
+                "swerves from anything far ahead (1.5 body lengths)",
+            ),
+            (
+                "Ordinary",
+                DEFAULT_BOX_BODY_LENGTHS,
+                "swerves from what is 0.8 body lengths ahead",
+            ),
+            (
+                "Courageous",
+                COURAGEOUS_BOX_BODY_LENGTHS,
+                "swerves only at the last moment (0.3 body lengths)",
+            ),
+        ],
+        kinds: ALL_KINDS,
+    },
+    MindRow {
+        name: "persistence_body_lengths",
+        key: "persistence",
+        label: "Persistence",
+        help: "Does the fish stick to the food, prey or partner it chose?",
+        suffix: "",
+        slider: None,
+        presets: &[
+            (
+                "Fickle",
+                FICKLE_BODY_LENGTHS,
+                "switches to any target that is a little nearer",
+            ),
+            (
+                "Ordinary",
+                DEFAULT_PERSISTENCE_BODY_LENGTHS,
+                "switches when another is 2 body lengths nearer",
+            ),
+            (
+                "Devoted",
+                DEVOTED_BODY_LENGTHS,
+                "sticks to its target unless another is 20 body lengths nearer",
+            ),
+        ],
+        kinds: ALL_KINDS,
+    },
 ];
 
-const PERSISTENCES: Personality = [
-    (
-        "Fickle",
-        FICKLE_BODY_LENGTHS,
-        "switches to any target that is a little nearer",
-    ),
-    (
-        "Ordinary",
-        DEFAULT_PERSISTENCE_BODY_LENGTHS,
-        "switches when another is 2 body lengths nearer",
-    ),
-    (
-        "Devoted",
-        DEVOTED_BODY_LENGTHS,
-        "sticks to its target unless another is 20 body lengths nearer",
-    ),
-];
+/// One row of the *Minds* grid: the label, a slider over the trait's range
+/// and its named values as buttons; what the teacher picks goes into `traits`.
+fn mind_row_ui(
+    ui: &mut egui::Ui,
+    row: &MindRow,
+    traits: &mut MindTraits,
+    now: &Habits,
+    rects: &mut WidgetRects,
+) {
+    let Some(spec) = MindTraits::ALL.iter().find(|t| t.name == row.name) else {
+        return;
+    };
+    ui.label(row.label).on_hover_text(row.help);
+    ui.vertical(|ui| {
+        let value = (spec.current)(now);
+        if let Some(logarithmic) = row.slider {
+            let mut v = value;
+            let r = ui
+                .add(
+                    egui::Slider::new(&mut v, spec.min..=spec.max)
+                        .logarithmic(logarithmic)
+                        .suffix(row.suffix),
+                )
+                .on_hover_text(row.help);
+            rects.insert(&format!("reef_minds_{}", row.key), r.rect);
+            if r.changed() {
+                (spec.set)(traits, Some(v));
+            }
+        }
+        if !row.presets.is_empty() {
+            ui.horizontal_wrapped(|ui| {
+                for &(label, v, what) in row.presets {
+                    let r = ui
+                        .selectable_label(value == v, label)
+                        .on_hover_text(format!("{label}: {what}"));
+                    let name = label.to_lowercase().replace(' ', "_");
+                    rects.insert(&format!("reef_minds_{}_{name}", row.key), r.rect);
+                    if r.clicked() {
+                        (spec.set)(traits, Some(v));
+                    }
+                }
+            });
+        }
+    });
+    ui.end_row();
+}
 
 /// The reef's *Minds* section: the constants of hunger, libido and fear and
 /// the personality of one kind of fish at a time (Tu & Terzopoulos §6), over
@@ -504,225 +669,65 @@ pub fn minds_ui(
     rects: &mut WidgetRects,
 ) {
     ui.separator();
-    let header =
-        egui::CollapsingHeader::new(egui::RichText::new("Minds").strong())
-            .id_salt("reef_minds")
-            .default_open(false)
-            .show(ui, |ui| {
-                ui.label(
-                    egui::RichText::new(
-                        "How fast each kind of fish gets hungry or wants to mate, how far away a \
+    let header = egui::CollapsingHeader::new(egui::RichText::new("Minds").strong())
+        .id_salt("reef_minds")
+        .default_open(false)
+        .show(ui, |ui| {
+            ui.label(
+                egui::RichText::new(
+                    "How fast each kind of fish gets hungry or wants to mate, how far away a \
                      shark frightens it, and its character. Changes apply at once.",
-                    )
-                    .small(),
-                );
-                if !demo_habits.iter().any(|h| h.kind == *kind)
-                    && let Some(first) = demo_habits.first()
-                {
-                    *kind = first.kind;
-                }
-                ui.horizontal(|ui| {
-                    for (k, label) in [
-                        (FishKind::Predator, "Sharks"),
-                        (FishKind::Prey, "Prey fish"),
-                        (FishKind::Pacifist, "Pacifists"),
-                    ] {
-                        let present = demo_habits.iter().any(|h| h.kind == k);
-                        let r = ui
-                            .add_enabled(present, egui::Button::selectable(*kind == k, label))
-                            .on_hover_text(match k {
-                                FishKind::Predator => "The hunters: they eat prey fish",
-                                FishKind::Prey => "Small fish that school and flee the shark",
-                                FishKind::Pacifist => "Fish that graze on plankton and court",
-                            })
-                            .on_disabled_hover_text("None of these in this demo");
-                        rects.insert(&format!("reef_minds_{}", k.label()), r.rect);
-                        if r.clicked() {
-                            *kind = k;
-                        }
+                )
+                .small(),
+            );
+            if !demo_habits.iter().any(|h| h.kind == *kind)
+                && let Some(first) = demo_habits.first()
+            {
+                *kind = first.kind;
+            }
+            ui.horizontal(|ui| {
+                for (k, label) in [
+                    (FishKind::Predator, "Sharks"),
+                    (FishKind::Prey, "Prey fish"),
+                    (FishKind::Pacifist, "Pacifists"),
+                ] {
+                    let present = demo_habits.iter().any(|h| h.kind == k);
+                    let r = ui
+                        .add_enabled(present, egui::Button::selectable(*kind == k, label))
+                        .on_hover_text(match k {
+                            FishKind::Predator => "The hunters: they eat prey fish",
+                            FishKind::Prey => "Small fish that school and flee the shark",
+                            FishKind::Pacifist => "Fish that graze on plankton and court",
+                        })
+                        .on_disabled_hover_text("None of these in this demo");
+                    rects.insert(&format!("reef_minds_{}", k.label()), r.rect);
+                    if r.clicked() {
+                        *kind = k;
                     }
-                });
-                let Some(demo) = demo_habits.iter().find(|h| h.kind == *kind).copied() else {
-                    ui.label("No fish in this reef.");
-                    return;
-                };
-                let t = traits.of_mut(*kind);
-                let now = t.applied_to(demo);
-                egui::Grid::new("reef_minds_grid")
+                }
+            });
+            let Some(demo) = demo_habits.iter().find(|h| h.kind == *kind).copied() else {
+                ui.label("No fish in this reef.");
+                return;
+            };
+            let t = traits.of_mut(*kind);
+            let now = t.applied_to(demo);
+            egui::Grid::new("reef_minds_grid")
                 .num_columns(2)
                 .spacing([8.0, 6.0])
                 .show(ui, |ui| {
-                    let help = "p0: how fast a meal is digested, so how soon the fish is hungry \
-                                again (paper: 0.00067 per step; a ravenous fish 0.005)";
-                    ui.label("Hunger grows (p0)").on_hover_text(help);
-                    ui.vertical(|ui| {
-                        let mut v = now.mental.digestion_rate_per_step;
-                        let r = ui
-                            .add(egui::Slider::new(&mut v, 0.0..=0.05).logarithmic(true))
-                            .on_hover_text(help);
-                        rects.insert("reef_minds_digestion", r.rect);
-                        if r.changed() {
-                            t.digestion_rate_per_step = Some(v);
-                        }
-                        ui.horizontal(|ui| {
-                            for (label, value, name) in [
-                                ("Nominal", NOMINAL_DIGESTION_RATE, "reef_minds_nominal_hunger"),
-                                ("Ravenous", RAVENOUS_DIGESTION_RATE, "reef_minds_ravenous"),
-                            ] {
-                                let r = ui
-                                    .selectable_label(v == value, label)
-                                    .on_hover_text(format!("p0 = {value}"));
-                                rects.insert(name, r.rect);
-                                if r.clicked() {
-                                    t.digestion_rate_per_step = Some(value);
-                                }
-                            }
-                        });
-                    });
-                    ui.end_row();
-
-                    if *kind == FishKind::Pacifist {
-                        let help = "p1: how fast the wish to mate grows after mating (paper: \
-                                    0.0025 per step; sexual mania 0.01)";
-                        ui.label("Libido grows (p1)").on_hover_text(help);
-                        ui.vertical(|ui| {
-                            let mut v = now.mental.libido_rate_per_step;
-                            let r = ui
-                                .add(egui::Slider::new(&mut v, 0.0..=0.05).logarithmic(true))
-                                .on_hover_text(help);
-                            rects.insert("reef_minds_libido", r.rect);
-                            if r.changed() {
-                                t.libido_rate_per_step = Some(v);
-                            }
-                            ui.horizontal(|ui| {
-                                for (label, value, name) in [
-                                    ("Nominal", NOMINAL_LIBIDO_RATE, "reef_minds_nominal_libido"),
-                                    ("Sexual mania", MANIC_LIBIDO_RATE, "reef_minds_mania"),
-                                ] {
-                                    let r = ui
-                                        .selectable_label(v == value, label)
-                                        .on_hover_text(format!("p1 = {value}"));
-                                    rects.insert(name, r.rect);
-                                    if r.clicked() {
-                                        t.libido_rate_per_step = Some(value);
-                                    }
-                                }
-                            });
-                        });
-                        ui.end_row();
-                    }
-
-                    let help = "α: how much food fills the fish (a plankton particle is 1, a \
-                                prey fish 4)";
-                    ui.label("Appetite (α)").on_hover_text(help);
-                    let mut v = now.mental.appetite_food_units;
-                    let r = ui
-                        .add(egui::Slider::new(&mut v, 0.5..=20.0).suffix(" food"))
-                        .on_hover_text(help);
-                    rects.insert("reef_minds_appetite", r.rect);
-                    if r.changed() {
-                        t.appetite_food_units = Some(v);
-                    }
-                    ui.end_row();
-
-                    if *kind != FishKind::Predator {
-                        let help = "D0: a shark nearer than this many body lengths frightens \
-                                    the fish as much as it can be (paper: 3.85)";
-                        ui.label("Fear distance (D0)").on_hover_text(help);
-                        let mut v = now.mental.fear_distance_body_lengths;
-                        let r = ui
-                            .add(egui::Slider::new(&mut v, 0.1..=20.0).suffix(" BL"))
-                            .on_hover_text(help);
-                        rects.insert("reef_minds_fear_distance", r.rect);
-                        if r.changed() {
-                            t.fear_distance_body_lengths = Some(v);
-                        }
-                        ui.end_row();
-
-                        let help = "f0: fear above this makes the fish take evasive action \
-                                    (paper: between 0.1 and 0.5)";
-                        ui.label("Alarm at fear (f0)").on_hover_text(help);
-                        let mut v = now.fear_threshold;
-                        let r = ui
-                            .add(egui::Slider::new(&mut v, 0.1..=0.5))
-                            .on_hover_text(help);
-                        if r.changed() {
-                            t.fear_threshold = Some(v);
-                        }
-                        ui.end_row();
-                    }
-                    if *kind == FishKind::Prey {
-                        let help = "f1: when the nearest shark frightens it more than this, a \
-                                    schooling fish stops schooling and flees alone";
-                        ui.label("Panic at fear (f1)").on_hover_text(help);
-                        let mut v = now.panic_threshold;
-                        let r = ui
-                            .add(egui::Slider::new(&mut v, 0.5..=1.0))
-                            .on_hover_text(help);
-                        if r.changed() {
-                            t.panic_threshold = Some(v);
-                        }
-                        ui.end_row();
-                    }
-
-                    let help = "r: hunger (or the wish to mate) above this sends the fish \
-                                looking for food (or a partner) (paper: below 0.5)";
-                    ui.label("Acts on urges at (r)").on_hover_text(help);
-                    let mut v = now.urge_threshold;
-                    let r = ui
-                        .add(egui::Slider::new(&mut v, 0.01..=0.5))
-                        .on_hover_text(help);
-                    if r.changed() {
-                        t.urge_threshold = Some(v);
-                    }
-                    ui.end_row();
-
-                    for (title, help, choices, value, name) in [
-                        (
-                            "Collision box",
-                            "How far ahead the fish watches for things in its way",
-                            COLLISION_BOXES,
-                            now.collision_box_ahead_body_lengths,
-                            "box",
-                        ),
-                        (
-                            "Persistence",
-                            "Does the fish stick to the food, prey or partner it chose?",
-                            PERSISTENCES,
-                            now.persistence_body_lengths,
-                            "persistence",
-                        ),
-                    ] {
-                        ui.label(title).on_hover_text(help);
-                        ui.horizontal_wrapped(|ui| {
-                            for (label, v, what) in choices {
-                                let r = ui
-                                    .selectable_label(value == v, label)
-                                    .on_hover_text(format!("{label}: {what}"));
-                                rects.insert(
-                                    &format!("reef_minds_{name}_{}", label.to_lowercase()),
-                                    r.rect,
-                                );
-                                if r.clicked() {
-                                    if name == "box" {
-                                        t.collision_box_ahead_body_lengths = Some(v);
-                                    } else {
-                                        t.persistence_body_lengths = Some(v);
-                                    }
-                                }
-                            }
-                        });
-                        ui.end_row();
+                    for row in MIND_ROWS.iter().filter(|r| r.kinds.contains(kind)) {
+                        mind_row_ui(ui, row, t, &now, rects);
                     }
                 });
-                let changed = *t != MindTraits::default();
-                let r = ui
-                    .add_enabled(changed, egui::Button::new("The demo's own values"))
-                    .on_hover_text("Undo every change to this kind of fish");
-                rects.insert("reef_minds_reset", r.rect);
-                if r.clicked() {
-                    *t = MindTraits::default();
-                }
-            });
+            let changed = *t != MindTraits::default();
+            let r = ui
+                .add_enabled(changed, egui::Button::new("The demo's own values"))
+                .on_hover_text("Undo every change to this kind of fish");
+            rects.insert("reef_minds_reset", r.rect);
+            if r.clicked() {
+                *t = MindTraits::default();
+            }
+        });
     rects.insert("reef_minds", header.header_response.rect);
 }

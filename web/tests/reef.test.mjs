@@ -118,8 +118,8 @@ describe("reef", () => {
     // (f32 values: compare within a part in a million.)
     const near = (a, b) => Math.abs(a - b) < 1e-6 * Math.abs(b);
     await clickUntil(page, "reef_minds", () => !!window.shoal.widgets().reef_minds_pacifist);
-    await clickUntil(page, "reef_minds_pacifist", () => !!window.shoal.widgets().reef_minds_mania);
-    await clickUntil(page, "reef_minds_nominal_libido", () =>
+    await clickUntil(page, "reef_minds_pacifist", () => !!window.shoal.widgets().reef_minds_libido_sexual_mania);
+    await clickUntil(page, "reef_minds_libido_nominal", () =>
       Math.abs(window.shoal.settings().reef.traits.pacifist.libido_rate_per_step - 0.0025) < 1e-9);
     await scrollPanelTo(page, "reef_minds_persistence_devoted");
     await clickUntil(page, "reef_minds_persistence_devoted", () =>
