@@ -210,8 +210,10 @@ pub struct MindTrait {
     pub max: f32,
     pub get: fn(&MindTraits) -> Option<f32>,
     pub set: fn(&mut MindTraits, Option<f32>),
-    /// The value a fish has when nothing is set.
+    /// The value a fish has.
     pub current: fn(&Habits) -> f32,
+    /// Gives a fish this value.
+    pub put: fn(&mut Habits, f32),
 }
 
 impl MindTraits {
@@ -225,6 +227,7 @@ impl MindTraits {
             get: |t| t.digestion_rate_per_step,
             set: |t, v| t.digestion_rate_per_step = v,
             current: |h| h.mental.digestion_rate_per_step,
+            put: |h, v| h.mental.digestion_rate_per_step = v,
         },
         MindTrait {
             name: "libido_rate_per_step",
@@ -233,6 +236,7 @@ impl MindTraits {
             get: |t| t.libido_rate_per_step,
             set: |t, v| t.libido_rate_per_step = v,
             current: |h| h.mental.libido_rate_per_step,
+            put: |h, v| h.mental.libido_rate_per_step = v,
         },
         MindTrait {
             name: "appetite_food_units",
@@ -241,6 +245,7 @@ impl MindTraits {
             get: |t| t.appetite_food_units,
             set: |t, v| t.appetite_food_units = v,
             current: |h| h.mental.appetite_food_units,
+            put: |h, v| h.mental.appetite_food_units = v,
         },
         MindTrait {
             name: "fear_distance_body_lengths",
@@ -249,6 +254,7 @@ impl MindTraits {
             get: |t| t.fear_distance_body_lengths,
             set: |t, v| t.fear_distance_body_lengths = v,
             current: |h| h.mental.fear_distance_body_lengths,
+            put: |h, v| h.mental.fear_distance_body_lengths = v,
         },
         MindTrait {
             name: "collision_box_ahead_body_lengths",
@@ -257,6 +263,7 @@ impl MindTraits {
             get: |t| t.collision_box_ahead_body_lengths,
             set: |t, v| t.collision_box_ahead_body_lengths = v,
             current: |h| h.collision_box_ahead_body_lengths,
+            put: |h, v| h.collision_box_ahead_body_lengths = v,
         },
         MindTrait {
             name: "persistence_body_lengths",
@@ -265,6 +272,7 @@ impl MindTraits {
             get: |t| t.persistence_body_lengths,
             set: |t, v| t.persistence_body_lengths = v,
             current: |h| h.persistence_body_lengths,
+            put: |h, v| h.persistence_body_lengths = v,
         },
         MindTrait {
             name: "fear_threshold",
@@ -273,6 +281,7 @@ impl MindTraits {
             get: |t| t.fear_threshold,
             set: |t, v| t.fear_threshold = v,
             current: |h| h.fear_threshold,
+            put: |h, v| h.fear_threshold = v,
         },
         MindTrait {
             name: "panic_threshold",
@@ -281,6 +290,7 @@ impl MindTraits {
             get: |t| t.panic_threshold,
             set: |t, v| t.panic_threshold = v,
             current: |h| h.panic_threshold,
+            put: |h, v| h.panic_threshold = v,
         },
         MindTrait {
             name: "urge_threshold",
@@ -289,42 +299,15 @@ impl MindTraits {
             get: |t| t.urge_threshold,
             set: |t, v| t.urge_threshold = v,
             current: |h| h.urge_threshold,
+            put: |h, v| h.urge_threshold = v,
         },
     ];
 
     /// `habits` with every value given here put in (and kept in range).
     pub fn applied_to(&self, mut habits: Habits) -> Habits {
-        let m = &mut habits.mental;
-        let pairs: [(Option<f32>, &mut f32); 4] = [
-            (self.digestion_rate_per_step, &mut m.digestion_rate_per_step),
-            (self.libido_rate_per_step, &mut m.libido_rate_per_step),
-            (self.appetite_food_units, &mut m.appetite_food_units),
-            (
-                self.fear_distance_body_lengths,
-                &mut m.fear_distance_body_lengths,
-            ),
-        ];
-        for (value, slot) in pairs {
-            if let Some(v) = value {
-                *slot = v;
-            }
-        }
-        let pairs: [(Option<f32>, &mut f32); 5] = [
-            (
-                self.collision_box_ahead_body_lengths,
-                &mut habits.collision_box_ahead_body_lengths,
-            ),
-            (
-                self.persistence_body_lengths,
-                &mut habits.persistence_body_lengths,
-            ),
-            (self.fear_threshold, &mut habits.fear_threshold),
-            (self.panic_threshold, &mut habits.panic_threshold),
-            (self.urge_threshold, &mut habits.urge_threshold),
-        ];
-        for (value, slot) in pairs {
-            if let Some(v) = value {
-                *slot = v;
+        for t in &Self::ALL {
+            if let Some(v) = (t.get)(self) {
+                (t.put)(&mut habits, v);
             }
         }
         habits.sanitized()
