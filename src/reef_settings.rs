@@ -6,7 +6,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::sim::mind::FishKind;
-use crate::sim::mind::habits::{KindTraits, MindTraits};
+use crate::sim::mind::habits::KindTraits;
 use crate::sim::reef_world::{MAX_FOOD, ReefBodyKind, ReefConfig, ReefScene};
 
 /// Most prey fish the slider offers: the Reef demo then holds
@@ -201,11 +201,8 @@ impl ReefSettings {
         self.visibility_m = fix(self.visibility_m, VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0);
         self.current_m_per_s = fix(self.current_m_per_s, 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03);
         for kind in FishKind::ALL {
-            let traits: &mut MindTraits = self.traits.of_mut(kind);
-            for t in &MindTraits::ALL {
-                let value = (t.get)(traits).filter(|v| v.is_finite());
-                (t.set)(traits, value.map(|v| v.clamp(t.min, t.max)));
-            }
+            let traits = self.traits.of_mut(kind);
+            *traits = traits.clamped();
         }
         let animals = self.animal_count();
         self.selected = self.selected.filter(|&i| (i as usize) < animals);

@@ -265,8 +265,8 @@ pub fn heeded_neighbours(
     )
 }
 
-/// [`heeded_neighbours`] with the field of view `cone` (of `perception`), starting from `known`: neighbours the fish sees now
-/// with their distances now (those it heeded in the last step, as
+/// [`heeded_neighbours`] with the field of view `cone` (of `perception`),
+/// starting from `known`: neighbours the fish sees now with their distances now (those it heeded in the last step, as
 /// [`recheck_heeded`] gives them), kept unless nearer ones are found. Finds
 /// the same neighbours as a search from scratch (the order of ties aside),
 /// but the known ones bound the search from the start, so it visits fewer

@@ -138,9 +138,10 @@ pub const CONFUSION_RADIUS_BODY_LENGTHS: f32 = 2.0;
 /// predator's success per attack falls as the prey group grows, because many
 /// similar targets moving together make it hard to fix on one): a strike on
 /// prey with `n` other prey near it succeeds with probability
-/// 1 / (1 + 0.5 n). Default 0.5 (chosen): two neighbours halve the success,
-/// six leave a quarter, which is the order of Landeau & Terborgh's fall in
-/// bass success from single silversides to groups of eight and more. Not in
+/// 1 / (1 + c n), c this constant. Default 1 (chosen): one neighbour halves
+/// the success, six leave one strike in seven; with 0.5 (tried first) the
+/// schools were hardly safer than loners (105 against 130 prey eaten in
+/// 12 × 2 minutes, with 1: 88 against 129; `docs/fish-mind.md`). Not in
 /// Tu & Terzopoulos, whose schooling prey are protected only by the
 /// predator's choice (β1); without it a shark faster than its prey catches
 /// schooling and lone prey at the same rate once it has chosen.
@@ -1710,6 +1711,9 @@ impl ReefWorld {
     /// Open mouths suck in food and prey; what reaches the mouth is eaten.
     fn suck_in(&mut self, dt: f32) {
         for i in 0..self.animals.len() {
+            // A predator recovers from a missed strike whatever it does meanwhile.
+            let recovery = &mut self.animals[i].strike_recovery_secs;
+            *recovery = (*recovery - dt).max(0.0);
             let a = &self.animals[i];
             if !a.alive || a.focus.intention != Intention::Eat {
                 self.animals[i].mouth_open = false;
@@ -1763,9 +1767,8 @@ impl ReefWorld {
                         let d = prey_at.distance(mouth);
                         let ahead = (prey_at - mouth).normalize_or_zero().dot(a.body.heading());
                         let recovering = a.strike_recovery_secs > 0.0;
-                        if recovering {
-                            self.animals[i].strike_recovery_secs -= dt;
-                        } else if d < PREDATOR_SUCK_RANGE_BODY_LENGTHS * length
+                        if !recovering
+                            && d < PREDATOR_SUCK_RANGE_BODY_LENGTHS * length
                             && ahead > SUCK_CONE_COS
                         {
                             open = true;
@@ -1773,12 +1776,10 @@ impl ReefWorld {
                                 (mouth - prey_at).normalize_or_zero() * VACUUM_ACCEL_M_PER_S2 * dt;
                             self.animals[j].body.nudge(pull);
                         }
-                        if !recovering
-                            && d < SWALLOW_BODY_LENGTHS * length
-                            && self.strike_confused(i, j)
-                        {
+                        let strikes = !recovering && d < SWALLOW_BODY_LENGTHS * length;
+                        if strikes && self.strike_confused(i, j) {
                             open = false;
-                        } else if !recovering && d < SWALLOW_BODY_LENGTHS * length {
+                        } else if strikes {
                             let schooling = self.animals[j].focus.intention == Intention::School;
                             self.animals[j].alive = false;
                             self.animals[j].mouth_open = false;

@@ -576,7 +576,7 @@ impl World {
         // the searches stay in the cache. (The result does not depend on the
         // order: every fish sees the snapshot.)
         // After a change of settings or of the number of fish every fish
-        // searches; otherwise a third of them (NEIGHBOUR_SEARCH_EVERY_STEPS).
+        // searches; otherwise a quarter of them (NEIGHBOUR_SEARCH_EVERY_STEPS).
         let cone = boid_forces::ViewCone::new(perception);
         let everyone_searches = !self.snapshot_is_last_boid_step || self.heeded.len() != n;
         self.heeded.resize(

@@ -313,6 +313,16 @@ impl MindTraits {
         habits.sanitized()
     }
 
+    /// Every value given brought into its range; a value that is not a
+    /// number is dropped (the demo's own is used).
+    pub fn clamped(mut self) -> Self {
+        for t in &Self::ALL {
+            let value = (t.get)(&self).filter(|v| v.is_finite());
+            (t.set)(&mut self, value.map(|v| v.clamp(t.min, t.max)));
+        }
+        self
+    }
+
     /// The first value out of its range, as (name, reason).
     pub fn validate(&self) -> Result<(), (&'static str, String)> {
         for t in &Self::ALL {
