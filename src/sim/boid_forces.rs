@@ -28,6 +28,22 @@ use super::steering::limit;
 /// within a minute, weak enough that a fish in a school follows its neighbours.
 pub const FAR_FIELD_SHARE: f32 = 0.5;
 
+/// Distance within which the far field's pull fades out, metres (its
+/// arrival distance). Default 1.6 m (tuned on seeds 1–12, see
+/// `docs/boids.md`): a fish inside the school it sees feels little of it, a
+/// straggler or a second school several metres off feels it in full.
+pub const FAR_FIELD_ARRIVAL_M: f32 = 1.6;
+
+/// The boid layer's distance within which a fish reads a neighbour's heading in
+/// full ([`Perception::clear_sight_m`]), metres; beyond it the neighbour counts
+/// for `ALIGNMENT_CLEAR_SIGHT_M / distance` in
+/// alignment (the angle a neighbour's body subtends falls as 1/distance, so a
+/// far fish's heading is harder to read). Default 0.3 m (tuned on seeds 1–12,
+/// `docs/boids.md`; about one body length): a school's close neighbours are
+/// read almost in full, loners a few body lengths apart copy each other's
+/// heading only weakly.
+pub const ALIGNMENT_CLEAR_SIGHT_M: f32 = 0.3;
+
 /// Default topological range: the neighbours a fish heeds. Default 7, the upper
 /// end of the 6–7 nearest neighbours starlings interact with (Ballerini et al.
 /// 2008).
@@ -53,6 +69,11 @@ pub struct Perception {
     /// Time in which a steering force would reach its desired velocity, seconds:
     /// each force is `(desired − current) / response_time`, then limited.
     pub response_time_s: f32,
+    /// Distance within which a neighbour's heading is read in full, metres;
+    /// a farther one counts `clear_sight / distance` in alignment (see
+    /// [`ALIGNMENT_CLEAR_SIGHT_M`]). 0 or less: every heeded neighbour counts in
+    /// full.
+    pub clear_sight_m: f32,
 }
 
 /// The school seen from afar: fish bucketed into coarse cells (count and
@@ -387,6 +408,7 @@ pub fn forces_from_neighbours(
     let mut away = Vec3::ZERO;
     let mut intrusion = 0.0_f32;
     let mut velocity_sum = Vec3::ZERO;
+    let mut align_strength = 0.0_f32;
     let mut position_sum = Vec3::ZERO;
     let separation_m = perception.separation_distance_m.max(0.0);
     for (j, distance_sq_m2) in nearest.iter() {
@@ -397,7 +419,15 @@ pub fn forces_from_neighbours(
             away += offset / distance_sq_m2.max(1e-6);
             intrusion += 1.0 - distance_m / separation_m;
         }
-        velocity_sum += velocities_m_per_s[j];
+        // A near neighbour's heading is read in full, a far one's less
+        // (its silhouette shrinks with distance).
+        let clarity = if perception.clear_sight_m > 0.0 {
+            (perception.clear_sight_m / distance_m.max(1e-3)).min(1.0)
+        } else {
+            1.0
+        };
+        velocity_sum += velocities_m_per_s[j].normalize_or_zero() * clarity;
+        align_strength += clarity;
         position_sum += positions_m[j];
     }
     let n = (nearest.len() as f32).max(1.0);
@@ -419,10 +449,13 @@ pub fn forces_from_neighbours(
         1.0
     };
     // Near pull (arriving) plus the far field's pull towards the seen school's
-    // centre, at FAR_FIELD_SHARE of full strength.
+    // centre, at FAR_FIELD_SHARE of full strength, arriving too: both are
+    // cohesion and scale with its weight.
     let near = to_centre_m.normalize_or_zero() * arrival;
     let far = far_centre_m.map_or(Vec3::ZERO, |c| {
-        (c - position_m).normalize_or_zero() * FAR_FIELD_SHARE
+        let to_far_m = c - position_m;
+        let far_arrival = (to_far_m.length() / FAR_FIELD_ARRIVAL_M.max(1e-3)).min(1.0);
+        to_far_m.normalize_or_zero() * FAR_FIELD_SHARE * far_arrival
     });
     let pull = near + far;
     let cohesion_m_per_s2 = if pull == Vec3::ZERO {
@@ -433,7 +466,7 @@ pub fn forces_from_neighbours(
     let alignment_m_per_s2 = if nearest.is_empty() {
         Vec3::ZERO
     } else {
-        steer(velocity_sum.normalize_or_zero() * speed)
+        steer(velocity_sum.normalize_or_zero() * speed) * (align_strength / n).min(1.0)
     };
     NeighbourForces {
         separation_m_per_s2,
@@ -441,6 +474,91 @@ pub fn forces_from_neighbours(
         cohesion_m_per_s2,
         neighbours: nearest.len() as u32,
     }
+}
+
+/// How far ahead in time a fish checks its course against the neighbours it
+/// heeds, seconds. Default 1 s (chosen): about two body lengths at cruising
+/// speed, enough to sway round a fish swimming the other way.
+pub const FISH_AVOID_LOOK_AHEAD_S: f32 = 1.0;
+
+/// A neighbour whose predicted closest approach is nearer than this is on a
+/// collision course, metres. Default 0.3 m (chosen): about one body length.
+pub const FISH_AVOID_CLEARANCE_M: f32 = 0.3;
+
+/// Heeded neighbours this close to the one in the way belong to one obstacle
+/// with it, metres; three or more are avoided as one (the SIMBA paper's
+/// polygon of at least three close agents). Default 0.6 m (chosen: two body
+/// lengths).
+pub const FISH_CLUSTER_LINK_M: f32 = 0.6;
+
+/// Avoiding other fish, the SIMBA way (other agents are obstacles, avoided
+/// like rocks by swaying): among the heeded neighbours, the one the fish at
+/// `positions_m[i]` would meet soonest, judged from their relative velocity
+/// (closest approach under [`FISH_AVOID_CLEARANCE_M`] within
+/// [`FISH_AVOID_LOOK_AHEAD_S`]); if two or more other heeded neighbours are
+/// within [`FISH_CLUSTER_LINK_M`] of it, the obstacle is the centre of that
+/// cluster. The fish sways sideways, away from the obstacle's offset from
+/// its path, with a strength inversely proportional to the time left:
+///
+/// `Δv = normalize(−offset) · max_speed · look_ahead / max(t, 0.1 s)`.
+///
+/// Fish swimming side by side in a school have no closing speed and feel
+/// nothing. Returns a velocity change (m/s), unlimited: the caller adds it to
+/// the other obstacles' and limits the sum.
+pub fn avoid_neighbours(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    i: usize,
+    nearest: &Nearest,
+    max_speed_m_per_s: f32,
+) -> Vec3 {
+    /// Shortest time to contact used in the strength, seconds.
+    const MIN_TIME_S: f32 = 0.1;
+    let position_m = positions_m[i];
+    let velocity_m_per_s = velocities_m_per_s[i];
+    let heading = velocity_m_per_s.normalize_or_zero();
+    if heading == Vec3::ZERO {
+        return Vec3::ZERO;
+    }
+    let mut threat: Option<(f32, usize)> = None;
+    for (j, _) in nearest.iter() {
+        let offset_m = positions_m[j] - position_m;
+        let closing_m_per_s = velocity_m_per_s - velocities_m_per_s[j];
+        let closing_sq = closing_m_per_s.length_squared();
+        if closing_sq < 1e-6 {
+            continue;
+        }
+        let t_s = offset_m.dot(closing_m_per_s) / closing_sq;
+        if !(t_s > 0.0 && t_s <= FISH_AVOID_LOOK_AHEAD_S) {
+            continue;
+        }
+        let miss_m = (offset_m - closing_m_per_s * t_s).length();
+        if miss_m < FISH_AVOID_CLEARANCE_M && threat.is_none_or(|(soonest, _)| t_s < soonest) {
+            threat = Some((t_s, j));
+        }
+    }
+    let Some((t_s, j)) = threat else {
+        return Vec3::ZERO;
+    };
+    let mut centre_m = positions_m[j];
+    let mut members = 1.0;
+    for (k, _) in nearest.iter() {
+        if k != j && positions_m[k].distance_squared(positions_m[j]) < FISH_CLUSTER_LINK_M.powi(2) {
+            centre_m += positions_m[k];
+            members += 1.0;
+        }
+    }
+    let core_m = if members >= 3.0 {
+        centre_m / members
+    } else {
+        positions_m[j]
+    };
+    let to_core_m = core_m - position_m;
+    let offset_m = to_core_m - heading * to_core_m.dot(heading);
+    let away = (-offset_m).normalize_or(heading.cross(Vec3::Y).normalize_or(Vec3::Z));
+    let urgency = FISH_AVOID_LOOK_AHEAD_S / t_s.max(MIN_TIME_S);
+    let sway = away * max_speed_m_per_s * urgency;
+    if sway.is_finite() { sway } else { Vec3::ZERO }
 }
 
 #[cfg(test)]
@@ -456,6 +574,7 @@ mod tests {
         max_neighbours: 7,
         separation_distance_m: 1.0,
         response_time_s: 1.0,
+        clear_sight_m: 0.0,
     };
 
     fn positions(fish: &[Fish]) -> Vec<Vec3> {

@@ -4,7 +4,8 @@
 //!
 //! - **Blended** (the steering paper's "direct"): every force, every step, as a
 //!   weighted sum.
-//! - **Classic**: one action per step, the strongest weighted force.
+//! - **Classic**: one action per step, the strongest weighted force (weight ×
+//!   how hard the force pulls now).
 //! - **Direct alternate**: draw ρ ∈ [0, 1) once per step; each force whose weight
 //!   w ∈ [0, 1] satisfies ρ < w is applied (so force i acts on a fraction wᵢ of
 //!   the steps).
@@ -15,7 +16,14 @@
 //! Weights are on the papers' 0–100 slider scale. Following the steering paper's
 //! implementation section, a full containment, alignment, cohesion or separation
 //! slider gives at most 25 % of the maximum steering force and a full avoidance
-//! slider 100 % ([`FORCE_SHARE_AT_FULL_WEIGHT`]).
+//! slider 100 % ([`FORCE_SHARE_AT_FULL_WEIGHT`]). In Blended mode each force acts
+//! at its weighted share. In the three one-action modes the weight decides how
+//! often (Direct alternate, Monte Carlo) or whether (Classic) a force is chosen,
+//! and the chosen force acts at its full share: its average effect then grows with
+//! the weight, as in Blended mode, not with the weight squared.
+//!
+//! Wander and fleeing from a shark are not among the five: they act on top of
+//! every mode (a fish does not roll dice about fleeing), and the UI says so.
 
 use glam::Vec3;
 use rand::Rng;
@@ -46,6 +54,11 @@ impl Force {
 /// (containment, alignment, cohesion, separation, avoidance): the steering paper's
 /// implementation section.
 pub const FORCE_SHARE_AT_FULL_WEIGHT: [f32; 5] = [0.25, 0.25, 0.25, 0.25, 1.0];
+
+/// Share of the maximum steering force that a wander slider of 100 gives.
+/// Default 0.25 (chosen): the same as a full containment, alignment, cohesion or
+/// separation slider, so wander is read on the urges' scale.
+pub const WANDER_SHARE_AT_FULL_WEIGHT: f32 = 0.25;
 
 /// The Monte Carlo partition of 3.2 published by Lim & Tan: containment 0–0.6,
 /// alignment 0.6–1.3, avoidance 1.3–1.5, cohesion 1.5–2.8, separation 2.8–3.2,
@@ -148,8 +161,17 @@ pub fn combine(
             }
         }
     }
-    // In the one-action modes the chosen force acts at its full slider share.
-    let sum: Vec3 = (0..5).filter(|&i| applied[i]).map(|i| scaled[i]).sum();
+    // Blended: each force at its weighted share. The one-action modes: the
+    // weight decided how often (or whether) a force is chosen; the chosen force
+    // acts at its full share, so its average effect grows with the weight, not
+    // with the weight squared.
+    let sum: Vec3 = (0..5)
+        .filter(|&i| applied[i])
+        .map(|i| match mode {
+            ControlMode::Blended => scaled[i],
+            _ => forces[i] * FORCE_SHARE_AT_FULL_WEIGHT[i],
+        })
+        .sum();
     let force = limit_finite(sum, max_force_m_per_s2);
     Combined {
         force_m_per_s2: force,
@@ -269,7 +291,38 @@ mod tests {
             &mut rng,
         );
         assert_eq!(c.applied, [false, false, false, false, true]);
-        assert!((c.force_m_per_s2 - (-Vec3::Y * 0.3)).length() < 1e-6);
+        // The one action acts at its full share (avoidance: 100 %), whatever its weight.
+        assert!((c.force_m_per_s2 - (-Vec3::Y)).length() < 1e-6);
+    }
+
+    /// Mean force over many draws of `mode` with one force on (along x) at `weight`.
+    fn mean_force(mode: ControlMode, weight: f32) -> f32 {
+        let mut rng = ChaCha8Rng::seed_from_u64(5);
+        let forces = [Vec3::ZERO, Vec3::X, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO];
+        // The other weights fill the Monte Carlo partition so weights are chances.
+        let weights = [0.0, weight, 100.0 - weight, 0.0, 0.0];
+        let sum: f32 = (0..DRAWS)
+            .map(|_| combine(mode, &forces, &weights, 10.0, &mut rng).force_m_per_s2.x)
+            .sum();
+        sum / DRAWS as f32
+    }
+
+    #[test]
+    fn in_the_random_modes_the_weight_sets_how_often_and_the_chosen_force_acts_in_full() {
+        // A chosen force acts at its full share (0.25 of the force for alignment), so
+        // the mean force grows in proportion to the weight, as in Blended mode: not as
+        // the weight squared.
+        for mode in [ControlMode::DirectAlternate, ControlMode::MonteCarlo] {
+            for weight in [20.0, 50.0, 80.0] {
+                let mean = mean_force(mode, weight);
+                let blended = mean_force(ControlMode::Blended, weight);
+                assert!(
+                    (mean - blended).abs() < 0.01,
+                    "{mode:?} at {weight}: {mean} vs blended {blended}"
+                );
+                assert!((blended - 0.25 * weight / 100.0).abs() < 1e-3, "{blended}");
+            }
+        }
     }
 
     #[test]

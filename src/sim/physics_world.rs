@@ -471,6 +471,8 @@ impl PhysicsWorld {
             max_neighbours: boid_forces::TOPOLOGICAL_NEIGHBOURS,
             separation_distance_m: 1.2 * a.body_length_m(),
             response_time_s: RESPONSE_TIME_SECS,
+            // Muscle fish are few and far apart: every heeded neighbour counts.
+            clear_sight_m: 0.0,
         };
         self.grid.rebuild(
             self.tank.min_m,

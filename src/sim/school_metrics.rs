@@ -5,8 +5,11 @@
 //!
 //! - polarization p = ‖Σ v̂ᵢ‖ / N: 1 when all swim the same way, near 0 when
 //!   headings are random or the group mills.
-//! - milling m = ‖Σ r̂ᵢ × v̂ᵢ‖ / N, r̂ᵢ the unit vector from the group centre to
-//!   fish i: 1 for a perfect torus (fish circling the centre), near 0 otherwise.
+//! - milling m = Σ_g ‖Σ_{i∈g} r̂ᵢ × v̂ᵢ‖ / N over the groups g (below), r̂ᵢ the
+//!   unit vector from the centre of fish i's own group to fish i: 1 when every
+//!   group is a perfect torus (fish circling their group's centre), near 0
+//!   otherwise. Measured about each group's centre, not the tank's, so loners
+//!   that happen to circle along the glass do not read as a mill.
 //! - mean nearest-neighbour distance, in each fish's own body lengths (schooling
 //!   fish keep about one body length).
 //! - groups: clusters of fish linked by gaps of at most two body lengths.
@@ -84,6 +87,10 @@ pub struct SchoolMeter {
     block_cells: Vec<IVec3>,
     /// Is every fish of the block known to be in one group?
     block_united: Vec<bool>,
+    /// Per group root (a slot of `grid`): position sum and count, then the sum
+    /// of r̂ × v̂ about the group's centre.
+    group_sums: Vec<(Vec3, u32)>,
+    group_turn: Vec<Vec3>,
 }
 
 impl SchoolMeter {
@@ -122,6 +129,7 @@ impl SchoolMeter {
             self.positions_m.push(f.position_m);
         }
         let groups = self.count_groups(fish, min_length, max_length, tank_min_m, tank_max_m);
+        let milling = self.group_milling(fish);
         let nnd_body_lengths = if n > 1 {
             self.nearest_distance_sum_body_lengths(fish, tank_min_m, tank_max_m) / count
         } else {
@@ -131,8 +139,38 @@ impl SchoolMeter {
         SchoolMetrics {
             nnd_body_lengths,
             groups,
+            milling,
             ..order
         }
+    }
+
+    /// Milling about each group's own centre (see the module doc), from the
+    /// groups the last [`Self::count_groups`] found.
+    fn group_milling(&mut self, fish: &[Fish]) -> f32 {
+        let n = fish.len();
+        if n == 0 {
+            return 0.0;
+        }
+        self.group_sums.clear();
+        self.group_sums.resize(n, (Vec3::ZERO, 0));
+        for slot in 0..n {
+            let r = root(&mut self.parent, slot);
+            let i = self.grid.slots()[slot] as usize;
+            self.group_sums[r].0 += fish[i].position_m;
+            self.group_sums[r].1 += 1;
+        }
+        self.group_turn.clear();
+        self.group_turn.resize(n, Vec3::ZERO);
+        for slot in 0..n {
+            let r = root(&mut self.parent, slot);
+            let f = &fish[self.grid.slots()[slot] as usize];
+            let (sum, count) = self.group_sums[r];
+            let centre = sum / count.max(1) as f32;
+            self.group_turn[r] += (f.position_m - centre)
+                .normalize_or_zero()
+                .cross(f.velocity_m_per_s.normalize_or_zero());
+        }
+        (self.group_turn.iter().map(|t| t.length()).sum::<f32>() / n as f32).min(1.0)
     }
 
     /// Number of groups (see [`SchoolMeter::measure`]).
@@ -453,8 +491,9 @@ impl SchoolMeter {
     }
 }
 
-/// Polarization, milling and mean speed of `fish` (one pass, O(N)); the
-/// nearest-neighbour distance and groups are left at zero.
+/// Polarization, milling about the centre of all `fish` (treated as one
+/// group) and mean speed (one pass, O(N)); the nearest-neighbour distance and
+/// groups are left at zero. [`SchoolMeter::measure`] measures milling per group.
 pub fn order_parameters(fish: &[Fish]) -> SchoolMetrics {
     if fish.is_empty() {
         return SchoolMetrics::default();

@@ -340,6 +340,49 @@ pub fn glass_walls(
     limit(steering, max_force_m_per_s2)
 }
 
+/// Smallest remaining range used by [`avoid_walls`]' strength, in metres.
+/// Default 0.1 m (as the rock algorithm's): keeps the push finite at the glass.
+pub const MIN_WALL_GAP_M: f32 = 0.1;
+
+/// Wall avoidance of the boid layer: Lim & Tan's wall algorithm ([`follow_wall`],
+/// SIMBA Figs 3–5) for each of the six faces of the water (four panes of glass,
+/// the sand and the surface) that the fish is within `range_m` of and heading
+/// into, each scaled like the rock algorithm by the remaining range,
+/// `range_m / max(gap, MIN_WALL_GAP_M)`, so the fish turns gently far off and
+/// hard close in. The tie-break for a fish aimed straight at a face is the
+/// direction along it towards the middle of the tank. Returns a velocity change
+/// (m/s), unlimited: the caller turns it into a force and limits it.
+pub fn avoid_walls(pos_m: Vec3, vel_m_per_s: Vec3, tank: &Tank, range_m: f32) -> Vec3 {
+    let to_middle = tank.center_m() - pos_m;
+    let faces = [
+        (Vec3::NEG_X, pos_m.x - tank.min_m.x),
+        (Vec3::X, tank.max_m.x - pos_m.x),
+        (Vec3::NEG_Y, pos_m.y - tank.min_m.y),
+        (Vec3::Y, tank.max_m.y - pos_m.y),
+        (Vec3::NEG_Z, pos_m.z - tank.min_m.z),
+        (Vec3::Z, tank.max_m.z - pos_m.z),
+    ];
+    let mut steering = Vec3::ZERO;
+    for (normal, distance_m) in faces {
+        let turn = follow_wall(
+            vel_m_per_s,
+            normal,
+            distance_m,
+            range_m,
+            to_middle,
+            WALL_AWAY_GAIN,
+            WALL_ALONG_GAIN,
+            f32::INFINITY,
+        );
+        steering += turn * (range_m / distance_m.max(MIN_WALL_GAP_M));
+    }
+    if steering.is_finite() {
+        steering
+    } else {
+        Vec3::ZERO
+    }
+}
+
 /// Containment of the boid layer: [`glass_walls`] (Lim & Tan's wall
 /// algorithm) plus the floor and surface handling of [`containment`] (pitch up
 /// or down, from `params`' look-ahead and margin), at most `max_force_m_per_s2`.

@@ -78,6 +78,12 @@ const SPAWN_CLEARANCE_M: f32 = 0.3;
 /// along the glass within about 1.3 m, so it rarely needs the hard rule.
 pub const BOID_WALL_RANGE_M: f32 = 1.5;
 
+/// How far from the glass, sand and surface the boid layer's containment
+/// ("stay in the pond") keeps a fish's predicted path, in metres. Default 0.5 m
+/// (tuned on seeds 1–6: 1.0 m made schools circle the tank): over a body length,
+/// so a school turns back towards open water before the wall algorithm has to act.
+pub const POND_COMFORT_MARGIN_M: f32 = 0.5;
+
 /// Fish notice a shark within this distance when it is inside their field of
 /// view (300°), in metres. Default 4 m (chosen): a shark 2 m long is plain to
 /// see at that range in an aquarium; beyond it the fish keep schooling.
@@ -124,12 +130,12 @@ pub const FEAR_SEPARATION_FACTOR: f32 = 0.5;
 /// close to "the fish I see".
 const FAR_FIELD_CELL_SHARE: f32 = 0.5;
 
-/// Steps between two measurements of the nearest-neighbour distance and the
-/// number of groups. Default 15 (four times a second): the plots and the CSV
+/// Steps between two measurements of the nearest-neighbour distance, the
+/// number of groups and milling (about each group's centre). Default 15 (four times a second): the plots and the CSV
 /// take a sample every 15 steps (`metrics_history::SAMPLE_EVERY_STEPS`), so
 /// each sample holds a fresh measurement; both change over seconds, and
 /// measuring them costs 30 times the other metrics (8 ms with 20,000 fish).
-/// Polarization, milling and mean speed are measured after every step.
+/// Polarization and mean speed are measured after every step.
 pub const SPATIAL_METRICS_EVERY_STEPS: u64 = 15;
 
 /// How often a fish searches for the neighbours it heeds, in steps. Default 4
@@ -192,27 +198,36 @@ pub struct BoidParams {
     pub weights: [f32; 5],
     pub mode: ControlMode,
     pub perception: Perception,
-    /// Weight of a wander added to the five forces. Default 0 for the group
-    /// preset (any wander strong enough to see breaks the school's alignment).
+    /// Wander on the urges' 0–100 scale: a full slider gives
+    /// [`control_mode::WANDER_SHARE_AT_FULL_WEIGHT`] of the maximum force. It is
+    /// added on top of the control mode (as fleeing is). Default
+    /// [`DEFAULT_WANDER`] in every preset.
     pub wander_weight: f32,
 }
 
+/// The boid layer's default wander (0–100), the same in every preset.
+/// Default 10 (tuned): enough that loners roam apart, too little to break a
+/// school.
+pub const DEFAULT_WANDER: f32 = 10.0;
+
 impl BoidParams {
-    /// Table 1's "group" preset, blended, with a 300° field of view (TT §5).
+    /// Table 1's "group" weights, blended, with the boid layer's default senses
+    /// and body (the same for every preset: only the five weights differ
+    /// between *Individual* and *Group*).
     ///
-    /// Perception (tuned on seeds 1–5, 200 fish; see the tests):
-    /// - vision 5 m: about a school's width in this 12 m tank, so a straggler
-    ///   still sees the school and rejoins it;
+    /// Senses and body (tuned on seeds 1–12, 200 fish; `docs/boids.md`):
+    /// - vision 5 m and 300° (Tu & Terzopoulos §5): about a school's width in
+    ///   this 12 m tank, so a straggler still sees the school;
     /// - the 7 nearest seen neighbours (Ballerini et al. 2008);
-    /// - personal space 0.4 m (about one body length; schooling fish keep
-    ///   roughly one body length apart, Pitcher & Partridge 1979): only closer
-    ///   neighbours push, so separation no longer cancels cohesion at school
-    ///   scale (with every seen fish pushing, the school broke into 3–4 groups);
-    /// - maximum force 8 m/s² and response time 0.25 s: each force reaches its
-    ///   desired velocity in a quarter second and saturates, so a weight's
-    ///   Table 1 share of the force (25 % of the maximum at 100, avoidance 100 %)
-    ///   is what the fish actually feels. (Real fish accelerate far harder in a
-    ///   fast start; 8 m/s² lets a 0.8 m/s fish turn within about its length.)
+    /// - personal space 0.8 m: neighbours closer than this push (more strongly
+    ///   the closer they are), so a school's nearest neighbours settle about
+    ///   one body length apart (Pitcher & Partridge 1979);
+    /// - top speed 0.8 m/s, maximum force 8 m/s² and response time 0.1 s: each
+    ///   urge reaches its desired velocity quickly and mostly saturates, so a
+    ///   weight's share of the force (25 % of the maximum at 100, avoidance
+    ///   100 %) is what the fish feels;
+    /// - wander 10 (on the urges' 0–100 scale): a little roaming of their own,
+    ///   which a school's alignment and cohesion overcome and loners' do not.
     pub fn group() -> Self {
         Self {
             weights: control_mode::GROUP_WEIGHTS,
@@ -223,28 +238,20 @@ impl BoidParams {
                 max_speed_m_per_s: 0.8,
                 max_force_m_per_s2: 8.0,
                 max_neighbours: boid_forces::TOPOLOGICAL_NEIGHBOURS,
-                separation_distance_m: 0.4,
-                response_time_s: 0.25,
+                separation_distance_m: 0.8,
+                response_time_s: 0.1,
+                clear_sight_m: boid_forces::ALIGNMENT_CLEAR_SIGHT_M,
             },
-            wander_weight: 0.0,
+            wander_weight: DEFAULT_WANDER,
         }
     }
 
-    /// Table 1's "individual" preset with the group's perception, except
-    /// (tuned) a personal space of 1.2 m (a solitary fish keeps its distance:
-    /// three body lengths) and a wander of weight 1 (a solitary fish explores on
-    /// its own; without it the 18 % alignment slowly lined the loners up to a
-    /// polarization of about 0.45).
+    /// Table 1's "individual" weights with exactly the group's senses, body,
+    /// wander and mode: the weights alone make the difference.
     pub fn individual() -> Self {
-        let group = Self::group();
         Self {
             weights: control_mode::INDIVIDUAL_WEIGHTS,
-            perception: Perception {
-                separation_distance_m: 1.2,
-                ..group.perception
-            },
-            wander_weight: 3.0,
-            ..group
+            ..Self::group()
         }
     }
 }
@@ -644,28 +651,44 @@ impl World {
                 .map(|(j, _)| self.fear[j])
                 .fold(0.0, f32::max)
                 * ALARM_SHARE;
-            let containment = steering::contain_in_tank(
-                position_m,
-                velocity_m_per_s,
-                &self.tank,
-                BOID_WALL_RANGE_M,
-                &params,
-                f32::INFINITY,
-            );
+            // Containment: stay in the pond, away from its edges (turn back
+            // towards open water when the path leaves the comfortable middle).
             let containment = boid_forces::steer_towards(
-                velocity_m_per_s + containment,
+                velocity_m_per_s
+                    + steering::containment(
+                        position_m,
+                        velocity_m_per_s,
+                        &self.tank,
+                        params.containment_look_ahead_s,
+                        POND_COMFORT_MARGIN_M,
+                        params.max_speed_m_per_s,
+                    ),
                 velocity_m_per_s,
                 perception,
             );
+            // Avoidance: the glass, sand and surface (wall algorithm), the
+            // rocks, pillars, ledges and stingrays (rock algorithm) and fish on
+            // a collision course (swaying, clusters as one obstacle).
             let avoidance = steering::limit(
-                steering::avoid_obstacles(
+                (steering::avoid_walls(
+                    position_m,
+                    velocity_m_per_s,
+                    &self.tank,
+                    BOID_WALL_RANGE_M,
+                ) + steering::avoid_obstacles(
                     position_m,
                     velocity_m_per_s,
                     self.avoid_all.near(position_m, avoid_reach_m),
                     params.avoidance_look_ahead_m,
                     AVOIDANCE_CLEARANCE_M,
                     params.max_speed_m_per_s,
-                ) / perception.response_time_s.max(1e-3),
+                ) + boid_forces::avoid_neighbours(
+                    &self.positions_m,
+                    &self.velocities_m_per_s,
+                    i,
+                    &heeded.neighbours,
+                    params.max_speed_m_per_s,
+                )) / perception.response_time_s.max(1e-3),
                 max_force,
             );
             let forces = [
@@ -689,8 +712,15 @@ impl World {
                 *count += u32::from(applied);
             }
             let fish = &mut self.fish[i];
-            let wander = if boids.wander_weight != 0.0 {
-                steering::wander(fish, &mut self.rng, &params) * boids.wander_weight
+            // Wander on the urges' scale: a full slider gives the same share of
+            // the maximum force as a full alignment or cohesion slider.
+            let wander = if boids.wander_weight > 0.0 {
+                steering::limit(
+                    steering::wander(fish, &mut self.rng, &params)
+                        / perception.response_time_s.max(1e-3),
+                    max_force,
+                ) * (boids.wander_weight.min(100.0) / 100.0
+                    * control_mode::WANDER_SHARE_AT_FULL_WEIGHT)
             } else {
                 Vec3::ZERO
             };
@@ -809,6 +839,7 @@ impl World {
             max_neighbours: 1,
             separation_distance_m: 0.0,
             response_time_s: 1.0,
+            clear_sight_m: 0.0,
         };
         for s in 0..self.sharks.len() {
             let mut shark = self.sharks[s];
@@ -945,6 +976,7 @@ impl World {
             SchoolMetrics {
                 nnd_body_lengths: self.metrics.school.nnd_body_lengths,
                 groups: self.metrics.school.groups,
+                milling: self.metrics.school.milling,
                 ..school_metrics::order_parameters(&self.fish)
             }
         };
