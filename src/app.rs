@@ -16,8 +16,9 @@ use crate::render::{FrameBuilder, OrbitCamera, RenderCaps, SceneRenderer};
 use crate::settings::{Scene, Settings, Side};
 use crate::sim::Obstacle;
 use crate::ui::{
-    EditTool, PanelAction, PanelState, WidgetRects, body_overlay, body_plots_ui, control_panel_ui,
-    metrics_panel_ui, mode_label, reef_overlay, reef_panel, side_color, status_line_ui,
+    BODY_PLOTS_PANEL_HEIGHT, EditTool, METRICS_PANEL_HEIGHT, PanelAction, PanelState, WidgetRects,
+    body_overlay, body_plots_ui, control_panel_ui, metrics_panel_ui, mode_label, reef_overlay,
+    reef_panel, show_bottom_panel, side_color, status_line_ui,
 };
 
 /// Physical animals whose screen rectangles `shoal.widgets()` reports (`animal_0`,
@@ -1033,36 +1034,46 @@ impl eframe::App for ShoalApp {
                     }
                 })
                 .collect();
-            egui::Panel::bottom("metrics")
-                .resizable(true)
-                .default_size(170.0)
-                .show(ui, |ui| {
-                    metrics_panel_ui(ui, self.lab.runs(), &labels, &mut self.widget_rects);
-                });
+            let runs = self.lab.runs();
+            show_bottom_panel(
+                ui,
+                "metrics",
+                METRICS_PANEL_HEIGHT,
+                &mut self.widget_rects,
+                |ui, height, rects| metrics_panel_ui(ui, runs, &labels, height, rects),
+            );
         }
 
         if self.lab.settings().scene == Scene::Physics {
             // The plots need a selected fish; until then one line says how to get them.
             match self.lab.settings().physics.selected {
                 Some(selected) => {
-                    egui::Panel::bottom("body_plots")
-                        .resizable(true)
-                        .default_size(170.0)
+                    let run = &self.lab.runs()[0];
+                    show_bottom_panel(
+                        ui,
+                        "body_plots",
+                        BODY_PLOTS_PANEL_HEIGHT,
+                        &mut self.widget_rects,
+                        |ui, height, rects| body_plots_ui(ui, run, Some(selected), height, rects),
+                    );
+                }
+                None => {
+                    // One line of text: the panel takes the line's height, which does not
+                    // depend on the panel's.
+                    let hint = egui::Panel::bottom("body_plots_hint")
+                        .resizable(false)
                         .show(ui, |ui| {
+                            let height = ui.available_height();
                             body_plots_ui(
                                 ui,
                                 &self.lab.runs()[0],
-                                Some(selected),
+                                None,
+                                height,
                                 &mut self.widget_rects,
                             );
                         });
-                }
-                None => {
-                    egui::Panel::bottom("body_plots_hint")
-                        .resizable(false)
-                        .show(ui, |ui| {
-                            body_plots_ui(ui, &self.lab.runs()[0], None, &mut self.widget_rects);
-                        });
+                    self.widget_rects
+                        .insert("panel_body_plots_hint", hint.response.rect);
                 }
             }
         }
@@ -1076,17 +1087,23 @@ impl eframe::App for ShoalApp {
             if stale && let Some(l) = self.lab.runs()[0].learning() {
                 self.learning_abstraction = Some((now_secs, l.current_abstraction()));
             }
-            egui::Panel::bottom("learning_plots")
-                .resizable(true)
-                .default_size(240.0)
-                .show(ui, |ui| {
+            let run = &self.lab.runs()[0];
+            let abstraction = self.learning_abstraction.as_ref().map(|(_, a)| a);
+            show_bottom_panel(
+                ui,
+                "learning_plots",
+                crate::ui::learning_panel::LEARNING_PANEL_HEIGHT,
+                &mut self.widget_rects,
+                |ui, height, rects| {
                     crate::ui::learning_panel::learning_plots_ui(
                         ui,
-                        &self.lab.runs()[0],
-                        self.learning_abstraction.as_ref().map(|(_, a)| a),
-                        &mut self.widget_rects,
+                        run,
+                        abstraction,
+                        height,
+                        rects,
                     );
-                });
+                },
+            );
         }
         if self.lab.settings().scene == Scene::Reef {
             let selected = self.lab.settings().reef.selected;
@@ -1099,18 +1116,16 @@ impl eframe::App for ShoalApp {
                     texture,
                     mean_brightness: *brightness,
                 });
-            egui::Panel::bottom("reef_inspector")
-                .resizable(true)
-                .default_size(if selected.is_some() { 230.0 } else { 120.0 })
-                .show(ui, |ui| {
-                    reef_panel::reef_inspector_ui(
-                        ui,
-                        &self.lab.runs()[0],
-                        selected,
-                        fish_eye,
-                        &mut self.widget_rects,
-                    );
-                });
+            let run = &self.lab.runs()[0];
+            show_bottom_panel(
+                ui,
+                "reef_inspector",
+                reef_panel::reef_inspector_height(selected.is_some()),
+                &mut self.widget_rects,
+                |ui, height, rects| {
+                    reef_panel::reef_inspector_ui(ui, run, selected, fish_eye, height, rects);
+                },
+            );
         }
 
         let mut settings = self.lab.settings().clone();

@@ -8,6 +8,7 @@ use egui_plot::{Legend, Line, Plot, PlotPoints};
 
 use super::WidgetRects;
 use super::body_overlay::muscle_color;
+use super::bottom_panel::plot_height_under_caption;
 use super::control_panel::PanelAction;
 use crate::lab::Run;
 use crate::learning_settings::{ANNEALING_STEPS_MAX, ANNEALING_STEPS_MIN, LearningSettings};
@@ -152,11 +153,17 @@ pub fn learning_controls_ui(
     actions
 }
 
-/// The bottom panel: progress, the objective curve and Fig. 8.
+/// The height the learning panel under the tank would like, points (see
+/// [`super::bottom_panel::bottom_panel_height`] for what it gets).
+pub const LEARNING_PANEL_HEIGHT: f32 = 240.0;
+
+/// The bottom panel: progress, the objective curve and Fig. 8, in
+/// `content_height` points (each plot under a one-line caption).
 pub fn learning_plots_ui(
     ui: &mut egui::Ui,
     run: &Run,
     abstraction: Option<&Abstraction>,
+    content_height: f32,
     rects: &mut WidgetRects,
 ) {
     let Some(lab) = run.learning() else {
@@ -172,7 +179,11 @@ pub fn learning_plots_ui(
         // points wide plus the item spacing on each side) fill the width.
         let separator = 6.0 + 2.0 * ui.spacing().item_spacing.x;
         let width = ((ui.available_width() - 3.0 * separator - 12.0) / 4.0).max(120.0);
-        let height = (ui.available_height() - 24.0).clamp(80.0, 220.0);
+        let height = plot_height_under_caption(
+            content_height,
+            ui.text_style_height(&egui::TextStyle::Body),
+            ui.spacing().item_spacing.y,
+        );
         ui.vertical(|ui| {
             ui.set_width(width);
             objective_plot_ui(ui, lab, height, rects);
@@ -256,7 +267,8 @@ fn progress_ui(ui: &mut egui::Ui, lab: &LearningLab, rects: &mut WidgetRects) {
 }
 
 fn objective_plot_ui(ui: &mut egui::Ui, lab: &LearningLab, height: f32, rects: &mut WidgetRects) {
-    ui.label("How well it swims (E, lower is better)");
+    // One line, as `height` assumes: a narrow window cuts the caption short.
+    ui.add(egui::Label::new("How well it swims (E, lower is better)").truncate());
     let history = lab.trainer().history();
     // At most ~600 points drawn.
     let every = (history.len() / 600).max(1);
@@ -316,7 +328,8 @@ fn fig8_ui(ui: &mut egui::Ui, a: &Abstraction, width: f32, height: f32, rects: &
         ui.separator();
         ui.vertical(|ui| {
             ui.set_width(width);
-            ui.label(title).on_hover_text(match kind {
+            ui.add(egui::Label::new(title).truncate())
+                .on_hover_text(match kind {
                 "raw" => "How hard each muscle pulls over the practice swim, as learned",
                 "modes" => "The few waves (frequencies) that carry most of the learned pattern",
                 _ => {

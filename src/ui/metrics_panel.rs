@@ -5,6 +5,7 @@ use eframe::egui;
 use egui_plot::{Line, Plot, PlotPoints};
 
 use super::WidgetRects;
+use super::bottom_panel::plot_height_under_caption;
 use crate::lab::Run;
 use crate::metrics_history::MetricsSample;
 use crate::settings::Side;
@@ -59,11 +60,17 @@ const METRICS: [Metric; 5] = [
     },
 ];
 
+/// The height the metrics panel under the tank would like, points (see
+/// [`super::bottom_panel::bottom_panel_height`] for what it gets).
+pub const METRICS_PANEL_HEIGHT: f32 = 180.0;
+
 /// Draws the numbers and plots for `runs` (one or two tanks); `labels` names each.
+/// The plots fill what the numbers leave of `content_height` points.
 pub fn metrics_panel_ui(
     ui: &mut egui::Ui,
     runs: &[Run],
     labels: &[String],
+    content_height: f32,
     rects: &mut WidgetRects,
 ) {
     let numbers = egui::Grid::new("metric_numbers")
@@ -105,6 +112,13 @@ pub fn metrics_panel_ui(
 
     let plot_width =
         ((ui.available_width() - 8.0 * METRICS.len() as f32) / METRICS.len() as f32).max(120.0);
+    let spacing = ui.spacing().item_spacing.y;
+    let caption_height = ui.text_style_height(&egui::TextStyle::Small);
+    let plot_height = plot_height_under_caption(
+        content_height - numbers.response.rect.height() - spacing,
+        caption_height,
+        spacing,
+    );
     let link = egui::Id::unique("metrics_time_axis");
     ui.horizontal(|ui| {
         for (index, metric) in METRICS.iter().enumerate() {
@@ -112,7 +126,7 @@ pub fn metrics_panel_ui(
                 ui.small(metric.title).on_hover_text(metric.help);
                 let mut plot = Plot::new(("metric_plot", index))
                     .width(plot_width)
-                    .height((ui.available_height() - 4.0).clamp(60.0, 160.0))
+                    .height(plot_height)
                     .allow_scroll(false)
                     .allow_drag(false)
                     .allow_zoom(false)

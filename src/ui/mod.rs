@@ -2,6 +2,7 @@
 //! actions; they never touch the simulation directly.
 
 pub mod body_overlay;
+pub mod bottom_panel;
 mod control_panel;
 pub mod learning_panel;
 mod metrics_panel;
@@ -11,9 +12,10 @@ pub mod reef_panel;
 mod status_line;
 mod tank_panel;
 
+pub use bottom_panel::show_bottom_panel;
 pub use control_panel::{EditTool, PanelAction, PanelState, control_panel_ui};
-pub use metrics_panel::{metrics_panel_ui, side_color};
-pub use physics_panel::body_plots_ui;
+pub use metrics_panel::{METRICS_PANEL_HEIGHT, metrics_panel_ui, side_color};
+pub use physics_panel::{BODY_PLOTS_PANEL_HEIGHT, body_plots_ui};
 pub use status_line::status_line_ui;
 pub use tank_panel::mode_label;
 

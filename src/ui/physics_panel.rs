@@ -7,6 +7,7 @@ use egui_plot::{Line, Plot, PlotPoints};
 
 use super::WidgetRects;
 use super::body_overlay::muscle_color;
+use super::bottom_panel::plot_height_under_caption;
 use super::control_panel::PanelAction;
 use crate::lab::{BODY_TRACE_SECS, Run};
 use crate::physics_settings::{
@@ -225,9 +226,22 @@ fn selected_fish_ui(
     });
 }
 
+/// The height the panel under the tank would like for the selected fish's plots,
+/// points (see [`super::bottom_panel::bottom_panel_height`] for what it gets).
+pub const BODY_PLOTS_PANEL_HEIGHT: f32 = 180.0;
+
 /// The selected fish's muscles (three plots, one per body segment, four muscles
-/// each) and speed over the last [`BODY_TRACE_SECS`].
-pub fn body_plots_ui(ui: &mut egui::Ui, run: &Run, selected: Option<u32>, rects: &mut WidgetRects) {
+/// each) and speed over the last [`BODY_TRACE_SECS`], in `content_height` points:
+/// a caption row and a plot under it, whatever the plots hold. (The plots once took
+/// the panel's available height, the panel took the plots' height and a margin,
+/// and the panel grew every frame: issue 14.)
+pub fn body_plots_ui(
+    ui: &mut egui::Ui,
+    run: &Run,
+    selected: Option<u32>,
+    content_height: f32,
+    rects: &mut WidgetRects,
+) {
     let Some(index) = selected else {
         ui.vertical_centered(|ui| {
             ui.label(
@@ -250,13 +264,17 @@ pub fn body_plots_ui(ui: &mut egui::Ui, run: &Run, selected: Option<u32>, rects:
         ),
         (MuscleSegment::Posterior, "Tail muscles (swimming)"),
     ];
-    let width = (ui.available_width() - 3.0 * 8.0) / 4.0;
-    let height = ui.available_height().max(60.0);
+    let spacing = ui.spacing().item_spacing;
+    let width = (ui.available_width() - 3.0 * spacing.x) / 4.0;
+    // Each caption is a row of the standard height, so every plot gets the same.
+    let caption_height = ui.spacing().interact_size.y;
+    let plot_height = plot_height_under_caption(content_height, caption_height, spacing.y);
     ui.horizontal(|ui| {
         for (k, (segment, title)) in segments.into_iter().enumerate() {
             ui.vertical(|ui| {
                 ui.set_width(width);
                 ui.horizontal(|ui| {
+                    ui.set_height(caption_height);
                     ui.label(egui::RichText::new(title).small());
                     ui.label(egui::RichText::new("left").small().color(muscle_color(0.9)));
                     ui.label(
@@ -273,7 +291,7 @@ pub fn body_plots_ui(ui: &mut egui::Ui, run: &Run, selected: Option<u32>, rects:
                      turns: that is the tail beat",
                 );
                 let plot = Plot::new(("muscles", index, k))
-                    .height(height - 22.0)
+                    .height(plot_height)
                     .include_y(0.0)
                     .include_y(1.0)
                     .include_x(start)
@@ -306,10 +324,13 @@ pub fn body_plots_ui(ui: &mut egui::Ui, run: &Run, selected: Option<u32>, rects:
         }
         ui.vertical(|ui| {
             ui.set_width(width);
-            ui.label(egui::RichText::new("Speed (m/s)").small())
-                .on_hover_text("How fast the fish's middle moves, in metres per second");
+            ui.horizontal(|ui| {
+                ui.set_height(caption_height);
+                ui.label(egui::RichText::new("Speed (m/s)").small())
+                    .on_hover_text("How fast the fish's middle moves, in metres per second");
+            });
             let plot = Plot::new(("speed", index))
-                .height(height - 22.0)
+                .height(plot_height)
                 .include_y(0.0)
                 .include_x(start)
                 .include_x(now)

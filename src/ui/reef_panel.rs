@@ -7,6 +7,7 @@ use eframe::egui;
 use egui_plot::{Legend, Line, Plot, PlotPoints};
 
 use super::WidgetRects;
+use super::bottom_panel::plot_height_under_caption;
 use super::control_panel::PanelAction;
 use crate::lab::Run;
 use crate::reef_settings::{
@@ -213,30 +214,46 @@ pub struct FishEyeView<'a> {
     pub mean_brightness: f32,
 }
 
+/// The height the reef inspector under the tank would like, points, with a fish
+/// selected and without (see [`super::bottom_panel::bottom_panel_height`] for what it gets).
+pub fn reef_inspector_height(selected: bool) -> f32 {
+    if selected { 230.0 } else { 120.0 }
+}
+
 /// The bottom panel of the reef scene: the inspector of the selected fish, or a
-/// hint; and the event log.
+/// hint; and the event log; in `content_height` points (a column that needs more
+/// scrolls).
 pub fn reef_inspector_ui(
     ui: &mut egui::Ui,
     run: &Run,
     selected: Option<u32>,
     fish_eye: Option<FishEyeView>,
+    content_height: f32,
     rects: &mut WidgetRects,
 ) {
     let Some(reef) = run.reef() else {
         return;
     };
     let animal = selected.and_then(|i| reef.animals().get(i as usize).map(|a| (i as usize, a)));
+    // Every column fits `content_height`: the text columns scroll, the plot and the
+    // event log take what their caption (one line) leaves.
+    let line = ui.text_style_height(&egui::TextStyle::Body);
+    let spacing = ui.spacing().item_spacing.y;
+    let under_caption = plot_height_under_caption(content_height, line, spacing);
     ui.horizontal_top(|ui| {
         match animal {
             Some((i, a)) => {
                 ui.vertical(|ui| {
                     ui.set_width(300.0);
-                    mind_summary_ui(ui, reef, i, a, rects);
+                    egui::ScrollArea::vertical()
+                        .id_salt("reef_mind_summary")
+                        .max_height(content_height)
+                        .show(ui, |ui| mind_summary_ui(ui, reef, i, a, rects));
                 });
                 ui.separator();
                 ui.vertical(|ui| {
                     ui.set_width((ui.available_width() - 560.0).max(220.0));
-                    history_plot_ui(ui, a, rects);
+                    history_plot_ui(ui, a, under_caption, rects);
                 });
                 ui.separator();
                 ui.vertical(|ui| {
@@ -247,9 +264,11 @@ pub fn reef_inspector_ui(
                              squeezed into a circle. Its brain only uses how bright it is",
                         );
                     if let Some(view) = fish_eye {
+                        // The eye and the two lines under it fit under the caption.
+                        let side = (under_caption - 2.0 * (line + spacing)).clamp(0.0, 150.0);
                         let r = ui.add(
                             egui::Image::new(view.texture)
-                                .fit_to_exact_size(egui::vec2(150.0, 150.0)),
+                                .fit_to_exact_size(egui::vec2(side, side)),
                         );
                         rects.insert("fish_eye", r.rect);
                         ui.label(format!("Brightness {:.2}", view.mean_brightness));
@@ -260,22 +279,29 @@ pub fn reef_inspector_ui(
             None => {
                 ui.vertical(|ui| {
                     ui.set_width(300.0);
-                    let counts = reef.counts();
-                    ui.label(egui::RichText::new("Reef").strong());
-                    ui.label(format!(
-                        "{} animals alive · {} plankton · {} prey eaten · {} spawnings",
-                        reef.alive_count(),
-                        reef.food().len(),
-                        counts.prey_eaten,
-                        counts.spawnings
-                    ));
-                    ui.label("Click a fish to see its hunger, fear and plans, and what it sees.");
+                    egui::ScrollArea::vertical()
+                        .id_salt("reef_summary")
+                        .max_height(content_height)
+                        .show(ui, |ui| {
+                            let counts = reef.counts();
+                            ui.label(egui::RichText::new("Reef").strong());
+                            ui.label(format!(
+                                "{} animals alive · {} plankton · {} prey eaten · {} spawnings",
+                                reef.alive_count(),
+                                reef.food().len(),
+                                counts.prey_eaten,
+                                counts.spawnings
+                            ));
+                            ui.label(
+                                "Click a fish to see its hunger, fear and plans, and what it sees.",
+                            );
+                        });
                 });
             }
         }
         ui.separator();
         ui.vertical(|ui| {
-            event_log_ui(ui, reef, rects);
+            event_log_ui(ui, reef, under_caption, rects);
         });
     });
 }
@@ -409,8 +435,11 @@ pub fn target_text(reef: &ReefWorld, target: Option<Target>) -> String {
     }
 }
 
-fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, rects: &mut WidgetRects) {
-    ui.label(egui::RichText::new("Its mind over the last two minutes").strong());
+fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, height: f32, rects: &mut WidgetRects) {
+    ui.add(
+        egui::Label::new(egui::RichText::new("Its mind over the last two minutes").strong())
+            .truncate(),
+    );
     let series = |f: fn(&crate::sim::reef_world::MindSample) -> f32| -> PlotPoints {
         a.history
             .iter()
@@ -418,7 +447,7 @@ fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, rects: &mut WidgetRects) {
             .collect()
     };
     let r = Plot::new("reef_mind_history")
-        .height((ui.available_height() - 8.0).clamp(90.0, 200.0))
+        .height(height)
         .include_y(0.0)
         .include_y(1.0)
         .allow_scroll(false)
@@ -433,12 +462,12 @@ fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, rects: &mut WidgetRects) {
     rects.insert("reef_mind_plot", r.response.rect);
 }
 
-fn event_log_ui(ui: &mut egui::Ui, reef: &ReefWorld, rects: &mut WidgetRects) {
+fn event_log_ui(ui: &mut egui::Ui, reef: &ReefWorld, height: f32, rects: &mut WidgetRects) {
     ui.label(egui::RichText::new("What happened").strong())
         .on_hover_text("Newest first: meals, chases, courtship");
     let r = egui::ScrollArea::vertical()
         .id_salt("reef_events")
-        .max_height((ui.available_height() - 4.0).max(80.0))
+        .max_height(height)
         .show(ui, |ui| {
             if reef.events().is_empty() {
                 ui.label("Nothing yet.");

@@ -14,6 +14,7 @@ import {
   saveArtifact,
   clickUntil,
   waitForWidget,
+  waitFrames,
 } from "./harness.mjs";
 
 const state = (page) => page.evaluate(() => window.shoal.state());
@@ -79,6 +80,35 @@ describe("physics fish", () => {
     assert.ok(plotStats.distinctColours > 8, `the plot has lines: ${JSON.stringify(plotStats)}`);
     const view = (await widgets(page)).view_left;
     assert.ok(fishPixels(png, view).size > 100, "fish bodies are drawn");
+  });
+
+  test("with a fish selected the plot panel and the tank keep their height (issue 14)", async () => {
+    // The previous test selected fish 3 with a click and left the simulation running.
+    assert.equal((await settings(page)).physics.selected, 3);
+    const heights = async () => {
+      const w = await widgets(page);
+      assert.ok(w.panel_body_plots, "the plot panel is on screen");
+      return {
+        frame: (await state(page)).frames,
+        panel: w.panel_body_plots.height,
+        tank: w.view_left.height,
+        plotBottom: w.muscle_plot_0.y + w.muscle_plot_0.height,
+        panelBottom: w.panel_body_plots.y + w.panel_body_plots.height,
+      };
+    };
+    const first = await heights();
+    const windowHeight = await page.evaluate(() => window.innerHeight);
+    assert.ok(first.panel <= 0.3 * windowHeight, `the panel takes ${first.panel} of ${windowHeight} px`);
+    assert.ok(first.plotBottom <= first.panelBottom + 0.5, "the plots fit in the panel");
+    const samples = [first];
+    while (samples.at(-1).frame < first.frame + 300) {
+      await waitFrames(page, 30);
+      samples.push(await heights());
+    }
+    for (const s of samples) {
+      assert.equal(s.panel, first.panel, `panel heights ${samples.map((x) => x.panel)}`);
+      assert.equal(s.tank, first.tank, `tank heights ${samples.map((x) => x.tank)}`);
+    }
   });
 
   test("the overlays draw the masses, springs and forces", async () => {
