@@ -279,7 +279,21 @@ impl Settings {
         let serde_json::Value::Object(patch) = patch else {
             return Err(SettingsError::NotAnObject(patch.to_string()));
         };
-        let mut merged = serde_json::to_value(&*self)
+        // A preset named in the patch is applied first, then the patch's values on
+        // top of it: `{"left": {"preset": "group", "alignment": 40}}` gives the
+        // group's weights with alignment 40 (and the label Custom), never a
+        // silently dropped value.
+        let mut base = self.clone();
+        for side in Side::BOTH {
+            let preset = patch
+                .get(side.name())
+                .and_then(|tank| tank.get("preset"))
+                .and_then(|preset| serde_json::from_value::<Preset>(preset.clone()).ok());
+            if let Some(preset) = preset {
+                base.tank_mut(side).load_preset(preset);
+            }
+        }
+        let mut merged = serde_json::to_value(&base)
             .map_err(|err| SettingsError::NotAnObject(err.to_string()))?;
         merge_checked(&mut merged, &[], patch)?;
         let mut candidate: Self =
@@ -288,7 +302,7 @@ impl Settings {
                 reason: err.to_string(),
             })?;
         candidate.validate()?;
-        candidate.settle(self);
+        candidate.settle(&base);
         *self = candidate;
         Ok(())
     }
@@ -390,6 +404,53 @@ mod tests {
         assert!(settings.paused);
         assert_eq!(settings.seed, Settings::default().seed);
         assert_eq!(settings.right, Settings::default().right);
+    }
+
+    #[test]
+    fn a_patch_with_a_preset_and_a_value_applies_the_preset_then_the_value() {
+        let mut settings = Settings::default();
+        settings
+            .apply_patch(&json!({"left": {"preset": "group", "alignment": 40}}))
+            .unwrap();
+        assert_eq!(
+            settings.left.alignment, 40.0,
+            "the value is kept, not dropped"
+        );
+        assert_eq!(
+            settings.left.cohesion, GROUP_WEIGHTS[2],
+            "the preset applied"
+        );
+        assert_eq!(settings.left.separation, GROUP_WEIGHTS[3]);
+        assert_eq!(
+            settings.left.preset,
+            Preset::Custom,
+            "the label tells the truth"
+        );
+        // The preset's own value with it keeps the preset's name.
+        settings
+            .apply_patch(&json!({"left": {"preset": "individual", "cohesion": 0}}))
+            .unwrap();
+        assert_eq!(settings.left.preset, Preset::Individual);
+        // A preset and a mode: the paper partition with its mode, then the mode asked.
+        settings
+            .apply_patch(&json!({"right": {"preset": "monte_carlo_paper", "mode": "classic"}}))
+            .unwrap();
+        assert_eq!(settings.right.mode, ControlMode::Classic);
+        assert_eq!(settings.right.preset, Preset::Custom);
+    }
+
+    #[test]
+    fn the_compared_tanks_differ_only_in_the_five_weights() {
+        let settings = Settings::default();
+        let (mut left, right) = (settings.left.clone(), settings.right.clone());
+        assert_ne!(left.weights(), right.weights());
+        left.preset = right.preset;
+        left.containment = right.containment;
+        left.alignment = right.alignment;
+        left.cohesion = right.cohesion;
+        left.separation = right.separation;
+        left.avoidance = right.avoidance;
+        assert_eq!(left, right, "every other setting is the same");
     }
 
     #[test]

@@ -2,10 +2,13 @@
 //! the papers' 0–100 scale, the control mode, what the fish perceive, and how many
 //! animals of each species swim in it (Lim & Tan; NOTES.md "SIMBA steering").
 //!
-//! A preset ("Individual", "Group", the Monte Carlo paper partition) fills the weights
-//! and the perception; moving any of those by hand makes the preset "Custom", and
-//! setting them back to a preset's values makes it that preset again, so the label
-//! always tells the truth.
+//! A preset ("Individual", "Group", the Monte Carlo paper partition) sets the five
+//! weights (the paper partition also the Monte Carlo mode) and nothing else: senses,
+//! body and wander are visible controls of their own, the same whatever the preset,
+//! so a difference between an *Individual* and a *Group* tank is caused by the
+//! weights alone. Moving a weight by hand makes the preset "Custom", and setting the
+//! weights back to a preset's values makes it that preset again, so the label always
+//! tells the truth.
 
 use serde::{Deserialize, Serialize};
 
@@ -34,9 +37,6 @@ pub const MAX_FORCE_RANGE_M_PER_S2: (f32, f32) = (0.1, 10.0);
 /// Personal space range, metres: from a third of a body length (packed) to ten body
 /// lengths (a loner that keeps everybody away).
 pub const PERSONAL_SPACE_RANGE_M: (f32, f32) = (0.1, 3.0);
-/// A wander slider of 100 is this wander weight. Default 5: the individual preset's
-/// tuned weight of 3 sits at 60, and a full slider makes fish roam restlessly.
-pub const WANDER_WEIGHT_AT_100: f32 = 5.0;
 
 /// Named sets of weights and perception.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -87,18 +87,18 @@ impl Preset {
         }
     }
 
-    /// The boid parameters this preset sets; `None` for Custom.
-    fn params(self) -> Option<BoidParams> {
+    /// The weights this preset sets, and the mode it implies (only the paper's
+    /// Monte Carlo partition implies one); `None` for Custom.
+    pub fn weights_and_mode(self) -> Option<([f32; 5], Option<ControlMode>)> {
         match self {
-            Self::Individual => Some(BoidParams::individual()),
-            Self::Group => Some(BoidParams::group()),
-            Self::MonteCarloPaper => Some(BoidParams {
-                // The published partition as shares of 100 (0.6/3.2 → 18.75 …), so the
-                // lottery's chances are the paper's and the sliders read as percentages.
-                weights: control_mode::MONTE_CARLO_PAPER_WEIGHTS.map(|w| w * 100.0 / 3.2),
-                mode: ControlMode::MonteCarlo,
-                ..BoidParams::group()
-            }),
+            Self::Individual => Some((control_mode::INDIVIDUAL_WEIGHTS, None)),
+            Self::Group => Some((control_mode::GROUP_WEIGHTS, None)),
+            // The published partition as shares of 100 (0.6/3.2 → 18.75 …), so the
+            // lottery's chances are the paper's and the sliders read as percentages.
+            Self::MonteCarloPaper => Some((
+                control_mode::MONTE_CARLO_PAPER_WEIGHTS.map(|w| w * 100.0 / 3.2),
+                Some(ControlMode::MonteCarlo),
+            )),
             Self::Custom => None,
         }
     }
@@ -138,22 +138,26 @@ pub struct TankSettings {
 }
 
 impl TankSettings {
-    /// A tank with `preset`'s values, 200 fish, no predators.
+    /// A tank with `preset`'s weights, the boid layer's default senses, body and
+    /// wander ([`BoidParams::group`], the same for every preset), 200 fish, no
+    /// predators.
     pub fn with_preset(preset: Preset) -> Self {
+        let defaults = BoidParams::group();
+        let p = defaults.perception;
         let mut tank = Self {
             preset,
-            mode: ControlMode::Blended,
+            mode: defaults.mode,
             containment: 0.0,
             alignment: 0.0,
             cohesion: 0.0,
             separation: 0.0,
             avoidance: 0.0,
-            vision_distance_m: 0.0,
-            vision_angle_deg: 0.0,
-            max_speed_m_per_s: 0.0,
-            max_force_m_per_s2: 0.0,
-            personal_space_m: 0.0,
-            wander: 0.0,
+            vision_distance_m: p.vision_distance_m,
+            vision_angle_deg: p.vision_angle_rad.to_degrees().round(),
+            max_speed_m_per_s: p.max_speed_m_per_s,
+            max_force_m_per_s2: p.max_force_m_per_s2,
+            personal_space_m: p.separation_distance_m,
+            wander: defaults.wander_weight,
             fish_count: 200,
             sharks: 0,
             stingrays: 0,
@@ -205,49 +209,34 @@ impl TankSettings {
         params.perception.max_speed_m_per_s = self.max_speed_m_per_s;
         params.perception.max_force_m_per_s2 = self.max_force_m_per_s2;
         params.perception.separation_distance_m = self.personal_space_m;
-        params.wander_weight = self.wander / 100.0 * WANDER_WEIGHT_AT_100;
+        params.wander_weight = self.wander;
         params
     }
 
-    /// Sets the weights and perception (and, for the paper partition, the mode) of
-    /// `preset`. Custom changes nothing.
+    /// Sets the weights (and, for the paper partition, the mode) of `preset`;
+    /// nothing else. Custom changes nothing.
     pub fn load_preset(&mut self, preset: Preset) {
         self.preset = preset;
-        let Some(params) = preset.params() else {
+        let Some((weights, mode)) = preset.weights_and_mode() else {
             return;
         };
-        self.set_weights(params.weights);
-        if preset == Preset::MonteCarloPaper {
-            self.mode = params.mode;
+        self.set_weights(weights);
+        if let Some(mode) = mode {
+            self.mode = mode;
         }
-        let p = params.perception;
-        self.vision_distance_m = p.vision_distance_m;
-        self.vision_angle_deg = p.vision_angle_rad.to_degrees().round();
-        self.max_speed_m_per_s = p.max_speed_m_per_s;
-        self.max_force_m_per_s2 = p.max_force_m_per_s2;
-        self.personal_space_m = p.separation_distance_m;
-        self.wander = (params.wander_weight / WANDER_WEIGHT_AT_100 * 100.0).round();
     }
 
-    /// The preset whose values these are, or Custom.
+    /// The preset whose weights (and, for the paper partition, mode) these are,
+    /// or Custom.
     pub fn matching_preset(&self) -> Preset {
         Preset::ALL
             .into_iter()
             .find(|&preset| {
-                preset != Preset::Custom && {
-                    let mut probe = self.clone();
-                    probe.load_preset(preset);
+                preset.weights_and_mode().is_some_and(|(weights, mode)| {
                     // Only the paper partition includes a mode; Table 1's presets
                     // work in any mode.
-                    probe.weights() == self.weights()
-                        && probe.mode == self.mode
-                        && probe.vision_distance_m == self.vision_distance_m
-                        && probe.vision_angle_deg == self.vision_angle_deg
-                        && probe.max_speed_m_per_s == self.max_speed_m_per_s
-                        && probe.max_force_m_per_s2 == self.max_force_m_per_s2
-                        && probe.personal_space_m == self.personal_space_m
-                        && probe.wander == self.wander
-                }
+                    weights == self.weights() && mode.is_none_or(|mode| mode == self.mode)
+                })
             })
             .unwrap_or(Preset::Custom)
     }
@@ -398,6 +387,22 @@ mod tests {
         back.cohesion = control_mode::GROUP_WEIGHTS[2];
         back.settle(&after);
         assert_eq!(back.preset, Preset::Group);
+    }
+
+    #[test]
+    fn a_preset_sets_only_the_weights() {
+        let mut tank = TankSettings::with_preset(Preset::Individual);
+        tank.personal_space_m = 1.5;
+        tank.wander = 40.0;
+        tank.vision_distance_m = 3.0;
+        let before = tank.clone();
+        tank.preset = Preset::Group;
+        tank.settle(&before);
+        assert_eq!(tank.weights(), control_mode::GROUP_WEIGHTS);
+        assert_eq!(tank.personal_space_m, 1.5);
+        assert_eq!(tank.wander, 40.0);
+        assert_eq!(tank.vision_distance_m, 3.0);
+        assert_eq!(tank.preset, Preset::Group, "the label names the weights");
     }
 
     #[test]

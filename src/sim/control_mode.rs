@@ -302,7 +302,11 @@ mod tests {
         // The other weights fill the Monte Carlo partition so weights are chances.
         let weights = [0.0, weight, 100.0 - weight, 0.0, 0.0];
         let sum: f32 = (0..DRAWS)
-            .map(|_| combine(mode, &forces, &weights, 10.0, &mut rng).force_m_per_s2.x)
+            .map(|_| {
+                combine(mode, &forces, &weights, 10.0, &mut rng)
+                    .force_m_per_s2
+                    .x
+            })
             .sum();
         sum / DRAWS as f32
     }

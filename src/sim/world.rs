@@ -1897,56 +1897,187 @@ mod tests {
         w
     }
 
-    /// Runs `params` for a minute on `seed` and returns the metrics of the
-    /// last 30 s (sampled every second) and the best polarization/fewest groups.
-    fn run_minute(params: BoidParams, seed: u64) -> Vec<SchoolMetrics> {
-        let mut w = World::new(WorldConfig {
-            seed,
-            fish_count: 200,
-            ..WorldConfig::default()
-        });
-        w.set_boids(Some(params));
-        let mut samples = Vec::new();
-        for step in 1..=3600 {
-            w.step();
-            if step % 60 == 0 {
-                samples.push(w.metrics().school);
+    /// What a class measures of one configuration: the metrics averaged over
+    /// the last 30 s of a minute (four samples a second) and over `seeds`, and
+    /// the share of fish-steps within 0.1 m and within 1 m of the glass, sand
+    /// or surface.
+    #[derive(Debug, Default)]
+    struct Measured {
+        polarization: f32,
+        milling: f32,
+        nnd_body_lengths: f32,
+        groups: f32,
+        speed_m_per_s: f32,
+        at_edge: f32,
+        in_edge_zone: f32,
+        at_rock: f32,
+    }
+
+    fn measure_minute(params: BoidParams, seeds: &[u64]) -> Measured {
+        let mut m = Measured::default();
+        let k = seeds.len() as f32;
+        for &seed in seeds {
+            let mut w = World::new(WorldConfig {
+                seed,
+                fish_count: 200,
+                ..WorldConfig::default()
+            });
+            w.set_boids(Some(params));
+            let (mut samples, mut fish_steps, mut edge, mut zone, mut rock) =
+                (0.0, 0.0, 0.0, 0.0, 0.0);
+            let mut sum = SchoolMetrics::default();
+            for step in 1..=3600 {
+                w.step();
+                if step <= 1800 {
+                    continue;
+                }
+                for f in w.fish() {
+                    let p = f.position_m;
+                    let gap_m = (p - w.tank.min_m).min(w.tank.max_m - p).min_element();
+                    edge += f32::from(gap_m < 0.1);
+                    zone += f32::from(gap_m < 1.0);
+                    rock += f32::from(w.obstacles.iter().any(|o| o.signed_distance_m(p) < 0.1));
+                    fish_steps += 1.0;
+                }
+                if step % 15 == 0 {
+                    let s = w.metrics().school;
+                    sum.polarization += s.polarization;
+                    sum.milling += s.milling;
+                    sum.nnd_body_lengths += s.nnd_body_lengths;
+                    sum.groups += s.groups;
+                    sum.mean_speed_m_per_s += s.mean_speed_m_per_s;
+                    samples += 1.0;
+                }
             }
+            m.polarization += sum.polarization / samples / k;
+            m.milling += sum.milling / samples / k;
+            m.nnd_body_lengths += sum.nnd_body_lengths / samples / k;
+            m.groups += sum.groups as f32 / samples / k;
+            m.speed_m_per_s += sum.mean_speed_m_per_s / samples / k;
+            m.at_edge += edge / fish_steps / k;
+            m.in_edge_zone += zone / fish_steps / k;
+            m.at_rock += rock / fish_steps / k;
         }
-        samples
+        m
+    }
+
+    /// The group preset with weight `force` (in `Force::ALL` order) at `level`.
+    fn group_with(force: usize, level: f32) -> BoidParams {
+        let mut params = BoidParams::group();
+        params.weights[force] = level;
+        params
     }
 
     #[test]
-    fn group_preset_forms_one_or_two_polarised_schools_within_a_minute() {
-        for seed in [1, 2] {
-            let samples = run_minute(BoidParams::group(), seed);
-            let reached = samples
-                .iter()
-                .any(|m| m.polarization > 0.8 && m.groups <= 2);
-            assert!(reached, "seed {seed}: {:?}", samples.last());
-        }
+    fn the_weights_alone_make_a_school_of_the_group_and_loners_of_the_individuals() {
+        let (group, individual) = (BoidParams::group(), BoidParams::individual());
+        assert_eq!(
+            BoidParams {
+                weights: group.weights,
+                ..individual
+            },
+            group,
+            "the presets differ only in their weights"
+        );
+        let seeds = [1, 2, 3];
+        let g = measure_minute(group, &seeds);
+        let i = measure_minute(individual, &seeds);
+        assert!(g.polarization > 0.8, "group {g:?}");
+        assert!(g.groups <= 2.0, "group {g:?}");
+        assert!((0.7..=1.5).contains(&g.nnd_body_lengths), "group {g:?}");
+        assert!(i.polarization < 0.4, "individual {i:?}");
+        assert!(
+            i.nnd_body_lengths >= 1.5 * g.nnd_body_lengths,
+            "individual {i:?} vs group {g:?}"
+        );
+        // Fish stay off the glass, sand and surface by steering, in both presets.
+        assert!(g.at_edge < 0.005 && i.at_edge < 0.005, "{g:?} {i:?}");
     }
 
     #[test]
-    fn individual_preset_stays_unordered_and_spaced_wider_than_the_group() {
-        let mean = |samples: &[SchoolMetrics], f: fn(&SchoolMetrics) -> f32| {
-            let last = &samples[samples.len() / 2..];
-            last.iter().map(f).sum::<f32>() / last.len() as f32
+    fn the_group_weights_school_in_direct_alternate_mode_too() {
+        let m = measure_minute(
+            BoidParams {
+                mode: ControlMode::DirectAlternate,
+                ..BoidParams::group()
+            },
+            &[1, 2],
+        );
+        assert!(m.polarization > 0.7 && m.groups <= 2.0, "{m:?}");
+    }
+
+    #[test]
+    fn the_monte_carlo_paper_preset_forms_a_group_that_keeps_off_the_rocks() {
+        let params = BoidParams {
+            weights: control_mode::MONTE_CARLO_PAPER_WEIGHTS.map(|w| w * 100.0 / 3.2),
+            mode: ControlMode::MonteCarlo,
+            ..BoidParams::group()
         };
-        for seed in [1, 2] {
-            let individual = run_minute(BoidParams::individual(), seed);
-            let group = run_minute(BoidParams::group(), seed);
-            let polarization = mean(&individual, |m| m.polarization);
-            assert!(
-                polarization < 0.4,
-                "seed {seed}: polarization {polarization}"
-            );
-            let (nnd_i, nnd_g) = (
-                mean(&individual, |m| m.nnd_body_lengths),
-                mean(&group, |m| m.nnd_body_lengths),
-            );
-            assert!(nnd_i > nnd_g, "seed {seed}: NND {nnd_i} vs {nnd_g}");
-        }
+        let seeds = [1, 2];
+        let m = measure_minute(params, &seeds);
+        assert!(m.groups <= 2.0 && m.polarization > 0.6, "{m:?}");
+        // Fish-steps within 0.1 m of a rock: a few brushes at most.
+        assert!(m.at_rock < 0.005, "{m:?}");
+    }
+
+    // Each slider's effect has the sign of its name: runs that differ in one
+    // weight only (from the Group preset), seeds 1 and 2.
+
+    #[test]
+    fn more_alignment_gives_higher_polarization() {
+        let (lo, hi) = (
+            measure_minute(group_with(1, 0.0), &[1, 2]),
+            measure_minute(group_with(1, 50.0), &[1, 2]),
+        );
+        assert!(hi.polarization > lo.polarization + 0.3, "{lo:?} {hi:?}");
+    }
+
+    #[test]
+    fn more_cohesion_gives_a_smaller_nearest_neighbour_distance_and_fewer_groups() {
+        let (lo, hi) = (
+            measure_minute(group_with(2, 0.0), &[1, 2]),
+            measure_minute(group_with(2, 60.0), &[1, 2]),
+        );
+        assert!(hi.nnd_body_lengths < lo.nnd_body_lengths, "{lo:?} {hi:?}");
+        assert!(hi.groups < lo.groups, "{lo:?} {hi:?}");
+    }
+
+    #[test]
+    fn more_separation_gives_a_larger_nearest_neighbour_distance() {
+        let (lo, hi) = (
+            measure_minute(group_with(3, 10.0), &[1, 2]),
+            measure_minute(group_with(3, 80.0), &[1, 2]),
+        );
+        assert!(
+            hi.nnd_body_lengths > lo.nnd_body_lengths + 0.1,
+            "{lo:?} {hi:?}"
+        );
+    }
+
+    #[test]
+    fn more_containment_keeps_fish_further_from_the_edges_of_the_pond() {
+        let (lo, hi) = (
+            measure_minute(group_with(0, 0.0), &[1, 2]),
+            measure_minute(group_with(0, 100.0), &[1, 2]),
+        );
+        assert!(hi.in_edge_zone < lo.in_edge_zone, "{lo:?} {hi:?}");
+    }
+
+    #[test]
+    fn more_avoidance_keeps_fish_off_the_rocks_and_the_glass() {
+        let (lo, hi) = (
+            measure_minute(group_with(4, 0.0), &[1, 2]),
+            measure_minute(group_with(4, 98.0), &[1, 2]),
+        );
+        assert!(hi.at_rock < lo.at_rock, "{lo:?} {hi:?}");
+        // Without containment only avoidance keeps them off the glass.
+        let mut bare = group_with(0, 0.0);
+        bare.weights[4] = 0.0;
+        let (lo, hi) = (
+            measure_minute(bare, &[1]),
+            measure_minute(group_with(0, 0.0), &[1]),
+        );
+        assert!(hi.at_edge < lo.at_edge, "{lo:?} {hi:?}");
     }
 
     #[test]

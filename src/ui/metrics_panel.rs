@@ -29,13 +29,18 @@ struct Metric {
 const METRICS: [Metric; 5] = [
     Metric {
         title: "Polarization",
-        help: "1 when every fish swims the same way, near 0 when they point every which way.",
+        help: "How much the fish all swim the same way: the length of the average of their \
+               headings. 1 when every fish swims the same way, near 0 when they point every \
+               which way (or circle).",
         value: |s| f64::from(s.polarization),
         y_range: Some((0.0, 1.0)),
     },
     Metric {
         title: "Milling",
-        help: "1 when the fish swim round and round a centre like a whirlpool.",
+        help: "How much each group swims round and round its own centre like a whirlpool \
+               (measured about the centre of each group, not of the tank, and averaged over \
+               all fish). 1 for perfect whirlpools, near 0 for groups swimming straight or \
+               fish milling about at random.",
         value: |s| f64::from(s.milling),
         y_range: Some((0.0, 1.0)),
     },
@@ -48,7 +53,8 @@ const METRICS: [Metric; 5] = [
     },
     Metric {
         title: "Groups",
-        help: "How many separate groups there are (fish closer than two body lengths belong together).",
+        help: "How many separate groups there are: fish closer than two body lengths belong \
+               together, so a loner is a group of one.",
         value: |s| f64::from(s.groups),
         y_range: None,
     },

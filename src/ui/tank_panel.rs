@@ -41,23 +41,29 @@ fn preset_name(preset: Preset) -> String {
 const FORCE_HELP: [(&str, &str); 5] = [
     (
         "Containment",
-        "How strongly a fish turns away from the glass so it stays in the tank.",
+        "How strongly a fish stays in the pond: it turns back towards open water before its \
+         path comes near the glass, the sand or the surface.",
     ),
     (
         "Alignment",
-        "How much a fish copies the direction its neighbours are swimming.",
+        "How much a fish copies the direction its neighbours are swimming \
+         (close neighbours count more: their heading is easier to see).",
     ),
     (
         "Cohesion",
-        "How much a fish swims towards the middle of the neighbours it can see.",
+        "How much a fish swims towards the middle of the neighbours it can see \
+         (and of the distant school it sees), easing off as it arrives.",
     ),
     (
         "Separation",
-        "How much a fish keeps its own space and moves away from fish that come too close.",
+        "How much a fish keeps its own space: it moves away from fish inside its personal \
+         space, harder the closer they are.",
     ),
     (
         "Avoidance",
-        "How strongly a fish swerves around rocks, pillars and stingrays.",
+        "How strongly a fish swerves around obstacles: the glass, sand and surface, rocks, \
+         pillars, stingrays, and fish coming straight at it (three or more close together \
+         count as one obstacle).",
     ),
 ];
 
@@ -85,6 +91,14 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
         rects.insert(&format!("mode_{}", mode_name(mode)), response.rect);
     }
     ui.label(egui::RichText::new(tank.mode.explanation()).small().weak());
+    ui.label(
+        egui::RichText::new(
+            "Wander and fleeing from sharks are not urges of the mode: \
+             they act on top of it, in every mode.",
+        )
+        .small()
+        .weak(),
+    );
 
     ui.add_space(4.0);
     ui.label(egui::RichText::new("Urges (0–100)").strong())
@@ -104,7 +118,11 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
         });
 
     ui.add_space(4.0);
-    ui.label(egui::RichText::new("Senses and body").strong());
+    ui.label(egui::RichText::new("Senses, body and wander").strong())
+        .on_hover_text(
+            "Not part of the presets: Individual and Group change only the five urges, \
+             so these stay the same when you pick a preset.",
+        );
     egui::Grid::new("perception_sliders")
         .num_columns(2)
         .spacing([8.0, 4.0])
@@ -172,8 +190,8 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
                 &mut tank.personal_space_m,
                 PERSONAL_SPACE_RANGE_M,
                 " m",
-                "How close another fish may come before this one moves away. \
-                 Schooling fish keep about one body length (0.4 m here).",
+                "How close another fish may come before separation pushes this one away. \
+                 A school settles at about one body length (0.3–0.5 m here).",
             );
             slider(
                 ui,
@@ -182,8 +200,9 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
                 &mut tank.wander,
                 (0.0, WEIGHT_MAX),
                 "",
-                "How much a fish roams about on its own, 0 to 100. \
-                 Loners explore; fish in a school mostly follow the others.",
+                "How much a fish roams about on its own, 0 to 100 (on the urges' scale). \
+                 The same for loners and schools: a school's alignment and cohesion \
+                 overcome it, loners' do not.",
             );
         });
 
