@@ -172,6 +172,17 @@ fn main() {
         println!();
         curves.push(curve);
     }
+    println!("#### containment, with the Individual weights\n\n{HEADER}");
+    for level in [0.0, 18.0, 50.0, 100.0] {
+        let mut weights = INDIVIDUAL_WEIGHTS;
+        weights[0] = level;
+        let o = run(BoidParams {
+            weights,
+            ..individual
+        });
+        println!("{}", row(&format!("containment {level}"), &o));
+    }
+    println!();
     if let Some(path) = svg_path {
         match std::fs::write(&path, svg(&curves)) {
             Ok(()) => println!("wrote {path}"),
@@ -180,7 +191,8 @@ fn main() {
     }
 }
 
-/// A small multiple: one panel per metric (polarization, NND, groups, milling),
+/// A small multiple: one panel per metric (polarization, NND, groups, milling,
+/// time near the pond's edges, speed),
 /// one line per urge, weight on the x axis.
 fn svg(curves: &[Vec<Outcome>]) -> String {
     const COLOURS: [&str; 5] = ["#7f7f7f", "#1f77b4", "#2ca02c", "#d62728", "#9467bd"];
@@ -198,11 +210,11 @@ fn svg(curves: &[Vec<Outcome>]) -> String {
     let (w, h, pad) = (300.0, 210.0, 40.0);
     let mut out = format!(
         "<svg xmlns='http://www.w3.org/2000/svg' width='{}' height='{}' font-family='sans-serif' font-size='11'>\n<rect width='100%' height='100%' fill='white'/>\n",
-        w * 2.0 + 20.0,
+        w * 3.0 + 40.0,
         h * 2.0 + 50.0
     );
     for (p, (title, get, max)) in panels.iter().enumerate() {
-        let (ox, oy) = ((p % 2) as f64 * (w + 20.0), (p / 2) as f64 * h + 10.0);
+        let (ox, oy) = ((p % 3) as f64 * (w + 20.0), (p / 3) as f64 * h + 10.0);
         let (x0, y0, x1, y1) = (ox + pad, oy + 20.0, ox + w - 10.0, oy + h - 30.0);
         out += &format!(
             "<text x='{}' y='{}' font-weight='bold'>{title}</text>\n",
@@ -258,7 +270,7 @@ fn svg(curves: &[Vec<Outcome>]) -> String {
         }
     }
     for (f, name) in NAMES.iter().enumerate() {
-        let x = 20.0 + f as f64 * 120.0;
+        let x = 40.0 + f as f64 * 160.0;
         let y = h * 2.0 + 35.0;
         out += &format!(
             "<line x1='{x}' x2='{}' y1='{y}' y2='{y}' stroke='{}' stroke-width='3'/><text x='{}' y='{}'>{name}</text>\n",

@@ -1,6 +1,6 @@
 //! What a teacher sets for one tank of the boid scene: the five SIMBA force weights on
 //! the papers' 0–100 scale, the control mode, what the fish perceive, and how many
-//! animals of each species swim in it (Lim & Tan; NOTES.md "SIMBA steering").
+//! animals of each species swim in it (Lim & Tan; docs/boids.md).
 //!
 //! A preset ("Individual", "Group", the Monte Carlo paper partition) sets the five
 //! weights (the paper partition also the Monte Carlo mode) and nothing else: senses,

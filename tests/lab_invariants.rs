@@ -124,7 +124,8 @@ fn compare_mode_starts_both_tanks_from_the_same_fish_and_they_part_ways() {
         right.world().fish(),
         "same seed, same starting positions"
     );
-    Command::Step(1200).execute(&mut lab).unwrap();
+    // A minute: the group school forms within it (docs/boids.md).
+    Command::Step(3600).execute(&mut lab).unwrap();
     let left = lab.runs()[0].metrics();
     let right = lab.runs()[1].metrics();
     assert_eq!(left.time_secs, right.time_secs, "one clock for both tanks");

@@ -6,7 +6,7 @@
 //! the heading, leaving a blind cone behind (a vision angle of 300° leaves a 60°
 //! blind cone, as in Tu & Terzopoulos §5). Each force is a steering force in the
 //! papers' form, desired velocity − current velocity, reached within the
-//! response time and limited to the maximum force (NOTES.md, "SIMBA steering").
+//! response time and limited to the maximum force (docs/boids.md).
 //!
 //! **Topological interaction.** A fish heeds only the `max_neighbours` nearest
 //! fish it sees, not every fish within the vision distance. Ballerini et al. 2008
@@ -818,5 +818,75 @@ mod tests {
         assert_eq!(kept.len(), 1);
         assert_eq!(kept[0].0, 1);
         assert!((kept[0].1 - 1.44).abs() < 1e-4, "its distance now");
+    }
+
+    /// The heeded neighbours of fish 0: every other fish, nearest first.
+    fn all_heeded(positions_m: &[Vec3]) -> Nearest {
+        let mut nearest = Nearest::new(7);
+        for (j, p) in positions_m.iter().enumerate().skip(1) {
+            nearest.offer(j, p.distance_squared(positions_m[0]));
+        }
+        nearest
+    }
+
+    #[test]
+    fn a_fish_sways_sideways_round_a_fish_coming_straight_at_it_but_not_round_a_schoolmate() {
+        let me = Vec3::new(0.0, 2.0, 0.0);
+        // Head-on, 0.6 m ahead and slightly to the left (−z is left of +x).
+        let positions = [me, me + Vec3::new(0.6, 0.0, -0.05)];
+        let velocities = [Vec3::X * 0.5, -Vec3::X * 0.5];
+        let sway = avoid_neighbours(&positions, &velocities, 0, &all_heeded(&positions), 0.8);
+        assert!(sway.z > 0.0, "away from the oncoming fish's side: {sway}");
+        assert!(sway.x.abs() < 1e-4, "sideways, not braking: {sway}");
+        // The same fish swimming alongside at the same velocity: nothing to avoid.
+        let alongside = [Vec3::X * 0.5, Vec3::X * 0.5];
+        let calm = avoid_neighbours(&positions, &alongside, 0, &all_heeded(&positions), 0.8);
+        assert_eq!(calm, Vec3::ZERO);
+        // Farther off (contact in more than the look-ahead), nothing yet.
+        let far = [me, me + Vec3::new(1.5, 0.0, -0.05)];
+        assert_eq!(
+            avoid_neighbours(&far, &velocities, 0, &all_heeded(&far), 0.8),
+            Vec3::ZERO
+        );
+        // The sooner the contact, the harder the sway.
+        let near = [me, me + Vec3::new(0.3, 0.0, -0.05)];
+        let hard = avoid_neighbours(&near, &velocities, 0, &all_heeded(&near), 0.8);
+        assert!(hard.length() > sway.length());
+    }
+
+    #[test]
+    fn three_close_fish_in_the_way_are_avoided_as_one_obstacle() {
+        let me = Vec3::new(0.0, 2.0, 0.0);
+        // A still fish just right of the path (+z), with two companions further
+        // right: the cluster's centre is right of the path, so the sway is left.
+        let ahead = me + Vec3::new(0.5, 0.0, 0.1);
+        let positions = [
+            me,
+            ahead,
+            ahead + Vec3::new(0.0, 0.0, 0.4),
+            ahead + Vec3::new(0.1, 0.0, 0.5),
+        ];
+        let velocities = [Vec3::X * 0.5, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO];
+        let sway = avoid_neighbours(&positions, &velocities, 0, &all_heeded(&positions), 0.8);
+        assert!(sway.z < 0.0, "away from the cluster: {sway}");
+        // One of the cluster on the other side of the path: the obstacle is the
+        // cluster's centre (right of the path), not that fish (left of it).
+        let mixed = [
+            me,
+            me + Vec3::new(0.5, 0.0, -0.05),
+            me + Vec3::new(0.5, 0.0, 0.45),
+            me + Vec3::new(0.6, 0.0, 0.5),
+        ];
+        let sway = avoid_neighbours(&mixed, &velocities, 0, &all_heeded(&mixed), 0.8);
+        assert!(
+            sway.z < 0.0,
+            "round the cluster, not the nearest fish: {sway}"
+        );
+        let alone = [me, me + Vec3::new(0.5, 0.0, -0.05)];
+        let sway = avoid_neighbours(&alone, &velocities[..2], 0, &all_heeded(&alone), 0.8);
+        assert!(
+            sway.z > 0.0,
+            "a lone fish on the left is passed on the right: {sway}"
+        );
     }
 }

@@ -1,6 +1,6 @@
-//! How a fish combines its five SIMBA steering forces into one (Lim & Tan; NOTES.md
-//! "SIMBA steering", control modes). The two papers name the modes differently; all
-//! four are here:
+//! How a fish combines its five SIMBA steering forces into one (Lim & Tan; see
+//! `docs/boids.md`, "The control modes"). The two papers name the modes
+//! differently; all four are here:
 //!
 //! - **Blended** (the steering paper's "direct"): every force, every step, as a
 //!   weighted sum.

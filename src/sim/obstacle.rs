@@ -1,6 +1,6 @@
 //! Solid things in the tank that fish must swim around: rocks, pillars and
 //! polygonal prisms (Lim & Tan's SIMBA paper implements "polygon, wall and rock"
-//! obstacles; NOTES.md "SIMBA steering").
+//! obstacles; docs/boids.md).
 //!
 //! Each obstacle is described by a signed distance function (SDF): the
 //! distance from a point to the obstacle's surface, negative inside. Steering

@@ -1,7 +1,6 @@
 //! Numbers that tell a school from a crowd of loners, computed from the fish's
 //! positions and velocities (Couzin et al. 2002's order parameters, and the
-//! nearest-neighbour distance of Pitcher & Partridge 1979; see NOTES.md,
-//! "Reference results from the literature").
+//! nearest-neighbour distance of Pitcher & Partridge 1979; see `docs/boids.md`).
 //!
 //! - polarization p = ‖Σ v̂ᵢ‖ / N: 1 when all swim the same way, near 0 when
 //!   headings are random or the group mills.

@@ -139,7 +139,7 @@ pub fn seek(pos_m: Vec3, vel_m_per_s: Vec3, target_m: Vec3, max_speed_m_per_s: f
 pub const MAX_PREDICTION_S: f32 = 2.0;
 
 /// Flee: steer straight away from `threat_m` at `max_speed_m_per_s`
-/// (Lim & Tan's eq. 1 with the flee sign; NOTES.md "SIMBA steering").
+/// (Lim & Tan's eq. 1 with the flee sign; docs/boids.md).
 ///
 /// `desired = normalize(pos − threat) · max_speed`,
 /// `steering = limit(desired − vel, max_force)`. A fish exactly at the threat
@@ -255,8 +255,8 @@ pub const WALL_AWAY_GAIN: f32 = 0.3;
 /// along the wall at its speed.
 pub const WALL_ALONG_GAIN: f32 = 1.0;
 
-/// Wall following, Lim & Tan's wall algorithm (SIMBA paper Figs 3–5; NOTES.md
-/// "SIMBA steering"): steer along the wall instead of reversing.
+/// Wall following, Lim & Tan's wall algorithm (SIMBA paper Figs 3–5;
+/// `docs/boids.md`): steer along the wall instead of reversing.
 ///
 /// The paper works in 2-D with a wall from A to B: `norm = normalise(A − B)`,
 /// `dir = (norm.y, −norm.x)`, `a1 = forward·dir`, `a2 = forward·norm`,
@@ -534,7 +534,7 @@ fn turn_towards(goal: Vec3, heading: Vec3, tie_break: Vec3) -> Vec3 {
 }
 
 /// Obstacle avoidance: sway around the nearest obstacle in the path, Lim &
-/// Tan's rock algorithm (SIMBA paper Figs 6–7; NOTES.md "SIMBA steering"):
+/// Tan's rock algorithm (SIMBA paper Figs 6–7; docs/boids.md):
 /// "steer along the agent's right (or left) vector with a force inversely
 /// proportional to the remaining range", so the fish sways instead of
 /// reversing.

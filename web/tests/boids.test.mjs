@@ -107,13 +107,34 @@ describe("schooling lab", () => {
     assert.equal((await settings(page)).left.preset, "custom");
   });
 
-  test("compare mode shows two tanks, each with its own metrics", async () => {
-    await page.evaluate(() => window.shoal.set({ left: { preset: "individual", mode: "blended" } }));
+  test("compare mode: a teacher picks Individual and Group, and only the weights differ", async () => {
+    // A teacher's fresh page: the earlier tests' slider drags are gone.
+    await page.reload();
+    await page.waitForFunction(() => window.shoal && window.shoal.state().tier, null, { timeout: 90_000 });
+    await clickUntil(page, "scene_boids", () => window.shoal.state().scene === "boids");
     await clickWidget(page, "compare");
+    await page.waitForFunction(() => window.shoal.state().compare && window.shoal.widgets().edit_left, null, {
+      timeout: 30_000,
+    });
+    await clickUntil(page, "edit_left", () => window.shoal.widgets().preset_individual);
+    await clickUntil(page, "preset_individual", () => window.shoal.settings().left.preset === "individual");
+    await clickUntil(page, "edit_right", () => window.shoal.widgets().preset_group);
+    await clickUntil(page, "preset_group", () => window.shoal.settings().right.preset === "group");
+    const chosen = await settings(page);
+    const withoutWeights = (tank) => {
+      const rest = { ...tank };
+      for (const key of ["preset", "containment", "alignment", "cohesion", "separation", "avoidance"]) delete rest[key];
+      return rest;
+    };
+    assert.deepEqual(withoutWeights(chosen.left), withoutWeights(chosen.right), "the two tanks differ only in the five weights");
+    assert.notDeepEqual(chosen.left.cohesion, chosen.right.cohesion);
     await page.waitForFunction(() => window.shoal.state().compare && window.shoal.widgets().view_right, null, {
       timeout: 30_000,
     });
-    await page.evaluate(() => window.shoal.step(3600));
+    await page.evaluate(() => {
+      window.shoal.pause();
+      window.shoal.step(3600);
+    });
     const s = await state(page);
     assert.ok(s.metrics_right, "the right tank has metrics");
     assert.ok(
