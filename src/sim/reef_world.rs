@@ -476,7 +476,8 @@ pub struct ReefCounts {
     pub missed_strikes: u32,
     /// Pairs that completed the courtship sequence.
     pub spawnings: u32,
-    /// Of those, prey that was schooling when caught.
+    /// Of those, prey whose intention was to school when caught (not the
+    /// predator's S_k, which asks whether schoolmates were around it).
     pub schooling_prey_eaten: u32,
     pub food_eaten: u32,
     /// Starts of body overlaps between two fish.
@@ -1328,9 +1329,9 @@ impl ReefWorld {
                 }
             }
         }
-        // Other fish, except the prey a predator is about to swallow.
-        // and a courting partner (the pair's sensitivity regions are set
-        // tightly to their bodies, §7.3).
+        // Other fish, except the prey a predator is about to swallow and a
+        // courting partner (the pair's sensitivity regions are set tightly to
+        // their bodies, §7.3).
         let exempt = match a.focus.target {
             Some(Target::Animal(j)) if a.focus.intention == Intention::Eat => Some(j as usize),
             _ => self.pair_of(i).map(|p| {
