@@ -703,9 +703,13 @@ impl Lab {
         self.runs[0].learning.as_mut()
     }
 
-    /// Trains for a share of the frame budget while `learning.training` is on.
+    /// Trains for a share of the frame budget while `learning.training` is on,
+    /// whether or not the simulation is paused: training has its own Start and
+    /// Pause button, and pausing the swimmer must not stop it silently (it did:
+    /// the button said "Pause training" and `state().learning.evaluations`
+    /// stayed 0 in a paused page).
     fn train_for_frame(&mut self) {
-        if !self.settings.learning.training || self.settings.paused {
+        if !self.settings.learning.training {
             return;
         }
         let budget = self.frame_budget_secs.unwrap_or(0.02) * TRAINING_SHARE_OF_BUDGET;
@@ -1158,6 +1162,46 @@ mod tests {
         lab.apply_settings(s);
         assert_eq!(lab.runs()[0].learning().unwrap().annealing_steps(), 120);
         assert_eq!(lab.runs()[0].learning().unwrap().trainer().evaluations(), 0);
+    }
+
+    #[test]
+    fn training_counts_its_evaluations_in_the_state_while_the_swimmer_is_paused() {
+        // As the page does it: an interactive frame budget, the learning lab,
+        // the simulation paused, then Start training.
+        let mut lab = Lab::new(Settings::default());
+        lab.set_frame_budget(Some(INTERACTIVE_FRAME_BUDGET_SECS));
+        let mut s = lab.settings().clone();
+        s.scene = Scene::Learning;
+        s.learning.annealing_steps = 200;
+        s.paused = true;
+        lab.apply_settings(s);
+        let evaluations = |lab: &Lab| {
+            crate::automation::StateReport::new(lab, "test", 60.0)
+                .learning
+                .expect("the learning lab reports")
+                .evaluations
+        };
+        assert_eq!(evaluations(&lab), 0);
+        let mut s = lab.settings().clone();
+        s.learning.training = true;
+        lab.apply_settings(s);
+        let mut counts = Vec::new();
+        for frame in 1..=4 {
+            lab.advance_frame(1.0 / 60.0, f64::from(frame) / 60.0);
+            counts.push(evaluations(&lab));
+        }
+        assert!(
+            counts.windows(2).all(|w| w[1] > w[0]) && counts[0] > 0,
+            "evaluations after each frame: {counts:?}"
+        );
+        assert_eq!(lab.runs()[0].steps(), 0, "the swimmer stays paused");
+        // Pause training: the count stays put.
+        let mut s = lab.settings().clone();
+        s.learning.training = false;
+        lab.apply_settings(s);
+        let before = evaluations(&lab);
+        lab.advance_frame(1.0 / 60.0, 1.0);
+        assert_eq!(evaluations(&lab), before);
     }
 
     #[test]

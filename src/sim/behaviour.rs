@@ -13,8 +13,9 @@
 //! - *leaving*: swim up the gradient of the light or temperature the fish likes;
 //! - *wandering*: the wander steering of the boid layer;
 //! - *escaping*: swim away from the predator, sideways if it is ahead;
-//! - *schooling* (Fig. 16): match the neighbours' heading, keep about one body
-//!   length from the nearest, close up on the group if it drifts away.
+//! - *schooling* (Fig. 16): match the neighbours' heading and mean speed, keep
+//!   about one body length from the nearest, close up on the group if it drifts
+//!   away.
 //!
 //! *chasing-target* underlies eating, mating and (for predators) hunting.
 
@@ -28,6 +29,10 @@ pub const AVOID_FRACTION: f32 = 0.5;
 /// Distance kept between schooling neighbours, body lengths ("roughly one body
 /// length", §7.2).
 pub const SCHOOL_SPACING_BODY_LENGTHS: f32 = 1.0;
+/// Slowest a schooling fish swims to match slow neighbours, fraction of its top
+/// speed (0.2: the point-mass body's minimum speed in the reef; a muscle body
+/// slower than that barely turns).
+pub const SCHOOL_MIN_SPEED_FRACTION: f32 = 0.2;
 
 /// The fish whose behaviour is computed.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -170,13 +175,16 @@ pub const ESCAPE_SHARE_IN_SCHOOL: f32 = 0.6;
 pub struct Neighbour {
     pub position_m: Vec3,
     pub heading: Vec3,
+    pub velocity_m_per_s: Vec3,
 }
 
-/// schooling (Fig. 16): too close to the nearest → veer away; too far from the
-/// group → swim to it faster; otherwise match the neighbours' heading and
-/// speed. `urgency` in [0, 1] (fear) makes the school swim faster and tighter,
-/// and away from `threat_m` (the predator the fish fears, if any): a
-/// frightened school moves off together instead of scattering.
+/// schooling (Fig. 16, §7.2): too close to the nearest → veer away; too far
+/// from the group → swim to it faster; otherwise match the neighbours' heading
+/// and their mean speed (kept between [`SCHOOL_MIN_SPEED_FRACTION`] and the top
+/// speed of this fish's body). `urgency` in [0, 1] (fear) makes the school swim
+/// faster (up to 0.3 of the top speed more) and tighter, and away from
+/// `threat_m` (the predator the fish fears, if any): a frightened school moves
+/// off together instead of scattering.
 pub fn school(me: &Me, neighbours: &[Neighbour], urgency: f32, threat_m: Option<Vec3>) -> Vec3 {
     if neighbours.is_empty() {
         return match threat_m {
@@ -215,7 +223,14 @@ pub fn school(me: &Me, neighbours: &[Neighbour], urgency: f32, threat_m: Option<
     });
     let direction = (heading + 1.5 * separation + cohesion + away).normalize_or(me.heading);
     let catch_up = if gap > 3.0 * spacing { 0.2 } else { 0.0 };
-    let speed = (CRUISE_FRACTION + 0.3 * urgency.clamp(0.0, 1.0) + catch_up).min(1.0);
+    let top = me.top_speed_m_per_s.max(1e-6);
+    let neighbours_speed = neighbours
+        .iter()
+        .map(|o| o.velocity_m_per_s.length())
+        .sum::<f32>()
+        / n;
+    let matched = (neighbours_speed / top).clamp(SCHOOL_MIN_SPEED_FRACTION, 1.0);
+    let speed = (matched + 0.3 * urgency.clamp(0.0, 1.0) + catch_up).min(1.0);
     direction * speed * me.top_speed_m_per_s
 }
 
@@ -290,11 +305,13 @@ mod tests {
         let close = [Neighbour {
             position_m: Vec3::new(0.0, 0.0, 0.2),
             heading: Vec3::X,
+            velocity_m_per_s: Vec3::X * 0.21,
         }];
         assert!(school(&me(), &close, 0.0, None).z < 0.0);
         let aligned = [Neighbour {
             position_m: Vec3::new(0.0, 0.0, 0.5),
             heading: Vec3::Z,
+            velocity_m_per_s: Vec3::Z * 0.21,
         }];
         assert!(
             school(&me(), &aligned, 0.0, None)
@@ -305,8 +322,46 @@ mod tests {
         let far = [Neighbour {
             position_m: Vec3::new(0.0, 0.0, -3.0),
             heading: Vec3::X,
+            velocity_m_per_s: Vec3::X * 0.21,
         }];
         let v = school(&me(), &far, 0.0, None);
         assert!(v.z < 0.0 && v.length() > CRUISE_FRACTION * 0.3);
+    }
+
+    #[test]
+    fn schooling_matches_the_neighbours_mean_speed_within_the_body_limits() {
+        // Two schoolmates one body length to either side, swimming the same
+        // way: no spacing or cohesion pull, only the match. me() swims at
+        // 0.2 m/s, its top speed is 0.3 m/s.
+        let pair = |a: f32, b: f32| {
+            [
+                Neighbour {
+                    position_m: Vec3::new(0.0, 0.0, 0.5),
+                    heading: Vec3::X,
+                    velocity_m_per_s: Vec3::X * a,
+                },
+                Neighbour {
+                    position_m: Vec3::new(0.0, 0.0, -0.5),
+                    heading: Vec3::X,
+                    velocity_m_per_s: Vec3::X * b,
+                },
+            ]
+        };
+        let v = school(&me(), &pair(0.08, 0.16), 0.0, None);
+        assert!(
+            (v.length() - 0.12).abs() < 1e-5,
+            "mean of 0.08 and 0.16: {v}"
+        );
+        assert!(v.normalize_or_zero().dot(Vec3::X) > 0.99);
+        let v = school(&me(), &pair(0.25, 0.27), 0.0, None);
+        assert!((v.length() - 0.26).abs() < 1e-5, "{v}");
+        // Not faster than the body's top speed, nor slower than its minimum.
+        let v = school(&me(), &pair(0.5, 0.6), 0.0, None);
+        assert!((v.length() - 0.3).abs() < 1e-5, "{v}");
+        let v = school(&me(), &pair(0.0, 0.01), 0.0, None);
+        assert!(
+            (v.length() - SCHOOL_MIN_SPEED_FRACTION * 0.3).abs() < 1e-5,
+            "{v}"
+        );
     }
 }

@@ -6,9 +6,9 @@
 //!
 //! Occlusion is tested with rays from the eye to the object's centre and to four
 //! points on its silhouette (its bounding sphere seen from the eye): the object
-//! is seen if any ray is clear. Fish bodies block rays as spheres of half a body
-//! length; rocks, pillars and ledges by their exact shapes (sphere tracing of
-//! `Obstacle::signed_distance_m`).
+//! is seen if any ray is clear. Fish bodies block rays as spheres of
+//! [`OCCLUDER_RADIUS_BODY_LENGTHS`] body lengths; rocks, pillars and ledges by
+//! their exact shapes (sphere tracing of `Obstacle::signed_distance_m`).
 //!
 //! [`Retina`] renders the fish-eye "retinal image" of Fig. 11 by casting one ray
 //! per pixel (equidistant fisheye over the 300° field): fish, rocks, food, sand,
@@ -24,6 +24,22 @@ use super::obstacle::Obstacle;
 
 /// The paper's field of view, radians (300°).
 pub const FIELD_OF_VIEW_RAD: f32 = 300.0 * std::f32::consts::PI / 180.0;
+
+/// Radius of the sphere by which a fish's body hides what lies behind it, body
+/// lengths (0.3, chosen). The body is drawn, and rendered in the retina, as an
+/// ellipsoid 1 body length long and 0.3 across; seen from the side it covers
+/// π · 0.5 · 0.15 ≈ 0.24 square body lengths, as much as a disc of radius 0.27.
+/// 0.3 rounds that up a little for the fins.
+pub const OCCLUDER_RADIUS_BODY_LENGTHS: f32 = 0.3;
+
+/// The sphere by which a fish of `body_length_m` centred at `center_m` hides
+/// what lies behind it.
+pub fn fish_occluder(center_m: Vec3, body_length_m: f32) -> Sphere {
+    Sphere {
+        center_m,
+        radius_m: OCCLUDER_RADIUS_BODY_LENGTHS * body_length_m,
+    }
+}
 
 /// A sphere that may be seen or may hide things.
 #[derive(Clone, Copy, Debug, PartialEq)]
