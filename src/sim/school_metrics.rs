@@ -8,7 +8,9 @@
 //!   unit vector from the centre of fish i's own group to fish i: 1 when every
 //!   group is a perfect torus (fish circling their group's centre), near 0
 //!   otherwise. Measured about each group's centre, not the tank's, so loners
-//!   that happen to circle along the glass do not read as a mill.
+//!   that happen to circle along the glass do not read as a mill; groups of
+//!   fewer than [`MIN_MILLING_GROUP`] fish count 0 (two loners passing each
+//!   other would read as a perfect mill).
 //! - mean nearest-neighbour distance, in each fish's own body lengths (schooling
 //!   fish keep about one body length).
 //! - groups: clusters of fish linked by gaps of at most two body lengths.
@@ -33,6 +35,12 @@ pub struct SchoolMetrics {
 /// (the larger of the two). Default 2: the definition; a schooling fish
 /// keeps about one body length from its neighbours.
 pub const GROUP_LINK_BODY_LENGTHS: f32 = 2.0;
+
+/// Smallest group whose swimming round its centre counts as milling (fish).
+/// Default 5 (chosen): two loners passing each other head-on (or three)
+/// have r̂ × v̂ pointing the same way and would read as a perfect mill; a mill
+/// is a group of several fish going round together. Smaller groups count 0.
+pub const MIN_MILLING_GROUP: usize = 5;
 
 /// Computes the metrics once. A convenience for one-off measurements;
 /// [`SchoolMeter`] keeps its buffers between calls.
@@ -164,7 +172,10 @@ impl SchoolMeter {
             let r = root(&mut self.parent, slot);
             let f = &fish[self.grid.slots()[slot] as usize];
             let (sum, count) = self.group_sums[r];
-            let centre = sum / count.max(1) as f32;
+            if (count as usize) < MIN_MILLING_GROUP {
+                continue;
+            }
+            let centre = sum / count as f32;
             self.group_turn[r] += (f.position_m - centre)
                 .normalize_or_zero()
                 .cross(f.velocity_m_per_s.normalize_or_zero());
@@ -614,6 +625,35 @@ mod tests {
         let m = metrics(&mill);
         assert!(m.milling > 0.99, "{}", m.milling);
         assert!(m.polarization < 0.05, "{}", m.polarization);
+    }
+
+    #[test]
+    fn milling_is_measured_about_each_group_and_loners_passing_do_not_mill() {
+        // Two mills of 12 fish, far apart and turning opposite ways: about the
+        // tank's centre their turns cancel; about their own centres both mill.
+        let ring = |centre: Vec3, sense: f32| -> Vec<Fish> {
+            (0..12)
+                .map(|i| {
+                    let a = i as f32 / 12.0 * std::f32::consts::TAU;
+                    let radial = Vec3::new(a.cos(), 0.0, a.sin());
+                    fish_at(centre + radial * 0.5, Vec3::Y.cross(radial) * 0.5 * sense)
+                })
+                .collect()
+        };
+        let mut two_mills = ring(Vec3::new(-3.0, 2.0, 0.0), 1.0);
+        two_mills.extend(ring(Vec3::new(3.0, 2.0, 0.0), -1.0));
+        assert!(
+            metrics(&two_mills).milling > 0.95,
+            "{:?}",
+            metrics(&two_mills)
+        );
+        assert!(order_parameters(&two_mills).milling < 0.5);
+        // Two fish passing each other head-on, side by side.
+        let passing = [
+            fish_at(Vec3::new(0.0, 2.0, 0.2), Vec3::X * 0.5),
+            fish_at(Vec3::new(0.0, 2.0, -0.2), -Vec3::X * 0.5),
+        ];
+        assert_eq!(metrics(&passing).milling, 0.0);
     }
 
     #[test]

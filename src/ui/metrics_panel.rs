@@ -39,8 +39,8 @@ const METRICS: [Metric; 5] = [
         title: "Milling",
         help: "How much each group swims round and round its own centre like a whirlpool \
                (measured about the centre of each group, not of the tank, and averaged over \
-               all fish). 1 for perfect whirlpools, near 0 for groups swimming straight or \
-               fish milling about at random.",
+               all fish; groups of fewer than 5 count 0). 1 for perfect whirlpools, near 0 \
+               for groups swimming straight or fish milling about at random.",
         value: |s| f64::from(s.milling),
         y_range: Some((0.0, 1.0)),
     },
