@@ -305,6 +305,47 @@ pub fn follow_wall(
     limit(desired_m_per_s - vel_m_per_s, max_force_m_per_s2)
 }
 
+/// The six faces of the water around `pos_m`: each face's outward normal (out
+/// of the water, into the glass, sand or surface) and its distance from
+/// `pos_m`, in the order −x, +x, −y, +y, −z, +z.
+fn water_faces(pos_m: Vec3, tank: &Tank) -> [(Vec3, f32); 6] {
+    [
+        (Vec3::NEG_X, pos_m.x - tank.min_m.x),
+        (Vec3::X, tank.max_m.x - pos_m.x),
+        (Vec3::NEG_Y, pos_m.y - tank.min_m.y),
+        (Vec3::Y, tank.max_m.y - pos_m.y),
+        (Vec3::NEG_Z, pos_m.z - tank.min_m.z),
+        (Vec3::Z, tank.max_m.z - pos_m.z),
+    ]
+}
+
+/// [`follow_wall`] summed over `faces` (normal, distance), each turn limited to
+/// `max_force_per_face_m_per_s2` and multiplied by `strength(distance)`.
+fn follow_faces(
+    vel_m_per_s: Vec3,
+    faces: impl IntoIterator<Item = (Vec3, f32)>,
+    range_m: f32,
+    tie_break: Vec3,
+    max_force_per_face_m_per_s2: f32,
+    strength: impl Fn(f32) -> f32,
+) -> Vec3 {
+    faces
+        .into_iter()
+        .map(|(normal, distance_m)| {
+            follow_wall(
+                vel_m_per_s,
+                normal,
+                distance_m,
+                range_m,
+                tie_break,
+                WALL_AWAY_GAIN,
+                WALL_ALONG_GAIN,
+                max_force_per_face_m_per_s2,
+            ) * strength(distance_m)
+        })
+        .fold(Vec3::ZERO, |sum, turn| sum + turn)
+}
+
 /// The four vertical glass walls by [`follow_wall`]: for each wall within
 /// `range_m` that the animal heads into, a turn along it (two at a corner,
 /// summed), at most `max_force_m_per_s2`. The tie-break for an animal aimed
@@ -318,25 +359,17 @@ pub fn glass_walls(
     max_force_m_per_s2: f32,
 ) -> Vec3 {
     let to_middle = (tank.center_m() - pos_m) * Vec3::new(1.0, 0.0, 1.0);
-    let walls = [
-        (Vec3::NEG_X, pos_m.x - tank.min_m.x),
-        (Vec3::X, tank.max_m.x - pos_m.x),
-        (Vec3::NEG_Z, pos_m.z - tank.min_m.z),
-        (Vec3::Z, tank.max_m.z - pos_m.z),
-    ];
-    let mut steering = Vec3::ZERO;
-    for (normal, distance_m) in walls {
-        steering += follow_wall(
-            vel_m_per_s,
-            normal,
-            distance_m,
-            range_m,
-            to_middle,
-            WALL_AWAY_GAIN,
-            WALL_ALONG_GAIN,
-            max_force_m_per_s2,
-        );
-    }
+    let glass = water_faces(pos_m, tank)
+        .into_iter()
+        .filter(|(normal, _)| normal.y == 0.0);
+    let steering = follow_faces(
+        vel_m_per_s,
+        glass,
+        range_m,
+        to_middle,
+        max_force_m_per_s2,
+        |_| 1.0,
+    );
     limit(steering, max_force_m_per_s2)
 }
 
@@ -353,29 +386,14 @@ pub const MIN_WALL_GAP_M: f32 = 0.1;
 /// direction along it towards the middle of the tank. Returns a velocity change
 /// (m/s), unlimited: the caller turns it into a force and limits it.
 pub fn avoid_walls(pos_m: Vec3, vel_m_per_s: Vec3, tank: &Tank, range_m: f32) -> Vec3 {
-    let to_middle = tank.center_m() - pos_m;
-    let faces = [
-        (Vec3::NEG_X, pos_m.x - tank.min_m.x),
-        (Vec3::X, tank.max_m.x - pos_m.x),
-        (Vec3::NEG_Y, pos_m.y - tank.min_m.y),
-        (Vec3::Y, tank.max_m.y - pos_m.y),
-        (Vec3::NEG_Z, pos_m.z - tank.min_m.z),
-        (Vec3::Z, tank.max_m.z - pos_m.z),
-    ];
-    let mut steering = Vec3::ZERO;
-    for (normal, distance_m) in faces {
-        let turn = follow_wall(
-            vel_m_per_s,
-            normal,
-            distance_m,
-            range_m,
-            to_middle,
-            WALL_AWAY_GAIN,
-            WALL_ALONG_GAIN,
-            f32::INFINITY,
-        );
-        steering += turn * (range_m / distance_m.max(MIN_WALL_GAP_M));
-    }
+    let steering = follow_faces(
+        vel_m_per_s,
+        water_faces(pos_m, tank),
+        range_m,
+        tank.center_m() - pos_m,
+        f32::INFINITY,
+        |distance_m| range_m / distance_m.max(MIN_WALL_GAP_M),
+    );
     if steering.is_finite() {
         steering
     } else {
