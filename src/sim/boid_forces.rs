@@ -230,6 +230,21 @@ pub struct NeighbourForces {
     pub separation_m_per_s2: Vec3,
     pub alignment_m_per_s2: Vec3,
     pub cohesion_m_per_s2: Vec3,
+    /// How much the fish needs to separate now, 0–1: the mean intrusion of its
+    /// heeded neighbours into its personal space, (1/n) Σ max(0, 1 − d / personal
+    /// space). Classic mode ranks separation by it (see
+    /// [`super::control_mode::combine`]); the force itself grows with the summed
+    /// intrusion.
+    pub separation_need: f32,
+    /// How much the fish needs to close up now, 0–1: its distance from the
+    /// centre of its heeded neighbours over its personal space (the near pull's
+    /// arrival), or, when it heeds no neighbour, the far field's pull. Classic
+    /// mode ranks cohesion by it: the far field is a background pull towards a
+    /// distant school and does not make cohesion pressing for a fish that is
+    /// already among its neighbours (ranked with it, cohesion won 37 % of a
+    /// school's steps and the Group weights reached polarization 0.61 instead of
+    /// 0.76; `docs/boids.md`).
+    pub cohesion_need: f32,
     /// How many neighbours the fish heeded (at most `max_neighbours`).
     pub neighbours: u32,
 }
@@ -472,6 +487,16 @@ pub fn forces_from_neighbours(
         separation_m_per_s2,
         alignment_m_per_s2,
         cohesion_m_per_s2,
+        separation_need: if nearest.is_empty() {
+            0.0
+        } else {
+            (intrusion / n).min(1.0)
+        },
+        cohesion_need: if nearest.is_empty() {
+            pull.length().min(1.0)
+        } else {
+            arrival
+        },
         neighbours: nearest.len() as u32,
     }
 }
@@ -649,6 +674,41 @@ mod tests {
         ] {
             assert!(v.length() <= PERCEPTION.max_force_m_per_s2 + 1e-5);
         }
+    }
+
+    #[test]
+    fn classic_needs_are_the_mean_intrusion_and_the_near_arrival() {
+        // Personal space 1 m: neighbours at 0.25 m and 0.75 m intrude by 0.75
+        // and 0.25, a third at 1.5 m not at all: mean intrusion 1/3, while the
+        // force's summed intrusion saturates at 1.
+        let p = Vec3::new(0.0, 2.0, 0.0);
+        let offsets = [Vec3::Z * 0.25, Vec3::Z * 0.75, Vec3::X * 1.5];
+        let mut all = vec![p];
+        all.extend(offsets.iter().map(|o| p + *o));
+        let velocities = vec![Vec3::X * 0.5; all.len()];
+        let mut nearest = Nearest::new(7);
+        for (j, o) in offsets.iter().enumerate() {
+            nearest.offer(j + 1, o.length_squared());
+        }
+        let centre_distance_m = (offsets.iter().sum::<Vec3>() / 3.0).length();
+        for far_centre_m in [None, Some(p + Vec3::X * 4.0)] {
+            let f =
+                forces_from_neighbours(&all, &velocities, 0, &nearest, far_centre_m, &PERCEPTION);
+            assert!((f.separation_need - 1.0 / 3.0).abs() < 1e-5, "{f:?}");
+            // The far field does not make cohesion pressing among neighbours.
+            assert!((f.cohesion_need - centre_distance_m).abs() < 1e-5, "{f:?}");
+        }
+        // Alone but seeing a distant school: the far field's pull is the need.
+        let f = forces_from_neighbours(
+            &all[..1],
+            &velocities[..1],
+            0,
+            &Nearest::new(7),
+            Some(p + Vec3::X * 4.0),
+            &PERCEPTION,
+        );
+        assert!((f.cohesion_need - FAR_FIELD_SHARE).abs() < 1e-5, "{f:?}");
+        assert_eq!(f.separation_need, 0.0);
     }
 
     #[test]

@@ -4,8 +4,8 @@
 //!
 //! - **Blended** (the steering paper's "direct"): every force, every step, as a
 //!   weighted sum.
-//! - **Classic**: one action per step, the strongest weighted force (weight ×
-//!   how hard the force pulls now).
+//! - **Classic**: one action per step, the most pressing weighted urge (weight ×
+//!   share × how much the urge is needed now, 0–1; see [`combine`]).
 //! - **Direct alternate**: draw ρ ∈ [0, 1) once per step; each force whose weight
 //!   w ∈ [0, 1] satisfies ρ < w is applied (so force i acts on a fraction wᵢ of
 //!   the steps).
@@ -98,7 +98,7 @@ impl ControlMode {
     pub fn explanation(self) -> &'static str {
         match self {
             Self::Blended => "Every urge pulls a little, all at once, mixed by its weight.",
-            Self::Classic => "Each moment the fish follows only its strongest urge.",
+            Self::Classic => "Each moment the fish follows only its most pressing urge.",
             Self::DirectAlternate => {
                 "Each moment every urge gets a dice roll; urges with big weights win the roll more often."
             }
@@ -117,11 +117,34 @@ pub struct Combined {
     pub applied: [bool; 5],
 }
 
+/// How much each urge is needed now, 0–1, read from the forces themselves:
+/// ‖force‖ / maximum force. The boid layer uses it for every urge but
+/// separation, whose force saturates in any school (see
+/// [`super::boid_forces::NeighbourForces::separation_need`]).
+pub fn needs_from_forces(forces: &[Vec3; 5], max_force_m_per_s2: f32) -> [f32; 5] {
+    std::array::from_fn(|i| {
+        if max_force_m_per_s2 > 0.0 {
+            forces[i].length() / max_force_m_per_s2
+        } else {
+            0.0
+        }
+    })
+}
+
 /// Combines `forces` (each a full-strength steering force, already limited to
 /// `max_force`) by `weights` (0–100 each) under `mode`.
+///
+/// `needs` (0–1 each) say how much each urge is needed now; only Classic
+/// reads them. Classic applies the urge with the largest weight × share ×
+/// need, so a heavily weighted urge acts whenever it has something to do and
+/// a lightly weighted one when the others are content. (Ranking by the
+/// forces' magnitudes alone let separation win every step inside a school,
+/// where every fish is in its neighbours' personal space and the summed
+/// intrusion saturates: see `docs/boids.md`.)
 pub fn combine(
     mode: ControlMode,
     forces: &[Vec3; 5],
+    needs: &[f32; 5],
     weights: &[f32; 5],
     max_force_m_per_s2: f32,
     rng: &mut impl Rng,
@@ -137,15 +160,18 @@ pub fn combine(
             }
         }
         ControlMode::Classic => {
-            let strongest =
-                (0..5)
-                    .filter(|&i| scaled[i].length_squared() > 0.0)
-                    .max_by(|&a, &b| {
-                        scaled[a]
-                            .length_squared()
-                            .total_cmp(&scaled[b].length_squared())
-                    });
-            if let Some(i) = strongest {
+            let score = |i: usize| {
+                let need = if needs[i].is_finite() {
+                    needs[i].clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                w[i] * FORCE_SHARE_AT_FULL_WEIGHT[i] * need
+            };
+            let most_pressing = (0..5)
+                .filter(|&i| forces[i].length_squared() > 0.0 && score(i) > 0.0)
+                .max_by(|&a, &b| score(a).total_cmp(&score(b)));
+            if let Some(i) = most_pressing {
                 applied[i] = true;
             }
         }
@@ -243,6 +269,7 @@ mod tests {
             let c = combine(
                 ControlMode::DirectAlternate,
                 &forces,
+                &[1.0; 5],
                 &weights,
                 10.0,
                 &mut rng,
@@ -286,6 +313,7 @@ mod tests {
         let c = combine(
             ControlMode::Classic,
             &forces,
+            &needs_from_forces(&forces, 10.0),
             &[100.0, 0.0, 0.0, 0.0, 30.0],
             10.0,
             &mut rng,
@@ -293,6 +321,51 @@ mod tests {
         assert_eq!(c.applied, [false, false, false, false, true]);
         // The one action acts at its full share (avoidance: 100 %), whatever its weight.
         assert!((c.force_m_per_s2 - (-Vec3::Y)).length() < 1e-6);
+    }
+
+    #[test]
+    fn classic_ranks_the_urges_by_how_much_each_is_needed_not_by_force() {
+        let mut rng = ChaCha8Rng::seed_from_u64(1);
+        // Separation saturated (full force) but barely needed; alignment weaker
+        // but needed: alignment is the one action.
+        let forces = [
+            Vec3::ZERO,
+            Vec3::X * 3.0,
+            Vec3::ZERO,
+            Vec3::Y * 8.0,
+            Vec3::ZERO,
+        ];
+        let weights = [26.0, 26.0, 29.0, 26.0, 98.0];
+        let c = combine(
+            ControlMode::Classic,
+            &forces,
+            &[0.0, 0.375, 0.0, 0.2, 0.0],
+            &weights,
+            8.0,
+            &mut rng,
+        );
+        assert_eq!(c.applied, [false, true, false, false, false]);
+        assert!((c.force_m_per_s2 - Vec3::X * 0.75).length() < 1e-6);
+        // The same forces ranked by magnitude: separation wins.
+        let c = combine(
+            ControlMode::Classic,
+            &forces,
+            &needs_from_forces(&forces, 8.0),
+            &weights,
+            8.0,
+            &mut rng,
+        );
+        assert_eq!(c.applied, [false, false, false, true, false]);
+        // A needed urge with no force to give is not chosen.
+        let c = combine(
+            ControlMode::Classic,
+            &[Vec3::ZERO, Vec3::X, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO],
+            &[1.0, 0.1, 1.0, 1.0, 1.0],
+            &weights,
+            8.0,
+            &mut rng,
+        );
+        assert_eq!(c.applied, [false, true, false, false, false]);
     }
 
     /// Mean force over many draws of `mode` with one force on (along x) at `weight`.
@@ -303,7 +376,7 @@ mod tests {
         let weights = [0.0, weight, 100.0 - weight, 0.0, 0.0];
         let sum: f32 = (0..DRAWS)
             .map(|_| {
-                combine(mode, &forces, &weights, 10.0, &mut rng)
+                combine(mode, &forces, &[1.0; 5], &weights, 10.0, &mut rng)
                     .force_m_per_s2
                     .x
             })
@@ -336,6 +409,7 @@ mod tests {
         let c = combine(
             ControlMode::Blended,
             &forces,
+            &[1.0; 5],
             &[100.0, 50.0, 0.0, 0.0, 10.0],
             10.0,
             &mut rng,
@@ -356,7 +430,8 @@ mod tests {
                 [1e9; 5],
                 [-5.0, 100.0, 100.0, 100.0, 100.0],
             ] {
-                let c = combine(mode, &forces, &weights, 1.5, &mut rng);
+                let needs = [f32::NAN, 1e9, -1.0, 0.5, 1.0];
+                let c = combine(mode, &forces, &needs, &weights, 1.5, &mut rng);
                 assert!(c.force_m_per_s2.is_finite(), "{mode:?} {weights:?}");
                 assert!(c.force_m_per_s2.length() <= 1.5 + 1e-4);
             }

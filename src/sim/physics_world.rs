@@ -621,6 +621,7 @@ impl PhysicsWorld {
         let combined = control_mode::combine(
             ControlMode::Blended,
             &[containment, alignment, cohesion, separation, avoidance],
+            &[1.0; 5],
             &weights,
             max_force,
             &mut self.rng,

@@ -708,8 +708,19 @@ impl World {
                 weights[2] = (weights[2] * FEAR_COHESION_FACTOR).min(100.0);
                 weights[3] *= FEAR_SEPARATION_FACTOR;
             }
-            let combined =
-                control_mode::combine(boids.mode, &forces, &weights, max_force, &mut self.rng);
+            let mut needs = control_mode::needs_from_forces(&forces, max_force);
+            // Classic ranks the neighbour urges by how much each is needed
+            // (0–1), not by their forces, which saturate inside a school.
+            needs[2] = neighbours.cohesion_need;
+            needs[3] = neighbours.separation_need;
+            let combined = control_mode::combine(
+                boids.mode,
+                &forces,
+                &needs,
+                &weights,
+                max_force,
+                &mut self.rng,
+            );
             for (count, applied) in applied_counts.iter_mut().zip(combined.applied) {
                 *count += u32::from(applied);
             }
@@ -2006,6 +2017,33 @@ mod tests {
             &[1, 2],
         );
         assert!(m.polarization > 0.7 && m.groups <= 2.0, "{m:?}");
+    }
+
+    #[test]
+    fn the_group_weights_school_in_classic_mode_at_a_real_swimming_speed() {
+        // One action per step (the steering paper ran Table 1 this way): the
+        // group weights still make one polarized school, swimming well above the
+        // minimum speed, and the individual weights still do not.
+        let classic = |params: BoidParams| BoidParams {
+            mode: ControlMode::Classic,
+            ..params
+        };
+        let seeds = [1, 2];
+        let g = measure_minute(classic(BoidParams::group()), &seeds);
+        let i = measure_minute(classic(BoidParams::individual()), &seeds);
+        let min_speed = boid_world(BoidParams::group(), 1)
+            .params()
+            .min_speed_m_per_s;
+        assert!(g.polarization > 0.7 && g.groups <= 2.0, "group {g:?}");
+        assert!(
+            g.speed_m_per_s > 2.0 * min_speed,
+            "group {g:?}, minimum {min_speed}"
+        );
+        assert!(i.polarization < 0.45, "individual {i:?}");
+        assert!(
+            i.nnd_body_lengths >= 1.5 * g.nnd_body_lengths,
+            "individual {i:?} vs group {g:?}"
+        );
     }
 
     #[test]
