@@ -569,7 +569,6 @@ impl PhysicsWorld {
             top,
         );
         let containment = boid_forces::steer_towards(velocity + containment, velocity, perception);
-        let containment = boid_forces::steer_towards(velocity + containment, velocity, perception);
         let avoidance = steering::limit(
             steering::avoid_obstacles(
                 position,
