@@ -46,6 +46,12 @@ pub const LOOP_HZ: f32 = 0.2;
 pub const PASS_BODY_LENGTHS: f32 = 1.0;
 /// Seconds between two counted passes (3, chosen: one pass per swing).
 pub const PASS_INTERVAL_SECS: f32 = 3.0;
+/// How far behind her abdomen the male lines up for a touch, his body lengths
+/// (1.5, chosen: room for his held bend to turn him onto her axis).
+pub const STAGING_BODY_LENGTHS: f32 = 1.5;
+/// How far (level) from her axis the male may be to swim in for a touch, his
+/// body lengths (0.5, chosen).
+pub const LINE_UP_BODY_LENGTHS: f32 = 0.5;
 /// The male's mouth within this many body lengths of her abdomen is a touch.
 pub const TOUCH_BODY_LENGTHS: f32 = 0.35;
 
@@ -200,12 +206,23 @@ impl Pair {
                         0.5,
                     )
                 } else {
-                    // From below: aim under her abdomen, then up into it.
-                    let below = abdomen - Vec3::Y * 0.3 * male.body_length_m;
-                    let target = if male.head_m.y < abdomen.y {
+                    // From behind and below her (she hovers): reach a point
+                    // behind and under her abdomen, then swim straight up her
+                    // axis into it. Aiming at the abdomen from the side made
+                    // the muscle male circle her a body length and a half
+                    // away for minutes (his turning circle, measured).
+                    let offset = male.head_m - abdomen;
+                    let along = offset.dot(female.heading);
+                    let level = Vec3::new(1.0, 0.0, 1.0);
+                    let aside = ((offset - female.heading * along) * level).length();
+                    let lined_up = along < 0.0 && aside < LINE_UP_BODY_LENGTHS * male.body_length_m;
+                    let target = if lined_up && male.head_m.y < abdomen.y + 0.1 * male.body_length_m
+                    {
                         abdomen
                     } else {
-                        below
+                        abdomen
+                            - female.heading * STAGING_BODY_LENGTHS * male.body_length_m
+                            - Vec3::Y * 0.3 * male.body_length_m
                     };
                     swim(target, 0.6)
                 };
