@@ -1,14 +1,16 @@
 //! The behaviour routines of Tu & Terzopoulos 1994 §6.4: given the intention
 //! and the focusser's target, bring the fish one step closer to its goal. Each
-//! routine returns the velocity the fish wants now (tank frame, m/s); the world
-//! turns it into a steering force and the body's motor controllers follow it
-//! (`motor_bridge.rs` for the muscle-driven body).
+//! routine returns the velocity the fish wants now (tank frame, m/s); for the
+//! muscle-driven body the routine's motor choice (`motor_choice.rs`) picks the
+//! swim-MC, turn-MC and fin settings that swim it, and the eating fish and the
+//! courted female hover instead (the point-mass body is steered to the velocity
+//! by the boid layer).
 //!
 //! - *avoiding-static-obstacle* and *avoiding-fish*: turn away from the side the
 //!   obstacle is on, slowing down (the paper picks a left or right turn-MC);
 //! - *eating-food*: chase the food (chasing-target) until it is within reach of
-//!   the mouth, then hover while the vacuum sucks it in (the world applies the
-//!   suck-in);
+//!   the mouth, then hover (tail still, fins braking) while the vacuum sucks it
+//!   in (the world applies the suck-in);
 //! - *mating*: chase the partner (the courtship sequence is in `courtship.rs`);
 //! - *leaving*: swim up the gradient of the light or temperature the fish likes;
 //! - *wandering*: the wander steering of the boid layer;

@@ -18,6 +18,8 @@
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
+use super::motor_choice::Gait;
+
 /// Passes of the male's mouth through the looping point before circling (the
 /// paper: "currently 6").
 pub const LOOPS_TO_CIRCLE: u32 = 6;
@@ -44,6 +46,12 @@ pub const LOOP_HZ: f32 = 0.2;
 pub const PASS_BODY_LENGTHS: f32 = 1.0;
 /// Seconds between two counted passes (3, chosen: one pass per swing).
 pub const PASS_INTERVAL_SECS: f32 = 3.0;
+/// How far behind her abdomen the male lines up for a touch, his body lengths
+/// (1.5, chosen: room for his held bend to turn him onto her axis).
+pub const STAGING_BODY_LENGTHS: f32 = 1.5;
+/// How far (level) from her axis the male may be to swim in for a touch, his
+/// body lengths (0.5, chosen).
+pub const LINE_UP_BODY_LENGTHS: f32 = 0.5;
 /// The male's mouth within this many body lengths of her abdomen is a touch.
 pub const TOUCH_BODY_LENGTHS: f32 = 0.35;
 
@@ -79,11 +87,14 @@ pub struct Partner {
     pub body_length_m: f32,
 }
 
-/// What a partner wants this step: a point to chase and a speed fraction.
+/// What a partner wants this step: a point to chase, a speed fraction, and how
+/// (the female hovers while the male loops or nuzzles, `motor_choice.rs`). A
+/// hovering point-mass body, which has no fins, swims slowly to the point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Wish {
     pub target_m: Vec3,
     pub speed_fraction: f32,
+    pub gait: Gait,
 }
 
 /// A courting pair.
@@ -147,68 +158,75 @@ impl Pair {
         time_secs: f32,
         surface_y_m: f32,
     ) -> (Wish, Wish) {
-        let hover = |p: &Partner, bob: f32| Wish {
+        let hover = |p: &Partner, bob: f32, gait: Gait| Wish {
             target_m: p.head_m + p.heading * p.body_length_m + Vec3::Y * bob * p.body_length_m,
             speed_fraction: 0.25,
+            gait,
+        };
+        let swim = |target_m: Vec3, speed_fraction: f32| Wish {
+            target_m,
+            speed_fraction,
+            gait: Gait::Pursue,
         };
         let bob = 0.3 * (std::f32::consts::TAU * 0.5 * time_secs).sin();
         match self.phase {
             Phase::Looping => (
-                Wish {
-                    target_m: self.loop_point_m(female, time_secs),
-                    speed_fraction: 0.9,
-                },
-                hover(female, bob),
+                swim(self.loop_point_m(female, time_secs), 0.9),
+                hover(female, bob, Gait::Bob),
             ),
             Phase::Circling => (
-                Wish {
-                    target_m: female.position_m - female.heading * female.body_length_m,
-                    speed_fraction: 0.8,
-                },
-                Wish {
-                    target_m: male.position_m - male.heading * male.body_length_m,
-                    speed_fraction: 0.7,
-                },
+                swim(
+                    female.position_m - female.heading * female.body_length_m,
+                    0.8,
+                ),
+                swim(male.position_m - male.heading * male.body_length_m, 0.7),
             ),
             Phase::Ascending => {
                 let top = surface_y_m - female.body_length_m;
                 (
-                    Wish {
-                        target_m: Self::abdomen_m(female)
-                            - female.heading * 0.3 * female.body_length_m,
-                        speed_fraction: 1.0,
-                    },
-                    Wish {
-                        target_m: Vec3::new(female.head_m.x, top, female.head_m.z)
+                    swim(
+                        Self::abdomen_m(female) - female.heading * 0.3 * female.body_length_m,
+                        1.0,
+                    ),
+                    swim(
+                        Vec3::new(female.head_m.x, top, female.head_m.z)
                             + female.heading * female.body_length_m,
-                        speed_fraction: 1.0,
-                    },
+                        1.0,
+                    ),
                 )
             }
             Phase::Nuzzling | Phase::Spawned => {
                 let backing_off = self.since_count_secs < BACK_OFF_SECS;
                 let abdomen = Self::abdomen_m(female);
                 let male_wish = if backing_off {
-                    Wish {
-                        target_m: abdomen
+                    swim(
+                        abdomen
                             - Vec3::Y * 1.5 * male.body_length_m
                             - female.heading * male.body_length_m,
-                        speed_fraction: 0.5,
-                    }
+                        0.5,
+                    )
                 } else {
-                    // From below: aim under her abdomen, then up into it.
-                    let below = abdomen - Vec3::Y * 0.3 * male.body_length_m;
-                    let target = if male.head_m.y < abdomen.y {
+                    // From behind and below her (she hovers): reach a point
+                    // behind and under her abdomen, then swim straight up her
+                    // axis into it. Aiming at the abdomen from the side made
+                    // the muscle male circle her a body length and a half
+                    // away for minutes (his turning circle, measured).
+                    let offset = male.head_m - abdomen;
+                    let along = offset.dot(female.heading);
+                    let level = Vec3::new(1.0, 0.0, 1.0);
+                    let aside = ((offset - female.heading * along) * level).length();
+                    let lined_up = along < 0.0 && aside < LINE_UP_BODY_LENGTHS * male.body_length_m;
+                    let target = if lined_up && male.head_m.y < abdomen.y + 0.1 * male.body_length_m
+                    {
                         abdomen
                     } else {
-                        below
+                        abdomen
+                            - female.heading * STAGING_BODY_LENGTHS * male.body_length_m
+                            - Vec3::Y * 0.3 * male.body_length_m
                     };
-                    Wish {
-                        target_m: target,
-                        speed_fraction: 0.6,
-                    }
+                    swim(target, 0.6)
                 };
-                (male_wish, hover(female, 0.0))
+                (male_wish, hover(female, 0.0, Gait::Hover))
             }
         }
     }

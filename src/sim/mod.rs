@@ -16,6 +16,7 @@ pub mod fish;
 pub mod learning;
 pub mod mind;
 pub mod motor_bridge;
+pub mod motor_choice;
 pub mod obstacle;
 pub mod perception;
 pub mod physical_fish;

@@ -1,8 +1,9 @@
-//! The bridge from the steering layer to the muscles: a *desired velocity* (what the
-//! boid forces of `boid_forces.rs` and `steering.rs` ask of a point-mass fish, or
-//! later what the fish's mind asks) becomes the three motor commands of Tu &
-//! Terzopoulos 1994 §3.3–3.4: a swim-MC speed, a turn-MC angle and pectoral fin
-//! angles.
+//! The bridge from the steering layer of the physics scene to the muscles: a
+//! *desired velocity* (what the boid forces of `boid_forces.rs` and `steering.rs`
+//! ask of a point-mass fish) becomes motor commands of Tu & Terzopoulos 1994
+//! §3.3–3.4: a swim-MC speed, a steering bend of the turning segments and
+//! pectoral fin angles. (The reef's minds do not use it: their behaviour
+//! routines pick the motor controllers themselves, `motor_choice.rs`.)
 //!
 //! | desired velocity d, fish heading f           | command |
 //! |----------------------------------------------|---------|

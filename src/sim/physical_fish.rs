@@ -22,6 +22,16 @@ use super::motor_bridge::{
 /// bridge reading the raw direction started turns the wrong way.
 pub const HEADING_SMOOTHING_SECS: f32 = 0.5;
 
+/// swim-MC speed while a turn-MC turn runs, fraction of the top speed: 1, the
+/// setting at which the turn-MC's key turns are measured
+/// (`body::turn_mc::measure_heading_change_deg` swims at `SwimParams::MAX`). A
+/// turn is made by the tail's thrust on the bent body, so at half the thrust
+/// the 90° key turned the fish 43° (at full thrust 88°, measured in the
+/// browser): whatever speed the fish swam at, its tail beats at this setting
+/// until the turn is done, and its key turns keep their angles
+/// (`tests::key_turns_hold_at_every_swim_speed`).
+pub const TURN_SWIM_SPEED_FRACTION: f32 = 1.0;
+
 /// What kind of animal a physical fish is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -195,9 +205,15 @@ impl PhysicalFish {
             self.turn.start_turn(angle);
         }
         let dt = self.body.dt_secs();
-        let params = self.swim.params_for_speed(intent.speed_fraction);
-        let swim = self.swim.step(&params, dt);
         let turning = self.turn.is_turning();
+        // A turn-MC turn beats the tail at the setting its keys were measured at.
+        let speed_fraction = if turning {
+            TURN_SWIM_SPEED_FRACTION
+        } else {
+            intent.speed_fraction
+        };
+        let params = self.swim.params_for_speed(speed_fraction);
+        let swim = self.swim.step(&params, dt);
         let turn = self.turn.step(dt);
         let mut muscles = super::body::turn_mc::combine_swim_and_turn(&swim, &turn);
         super::body::turn_mc::add_steering(&mut muscles, intent.steer);
@@ -212,7 +228,7 @@ impl PhysicalFish {
             self.heading = self.heading.lerp(forward, k).normalize_or(forward);
         }
         self.motor = MotorState {
-            speed_fraction: intent.speed_fraction.clamp(0.0, 1.0),
+            speed_fraction: speed_fraction.clamp(0.0, 1.0),
             fins: intent.fins,
             turning,
             muscles: *self.body.muscle_contractions(),
@@ -304,6 +320,84 @@ mod tests {
         }
         let secs = reached.expect("the fish reaches the target within 90 s");
         assert!(secs > 10.0, "it swims there, no teleport: {secs} s");
+    }
+
+    /// A fish swims straight at `speed_fraction` for 3 s, is told to turn
+    /// `angle_deg` (a hand command, or a routine's turn-MC choice), keeps being
+    /// asked for `speed_fraction` until the turn is done and 2 s more. Returns
+    /// the change of its fore body's level heading, each end averaged over 1 s
+    /// (the turn-MC's own protocol, `body::turn_mc`), degrees, + = left.
+    pub(super) fn turn_at_speed_deg(angle_deg: f32, speed_fraction: f32) -> f32 {
+        let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+        let dt = fish.body().dt_secs();
+        let swim = MotorIntent {
+            speed_fraction,
+            start_turn_deg: None,
+            steer: 0.0,
+            fins: PectoralFins::NEUTRAL,
+        };
+        let window = (1.0 / dt).round() as usize;
+        let mut headings: Vec<f32> = Vec::new();
+        let mut unwrapped = 0.0f32;
+        let mut run = |fish: &mut PhysicalFish, intent: &MotorIntent, headings: &mut Vec<f32>| {
+            let before = level_turn_deg(Vec3::X, fish.forward());
+            fish.step(intent, Vec3::ZERO);
+            let after = level_turn_deg(Vec3::X, fish.forward());
+            unwrapped += (after - before + 180.0).rem_euclid(360.0) - 180.0;
+            headings.push(unwrapped);
+        };
+        for _ in 0..(3.0 / dt) as usize {
+            run(&mut fish, &swim, &mut headings);
+        }
+        let mean = |h: &[f32]| h[h.len() - window..].iter().sum::<f32>() / window as f32;
+        let start = mean(&headings);
+        run(
+            &mut fish,
+            &MotorIntent {
+                start_turn_deg: Some(angle_deg),
+                ..swim
+            },
+            &mut headings,
+        );
+        for _ in 0..(60.0 / dt) as usize {
+            if !fish.is_turning() {
+                break;
+            }
+            run(&mut fish, &swim, &mut headings);
+        }
+        for _ in 0..(2.0 / dt) as usize {
+            run(&mut fish, &swim, &mut headings);
+        }
+        mean(&headings) - start
+    }
+
+    #[test]
+    fn key_turns_hold_at_every_swim_speed() {
+        // The turn-MC's keys are measured at full thrust; a fish asked to swim
+        // slower still turns by the key's angle (it used to turn 90° × its
+        // speed, roughly).
+        for key in [30.0, 90.0, -60.0] {
+            for speed in [0.3, 0.6, 1.0] {
+                let turned = turn_at_speed_deg(key, speed);
+                assert!(
+                    (turned - key).abs() < 0.1 * key.abs().max(30.0),
+                    "key {key}° at speed {speed}: turned {turned}°"
+                );
+            }
+        }
+    }
+
+    #[test]
+    #[ignore]
+    fn key_turns_against_swim_speed() {
+        // `cargo test --lib key_turns_against -- --ignored --nocapture`
+        for key in [30.0, 45.0, 60.0, 90.0] {
+            let row: Vec<String> = [0.0, 0.3, 0.6, 1.0]
+                .iter()
+                .map(|&s| format!("{:6.1}", turn_at_speed_deg(key, s)))
+                .collect();
+            println!("| {key}° | {} |", row.join(" | "));
+        }
     }
 
     #[test]

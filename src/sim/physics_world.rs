@@ -8,10 +8,12 @@
 //! 1. every fish is seen where its body is (centre of mass) and heading where its
 //!    fore body points;
 //! 2. each fish's steering forces change its *intended velocity*, a point-mass
-//!    velocity integrated like a boid's: the fish's wish, which its slow muscles
-//!    then chase (a 90° turn of this body takes about 7 s);
-//! 3. the bridge turns the intended velocity into swim-MC speed, turn-MC angle and
-//!    fin angles (or the teacher's hand command drives the selected fish);
+//!    velocity integrated like a boid's, turning at most 29°/s: the fish's wish,
+//!    which its slow muscles then chase;
+//! 3. the bridge turns the intended velocity into a swim-MC speed, a steering
+//!    bend of the turning segments and fin angles (`motor_bridge.rs`; or the
+//!    teacher's hand command drives the selected fish, whose turns are turn-MC
+//!    turns);
 //! 4. each body takes one implicit step in the water at its centre;
 //! 5. hard rule: no node leaves the tank or enters a rock.
 //!
@@ -44,8 +46,8 @@ pub const MAX_PHYSICAL_SHARKS: usize = 3;
 const RESPONSE_TIME_SECS: f32 = 0.25;
 /// How far ahead in time containment predicts the path, seconds. 10, chosen: at
 /// cruising speed (0.2 m/s for the default fish) the fish reacts 2 m before the
-/// margin; the body turns about 12° a second (`body/turn_mc.rs`), a turning
-/// radius of about 1.4 m at that speed.
+/// margin, time for the body's held bend (26–28°/s, `motor_bridge.rs`) to turn
+/// it round with room to spare.
 const CONTAINMENT_LOOK_AHEAD_SECS: f32 = 10.0;
 /// Room kept from the glass, floor and surface by the predicted path, body
 /// lengths (2, chosen: the turn itself swings the tail out by about one).
@@ -62,7 +64,7 @@ const WANDER_JITTER_RAD: f32 = 0.36;
 /// Swimming speed of a fish whose head touched something, fraction of its top
 /// speed: the turn-MC's minimum thrust (`motor_bridge::MIN_TURN_SPEED_FRACTION`),
 /// enough to turn away, too little to crush the body.
-const TOUCH_SPEED_FRACTION: f32 = super::motor_bridge::MIN_TURN_SPEED_FRACTION;
+pub(crate) const TOUCH_SPEED_FRACTION: f32 = super::motor_bridge::MIN_TURN_SPEED_FRACTION;
 
 /// Fastest turn of the intended velocity, radians per second: 29°/s, a little
 /// faster than the body's measured 26–28°/s under continuous steering
@@ -104,6 +106,16 @@ pub(crate) fn within_reach(previous: Vec3, wanted: Vec3, forward: Vec3, dt: f32)
     direction * speed
 }
 
+/// Touch reflex: a fish whose head touched the glass or a rock (pushed out along
+/// `away`, unit) wants to swim away from it, slowly: `wanted_m_per_s` mirrored
+/// off the touched surface, at [`TOUCH_SPEED_FRACTION`] of `top_m_per_s`
+/// (pushing on at full speed crushed the body to 0.78 of its length, measured).
+pub(crate) fn touch_reflex(wanted_m_per_s: Vec3, away: Vec3, top_m_per_s: f32) -> Vec3 {
+    let away = (away * Vec3::new(1.0, 0.0, 1.0)).normalize_or(away);
+    let into = wanted_m_per_s.dot(away).min(0.0);
+    (wanted_m_per_s - 2.0 * into * away).normalize_or(away) * TOUCH_SPEED_FRACTION * top_m_per_s
+}
+
 /// Turns a steering force on a physical animal into its motor intent: the
 /// force changes the animal's intended velocity (`intended`, a point-mass
 /// velocity like a boid's), the touch reflex and the body's reach
@@ -118,13 +130,8 @@ pub(crate) fn drive_physical(
 ) -> MotorIntent {
     let top = animal.top_speed_m_per_s();
     let mut v = steering::limit(*intended + steering_m_per_s2 * dt, top);
-    // Touch reflex: a fish whose head touched the glass or a rock wants to swim
-    // away from it, slowly (pushing on at full speed crushed the body to 0.78 of
-    // its length, measured).
     if let Some(away) = touch {
-        let away = (away * Vec3::new(1.0, 0.0, 1.0)).normalize_or(away);
-        let into = v.dot(away).min(0.0);
-        v = (v - 2.0 * into * away).normalize_or(away) * TOUCH_SPEED_FRACTION * top;
+        v = touch_reflex(v, away, top);
     }
     let v = if v.length() < 0.3 * top {
         v.normalize_or(animal.heading()) * 0.3 * top

@@ -1,0 +1,319 @@
+//! The motor half of every behaviour routine (Tu & Terzopoulos 1994 §6.4): a
+//! routine says where it wants to go and how (its [`Wish`]), and here it picks the
+//! motor controllers of the muscle body (§3.3–3.4) that do it:
+//!
+//! | the routine wants                      | motor controllers |
+//! |----------------------------------------|-------------------|
+//! | to swim on (heading error under [`TURN_MC_MIN_DEG`]) | swim-MC at the wished speed; course kept by a bend of the turning segments proportional to the error ([`COURSE_GAIN_PER_RAD`], `body::turn_mc::add_steering`) |
+//! | to swim somewhere [`TURN_MC_MIN_DEG`] or more off its heading | turn-MC(angle), at most 90° at a time; the routine asks again when the turn is done (not while pursuing a moving target, [`Gait::Pursue`]: it keeps re-aiming with the held bend) |
+//! | to climb or dive                       | both pectoral fins pitched (twice the elevation error, at most ±0.5 rad) |
+//! | to go much slower than it swims        | fins across the flow (brake), no tail beat |
+//! | to hover ([`Gait::Hover`])             | no tail beat, fins across the flow: the fish stops within a body length and stays |
+//! | to hover and bob ([`Gait::Bob`])       | a slow tail beat ([`BOB_SWIM_FRACTION`]) against fins that brake and tilt up and down together at [`BOB_HZ`]: the fish holds its place and rises and sinks |
+//!
+//! A turn-MC turn, once started, runs to its end (the paper's turns are
+//! ballistic: a quick bend and a slow release); while it runs the routine's wish
+//! sets only the fins, and [`crate::sim::physical_fish::PhysicalFish::step`]
+//! beats the tail at the setting the turn-MC's key turns were measured at, so
+//! that a 90° key turns the fish 90° at any speed the routine asked for.
+//!
+//! Why the held bend for small corrections: a turn-MC turn of any angle lasts
+//! as long as its restoring stroke (3.7 s for the smallest key,
+//! `body/turn_mc.rs`), so a chase steered only by turn-MC turns zigzags: the
+//! target moves while the fish cannot re-aim. The held bend is the turn-MC's
+//! own bend (the same anterior and middle segments, contracted on the turning
+//! side) kept as long as the error lasts and proportional to it: the
+//! continuous limit of the steering map for small angles. Measured in
+//! `docs/fish-mind.md`.
+//!
+//! The point-mass body has no motor controllers: it follows the wish's velocity
+//! through the boid layer.
+
+use std::f32::consts::TAU;
+
+use glam::Vec3;
+use serde::{Deserialize, Serialize};
+
+use super::body::PectoralFins;
+use super::motor_bridge::{MotorIntent, level_turn_deg};
+
+/// How a routine wants its body to move.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Gait {
+    /// Swim at the wished velocity; turns of [`TURN_MC_MIN_DEG`] or more are
+    /// turn-MC turns (avoiding, escaping, schooling, leaving, wandering).
+    #[default]
+    Swim,
+    /// Swim after a moving target (chasing-target: eating, mating, courting),
+    /// re-aiming every step with the held bend: a turn-MC turn cannot be re-aimed
+    /// once started and overshoots a target a few body lengths away.
+    Pursue,
+    /// Swim with the school (schooling, and foraging with the school): the
+    /// muscle body is steered like the physics scene's schooling fish, by the
+    /// boid layer's intended velocity through the desired-velocity bridge
+    /// (`motor_bridge.rs`), whose smoothing keeps a school together (driven
+    /// step by step by the school routine's wish, the fish thrashed at full
+    /// bend among their neighbours and the school of *School meets obstacle*
+    /// slowed to 0.05 m/s in four to six groups, measured). Here, like
+    /// [`Gait::Pursue`].
+    School,
+    /// Stop and stay: eating at the food, the courted female while she is nuzzled.
+    Hover,
+    /// Stay and bob up and down with the fins: the courted female while the male
+    /// loops (§7.3).
+    Bob,
+}
+
+/// What a behaviour routine wants this step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Wish {
+    /// Where to swim and how fast (tank frame, m/s). The muscle body reads its
+    /// direction and speed; the point-mass body follows it as a desired velocity.
+    pub velocity_m_per_s: Vec3,
+    pub gait: Gait,
+}
+
+impl Wish {
+    pub fn swim(velocity_m_per_s: Vec3) -> Self {
+        Self {
+            velocity_m_per_s,
+            gait: Gait::Swim,
+        }
+    }
+
+    pub fn pursue(velocity_m_per_s: Vec3) -> Self {
+        Self {
+            velocity_m_per_s,
+            gait: Gait::Pursue,
+        }
+    }
+
+    pub fn hover() -> Self {
+        Self {
+            velocity_m_per_s: Vec3::ZERO,
+            gait: Gait::Hover,
+        }
+    }
+
+    pub fn bob() -> Self {
+        Self {
+            velocity_m_per_s: Vec3::ZERO,
+            gait: Gait::Bob,
+        }
+    }
+}
+
+/// Smallest heading error the routine turns with a turn-MC turn, degrees: 90,
+/// chosen, a goal at the fish's side or behind it (`docs/fish-mind.md`: the six
+/// hungry fish of the *Feeding* demo ate 99, 145 and 160 plankton in 4 × 132 s
+/// with 45°, 90° and 120°, 173 with the held bend alone: a turn-MC turn swims a
+/// wide arc at full beat and overshoots near food). Below it the held bend
+/// keeps the course (see the module doc).
+pub const TURN_MC_MIN_DEG: f32 = 90.0;
+/// Bend per radian of heading error while keeping the course, 1/rad (3: full bend
+/// from 19° of error; the physics scene's bridge uses the same,
+/// `motor_bridge::STEER_GAIN_PER_RAD`).
+pub const COURSE_GAIN_PER_RAD: f32 = super::motor_bridge::STEER_GAIN_PER_RAD;
+/// Fin pitch per radian of elevation error (2, chosen: a 15° climb request tilts
+/// the fins by the full 0.5 rad).
+const PITCH_GAIN: f32 = 2.0;
+/// Largest fin pitch while swimming, radians (0.5, as in the fin tests of
+/// `body/tests.rs`).
+const MAX_FIN_PITCH_RAD: f32 = 0.5;
+/// A fish swimming faster than this share of its top speed brakes with its fins
+/// when the routine wants less than half its speed (0.3, the bridge's rule).
+const BRAKE_ABOVE_FRACTION: f32 = 0.3;
+/// swim-MC speed of a bobbing fish, fraction of the top speed (0.15, chosen:
+/// enough water over the fins to lift and sink the fish, slow enough for the
+/// braking fins to hold it almost in place; measured in `physical_fish.rs`).
+pub const BOB_SWIM_FRACTION: f32 = 0.15;
+/// Bobbing frequency, Hz (0.5, chosen: one rise and fall every 2 s).
+pub const BOB_HZ: f32 = 0.5;
+/// Fin angle of a bobbing fish while it rises, radians from flat (1.1, chosen:
+/// leading edge well up, the fin brakes and lifts). While it sinks the fins are
+/// tilted the other way as far as they go (θ = π/4).
+const BOB_LIFT_PITCH_RAD: f32 = 1.1;
+
+/// The fish as its motor choice sees it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Body {
+    /// Where it heads (tank frame, unit; averaged over a tail beat).
+    pub heading: Vec3,
+    /// Its speed, m/s.
+    pub speed_m_per_s: f32,
+    /// Its top swimming speed, m/s.
+    pub top_speed_m_per_s: f32,
+    /// Is its turn-MC busy with a turn?
+    pub turning: bool,
+}
+
+/// The motor controllers that carry out `wish` for `body` at `time_secs` (the
+/// bobbing clock). Non-finite input asks for nothing.
+pub fn choose(wish: &Wish, body: &Body, time_secs: f32) -> MotorIntent {
+    let idle = MotorIntent {
+        speed_fraction: 0.0,
+        start_turn_deg: None,
+        steer: 0.0,
+        fins: PectoralFins::NEUTRAL,
+    };
+    let top = body.top_speed_m_per_s;
+    let d = wish.velocity_m_per_s;
+    if !(d.is_finite() && body.heading.is_finite() && top > 0.0) {
+        return idle;
+    }
+    match wish.gait {
+        Gait::Hover => {
+            return MotorIntent {
+                fins: PectoralFins::BRAKE,
+                ..idle
+            };
+        }
+        Gait::Bob => {
+            let rising = (TAU * BOB_HZ * time_secs).sin() >= 0.0;
+            let pitch = if rising {
+                BOB_LIFT_PITCH_RAD
+            } else {
+                -std::f32::consts::FRAC_PI_4
+            };
+            return MotorIntent {
+                speed_fraction: BOB_SWIM_FRACTION,
+                fins: PectoralFins::pitch(pitch),
+                ..idle
+            };
+        }
+        Gait::Swim | Gait::Pursue | Gait::School => {}
+    }
+    let speed = if body.speed_m_per_s.is_finite() {
+        body.speed_m_per_s.max(0.0)
+    } else {
+        0.0
+    };
+    let wanted = d.length();
+    if wanted < 0.5 * speed && speed > BRAKE_ABOVE_FRACTION * top && !body.turning {
+        return MotorIntent {
+            fins: PectoralFins::BRAKE,
+            ..idle
+        };
+    }
+    let mut speed_fraction = (wanted / top).clamp(0.0, 1.0);
+    // Climb or dive with the fins.
+    let level = Vec3::new(d.x, 0.0, d.z).length();
+    let elevation = d.y.atan2(level);
+    let pitch = body.heading.y.clamp(-1.0, 1.0).asin();
+    let fins = if wanted > 0.0 {
+        PectoralFins::pitch(
+            (PITCH_GAIN * (elevation - pitch)).clamp(-MAX_FIN_PITCH_RAD, MAX_FIN_PITCH_RAD),
+        )
+    } else {
+        PectoralFins::NEUTRAL
+    };
+    // Yaw: a turn-MC turn for a large error, the held bend for a small one.
+    let has_level_goal =
+        level > 1e-3 * top && Vec3::new(body.heading.x, 0.0, body.heading.z).length() > 1e-3;
+    let error_deg = if has_level_goal {
+        level_turn_deg(body.heading, d)
+    } else {
+        0.0
+    };
+    let (mut start_turn_deg, mut steer) = (None, 0.0);
+    if body.turning {
+        // The turn runs to its end.
+    } else if wish.gait == Gait::Swim && error_deg.abs() >= TURN_MC_MIN_DEG {
+        start_turn_deg = Some(error_deg.clamp(-90.0, 90.0));
+    } else {
+        steer = (COURSE_GAIN_PER_RAD * error_deg.to_radians()).clamp(-1.0, 1.0);
+        // The bend turns the fish by the tail's thrust on it: beat at least as
+        // hard as the bend (the circle stays about 0.6 body lengths).
+        speed_fraction = speed_fraction.max(steer.abs());
+    }
+    MotorIntent {
+        speed_fraction,
+        start_turn_deg,
+        steer,
+        fins,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn body(speed: f32, turning: bool) -> Body {
+        Body {
+            heading: Vec3::X,
+            speed_m_per_s: speed,
+            top_speed_m_per_s: 0.3,
+            turning,
+        }
+    }
+
+    #[test]
+    fn a_large_turn_is_a_turn_mc_turn_and_a_small_one_a_held_bend() {
+        let level = |deg: f32| {
+            // + = left; left of +x is −z with y up.
+            let r = deg.to_radians();
+            Vec3::new(r.cos(), 0.0, -r.sin()) * 0.2
+        };
+        // 120° to the left: one 90° turn-MC turn now, the rest when it is done.
+        let m = choose(&Wish::swim(level(120.0)), &body(0.2, false), 0.0);
+        assert_eq!(m.start_turn_deg, Some(90.0));
+        assert_eq!(m.steer, 0.0);
+        // Straight behind to the right: 90° to the right.
+        let m = choose(&Wish::swim(level(-179.0)), &body(0.2, false), 0.0);
+        assert_eq!(m.start_turn_deg, Some(-90.0));
+        // At the turn-MC's threshold: a turn-MC turn of that angle.
+        let m = choose(
+            &Wish::swim(level(TURN_MC_MIN_DEG + 1.0)),
+            &body(0.2, false),
+            0.0,
+        );
+        let angle = m.start_turn_deg.expect("a turn-MC turn");
+        assert!(
+            (angle - (TURN_MC_MIN_DEG + 1.0).min(90.0)).abs() < 0.1,
+            "{angle}"
+        );
+        // While a turn runs nothing new starts.
+        let m = choose(&Wish::swim(level(120.0)), &body(0.2, true), 0.0);
+        assert_eq!((m.start_turn_deg, m.steer), (None, 0.0));
+        // A pursuit re-aims with the held bend, however large the error.
+        let m = choose(&Wish::pursue(level(120.0)), &body(0.2, false), 0.0);
+        assert_eq!((m.start_turn_deg, m.steer), (None, 1.0));
+        // 10° to the right: a proportional bend, no turn-MC turn.
+        let m = choose(&Wish::swim(level(-10.0) * 0.5), &body(0.1, false), 0.0);
+        assert_eq!(m.start_turn_deg, None);
+        assert!((m.steer + COURSE_GAIN_PER_RAD * 10f32.to_radians()).abs() < 1e-4);
+    }
+
+    #[test]
+    fn hovering_stops_the_tail_and_brakes_with_the_fins() {
+        let m = choose(&Wish::hover(), &body(0.2, false), 0.0);
+        assert_eq!(m.speed_fraction, 0.0);
+        assert_eq!(m.fins, PectoralFins::BRAKE);
+        // Much slower than now: brake.
+        let m = choose(&Wish::swim(Vec3::X * 0.02), &body(0.25, false), 0.0);
+        assert_eq!((m.speed_fraction, m.fins), (0.0, PectoralFins::BRAKE));
+    }
+
+    #[test]
+    fn bobbing_beats_slowly_and_tilts_the_fins_up_then_down() {
+        let up = choose(&Wish::bob(), &body(0.0, false), 0.25 / BOB_HZ);
+        let down = choose(&Wish::bob(), &body(0.0, false), 0.75 / BOB_HZ);
+        assert_eq!(up.speed_fraction, BOB_SWIM_FRACTION);
+        assert!(up.fins.left_angle_rad > std::f32::consts::FRAC_PI_2);
+        assert!(down.fins.left_angle_rad < std::f32::consts::FRAC_PI_2);
+        assert_eq!(up.start_turn_deg, None);
+    }
+
+    #[test]
+    fn climbing_pitches_the_fins_and_garbage_asks_for_nothing() {
+        let up = choose(
+            &Wish::swim(Vec3::new(1.0, 0.5, 0.0) * 0.2),
+            &body(0.2, false),
+            0.0,
+        );
+        assert!(up.fins.left_angle_rad > std::f32::consts::FRAC_PI_2);
+        let nan = choose(&Wish::swim(Vec3::NAN), &body(0.2, false), 0.0);
+        assert_eq!(nan.speed_fraction, 0.0);
+    }
+}
