@@ -159,9 +159,14 @@ export function saveArtifact(name, buffer) {
   fs.writeFileSync(path.join(artifactDir, name), buffer);
 }
 
-/** Clicks the centre of a named widget, as a person would. */
+/** Clicks the centre of a named widget, as a person would. Right after a reload the
+ * panel may not have been laid out yet (a software-rendered frame can take seconds),
+ * so it waits up to 30 s for the widget to appear. */
 export async function clickWidget(page, name) {
-  const rect = await page.evaluate((n) => window.shoal.widgets()[n], name);
+  const rect = await page
+    .waitForFunction((n) => window.shoal.widgets()[n], name, { timeout: 30_000 })
+    .then((handle) => handle.jsonValue())
+    .catch(() => null);
   if (!rect) throw new Error(`widget ${name} is not on screen`);
   await page.mouse.click(rect.x + rect.width / 2, rect.y + rect.height / 2, { delay: 60 });
   return rect;
