@@ -1677,17 +1677,20 @@ impl ReefWorld {
                 CONTAINMENT_MARGIN_BODY_LENGTHS * length,
             ),
         };
-        let keep_off = |velocity: Vec3| {
+        let contain = |velocity: Vec3| {
             steering::containment(position, velocity, &self.tank, look_ahead_s, margin_m, top)
-                + steering::avoid_obstacles(
-                    position,
-                    velocity,
-                    self.obstacles.iter(),
-                    3.0,
-                    steering::AVOIDANCE_CLEARANCE_M + 0.5 * length,
-                    top,
-                )
         };
+        let avoid_rocks = |velocity: Vec3| {
+            steering::avoid_obstacles(
+                position,
+                velocity,
+                self.obstacles.iter(),
+                3.0,
+                steering::AVOIDANCE_CLEARANCE_M + 0.5 * length,
+                top,
+            )
+        };
+        let keep_off = |velocity: Vec3| contain(velocity) + avoid_rocks(velocity);
         match &mut a.body {
             ReefBody::Physical(p) if wish.gait == Gait::School => {
                 // The physics scene's way: the boid layer's intended velocity,
@@ -1734,26 +1737,10 @@ impl ReefWorld {
             ReefBody::Point(f) => {
                 let velocity = a.intended_m_per_s;
                 let steer = steering::limit((desired - velocity) / RESPONSE_TIME_SECS, max_force);
-                let containment = steering::containment(
-                    position,
-                    velocity,
-                    &self.tank,
-                    look_ahead_s,
-                    margin_m,
-                    top,
-                );
-                let containment = steering::limit(containment / RESPONSE_TIME_SECS, max_force);
-                let avoidance = steering::limit(
-                    steering::avoid_obstacles(
-                        position,
-                        velocity,
-                        self.obstacles.iter(),
-                        3.0,
-                        steering::AVOIDANCE_CLEARANCE_M + 0.5 * length,
-                        top,
-                    ) / RESPONSE_TIME_SECS,
-                    max_force,
-                );
+                let containment =
+                    steering::limit(contain(velocity) / RESPONSE_TIME_SECS, max_force);
+                let avoidance =
+                    steering::limit(avoid_rocks(velocity) / RESPONSE_TIME_SECS, max_force);
                 let force = steering::limit(steer + containment + avoidance, max_force);
                 let params = SteeringParams {
                     max_speed_m_per_s: top,
