@@ -11,7 +11,7 @@
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::body::{BodyCommand, FishBody, MUSCLE_COUNT, NODE_COUNT, PectoralFins, SwimMc, TurnMc};
+use super::body::{FishBody, MUSCLE_COUNT, NODE_COUNT, PectoralFins, SwimMc, TurnMc};
 use super::fish::Fish;
 use super::motor_bridge::{
     MotorBridge, MotorIntent, TOP_SPEED_BODY_LENGTHS_PER_SEC, to_body_frame, to_tank_frame,
@@ -213,15 +213,19 @@ impl PhysicalFish {
             intent.speed_fraction
         };
         let params = self.swim.params_for_speed(speed_fraction);
-        let swim = self.swim.step(&params, dt);
-        let turn = self.turn.step(dt);
-        let mut muscles = super::body::turn_mc::combine_swim_and_turn(&swim, &turn);
-        super::body::turn_mc::add_steering(&mut muscles, intent.steer);
-        let command = BodyCommand {
-            muscle_contractions: muscles,
-            fins: intent.fins,
-        };
-        self.body.step(&command, to_body_frame(water_m_per_s));
+        // The motor controllers are sampled at every substep of the body.
+        let (swim, turn) = (&self.swim, &self.turn);
+        self.body
+            .step_with(&intent.fins, to_body_frame(water_m_per_s), |t| {
+                let mut muscles = super::body::turn_mc::combine_swim_and_turn(
+                    &swim.muscles_at(&params, t),
+                    &turn.muscles_at(t),
+                );
+                super::body::turn_mc::add_steering(&mut muscles, intent.steer);
+                muscles
+            });
+        self.swim.advance(&params, dt);
+        self.turn.advance(dt);
         let forward = self.forward();
         if forward != Vec3::ZERO {
             let k = (dt / HEADING_SMOOTHING_SECS).clamp(0.0, 1.0);
@@ -522,15 +526,13 @@ mod agility {
         let mut swim = SwimMc::default();
         let mut run = |fish: &mut PhysicalFish, s: f32| {
             let params = swim.params_for_speed(speed_fraction);
-            let mut u = swim.step(&params, dt);
-            add_steering_with(&mut u, s, biases);
-            fish.body.step(
-                &BodyCommand {
-                    muscle_contractions: u,
-                    fins: PectoralFins::NEUTRAL,
-                },
-                Vec3::ZERO,
-            );
+            fish.body
+                .step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |t| {
+                    let mut u = swim.muscles_at(&params, t);
+                    add_steering_with(&mut u, s, biases);
+                    u
+                });
+            swim.advance(&params, dt);
             let forward = fish.forward();
             let k = dt / HEADING_SMOOTHING_SECS;
             fish.heading = fish.heading.lerp(forward, k).normalize_or(forward);
@@ -602,11 +604,18 @@ mod agility {
     #[ignore]
     fn steer_sweep() {
         for biases in [
-            [1.0, 1.0, 0.3],
             [1.0, 1.0, 0.5],
-            [1.0, 1.0, 0.7],
-            [1.0, 1.0, 1.0],
-            [0.5, 1.0, 0.5],
+            [1.0, 1.0, 0.0],
+            [1.0, 0.5, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.5, 0.5, 0.0],
+            [0.5, 0.0, 0.0],
+            [0.5, 0.5, 0.5],
+            [0.3, 0.3, 0.3],
+            [0.3, 0.3, 0.0],
+            [0.3, 0.0, 0.0],
+            [0.2, 0.2, 0.2],
+            [0.0, 0.0, 0.3],
         ] {
             for speed in [1.0, 0.5] {
                 let (l, r) = open_loop_steer(speed, 1.0, biases);

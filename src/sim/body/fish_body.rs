@@ -41,86 +41,119 @@
 //! righting couple × k², masses unchanged. This keeps every ratio of the paper's
 //! constants (the fish in paper time is the paper's fish) and is the least invasive
 //! change that lets the tail beat at 1–3 Hz: with k = 40 the same step response has
-//! t63 = 0.05 s, t90 = 0.07 s (with Δt = 0.0055; with the default Δt = 0.055 both
-//! are 0.11 s, two steps, because the command ramps over the first step). The paper's own step, 0.055 paper units, would need
-//! k steps per 0.055 s; [`BodyParams::substeps`] = 8 substeps of 0.0069 s
-//! (0.275 paper units) are enough: one 0.055 s step (2.2 paper units) damps the tail
-//! beat numerically and gives 0.155 body lengths/s at 3 Hz instead of 0.600.
+//! t63 = 0.05 s, t90 = 0.07 s (with Δt = 0.0055). The tail-beat frequencies
+//! scale with k: at k = 30 the whole speed–frequency curve (`motor_controller.rs`)
+//! moves to frequencies 3/4 as high, its collapse from about 4.1 Hz to about
+//! 3.1 Hz, so 3 Hz would sit at the collapse (measured while choosing the
+//! default). The paper's own step, 0.055 paper units, would need k steps per
+//! 0.055 s; [`BodyParams::substeps`] = 16 substeps of 3.4 ms (0.1375 paper
+//! units) are converged (below).
 //!
 //! # Integration
-//! Linearised implicit Euler (Baraff & Witkin 1998), one linear solve per substep:
-//! (M + Δt D + Δt² K) Δv = Δt (f₀ − Δt K v₀), v₁ = v₀ + Δv, x₁ = x₀ + Δt v₁,
+//! Linearised BDF2 (second-order backward differentiation), one linear solve per
+//! substep of length h. With β = 2h/3, x̂ = (4x₀ − x₋₁)/3, v̂ = (4v₀ − v₋₁)/3 (the
+//! state now and one substep back) the scheme is v₁ = v̂ + β M⁻¹ f(x₁, v₁),
+//! x₁ = x̂ + β v₁. The forces are linearised around the extrapolated state
+//! x* = 2x₀ − x₋₁, v* = 2v₀ − v₋₁, which is within O(h²) of the answer, so the
+//! terms that are not implicit (the water's face normals, the spring directions of
+//! the damping, the fins and the righting couple) stay second-order accurate:
+//! (M + βD + β²K) Δv = M (v̂ − v*) + β (f* − K z), z = x̂ + β v* − x*,
+//! v₁ = v* + Δv, x₁ = x̂ + β v₁,
 //! with K = −∂f/∂x of the springs and D = −∂f/∂v of node damping, spring damping and
-//! the water (see `hydrodynamics.rs`). The spring block is
+//! the water (see `hydrodynamics.rs`). The first substep of a new body, or after
+//! the world moved the nodes from outside (a hard constraint), has no history and
+//! is a backward Euler substep (β = h, x̂ = x* = x₀, v̂ = v* = v₀; the scheme of
+//! Baraff & Witkin 1998), [`Integrator::BackwardEuler`] uses it throughout. The spring block is
 //! K_s = c [r̂r̂ᵀ + max(0, 1 − l/‖r‖)(I − r̂r̂ᵀ)]; clamping the transverse term of a
 //! compressed spring at zero keeps K positive semi-definite, so the matrix is
 //! symmetric positive definite and a banded Cholesky solves it
-//! (`banded_cholesky.rs`). Fin forces and the righting couple are explicit (small
-//! and smooth).
+//! (`banded_cholesky.rs`). [`BodyParams::jacobian_interval`] = 2 reuses one
+//! assembled and factorised matrix for 2 substeps (6.9 ms): every substep still
+//! evaluates the forces and the right-hand side at its own state; only the
+//! matrix is up to one substep old.
+//!
+//! The motor controllers are sampled at the end of every substep
+//! ([`FishBody::step_with`]): a 3 Hz beat sampled once per 0.055 s step is only six
+//! points per period, and the linear ramp between them cuts the wave's corners.
+//! [`FishBody::step`] (one command per step, ramped) remains for callers that have
+//! only one command per step.
+//!
+//! # Convergence
+//! `tests::convergence_table` (`cargo test --release --lib convergence_table --
+//! --ignored --nocapture`): speed at full amplitude (body lengths/s) for each
+//! tail-beat frequency, and the heading change of the four key turns of the
+//! steering map (`turn_mc.rs`, tuned on the default body) while swimming at the top
+//! setting (2.3 Hz), against the scheme, the
+//! control sampling and the substeps per 0.055 s step ("matrix every": substeps per
+//! factorisation).
+//!
+//! | integrator | controllers sampled | substeps | matrix every | 1 Hz | 2 Hz | 2.3 Hz (top) | 3 Hz | 4 Hz | 5 Hz | 30° key | 45° key | 60° key | 90° key |
+//! |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|
+//! | backward Euler (before) | once per step | 8 | 1 | 0.175 | 0.436 | 0.499 | 0.600 | 0.662 | 0.662 | 20.7° | 33.3° | 43.1° | 64.3° |
+//! | backward Euler | once per step | 16 | 1 | 0.181 | 0.465 | 0.539 | 0.667 | 0.756 | 0.776 | 23.8° | 38.0° | 49.2° | 72.8° |
+//! | backward Euler | once per step | 32 | 1 | 0.185 | 0.480 | 0.559 | 0.695 | 0.798 | 0.826 | 25.4° | 40.5° | 52.5° | 77.1° |
+//! | backward Euler | every substep | 8 | 1 | 0.177 | 0.457 | 0.527 | 0.646 | 0.742 | 0.785 | 22.2° | 34.8° | 45.1° | 67.9° |
+//! | backward Euler | every substep | 16 | 1 | 0.184 | 0.488 | 0.569 | 0.717 | 0.836 | 0.855 | 25.4° | 39.7° | 51.5° | 77.1° |
+//! | backward Euler | every substep | 32 | 1 | 0.188 | 0.504 | 0.590 | 0.747 | 0.884 | −0.067 | 27.4° | 42.3° | 54.8° | 82.1° |
+//! | backward Euler | every substep | 64 | 1 | 0.190 | 0.513 | 0.602 | 0.762 | 0.904 | −0.101 | 28.6° | 44.1° | 57.0° | 85.1° |
+//! | BDF2 | every substep | 8 | 1 | 0.193 | 0.523 | 0.610 | 0.776 | 0.850 | −0.065 | 30.9° | 47.3° | 61.6° | 91.4° |
+//! | BDF2 | every substep | 12 | 1 | 0.193 | 0.522 | 0.610 | 0.776 | 0.885 | −0.022 | 30.1° | 46.4° | 60.2° | 90.0° |
+//! | BDF2 | every substep | 16 | 1 | 0.193 | 0.523 | 0.610 | 0.777 | 0.893 | −0.046 | 30.0° | 46.4° | 60.3° | 90.3° |
+//! | **BDF2 (default)** | every substep | **16** | **2** | 0.193 | 0.524 | **0.611** | 0.777 | 0.895 | −0.045 | **30.0°** | **46.2°** | **60.0°** | **90.0°** |
+//! | BDF2 | every substep | 24 | 4 | 0.193 | 0.523 | 0.611 | 0.777 | 0.896 | −0.043 | 30.4° | 46.7° | 60.7° | 90.3° |
+//! | BDF2 | every substep | 32 | 4 | 0.193 | 0.523 | 0.613 | 0.777 | 0.900 | −0.027 | 30.4° | 46.7° | 60.5° | 89.7° |
+//! | BDF2 | every substep | 64 | 8 | 0.192 | 0.523 | 0.614 | 0.777 | 0.917 | −0.025 | 30.4° | 46.8° | 60.6° | 89.7° |
+//!
+//! - The old default was far from converged: its top speed and turns grew with every
+//!   doubling, its "saturation" above 3–4 Hz (0.662 at both 4 and 5 Hz) was numerical
+//!   damping, and the turns of the current keys come out about 30 % smaller on it.
+//! - Backward Euler converges only to first order: at 64 substeps a doubling still adds
+//!   2 % to the speed and 4 % to the 90° turn. Sampling the controllers every substep
+//!   removes the ramp's error (0.600 → 0.646 at 3 Hz and 8 substeps).
+//! - BDF2 with per-substep sampling has the speed converged from 8 substeps on
+//!   (0.610–0.614 at 2.3 Hz). From the default, 16 substeps with a matrix every 2, a
+//!   doubling (32 substeps, matrix every 4: as fresh in time) changes the top speed by
+//!   0.3 % and the 30/45/60/90° keys by 1.3 / 1.1 / 0.8 / 0.3 %.
+//!   `tests::the_default_body_is_converged` fails if a doubling changes the top speed
+//!   or a key turn by 3 % or more.
+//! - The 45° key turns 46.2° at the default with its amplitude rounded to four
+//!   decimals (the search's unrounded value turned 44.9°): near that amplitude the turn
+//!   is sensitive to the last digits, a property of the turn, not of the resolution.
+//! - At a 3 Hz top setting the turns converge more slowly (while choosing: from 24
+//!   substeps a doubling still changed the 90° key by 2.7 %), and held-bend steering
+//!   turned at only 6.5°/s instead of 35°/s; at 2.3 Hz both are well behaved and the
+//!   top speed stays the 0.6 body lengths/s every scene was tuned to.
+//! - The 5 Hz column is not a numerical failure: it is the same on every converged row
+//!   (the passive tail fails from 4.25 Hz, `motor_controller.rs`).
 //!
 //! # Cost
 //! Measured with `tests::step_cost` (`cargo test --release --lib step_cost --
-//! --ignored --nocapture`): native release build, a fish swimming at top speed,
-//! minimum of seven batches of 2000 steps, on the development machine (2 cores
-//! shared with other builds; the old code measured 187 µs there when quiet and
-//! 255–280 µs under load, the earlier note said 26–34 µs per substep).
+//! --ignored --nocapture`, a fish swimming at top speed, minimum of seven batches
+//! of 2000 steps; set `STEP_COST=bdf2:24:4,euler:8:1` to time other settings),
+//! native release build on the development machine while two other engineers'
+//! builds shared its two cores, so the absolute figures are high; compare the rows:
 //!
-//! | version | µs per step (8 substeps) | µs per substep |
-//! |---------|-------------------------:|---------------:|
-//! | before: row-by-row Cholesky over the full band, 3×3 f64 block loops | 187 | 23.4 |
-//! | now, exact matrix every substep (default) | 55.5 | 6.9 |
-//! | now, [`BodyParams::jacobian_interval`] = 2 | 38.5 | 4.8 |
-//! | now, [`BodyParams::jacobian_interval`] = 4 | 29.7 | 3.7 |
+//! | scheme | µs per step | µs per substep |
+//! |--------|------------:|---------------:|
+//! | backward Euler, 8 substeps, matrix every substep (the earlier default) | 60.5 | 7.6 |
+//! | BDF2, 8 substeps, matrix every substep | 68.3 | 8.5 |
+//! | BDF2, 16 substeps, matrix every 2 (default) | 94.2 | 5.9 |
+//! | BDF2, 24 substeps, matrix every 4 | 116.1 | 4.8 |
+//! | BDF2, 32 substeps, matrix every 4 | 154.9 | 4.8 |
 //!
-//! The default is 3.4× faster with the same scheme. A substep now spends about
-//! 45 % factorising, 12 % solving, 12 % on the water and the rest on springs, fins,
-//! the righting couple and assembly (perf). What did it: the factorisation follows
-//! the envelope of the matrix instead of the full band (9 300 instead of 14 700
-//! multiply-adds) and works column-major, a node (three columns) at a time, in
-//! contiguous loops the compiler vectorises (`banded_cholesky.rs`); the spring and
-//! water arithmetic runs over arrays (four springs or faces at a time), the blocks
-//! are added straight into the band with no 3×3 loops, and the solve multiplies by
-//! stored reciprocal pivots. Tried and dropped: f32 for the matrix (the tables
-//! printed the same, but a factorisation was only 0.2–0.3 µs faster natively and
-//! would gain nothing on wasm without SIMD, not worth the lost precision);
-//! fixed-length sweeps over zero-padded columns (slower: the compiler no longer
-//! vectorised them); tracking the envelope during assembly instead of scanning each
-//! column, and a branch-free scan (both measured slower).
-//!
-//! The arithmetic is reordered (reciprocal pivots, three products summed before the
-//! subtraction), so results differ from the old code in the last bits, but the speed
-//! table (`tests::speed_table`, all 11 rows to 3 decimals) and the turn table
-//! (`tests::turn_table`: key amplitudes to 4 decimals, all measured turns to 0.1°)
-//! print exactly as before. Still deterministic: no threads, no clocks, no
-//! allocation.
-//!
-//! # Lagged Jacobian (optional, off by default)
-//! [`BodyParams::jacobian_interval`] = n reuses one assembled and factorised matrix
-//! for n substeps (a "frozen Jacobian" semi-implicit scheme): every substep still
-//! evaluates the forces and the K v₀ term of the right-hand side at its own state,
-//! only the matrix (spring directions and lengths, the water's active faces and
-//! normals) is up to n − 1 substeps old. Each step starts with a fresh matrix, so
-//! steps stay independent. Measured with the tables' own routines:
-//!
-//! | n | µs per step | top speed at 1 / 3 / 5 Hz (BL/s) | r of the 30/45/60/90° keys | 50° / 75° turn | 135° / 180° sequence |
-//! |---|------------:|------------------------------|----------------------------|----------------|----------------------|
-//! | 1 | 55.5 | 0.175 / 0.600 / 0.662 | 0.348 / 0.449 / 0.542 / 0.700 | 49.6° / 74.1° | 132.6° / 183.5° |
-//! | 2 | 38.5 | 0.175 / 0.592 / 0.642 | 0.353 / 0.460 / 0.560 / 0.717 | 47.7° / 70.8° | 129.0° / 177.2° |
-//! | 4 | 29.7 | 0.174 / 0.563 / 0.584 | 0.363 / 0.478 / 0.576 / 0.736 | 45.3° / 67.8° | 123.0° / 168.0° |
-//! | 8 | — | diverges | | | |
-//!
-//! Stability: with n = 2 and n = 4 every test of `tests.rs` passes, including the
-//! ten-minute random run (random speeds, fins and currents every 5 s: finite,
-//! spine within ±10 %, no inverted volume, no clamped pivot), and
-//! `tests::a_lagged_jacobian_swims_nearly_like_the_exact_one` checks n = 2 (speed
-//! within 5 %). With n = 8 (one matrix per step) the solve turns non-finite from
-//! 1.5 Hz up, the fish stalls (0.000 BL/s in the speed table) and the random run
-//! and four other tests fail. Chosen: n = 1. The exact scheme already meets the
-//! budget of about 80 µs per fish-step natively, and the lag slows swimming
-//! (n = 2: −1 to −3 % above 2 Hz) and turning (up to −5 %) enough to leave the
-//! tuned speed table (`motor_controller.rs`) and steering map (`turn_mc.rs`)
-//! slightly off; n = 2 stays available per fish where a third of the cost matters
-//! more than that (re-tune both tables if it becomes the default).
+//! The converged body costs about 1.6 times the old one per step. Reusing the matrix
+//! for 4 substeps at 24 (9.2 ms) or 8 at 32 (13.8 ms) leaves speed and turns within
+//! 0.5 % of a fresh matrix every substep; 6 at 24 (13.8 ms) moves the key turns by
+//! up to 1.6 %, 8 at 24 (18 ms) by up to 3 % and slows 4 Hz swimming to 0.54, and
+//! 8 at 16 (27.5 ms) blows up at 3 Hz (measured with the earlier keys while
+//! choosing the default).
+//! A substep with a fresh matrix spends about half its time factorising: the
+//! factorisation follows the envelope of the matrix instead of the full band
+//! and works column-major, a node (three columns) at a time, in contiguous loops
+//! the compiler vectorises (`banded_cholesky.rs`); the spring and water
+//! arithmetic runs over arrays (four springs or faces at a time), the blocks are
+//! added straight into the band, and the solve multiplies by stored reciprocal
+//! pivots. Still deterministic: no threads, no clocks, no allocation.
 
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
@@ -153,8 +186,9 @@ pub struct BodyParams {
     /// Fully contracted muscle rest length as a fraction of the relaxed one
     /// (l_min / l), dimensionless. Default 0.5, tuned (the paper gives no number;
     /// the re-implementation uses 0.7): against the stiffer cross springs a fully
-    /// contracted muscle only reaches 0.67 l at 0.5 (0.87 l at 0.7); top swim speed
-    /// at 3 Hz is 0.600 body lengths/s at 0.5 and 0.357 at 0.7.
+    /// contracted muscle only reaches 0.67 l at 0.5 (0.87 l at 0.7); on the earlier,
+    /// unconverged body (backward Euler, 8 substeps) the top swim speed at 3 Hz was
+    /// 0.600 body lengths/s at 0.5 and 0.357 at 0.7.
     pub muscle_min_length_ratio: f32,
     /// Factor on the paper's water force f = −A (n·v) n, dimensionless. Default 1.0
     /// (the paper's formula as written).
@@ -162,30 +196,33 @@ pub struct BodyParams {
     /// Paper time units per second, k (dimensionless). Default 40.0, tuned (see the
     /// module doc, "Time scale"): the paper never says its time unit is a second, and
     /// with k = 1 swimming saturates at about 0.15 Hz. Measured top speed at 3 Hz
-    /// with 8 substeps: 0.56 (k = 30), 0.60 (k = 40), 0.60 (k = 50) body lengths/s;
+    /// on the earlier body (backward Euler, 8 substeps): 0.56 (k = 30), 0.60
+    /// (k = 40), 0.60 (k = 50) body lengths/s;
     /// k = 20 saturates below 3 Hz (0.014 at 3 Hz, as k = 1 does above 0.15 Hz,
     /// i.e. saturation sits near 0.15·k Hz). Every rate
     /// constant is scaled so that one second here is k paper time units:
     /// stiffness × k², damping, water and fin forces × k, righting couple × k²;
     /// masses and lengths unchanged.
     pub paper_time_units_per_sec: f32,
-    /// Implicit Euler substeps per step, count (clamped to 1..=[`MAX_SUBSTEPS`]).
-    /// Default 8, tuned: each substep is 0.0069 s = 0.275 paper time units at the
-    /// default k = 40. Top speed at 3 Hz: 0.155 (1 substep), 0.525 (5), 0.600 (8)
-    /// body lengths/s. Cost grows linearly (about 7 µs per substep on the
-    /// development machine, see the module doc, "Cost", and `tests::step_cost`).
+    /// Implicit substeps per step, count (clamped to 1..=[`MAX_SUBSTEPS`]).
+    /// Default 16, measured: each substep is 3.4 ms = 0.1375 paper time units at
+    /// the default k = 40, and doubling them changes the top speed by 0.3 % and the
+    /// key turns by at most 1.3 % (module doc, "Convergence"). Cost grows about
+    /// linearly (module doc, "Cost").
     pub substeps: u32,
     /// Substeps that share one system matrix and its factorisation (a lagged or
-    /// "frozen" Jacobian), count, clamped to 1..=`substeps`. Default 1, chosen: every
-    /// substep solves with its own exact matrix, the scheme the speed table
-    /// (`motor_controller.rs`) and the steering map (`turn_mc.rs`) were tuned with.
-    /// Forces and the right-hand side are always evaluated at the current state;
-    /// only the matrix is reused. Larger values are cheaper but change the motion
-    /// (measured, see the module doc, "Lagged Jacobian"): 2 saves a third of the
-    /// cost (38 instead of 56 µs per step) and slows swimming by 0–3 % and turns by
-    /// up to 5 %; 4 costs 30 µs, −2 to −12 % and up to −10 %; 8 blows up.
+    /// "frozen" Jacobian), count, clamped to 1..=`substeps`. Default 2, measured:
+    /// one factorisation per 6.9 ms; forces and the right-hand side are always
+    /// evaluated at the current state, only the matrix is reused, and the speed and
+    /// key turns stay within 0.5 % of a fresh matrix every substep (module doc,
+    /// "Cost"). Keep the matrix younger than about 10 ms when changing `substeps`.
     #[serde(default = "one")]
     pub jacobian_interval: u32,
+    /// The implicit scheme of each substep. Default [`Integrator::Bdf2`], chosen:
+    /// second order, converged at 16 substeps where backward Euler is not at 64
+    /// (module doc, "Convergence").
+    #[serde(default)]
+    pub integrator: Integrator,
     /// Strength of the righting couple per ring, paper force units per unit of
     /// sin(tilt). Default 20.0, chosen (not tuned): keeps the fish level and upright
     /// in every test run; without it the body pitches nose-down by about 24° while
@@ -208,8 +245,9 @@ impl Default for BodyParams {
             muscle_min_length_ratio: 0.5,
             water_drag_coefficient: 1.0,
             paper_time_units_per_sec: 40.0,
-            substeps: 8,
-            jacobian_interval: 1,
+            substeps: 16,
+            jacobian_interval: 2,
+            integrator: Integrator::Bdf2,
             righting_force: 20.0,
             pectoral_fin_area: 6.0,
         }
@@ -218,6 +256,30 @@ impl Default for BodyParams {
 
 fn one() -> u32 {
     1
+}
+
+/// The implicit scheme of a substep (see the module doc, "Integration").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Integrator {
+    /// Linearised implicit (backward) Euler: first order, strongly damping.
+    BackwardEuler,
+    /// Linearised second-order backward differentiation (BDF2): second order, still
+    /// L-stable; one linear solve per substep like backward Euler. Needs the state
+    /// one substep back; the first substep after a change from outside (a new body,
+    /// a hard constraint moving nodes) is a backward Euler substep.
+    #[default]
+    Bdf2,
+}
+
+/// The state one substep before the current one, for BDF2, and the current state
+/// it belongs to (if the nodes were moved from outside since, it is stale).
+#[derive(Clone, Debug)]
+struct History {
+    previous_positions_m: [Vec3; NODE_COUNT],
+    previous_velocities_m_per_s: [Vec3; NODE_COUNT],
+    positions_m: [Vec3; NODE_COUNT],
+    velocities_m_per_s: [Vec3; NODE_COUNT],
 }
 
 /// What the brain sends the body each step.
@@ -245,6 +307,10 @@ pub struct FishBody {
     metres_per_paper_unit: f32,
     /// Implicit system, allocated once.
     system: Box<BandedCholesky>,
+    /// β of the factorised matrix M + βD + β²K (0: none yet).
+    system_beta: f32,
+    /// For BDF2 (see [`History`]).
+    history: Option<Box<History>>,
     steps: u64,
 }
 
@@ -305,6 +371,8 @@ impl FishBody {
             params,
             metres_per_paper_unit: s,
             system: Box::default(),
+            system_beta: 0.0,
+            history: None,
             steps: 0,
         }
     }
@@ -465,53 +533,132 @@ impl FishBody {
     }
 
     /// Advances the body by one fixed step Δt = `params.dt_secs`, as
-    /// `params.substeps` implicit Euler substeps; the muscle contractions ramp
-    /// linearly from the previous command to this one across the substeps.
+    /// `params.substeps` implicit substeps; the muscle contractions ramp
+    /// linearly from the previous command to this one across the substeps (for a
+    /// caller that knows one command per step; [`Self::step_with`] samples the
+    /// controller at every substep).
     /// `water_velocity_m_per_s` is the current at the fish (uniform over the body).
     pub fn step(&mut self, command: &BodyCommand, water_velocity_m_per_s: Vec3) {
+        let previous = self.muscle_contractions;
+        let target = command.muscle_contractions.map(sanitize_contraction);
+        let dt = self.params.dt_secs;
+        self.step_with(&command.fins, water_velocity_m_per_s, |t| {
+            let a = if dt > 0.0 {
+                (t / dt).clamp(0.0, 1.0)
+            } else {
+                1.0
+            };
+            let mut u = previous;
+            for (u, b) in u.iter_mut().zip(target) {
+                *u += (b - *u) * a;
+            }
+            u
+        });
+    }
+
+    /// Advances the body by one fixed step Δt = `params.dt_secs`, as
+    /// `params.substeps` implicit substeps, asking `muscles_at(t)` for the muscle
+    /// contractions at the end of each substep, t seconds after the start of the
+    /// step (0 < t ≤ Δt). Values are clamped to [0, 1], NaN is 0.
+    pub fn step_with(
+        &mut self,
+        fins: &PectoralFins,
+        water_velocity_m_per_s: Vec3,
+        mut muscles_at: impl FnMut(f32) -> [f32; MUSCLE_COUNT],
+    ) {
         let water = if water_velocity_m_per_s.is_finite() {
             water_velocity_m_per_s
         } else {
             Vec3::ZERO
         };
-        let previous = self.muscle_contractions;
-        let target = command.muscle_contractions.map(|c| {
-            if c.is_finite() {
-                c.clamp(0.0, 1.0)
-            } else {
-                0.0
-            }
-        });
         let substeps = self.params.substeps.clamp(1, MAX_SUBSTEPS);
         let h = self.params.dt_secs / substeps as f32;
         let interval = self.params.jacobian_interval.clamp(1, substeps);
-        for j in 1..=substeps {
-            let t = j as f32 / substeps as f32;
-            for (u, (a, b)) in self
-                .muscle_contractions
-                .iter_mut()
-                .zip(previous.iter().zip(target))
+        let bdf2 = self.params.integrator == Integrator::Bdf2;
+        // BDF2 continues from the last substep only if nobody moved the nodes since.
+        let mut previous = match self.history.take() {
+            Some(hist)
+                if bdf2
+                    && hist.positions_m == self.positions_m
+                    && hist.velocities_m_per_s == self.velocities_m_per_s =>
             {
-                *u = a + (b - a) * t;
+                Some((hist.previous_positions_m, hist.previous_velocities_m_per_s))
             }
-            let refresh = (j - 1) % interval == 0;
-            self.substep(&command.fins, water, h, refresh);
+            _ => None,
+        };
+        for j in 1..=substeps {
+            self.muscle_contractions = muscles_at(j as f32 * h).map(sanitize_contraction);
+            let now = (self.positions_m, self.velocities_m_per_s);
+            let beta = if previous.is_some() { 2.0 * h / 3.0 } else { h };
+            let refresh = (j - 1) % interval == 0 || beta != self.system_beta;
+            self.substep(fins, water, h, refresh, previous.as_ref());
+            if bdf2 {
+                previous = Some(now);
+            }
+        }
+        if let Some((x, v)) = previous {
+            self.history = Some(Box::new(History {
+                previous_positions_m: x,
+                previous_velocities_m_per_s: v,
+                positions_m: self.positions_m,
+                velocities_m_per_s: self.velocities_m_per_s,
+            }));
         }
         self.steps += 1;
     }
 
-    /// One linearised implicit Euler step of `h` seconds with the current muscle
-    /// contractions. With `refresh` the system matrix is assembled and factorised
+    /// One linearised implicit substep of `h` seconds with the current muscle
+    /// contractions: backward Euler, or BDF2 when `previous` (the state one substep
+    /// back) is given. With `refresh` the system matrix is assembled and factorised
     /// anew; otherwise the factorisation of an earlier substep is reused.
-    fn substep(&mut self, fins: &PectoralFins, water: Vec3, h: f32, refresh: bool) {
-        let h64 = f64::from(h);
+    fn substep(
+        &mut self,
+        fins: &PectoralFins,
+        water: Vec3,
+        h: f32,
+        refresh: bool,
+        previous: Option<&([Vec3; NODE_COUNT], [Vec3; NODE_COUNT])>,
+    ) {
+        // β multiplies the forces in both schemes: h for backward Euler, 2h/3 for
+        // BDF2 (see the module doc).
+        let beta = if previous.is_some() { 2.0 * h / 3.0 } else { h };
+        let h64 = f64::from(beta);
         let mass_scale = self.mass_scale();
         let k_time = self.time_scale();
         let force_scale = self.force_scale() * k_time * k_time;
         let stiffness_scale = mass_scale * k_time * k_time;
         let damping_scale = mass_scale * k_time;
-        let x = self.positions_m;
-        let v = self.velocities_m_per_s;
+        // The state now (x₀, v₀), and the point (x*, v*) the forces are evaluated
+        // and linearised at: the state now for backward Euler, the extrapolation
+        // 2 y₀ − y₋₁ for BDF2 (see the module doc, "Integration").
+        let (x0, v0) = (self.positions_m, self.velocities_m_per_s);
+        let (x, v) = match previous {
+            Some((xp, vp)) => (
+                std::array::from_fn(|i| 2.0 * x0[i] - xp[i]),
+                std::array::from_fn(|i| 2.0 * v0[i] - vp[i]),
+            ),
+            None => (x0, v0),
+        };
+        // Read by `forward`, `up` and `velocity_m_per_s` below.
+        self.positions_m = x;
+        self.velocities_m_per_s = v;
+        // Where the new position starts from (x̂), the vector K is applied to on the
+        // right-hand side (z) and the momentum term (m): backward Euler x̂ = x₀,
+        // z = h v₀, m = 0; BDF2 x̂ = (4x₀ − x₋₁)/3, z = x̂ + β v* − x*,
+        // m = (4v₀ − v₋₁)/3 − v*.
+        let (x_hat, z, momentum): ([Vec3; NODE_COUNT], [Vec3; NODE_COUNT], [Vec3; NODE_COUNT]) =
+            match previous {
+                Some((xp, vp)) => {
+                    let x_hat: [Vec3; NODE_COUNT] =
+                        std::array::from_fn(|i| (4.0 * x0[i] - xp[i]) / 3.0);
+                    (
+                        x_hat,
+                        std::array::from_fn(|i| x_hat[i] + beta * v[i] - x[i]),
+                        std::array::from_fn(|i| (4.0 * v0[i] - vp[i]) / 3.0 - v[i]),
+                    )
+                }
+                None => (x0, v0.map(|v| h * v), [Vec3::ZERO; NODE_COUNT]),
+            };
 
         // Actuated rest lengths.
         let mut rest = self.rest_lengths_m;
@@ -533,7 +680,7 @@ impl FishBody {
             system.clear();
         }
         let mut forces = [Vec3::ZERO; NODE_COUNT];
-        // K v₀ (for the right-hand side).
+        // K z (for the right-hand side).
         let mut k_v = [Vec3::ZERO; NODE_COUNT];
 
         // Mass and node damping.
@@ -553,12 +700,14 @@ impl FishBody {
         let spring_damping = self.params.spring_damping * damping_scale;
         let mut r = [[0.0f32; SPRING_COUNT]; 3];
         let mut w = [[0.0f32; SPRING_COUNT]; 3];
+        let mut y = [[0.0f32; SPRING_COUNT]; 3];
         for (k, sp) in SPRINGS.iter().enumerate() {
             let (d, u) = (x[sp.b] - x[sp.a], v[sp.b] - v[sp.a]);
             [r[0][k], r[1][k], r[2][k]] = d.to_array();
             [w[0][k], w[1][k], w[2][k]] = u.to_array();
+            [y[0][k], y[1][k], y[2][k]] = (z[sp.b] - z[sp.a]).to_array();
         }
-        let terms = spring_terms(&r, &w, &rest, stiffness_scale, spring_damping, h);
+        let terms = spring_terms(&r, &w, &y, &rest, stiffness_scale, spring_damping, beta);
         for (k, sp) in SPRINGS.iter().enumerate() {
             let dir = Vec3::new(terms.dir[0][k], terms.dir[1][k], terms.dir[2][k]);
             let f = terms.force[k] * dir;
@@ -614,16 +763,18 @@ impl FishBody {
             forces[vl] -= g;
         }
 
-        // Solve (M + hD + h²K) Δv = h (f₀ − h K v₀).
+        // Solve (M + βD + β²K) Δv = M (v₀ − v₋₁)/3 + β (f₀ − K z) (the first term
+        // only for BDF2).
         let mut rhs = [0.0f64; SYSTEM_SIZE];
         for i in 0..NODE_COUNT {
-            let b = h * (forces[i] - h * k_v[i]);
+            let b = beta * (forces[i] - k_v[i]) + MASSES[i] * mass_scale * momentum[i];
             rhs[3 * i] = f64::from(b.x);
             rhs[3 * i + 1] = f64::from(b.y);
             rhs[3 * i + 2] = f64::from(b.z);
         }
         if refresh {
             system.factorize();
+            self.system_beta = beta;
         }
         system.solve(&mut rhs);
         for i in 0..NODE_COUNT {
@@ -633,10 +784,14 @@ impl FishBody {
                 rhs[3 * i + 2] as f32,
             );
             let v1 = v[i] + dv;
+            let x1 = x_hat[i] + beta * v1;
             // Never let a non-finite value in: keep the old state for that node.
-            if v1.is_finite() {
+            if v1.is_finite() && x1.is_finite() {
                 self.velocities_m_per_s[i] = v1;
-                self.positions_m[i] = x[i] + h * v1;
+                self.positions_m[i] = x1;
+            } else {
+                self.velocities_m_per_s[i] = v0[i];
+                self.positions_m[i] = x0[i];
             }
         }
     }
@@ -650,25 +805,27 @@ struct SpringTerms {
     /// Scalar force along r̂ on node a (node b gets the opposite):
     /// c (‖r‖ − l) + d (v_b − v_a)·r̂.
     force: [f32; SPRING_COUNT],
-    /// K_s (v_a − v_b) with K_s = c [(1 − t) r̂r̂ᵀ + t I], t = max(0, 1 − l/‖r‖).
+    /// K_s (z_a − z_b) with K_s = c [(1 − t) r̂r̂ᵀ + t I], t = max(0, 1 − l/‖r‖).
     k_v: [[f32; SPRING_COUNT]; 3],
-    /// The spring's block of the system matrix, h² K_s + h d r̂r̂ᵀ = along · r̂r̂ᵀ +
-    /// across · I: along = h² c (1 − t) + h d, across = h² c t.
+    /// The spring's block of the system matrix, β² K_s + β d r̂r̂ᵀ = along · r̂r̂ᵀ +
+    /// across · I: along = β² c (1 − t) + β d, across = β² c t.
     along: [f32; SPRING_COUNT],
     across: [f32; SPRING_COUNT],
 }
 
-/// The arithmetic of every spring at once from its vector `r` = x_b − x_a and
-/// relative velocity `w` = v_b − v_a (component arrays), `rest` lengths, the
-/// stiffness scale, damping `d` and substep `h`. Straight-line code over arrays, so
+/// The arithmetic of every spring at once from its vector `r` = x_b − x_a,
+/// relative velocity `w` = v_b − v_a and `y` = z_b − z_a of the vector K is
+/// applied to (component arrays), `rest` lengths, the stiffness scale, damping `d`
+/// and the scheme's β (h for backward Euler). Straight-line code over arrays, so
 /// the compiler runs it on four springs at a time.
 fn spring_terms(
     r: &[[f32; SPRING_COUNT]; 3],
     w: &[[f32; SPRING_COUNT]; 3],
+    y: &[[f32; SPRING_COUNT]; 3],
     rest: &[f32; SPRING_COUNT],
     stiffness_scale: f32,
     d: f32,
-    h: f32,
+    beta: f32,
 ) -> SpringTerms {
     let mut out = SpringTerms {
         dir: [[0.0; SPRING_COUNT]; 3],
@@ -680,6 +837,7 @@ fn spring_terms(
     for k in 0..SPRING_COUNT {
         let (rx, ry, rz) = (r[0][k], r[1][k], r[2][k]);
         let (wx, wy, wz) = (w[0][k], w[1][k], w[2][k]);
+        let (yx, yy, yz) = (y[0][k], y[1][k], y[2][k]);
         let len = (rx * rx + ry * ry + rz * rz).sqrt();
         let inverse = 1.0 / len;
         // As `normalize_or_zero`: a zero or non-finite length gives no direction.
@@ -693,17 +851,17 @@ fn spring_terms(
         } else {
             0.0
         };
-        let g = c * (1.0 - transverse) * rel_speed;
+        let g = c * (1.0 - transverse) * (yx * dx + yy * dy + yz * dz);
         let ct = c * transverse;
         out.dir[0][k] = dx;
         out.dir[1][k] = dy;
         out.dir[2][k] = dz;
         out.force[k] = c * (len - rest[k]) + d * rel_speed;
-        out.k_v[0][k] = -(g * dx + ct * wx);
-        out.k_v[1][k] = -(g * dy + ct * wy);
-        out.k_v[2][k] = -(g * dz + ct * wz);
-        out.along[k] = h * h * c * (1.0 - transverse) + h * d;
-        out.across[k] = h * h * ct;
+        out.k_v[0][k] = -(g * dx + ct * yx);
+        out.k_v[1][k] = -(g * dy + ct * yy);
+        out.k_v[2][k] = -(g * dz + ct * yz);
+        out.along[k] = beta * beta * c * (1.0 - transverse) + beta * d;
+        out.across[k] = beta * beta * ct;
     }
     out
 }
@@ -718,3 +876,12 @@ const STIFFNESS: [f32; SPRING_COUNT] = {
     }
     c
 };
+
+/// A muscle contraction clamped to [0, 1]; NaN is 0.
+fn sanitize_contraction(c: f32) -> f32 {
+    if c.is_finite() {
+        c.clamp(0.0, 1.0)
+    } else {
+        0.0
+    }
+}

@@ -19,7 +19,7 @@ pub mod turn_mc;
 mod tests;
 
 pub use body_layout::{MUSCLE_COUNT, MuscleSegment, NODE_COUNT, SPRING_COUNT, Side};
-pub use fish_body::{BodyCommand, BodyParams, FishBody};
-pub use motor_controller::{SwimMc, SwimParams};
+pub use fish_body::{BodyCommand, BodyParams, FishBody, Integrator};
+pub use motor_controller::{ControlSampling, SwimMc, SwimParams};
 pub use pectoral_fins::PectoralFins;
 pub use turn_mc::{SteeringMap, TurnDirection, TurnMc, TurnParams};

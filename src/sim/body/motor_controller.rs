@@ -7,38 +7,51 @@
 //! # Deviation from the paper: posterior lag 30°, not 180°
 //! The paper lags the posterior segment 180° behind the anterior one. With this body
 //! (two short, adjacent actuated segments, each 0.19 body lengths long) a 180° lag
-//! makes a standing S-wave and gives almost no thrust: measured 0.012, 0.017 and
-//! 0.013 body lengths/s at 1, 2 and 3 Hz. A small lag makes a travelling wave
-//! (resistive thrust needs one). Measured at 3 Hz, 40 s runs, k = 30 with 5
-//! substeps (a setting tried on the way): lag 30° 0.50, 45° 0.49, 60° 0.47,
-//! 90° 0.41 body lengths/s; with the defaults (k = 40, 8 substeps) 30° 0.60 and
-//! 45° 0.59. Default 30°, tuned. The lag is a parameter.
+//! makes a standing S-wave and no thrust. Measured on the default body at the top
+//! setting, 2.3 Hz (`tests::wave_table`): lag 0° 0.611, 30° 0.611, 90° 0.453,
+//! 180° −0.003 body lengths/s. So the lag between the two segments does not make
+//! the travelling wave: 0° swims as fast as 30°. The wave comes from the passive tail, which the
+//! water drags behind the actuated body: the tail fin's sideways motion lags the
+//! last body ring's by about 45° at every frequency from 1 to 4 Hz. Default 30°,
+//! kept (as fast as 0°; the lag is a parameter).
 //!
-//! # Measured speed table (tuning routine: `tests::speed_table`, 26-unit fish,
-//! default `BodyParams` (k = 40 paper time units per second, 8 substeps of the
-//! fixed Δt = 0.055 s), lag 30°, 60 s runs, speed over the last 30 s)
+//! # Measured speed table (`tests::speed_table`, 26-unit fish, default
+//! `BodyParams`: k = 40 paper time units per second, 16 BDF2 substeps of the fixed
+//! Δt = 0.055 s with the controllers sampled at every substep, converged: see
+//! `fish_body.rs`; lag 30°, 60 s runs, speed over the last 30 s)
 //!
 //! | amplitude r1 = r2 | frequency s (Hz) | speed (body lengths/s) |
 //! |-------------------|------------------|------------------------|
-//! | 1.0               | 0.5              | 0.069                  |
-//! | 1.0               | 1.0              | 0.175                  |
-//! | 1.0               | 1.5              | 0.307                  |
-//! | 1.0               | 2.0              | 0.436                  |
-//! | 1.0               | 2.5              | 0.534                  |
-//! | 1.0               | 3.0              | 0.600 (top, ŝ)         |
-//! | 1.0               | 4.0              | 0.662 (saturating)     |
-//! | 1.0               | 5.0              | 0.662                  |
-//! | 0.75              | 3.0              | 0.461                  |
-//! | 0.5               | 3.0              | 0.284                  |
-//! | 0.25              | 3.0              | 0.115                  |
+//! | 1.0               | 0.5              | 0.073                  |
+//! | 1.0               | 1.0              | 0.193                  |
+//! | 1.0               | 1.5              | 0.351                  |
+//! | 1.0               | 2.0              | 0.524                  |
+//! | 1.0               | 2.3              | 0.611 (top, ŝ)         |
+//! | 1.0               | 2.5              | 0.661                  |
+//! | 1.0               | 3.0              | 0.777                  |
+//! | 1.0               | 4.0              | 0.895                  |
+//! | 1.0               | 5.0              | −0.045 (fails)         |
+//! | 0.75              | 2.3              | 0.450                  |
+//! | 0.5               | 2.3              | 0.259                  |
+//! | 0.25              | 2.3              | 0.096                  |
 //!
-//! Speed is proportional to amplitude and grows about linearly with frequency up to
-//! about 3 Hz, then saturates (4 and 5 Hz give the same 0.66), as the paper (after
-//! Webb) reports "below certain threshold values". That is 0.2 body lengths per
-//! tail beat at the top, a third of a real fish's 0.6–0.7 (no reactive/added-mass
-//! force in the paper's model, a small tail fin). Maximal parameters:
-//! r̂1 = r̂2 = 1, ŝ1 = ŝ2 = 3 Hz (inside the 1–3 Hz of real cruising fish).
-//! The turn-MCs are in `turn_mc.rs`.
+//! Speed grows with amplitude and, up to about 2.5 Hz, about linearly with
+//! frequency (0.26 body lengths per tail beat at 2 and 3 Hz), then more slowly: the
+//! tail fin's sideways amplitude stops growing (0.17, 0.19, 0.19 body lengths at 2,
+//! 3, 4 Hz)
+//! while the water's drag on the body grows with speed. Between 4 and 4.25 Hz
+//! the passive tail fails: its amplitude falls five-fold (0.19 → 0.035 body
+//! lengths) and it swings 124–140° behind the last ring instead of 45°, and
+//! the fish stops or backs (`tests::wave_table`). That cliff is a property of
+//! this model's light, passive tail in the one-sided water force (the same at 16
+//! and 64 substeps); it is not Webb's biological threshold, and the paper's
+//! "below certain threshold values" is not reproduced by any mechanism of the
+//! model. Maximal parameters: r̂1 = r̂2 = 1, ŝ1 = ŝ2 = 2.3 Hz, chosen: the top
+//! speed, 0.611 body lengths/s, stays the 0.6 that every scene was tuned to
+//! (`motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC`), inside the 1–3 Hz of real
+//! cruising fish, 2 Hz below the cliff; at 3 Hz (0.777) the turns converge more
+//! slowly and held-bend steering is weak (`fish_body.rs`, "Convergence"). The
+//! turn-MCs are in `turn_mc.rs`.
 
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{FRAC_PI_6, TAU};
@@ -64,9 +77,9 @@ impl SwimParams {
     /// tuning routine (see the module doc).
     pub const MAX: Self = Self {
         anterior_amplitude: 1.0,
-        anterior_frequency_hz: 3.0,
+        anterior_frequency_hz: 2.3,
         posterior_amplitude: 1.0,
-        posterior_frequency_hz: 3.0,
+        posterior_frequency_hz: 2.3,
     };
 }
 
@@ -116,15 +129,42 @@ impl SwimMc {
     /// (turning-only anterior segment left relaxed). Phases are continuous when the
     /// frequency changes.
     pub fn step(&mut self, params: &SwimParams, dt_secs: f32) -> [f32; MUSCLE_COUNT] {
-        let advance = |phase: &mut f32, f: f32| {
-            let f = if f.is_finite() { f.max(0.0) } else { 0.0 };
-            *phase = (*phase + TAU * f * dt_secs).rem_euclid(TAU);
-        };
-        advance(&mut self.anterior_phase_rad, params.anterior_frequency_hz);
-        advance(&mut self.posterior_phase_rad, params.posterior_frequency_hz);
+        self.advance(params, dt_secs);
+        self.muscles_at(params, 0.0)
+    }
+
+    /// Advances the oscillators by `dt_secs` (continuous when the frequency
+    /// changes).
+    pub fn advance(&mut self, params: &SwimParams, dt_secs: f32) {
+        self.anterior_phase_rad = phase_after(
+            self.anterior_phase_rad,
+            params.anterior_frequency_hz,
+            dt_secs,
+        );
+        self.posterior_phase_rad = phase_after(
+            self.posterior_phase_rad,
+            params.posterior_frequency_hz,
+            dt_secs,
+        );
+    }
+
+    /// The 12 muscle contractions `t_secs` after the oscillators' current phase,
+    /// without advancing them (what the body samples within a step, see
+    /// `FishBody::step_with`).
+    pub fn muscles_at(&self, params: &SwimParams, t_secs: f32) -> [f32; MUSCLE_COUNT] {
         let mut u = [0.0; MUSCLE_COUNT];
-        let a = self.anterior_phase_rad.sin();
-        let p = (self.posterior_phase_rad - self.posterior_lag_rad).sin();
+        let a = phase_after(
+            self.anterior_phase_rad,
+            params.anterior_frequency_hz,
+            t_secs,
+        )
+        .sin();
+        let p = (phase_after(
+            self.posterior_phase_rad,
+            params.posterior_frequency_hz,
+            t_secs,
+        ) - self.posterior_lag_rad)
+            .sin();
         set_side_pair(&mut u, MuscleSegment::Middle, params.anterior_amplitude, a);
         set_side_pair(
             &mut u,
@@ -134,6 +174,29 @@ impl SwimMc {
         );
         u
     }
+}
+
+/// An oscillator's phase `dt_secs` after `phase_rad` at `frequency_hz` (negative or
+/// NaN counts as 0), wrapped to [0, 2π).
+fn phase_after(phase_rad: f32, frequency_hz: f32, dt_secs: f32) -> f32 {
+    let f = if frequency_hz.is_finite() {
+        frequency_hz.max(0.0)
+    } else {
+        0.0
+    };
+    (phase_rad + TAU * f * dt_secs).rem_euclid(TAU)
+}
+
+/// How the motor controllers feed the body within a step of Δt.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ControlSampling {
+    /// Once per step; the body ramps linearly from the last command to the new one
+    /// across its substeps (`FishBody::step`).
+    PerStep,
+    /// At the end of every substep (`FishBody::step_with`).
+    #[default]
+    PerSubstep,
 }
 
 /// Left side contracts with r·max(0, w), right side with r·max(0, −w).

@@ -7,7 +7,10 @@
 use glam::Vec3;
 
 use super::body_layout::{REST_POSITIONS, TRIANGLES};
-use super::{BodyCommand, BodyParams, FishBody, PectoralFins, SwimMc, SwimParams};
+use super::{
+    BodyCommand, BodyParams, ControlSampling, FishBody, Integrator, PectoralFins, SwimMc,
+    SwimParams,
+};
 
 /// Length of the test fish in metres: the paper's 26 units, so numbers read as paper
 /// units.
@@ -24,25 +27,42 @@ fn swim(params: SwimParams, fins: PectoralFins, secs: f32) -> (FishBody, Vec3) {
     )
 }
 
-/// As [`swim`] from a given fish.
+/// As [`swim`] from a given fish, the controller sampled at every substep.
 fn swim_from(
-    mut fish: FishBody,
+    fish: FishBody,
     params: SwimParams,
     fins: PectoralFins,
     secs: f32,
 ) -> (FishBody, Vec3) {
+    swim_sampled(fish, params, fins, secs, ControlSampling::default())
+}
+
+/// As [`swim_from`] with the controller sampled as `sampling` says.
+fn swim_sampled(
+    mut fish: FishBody,
+    params: SwimParams,
+    fins: PectoralFins,
+    secs: f32,
+    sampling: ControlSampling,
+) -> (FishBody, Vec3) {
     let mut mc = SwimMc::default();
-    let steps = (secs / fish.dt_secs()) as usize;
+    let dt = fish.dt_secs();
+    let steps = (secs / dt) as usize;
     let mut half = Vec3::ZERO;
     for k in 0..steps {
-        let u = mc.step(&params, fish.dt_secs());
-        fish.step(
-            &BodyCommand {
-                muscle_contractions: u,
-                fins,
-            },
-            Vec3::ZERO,
-        );
+        match sampling {
+            ControlSampling::PerStep => fish.step(
+                &BodyCommand {
+                    muscle_contractions: mc.muscles_at(&params, dt),
+                    fins,
+                },
+                Vec3::ZERO,
+            ),
+            ControlSampling::PerSubstep => {
+                fish.step_with(&fins, Vec3::ZERO, |t| mc.muscles_at(&params, t));
+            }
+        }
+        mc.advance(&params, dt);
         if k + 1 == steps / 2 {
             half = fish.centre_of_mass_m();
         }
@@ -52,7 +72,14 @@ fn swim_from(
 
 /// Mean forward speed over the second half of a 60 s run, body lengths per second.
 fn speed_bl_per_s(params: SwimParams) -> f32 {
-    let (fish, half) = swim(params, PectoralFins::NEUTRAL, 60.0);
+    speed_with(params, BodyParams::default(), ControlSampling::default())
+}
+
+/// [`speed_bl_per_s`] on a body with `body` parameters, the controller sampled as
+/// `sampling` says.
+fn speed_with(params: SwimParams, body: BodyParams, sampling: ControlSampling) -> f32 {
+    let fish = FishBody::with_params(LENGTH_M, Vec3::ZERO, Vec3::X, body);
+    let (fish, half) = swim_sampled(fish, params, PectoralFins::NEUTRAL, 60.0, sampling);
     (fish.centre_of_mass_m() - half).x / 30.0 / LENGTH_M
 }
 
@@ -263,23 +290,220 @@ fn braking_fins_reduce_speed() {
     assert!(v_braked < 0.8 * v_free, "braked {v_braked} free {v_free}");
 }
 
+/// Top speed (the swim-MC's maximal parameters, body lengths/s) and the heading
+/// change of the four key turns of `SteeringMap::DEFAULT` (30/45/60/90°, left,
+/// degrees) on a body with `body` parameters, the controllers sampled as
+/// `sampling` says.
+fn resolution_row(body: BodyParams, sampling: ControlSampling) -> (f32, [f32; 4]) {
+    use super::turn_mc::{SteeringMap, TurnDirection, measure_turn_deg_with};
+    let top = speed_with(SwimParams::MAX, body, sampling);
+    let turns = SteeringMap::DEFAULT
+        .keys
+        .map(|(_, p)| measure_turn_deg_with(p, TurnDirection::Left, body, sampling));
+    (top, turns)
+}
+
+/// The default body at twice its time resolution: twice the substeps (so the
+/// controllers are sampled twice as often too), the matrix refreshed as often in
+/// time.
+fn doubled(body: BodyParams) -> BodyParams {
+    BodyParams {
+        substeps: 2 * body.substeps,
+        jacobian_interval: 2 * body.jacobian_interval,
+        ..body
+    }
+}
+
+#[test]
+fn the_default_body_is_converged() {
+    // Doubling the time resolution changes the top speed and every key turn by
+    // less than 3 %: what the tables say is the model, not the integrator.
+    let body = BodyParams::default();
+    let sampling = ControlSampling::default();
+    let (top, turns) = resolution_row(body, sampling);
+    let (top2, turns2) = resolution_row(doubled(body), sampling);
+    let change = |a: f32, b: f32| (b / a - 1.0).abs();
+    assert!(change(top, top2) < 0.03, "top speed {top} → {top2} BL/s");
+    for (k, (a, b)) in turns.into_iter().zip(turns2).enumerate() {
+        assert!(change(a, b) < 0.03, "key turn {k}: {a}° → {b}°");
+    }
+    // The bridge's top speed is the body's.
+    let bridge = crate::sim::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
+    assert!(
+        change(bridge, top) < 0.03,
+        "bridge {bridge}, body {top} BL/s"
+    );
+}
+
+/// The convergence table of `docs/fish-body.md`: top speed (3 Hz) and the key
+/// turns against integrator, control sampling and substeps, plus the speed at
+/// other frequencies.
+/// `cargo test --release --lib convergence_table -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn convergence_table() {
+    let rows: [(Integrator, ControlSampling, u32, u32); 14] = [
+        (Integrator::BackwardEuler, ControlSampling::PerStep, 8, 1),
+        (Integrator::BackwardEuler, ControlSampling::PerStep, 16, 1),
+        (Integrator::BackwardEuler, ControlSampling::PerStep, 32, 1),
+        (Integrator::BackwardEuler, ControlSampling::PerSubstep, 8, 1),
+        (
+            Integrator::BackwardEuler,
+            ControlSampling::PerSubstep,
+            16,
+            1,
+        ),
+        (
+            Integrator::BackwardEuler,
+            ControlSampling::PerSubstep,
+            32,
+            1,
+        ),
+        (
+            Integrator::BackwardEuler,
+            ControlSampling::PerSubstep,
+            64,
+            1,
+        ),
+        (Integrator::Bdf2, ControlSampling::PerSubstep, 8, 1),
+        (Integrator::Bdf2, ControlSampling::PerSubstep, 12, 1),
+        (Integrator::Bdf2, ControlSampling::PerSubstep, 16, 1),
+        (Integrator::Bdf2, ControlSampling::PerSubstep, 16, 2),
+        (Integrator::Bdf2, ControlSampling::PerSubstep, 24, 4),
+        (Integrator::Bdf2, ControlSampling::PerSubstep, 32, 4),
+        (Integrator::Bdf2, ControlSampling::PerSubstep, 64, 8),
+    ];
+    println!(
+        "| integrator | controllers sampled | substeps | matrix every | 1 Hz | 2 Hz | top | 3 Hz | 4 Hz | 5 Hz | 30° key | 45° key | 60° key | 90° key |"
+    );
+    for (integrator, sampling, substeps, interval) in rows {
+        let body = BodyParams {
+            integrator,
+            substeps,
+            jacobian_interval: interval,
+            ..Default::default()
+        };
+        let (top, turns) = resolution_row(body, sampling);
+        let speed = |f: f32| speed_with(with(1.0, f), body, sampling);
+        println!(
+            "| {integrator:?} | {sampling:?} | {substeps} | {interval} | {:.3} | {:.3} | {top:.3} | {:.3} | {:.3} | {:.3} | {:.1}° | {:.1}° | {:.1}° | {:.1}° |",
+            speed(1.0),
+            speed(2.0),
+            speed(3.0),
+            speed(4.0),
+            speed(5.0),
+            turns[0],
+            turns[1],
+            turns[2],
+            turns[3]
+        );
+    }
+}
+
+/// Behind the lag and frequency paragraphs of `docs/fish-body.md` and
+/// `motor_controller.rs`: speed at 3 Hz against the posterior lag, and, against
+/// the tail-beat frequency, the speed, the lateral amplitude of the last ring and
+/// of the tail-fin tips, and how far the tail fin's sideways motion lags the last
+/// ring's (degrees of the beat; a wave travels tailwards when the lag is
+/// positive). `cargo test --release --lib wave_table -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn wave_table() {
+    use super::body_layout::{RING_COUNT, TAIL_FIN_NODES, ring_nodes};
+    for lag_deg in [0.0f32, 30.0, 90.0, 180.0] {
+        let mut fish = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
+        let mut mc = SwimMc::default();
+        mc.posterior_lag_rad = lag_deg.to_radians();
+        let dt = fish.dt_secs();
+        let steps = (60.0 / dt) as usize;
+        let mut half = Vec3::ZERO;
+        for k in 0..steps {
+            fish.step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |t| {
+                mc.muscles_at(&SwimParams::MAX, t)
+            });
+            mc.advance(&SwimParams::MAX, dt);
+            if k + 1 == steps / 2 {
+                half = fish.centre_of_mass_m();
+            }
+        }
+        let v = (fish.centre_of_mass_m() - half).x / 30.0 / LENGTH_M;
+        println!(
+            "lag {lag_deg}°: {v:.3} BL/s at {} Hz",
+            SwimParams::MAX.anterior_frequency_hz
+        );
+    }
+    println!(
+        "| beat (Hz) | speed (BL/s) | last ring amplitude (BL) | tail-fin amplitude (BL) | tail-fin lag behind last ring (°) |"
+    );
+    for f in [1.0f32, 2.0, 3.0, 4.0, 4.25, 4.5, 5.0] {
+        let mut fish = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
+        let mut mc = SwimMc::default();
+        let params = with(1.0, f);
+        let dt = fish.dt_secs();
+        let steps = (40.0 / dt) as usize;
+        let mut half = Vec3::ZERO;
+        // Fourier projections of the sideways positions at the beat frequency.
+        let (mut ring, mut tail) = ((0.0f32, 0.0f32), (0.0f32, 0.0f32));
+        let mut samples = 0;
+        for k in 0..steps {
+            fish.step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |t| {
+                mc.muscles_at(&params, t)
+            });
+            mc.advance(&params, dt);
+            if k + 1 == steps / 2 {
+                half = fish.centre_of_mass_m();
+            }
+            if k >= steps / 2 {
+                let p = fish.positions_m();
+                let centre = fish.centre_of_mass_m().y;
+                let last = ring_nodes(RING_COUNT - 1)
+                    .iter()
+                    .map(|&i| p[i].y)
+                    .sum::<f32>()
+                    / 4.0
+                    - centre;
+                let fin = (p[TAIL_FIN_NODES[0]].y + p[TAIL_FIN_NODES[1]].y) / 2.0 - centre;
+                let phase = std::f32::consts::TAU * f * (k + 1) as f32 * dt;
+                ring.0 += last * phase.cos();
+                ring.1 += last * phase.sin();
+                tail.0 += fin * phase.cos();
+                tail.1 += fin * phase.sin();
+                samples += 1;
+            }
+        }
+        let n = samples as f32 / 2.0;
+        let amplitude = |c: (f32, f32)| (c.0 * c.0 + c.1 * c.1).sqrt() / n / LENGTH_M;
+        let angle = |c: (f32, f32)| c.1.atan2(c.0);
+        let lag = (angle(tail) - angle(ring)).to_degrees();
+        let lag = (lag + 540.0).rem_euclid(360.0) - 180.0;
+        let v = (fish.centre_of_mass_m() - half).x / 20.0 / LENGTH_M;
+        println!(
+            "| {f} | {v:.3} | {:.3} | {:.3} | {lag:.0} |",
+            amplitude(ring),
+            amplitude(tail)
+        );
+    }
+}
+
 /// Tuning routine behind the table in `motor_controller.rs`:
 /// `cargo test --release speed_table -- --ignored --nocapture`.
 #[test]
 #[ignore]
 fn speed_table() {
+    let top = SwimParams::MAX.anterior_frequency_hz;
     for (r, f) in [
         (1.0, 0.5),
         (1.0, 1.0),
         (1.0, 1.5),
         (1.0, 2.0),
+        (1.0, top),
         (1.0, 2.5),
         (1.0, 3.0),
         (1.0, 4.0),
         (1.0, 5.0),
-        (0.75, 3.0),
-        (0.5, 3.0),
-        (0.25, 3.0),
+        (0.75, top),
+        (0.5, top),
+        (0.25, top),
     ] {
         println!("| {r:.1} | {f:.2} | {:.3} |", speed_bl_per_s(with(r, f)));
     }
@@ -311,22 +535,45 @@ fn speed_table() {
 #[test]
 #[ignore]
 fn step_cost() {
-    for interval in [1, 2, 4] {
+    // Configurations: (integrator, substeps, jacobian interval); `STEP_COST` =
+    // "bdf2:24:4,euler:8:1" overrides the list.
+    let configs: Vec<(Integrator, u32, u32)> = std::env::var("STEP_COST")
+        .ok()
+        .map(|s| {
+            s.split(',')
+                .filter_map(|c| {
+                    let mut parts = c.split(':');
+                    let integrator = match parts.next()? {
+                        "euler" => Integrator::BackwardEuler,
+                        _ => Integrator::Bdf2,
+                    };
+                    Some((
+                        integrator,
+                        parts.next()?.parse().ok()?,
+                        parts.next()?.parse().ok()?,
+                    ))
+                })
+                .collect()
+        })
+        .unwrap_or_else(|| {
+            let d = BodyParams::default();
+            vec![(d.integrator, d.substeps, d.jacobian_interval)]
+        });
+    for (integrator, substeps, interval) in configs {
         let params = BodyParams {
+            integrator,
+            substeps,
             jacobian_interval: interval,
             ..Default::default()
         };
         let mut fish = FishBody::with_params(LENGTH_M, Vec3::ZERO, Vec3::X, params);
         let mut mc = SwimMc::default();
         let mut step = |fish: &mut FishBody| {
-            let u = mc.step(&SwimParams::MAX, fish.dt_secs());
-            fish.step(
-                &BodyCommand {
-                    muscle_contractions: u,
-                    ..Default::default()
-                },
-                Vec3::ZERO,
-            );
+            let dt = fish.dt_secs();
+            fish.step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |t| {
+                mc.muscles_at(&SwimParams::MAX, t)
+            });
+            mc.advance(&SwimParams::MAX, dt);
         };
         for _ in 0..(10.0 / fish.dt_secs()) as usize {
             step(&mut fish);
@@ -342,14 +589,14 @@ fn step_cost() {
             })
             .collect();
         micros.sort_by(f64::total_cmp);
-        let substeps = f64::from(params.substeps);
+        let n = f64::from(substeps);
         println!(
-            "jacobian_interval {interval}: step cost min {:.1} µs, median {:.1} µs per step; \
-             {:.2} / {:.2} µs per substep ({substeps} substeps)",
+            "{integrator:?}, {substeps} substeps, jacobian_interval {interval}: step cost min \
+             {:.1} µs, median {:.1} µs per step; {:.2} / {:.2} µs per substep",
             micros[0],
             micros[3],
-            micros[0] / substeps,
-            micros[3] / substeps
+            micros[0] / n,
+            micros[3] / n
         );
         assert!(fish.positions_m().iter().all(|p| p.is_finite()));
     }

@@ -26,33 +26,35 @@
 //!
 //! Why the turn is measured while swimming and the turn adds to the swim wave
 //! ([`combine_swim_and_turn`]): at the body's time scale (k = 40, see `fish_body.rs`)
-//! a glide at 0.5 body lengths/s loses 63 % of its speed in about 0.2 s and coasts
-//! only 0.1 body lengths, so there is almost no momentum to deflect, and with
-//! linear drag a bend that is undone turns a gliding fish very little however fast
-//! it is made (measured from a 0.5 body lengths/s glide with a restoring rate 1/4
-//! of the contraction rate: at most 2.2° over r ≤ 1, s ≤ 16/s). The turn comes from the tail's
-//! thrust acting on a bent body, so the angle grows with r and with the time spent
-//! bent. With the slow restoring stroke (1/20 of the contraction rate) that time is
-//! r/s·(1 + 20).
+//! a gliding fish loses most of its speed within a fraction of a second, so there
+//! is almost no momentum to deflect, and with linear drag a bend that is undone
+//! turns a gliding fish very little however fast it is made. The turn comes from
+//! the tail's thrust acting on a bent body, so the angle grows with r and with the
+//! time spent bent. With the slow restoring stroke (1/20 of the contraction rate)
+//! that time is r/s·(1 + 20).
 //!
-//! | key angle | r0 = r1 | s0 = s1 (1/s) | duration (s) | measured left | measured right |
-//! |-----------|---------|---------------|--------------|---------------|----------------|
-//! | 30°       | 0.3483  | 2.0           | 3.7          | 30.0°         | −29.7°         |
-//! | 45°       | 0.4485  | 2.0           | 4.7          | 45.0°         | −44.7°         |
-//! | 60°       | 0.5420  | 2.0           | 5.7          | 60.0°         | −59.6°         |
-//! | 90°       | 0.7004  | 2.0           | 7.4          | 90.0°         | −89.6°         |
+//! Measured on the default (converged) body, `tests::turn_table`:
 //!
-//! Interpolated (measured left/right): 10° → 10.9/−10.6, 20° → 20.9/−20.6,
-//! 35° → 35.4/−35.0, 50° → 49.6/−49.3, 75° → 74.1/−73.7. Sequences: 135° requested
-//! → 132.6°, 180° → 183.5° (all from `tests::turn_table`). These turns are slow
-//! (a 90° turn takes 7.4 s): the paper's body cannot bend harder
-//! (l_min = 0.5 l reaches 0.67 l against the cross springs), and r = 1 at
-//! s = 2/s gives about 160°.
+//! | key angle | r0 = r1 | s0 = s1 (1/s) | duration (s) | measured (left) |
+//! |-----------|---------|---------------|--------------|-----------------|
+//! | 30°       | 0.3509  | 2.0           | 3.7          | 30.0°           |
+//! | 45°       | 0.4400  | 2.0           | 4.6          | 46.2°           |
+//! | 60°       | 0.5216  | 2.0           | 5.5          | 60.0°           |
+//! | 90°       | 0.6544  | 2.0           | 6.9          | 90.0°           |
+//!
+//! (The 45° key turned 44.9° at the search's unrounded amplitude; near it the turn
+//! is sensitive to the fourth decimal.) Interpolated (measured left/right):
+//! 10° → 11.3/−10.7, 20° → 21.3/−20.6, 35° → 36.6/−36.4, 50° → 49.4/−49.1,
+//! 75° → 74.7/−73.8. Sequences: 135° requested → 134.0°, 180° → 174.9°. Doubling
+//! the body's time resolution changes the key turns by 1.3 / 1.1 / 0.8 / 0.3 %
+//! (`fish_body.rs`, "Convergence"). On the earlier, unconverged body (backward
+//! Euler, controllers sampled once per step) the same keys turn about 30 % less.
 
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{PI, TAU};
 
 use super::body_layout::{MUSCLE_COUNT, MuscleSegment, Side, muscle_index};
+use super::motor_controller::ControlSampling;
 
 /// Straight swimming before a measured turn, seconds. 3.0, chosen: the fish is at
 /// its top speed after about 1 s.
@@ -60,8 +62,8 @@ pub const TURN_LEAD_IN_SECS: f32 = 3.0;
 /// Straight swimming after the contraction profile ends before the heading is read,
 /// seconds. 2.0, chosen: the body is straight again and swims on a steady heading.
 pub const TURN_SETTLE_SECS: f32 = 2.0;
-/// Window over which the heading is averaged, seconds. 1.0 = three tail beats at
-/// the top swim frequency of 3 Hz.
+/// Window over which the heading is averaged, seconds. 1.0 = 2.3 tail beats at
+/// the top swim frequency of 2.3 Hz.
 pub const HEADING_AVERAGE_SECS: f32 = 1.0;
 /// Largest angle of a single turn, degrees (paper §3.3); larger requests become
 /// sequences.
@@ -156,10 +158,10 @@ impl SteeringMap {
     /// The key sets found by [`find_steering_map`] (see the module doc).
     pub const DEFAULT: Self = Self {
         keys: [
-            (30.0, key(0.3483)),
-            (45.0, key(0.4485)),
-            (60.0, key(0.5420)),
-            (90.0, key(0.7004)),
+            (30.0, key(0.3509)),
+            (45.0, key(0.4400)),
+            (60.0, key(0.5216)),
+            (90.0, key(0.6544)),
         ],
     };
 
@@ -201,8 +203,7 @@ const fn key(r: f32) -> TurnParams {
 }
 
 /// Quick contraction rate of the key turns, 1/s. 2.0, chosen: the full contraction
-/// of a 90° turn takes 0.35 s, twenty times quicker than its restoring stroke; at
-/// 4/s the 90° turn would need r > 1 (r = 1 gives 80°).
+/// of a 90° turn takes 0.33 s, twenty times quicker than its restoring stroke.
 pub const KEY_RATE_PER_SEC: f32 = 2.0;
 
 /// A turn in progress.
@@ -221,8 +222,9 @@ pub struct TurnMc {
     pub map: SteeringMap,
     /// Restoring rate as a fraction of the quick contraction rate, dimensionless.
     /// Default 0.05, tuned: "restored … at a slower rate" (paper §3.3). The turn
-    /// grows with the time spent bent; at 0.25 the largest turn (r = 1, s = 2/s) is
-    /// 38°, at 0.05 it is about 160°, enough for the 90° key with r = 0.70.
+    /// grows with the time spent bent (on the earlier, unconverged body the largest
+    /// turn, r = 1 and s = 2/s, was 38° at 0.25 and about 160° at 0.05); with 0.05
+    /// the 90° key needs r = 0.65.
     pub restore_rate_ratio: f32,
     active: Option<ActiveTurn>,
     /// Turns still queued after the active one: count and angle of each, degrees
@@ -297,15 +299,35 @@ impl TurnMc {
 
     /// Advances the turn by `dt_secs` and returns the 12 muscle contractions: the
     /// anterior and middle segments on the turning side, everything else 0. While
-    /// turning, the caller should use these for the anterior and middle segments
-    /// instead of the swim-MC's.
+    /// turning, the caller adds these to the swim-MC's ([`combine_swim_and_turn`]).
     pub fn step(&mut self, dt_secs: f32) -> [f32; MUSCLE_COUNT] {
-        let mut u = [0.0; MUSCLE_COUNT];
+        let u = self.muscles_at(dt_secs);
+        self.advance(dt_secs);
+        u
+    }
+
+    /// Advances the turn by `dt_secs`; a finished turn hands over to the next queued
+    /// one.
+    pub fn advance(&mut self, dt_secs: f32) {
+        let q = self.restore_rate_ratio;
         let Some(turn) = self.active.as_mut() else {
-            return u;
+            return;
         };
         turn.elapsed_secs += sanitize(dt_secs).max(0.0);
-        let t = turn.elapsed_secs;
+        if turn.elapsed_secs >= turn.params.duration_secs(q) {
+            self.next_turn();
+        }
+    }
+
+    /// The 12 muscle contractions `t_secs` after the turn's current time, without
+    /// advancing it (what the body samples within a step, see
+    /// `FishBody::step_with`); all 0 when no turn runs.
+    pub fn muscles_at(&self, t_secs: f32) -> [f32; MUSCLE_COUNT] {
+        let mut u = [0.0; MUSCLE_COUNT];
+        let Some(turn) = self.active.as_ref() else {
+            return u;
+        };
+        let t = turn.elapsed_secs + sanitize(t_secs).max(0.0);
         let p = turn.params;
         let side = match turn.direction {
             TurnDirection::Left => Side::Left,
@@ -329,9 +351,6 @@ impl TurnMc {
             u[i] = c;
             u[i + 1] = c;
         }
-        if t >= p.duration_secs(q) {
-            self.next_turn();
-        }
         u
     }
 }
@@ -339,9 +358,25 @@ impl TurnMc {
 /// Heading change of a swimming fish executing one turn, degrees (+ = left). See the
 /// module doc for the protocol. Deterministic.
 pub fn measure_turn_deg(params: TurnParams, direction: TurnDirection) -> f32 {
+    measure_turn_deg_with(
+        params,
+        direction,
+        super::BodyParams::default(),
+        ControlSampling::default(),
+    )
+}
+
+/// [`measure_turn_deg`] on a body with `body` parameters and the controllers
+/// sampled as `sampling` says.
+pub fn measure_turn_deg_with(
+    params: TurnParams,
+    direction: TurnDirection,
+    body: super::BodyParams,
+    sampling: ControlSampling,
+) -> f32 {
     let mut mc = TurnMc::default();
     mc.start_turn_with(params, direction);
-    measure_heading_change_deg(&mut mc, direction == TurnDirection::Right)
+    measure_heading_change_deg_with(&mut mc, direction == TurnDirection::Right, body, sampling)
 }
 
 /// How a fish uses both controllers at once: the turn-MC's contractions are added
@@ -391,10 +426,26 @@ pub fn mirror_muscles(u: &[f32; MUSCLE_COUNT]) -> [f32; MUSCLE_COUNT] {
 /// swim-MC's sides for the whole run, so a right turn is measured as the exact
 /// mirror image of a left one.
 pub fn measure_heading_change_deg(mc: &mut TurnMc, mirror_swim: bool) -> f32 {
-    use super::{BodyCommand, FishBody, SwimMc, SwimParams};
+    measure_heading_change_deg_with(
+        mc,
+        mirror_swim,
+        super::BodyParams::default(),
+        ControlSampling::default(),
+    )
+}
+
+/// [`measure_heading_change_deg`] on a body with `body` parameters and the
+/// controllers sampled as `sampling` says.
+pub fn measure_heading_change_deg_with(
+    mc: &mut TurnMc,
+    mirror_swim: bool,
+    body: super::BodyParams,
+    sampling: ControlSampling,
+) -> f32 {
+    use super::{BodyCommand, FishBody, PectoralFins, SwimMc, SwimParams};
     use glam::Vec3;
     let length_m = super::body_layout::PAPER_BODY_LENGTH;
-    let mut fish = FishBody::new(length_m, Vec3::ZERO, Vec3::X);
+    let mut fish = FishBody::with_params(length_m, Vec3::ZERO, Vec3::X, body);
     let mut swim = SwimMc::default();
     let dt = fish.dt_secs();
     let heading = |f: &FishBody| f.forward().y.atan2(f.forward().x);
@@ -409,21 +460,38 @@ pub fn measure_heading_change_deg(mc: &mut TurnMc, mirror_swim: bool) -> f32 {
         w.push(h);
     };
     let mean = |w: &[f32]| w.iter().sum::<f32>() / w.len().max(1) as f32;
-    let mut run = |fish: &mut FishBody, mc: Option<&mut TurnMc>, window: &mut Vec<f32>| {
-        let mut u = swim.step(&SwimParams::MAX, dt);
-        if mirror_swim {
-            u = mirror_muscles(&u);
+    let mut run = |fish: &mut FishBody, mut mc: Option<&mut TurnMc>, window: &mut Vec<f32>| {
+        let muscles_at = |t: f32, swim: &SwimMc, mc: Option<&TurnMc>| {
+            let mut u = swim.muscles_at(&SwimParams::MAX, t);
+            if mirror_swim {
+                u = mirror_muscles(&u);
+            }
+            if let Some(mc) = mc {
+                u = combine_swim_and_turn(&u, &mc.muscles_at(t));
+            }
+            u
+        };
+        match sampling {
+            ControlSampling::PerStep => {
+                let u = muscles_at(dt, &swim, mc.as_deref());
+                fish.step(
+                    &BodyCommand {
+                        muscle_contractions: u,
+                        ..Default::default()
+                    },
+                    Vec3::ZERO,
+                );
+            }
+            ControlSampling::PerSubstep => {
+                fish.step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |t| {
+                    muscles_at(t, &swim, mc.as_deref())
+                });
+            }
         }
-        if let Some(mc) = mc {
-            u = combine_swim_and_turn(&u, &mc.step(dt));
+        swim.advance(&SwimParams::MAX, dt);
+        if let Some(mc) = mc.as_deref_mut() {
+            mc.advance(dt);
         }
-        fish.step(
-            &BodyCommand {
-                muscle_contractions: u,
-                ..Default::default()
-            },
-            Vec3::ZERO,
-        );
         let h = heading(fish);
         unwrapped_rad += (h - previous + PI).rem_euclid(TAU) - PI;
         previous = h;
@@ -451,6 +519,14 @@ pub fn measure_heading_change_deg(mc: &mut TurnMc, mirror_swim: bool) -> f32 {
 /// angle (30°, 45°, 60°, 90°) on left turns, assuming the turn grows with r (checked
 /// by the tests). Returns the map and the measured angle of each key.
 pub fn find_steering_map() -> (SteeringMap, [f32; 4]) {
+    find_steering_map_with(super::BodyParams::default())
+}
+
+/// [`find_steering_map`] on a body with `body` parameters.
+pub fn find_steering_map_with(body: super::BodyParams) -> (SteeringMap, [f32; 4]) {
+    let measure = |p: TurnParams| {
+        measure_turn_deg_with(p, TurnDirection::Left, body, ControlSampling::default())
+    };
     let targets = [30.0, 45.0, 60.0, 90.0];
     let mut map = SteeringMap::DEFAULT;
     let mut measured = [0.0; 4];
@@ -458,7 +534,7 @@ pub fn find_steering_map() -> (SteeringMap, [f32; 4]) {
         let (mut lo, mut hi) = (0.0f32, 1.0f32);
         for _ in 0..14 {
             let mid = 0.5 * (lo + hi);
-            if measure_turn_deg(key(mid), TurnDirection::Left) < target {
+            if measure(key(mid)) < target {
                 lo = mid;
             } else {
                 hi = mid;
@@ -466,7 +542,7 @@ pub fn find_steering_map() -> (SteeringMap, [f32; 4]) {
         }
         let r = 0.5 * (lo + hi);
         map.keys[k] = (target, key(r));
-        measured[k] = measure_turn_deg(key(r), TurnDirection::Left);
+        measured[k] = measure(key(r));
     }
     (map, measured)
 }

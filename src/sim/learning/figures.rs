@@ -47,9 +47,9 @@ fn print_learning_figures() {
         (1.0, -0.5),
         (1.0, -1.0),
     ] {
-        let mut motor = LearnedMotor::new(map.clone());
-        let m = measure_motion_with(BodySpecies::Fish, params, MEASURE_SECS, |_| {
-            motor.step(speed, turn, params.dt_secs)
+        let motor = LearnedMotor::new(map.clone());
+        let m = measure_motion_with(BodySpecies::Fish, params, MEASURE_SECS, |t| {
+            motor.muscles_at(speed, turn, t)
         });
         println!("learned motor speed {speed}, turn {turn}: {m:?}");
     }

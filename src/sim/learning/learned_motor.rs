@@ -40,7 +40,7 @@ use super::abstraction::{AbstractedController, FourierMode};
 use super::objective::{Task, heading_rad, unwrap_angle};
 use crate::sim::body::turn_mc::mirror_muscles;
 use crate::sim::body::{
-    BodyCommand, BodyParams, FishBody, MUSCLE_COUNT, MuscleSegment, Side, SwimMc,
+    BodyParams, FishBody, MUSCLE_COUNT, MuscleSegment, PectoralFins, Side, SwimMc,
     body_layout::muscle_index,
 };
 use crate::sim::physical_fish::BodySpecies;
@@ -81,14 +81,15 @@ pub fn measure_hand_tuned_swim(
     params: BodyParams,
     secs: f32,
 ) -> MotionMeasurement {
-    let mut swim = SwimMc::default();
+    let swim = SwimMc::default();
     let swim_params = swim.params_for_speed(speed_fraction);
-    let dt = params.dt_secs;
-    measure_motion_with(species, params, secs, move |_| swim.step(&swim_params, dt))
+    measure_motion_with(species, params, secs, move |t| {
+        swim.muscles_at(&swim_params, t)
+    })
 }
 
-/// [`measure_motion`] for any source of contractions (called with the time in
-/// seconds after each step's start).
+/// [`measure_motion`] for any source of contractions, a function of the time in
+/// seconds since the start, sampled at every substep of the body.
 pub fn measure_motion_with(
     species: BodySpecies,
     params: BodyParams,
@@ -108,14 +109,10 @@ pub fn measure_motion_with(
     let mut path_m = 0.0f32;
     let mut last_point = body.centre_of_mass_m();
     for k in 1..=steps {
-        let u = muscles_at(k as f32 * dt);
-        body.step(
-            &BodyCommand {
-                muscle_contractions: u,
-                ..Default::default()
-            },
-            Vec3::ZERO,
-        );
+        let start = (k - 1) as f32 * dt;
+        body.step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |t| {
+            muscles_at(start + t)
+        });
         let h = heading_rad(&body);
         unwrapped = unwrap_angle(unwrapped, previous, h);
         previous = h;
@@ -466,17 +463,35 @@ impl LearnedMotor {
         turn_fraction: f32,
         dt_secs: f32,
     ) -> [f32; MUSCLE_COUNT] {
+        self.advance(speed_fraction, turn_fraction, dt_secs);
+        self.muscles_at(speed_fraction, turn_fraction, 0.0)
+    }
+
+    /// Advances the oscillators by `dt_secs` at the frequencies of the request.
+    pub fn advance(&mut self, speed_fraction: f32, turn_fraction: f32, dt_secs: f32) {
         let c = self.map.controller_for(speed_fraction, turn_fraction);
-        let dt = if dt_secs.is_finite() {
-            dt_secs.max(0.0)
-        } else {
-            0.0
-        };
-        let mut u = c.mean;
+        let dt = finite_non_negative(dt_secs);
         for (mode, phase) in c.modes.iter().zip(&mut self.phases_rad) {
             *phase = (*phase + TAU * mode.frequency_hz * dt).rem_euclid(TAU);
+        }
+    }
+
+    /// The 12 muscle contractions of the request `t_secs` after the oscillators'
+    /// current phases, without advancing them (what the body samples within a
+    /// step, see `FishBody::step_with`). Never NaN.
+    pub fn muscles_at(
+        &self,
+        speed_fraction: f32,
+        turn_fraction: f32,
+        t_secs: f32,
+    ) -> [f32; MUSCLE_COUNT] {
+        let c = self.map.controller_for(speed_fraction, turn_fraction);
+        let t = finite_non_negative(t_secs);
+        let mut u = c.mean;
+        for (mode, phase) in c.modes.iter().zip(&self.phases_rad) {
+            let phase = phase + TAU * mode.frequency_hz * t;
             for ((x, a), p) in u.iter_mut().zip(mode.amplitudes).zip(mode.phases_rad) {
-                *x += a * (*phase + p).cos();
+                *x += a * (phase + p).cos();
             }
         }
         u.map(|x| {
@@ -487,6 +502,10 @@ impl LearnedMotor {
             }
         })
     }
+}
+
+fn finite_non_negative(x: f32) -> f32 {
+    if x.is_finite() { x.max(0.0) } else { 0.0 }
 }
 
 #[cfg(test)]
@@ -503,10 +522,9 @@ mod tests {
     /// The motor at a fixed request, measured like a single controller.
     fn measure_motor(map: &LearnedMotorMap, speed: f32, turn: f32) -> MotionMeasurement {
         let params = BodyParams::default();
-        let mut motor = LearnedMotor::new(map.clone());
-        let dt = params.dt_secs;
-        measure_motion_with(BodySpecies::Fish, params, MEASURE_SECS, |_| {
-            motor.step(speed, turn, dt)
+        let motor = LearnedMotor::new(map.clone());
+        measure_motion_with(BodySpecies::Fish, params, MEASURE_SECS, |t| {
+            motor.muscles_at(speed, turn, t)
         })
     }
 

@@ -411,9 +411,9 @@ mod live_tests {
         let map = set.motor_map().expect("a straight swim was learned");
         let params = BodyParams::default();
         let measure = |speed: f32, turn: f32| {
-            let mut motor = LearnedMotor::new(map.clone());
-            measure_motion_with(BodySpecies::Fish, params, MEASURE_SECS, |_| {
-                motor.step(speed, turn, params.dt_secs)
+            let motor = LearnedMotor::new(map.clone());
+            measure_motion_with(BodySpecies::Fish, params, MEASURE_SECS, |t| {
+                motor.muscles_at(speed, turn, t)
             })
         };
         let (straight, left, right) = (measure(1.0, 0.0), measure(1.0, 1.0), measure(1.0, -1.0));

@@ -26,7 +26,7 @@ use serde::{Deserialize, Serialize};
 use std::f32::consts::{PI, TAU};
 
 use super::muscle_spline::{DEFAULT_SAMPLE_COUNT, Interpolation, MuscleSpline};
-use crate::sim::body::{BodyCommand, BodyParams, FishBody, MUSCLE_COUNT};
+use crate::sim::body::{BodyParams, FishBody, MUSCLE_COUNT, PectoralFins};
 use crate::sim::physical_fish::BodySpecies;
 
 /// Penalty reported instead of a non-finite objective (the body guards against
@@ -222,13 +222,10 @@ pub fn evaluate(setup: &TrainingSetup, controls: &MuscleSpline) -> Evaluation {
     for k in 1..=steps {
         let t = k as f32 * dt;
         let u = controls.value_at(t * time_scale);
-        body.step(
-            &BodyCommand {
-                muscle_contractions: u,
-                ..Default::default()
-            },
-            Vec3::ZERO,
-        );
+        let step_start_secs = t - dt;
+        body.step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |s| {
+            controls.value_at((step_start_secs + s) * time_scale)
+        });
         let mut du = [0.0; MUSCLE_COUNT];
         let (mut v2, mut a2) = (0.0, 0.0);
         for m in 0..MUSCLE_COUNT {

@@ -17,7 +17,7 @@ use glam::Vec3;
 
 use super::annealing::Checkpoint;
 use super::muscle_spline::MuscleSpline;
-use crate::sim::body::{BodyCommand, BodyParams, FishBody};
+use crate::sim::body::{BodyParams, FishBody, PectoralFins};
 use crate::sim::physical_fish::BodySpecies;
 
 /// Annealing steps of the six sharks of Fig. 7: 90, then 1350 more each.
@@ -91,15 +91,13 @@ impl Race {
             // The first lap exactly as in training (its last step included), then
             // looped.
             let period = lane.entrant.controls.duration_secs();
-            let local = if t <= period { t } else { t.rem_euclid(period) };
-            let u = lane.entrant.controls.value_at(local);
-            lane.body.step(
-                &BodyCommand {
-                    muscle_contractions: u,
-                    ..Default::default()
-                },
-                Vec3::ZERO,
-            );
+            let local = |t: f32| if t <= period { t } else { t.rem_euclid(period) };
+            let controls = &lane.entrant.controls;
+            let step_start_secs = t - self.dt_secs;
+            lane.body
+                .step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |s| {
+                    controls.value_at(local(step_start_secs + s))
+                });
         }
     }
 

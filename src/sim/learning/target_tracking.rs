@@ -16,7 +16,7 @@
 use glam::{Vec2, Vec3};
 
 use super::learned_motor::{LearnedMotor, LearnedMotorMap};
-use crate::sim::body::{BodyCommand, BodyParams, FishBody};
+use crate::sim::body::{BodyParams, FishBody, PectoralFins};
 use crate::sim::physical_fish::BodySpecies;
 
 /// Heading error that asks for the largest learned turn, degrees. 30, chosen:
@@ -76,14 +76,12 @@ impl BuoyTracker {
         } else {
             0.0
         };
-        let u = self.motor.step(1.0, turn, dt);
-        self.body.step(
-            &BodyCommand {
-                muscle_contractions: u,
-                ..Default::default()
-            },
-            Vec3::ZERO,
-        );
+        let motor = &self.motor;
+        self.body
+            .step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |t| {
+                motor.muscles_at(1.0, turn, t)
+            });
+        self.motor.advance(1.0, turn, dt);
         self.steps += 1;
         let forward = self.body.forward().truncate().normalize_or_zero();
         if forward != Vec2::ZERO {
