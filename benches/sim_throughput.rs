@@ -108,7 +108,9 @@ fn main() {
     }
 
     println!();
-    println!("Muscle-driven fish (Tu & Terzopoulos body, schooling, Δt = 0.055 s, 8 substeps):");
+    println!(
+        "Muscle-driven fish (Tu & Terzopoulos body, schooling, Δt = 0.055 s, 16 BDF2 substeps):"
+    );
     println!(
         "{:>7} | {:>10} | {:>14} | {:>19} | {:>17}",
         "fish", "steps/s", "fish-steps/s", "× real time (1/Δt)", "frame build (ms)"
