@@ -548,18 +548,21 @@ pub fn find_steering_map_with(body: super::BodyParams) -> (SteeringMap, [f32; 4]
 }
 
 /// Contraction added to the turning side of the anterior segment at full steering
-/// (|steer| = 1), contraction factor. 1.0, tuned (`physical_fish::agility`; 0.5
-/// turns 2 % slower, 0 turns 20 % slower in a wider circle): the
-/// bend is held as long as the command lasts, so the tail's thrust on the bent
-/// body keeps yawing the fish (see the module doc).
-pub const STEER_ANTERIOR_BIAS: f32 = 1.0;
+/// (|steer| = 1), contraction factor. 0.5, tuned on the converged body
+/// (`physical_fish::agility`, closed-loop turns from 0.7 and 1.0 of the top speed,
+/// left and right, three tail-beat phases at the start): with 1.0 / 1.0 / 0.5 for
+/// the three segments (the tuning of the earlier, unconverged body) a 90° turn
+/// took 2.3 s or 13 s depending on the tail-beat phase when it began, and the
+/// body folded to 0.73 of its length; with 0.5 / 0.5 / 0.25 it takes 3.1–3.3 s
+/// either way and the body keeps at least 0.84 of its length. The bend is held as
+/// long as the command lasts, so the tail's thrust on the bent body keeps yawing
+/// the fish (see the module doc).
+pub const STEER_ANTERIOR_BIAS: f32 = 0.5;
 /// The same for the middle segment, whose swim wave beats around the bent mean.
-/// 1.0, tuned like [`STEER_ANTERIOR_BIAS`].
-pub const STEER_MIDDLE_BIAS: f32 = 1.0;
-/// The same for the posterior segment. 0.5, tuned: at top speed and full
-/// steering 0.0 / 0.3 / 0.5 / 0.7 / 1.0 give 22 / 26 / 26 / 25 / 22°/s with
-/// radii 0.91 / 0.69 / 0.59 / 0.52 / 0.42 body lengths (`physical_fish::agility`).
-pub const STEER_POSTERIOR_BIAS: f32 = 0.5;
+/// 0.5, tuned with [`STEER_ANTERIOR_BIAS`].
+pub const STEER_MIDDLE_BIAS: f32 = 0.5;
+/// The same for the posterior segment. 0.25, tuned with [`STEER_ANTERIOR_BIAS`].
+pub const STEER_POSTERIOR_BIAS: f32 = 0.25;
 
 /// Continuous steering (not in the paper, whose turns are discrete): `steer` in
 /// [−1, 1] (+ = left, NaN = 0) adds |steer| × the segment biases
