@@ -681,6 +681,9 @@ mod probe_tmp {
             p.integrator = if parts[0] == "be" { Integrator::BackwardEuler } else { Integrator::Bdf2 };
             p.substeps = parts[1].parse().unwrap();
             p.jacobian_interval = parts[2].parse().unwrap();
+            if let Ok(v) = std::env::var("SPRINGD") { p.spring_damping = v.parse().unwrap(); }
+            if let Ok(v) = std::env::var("NODED") { p.node_damping = v.parse().unwrap(); }
+            if let Ok(v) = std::env::var("MINLEN") { p.muscle_min_length_ratio = v.parse().unwrap(); }
             fish.body = FishBody::with_params(0.5, to_body_frame(Vec3::ZERO), to_body_frame(Vec3::X), p);
         }
         if let Ok(v) = std::env::var("FREQ") {
@@ -693,6 +696,12 @@ mod probe_tmp {
         let mut go = |fish: &mut PhysicalFish, desired: Vec3| {
             let mut intent = fish.plan(desired);
             intent.speed_fraction = intent.speed_fraction.max((g * intent.steer.abs()).min(1.0));
+            if let Ok(v) = std::env::var("SFMIN") { let m: f32 = v.parse().unwrap(); if intent.steer != 0.0 { intent.speed_fraction = intent.speed_fraction.max(m); } }
+            if let Ok(v) = std::env::var("SCHED") {
+                let p: Vec<f32> = v.split(',').map(|x| x.parse().unwrap()).collect();
+                let r = fish.point.velocity_m_per_s.length() / (p[0] * fish.top_speed_m_per_s());
+                intent.steer *= r.clamp(p[1], 1.0);
+            }
             if let Ok(v) = std::env::var("FREEZE") { let v: f32 = v.parse().unwrap(); if FROZEN.with(|f| f.get()) && v > 0.0 { intent.steer = 0.35; intent.speed_fraction = 0.4; intent.fins = PectoralFins::NEUTRAL; } }
             if std::env::var("TRACE2").is_ok() { println!("up {:.2} steer {:.3} sf {:.3} fins {:.3} {:.3} v {:.3}", fish.up(), intent.steer, intent.speed_fraction, intent.fins.left_angle_rad, intent.fins.right_angle_rad, fish.point.velocity_m_per_s.length()); }
             let params = fish.swim.params_for_speed(intent.speed_fraction);
@@ -735,7 +744,11 @@ mod probe_tmp {
     #[test]
     #[ignore]
     fn probe_gain() {
-        for biases in [[0.5, 0.5, 0.25], [1.0, 1.0, 0.5]] {
+        let list: Vec<[f32; 3]> = match std::env::var("BIASES") {
+            Ok(v) => v.split(';').map(|b| { let x: Vec<f32> = b.split(',').map(|y| y.parse().unwrap()).collect(); [x[0], x[1], x[2]] }).collect(),
+            Err(_) => vec![[0.5, 0.5, 0.25], [1.0, 1.0, 0.5]],
+        };
+        for biases in list {
             for g in [1.0] {
                 let mut row = format!("{biases:?} g {g}:");
                 let mut worst = 0.0f32;
@@ -809,6 +822,13 @@ mod probe_tmp {
             }
             println!("{row}");
         }
+    }
+
+    #[test]
+    #[ignore]
+    fn probe_one() {
+        let e = |k: &str, d: f32| std::env::var(k).map(|v| v.parse::<f32>().unwrap()).unwrap_or(d);
+        println!("{:?}", closed([e("ANGLE", -30.0), 0.0][0], e("SPEED", 0.4), [0.5, 0.5, 0.25], e("LEAD", 3.2)));
     }
 
     #[test]

@@ -167,7 +167,7 @@ use super::hydrodynamics::add_water_forces;
 use super::pectoral_fins::PectoralFins;
 
 /// Largest accepted [`BodyParams::substeps`].
-pub const MAX_SUBSTEPS: u32 = 64;
+pub const MAX_SUBSTEPS: u32 = 1024;
 
 /// Physical parameters of the body, in paper units (a 26-unit fish); [`FishBody`]
 /// scales them by its size (see the module doc).
@@ -241,11 +241,11 @@ impl Default for BodyParams {
         Self {
             dt_secs: 0.055,
             node_damping: 0.05,
-            spring_damping: 0.1,
+            spring_damping: 2.0,
             muscle_min_length_ratio: 0.5,
             water_drag_coefficient: 1.0,
             paper_time_units_per_sec: 40.0,
-            substeps: 16,
+            substeps: 12,
             jacobian_interval: 2,
             integrator: Integrator::Bdf2,
             righting_force: 20.0,

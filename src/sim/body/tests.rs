@@ -342,7 +342,7 @@ fn the_default_body_is_converged() {
 #[test]
 #[ignore]
 fn convergence_table() {
-    let rows: [(Integrator, ControlSampling, u32, u32); 14] = [
+    let rows: [(Integrator, ControlSampling, u32, u32); 17] = [
         (Integrator::BackwardEuler, ControlSampling::PerStep, 8, 1),
         (Integrator::BackwardEuler, ControlSampling::PerStep, 16, 1),
         (Integrator::BackwardEuler, ControlSampling::PerStep, 32, 1),
@@ -367,8 +367,11 @@ fn convergence_table() {
         ),
         (Integrator::Bdf2, ControlSampling::PerSubstep, 8, 1),
         (Integrator::Bdf2, ControlSampling::PerSubstep, 12, 1),
+        (Integrator::Bdf2, ControlSampling::PerSubstep, 12, 2),
+        (Integrator::Bdf2, ControlSampling::PerSubstep, 12, 3),
         (Integrator::Bdf2, ControlSampling::PerSubstep, 16, 1),
         (Integrator::Bdf2, ControlSampling::PerSubstep, 16, 2),
+        (Integrator::Bdf2, ControlSampling::PerSubstep, 16, 4),
         (Integrator::Bdf2, ControlSampling::PerSubstep, 24, 4),
         (Integrator::Bdf2, ControlSampling::PerSubstep, 32, 4),
         (Integrator::Bdf2, ControlSampling::PerSubstep, 64, 8),

@@ -158,10 +158,10 @@ impl SteeringMap {
     /// The key sets found by [`find_steering_map`] (see the module doc).
     pub const DEFAULT: Self = Self {
         keys: [
-            (30.0, key(0.3509)),
+            (30.0, key(0.3523)),
             (45.0, key(0.4400)),
-            (60.0, key(0.5216)),
-            (90.0, key(0.6544)),
+            (60.0, key(0.5238)),
+            (90.0, key(0.6570)),
         ],
     };
 
