@@ -231,8 +231,14 @@ impl PhysicalFish {
         }
         let dt = self.body.dt_secs();
         let turning = self.turn.is_turning();
-        // A turn-MC turn beats the tail at the setting its keys were measured at.
-        let speed_fraction = if turning {
+        // A turn's quick stroke begins at the beat phase its key was measured at
+        // (less than one beat later; the frequency is the same at every speed).
+        let beat_hz = self.swim.max.anterior_frequency_hz;
+        self.turn
+            .wait_for_beat(self.swim.anterior_phase_rad(), beat_hz);
+        // From the step in which the stroke begins, a turn-MC turn beats the tail
+        // at the setting its keys were measured at.
+        let speed_fraction = if turning && self.turn.wait_secs() < dt {
             TURN_SWIM_SPEED_FRACTION
         } else {
             intent.speed_fraction
@@ -353,6 +359,12 @@ mod tests {
     /// the change of its fore body's level heading, each end averaged over 1 s
     /// (the turn-MC's own protocol, `body::turn_mc`), degrees, + = left.
     pub(super) fn turn_at_speed_deg(angle_deg: f32, speed_fraction: f32) -> f32 {
+        turn_at_speed_after_deg(angle_deg, speed_fraction, 0)
+    }
+
+    /// [`turn_at_speed_deg`] with the turn requested `extra_steps` steps later
+    /// (at another phase of the tail beat).
+    fn turn_at_speed_after_deg(angle_deg: f32, speed_fraction: f32, extra_steps: usize) -> f32 {
         let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
         let dt = fish.body().dt_secs();
         let swim = MotorIntent {
@@ -371,7 +383,7 @@ mod tests {
             unwrapped += (after - before + 180.0).rem_euclid(360.0) - 180.0;
             headings.push(unwrapped);
         };
-        for _ in 0..(3.0 / dt) as usize {
+        for _ in 0..(3.0 / dt) as usize + extra_steps {
             run(&mut fish, &swim, &mut headings);
         }
         let mean = |h: &[f32]| h[h.len() - window..].iter().sum::<f32>() / window as f32;
@@ -422,6 +434,23 @@ mod tests {
                 .map(|&s| format!("{:6.1}", turn_at_speed_deg(key, s)))
                 .collect();
             println!("| {key}° | {} |", row.join(" | "));
+        }
+    }
+
+    /// Behind `body::turn_mc::KEY_BEAT_PHASE_RAD`: the key turns against the swim
+    /// speed and the step at which they are requested (0–7 steps later: one tail
+    /// beat). `cargo test --release --lib key_turns_against_request_time --
+    /// --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn key_turns_against_request_time() {
+        for key in [30.0, -30.0, 60.0, -60.0, 90.0, -90.0] {
+            for speed in [0.3, 0.6, 1.0] {
+                let row: Vec<String> = (0..8)
+                    .map(|k| format!("{:.1}", turn_at_speed_after_deg(key, speed, k)))
+                    .collect();
+                println!("| {key}° | {speed} | {} |", row.join(" | "));
+            }
         }
     }
 
@@ -647,6 +676,110 @@ mod agility {
         }
     }
 
+    /// A 0.5 m fish swims straight at `speed_fraction` for `lead_secs`, then is
+    /// told to swim at the same speed `angle_deg` to its left, steering through
+    /// the bridge with the segment `biases` (`body::turn_mc::add_steering_with`).
+    /// Returns the seconds until its heading has turned 90 % of the angle (`None`
+    /// if not within 15 s) and the shortest spine seen, as a fraction of the body
+    /// length.
+    fn closed_loop_turn_with(
+        angle_deg: f32,
+        speed_fraction: f32,
+        lead_secs: f32,
+        biases: [f32; 3],
+    ) -> (Option<f32>, f32) {
+        use crate::sim::body::turn_mc::{add_steering_with, combine_swim_and_turn};
+        let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+        let dt = fish.body().dt_secs();
+        let speed = speed_fraction * fish.top_speed_m_per_s();
+        let go = |fish: &mut PhysicalFish, desired: Vec3| {
+            let intent = fish.plan(desired);
+            let params = fish.swim.params_for_speed(intent.speed_fraction);
+            let (swim, turn) = (&fish.swim, &fish.turn);
+            fish.body.step_with(&intent.fins, Vec3::ZERO, |t| {
+                let mut m =
+                    combine_swim_and_turn(&swim.muscles_at(&params, t), &turn.muscles_at(t));
+                add_steering_with(&mut m, intent.steer, biases);
+                m
+            });
+            fish.swim.advance(&params, dt);
+            fish.update_heading();
+            fish.sync_point();
+        };
+        for _ in 0..(lead_secs / dt) as usize {
+            go(&mut fish, Vec3::X * speed);
+        }
+        let start = fish.heading();
+        let goal = glam::Quat::from_rotation_y(angle_deg.to_radians()) * start;
+        let (mut unwrapped, mut prev, mut shortest) = (0.0f32, 0.0f32, 1.0f32);
+        for step in 0..(15.0 / dt) as usize {
+            go(&mut fish, goal * speed);
+            let h = level_turn_deg(start, fish.heading());
+            unwrapped += (h - prev + 180.0).rem_euclid(360.0) - 180.0;
+            prev = h;
+            shortest = shortest.min(fish.body().spine_length_m() / fish.body_length_m());
+            if unwrapped * angle_deg.signum() >= 0.9 * angle_deg.abs() {
+                return (Some((step + 1) as f32 * dt), shortest);
+            }
+        }
+        (None, shortest)
+    }
+
+    /// Behind the steering biases of `body::turn_mc` (`STEER_ANTERIOR_BIAS`):
+    /// closed-loop turns of ±90° and ±30° from 1.0, 0.7, 0.4 and 0.2 of the top
+    /// speed, each started at three tail-beat phases (3.0, 3.2, 3.4 s of lead-in);
+    /// prints the seconds to 90 % of each turn ("never" = not within 15 s), the
+    /// worst and the shortest spine. `STEER_BIASES="0.5,0.5,0.25;1,1,0.5"`
+    /// measures other biases. `cargo test --release --lib closed_loop_turn_times --
+    /// --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn closed_loop_turn_times() {
+        use crate::sim::body::turn_mc::{
+            STEER_ANTERIOR_BIAS, STEER_MIDDLE_BIAS, STEER_POSTERIOR_BIAS,
+        };
+        let list: Vec<[f32; 3]> = std::env::var("STEER_BIASES")
+            .ok()
+            .map(|v| {
+                v.split(';')
+                    .filter_map(|b| {
+                        let x: Vec<f32> = b.split(',').filter_map(|y| y.parse().ok()).collect();
+                        (x.len() == 3).then(|| [x[0], x[1], x[2]])
+                    })
+                    .collect()
+            })
+            .unwrap_or_else(|| {
+                vec![[STEER_ANTERIOR_BIAS, STEER_MIDDLE_BIAS, STEER_POSTERIOR_BIAS]]
+            });
+        for biases in list {
+            println!("biases {biases:?}");
+            let (mut worst, mut shortest, mut never) = (0.0f32, 1.0f32, 0);
+            for speed in [1.0, 0.7, 0.4, 0.2] {
+                let mut row = format!("  from {speed} of top speed:");
+                for angle in [90.0, -90.0, 30.0, -30.0] {
+                    for lead in [3.0, 3.2, 3.4] {
+                        let (secs, spine) = closed_loop_turn_with(angle, speed, lead, biases);
+                        shortest = shortest.min(spine);
+                        match secs {
+                            Some(s) => {
+                                worst = worst.max(s);
+                                row += &format!(" {s:.1}");
+                            }
+                            None => {
+                                never += 1;
+                                row += " never";
+                            }
+                        }
+                    }
+                }
+                println!("{row}");
+            }
+            println!(
+                "  worst {worst:.1} s, {never} never, shortest spine {shortest:.2} of the length"
+            );
+        }
+    }
+
     #[test]
     #[ignore]
     fn turn_agility() {
@@ -657,204 +790,6 @@ mod agility {
                     "speed {speed:.1} angle {angle:6.1}°: 90 % in {secs:5.2} s, peak {peak:5.1}°/s, radius {radius:4.2} BL"
                 );
             }
-        }
-    }
-}
-
-#[cfg(test)]
-mod probe_tmp {
-    use super::*;
-    use crate::sim::body::turn_mc::{add_steering_with, combine_swim_and_turn};
-    use crate::sim::motor_bridge::level_turn_deg;
-
-    thread_local!(static FROZEN: std::cell::Cell<bool> = const { std::cell::Cell::new(false) });
-    fn unsafe_freeze_set() { FROZEN.with(|f| f.set(true)); }
-    fn closed(angle: f32, speed_fraction: f32, biases: [f32; 3], lead: f32) -> (f32, f32) {
-        closed_g(angle, speed_fraction, biases, lead, 1.0)
-    }
-    fn closed_g(angle: f32, speed_fraction: f32, biases: [f32; 3], lead: f32, g: f32) -> (f32, f32) {
-        let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
-        if let Ok(v) = std::env::var("BODY") {
-            use crate::sim::body::{BodyParams, FishBody, Integrator};
-            let parts: Vec<&str> = v.split(',').collect();
-            let mut p = BodyParams::default();
-            p.integrator = if parts[0] == "be" { Integrator::BackwardEuler } else { Integrator::Bdf2 };
-            p.substeps = parts[1].parse().unwrap();
-            p.jacobian_interval = parts[2].parse().unwrap();
-            if let Ok(v) = std::env::var("SPRINGD") { p.spring_damping = v.parse().unwrap(); }
-            if let Ok(v) = std::env::var("NODED") { p.node_damping = v.parse().unwrap(); }
-            if let Ok(v) = std::env::var("MINLEN") { p.muscle_min_length_ratio = v.parse().unwrap(); }
-            fish.body = FishBody::with_params(0.5, to_body_frame(Vec3::ZERO), to_body_frame(Vec3::X), p);
-        }
-        if let Ok(v) = std::env::var("FREQ") {
-            let f: f32 = v.parse().unwrap();
-            fish.swim.max.anterior_frequency_hz = f;
-            fish.swim.max.posterior_frequency_hz = f;
-        }
-        let dt = fish.body().dt_secs();
-        let speed = speed_fraction * fish.top_speed_m_per_s();
-        let mut go = |fish: &mut PhysicalFish, desired: Vec3| {
-            let mut intent = fish.plan(desired);
-            intent.speed_fraction = intent.speed_fraction.max((g * intent.steer.abs()).min(1.0));
-            if let Ok(v) = std::env::var("SFMIN") { let m: f32 = v.parse().unwrap(); if intent.steer != 0.0 { intent.speed_fraction = intent.speed_fraction.max(m); } }
-            if let Ok(v) = std::env::var("SCHED") {
-                let p: Vec<f32> = v.split(',').map(|x| x.parse().unwrap()).collect();
-                let r = fish.point.velocity_m_per_s.length() / (p[0] * fish.top_speed_m_per_s());
-                intent.steer *= r.clamp(p[1], 1.0);
-            }
-            if let Ok(v) = std::env::var("FREEZE") { let v: f32 = v.parse().unwrap(); if FROZEN.with(|f| f.get()) && v > 0.0 { intent.steer = 0.35; intent.speed_fraction = 0.4; intent.fins = PectoralFins::NEUTRAL; } }
-            if std::env::var("TRACE2").is_ok() { println!("up {:.2} steer {:.3} sf {:.3} fins {:.3} {:.3} v {:.3}", fish.up(), intent.steer, intent.speed_fraction, intent.fins.left_angle_rad, intent.fins.right_angle_rad, fish.point.velocity_m_per_s.length()); }
-            let params = fish.swim.params_for_speed(intent.speed_fraction);
-            let (swim, turn) = (&fish.swim, &fish.turn);
-            fish.body.step_with(&intent.fins, Vec3::ZERO, |t| {
-                let mut m = combine_swim_and_turn(&swim.muscles_at(&params, t), &turn.muscles_at(t));
-                add_steering_with(&mut m, intent.steer, biases);
-                m
-            });
-            fish.swim.advance(&params, dt);
-            fish.update_heading();
-            fish.sync_point();
-        };
-        for _ in 0..(lead / dt) as usize {
-            go(&mut fish, Vec3::X * speed);
-        }
-        let start = fish.heading();
-        let goal = glam::Quat::from_rotation_y(angle.to_radians()) * start;
-        let mut unwrapped = 0.0f32;
-        let mut prev = 0.0f32;
-        let mut minlen = 1.0f32;
-        for step in 0..(15.0 / dt) as usize {
-            if step == 80 { unsafe_freeze_set(); }
-            go(&mut fish, goal * speed);
-            let h = level_turn_deg(start, fish.heading());
-            unwrapped += (h - prev + 180.0).rem_euclid(360.0) - 180.0;
-            prev = h;
-            minlen = minlen.min(fish.body().spine_length_m() / fish.body_length_m());
-            if std::env::var("TRACE").is_ok() && step % 18 == 0 {
-                let f = fish.forward();
-                println!("t {:.2} turned {unwrapped:.1} v {:.3} len {:.3} fwd {:.2} {:.2} {:.2} head {:.2} {:.2} {:.2}", step as f32 * dt, fish.point.velocity_m_per_s.length(), fish.body().spine_length_m() / fish.body_length_m(), f.x, f.y, f.z, fish.heading.x, fish.heading.y, fish.heading.z);
-            }
-            if unwrapped * angle.signum() >= 0.9 * angle.abs() {
-                return ((step + 1) as f32 * dt, minlen);
-            }
-        }
-        (99.0, minlen)
-    }
-
-    #[test]
-    #[ignore]
-    fn probe_gain() {
-        let list: Vec<[f32; 3]> = match std::env::var("BIASES") {
-            Ok(v) => v.split(';').map(|b| { let x: Vec<f32> = b.split(',').map(|y| y.parse().unwrap()).collect(); [x[0], x[1], x[2]] }).collect(),
-            Err(_) => vec![[0.5, 0.5, 0.25], [1.0, 1.0, 0.5]],
-        };
-        for biases in list {
-            for g in [1.0] {
-                let mut row = format!("{biases:?} g {g}:");
-                let mut worst = 0.0f32;
-                let mut minl = 1.0f32;
-                for speed in [1.0, 0.7, 0.4, 0.2] {
-                    for angle in [90.0, -90.0, 30.0, -30.0] {
-                        for lead in [3.0, 3.2, 3.4] {
-                            let (t, l) = closed_g(angle, speed, biases, lead, g);
-                            worst = worst.max(t);
-                            minl = minl.min(l);
-                            row += &format!(" {t:.1}");
-                        }
-                    }
-                }
-                println!("{row} | worst {worst:.1} minlen {minl:.2}");
-            }
-        }
-    }
-
-    #[test]
-    #[ignore]
-    fn probe_open() {
-        use crate::sim::body::turn_mc::STEER_POSTERIOR_BIAS;
-        let _ = STEER_POSTERIOR_BIAS;
-        for sf in [0.3f32, 0.5, 0.7, 1.0] {
-            let mut row = format!("sf {sf}:");
-            for steer in [0.0f32, 0.05, 0.1, 0.2, 0.4, 1.0] {
-                let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
-                let dt = fish.body().dt_secs();
-                let mut swim = SwimMc::default();
-                let params = swim.params_for_speed(sf);
-                let mut speeds = vec![];
-                for i in 0..(12.0 / dt) as usize {
-                    let s = if i as f32 * dt > std::env::var("LEAD").map(|v| v.parse::<f32>().unwrap()).unwrap_or(4.0) { steer } else { 0.0 };
-                    fish.body.step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |t| {
-                        let mut u = swim.muscles_at(&params, t);
-                        add_steering_with(&mut u, s, [0.5, 0.5, 0.25]);
-                        u
-                    });
-                    swim.advance(&params, dt);
-                    fish.sync_point();
-                    if i as f32 * dt > 8.0 { speeds.push(fish.point.velocity_m_per_s.length()); }
-                }
-                let v = speeds.iter().sum::<f32>() / speeds.len() as f32 / 0.5;
-                row += &format!(" {steer}:{v:.3}");
-            }
-            println!("{row}");
-        }
-    }
-
-    #[test]
-    #[ignore]
-    fn probe_hyst() {
-        for (kick, after_steer, after_sf) in [(1.0f32, 0.4f32, 0.4f32), (1.0, 0.0, 0.4), (0.0, 0.4, 0.4), (1.0, 0.0, 1.0), (0.6, 0.0, 0.4)] {
-            let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
-            let dt = fish.body().dt_secs();
-            let mut swim = SwimMc::default();
-            let mut row = format!("kick {kick} then steer {after_steer} sf {after_sf}:");
-            for i in 0..(20.0 / dt) as usize {
-                let t = i as f32 * dt;
-                let (sf, s) = if t < 3.0 { (0.4, 0.0) } else if t < 4.5 { (kick.max(0.4), kick) } else { (after_sf, after_steer) };
-                let params = swim.params_for_speed(sf);
-                fish.body.step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |t| {
-                    let mut u = swim.muscles_at(&params, t);
-                    add_steering_with(&mut u, s, [0.5, 0.5, 0.0]);
-                    u
-                });
-                swim.advance(&params, dt);
-                fish.sync_point();
-                if i % 36 == 0 { row += &format!(" {:.3}", fish.point.velocity_m_per_s.length()); }
-            }
-            println!("{row}");
-        }
-    }
-
-    #[test]
-    #[ignore]
-    fn probe_one() {
-        let e = |k: &str, d: f32| std::env::var(k).map(|v| v.parse::<f32>().unwrap()).unwrap_or(d);
-        println!("{:?}", closed([e("ANGLE", -30.0), 0.0][0], e("SPEED", 0.4), [0.5, 0.5, 0.25], e("LEAD", 3.2)));
-    }
-
-    #[test]
-    #[ignore]
-    fn probe_trace() {
-        println!("{:?}", closed(30.0, 0.4, [0.5, 0.5, 0.0], 3.0));
-    }
-
-    #[test]
-    #[ignore]
-    fn probe_biases() {
-        for biases in [[1.0, 0.0, 0.0], [0.7, 0.0, 0.0], [0.5, 0.0, 0.0], [1.0, 0.2, 0.0], [1.0, 0.0, 0.2], [0.5, 0.5, 0.25], [0.7, 0.3, 0.15]] {
-            let mut row = format!("{biases:?}:");
-            let mut worst = 0.0f32;
-            let mut minl = 1.0f32;
-            for speed in [1.0, 0.7, 0.4] {
-                for angle in [90.0, -90.0, 30.0, -30.0] {
-                    for lead in [3.0, 3.2, 3.4] {
-                        let (t, l) = closed(angle, speed, biases, lead);
-                        worst = worst.max(t);
-                        minl = minl.min(l);
-                        row += &format!(" {t:.1}");
-                    }
-                }
-            }
-            println!("{row} | worst {worst:.1} minlen {minl:.2}");
         }
     }
 }

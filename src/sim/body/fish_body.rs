@@ -46,7 +46,7 @@
 //! moves to frequencies 3/4 as high, its collapse from about 4.1 Hz to about
 //! 3.1 Hz, so 3 Hz would sit at the collapse (measured while choosing the
 //! default). The paper's own step, 0.055 paper units, would need k steps per
-//! 0.055 s; [`BodyParams::substeps`] = 16 substeps of 3.4 ms (0.1375 paper
+//! 0.055 s; [`BodyParams::substeps`] = 12 substeps of 4.6 ms (0.18 paper
 //! units) are converged (below).
 //!
 //! # Integration
@@ -68,7 +68,7 @@
 //! compressed spring at zero keeps K positive semi-definite, so the matrix is
 //! symmetric positive definite and a banded Cholesky solves it
 //! (`banded_cholesky.rs`). [`BodyParams::jacobian_interval`] = 2 reuses one
-//! assembled and factorised matrix for 2 substeps (6.9 ms): every substep still
+//! assembled and factorised matrix for 2 substeps (9.2 ms): every substep still
 //! evaluates the forces and the right-hand side at its own state; only the
 //! matrix is up to one substep old.
 //!
@@ -89,64 +89,83 @@
 //!
 //! | integrator | controllers sampled | substeps | matrix every | 1 Hz | 2 Hz | 2.3 Hz (top) | 3 Hz | 4 Hz | 5 Hz | 30° key | 45° key | 60° key | 90° key |
 //! |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|
-//! | backward Euler (before) | once per step | 8 | 1 | 0.175 | 0.436 | 0.499 | 0.600 | 0.662 | 0.662 | 20.7° | 33.3° | 43.1° | 64.3° |
-//! | backward Euler | once per step | 16 | 1 | 0.181 | 0.465 | 0.539 | 0.667 | 0.756 | 0.776 | 23.8° | 38.0° | 49.2° | 72.8° |
-//! | backward Euler | once per step | 32 | 1 | 0.185 | 0.480 | 0.559 | 0.695 | 0.798 | 0.826 | 25.4° | 40.5° | 52.5° | 77.1° |
-//! | backward Euler | every substep | 8 | 1 | 0.177 | 0.457 | 0.527 | 0.646 | 0.742 | 0.785 | 22.2° | 34.8° | 45.1° | 67.9° |
-//! | backward Euler | every substep | 16 | 1 | 0.184 | 0.488 | 0.569 | 0.717 | 0.836 | 0.855 | 25.4° | 39.7° | 51.5° | 77.1° |
-//! | backward Euler | every substep | 32 | 1 | 0.188 | 0.504 | 0.590 | 0.747 | 0.884 | −0.067 | 27.4° | 42.3° | 54.8° | 82.1° |
-//! | backward Euler | every substep | 64 | 1 | 0.190 | 0.513 | 0.602 | 0.762 | 0.904 | −0.101 | 28.6° | 44.1° | 57.0° | 85.1° |
-//! | BDF2 | every substep | 8 | 1 | 0.193 | 0.523 | 0.610 | 0.776 | 0.850 | −0.065 | 30.9° | 47.3° | 61.6° | 91.4° |
-//! | BDF2 | every substep | 12 | 1 | 0.193 | 0.522 | 0.610 | 0.776 | 0.885 | −0.022 | 30.1° | 46.4° | 60.2° | 90.0° |
-//! | BDF2 | every substep | 16 | 1 | 0.193 | 0.523 | 0.610 | 0.777 | 0.893 | −0.046 | 30.0° | 46.4° | 60.3° | 90.3° |
-//! | **BDF2 (default)** | every substep | **16** | **2** | 0.193 | 0.524 | **0.611** | 0.777 | 0.895 | −0.045 | **30.0°** | **46.2°** | **60.0°** | **90.0°** |
-//! | BDF2 | every substep | 24 | 4 | 0.193 | 0.523 | 0.611 | 0.777 | 0.896 | −0.043 | 30.4° | 46.7° | 60.7° | 90.3° |
-//! | BDF2 | every substep | 32 | 4 | 0.193 | 0.523 | 0.613 | 0.777 | 0.900 | −0.027 | 30.4° | 46.7° | 60.5° | 89.7° |
-//! | BDF2 | every substep | 64 | 8 | 0.192 | 0.523 | 0.614 | 0.777 | 0.917 | −0.025 | 30.4° | 46.8° | 60.6° | 89.7° |
+//! | backward Euler (before) | once per step | 8 | 1 | 0.174 | 0.431 | 0.493 | 0.593 | 0.652 | 0.647 | 22.1° | 33.5° | 43.4° | 64.7° |
+//! | backward Euler | once per step | 16 | 1 | 0.181 | 0.460 | 0.532 | 0.658 | 0.746 | 0.763 | 24.7° | 37.8° | 49.1° | 73.2° |
+//! | backward Euler | once per step | 32 | 1 | 0.184 | 0.475 | 0.552 | 0.688 | 0.791 | 0.818 | 26.0° | 40.3° | 52.2° | 77.7° |
+//! | backward Euler | every substep | 8 | 1 | 0.177 | 0.452 | 0.522 | 0.640 | 0.741 | 0.781 | 23.3° | 35.3° | 45.6° | 68.4° |
+//! | backward Euler | every substep | 16 | 1 | 0.183 | 0.483 | 0.563 | 0.711 | 0.831 | 0.884 | 26.2° | 39.7° | 51.4° | 77.6° |
+//! | backward Euler | every substep | 32 | 1 | 0.187 | 0.499 | 0.585 | 0.743 | 0.887 | 0.921 | 27.8° | 41.9° | 54.5° | 82.4° |
+//! | backward Euler | every substep | 64 | 1 | 0.189 | 0.508 | 0.596 | 0.758 | 0.912 | −0.104 | 28.7° | 43.3° | 56.2° | 85.1° |
+//! | BDF2 | every substep | 8 | 1 | 0.192 | 0.519 | 0.606 | 0.770 | 0.877 | 0.162 | 30.4° | 45.9° | 60.2° | 90.8° |
+//! | BDF2 | every substep | 12 | 1 | 0.192 | 0.517 | 0.606 | 0.772 | 0.911 | 0.004 | 30.0° | 45.4° | 59.2° | 89.5° |
+//! | **BDF2 (default)** | every substep | **12** | **2** | 0.192 | 0.518 | **0.607** | 0.775 | 0.914 | 0.247 | **30.0°** | **45.0°** | **59.1°** | **90.2°** |
+//! | BDF2 | every substep | 12 | 3 | 0.192 | 0.517 | 0.607 | 0.772 | 0.907 | 0.000 | 29.9° | 45.6° | 59.2° | 89.5° |
+//! | BDF2 | every substep | 16 | 1 | 0.191 | 0.517 | 0.607 | 0.773 | 0.919 | −0.013 | 29.9° | 45.2° | 58.9° | 89.1° |
+//! | BDF2 (the previous default) | every substep | 16 | 2 | 0.191 | 0.517 | 0.607 | 0.773 | 0.919 | −0.005 | 29.8° | 44.8° | 58.5° | 88.4° |
+//! | BDF2 | every substep | 16 | 4 | 0.192 | 0.520 | 0.610 | 0.776 | 0.920 | 0.000 | 29.9° | 45.3° | 58.9° | 88.9° |
+//! | BDF2 | every substep | 24 | 4 | 0.191 | 0.517 | 0.607 | 0.774 | 0.927 | −0.029 | 29.8° | 45.1° | 58.7° | 88.7° |
+//! | BDF2 | every substep | 32 | 4 | 0.191 | 0.516 | 0.607 | 0.774 | 0.930 | −0.049 | 29.8° | 45.0° | 58.5° | 88.4° |
+//! | BDF2 | every substep | 64 | 8 | 0.191 | 0.516 | 0.607 | 0.774 | 0.933 | −0.083 | 29.7° | 44.9° | 58.3° | 88.2° |
 //!
+//! (Every row with the spring damping of 2.0, [`BodyParams::spring_damping`], and
+//! the current keys.)
 //! - The old default was far from converged: its top speed and turns grew with every
-//!   doubling, its "saturation" above 3–4 Hz (0.662 at both 4 and 5 Hz) was numerical
-//!   damping, and the turns of the current keys come out about 30 % smaller on it.
+//!   doubling, its "saturation" above 3–4 Hz (0.652 at 4 Hz, 0.647 at 5) was numerical
+//!   damping, and the keys turn about 28 % less on it.
 //! - Backward Euler converges only to first order: at 64 substeps a doubling still adds
 //!   2 % to the speed and 4 % to the 90° turn. Sampling the controllers every substep
-//!   removes the ramp's error (0.600 → 0.646 at 3 Hz and 8 substeps).
+//!   removes the ramp's error (0.593 → 0.640 at 3 Hz and 8 substeps).
 //! - BDF2 with per-substep sampling has the speed converged from 8 substeps on
-//!   (0.610–0.614 at 2.3 Hz). From the default, 16 substeps with a matrix every 2, a
-//!   doubling (32 substeps, matrix every 4: as fresh in time) changes the top speed by
-//!   0.3 % and the 30/45/60/90° keys by 1.3 / 1.1 / 0.8 / 0.3 %.
+//!   (0.606–0.610 at 2.3 Hz). From the default, 12 substeps with a matrix every 2, a
+//!   doubling (24 substeps, matrix every 4: as fresh in time) changes the top speed
+//!   by less than 0.1 % and the 30/45/60/90° keys by 0.7 / 0.2 / 0.7 / 1.7 %.
 //!   `tests::the_default_body_is_converged` fails if a doubling changes the top speed
 //!   or a key turn by 3 % or more.
-//! - The 45° key turns 46.2° at the default with its amplitude rounded to four
-//!   decimals (the search's unrounded value turned 44.9°): near that amplitude the turn
-//!   is sensitive to the last digits, a property of the turn, not of the resolution.
-//! - At a 3 Hz top setting the turns converge more slowly (while choosing: from 24
-//!   substeps a doubling still changed the 90° key by 2.7 %), and held-bend steering
-//!   turned at only 6.5°/s instead of 35°/s; at 2.3 Hz both are well behaved and the
-//!   top speed stays the 0.6 body lengths/s every scene was tuned to.
-//! - The 5 Hz column is not a numerical failure: it is the same on every converged row
-//!   (the passive tail fails from 4.25 Hz, `motor_controller.rs`).
+//! - At a 3 Hz top setting the turns converge more slowly (while choosing, on the
+//!   earlier body: from 24 substeps a doubling still changed the 90° key by 2.7 %);
+//!   at 2.3 Hz the top speed stays the 0.6 body lengths/s every scene was tuned to.
+//! - The 5 Hz column is not converged and need not be: above 4.25 Hz the passive tail
+//!   fails (`motor_controller.rs`) and what is left of the swimming is erratic.
+//!
+//! ## Converged is not enough: the held bend's second state
+//! With the spring damping of the earlier body, 0.1, a slow fish that steered with a
+//! held bend (`turn_mc::add_steering`) could fall into a second, almost motionless
+//! state (0.02 m/s instead of 0.1 m/s for a 0.5 m fish at 0.4 of the top speed) and
+//! stay there even when the command was then held constant; started from steady
+//! swimming, the same command swam on. That state belongs to the equations, not to
+//! the integrator: `physical_fish::agility::closed_loop_turn_times` (±90° and ±30°
+//! turns from 1.0/0.7/0.4/0.2 of the top speed, three tail-beat phases, 15 s
+//! limit) never finished some turns with BDF2 at 16, 64 and 256 substeps and with
+//! backward Euler at 256 and 1024, the converged runs agreeing closely; only backward
+//! Euler at 64 substeps finished them all (worst 6.3 s), through its numerical
+//! damping. The lightly damped springs are the light tail fin's (0.165 mass units on
+//! springs of 30: damping 0.1 is 2 % of critical). With spring damping 2.0 (45 % of
+//! critical for a tail-fin spring, 5 % for the heaviest nodes) every turn finishes,
+//! and the result agrees across resolutions: worst 5.9 s at BDF2 12/1, 5.8 s at
+//! 16/2 and 24/4, 5.9 s at 32/4 and 64/1, 6.7 s at 12/2 (biases 0.5/0.5/0.25); with
+//! damping 1.0 the worst was 12.4 s at 64/1, with 0.5 some turns still never
+//! finished at 16/2. A matrix older than 2 substeps of
+//! 4.6 ms brings the stalls back (12/3 and 16/4, 13.8 ms: never at 0.2 of the top
+//! speed), so the matrix stays at most 9.2 ms old. The swimming barely changes
+//! (top speed 0.611 → 0.607 body lengths/s).
 //!
 //! # Cost
 //! Measured with `tests::step_cost` (`cargo test --release --lib step_cost --
 //! --ignored --nocapture`, a fish swimming at top speed, minimum of seven batches
 //! of 2000 steps; set `STEP_COST=bdf2:24:4,euler:8:1` to time other settings),
-//! native release build on the development machine while two other engineers'
-//! builds shared its two cores, so the absolute figures are high; compare the rows:
+//! native release build on the development machine shared with another engineer's
+//! builds; compare the rows (measured in one run):
 //!
 //! | scheme | µs per step | µs per substep |
 //! |--------|------------:|---------------:|
-//! | backward Euler, 8 substeps, matrix every substep (the earlier default) | 60.5 | 7.6 |
-//! | BDF2, 8 substeps, matrix every substep | 68.3 | 8.5 |
-//! | BDF2, 16 substeps, matrix every 2 (default) | 94.2 | 5.9 |
-//! | BDF2, 24 substeps, matrix every 4 | 116.1 | 4.8 |
-//! | BDF2, 32 substeps, matrix every 4 | 154.9 | 4.8 |
+//! | backward Euler, 8 substeps, matrix every substep (the earlier default) | 47.5 | 5.9 |
+//! | BDF2, 12 substeps, matrix every substep | 72.6 | 6.1 |
+//! | **BDF2, 12 substeps, matrix every 2 (default)** | **51.7** | 4.3 |
+//! | BDF2, 16 substeps, matrix every 2 (the previous default) | 68.8 | 4.3 |
 //!
-//! The converged body costs about 1.6 times the old one per step. Reusing the matrix
-//! for 4 substeps at 24 (9.2 ms) or 8 at 32 (13.8 ms) leaves speed and turns within
-//! 0.5 % of a fresh matrix every substep; 6 at 24 (13.8 ms) moves the key turns by
-//! up to 1.6 %, 8 at 24 (18 ms) by up to 3 % and slows 4 Hz swimming to 0.54, and
-//! 8 at 16 (27.5 ms) blows up at 3 Hz (measured with the earlier keys while
-//! choosing the default).
+//! The default costs 1.09 times the old body per step. Earlier figures on a busier
+//! machine (same code): backward Euler 8/1 60.5 µs, BDF2 16/2 94.2, 24/4 116.1, 32/4
+//! 154.9 µs. Reusing the matrix longer is cheaper but not robust (above).
 //! A substep with a fresh matrix spends about half its time factorising: the
 //! factorisation follows the envelope of the matrix instead of the full band
 //! and works column-major, a node (three columns) at a time, in contiguous loops
@@ -166,7 +185,8 @@ use super::body_layout::{
 use super::hydrodynamics::add_water_forces;
 use super::pectoral_fins::PectoralFins;
 
-/// Largest accepted [`BodyParams::substeps`].
+/// Largest accepted [`BodyParams::substeps`] (1024: enough for convergence checks
+/// far beyond the default; it was 64, which silently capped such checks).
 pub const MAX_SUBSTEPS: u32 = 1024;
 
 /// Physical parameters of the body, in paper units (a 26-unit fish); [`FishBody`]
@@ -180,8 +200,12 @@ pub struct BodyParams {
     /// drifts with the current).
     pub node_damping: f32,
     /// Damping along each spring, paper units (force per relative velocity).
-    /// Default 0.1, the value of the vanish87/UnityFishSimulation re-implementation;
-    /// the paper has none. It calms the stiff tail-fin modes.
+    /// Default 2.0, measured (module doc, "Converged is not enough"); the paper has
+    /// none, and the vanish87/UnityFishSimulation re-implementation's 0.1 (the
+    /// earlier default) leaves the light tail fin's springs at 2 % of critical
+    /// damping: a slow fish steering with a held bend could then stall for good.
+    /// 2.0 is 45 % of critical on a tail-fin spring and 5 % on the heaviest nodes;
+    /// it changes the top speed from 0.611 to 0.607 body lengths/s.
     pub spring_damping: f32,
     /// Fully contracted muscle rest length as a fraction of the relaxed one
     /// (l_min / l), dimensionless. Default 0.5, tuned (the paper gives no number;
@@ -205,21 +229,23 @@ pub struct BodyParams {
     /// masses and lengths unchanged.
     pub paper_time_units_per_sec: f32,
     /// Implicit substeps per step, count (clamped to 1..=[`MAX_SUBSTEPS`]).
-    /// Default 16, measured: each substep is 3.4 ms = 0.1375 paper time units at
-    /// the default k = 40, and doubling them changes the top speed by 0.3 % and the
-    /// key turns by at most 1.3 % (module doc, "Convergence"). Cost grows about
-    /// linearly (module doc, "Cost").
+    /// Default 12, measured: each substep is 4.6 ms = 0.18 paper time units at
+    /// the default k = 40, and doubling them (with the matrix as fresh in time)
+    /// changes the top speed by less than 0.1 % and the key turns by at most 1.7 %
+    /// (module doc, "Convergence"). Cost grows about linearly (module doc, "Cost").
     pub substeps: u32,
     /// Substeps that share one system matrix and its factorisation (a lagged or
     /// "frozen" Jacobian), count, clamped to 1..=`substeps`. Default 2, measured:
-    /// one factorisation per 6.9 ms; forces and the right-hand side are always
+    /// one factorisation per 9.2 ms; forces and the right-hand side are always
     /// evaluated at the current state, only the matrix is reused, and the speed and
-    /// key turns stay within 0.5 % of a fresh matrix every substep (module doc,
-    /// "Cost"). Keep the matrix younger than about 10 ms when changing `substeps`.
+    /// key turns stay within 1 % of a fresh matrix every substep (module doc,
+    /// "Convergence"). Keep the matrix younger than about 10 ms when changing
+    /// `substeps`: at 13.8 ms (12 substeps with 3 per matrix, 16 with 4) slow fish
+    /// steering with a held bend stall again (module doc, "Converged is not enough").
     #[serde(default = "one")]
     pub jacobian_interval: u32,
     /// The implicit scheme of each substep. Default [`Integrator::Bdf2`], chosen:
-    /// second order, converged at 16 substeps where backward Euler is not at 64
+    /// second order, converged at 12 substeps where backward Euler is not at 64
     /// (module doc, "Convergence").
     #[serde(default)]
     pub integrator: Integrator,

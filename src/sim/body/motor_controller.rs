@@ -133,6 +133,12 @@ impl SwimMc {
         self.muscles_at(params, 0.0)
     }
 
+    /// Phase of the anterior (middle-segment) oscillator, radians in [0, 2π): the
+    /// left side contracts while its sine is positive.
+    pub fn anterior_phase_rad(&self) -> f32 {
+        self.anterior_phase_rad
+    }
+
     /// Advances the oscillators by `dt_secs` (continuous when the frequency
     /// changes).
     pub fn advance(&mut self, params: &SwimParams, dt_secs: f32) {

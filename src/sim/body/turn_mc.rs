@@ -51,7 +51,7 @@
 //! Euler, controllers sampled once per step) the same keys turn about 30 % less.
 
 use serde::{Deserialize, Serialize};
-use std::f32::consts::{PI, TAU};
+use std::f32::consts::{FRAC_PI_2, PI, TAU};
 
 use super::body_layout::{MUSCLE_COUNT, MuscleSegment, Side, muscle_index};
 use super::motor_controller::ControlSampling;
@@ -158,10 +158,10 @@ impl SteeringMap {
     /// The key sets found by [`find_steering_map`] (see the module doc).
     pub const DEFAULT: Self = Self {
         keys: [
-            (30.0, key(0.3523)),
-            (45.0, key(0.4400)),
-            (60.0, key(0.5238)),
-            (90.0, key(0.6570)),
+            (30.0, key(0.3481)),
+            (45.0, key(0.4333)),
+            (60.0, key(0.5169)),
+            (90.0, key(0.6741)),
         ],
     };
 
@@ -211,8 +211,27 @@ pub const KEY_RATE_PER_SEC: f32 = 2.0;
 struct ActiveTurn {
     params: TurnParams,
     direction: TurnDirection,
+    /// Seconds since the quick stroke began; negative while the turn waits for
+    /// its beat phase ([`TurnMc::wait_for_beat`]).
     elapsed_secs: f32,
+    /// Has the start been timed to the beat (or did the caller not ask)?
+    #[serde(default)]
+    timed: bool,
 }
+
+/// Phase of the swim-MC's beat (its anterior oscillator, radians; the left side
+/// contracts while its sine is positive) at which the quick stroke of a left turn
+/// begins: π/2, where the left side's swim contraction peaks (a right turn: 3π/2,
+/// the mirror image). Chosen by measurement: how far a turn turns depends on
+/// where in the beat its stroke begins. On the physical fish
+/// (`physical_fish::tests::turn_at_speed_deg`: a turn requested after 3 s at 0.3,
+/// 0.6 or 1.0 of the top speed), untimed, the 60° key turned 50.7–62.6° at 0.3 of
+/// the top speed depending on the step at which it was requested; with the stroke
+/// timed to the beat, keys ±30/60/90° at the three speeds and two request times
+/// stay within 8.2 % of the key at π/2 (11.1–15.7 % at 345°, 0°, 15°, 30°, 45°,
+/// 60°; 23.4 % at 120°). [`TurnMc::wait_for_beat`] does the timing; the key
+/// measurement ([`measure_turn_deg`]) times its turns the same way.
+pub const KEY_BEAT_PHASE_RAD: f32 = FRAC_PI_2;
 
 /// The left- and right-turn motor controllers (one object; the sign of the angle
 /// picks the side).
@@ -271,6 +290,7 @@ impl TurnMc {
             params,
             direction,
             elapsed_secs: 0.0,
+            timed: false,
         });
     }
 
@@ -289,7 +309,40 @@ impl TurnMc {
             params: self.map.params_for_angle(self.queued_angle_deg),
             direction,
             elapsed_secs: 0.0,
+            timed: false,
         });
+    }
+
+    /// Delays the quick stroke of a turn (or of the next part of a sequence) that
+    /// has not begun yet until the swim beat, now at `beat_phase_rad` and running
+    /// at `beat_frequency_hz`, reaches [`KEY_BEAT_PHASE_RAD`] (half a beat later
+    /// for a right turn): the wait is less than one beat, and the turn counts as
+    /// running (the caller keeps beating at the turn's setting). Does nothing if
+    /// the turn already started, was timed before, or the beat stands still.
+    pub fn wait_for_beat(&mut self, beat_phase_rad: f32, beat_frequency_hz: f32) {
+        let Some(turn) = self.active.as_mut() else {
+            return;
+        };
+        if turn.timed || turn.elapsed_secs != 0.0 {
+            return;
+        }
+        turn.timed = true;
+        if !(beat_frequency_hz.is_finite() && beat_frequency_hz > 0.0 && beat_phase_rad.is_finite())
+        {
+            return;
+        }
+        let target = match turn.direction {
+            TurnDirection::Left => KEY_BEAT_PHASE_RAD,
+            TurnDirection::Right => KEY_BEAT_PHASE_RAD + PI,
+        };
+        let wait_rad = (target - beat_phase_rad).rem_euclid(TAU);
+        turn.elapsed_secs = -wait_rad / (TAU * beat_frequency_hz);
+    }
+
+    /// Seconds until the quick stroke of the current turn begins (0 once it has,
+    /// or without a turn).
+    pub fn wait_secs(&self) -> f32 {
+        self.active.map_or(0.0, |t| (-t.elapsed_secs).max(0.0))
     }
 
     /// True while a turn (or a queued part of one) is in progress.
@@ -460,7 +513,10 @@ pub fn measure_heading_change_deg_with(
         w.push(h);
     };
     let mean = |w: &[f32]| w.iter().sum::<f32>() / w.len().max(1) as f32;
-    let mut run = |fish: &mut FishBody, mut mc: Option<&mut TurnMc>, window: &mut Vec<f32>| {
+    let mut run = |fish: &mut FishBody,
+                   swim: &mut SwimMc,
+                   mut mc: Option<&mut TurnMc>,
+                   window: &mut Vec<f32>| {
         let muscles_at = |t: f32, swim: &SwimMc, mc: Option<&TurnMc>| {
             let mut u = swim.muscles_at(&SwimParams::MAX, t);
             if mirror_swim {
@@ -498,18 +554,22 @@ pub fn measure_heading_change_deg_with(
         push(window, unwrapped_rad);
     };
     for _ in 0..(TURN_LEAD_IN_SECS / dt).round() as usize {
-        run(&mut fish, None, &mut window);
+        run(&mut fish, &mut swim, None, &mut window);
     }
     let before = mean(&window);
+    // The stroke begins at the key beat phase (the swim is mirrored for a right
+    // turn, so its beat is half a period on).
+    let beat = swim.anterior_phase_rad() + if mirror_swim { PI } else { 0.0 };
+    mc.wait_for_beat(beat, SwimParams::MAX.anterior_frequency_hz);
     // Guard: at most 60 s of turning.
     for _ in 0..(60.0 / dt) as usize {
         if !mc.is_turning() {
             break;
         }
-        run(&mut fish, Some(mc), &mut window);
+        run(&mut fish, &mut swim, Some(mc), &mut window);
     }
     for _ in 0..(TURN_SETTLE_SECS / dt).round() as usize {
-        run(&mut fish, None, &mut window);
+        run(&mut fish, &mut swim, None, &mut window);
     }
     (mean(&window) - before).to_degrees()
 }
@@ -548,21 +608,31 @@ pub fn find_steering_map_with(body: super::BodyParams) -> (SteeringMap, [f32; 4]
 }
 
 /// Contraction added to the turning side of the anterior segment at full steering
-/// (|steer| = 1), contraction factor. 0.5, tuned on the converged body
-/// (`physical_fish::agility`, closed-loop turns from 0.7 and 1.0 of the top speed,
-/// left and right, three tail-beat phases at the start): with 1.0 / 1.0 / 0.5 for
-/// the three segments (the tuning of the earlier, unconverged body) a 90° turn
-/// took 2.3 s or 13 s depending on the tail-beat phase when it began, and the
-/// body folded to 0.73 of its length; with 0.5 / 0.5 / 0.25 it takes 3.1–3.3 s
-/// either way and the body keeps at least 0.84 of its length. The bend is held as
-/// long as the command lasts, so the tail's thrust on the bent body keeps yawing
+/// (|steer| = 1), contraction factor. 0.75, tuned on the default body with
+/// `physical_fish::agility::closed_loop_turn_times` (closed-loop turns of ±90° and
+/// ±30° through the bridge from 1.0, 0.7, 0.4 and 0.2 of the top speed, three
+/// tail-beat phases at the start; seconds to 90 % of the turn, 15 s limit), anterior
+/// / middle / posterior biases:
+///
+/// | biases | worst time | shortest spine | 90° from 0.7 of top speed |
+/// |---|---:|---:|---|
+/// | 0.5 / 0.5 / 0.25 | 6.7 s | 0.87 | 3.0 s, radius 1.07 body lengths |
+/// | 0.6 / 0.6 / 0.3 | 5.9 s | 0.85 | |
+/// | **0.75 / 0.75 / 0.375** | **5.5 s** | 0.83 | radius < 1 body length |
+/// | 0.75 / 0.75 / 0.5 | 7.0 s | 0.82 | |
+/// | 1.0 / 1.0 / 0.5 | never (stalls) | 0.78 | |
+///
+/// With the earlier spring damping of 0.1 (`fish_body.rs`, `BodyParams::spring_damping`)
+/// every set stalled on some start: a slow fish with a held bend fell into a second,
+/// almost motionless state (0.02 m/s) and never finished its turn. The bend is held
+/// as long as the command lasts, so the tail's thrust on the bent body keeps yawing
 /// the fish (see the module doc).
-pub const STEER_ANTERIOR_BIAS: f32 = 0.5;
+pub const STEER_ANTERIOR_BIAS: f32 = 0.75;
 /// The same for the middle segment, whose swim wave beats around the bent mean.
-/// 0.5, tuned with [`STEER_ANTERIOR_BIAS`].
-pub const STEER_MIDDLE_BIAS: f32 = 0.5;
-/// The same for the posterior segment. 0.25, tuned with [`STEER_ANTERIOR_BIAS`].
-pub const STEER_POSTERIOR_BIAS: f32 = 0.25;
+/// 0.75, tuned with [`STEER_ANTERIOR_BIAS`].
+pub const STEER_MIDDLE_BIAS: f32 = 0.75;
+/// The same for the posterior segment. 0.375, tuned with [`STEER_ANTERIOR_BIAS`].
+pub const STEER_POSTERIOR_BIAS: f32 = 0.375;
 
 /// Continuous steering (not in the paper, whose turns are discrete): `steer` in
 /// [−1, 1] (+ = left, NaN = 0) adds |steer| × the segment biases
