@@ -33,22 +33,26 @@
 //! time spent bent. With the slow restoring stroke (1/20 of the contraction rate)
 //! that time is r/s·(1 + 20).
 //!
-//! Measured on the default (converged) body, `tests::turn_table`:
+//! Measured on the default (converged) body, `tests::turn_table`, each turn's quick
+//! stroke timed to the beat ([`KEY_BEAT_PHASE_RAD`]):
 //!
 //! | key angle | r0 = r1 | s0 = s1 (1/s) | duration (s) | measured (left) |
 //! |-----------|---------|---------------|--------------|-----------------|
-//! | 30°       | 0.3509  | 2.0           | 3.7          | 30.0°           |
-//! | 45°       | 0.4400  | 2.0           | 4.6          | 46.2°           |
-//! | 60°       | 0.5216  | 2.0           | 5.5          | 60.0°           |
-//! | 90°       | 0.6544  | 2.0           | 6.9          | 90.0°           |
+//! | 30°       | 0.3481  | 2.0           | 3.7          | 30.0°           |
+//! | 45°       | 0.4333  | 2.0           | 4.5          | 45.0°           |
+//! | 60°       | 0.5169  | 2.0           | 5.4          | 60.4°           |
+//! | 90°       | 0.6741  | 2.0           | 7.1          | 90.2°           |
 //!
-//! (The 45° key turned 44.9° at the search's unrounded amplitude; near it the turn
-//! is sensitive to the fourth decimal.) Interpolated (measured left/right):
-//! 10° → 11.3/−10.7, 20° → 21.3/−20.6, 35° → 36.6/−36.4, 50° → 49.4/−49.1,
-//! 75° → 74.7/−73.8. Sequences: 135° requested → 134.0°, 180° → 174.9°. Doubling
-//! the body's time resolution changes the key turns by 1.3 / 1.1 / 0.8 / 0.3 %
+//! Interpolated (measured left/right): 10° → 12.7/−12.0, 20° → 21.7/−21.0,
+//! 35° → 33.0/−32.2, 50° → 47.0/−46.1, 75° → 73.0/−72.3. Sequences: 135° requested
+//! → 130.6°, 180° → 181.7°. Right turns come out 0.7–0.9° smaller than left ones
+//! although the protocol mirrors every muscle: the body's surface is not mirror
+//! symmetric (each side quad of the skin is split into two triangles along a
+//! diagonal that does not mirror onto the other side's, `body_layout::TRIANGLES`),
+//! so the one-sided water force differs slightly between the sides. Doubling the
+//! body's time resolution changes the key turns by 0.7 / 0.2 / 0.7 / 1.7 %
 //! (`fish_body.rs`, "Convergence"). On the earlier, unconverged body (backward
-//! Euler, controllers sampled once per step) the same keys turn about 30 % less.
+//! Euler, controllers sampled once per step) the same keys turn about 28 % less.
 
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{FRAC_PI_2, PI, TAU};
@@ -529,7 +533,7 @@ pub fn measure_heading_change_deg_with(
         };
         match sampling {
             ControlSampling::PerStep => {
-                let u = muscles_at(dt, &swim, mc.as_deref());
+                let u = muscles_at(dt, swim, mc.as_deref());
                 fish.step(
                     &BodyCommand {
                         muscle_contractions: u,
@@ -540,7 +544,7 @@ pub fn measure_heading_change_deg_with(
             }
             ControlSampling::PerSubstep => {
                 fish.step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |t| {
-                    muscles_at(t, &swim, mc.as_deref())
+                    muscles_at(t, swim, mc.as_deref())
                 });
             }
         }
