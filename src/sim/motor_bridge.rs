@@ -17,7 +17,7 @@
 //! (`body/turn_mc.rs`), and one restarted every step never finishes its quick
 //! stroke. The steering command holds the turning side's bend for as long as the
 //! heading error lasts, proportionally to it, and the tail's thrust on the bent
-//! body yaws the fish at up to about 37–44°/s (measured in `physical_fish.rs`,
+//! body yaws the fish at up to about 30–41°/s (measured in `physical_fish.rs`,
 //! `agility`). The discrete turn-MC stays for hand commands (`PhysicalFish::turn`).
 //!
 //! Frames: the steering layer lives in the tank frame (y up); the body in its own
@@ -32,15 +32,15 @@ use serde::{Deserialize, Serialize};
 use super::body::PectoralFins;
 
 /// Swimming speed of the default body at the swim-MC's top setting, body lengths
-/// per second. 0.6, measured (`body::tests::speed_table`: 0.607 at 2.3 Hz and full
+/// per second. 0.6, measured (`body::tests::speed_table`: 0.608 at 2.3 Hz and full
 /// amplitude on the converged body; `body::tests::the_default_body_is_converged`
 /// checks it within 3 %).
 pub const TOP_SPEED_BODY_LENGTHS_PER_SEC: f32 = 0.6;
 
 /// Steering command per radian of heading error, 1/rad. 3, tuned
 /// (`physical_fish::agility`): full steering from 19° of error; a 90° turn at
-/// 0.7 of top speed reaches 81° in 2.4 s on the converged body (on the earlier
-/// body 3.1 s; gain 1.5: 3.5 s).
+/// 0.7 of top speed reaches 81° in 3.0 s on the converged body (3.1 s on the
+/// earlier body; gain 1.5 there: 3.5 s).
 pub const STEER_GAIN_PER_RAD: f32 = 3.0;
 
 /// Fin pitch per radian of elevation error (2, chosen: a 15° climb request tilts

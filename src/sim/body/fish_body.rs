@@ -89,43 +89,44 @@
 //!
 //! | integrator | controllers sampled | substeps | matrix every | 1 Hz | 2 Hz | 2.3 Hz (top) | 3 Hz | 4 Hz | 5 Hz | 30° key | 45° key | 60° key | 90° key |
 //! |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|
-//! | backward Euler (before) | once per step | 8 | 1 | 0.174 | 0.431 | 0.493 | 0.593 | 0.652 | 0.647 | 22.1° | 33.5° | 43.4° | 64.7° |
-//! | backward Euler | once per step | 16 | 1 | 0.181 | 0.460 | 0.532 | 0.658 | 0.746 | 0.763 | 24.7° | 37.8° | 49.1° | 73.2° |
-//! | backward Euler | once per step | 32 | 1 | 0.184 | 0.475 | 0.552 | 0.688 | 0.791 | 0.818 | 26.0° | 40.3° | 52.2° | 77.7° |
-//! | backward Euler | every substep | 8 | 1 | 0.177 | 0.452 | 0.522 | 0.640 | 0.741 | 0.781 | 23.3° | 35.3° | 45.6° | 68.4° |
-//! | backward Euler | every substep | 16 | 1 | 0.183 | 0.483 | 0.563 | 0.711 | 0.831 | 0.884 | 26.2° | 39.7° | 51.4° | 77.6° |
-//! | backward Euler | every substep | 32 | 1 | 0.187 | 0.499 | 0.585 | 0.743 | 0.887 | 0.921 | 27.8° | 41.9° | 54.5° | 82.4° |
-//! | backward Euler | every substep | 64 | 1 | 0.189 | 0.508 | 0.596 | 0.758 | 0.912 | −0.104 | 28.7° | 43.3° | 56.2° | 85.1° |
-//! | BDF2 | every substep | 8 | 1 | 0.192 | 0.519 | 0.606 | 0.770 | 0.877 | 0.162 | 30.4° | 45.9° | 60.2° | 90.8° |
-//! | BDF2 | every substep | 12 | 1 | 0.192 | 0.517 | 0.606 | 0.772 | 0.911 | 0.004 | 30.0° | 45.4° | 59.2° | 89.5° |
-//! | **BDF2 (default)** | every substep | **12** | **2** | 0.192 | 0.518 | **0.607** | 0.775 | 0.914 | 0.247 | **30.0°** | **45.0°** | **59.1°** | **90.2°** |
-//! | BDF2 | every substep | 12 | 3 | 0.192 | 0.517 | 0.607 | 0.772 | 0.907 | 0.000 | 29.9° | 45.6° | 59.2° | 89.5° |
-//! | BDF2 | every substep | 16 | 1 | 0.191 | 0.517 | 0.607 | 0.773 | 0.919 | −0.013 | 29.9° | 45.2° | 58.9° | 89.1° |
-//! | BDF2 (the previous default) | every substep | 16 | 2 | 0.191 | 0.517 | 0.607 | 0.773 | 0.919 | −0.005 | 29.8° | 44.8° | 58.5° | 88.4° |
-//! | BDF2 | every substep | 16 | 4 | 0.192 | 0.520 | 0.610 | 0.776 | 0.920 | 0.000 | 29.9° | 45.3° | 58.9° | 88.9° |
-//! | BDF2 | every substep | 24 | 4 | 0.191 | 0.517 | 0.607 | 0.774 | 0.927 | −0.029 | 29.8° | 45.1° | 58.7° | 88.7° |
-//! | BDF2 | every substep | 32 | 4 | 0.191 | 0.516 | 0.607 | 0.774 | 0.930 | −0.049 | 29.8° | 45.0° | 58.5° | 88.4° |
-//! | BDF2 | every substep | 64 | 8 | 0.191 | 0.516 | 0.607 | 0.774 | 0.933 | −0.083 | 29.7° | 44.9° | 58.3° | 88.2° |
+//! | backward Euler (before) | once per step | 8 | 1 | 0.174 | 0.431 | 0.493 | 0.593 | 0.654 | 0.649 | 21.9° | 33.7° | 44.4° | 64.9° |
+//! | backward Euler | once per step | 16 | 1 | 0.181 | 0.460 | 0.532 | 0.658 | 0.748 | 0.764 | 24.5° | 37.9° | 50.1° | 73.3° |
+//! | backward Euler | once per step | 32 | 1 | 0.184 | 0.475 | 0.552 | 0.688 | 0.793 | 0.819 | 25.9° | 40.4° | 53.2° | 77.7° |
+//! | backward Euler | every substep | 8 | 1 | 0.177 | 0.452 | 0.522 | 0.641 | 0.744 | 0.786 | 23.2° | 35.4° | 46.6° | 68.5° |
+//! | backward Euler | every substep | 16 | 1 | 0.183 | 0.483 | 0.564 | 0.712 | 0.837 | 0.886 | 26.0° | 39.7° | 52.4° | 77.5° |
+//! | backward Euler | every substep | 32 | 1 | 0.187 | 0.499 | 0.585 | 0.745 | 0.889 | 0.913 | 27.5° | 41.9° | 55.4° | 82.2° |
+//! | backward Euler | every substep | 64 | 1 | 0.189 | 0.508 | 0.596 | 0.760 | 0.914 | −0.110 | 28.4° | 43.2° | 57.1° | 84.8° |
+//! | BDF2 | every substep | 8 | 1 | 0.192 | 0.519 | 0.607 | 0.774 | 0.870 | 0.278 | 30.1° | 45.9° | 61.1° | 90.6° |
+//! | BDF2 | every substep | 12 | 1 | 0.191 | 0.518 | 0.607 | 0.776 | 0.910 | 0.001 | 29.7° | 45.4° | 60.1° | 89.3° |
+//! | **BDF2 (default)** | every substep | **12** | **2** | 0.192 | 0.518 | **0.608** | 0.779 | 0.914 | 0.269 | **29.7°** | **45.0°** | **60.0°** | **90.0°** |
+//! | BDF2 | every substep | 12 | 3 | 0.192 | 0.518 | 0.607 | 0.775 | 0.901 | 0.000 | 29.7° | 45.5° | 60.2° | 89.3° |
+//! | BDF2 | every substep | 16 | 1 | 0.191 | 0.517 | 0.607 | 0.775 | 0.922 | −0.041 | 29.6° | 45.2° | 59.8° | 88.8° |
+//! | BDF2 (the previous default) | every substep | 16 | 2 | 0.191 | 0.518 | 0.608 | 0.776 | 0.922 | −0.019 | 29.4° | 45.0° | 59.4° | 88.1° |
+//! | BDF2 | every substep | 16 | 4 | 0.192 | 0.520 | 0.610 | 0.778 | 0.922 | 0.000 | 29.6° | 45.3° | 59.7° | 88.6° |
+//! | BDF2 | every substep | 24 | 4 | 0.191 | 0.517 | 0.608 | 0.775 | 0.930 | −0.046 | 29.5° | 45.1° | 59.6° | 88.4° |
+//! | BDF2 | every substep | 32 | 4 | 0.191 | 0.517 | 0.608 | 0.775 | 0.933 | −0.065 | 29.5° | 45.0° | 59.4° | 88.2° |
+//! | BDF2 | every substep | 64 | 8 | 0.191 | 0.516 | 0.608 | 0.775 | 0.936 | −0.085 | 29.5° | 44.8° | 59.2° | 87.9° |
 //!
-//! (Every row with the spring damping of 2.0, [`BodyParams::spring_damping`], and
-//! the current keys.)
+//! (Every row with the spring damping of 2.0, [`BodyParams::spring_damping`], the
+//! mirror-symmetric skin and the current keys.)
 //! - The old default was far from converged: its top speed and turns grew with every
-//!   doubling, its "saturation" above 3–4 Hz (0.652 at 4 Hz, 0.647 at 5) was numerical
+//!   doubling, its "saturation" above 3–4 Hz (0.654 at 4 Hz, 0.649 at 5) was numerical
 //!   damping, and the keys turn about 28 % less on it.
 //! - Backward Euler converges only to first order: at 64 substeps a doubling still adds
 //!   2 % to the speed and 4 % to the 90° turn. Sampling the controllers every substep
-//!   removes the ramp's error (0.593 → 0.640 at 3 Hz and 8 substeps).
+//!   removes the ramp's error (0.593 → 0.641 at 3 Hz and 8 substeps).
 //! - BDF2 with per-substep sampling has the speed converged from 8 substeps on
-//!   (0.606–0.610 at 2.3 Hz). From the default, 12 substeps with a matrix every 2, a
+//!   (0.607–0.610 at 2.3 Hz). From the default, 12 substeps with a matrix every 2, a
 //!   doubling (24 substeps, matrix every 4: as fresh in time) changes the top speed
-//!   by less than 0.1 % and the 30/45/60/90° keys by 0.7 / 0.2 / 0.7 / 1.7 %.
+//!   by less than 0.1 % and the 30/45/60/90° keys by 0.7 / 0.2 / 0.7 / 1.8 %.
 //!   `tests::the_default_body_is_converged` fails if a doubling changes the top speed
 //!   or a key turn by 3 % or more.
 //! - At a 3 Hz top setting the turns converge more slowly (while choosing, on the
 //!   earlier body: from 24 substeps a doubling still changed the 90° key by 2.7 %);
 //!   at 2.3 Hz the top speed stays the 0.6 body lengths/s every scene was tuned to.
-//! - The 5 Hz column is not converged and need not be: above 4.25 Hz the passive tail
-//!   fails (`motor_controller.rs`) and what is left of the swimming is erratic.
+//! - The 5 Hz column is not converged and need not be: between 4.5 and 5 Hz the
+//!   passive tail fails (`motor_controller.rs`) and what is left of the swimming is
+//!   erratic.
 //!
 //! ## Converged is not enough: the held bend's second state
 //! With the spring damping of the earlier body, 0.1, a slow fish that steered with a
@@ -142,12 +143,13 @@
 //! springs of 30: damping 0.1 is 2 % of critical). With spring damping 2.0 (45 % of
 //! critical for a tail-fin spring, 5 % for the heaviest nodes) every turn finishes,
 //! and the result agrees across resolutions: worst 5.9 s at BDF2 12/1, 5.8 s at
-//! 16/2 and 24/4, 5.9 s at 32/4 and 64/1, 6.7 s at 12/2 (biases 0.5/0.5/0.25); with
+//! 16/2 and 24/4, 5.9 s at 32/4 and 64/1, 6.7 s at 12/2 (biases 0.5/0.5/0.25, the
+//! earlier chiral skin; 5.9 s at 12/2 with the symmetric skin); with
 //! damping 1.0 the worst was 12.4 s at 64/1, with 0.5 some turns still never
 //! finished at 16/2. A matrix older than 2 substeps of
 //! 4.6 ms brings the stalls back (12/3 and 16/4, 13.8 ms: never at 0.2 of the top
 //! speed), so the matrix stays at most 9.2 ms old. The swimming barely changes
-//! (top speed 0.611 → 0.607 body lengths/s).
+//! (top speed 0.611 → 0.607 body lengths/s; 0.608 with the mirror-symmetric skin).
 //!
 //! # Cost
 //! Measured with `tests::step_cost` (`cargo test --release --lib step_cost --

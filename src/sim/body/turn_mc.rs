@@ -38,19 +38,18 @@
 //!
 //! | key angle | r0 = r1 | s0 = s1 (1/s) | duration (s) | measured (left) |
 //! |-----------|---------|---------------|--------------|-----------------|
-//! | 30°       | 0.3481  | 2.0           | 3.7          | 30.0°           |
-//! | 45°       | 0.4333  | 2.0           | 4.5          | 45.0°           |
-//! | 60°       | 0.5169  | 2.0           | 5.4          | 60.4°           |
-//! | 90°       | 0.6741  | 2.0           | 7.1          | 90.2°           |
+//! | 30°       | 0.3493  | 2.0           | 3.7          | 31.2°           |
+//! | 45°       | 0.4367  | 2.0           | 4.6          | 45.0°           |
+//! | 60°       | 0.5186  | 2.0           | 5.4          | 60.0°           |
+//! | 90°       | 0.6773  | 2.0           | 7.1          | 90.0°           |
 //!
-//! Interpolated (measured left/right): 10° → 12.7/−12.0, 20° → 21.7/−21.0,
-//! 35° → 33.0/−32.2, 50° → 47.0/−46.1, 75° → 73.0/−72.3. Sequences: 135° requested
-//! → 130.6°, 180° → 181.7°. Right turns come out 0.7–0.9° smaller than left ones
-//! although the protocol mirrors every muscle: the body's surface is not mirror
-//! symmetric (each side quad of the skin is split into two triangles along a
-//! diagonal that does not mirror onto the other side's, `body_layout::TRIANGLES`),
-//! so the one-sided water force differs slightly between the sides. Doubling the
-//! body's time resolution changes the key turns by 0.7 / 0.2 / 0.7 / 1.7 %
+//! (The 30° key jumps from below 30° to 31.2° within the search's last step: near
+//! it the turn is sensitive to the fourth decimal.) Interpolated (measured
+//! left/right): 10° → 12.4/−12.4, 20° → 21.4/−21.5, 35° → 32.8/−32.8, 50° →
+//! 46.8/−46.9, 75° → 74.3/−74.5. Sequences: 135° requested → 129.8°, 180° →
+//! 180.8°. (With the earlier, chiral skin, `body_layout::TRIANGLES`, right turns
+//! came out 0.7–0.9° smaller than left ones.) Doubling the body's time resolution
+//! changes the key turns by 0.7 / 0.2 / 0.7 / 1.8 %
 //! (`fish_body.rs`, "Convergence"). On the earlier, unconverged body (backward
 //! Euler, controllers sampled once per step) the same keys turn about 28 % less.
 
@@ -162,10 +161,10 @@ impl SteeringMap {
     /// The key sets found by [`find_steering_map`] (see the module doc).
     pub const DEFAULT: Self = Self {
         keys: [
-            (30.0, key(0.3481)),
-            (45.0, key(0.4333)),
-            (60.0, key(0.5169)),
-            (90.0, key(0.6741)),
+            (30.0, key(0.3493)),
+            (45.0, key(0.4367)),
+            (60.0, key(0.5186)),
+            (90.0, key(0.6773)),
         ],
     };
 
@@ -232,8 +231,10 @@ struct ActiveTurn {
 /// 0.6 or 1.0 of the top speed), untimed, the 60° key turned 50.7–62.6° at 0.3 of
 /// the top speed depending on the step at which it was requested; with the stroke
 /// timed to the beat, keys ±30/60/90° at the three speeds and two request times
-/// stay within 8.2 % of the key at π/2 (11.1–15.7 % at 345°, 0°, 15°, 30°, 45°,
-/// 60°; 23.4 % at 120°). [`TurnMc::wait_for_beat`] does the timing; the key
+/// stayed within 8.2 % of the key at π/2 (11.1–15.7 % at 345°, 0°, 15°, 30°, 45°,
+/// 60°; 23.4 % at 120°; measured with the earlier keys and skin). With the current
+/// ones the 60° key turns 54.8–56.1° at 0.3 of the top speed whatever the request
+/// step (`physical_fish::tests::key_turns_against_request_time`). [`TurnMc::wait_for_beat`] does the timing; the key
 /// measurement ([`measure_turn_deg`]) times its turns the same way.
 pub const KEY_BEAT_PHASE_RAD: f32 = FRAC_PI_2;
 
@@ -612,31 +613,35 @@ pub fn find_steering_map_with(body: super::BodyParams) -> (SteeringMap, [f32; 4]
 }
 
 /// Contraction added to the turning side of the anterior segment at full steering
-/// (|steer| = 1), contraction factor. 0.75, tuned on the default body with
+/// (|steer| = 1), contraction factor. 0.5, measured on the default body with
 /// `physical_fish::agility::closed_loop_turn_times` (closed-loop turns of ±90° and
 /// ±30° through the bridge from 1.0, 0.7, 0.4 and 0.2 of the top speed, three
 /// tail-beat phases at the start; seconds to 90 % of the turn, 15 s limit), anterior
 /// / middle / posterior biases:
 ///
-/// | biases | worst time | shortest spine | 90° from 0.7 of top speed |
-/// |---|---:|---:|---|
-/// | 0.5 / 0.5 / 0.25 | 6.7 s | 0.87 | 3.0 s, radius 1.07 body lengths |
-/// | 0.6 / 0.6 / 0.3 | 5.9 s | 0.85 | |
-/// | **0.75 / 0.75 / 0.375** | **5.5 s** | 0.83 | radius < 1 body length |
-/// | 0.75 / 0.75 / 0.5 | 7.0 s | 0.82 | |
-/// | 1.0 / 1.0 / 0.5 | never (stalls) | 0.78 | |
+/// | biases | worst time | never | shortest spine |
+/// |---|---:|---:|---:|
+/// | **0.5 / 0.5 / 0.25** | **5.9 s** | 0 | **0.87** |
+/// | 0.5 / 0.5 / 0.5 | 4.8 s | 0 | 0.86 |
+/// | 0.6 / 0.6 / 0.3 | 6.3 s | 0 | 0.85 |
+/// | 0.6 / 0.6 / 0.45 | 5.2 s | 0 | 0.85 |
+/// | 0.75 / 0.75 / 0.375 | 5.5 s | 0 | 0.83 |
 ///
-/// With the earlier spring damping of 0.1 (`fish_body.rs`, `BodyParams::spring_damping`)
-/// every set stalled on some start: a slow fish with a held bend fell into a second,
-/// almost motionless state (0.02 m/s) and never finished its turn. The bend is held
-/// as long as the command lasts, so the tail's thrust on the bent body keeps yawing
-/// the fish (see the module doc).
-pub const STEER_ANTERIOR_BIAS: f32 = 0.75;
+/// Kept at 0.5 / 0.5 / 0.25 because it folds the body least: the stronger bends
+/// turn tighter circles (0.75 / 0.75 / 0.375: a 90° turn from 0.7 of the top speed
+/// in a radius under 1 body length, against 1.09 here) but fold schooling fish
+/// below 0.85 of their length (`physics_world` test). With the earlier spring
+/// damping of 0.1 (`fish_body.rs`, `BodyParams::spring_damping`) every set had
+/// turns that never finished: a slow fish with a held bend fell into a second,
+/// almost motionless state (0.02 m/s). The bend is held as long as the command
+/// lasts, so the tail's thrust on the bent body keeps yawing the fish (see the
+/// module doc).
+pub const STEER_ANTERIOR_BIAS: f32 = 0.5;
 /// The same for the middle segment, whose swim wave beats around the bent mean.
-/// 0.75, tuned with [`STEER_ANTERIOR_BIAS`].
-pub const STEER_MIDDLE_BIAS: f32 = 0.75;
-/// The same for the posterior segment. 0.375, tuned with [`STEER_ANTERIOR_BIAS`].
-pub const STEER_POSTERIOR_BIAS: f32 = 0.375;
+/// 0.5, measured with [`STEER_ANTERIOR_BIAS`].
+pub const STEER_MIDDLE_BIAS: f32 = 0.5;
+/// The same for the posterior segment. 0.25, measured with [`STEER_ANTERIOR_BIAS`].
+pub const STEER_POSTERIOR_BIAS: f32 = 0.25;
 
 /// Continuous steering (not in the paper, whose turns are discrete): `steer` in
 /// [−1, 1] (+ = left, NaN = 0) adds |steer| × the segment biases
