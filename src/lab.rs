@@ -853,8 +853,9 @@ impl Lab {
     }
 }
 
-/// Length of one simulation step, seconds: the body's Δt = 0.055 s (Tu &
-/// Terzopoulos's value) for physical fish, 1/60 s for boids.
+/// Length of one simulation step, seconds: the fish world's 0.055 s
+/// (`sim::paper_time::FISH_STEP_SECS`) for physical fish, the reef and the
+/// learning lab, 1/60 s for boids.
 fn step_secs(scene: Scene) -> f64 {
     match scene {
         Scene::Physics => f64::from(crate::sim::body::BodyParams::default().dt_secs),
@@ -1067,13 +1068,13 @@ mod tests {
         let mut s = lab.settings().clone();
         s.reef.visibility_m = 3.0;
         s.reef.selected = Some(0);
-        s.reef.traits.predator.digestion_rate_per_step = Some(0.005);
+        s.reef.traits.predator.digestion_rate_per_unit = Some(0.005);
         lab.apply_settings(s);
         assert_eq!(lab.runs()[0].steps(), 20);
         let reef = lab.runs()[0].reef().unwrap();
         assert_eq!(reef.config().visibility_m, 3.0);
         for a in reef.animals() {
-            let ravenous = a.habits.mental.digestion_rate_per_step == 0.005;
+            let ravenous = a.habits.mental.digestion_rate_per_unit == 0.005;
             assert_eq!(
                 ravenous,
                 a.habits.kind == crate::sim::mind::FishKind::Predator

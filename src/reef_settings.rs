@@ -243,8 +243,8 @@ mod tests {
     #[test]
     fn traits_are_checked_named_and_clamped() {
         let mut s = ReefSettings::default();
-        s.traits.predator.digestion_rate_per_step = Some(0.005);
-        s.traits.pacifist.libido_rate_per_step = Some(0.01);
+        s.traits.predator.digestion_rate_per_unit = Some(0.005);
+        s.traits.pacifist.libido_rate_per_unit = Some(0.01);
         assert_eq!(s.validate("reef."), Ok(()));
         let json = serde_json::to_string(&s).unwrap();
         assert_eq!(serde_json::from_str::<ReefSettings>(&json).unwrap(), s);
@@ -260,6 +260,18 @@ mod tests {
         assert!(
             serde_json::from_str::<ReefSettings>(r#"{"traits": {"prey": {"hunger": 1}}}"#).is_err()
         );
+    }
+
+    #[test]
+    fn links_made_before_the_one_clock_still_open() {
+        // The rates were called `…_per_step` before they were per paper time unit.
+        let s: ReefSettings = serde_json::from_str(
+            r#"{"traits": {"predator": {"digestion_rate_per_step": 0.005},
+                           "pacifist": {"libido_rate_per_step": 0.01}}}"#,
+        )
+        .expect("old names accepted");
+        assert_eq!(s.traits.predator.digestion_rate_per_unit, Some(0.005));
+        assert_eq!(s.traits.pacifist.libido_rate_per_unit, Some(0.01));
     }
 
     #[test]

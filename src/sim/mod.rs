@@ -18,6 +18,7 @@ pub mod mind;
 pub mod motor_bridge;
 pub mod motor_choice;
 pub mod obstacle;
+pub mod paper_time;
 pub mod perception;
 pub mod physical_fish;
 pub mod physics_world;

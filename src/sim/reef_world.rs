@@ -49,11 +49,19 @@ use super::water_current::WaterCurrent;
 
 /// Most animals in a reef.
 pub const MAX_REEF_ANIMALS: usize = 200;
+/// Longest time since the last meal (and mating) a reef fish starts with,
+/// seconds. 30, chosen: the clocks differ from fish to fish, and a fish with
+/// Shoal's calm p0 that ate 0.7 of its appetite 30 s ago has hunger 0.55.
+pub const START_FED_FOR_MAX_SECS: f32 = 30.0;
+/// The *Courtship* demo's digestion rate as a fraction of the nominal p0. 0.1,
+/// chosen: see the demo's setup in `populate`.
+pub const COURTSHIP_DIGESTION_FRACTION: f32 = 0.1;
 /// Most plankton particles kept in the water.
 pub const MAX_FOOD: usize = 200;
-/// Time step of the point-mass body, seconds (the muscle body's 0.055 s, so
-/// both bodies see the same world clock).
-pub const POINT_BODY_DT_SECS: f32 = 0.055;
+/// Time step of the point-mass body, seconds: the fish world's one step
+/// ([`crate::sim::paper_time::FISH_STEP_SECS`]), as the muscle body's, so both
+/// bodies see the same world clock.
+pub const POINT_BODY_DT_SECS: f32 = crate::sim::paper_time::FISH_STEP_SECS;
 /// Time in which a behaviour's wish becomes a steering force, seconds (0.25,
 /// the boid layer's value).
 const RESPONSE_TIME_SECS: f32 = 0.25;
@@ -829,19 +837,35 @@ impl ReefWorld {
                     let p = Vec3::new(-2.5, 2.3, 0.0) + self.jitter(1.3);
                     self.spawn(p, Vec3::Z, prey_habits(k), 0.45);
                 }
+                // The paper's nominal digestion, faster than Shoal's calm
+                // default: on the one clock (1/40 s a paper time unit) the shark
+                // is hungry again 9 s after a meal and hunts most of the time.
+                // (The paper's ravenous 0.005 makes it hungry again after 1.3 s:
+                // it eats nearly every prey fish within 2 minutes, schooling or
+                // not.)
                 let mut shark = predator_habits();
-                shark.mental.digestion_rate_per_step =
-                    super::mind::mental_state::RAVENOUS_DIGESTION_RATE;
+                shark.mental.digestion_rate_per_unit =
+                    super::mind::mental_state::NOMINAL_DIGESTION_RATE;
                 self.spawn(Vec3::new(4.0, 2.3, -2.0), -Vec3::X, shark, 1.0);
                 self.plant_seaweed(4);
             }
             ReefScene::Courtship => {
-                let mut female = Habits::new(FishKind::Pacifist, Sex::Female, 1);
-                female.mental.libido_rate_per_step = super::mind::mental_state::MANIC_LIBIDO_RATE;
+                // Well-fed fish in sexual mania: the demo shows courtship, as the
+                // *Feeding* demo shows feeding with no libido. Digestion is
+                // slowed to a tenth of the nominal p0 (fully hungry after 6
+                // minutes instead of 37 s), so hunger does not break the pairs up
+                // before they spawn; the *Minds* panel sets it back.
+                let courting = |sex| {
+                    let mut h = Habits::new(FishKind::Pacifist, sex, 1);
+                    h.mental.libido_rate_per_unit = super::mind::mental_state::MANIC_LIBIDO_RATE;
+                    h.mental.digestion_rate_per_unit = COURTSHIP_DIGESTION_FRACTION
+                        * super::mind::mental_state::NOMINAL_DIGESTION_RATE;
+                    h
+                };
+                let female = courting(Sex::Female);
                 self.spawn(c + Vec3::new(0.0, 0.3, 0.0), Vec3::X, female, 0.5);
                 for (k, length) in [0.45f32, 0.6].into_iter().enumerate() {
-                    let mut male = Habits::new(FishKind::Pacifist, Sex::Male, 1);
-                    male.mental.libido_rate_per_step = super::mind::mental_state::MANIC_LIBIDO_RATE;
+                    let male = courting(Sex::Male);
                     let p = c + Vec3::new(-2.5 + 5.0 * k as f32, 0.0, 1.5);
                     self.spawn(p, -Vec3::Z, male, length);
                 }
@@ -850,9 +874,9 @@ impl ReefWorld {
             ReefScene::Feeding => {
                 for k in 0..6 {
                     let mut h = Habits::new(FishKind::Pacifist, Sex::Female, k as u8);
-                    h.mental.digestion_rate_per_step =
+                    h.mental.digestion_rate_per_unit =
                         super::mind::mental_state::RAVENOUS_DIGESTION_RATE;
-                    h.mental.libido_rate_per_step = 0.0;
+                    h.mental.libido_rate_per_unit = 0.0;
                     let p = self.random_free_point(1.0);
                     self.spawn(p, Vec3::X, h, 0.45);
                 }
@@ -872,9 +896,10 @@ impl ReefWorld {
         }
         self.food_target = scene.default_food_count();
         // Everyone starts fed and content with a random clock, so the urges
-        // do not all rise in step.
+        // do not all rise in step: 0.7 of its appetite eaten up to
+        // `START_FED_FOR_MAX_SECS` ago.
         let fed_for: Vec<f32> = (0..self.animals.len())
-            .map(|_| self.rng.random_range(0.0..30.0))
+            .map(|_| self.rng.random_range(0.0..START_FED_FOR_MAX_SECS))
             .collect();
         for (a, secs) in self.animals.iter_mut().zip(fed_for) {
             let starving = matches!(scene, ReefScene::Feeding | ReefScene::PredatorAndSchool)
@@ -2531,6 +2556,48 @@ mod tests {
     }
 
     #[test]
+    fn the_courtship_demo_spawns_within_five_minutes_on_muscle_bodies() {
+        // The default body of the demo; seeds 1-3 of the eight in the docs.
+        for seed in 1..=3 {
+            let (secs, phase) = spawning_secs(ReefBodyKind::Physical, seed, 300.0);
+            assert!(
+                secs.is_some(),
+                "seed {seed}: reached {phase:?} in 5 minutes"
+            );
+        }
+    }
+
+    #[test]
+    fn the_courtship_demo_keeps_its_fish_fed_and_the_minds_panel_can_undo_it() {
+        // Libido stays above hunger for the demo's five minutes (with the
+        // nominal p0 hunger overtook it after about 30 s and the pairs broke
+        // up to feed: 1 of 8 seeds spawned on muscle bodies).
+        use super::super::mind::mental_state::{hunger, libido};
+        let w = reef(ReefScene::Courtship, ReefBodyKind::PointMass, 1);
+        for a in w.animals() {
+            let c = a.habits.mental;
+            for t in [10.0, 60.0, 180.0, 300.0] {
+                let h = hunger(&c, 0.7 * c.appetite_food_units, t);
+                assert!(libido(&c, h, t) > h, "at {t} s: hunger {h}");
+            }
+        }
+        use super::super::mind::mental_state::NOMINAL_DIGESTION_RATE;
+        let mut config = ReefConfig {
+            scene: ReefScene::Courtship,
+            seed: 1,
+            ..ReefConfig::default()
+        };
+        config.traits.pacifist.digestion_rate_per_unit = Some(NOMINAL_DIGESTION_RATE);
+        let w = ReefWorld::new(config);
+        for a in w.animals() {
+            assert_eq!(
+                a.habits.mental.digestion_rate_per_unit,
+                NOMINAL_DIGESTION_RATE
+            );
+        }
+    }
+
+    #[test]
     #[ignore]
     fn feeding_and_courtship_figures() {
         // `cargo test --release --lib feeding_and_courtship_figures -- --ignored --nocapture`
@@ -2694,9 +2761,13 @@ mod tests {
     /// seeds 1–8, with every prey fish schooling or every one a loner; and
     /// the strikes the shark missed.
     fn prey_eaten(schools: bool, secs: f32) -> (u32, u32) {
+        prey_eaten_on(ReefBodyKind::PointMass, schools, secs)
+    }
+
+    fn prey_eaten_on(body: ReefBodyKind, schools: bool, secs: f32) -> (u32, u32) {
         let (mut eaten, mut missed) = (0, 0);
         for seed in 1..=8 {
-            let mut w = reef(ReefScene::PredatorAndSchool, ReefBodyKind::PointMass, seed);
+            let mut w = reef(ReefScene::PredatorAndSchool, body, seed);
             for i in 0..w.animals().len() {
                 if w.animals()[i].habits.kind == FishKind::Prey {
                     w.animal_mut(i).unwrap().habits.schools = schools;
@@ -2707,6 +2778,22 @@ mod tests {
             missed += w.counts().missed_strikes;
         }
         (eaten, missed)
+    }
+
+    #[test]
+    #[ignore]
+    fn predator_figures() {
+        // `cargo test --release --lib predator_figures -- --ignored --nocapture`
+        for (body, secs) in [
+            (ReefBodyKind::PointMass, 120.0),
+            (ReefBodyKind::Physical, 300.0),
+        ] {
+            let (schooled, missed_school) = prey_eaten_on(body, true, secs);
+            let (lone, missed_lone) = prey_eaten_on(body, false, secs);
+            println!(
+                "{body:?}, 8 x {secs} s: schooling {schooled}, lone {lone}, missed {missed_school} / {missed_lone}"
+            );
+        }
     }
 
     #[test]
@@ -2826,7 +2913,7 @@ mod tests {
         let at = w.animals()[0].body.position_m();
         let traits = KindTraits {
             pacifist: MindTraits {
-                digestion_rate_per_step: Some(RAVENOUS_DIGESTION_RATE),
+                digestion_rate_per_unit: Some(RAVENOUS_DIGESTION_RATE),
                 persistence_body_lengths: Some(DEVOTED_BODY_LENGTHS),
                 ..MindTraits::default()
             },
@@ -2835,7 +2922,7 @@ mod tests {
         w.set_traits(traits);
         for (a, b) in w.animals().iter().zip(&before) {
             if a.habits.kind == FishKind::Pacifist {
-                assert_eq!(a.habits.mental.digestion_rate_per_step, 0.005);
+                assert_eq!(a.habits.mental.digestion_rate_per_unit, 0.005);
                 assert_eq!(a.habits.persistence_body_lengths, 20.0);
                 assert_eq!(a.habits.light, b.light, "their own tastes stay");
             } else {

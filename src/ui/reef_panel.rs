@@ -19,7 +19,8 @@ use crate::sim::mind::habits::{
     DEVOTED_BODY_LENGTHS, FICKLE_BODY_LENGTHS, KindTraits, MindTraits, TIMID_BOX_BODY_LENGTHS,
 };
 use crate::sim::mind::mental_state::{
-    MANIC_LIBIDO_RATE, NOMINAL_DIGESTION_RATE, NOMINAL_LIBIDO_RATE, RAVENOUS_DIGESTION_RATE,
+    CALM_DIGESTION_RATE, CALM_LIBIDO_RATE, MANIC_LIBIDO_RATE, NOMINAL_DIGESTION_RATE,
+    NOMINAL_LIBIDO_RATE, RAVENOUS_DIGESTION_RATE,
 };
 use crate::sim::mind::{FishKind, Habits, Intention, Liking, Sex, Target};
 use crate::sim::reef_world::{ReefAnimal, ReefBody, ReefBodyKind, ReefScene, ReefWorld};
@@ -504,30 +505,44 @@ const NOT_PREDATORS: &[FishKind] = &[FishKind::Prey, FishKind::Pacifist];
 
 const MIND_ROWS: [MindRow; 9] = [
     MindRow {
-        name: "digestion_rate_per_step",
+        name: "digestion_rate_per_unit",
         key: "hunger",
         label: "Hunger grows (p0)",
-        help: "p0: how fast a meal is digested, so how soon the fish is hungry again \
-               (paper: 0.00067 per step; a ravenous fish 0.005)",
+        help: "p0: how fast a meal is digested, so how soon the fish is hungry again, \
+               per time unit of 1/40 s. Calm (Shoal's default) 0.0003: hungry again \
+               21 s after a full meal. The paper's nominal 0.00067: after 9 s; \
+               ravenous 0.005: after 1 s",
         suffix: "",
         slider: Some(true),
         presets: &[
-            ("Nominal", NOMINAL_DIGESTION_RATE, "p0 = 0.00067"),
-            ("Ravenous", RAVENOUS_DIGESTION_RATE, "p0 = 0.005"),
+            ("Calm", CALM_DIGESTION_RATE, "p0 = 0.0003 (Shoal's default)"),
+            (
+                "Nominal",
+                NOMINAL_DIGESTION_RATE,
+                "p0 = 0.00067 (the paper's)",
+            ),
+            (
+                "Ravenous",
+                RAVENOUS_DIGESTION_RATE,
+                "p0 = 0.005 (the paper's)",
+            ),
         ],
         kinds: ALL_KINDS,
     },
     MindRow {
-        name: "libido_rate_per_step",
+        name: "libido_rate_per_unit",
         key: "libido",
         label: "Libido grows (p1)",
-        help: "p1: how fast the wish to mate grows after mating (paper: 0.0025 per \
-               step; sexual mania 0.01)",
+        help: "p1: how fast the wish to mate grows after mating, per time unit of \
+               1/40 s. Calm (Shoal's default) 0.0011: a fed fish wants to mate again \
+               6 s after mating. The paper's nominal 0.0025: after 2.5 s; sexual \
+               mania 0.01: after 0.6 s",
         suffix: "",
         slider: Some(true),
         presets: &[
-            ("Nominal", NOMINAL_LIBIDO_RATE, "p1 = 0.0025"),
-            ("Sexual mania", MANIC_LIBIDO_RATE, "p1 = 0.01"),
+            ("Calm", CALM_LIBIDO_RATE, "p1 = 0.0011 (Shoal's default)"),
+            ("Nominal", NOMINAL_LIBIDO_RATE, "p1 = 0.0025 (the paper's)"),
+            ("Sexual mania", MANIC_LIBIDO_RATE, "p1 = 0.01 (the paper's)"),
         ],
         kinds: &[FishKind::Pacifist],
     },

@@ -120,7 +120,7 @@ describe("reef", () => {
     await clickUntil(page, "reef_minds", () => !!window.shoal.widgets().reef_minds_pacifist);
     await clickUntil(page, "reef_minds_pacifist", () => !!window.shoal.widgets().reef_minds_libido_sexual_mania);
     await clickUntil(page, "reef_minds_libido_nominal", () =>
-      Math.abs(window.shoal.settings().reef.traits.pacifist.libido_rate_per_step - 0.0025) < 1e-9);
+      Math.abs(window.shoal.settings().reef.traits.pacifist.libido_rate_per_unit - 0.0025) < 1e-9);
     await scrollPanelTo(page, "reef_minds_persistence_devoted");
     await clickUntil(page, "reef_minds_persistence_devoted", () =>
       window.shoal.settings().reef.traits.pacifist.persistence_body_lengths === 20);
@@ -133,13 +133,13 @@ describe("reef", () => {
       return fish;
     };
     let fish = await pacifist();
-    assert.ok(near(fish.habits.mental.libido_rate_per_step, 0.0025), "nominal p1 applied at once");
+    assert.ok(near(fish.habits.mental.libido_rate_per_unit, 0.0025), "nominal p1 applied at once");
     assert.equal(fish.habits.persistence_body_lengths, 20, "devoted");
     await scrollPanelTo(page, "reef_minds_reset");
     await clickUntil(page, "reef_minds_reset", () =>
       window.shoal.settings().reef.traits.pacifist.persistence_body_lengths == null);
     fish = await pacifist();
-    assert.ok(near(fish.habits.mental.libido_rate_per_step, 0.01), "the demo's sexual mania again");
+    assert.ok(near(fish.habits.mental.libido_rate_per_unit, 0.01), "the demo's sexual mania again");
     assert.equal(fish.habits.persistence_body_lengths, 2);
     const refused = await page.evaluate(() => {
       try {

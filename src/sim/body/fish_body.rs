@@ -186,6 +186,7 @@ use super::body_layout::{
 };
 use super::hydrodynamics::add_water_forces;
 use super::pectoral_fins::PectoralFins;
+use crate::sim::paper_time::{FISH_STEP_SECS, PAPER_TIME_UNITS_PER_SEC};
 
 /// Largest accepted [`BodyParams::substeps`] (1024: enough for convergence checks
 /// far beyond the default; it was 64, which silently capped such checks).
@@ -195,7 +196,9 @@ pub const MAX_SUBSTEPS: u32 = 1024;
 /// scales them by its size (see the module doc).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BodyParams {
-    /// Fixed time step, seconds. Default 0.055, the paper's value (footnote 2).
+    /// Fixed time step, seconds. Default [`FISH_STEP_SECS`] = 0.055 s = 2.2 paper
+    /// time units, the length of 40 of the paper's steps (footnote 2: Δt = 0.055
+    /// paper units), split into [`Self::substeps`].
     pub dt_secs: f32,
     /// Node damping γ_i, paper units (force per velocity). Default 0.05, paper
     /// footnote 2. Acts on the velocity relative to the water (chosen: a passive fish
@@ -219,7 +222,8 @@ pub struct BodyParams {
     /// Factor on the paper's water force f = −A (n·v) n, dimensionless. Default 1.0
     /// (the paper's formula as written).
     pub water_drag_coefficient: f32,
-    /// Paper time units per second, k (dimensionless). Default 40.0, tuned (see the
+    /// Paper time units per second, k (dimensionless). Default
+    /// [`PAPER_TIME_UNITS_PER_SEC`] = 40, the fish world's one clock, tuned here (see the
     /// module doc, "Time scale"): the paper never says its time unit is a second, and
     /// with k = 1 swimming saturates at about 0.15 Hz. Measured top speed at 3 Hz
     /// on the earlier body (backward Euler, 8 substeps): 0.56 (k = 30), 0.60
@@ -267,12 +271,12 @@ pub struct BodyParams {
 impl Default for BodyParams {
     fn default() -> Self {
         Self {
-            dt_secs: 0.055,
+            dt_secs: FISH_STEP_SECS,
             node_damping: 0.05,
             spring_damping: 2.0,
             muscle_min_length_ratio: 0.5,
             water_drag_coefficient: 1.0,
-            paper_time_units_per_sec: 40.0,
+            paper_time_units_per_sec: PAPER_TIME_UNITS_PER_SEC,
             substeps: 12,
             jacobian_interval: 2,
             integrator: Integrator::Bdf2,

@@ -6,7 +6,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::mental_state::MentalConstants;
+use super::mental_state::{CALM_DIGESTION_RATE, CALM_LIBIDO_RATE, MentalConstants};
 
 /// The three kinds of artificial fish of §7.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -131,7 +131,7 @@ impl Habits {
             schools: kind == FishKind::Prey,
             collision_box_ahead_body_lengths: DEFAULT_BOX_BODY_LENGTHS,
             persistence_body_lengths: DEFAULT_PERSISTENCE_BODY_LENGTHS,
-            mental: MentalConstants::nominal(appetite),
+            mental: MentalConstants::shoal_default(appetite),
             fear_threshold: 0.3,
             panic_threshold: 0.8,
             urge_threshold: 0.25,
@@ -164,8 +164,8 @@ impl Habits {
         self.panic_threshold = fix(self.panic_threshold, self.fear_threshold, 1.0, 0.8);
         self.urge_threshold = fix(self.urge_threshold, 0.01, 0.5, 0.25);
         let m = &mut self.mental;
-        m.digestion_rate_per_step = fix(m.digestion_rate_per_step, 0.0, 0.05, 0.00067);
-        m.libido_rate_per_step = fix(m.libido_rate_per_step, 0.0, 0.05, 0.0025);
+        m.digestion_rate_per_unit = fix(m.digestion_rate_per_unit, 0.0, 0.05, CALM_DIGESTION_RATE);
+        m.libido_rate_per_unit = fix(m.libido_rate_per_unit, 0.0, 0.05, CALM_LIBIDO_RATE);
         m.appetite_food_units = fix(m.appetite_food_units, 0.5, 20.0, 3.0);
         m.fear_distance_body_lengths = fix(m.fear_distance_body_lengths, 0.1, 20.0, 3.85);
         self
@@ -179,10 +179,15 @@ impl Habits {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct MindTraits {
-    /// p0, digestion rate per paper step: nominal 0.00067, "ravenous" 0.005.
-    pub digestion_rate_per_step: Option<f32>,
-    /// p1, libido growth per paper step: nominal 0.0025, "sexual mania" 0.01.
-    pub libido_rate_per_step: Option<f32>,
+    /// p0, digestion rate per paper time unit (1/40 s): nominal 0.00067,
+    /// "ravenous" 0.005. Links made before the one clock call it
+    /// `digestion_rate_per_step`.
+    #[serde(alias = "digestion_rate_per_step")]
+    pub digestion_rate_per_unit: Option<f32>,
+    /// p1, libido growth per paper time unit (1/40 s): nominal 0.0025, "sexual
+    /// mania" 0.01. Old links: `libido_rate_per_step`.
+    #[serde(alias = "libido_rate_per_step")]
+    pub libido_rate_per_unit: Option<f32>,
     /// α, appetite in food units.
     pub appetite_food_units: Option<f32>,
     /// D0, fear distance in body lengths (paper 3.85).
@@ -221,22 +226,22 @@ impl MindTraits {
     /// f0 and r within the paper's 0.1–0.5 and 0–0.5).
     pub const ALL: [MindTrait; 9] = [
         MindTrait {
-            name: "digestion_rate_per_step",
+            name: "digestion_rate_per_unit",
             min: 0.0,
             max: 0.05,
-            get: |t| t.digestion_rate_per_step,
-            set: |t, v| t.digestion_rate_per_step = v,
-            current: |h| h.mental.digestion_rate_per_step,
-            put: |h, v| h.mental.digestion_rate_per_step = v,
+            get: |t| t.digestion_rate_per_unit,
+            set: |t, v| t.digestion_rate_per_unit = v,
+            current: |h| h.mental.digestion_rate_per_unit,
+            put: |h, v| h.mental.digestion_rate_per_unit = v,
         },
         MindTrait {
-            name: "libido_rate_per_step",
+            name: "libido_rate_per_unit",
             min: 0.0,
             max: 0.05,
-            get: |t| t.libido_rate_per_step,
-            set: |t, v| t.libido_rate_per_step = v,
-            current: |h| h.mental.libido_rate_per_step,
-            put: |h, v| h.mental.libido_rate_per_step = v,
+            get: |t| t.libido_rate_per_unit,
+            set: |t, v| t.libido_rate_per_unit = v,
+            current: |h| h.mental.libido_rate_per_unit,
+            put: |h, v| h.mental.libido_rate_per_unit = v,
         },
         MindTrait {
             name: "appetite_food_units",
@@ -384,12 +389,12 @@ mod tests {
         let demo = Habits::new(FishKind::Predator, Sex::Male, 9);
         assert_eq!(MindTraits::default().applied_to(demo), demo);
         let ravenous = MindTraits {
-            digestion_rate_per_step: Some(super::super::mental_state::RAVENOUS_DIGESTION_RATE),
+            digestion_rate_per_unit: Some(super::super::mental_state::RAVENOUS_DIGESTION_RATE),
             persistence_body_lengths: Some(DEVOTED_BODY_LENGTHS),
             ..MindTraits::default()
         };
         let h = ravenous.applied_to(demo);
-        assert_eq!(h.mental.digestion_rate_per_step, 0.005);
+        assert_eq!(h.mental.digestion_rate_per_unit, 0.005);
         assert_eq!(h.persistence_body_lengths, 20.0);
         assert_eq!(
             h.mental.appetite_food_units,

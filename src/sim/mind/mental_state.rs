@@ -9,13 +9,13 @@
 //! - Fear F(t) = min[Σ_i F_i, 1], F_i = min[D0/d_i, 1], d_i the distance to seen
 //!   predator i.
 //!
-//! **Time.** The paper counts Δt_H and Δt_L in its simulation steps (its nominal
-//! p0 = 0.00067 and p1 = 0.0025 are per step; its Δt is 0.055 s, footnote 2). We
-//! keep the paper's constants and convert seconds to paper steps with
-//! [`PAPER_STEP_SECS`], so a fish's urges grow at the same pace whatever body
-//! (and time step) carries the mind: a fully fed fish is hungry again
-//! (H > 0.25) after 0.25/p0 = 373 steps = 20.5 s, and a fed, rested pacifist's
-//! libido passes 0.25 after 100 steps = 5.5 s.
+//! **Time.** Δt_H and Δt_L are counted in the paper's time units, one of which is
+//! 1/40 s in Shoal, the same unit the body runs on (`sim::paper_time`). The
+//! paper's constants (nominal p0 = 0.00067 and p1 = 0.0025, per paper time unit)
+//! are kept, so per second hunger and libido grow 40 times as fast: a fish that
+//! has just eaten its fill (n_e = α) is hungry again (H > 0.25) after 0.25/p0 =
+//! 373 units = 9.3 s and fully hungry after 1/p0 = 1493 units = 37.3 s; a fed,
+//! rested pacifist's libido passes 0.25 after 0.25/p1 = 100 units = 2.5 s.
 //!
 //! **Food eaten.** H falls below 1 only while R > 0, so n_e is read as the food
 //! in the stomach right after the last meal: at each meal the undigested rest
@@ -30,17 +30,30 @@
 use serde::{Deserialize, Serialize};
 
 use crate::sim::body::body_layout::PAPER_BODY_LENGTH;
+use crate::sim::paper_time::paper_units;
 
-/// The paper's time step, seconds (footnote 2): the unit of Δt_H and Δt_L.
-pub const PAPER_STEP_SECS: f32 = 0.055;
-
-/// The paper's nominal digestion rate p0, per paper step.
+/// The paper's nominal digestion rate p0, per paper time unit.
 pub const NOMINAL_DIGESTION_RATE: f32 = 0.00067;
-/// The paper's "ravenous" digestion rate p0, per paper step.
+/// Shoal's default digestion rate p0, per paper time unit: 0.0003, chosen, a
+/// departure from the paper's nominal [`NOMINAL_DIGESTION_RATE`]. On the one
+/// clock (1/40 s a unit) the paper's nominal value makes a fish that ate its fill
+/// hungry again (H > 0.25, the urge threshold) after 9.3 s; then prey leave their
+/// school to feed within seconds of every meal (measured, `docs/fish-mind.md`).
+/// With 0.0003 it is hungry again after 21 s and fully hungry after 83 s.
+pub const CALM_DIGESTION_RATE: f32 = 0.0003;
+/// The paper's "ravenous" digestion rate p0, per paper time unit.
 pub const RAVENOUS_DIGESTION_RATE: f32 = 0.005;
-/// The paper's nominal libido rate p1, per paper step.
+/// The paper's nominal libido rate p1, per paper time unit.
 pub const NOMINAL_LIBIDO_RATE: f32 = 0.0025;
-/// The paper's "sexual mania" libido rate p1, per paper step.
+/// Shoal's default libido rate p1, per paper time unit: 0.0011, chosen with
+/// [`CALM_DIGESTION_RATE`] (both about 0.45 of the paper's nominal values, the pace
+/// the reef's behaviours were tuned at), a departure from
+/// [`NOMINAL_LIBIDO_RATE`]. With the paper's value on the one clock a fed pacifist
+/// wants to mate (L > 0.25) 2.5 s after mating, and the default reef's pacifists
+/// spawned 7 times in 3 minutes, bumping into each other more than once per fish
+/// per minute; with 0.0011 after 5.7 s.
+pub const CALM_LIBIDO_RATE: f32 = 0.0011;
+/// The paper's "sexual mania" libido rate p1, per paper time unit.
 pub const MANIC_LIBIDO_RATE: f32 = 0.01;
 /// The paper's fear distance D0, paper units (a fish is 26 long).
 pub const FEAR_DISTANCE_PAPER_UNITS: f32 = 100.0;
@@ -48,10 +61,12 @@ pub const FEAR_DISTANCE_PAPER_UNITS: f32 = 100.0;
 /// The per-species constants of the mental state.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct MentalConstants {
-    /// p0, digestion rate per paper step (nominal 0.00067, ravenous 0.005).
-    pub digestion_rate_per_step: f32,
-    /// p1, libido growth per paper step (nominal 0.0025, sexual mania 0.01).
-    pub libido_rate_per_step: f32,
+    /// p0, digestion rate per paper time unit (nominal 0.00067, ravenous 0.005).
+    #[serde(alias = "digestion_rate_per_step")]
+    pub digestion_rate_per_unit: f32,
+    /// p1, libido growth per paper time unit (nominal 0.0025, sexual mania 0.01).
+    #[serde(alias = "libido_rate_per_step")]
+    pub libido_rate_per_unit: f32,
     /// α, appetite in food units (a plankton particle is 1, a prey fish
     /// [`PREY_FOOD_UNITS`]). Bigger fishes have a bigger α.
     pub appetite_food_units: f32,
@@ -63,11 +78,22 @@ pub struct MentalConstants {
 pub const PREY_FOOD_UNITS: f32 = 4.0;
 
 impl MentalConstants {
+    /// Shoal's default constants with appetite `appetite_food_units`: the
+    /// paper's nominal ones except the two rates, [`CALM_DIGESTION_RATE`] and
+    /// [`CALM_LIBIDO_RATE`].
+    pub fn shoal_default(appetite_food_units: f32) -> Self {
+        Self {
+            digestion_rate_per_unit: CALM_DIGESTION_RATE,
+            libido_rate_per_unit: CALM_LIBIDO_RATE,
+            ..Self::nominal(appetite_food_units)
+        }
+    }
+
     /// The paper's nominal constants with appetite `appetite_food_units`.
     pub fn nominal(appetite_food_units: f32) -> Self {
         Self {
-            digestion_rate_per_step: NOMINAL_DIGESTION_RATE,
-            libido_rate_per_step: NOMINAL_LIBIDO_RATE,
+            digestion_rate_per_unit: NOMINAL_DIGESTION_RATE,
+            libido_rate_per_unit: NOMINAL_LIBIDO_RATE,
             appetite_food_units,
             fear_distance_body_lengths: FEAR_DISTANCE_PAPER_UNITS / PAPER_BODY_LENGTH,
         }
@@ -140,9 +166,9 @@ impl MentalState {
     }
 }
 
-/// R(Δt_H) = 1 − p0·Δt_H, with Δt_H in paper steps.
+/// R(Δt_H) = 1 − p0·Δt_H, with Δt_H in paper time units.
 pub fn digestion_left(constants: &MentalConstants, secs_since_meal: f32) -> f32 {
-    1.0 - constants.digestion_rate_per_step * secs_since_meal / PAPER_STEP_SECS
+    1.0 - constants.digestion_rate_per_unit * paper_units(secs_since_meal)
 }
 
 /// H = min[1 − n_e·R(Δt_H)/α, 1], kept at or above 0.
@@ -152,9 +178,9 @@ pub fn hunger(constants: &MentalConstants, food_eaten: f32, secs_since_meal: f32
     finite_or(h, 1.0).clamp(0.0, 1.0)
 }
 
-/// L = min[p1·Δt_L·(1 − H), 1], with Δt_L in paper steps.
+/// L = min[p1·Δt_L·(1 − H), 1], with Δt_L in paper time units.
 pub fn libido(constants: &MentalConstants, hunger: f32, secs_since_mating: f32) -> f32 {
-    let s = constants.libido_rate_per_step * secs_since_mating / PAPER_STEP_SECS;
+    let s = constants.libido_rate_per_unit * paper_units(secs_since_mating);
     finite_or(s * (1.0 - hunger), 0.0).clamp(0.0, 1.0)
 }
 
@@ -186,31 +212,49 @@ fn finite_or(x: f32, fallback: f32) -> f32 {
 mod tests {
     use super::*;
 
-    const STEP: f32 = PAPER_STEP_SECS;
+    /// One paper time unit, seconds.
+    const UNIT: f32 = 1.0 / crate::sim::paper_time::PAPER_TIME_UNITS_PER_SEC;
 
     #[test]
     fn hunger_matches_the_formula_by_hand() {
         let c = MentalConstants::nominal(4.0);
-        // Ate 2 units 1000 paper steps ago: H = 1 − 2·(1 − 0.67)/4 = 0.835.
-        let h = hunger(&c, 2.0, 1000.0 * STEP);
+        // Ate 2 units 1000 paper time units ago: H = 1 − 2·(1 − 0.67)/4 = 0.835.
+        let h = hunger(&c, 2.0, 1000.0 * UNIT);
         assert!((h - 0.835).abs() < 1e-4, "{h}");
         // Just ate 4 = α: H = 0.
         assert_eq!(hunger(&c, 4.0, 0.0), 0.0);
-        // Digested completely after 1/p0 = 1493 steps: H = 1, and stays 1.
-        assert!((hunger(&c, 4.0, 1493.0 * STEP) - 1.0).abs() < 1e-3);
-        assert_eq!(hunger(&c, 4.0, 5000.0 * STEP), 1.0);
+        // Digested completely after 1/p0 = 1493 units: H = 1, and stays 1.
+        assert!((hunger(&c, 4.0, 1493.0 * UNIT) - 1.0).abs() < 1e-3);
+        assert_eq!(hunger(&c, 4.0, 5000.0 * UNIT), 1.0);
         // Overeating is simply full.
         assert_eq!(hunger(&c, 9.0, 0.0), 0.0);
+    }
+
+    #[test]
+    fn hunger_and_libido_run_on_the_bodys_clock() {
+        use crate::sim::paper_time::PAPER_TIME_UNITS_PER_SEC;
+        // One paper time unit is 1/40 s for the body and the mind alike.
+        assert_eq!(
+            crate::sim::body::BodyParams::default().paper_time_units_per_sec,
+            PAPER_TIME_UNITS_PER_SEC
+        );
+        // A fish that ate its fill: hungry (0.25) after 0.25/p0 = 373 units =
+        // 9.3 s, fully hungry after 1/p0 = 1493 units = 37.3 s.
+        let c = MentalConstants::nominal(4.0);
+        assert!((hunger(&c, 4.0, 9.33) - 0.25).abs() < 2e-3);
+        assert!((hunger(&c, 4.0, 37.31) - 1.0).abs() < 2e-3);
+        // A fed pacifist's libido: 0.25 after 0.25/p1 = 100 units = 2.5 s.
+        assert!((libido(&c, 0.0, 2.5) - 0.25).abs() < 1e-4);
     }
 
     #[test]
     fn ravenous_fish_get_hungry_seven_times_sooner() {
         let nominal = MentalConstants::nominal(4.0);
         let ravenous = MentalConstants {
-            digestion_rate_per_step: RAVENOUS_DIGESTION_RATE,
+            digestion_rate_per_unit: RAVENOUS_DIGESTION_RATE,
             ..nominal
         };
-        let t = 100.0 * STEP;
+        let t = 100.0 * UNIT;
         let (hn, hr) = (hunger(&nominal, 4.0, t), hunger(&ravenous, 4.0, t));
         assert!(
             (hn - 0.067).abs() < 1e-4 && (hr - 0.5).abs() < 1e-4,
@@ -221,15 +265,15 @@ mod tests {
     #[test]
     fn libido_matches_the_formula_and_is_zero_when_starving() {
         let c = MentalConstants::nominal(4.0);
-        // 200 steps since mating, H = 0.4: L = 0.0025·200·0.6 = 0.3.
-        assert!((libido(&c, 0.4, 200.0 * STEP) - 0.3).abs() < 1e-5);
+        // 200 units since mating, H = 0.4: L = 0.0025·200·0.6 = 0.3.
+        assert!((libido(&c, 0.4, 200.0 * UNIT) - 0.3).abs() < 1e-5);
         assert_eq!(libido(&c, 1.0, 1e6), 0.0);
         assert_eq!(libido(&c, 0.0, 1e6), 1.0);
         let mania = MentalConstants {
-            libido_rate_per_step: MANIC_LIBIDO_RATE,
+            libido_rate_per_unit: MANIC_LIBIDO_RATE,
             ..c
         };
-        assert!((libido(&mania, 0.0, 50.0 * STEP) - 0.5).abs() < 1e-5);
+        assert!((libido(&mania, 0.0, 50.0 * UNIT) - 0.5).abs() < 1e-5);
     }
 
     #[test]
@@ -254,9 +298,9 @@ mod tests {
         assert_eq!(s.hunger, 1.0);
         s.eat(&c, 2.0);
         assert!((s.hunger - 0.5).abs() < 1e-6);
-        // 500 steps later: 2·(1 − 0.335) = 1.33 left; one more unit → 2.33.
+        // 500 units later: 2·(1 − 0.335) = 1.33 left; one more unit → 2.33.
         for _ in 0..500 {
-            s.update(&c, STEP, []);
+            s.update(&c, UNIT, []);
         }
         s.eat(&c, 1.0);
         assert!((s.food_eaten - 2.33).abs() < 1e-3, "{}", s.food_eaten);
@@ -275,7 +319,7 @@ mod tests {
             } else {
                 None
             };
-            s.update(&c, STEP, d);
+            s.update(&c, UNIT, d);
             for v in [s.hunger, s.libido, s.fear] {
                 assert!((0.0..=1.0).contains(&v), "{v}");
             }
