@@ -104,10 +104,13 @@ const FOOD_RELEASE_SECS: f32 = 1.5;
 const HISTORY_EVERY_SECS: f64 = 0.5;
 /// Mind-history samples kept per animal (2 minutes).
 const HISTORY_LEN: usize = 240;
-/// Radius of the muscle body's turning circle, body lengths (0.75: measured
-/// 0.6–0.7 at every cruising speed with continuous steering, `physical_fish.rs`
-/// agility tests; a little more for margin).
-const BODY_TURN_RADIUS_BODY_LENGTHS: f32 = 0.75;
+/// Radius of the muscle body's turning circle, body lengths (1.2: measured
+/// 1.03–1.14 for 90° turns from 0.4–1.0 of the top speed on the converged body,
+/// `physical_fish.rs` agility tests, docs/fish-body.md; a little more for margin.
+/// It was 0.75 on the earlier body, which turned in 0.6–0.7. In the *Feeding*
+/// demo, seeds 3 and 4, 60 s, muscle fish ate 32 plankton with 0.75, 34 with 1.2
+/// and 35 with 0: within the seed noise.)
+const BODY_TURN_RADIUS_BODY_LENGTHS: f32 = 1.2;
 /// A predator that leaves the field of view still frightens for this long,
 /// seconds, at the place it was last seen (3, chosen: the paper's fear counts
 /// sighted predators only, and a fleeing fish that turned its blind cone to the
