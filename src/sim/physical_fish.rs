@@ -329,6 +329,7 @@ impl PhysicalFish {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sim::body::SwimParams;
     use crate::sim::motor_bridge::level_turn_deg;
     use std::f32::consts::{FRAC_PI_2, PI};
 
@@ -421,6 +422,66 @@ mod tests {
                     "key {key}° at speed {speed}: turned {turned}°"
                 );
             }
+        }
+    }
+
+    /// A 0.5 m fish swimming straight at `amplitude` of r̂ (frequencies ŝ): its
+    /// mean speed over the last 20 s of a 40 s run, metres per second.
+    pub(super) fn straight_speed_at_amplitude(amplitude: f32) -> f32 {
+        let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+        let dt = fish.body().dt_secs();
+        let mut swim = SwimMc::default();
+        let params = SwimParams {
+            anterior_amplitude: amplitude,
+            posterior_amplitude: amplitude,
+            ..SwimParams::MAX
+        };
+        let steps = (40.0 / dt) as usize;
+        let mut half = Vec3::ZERO;
+        for k in 0..steps {
+            fish.body
+                .step_with(&PectoralFins::NEUTRAL, Vec3::ZERO, |t| {
+                    swim.muscles_at(&params, t)
+                });
+            swim.advance(&params, dt);
+            fish.sync_point();
+            if k + 1 == steps / 2 {
+                half = fish.point.position_m;
+            }
+        }
+        (fish.point.position_m - half).length() / (dt * (steps - steps / 2) as f32)
+    }
+
+    #[test]
+    fn the_swim_mc_delivers_the_speed_asked_for() {
+        // swim-MC(speed) reads the amplitude off the measured speed curve; if the
+        // body changes and the curve is not re-measured, this fails.
+        let full = straight_speed_at_amplitude(1.0);
+        let top = 0.5 * crate::sim::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
+        assert!(
+            (full - top).abs() < 0.03 * top,
+            "full {full} m/s, top {top}"
+        );
+        for k in [0.2, 0.35, 0.5, 0.7, 0.9] {
+            let a = crate::sim::body::amplitude_for_speed(k);
+            let got = straight_speed_at_amplitude(a) / full;
+            assert!(
+                (got - k).abs() < 0.02,
+                "asked {k}, swam {got} of full speed"
+            );
+        }
+    }
+
+    /// Behind `body::motor_controller::SPEED_AT_AMPLITUDE`: `cargo test --release
+    /// --lib amplitude_speed_curve -- --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn amplitude_speed_curve() {
+        let full = straight_speed_at_amplitude(1.0);
+        for i in 0..=20 {
+            let a = i as f32 / 20.0;
+            let v = straight_speed_at_amplitude(a);
+            println!("| {a:.2} | {v:.4} m/s | {:.3} |", v / full);
         }
     }
 

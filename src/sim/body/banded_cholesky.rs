@@ -21,7 +21,7 @@
 /// Number of scalar unknowns: 23 nodes × 3 components.
 pub const SYSTEM_SIZE: usize = 69;
 /// Largest index difference between two coupled nodes (ring k to ring k+1).
-pub const NODE_BANDWIDTH: usize = 7;
+pub const NODE_BANDWIDTH: usize = 8;
 /// Scalar half-bandwidth (excluding the diagonal).
 pub const HALF_BANDWIDTH: usize = 3 * NODE_BANDWIDTH + 2;
 /// Stored length of a column: the band plus two zero entries, so that the three

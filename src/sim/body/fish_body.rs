@@ -525,6 +525,16 @@ impl FishBody {
         (d - d.dot(f) * f).normalize_or_zero()
     }
 
+    /// Is the tail fin folded forward: is a tip of it ahead of the last ring, seen
+    /// along the tail section (the fourth ring's centre towards the fifth's)?
+    pub fn tail_fin_folded(&self) -> bool {
+        let last = self.ring_centroid(RING_COUNT - 1);
+        let back = (last - self.ring_centroid(RING_COUNT - 2)).normalize_or_zero();
+        TAIL_FIN_NODES
+            .iter()
+            .any(|&i| (self.positions_m[i] - last).dot(back) < 0.0)
+    }
+
     /// Length along the spine: head tip, the five ring centres, the tail-fin
     /// midpoint. Equals the rest body length at rest, whatever the bend.
     pub fn spine_length_m(&self) -> f32 {

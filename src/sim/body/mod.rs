@@ -20,6 +20,8 @@ mod tests;
 
 pub use body_layout::{MUSCLE_COUNT, MuscleSegment, NODE_COUNT, SPRING_COUNT, Side};
 pub use fish_body::{BodyCommand, BodyParams, FishBody, Integrator};
-pub use motor_controller::{ControlSampling, SwimMc, SwimParams};
+pub use motor_controller::{
+    ControlSampling, SPEED_AT_AMPLITUDE, SwimMc, SwimParams, amplitude_for_speed,
+};
 pub use pectoral_fins::PectoralFins;
 pub use turn_mc::{SteeringMap, TurnDirection, TurnMc, TurnParams};

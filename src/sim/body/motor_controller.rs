@@ -110,18 +110,16 @@ impl Default for SwimMc {
 
 impl SwimMc {
     /// swim-MC(speed): `speed_fraction` in [0, 1] of the top speed → parameters.
-    /// Speed is proportional to amplitude (measured), so the amplitudes are scaled
-    /// and the frequencies kept at their maxima, like the paper's example
-    /// {0.8 r̂1, ŝ1, 0.7 r̂2, ŝ2}. NaN counts as 0.
+    /// The frequencies stay at their maxima and the amplitudes are scaled, like
+    /// the paper's example {0.8 r̂1, ŝ1, 0.7 r̂2, ŝ2}; the scale is read off the
+    /// measured speed of each amplitude ([`SPEED_AT_AMPLITUDE`]), so a fish asked
+    /// for 0.3 of its top speed swims at 0.3, not at the 0.2 that 0.3 of the
+    /// amplitude gives. NaN counts as 0.
     pub fn params_for_speed(&self, speed_fraction: f32) -> SwimParams {
-        let k = if speed_fraction.is_finite() {
-            speed_fraction.clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
+        let a = amplitude_for_speed(speed_fraction);
         SwimParams {
-            anterior_amplitude: k * self.max.anterior_amplitude,
-            posterior_amplitude: k * self.max.posterior_amplitude,
+            anterior_amplitude: a * self.max.anterior_amplitude,
+            posterior_amplitude: a * self.max.posterior_amplitude,
             ..self.max
         }
     }
@@ -181,6 +179,38 @@ impl SwimMc {
         );
         u
     }
+}
+
+/// Straight-swimming speed of the default body at amplitude 0, 0.05, …, 1.0 of
+/// r̂1 = r̂2 (frequencies ŝ), as a fraction of its speed at full amplitude
+/// (`physical_fish::tests::amplitude_speed_curve`: a 0.5 m fish, 40 s runs,
+/// speed over the last 20 s; 0.292 m/s = 0.584 body lengths/s at full
+/// amplitude). Speed grows faster than amplitude: half the amplitude swims at
+/// 0.38 of the speed, a fifth at 0.11. (On the earlier, unconverged body speed
+/// was about proportional to amplitude.)
+pub const SPEED_AT_AMPLITUDE: [f32; 21] = [
+    0.0, 0.021, 0.046, 0.075, 0.108, 0.145, 0.186, 0.230, 0.278, 0.329, 0.382, 0.439, 0.498, 0.558,
+    0.621, 0.684, 0.748, 0.812, 0.876, 0.939, 1.0,
+];
+
+/// The amplitude (fraction of r̂) whose straight-swimming speed is
+/// `speed_fraction` of the full-amplitude speed: [`SPEED_AT_AMPLITUDE`]
+/// inverted by linear interpolation. Clamped to [0, 1]; NaN counts as 0.
+pub fn amplitude_for_speed(speed_fraction: f32) -> f32 {
+    let k = if speed_fraction.is_finite() {
+        speed_fraction.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let step = 1.0 / (SPEED_AT_AMPLITUDE.len() - 1) as f32;
+    for (i, pair) in SPEED_AT_AMPLITUDE.windows(2).enumerate() {
+        let (lo, hi) = (pair[0], pair[1]);
+        if k <= hi {
+            let t = if hi > lo { (k - lo) / (hi - lo) } else { 0.0 };
+            return (i as f32 + t) * step;
+        }
+    }
+    1.0
 }
 
 /// An oscillator's phase `dt_secs` after `phase_rad` at `frequency_hz` (negative or

@@ -161,10 +161,10 @@ impl SteeringMap {
     /// The key sets found by [`find_steering_map`] (see the module doc).
     pub const DEFAULT: Self = Self {
         keys: [
-            (30.0, key(0.3493)),
-            (45.0, key(0.4367)),
-            (60.0, key(0.5186)),
-            (90.0, key(0.6773)),
+            (30.0, key(0.3543)),
+            (45.0, key(0.4698)),
+            (60.0, key(0.5559)),
+            (90.0, key(0.7160)),
         ],
     };
 
