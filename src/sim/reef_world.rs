@@ -2480,7 +2480,11 @@ mod tests {
     /// Seconds until the first pair of the *Courtship* demo spawns (`None`
     /// if not within `secs`), and the last phase any pair reached.
     fn spawning_secs(body: ReefBodyKind, seed: u64, secs: f32) -> (Option<f32>, Option<Phase>) {
-        let mut w = reef(ReefScene::Courtship, body, seed);
+        spawning_secs_in(reef(ReefScene::Courtship, body, seed), secs)
+    }
+
+    /// [`spawning_secs`] in a given reef.
+    fn spawning_secs_in(mut w: ReefWorld, secs: f32) -> (Option<f32>, Option<Phase>) {
         let mut furthest = None;
         for _ in 0..(secs / w.dt_secs()).round() as u32 {
             w.step();
@@ -2565,6 +2569,29 @@ mod tests {
                 "seed {seed}: reached {phase:?} in 5 minutes"
             );
         }
+    }
+
+    #[test]
+    fn the_courtship_demo_spawns_because_its_fish_digest_slowly() {
+        // Two runs on the default (muscle) body that differ only in p0: the
+        // demo's slow digestion spawns within 5 minutes; the paper's nominal p0
+        // on the one clock makes the pair break up to feed, and it does not.
+        use super::super::mind::mental_state::NOMINAL_DIGESTION_RATE;
+        let config = ReefConfig {
+            scene: ReefScene::Courtship,
+            seed: 1,
+            ..ReefConfig::default()
+        };
+        assert_eq!(config.body, ReefBodyKind::Physical, "the default body");
+        let mut nominal = config.clone();
+        nominal.traits.pacifist.digestion_rate_per_unit = Some(NOMINAL_DIGESTION_RATE);
+        let (demo, _) = spawning_secs_in(ReefWorld::new(config), 300.0);
+        let (with_nominal, phase) = spawning_secs_in(ReefWorld::new(nominal), 300.0);
+        assert!(demo.is_some(), "the demo spawns");
+        assert!(
+            with_nominal.is_none(),
+            "nominal p0 spawned at {with_nominal:?} ({phase:?})"
+        );
     }
 
     #[test]
