@@ -37,7 +37,25 @@
 //!
 //! Springs (91): 4 head springs (0 to ring 1); per ring 4 edges + 2 diagonals (30);
 //! per pair of neighbouring rings 4 longitudinal springs + 8 side-face diagonals (48);
-//! tail fin: 21 and 22 each to the 4 nodes of ring 5, plus 21–22 (9).
+//! tail fin: 21 to the dorsal pairs of rings 4 and 5, 22 to their ventral pairs,
+//! plus 21–22 (9).
+//!
+//! # Why the fin tips are braced to ring 4 (a departure from the first layout)
+//! The first layout (the re-implementation's) tied each tip to the four nodes of
+//! ring 5 only. Those four anchors lie in one plane, so a tip swung round the
+//! last ring to the front of it keeps every spring at its rest length: the
+//! folded fin is a second rest shape. Fish fell into it and stayed there, swimming
+//! at a fraction of their speed with the fin pointing forward along the body
+//! (found by `FishBody::tail_fin_folded`; `reef_world::tests::fold_census`, two
+//! minutes, seeds 1–2: half the fish of the default reef and of *Predator and
+//! school*, for 34–35 % and 40–47 % of the fish-time; 2–3 of 16 in *School meets
+//! obstacle*; a converged body fell into it too). Tying each tip to two nodes of
+//! ring 4 as well leaves no such twin within reach: a fin swung forward would
+//! squeeze those springs from 6.4 to about 2 units; no fin folds in any demo
+//! since (same census), and a fin folded by hand springs back
+//! (`tests::a_tail_fin_folded_over_the_last_ring_springs_back`). The spring count
+//! stays 91; the tail-fin tip (node 21) now couples to node 13, eight nodes away,
+//! so the solver's band is eight nodes wide (`banded_cholesky.rs`).
 //! Kinds (footnote 2): *cross* springs (all diagonals, in a ring or across a face,
 //! e.g. S₂,₇) c = 38; *muscle* springs (the longitudinal springs of rings 1–2, 2–3,
 //! 3–4, e.g. S₂,₆) c = 28; every other spring c = 30.
@@ -294,14 +312,20 @@ const fn build_springs() -> [Spring; SPRING_COUNT] {
         }
         k += 1;
     }
-    // Tail fin.
+    // Tail fin: each tip to its own side's pair (dorsal or ventral) of the last
+    // two rings, so the fin cannot fold forward over the last ring (see the module
+    // doc).
     let last = ring_nodes(RING_COUNT - 1);
+    let before = ring_nodes(RING_COUNT - 2);
     let mut f = 0;
     while f < 2 {
-        let mut c = 0;
-        while c < 4 {
+        // Slots 0, 1 are dorsal, 2, 3 ventral; tip 0 (node 21) is the dorsal one.
+        let first = 2 * f;
+        let mut c = first;
+        while c < first + 2 {
             s[n] = spring(last[c], TAIL_FIN_NODES[f], SpringKind::Other);
-            n += 1;
+            s[n + 1] = spring(before[c], TAIL_FIN_NODES[f], SpringKind::Other);
+            n += 2;
             c += 1;
         }
         f += 1;

@@ -109,6 +109,9 @@
 //! | 4 | 29.7 | 0.174 / 0.563 / 0.584 | 0.363 / 0.478 / 0.576 / 0.736 | 45.3° / 67.8° | 123.0° / 168.0° |
 //! | 8 | — | diverges | | | |
 //!
+//! (Measured with the first tail-fin layout, before the fin was braced to ring 4:
+//! see `body_layout.rs`.)
+//!
 //! Stability: with n = 2 and n = 4 every test of `tests.rs` passes, including the
 //! ten-minute random run (random speeds, fins and currents every 5 s: finite,
 //! spine within ±10 %, no inverted volume, no clamped pivot), and
@@ -429,6 +432,16 @@ impl FishBody {
         }
         let f = self.forward();
         (d - d.dot(f) * f).normalize_or_zero()
+    }
+
+    /// Is the tail fin folded forward: is a tip of it ahead of the last ring, seen
+    /// along the tail section (the fourth ring's centre towards the fifth's)?
+    pub fn tail_fin_folded(&self) -> bool {
+        let last = self.ring_centroid(RING_COUNT - 1);
+        let back = (last - self.ring_centroid(RING_COUNT - 2)).normalize_or_zero();
+        TAIL_FIN_NODES
+            .iter()
+            .any(|&i| (self.positions_m[i] - last).dot(back) < 0.0)
     }
 
     /// Length along the spine: head tip, the five ring centres, the tail-fin

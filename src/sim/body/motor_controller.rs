@@ -20,20 +20,25 @@
 //!
 //! | amplitude r1 = r2 | frequency s (Hz) | speed (body lengths/s) |
 //! |-------------------|------------------|------------------------|
-//! | 1.0               | 0.5              | 0.069                  |
-//! | 1.0               | 1.0              | 0.175                  |
-//! | 1.0               | 1.5              | 0.307                  |
-//! | 1.0               | 2.0              | 0.436                  |
-//! | 1.0               | 2.5              | 0.534                  |
-//! | 1.0               | 3.0              | 0.600 (top, ŝ)         |
-//! | 1.0               | 4.0              | 0.662 (saturating)     |
-//! | 1.0               | 5.0              | 0.662                  |
-//! | 0.75              | 3.0              | 0.461                  |
-//! | 0.5               | 3.0              | 0.284                  |
-//! | 0.25              | 3.0              | 0.115                  |
+//! | 1.0               | 0.5              | 0.055                  |
+//! | 1.0               | 1.0              | 0.140                  |
+//! | 1.0               | 1.5              | 0.257                  |
+//! | 1.0               | 2.0              | 0.395                  |
+//! | 1.0               | 2.5              | 0.527                  |
+//! | 1.0               | 3.0              | 0.630 (top, ŝ)         |
+//! | 1.0               | 4.0              | 0.736 (saturating)     |
+//! | 1.0               | 5.0              | 0.744                  |
+//! | 0.75              | 3.0              | 0.458                  |
+//! | 0.5               | 3.0              | 0.272                  |
+//! | 0.25              | 3.0              | 0.108                  |
+//!
+//! (With the tail-fin tips braced to ring 4, `body_layout.rs`. Before the brace:
+//! 0.600 at 3 Hz and 0.662 at 4 and 5 Hz. The scenes still take 0.6 body
+//! lengths/s as the top speed, `motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC`, so
+//! a fish at full thrust swims about 5 % faster than its nominal top.)
 //!
 //! Speed is proportional to amplitude and grows about linearly with frequency up to
-//! about 3 Hz, then saturates (4 and 5 Hz give the same 0.66), as the paper (after
+//! about 3 Hz, then saturates (4 and 5 Hz give 0.74), as the paper (after
 //! Webb) reports "below certain threshold values". That is 0.2 body lengths per
 //! tail beat at the top, a third of a real fish's 0.6–0.7 (no reactive/added-mass
 //! force in the paper's model, a small tail fin). Maximal parameters:

@@ -37,15 +37,18 @@
 //!
 //! | key angle | r0 = r1 | s0 = s1 (1/s) | duration (s) | measured left | measured right |
 //! |-----------|---------|---------------|--------------|---------------|----------------|
-//! | 30°       | 0.3483  | 2.0           | 3.7          | 30.0°         | −29.7°         |
-//! | 45°       | 0.4485  | 2.0           | 4.7          | 45.0°         | −44.7°         |
-//! | 60°       | 0.5420  | 2.0           | 5.7          | 60.0°         | −59.6°         |
-//! | 90°       | 0.7004  | 2.0           | 7.4          | 90.0°         | −89.6°         |
+//! | 30°       | 0.3700  | 2.0           | 3.9          | 30.0°         | −29.8°         |
+//! | 45°       | 0.4844  | 2.0           | 5.1          | 45.0°         | −44.8°         |
+//! | 60°       | 0.5795  | 2.0           | 6.1          | 60.0°         | −59.6°         |
+//! | 90°       | 0.7411  | 2.0           | 7.8          | 90.0°         | −89.7°         |
 //!
-//! Interpolated (measured left/right): 10° → 10.9/−10.6, 20° → 20.9/−20.6,
-//! 35° → 35.4/−35.0, 50° → 49.6/−49.3, 75° → 74.1/−73.7. Sequences: 135° requested
-//! → 132.6°, 180° → 183.5° (all from `tests::turn_table`). These turns are slow
-//! (a 90° turn takes 7.4 s): the paper's body cannot bend harder
+//! Interpolated (measured left/right): 10° → 11.3/−11.0, 20° → 21.0/−20.8,
+//! 35° → 35.2/−35.0, 50° → 49.6/−49.3, 75° → 74.3/−74.0. Sequences: 135° requested
+//! → 134.0°, 180° → 182.4° (all from `tests::turn_table`; with the tail-fin tips
+//! braced to ring 4, `body_layout.rs`: the braced fin turns the body less, and the
+//! keys of the first layout, 0.3483 / 0.4485 / 0.5420 / 0.7004, turned it 23–26°,
+//! 38°, 52–54° and 79–82°). These turns are slow
+//! (a 90° turn takes 7.8 s): the paper's body cannot bend harder
 //! (l_min = 0.5 l reaches 0.67 l against the cross springs), and r = 1 at
 //! s = 2/s gives about 160°.
 
@@ -156,10 +159,10 @@ impl SteeringMap {
     /// The key sets found by [`find_steering_map`] (see the module doc).
     pub const DEFAULT: Self = Self {
         keys: [
-            (30.0, key(0.3483)),
-            (45.0, key(0.4485)),
-            (60.0, key(0.5420)),
-            (90.0, key(0.7004)),
+            (30.0, key(0.3700)),
+            (45.0, key(0.4844)),
+            (60.0, key(0.5795)),
+            (90.0, key(0.7411)),
         ],
     };
 
