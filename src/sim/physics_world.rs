@@ -710,11 +710,18 @@ mod tests {
         let mut w = world(12, 1, PhysicsBehaviour::School, 0.15);
         let tank = *w.tank();
         let steps = secs(&w, 120.0);
+        let (mut speed_sum, mut samples) = (0.0f32, 0u32);
         for step in 0..steps {
             w.step();
             if step % 10 != 0 {
                 continue;
             }
+            speed_sum += w.animals()[..12]
+                .iter()
+                .map(|a| a.point.velocity_m_per_s.length() / a.top_speed_m_per_s())
+                .sum::<f32>()
+                / 12.0;
+            samples += 1;
             for (i, a) in w.animals().iter().enumerate() {
                 let ratio = a.body().spine_length_m() / a.body_length_m();
                 assert!(
@@ -744,12 +751,11 @@ mod tests {
             "{} moves",
             w.constraint_moves()
         );
-        // And the fish swim: mean speed at least a third of the top speed.
-        let mean_speed: f32 = w.animals()[..12]
-            .iter()
-            .map(|a| a.point.velocity_m_per_s.length() / a.top_speed_m_per_s())
-            .sum::<f32>()
-            / 12.0;
+        // And the fish swim: over the run, their mean speed is at least a third
+        // of the top speed. (Averaged over the run, not read at its last step: a
+        // school slowing at the glass read 0.21 there while its run averaged
+        // more than twice that.)
+        let mean_speed = speed_sum / samples as f32;
         assert!(mean_speed > 0.33, "mean speed {mean_speed} of top");
     }
 

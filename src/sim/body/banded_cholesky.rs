@@ -4,8 +4,9 @@
 //!
 //! Why by hand and why banded: the system has 23 × 3 = 69 unknowns. With nodes
 //! numbered front to back, a spring or a surface triangle only couples nodes at most
-//! [`NODE_BANDWIDTH`] = 7 apart, so the matrix is a band of half-width
-//! 3·7 + 2 = 23 scalars. Within it the factorisation only touches the envelope (the
+//! [`NODE_BANDWIDTH`] = 8 apart (the tail-fin tips reach back to ring 4, see
+//! `body_layout.rs`; every other node at most 7), so the matrix is a band of
+//! half-width 3·8 + 2 = 26 scalars. Within it the factorisation only touches the envelope (the
 //! paper's skyline): each ring node couples back to 3 of the 4 nodes of the ring in
 //! front, so a row reaches back 4 to 7 nodes, not always 7, and Cholesky fills in
 //! nothing outside the envelope. That is about 9 300 multiply-adds per
@@ -20,7 +21,7 @@
 
 /// Number of scalar unknowns: 23 nodes × 3 components.
 pub const SYSTEM_SIZE: usize = 69;
-/// Largest index difference between two coupled nodes (ring k to ring k+1).
+/// Largest index difference between two coupled nodes (a tail-fin tip to ring 4).
 pub const NODE_BANDWIDTH: usize = 8;
 /// Scalar half-bandwidth (excluding the diagonal).
 pub const HALF_BANDWIDTH: usize = 3 * NODE_BANDWIDTH + 2;

@@ -44,13 +44,18 @@
 //! The first layout (the re-implementation's) tied each tip to the four nodes of
 //! ring 5 only. Those four anchors lie in one plane, so a tip swung round the
 //! last ring to the front of it keeps every spring at its rest length: the
-//! folded fin is a second rest shape. Fish fell into it (5 of 16 in the first 21 s
-//! of the pillar scene on the converged body, found by
-//! `FishBody::tail_fin_folded`) and stayed there, swimming at a third of their
-//! speed with the fin pointing forward along the body: the "stalled" fish of
-//! earlier measurements. Tying each tip to two nodes of ring 4 as well leaves no
-//! such twin within reach: a fin swung forward would squeeze those springs from
-//! 6.4 to about 2 units. The spring count stays 91.
+//! folded fin is a second rest shape. Fish fell into it and stayed there, swimming
+//! at a fraction of their speed with the fin pointing forward along the body
+//! (found by `FishBody::tail_fin_folded`; `reef_world::tests::fold_census`, two
+//! minutes, seeds 1–2: half the fish of the default reef and of *Predator and
+//! school*, for 34–35 % and 40–47 % of the fish-time; 2–3 of 16 in *School meets
+//! obstacle*; a converged body fell into it too). Tying each tip to two nodes of
+//! ring 4 as well leaves no such twin within reach: a fin swung forward would
+//! squeeze those springs from 6.4 to about 2 units; no fin folds in any demo
+//! since (same census), and a fin folded by hand springs back
+//! (`tests::a_tail_fin_folded_over_the_last_ring_springs_back`). The spring count
+//! stays 91; the tail-fin tip (node 21) now couples to node 13, eight nodes away,
+//! so the solver's band is eight nodes wide (`banded_cholesky.rs`).
 //! Kinds (footnote 2): *cross* springs (all diagonals, in a ring or across a face,
 //! e.g. S₂,₇) c = 38; *muscle* springs (the longitudinal springs of rings 1–2, 2–3,
 //! 3–4, e.g. S₂,₆) c = 28; every other spring c = 30.
@@ -394,18 +399,8 @@ const fn build_triangles() -> [[usize; 3]; TRIANGLE_COUNT] {
         let mut c = 0;
         while c < 4 {
             let d = (c + 1) % 4;
-            // The side quads are split along mirror-image diagonals (right:
-            // front[1]–back[2], left: front[0]–back[3]); the dorsal and ventral
-            // quads, which no single diagonal makes symmetric, alternate from ring
-            // to ring.
-            let flip = c == 3 || ((c == 0 || c == 2) && k % 2 == 1);
-            if flip {
-                t[n] = [front[c], back[c], front[d]];
-                t[n + 1] = [back[c], back[d], front[d]];
-            } else {
-                t[n] = [front[c], back[c], back[d]];
-                t[n + 1] = [front[c], back[d], front[d]];
-            }
+            t[n] = [front[c], back[c], back[d]];
+            t[n + 1] = [front[c], back[d], front[d]];
             n += 2;
             c += 1;
         }
@@ -459,34 +454,6 @@ mod tests {
         for (i, m) in MASSES.iter().enumerate() {
             assert_eq!(*m, expect(i), "node {i}");
         }
-    }
-
-    #[test]
-    fn the_skin_is_left_right_symmetric_but_for_the_dorsal_and_ventral_quads() {
-        // Every triangle has its mirror image, except those of the dorsal and
-        // ventral quads between rings, which no single diagonal makes symmetric
-        // (they alternate from ring to ring). With side quads split along
-        // diagonals of the same hand, right turns came out 0.7–0.9° smaller than
-        // left ones (`turn_mc.rs`).
-        let sorted = |t: [usize; 3]| {
-            let mut t = t;
-            t.sort_unstable();
-            t
-        };
-        let mut unmatched = 0;
-        for t in TRIANGLES {
-            let m = sorted(t.map(mirror_node));
-            if TRIANGLES.iter().any(|u| sorted(*u) == m) {
-                continue;
-            }
-            unmatched += 1;
-            let corners = t.map(|i| (i - RING_FIRST_NODE) % 4);
-            assert!(
-                corners.iter().all(|&c| c < 2) || corners.iter().all(|&c| c >= 2),
-                "side triangle {t:?} has no mirror image"
-            );
-        }
-        assert_eq!(unmatched, 4 * (RING_COUNT - 1));
     }
 
     #[test]

@@ -232,7 +232,9 @@ pub struct BodyParams {
     /// i.e. saturation sits near 0.15·k Hz). Every rate
     /// constant is scaled so that one second here is k paper time units:
     /// stiffness × k², damping, water and fin forces × k, righting couple × k²;
-    /// masses and lengths unchanged.
+    /// masses and lengths unchanged. A field so that measurements can vary the body's
+    /// time scale; the minds always read [`PAPER_TIME_UNITS_PER_SEC`], so a body
+    /// run at another k no longer shares their clock.
     pub paper_time_units_per_sec: f32,
     /// Implicit substeps per step, count (clamped to 1..=[`MAX_SUBSTEPS`]).
     /// Default 12, measured: each substep is 4.6 ms = 0.18 paper time units at

@@ -616,11 +616,12 @@ fn turn_table() {
     let (map, measured) = find_steering_map();
     for ((deg, p), m) in map.keys.iter().zip(measured) {
         println!(
-            "| {deg:.0} | {:.4} | {:.1} | {:.4} | {:.1} | {m:.1} |",
+            "| {deg:.0} | {:.4} | {:.1} | {:.4} | {:.1} | {m:.1} | right {:.1} |",
             p.anterior_amplitude,
             p.anterior_rate_per_sec,
             p.posterior_amplitude,
-            p.posterior_rate_per_sec
+            p.posterior_rate_per_sec,
+            measure_turn_deg(*p, TurnDirection::Right)
         );
     }
     let mc = TurnMc::default();
@@ -727,4 +728,25 @@ mod turning {
         let turned = measure_heading_change_deg(&mut mc, true);
         assert!((turned + 180.0).abs() <= 20.0, "turned {turned}°");
     }
+}
+
+#[test]
+fn a_tail_fin_folded_over_the_last_ring_springs_back() {
+    // The fin's tips mirrored through the plane of the last ring, to the front of
+    // it: with the tips tied to that ring only, every spring kept its rest
+    // length there and the fold was a second rest shape that fish fell into.
+    use super::body_layout::{TAIL_FIN_NODES, ring_nodes};
+    let mut fish = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
+    assert!(!fish.tail_fin_folded());
+    let (positions, _) = fish.nodes_mut();
+    let ring_x = ring_nodes(4).iter().map(|&i| positions[i].x).sum::<f32>() / 4.0;
+    for i in TAIL_FIN_NODES {
+        positions[i].x = 2.0 * ring_x - positions[i].x;
+    }
+    assert!(fish.tail_fin_folded());
+    for _ in 0..(5.0 / fish.dt_secs()) as usize {
+        fish.step(&BodyCommand::default(), Vec3::ZERO);
+    }
+    assert!(!fish.tail_fin_folded(), "still folded after 5 s");
+    assert!(fish.positions_m().iter().all(|p| p.is_finite()));
 }
