@@ -117,62 +117,40 @@ fn fingerprint(lab: &Lab) -> u64 {
     h.0
 }
 
+/// A recorded run: set `settings`, then step `steps` times.
+fn case(name: &str, settings: serde_json::Value, steps: u32) -> (String, Vec<Command>) {
+    (
+        name.to_string(),
+        vec![Command::Set(settings), Command::Step(steps)],
+    )
+}
+
 /// The recorded runs: a name and the commands that make it.
 fn cases() -> Vec<(String, Vec<Command>)> {
-    let set = |v: serde_json::Value| Command::Set(v);
-    let mut cases: Vec<(String, Vec<Command>)> = vec![
-        (
-            "aquarium".into(),
-            vec![
-                set(json!({"scene": "aquarium", "seed": 3})),
-                Command::Step(200),
-            ],
+    let mut cases = vec![
+        case("aquarium", json!({"scene": "aquarium", "seed": 3}), 200),
+        case("boids", json!({"scene": "boids", "seed": 3}), 200),
+        case(
+            "boids-monte-carlo-sharks-stingrays",
+            json!({"scene": "boids", "seed": 4,
+                "left": {"mode": "monte_carlo", "sharks": 1, "stingrays": 1}}),
+            150,
         ),
-        (
-            "boids".into(),
-            vec![
-                set(json!({"scene": "boids", "seed": 3})),
-                Command::Step(200),
-            ],
+        case(
+            "boids-compare",
+            json!({"scene": "boids", "seed": 5, "compare": true}),
+            150,
         ),
-        (
-            "boids-monte-carlo-sharks-stingrays".into(),
-            vec![
-                set(json!({"scene": "boids", "seed": 4,
-                    "left": {"mode": "monte_carlo", "sharks": 1, "stingrays": 1}})),
-                Command::Step(150),
-            ],
-        ),
-        (
-            "boids-compare".into(),
-            vec![
-                set(json!({"scene": "boids", "seed": 5, "compare": true})),
-                Command::Step(150),
-            ],
-        ),
-        (
-            "physics-school".into(),
-            vec![
-                set(json!({"scene": "physics", "seed": 5})),
-                Command::Step(60),
-            ],
-        ),
-        (
-            "physics-wander".into(),
-            vec![
-                set(json!({"scene": "physics", "seed": 6, "physics": {"behaviour": "wander"}})),
-                Command::Step(60),
-            ],
-        ),
-        (
-            "learning".into(),
-            vec![
-                set(json!({"scene": "learning", "seed": 1})),
-                Command::Step(60),
-                Command::Train(20),
-            ],
+        case("physics-school", json!({"scene": "physics", "seed": 5}), 60),
+        case(
+            "physics-wander",
+            json!({"scene": "physics", "seed": 6, "physics": {"behaviour": "wander"}}),
+            60,
         ),
     ];
+    let (name, mut learning) = case("learning", json!({"scene": "learning", "seed": 1}), 60);
+    learning.push(Command::Train(20));
+    cases.push((name, learning));
     for demo in [
         "reef",
         "predator_and_school",
@@ -181,13 +159,10 @@ fn cases() -> Vec<(String, Vec<Command>)> {
         "school_meets_obstacle",
     ] {
         for body in ["physical", "point_mass"] {
-            cases.push((
-                format!("reef-{demo}-{body}"),
-                vec![
-                    set(json!({"scene": "reef", "seed": 2,
-                        "reef": {"demo": demo, "body": body}})),
-                    Command::Step(60),
-                ],
+            cases.push(case(
+                &format!("reef-{demo}-{body}"),
+                json!({"scene": "reef", "seed": 2, "reef": {"demo": demo, "body": body}}),
+                60,
             ));
         }
     }
@@ -256,16 +231,14 @@ fn every_scene_runs_as_recorded() {
 fn a_run_repeats_exactly() {
     // The fingerprint is a function of the commands: the same case twice gives
     // the same value, and a different seed a different one.
-    let case = || {
-        vec![
-            Command::Set(json!({"scene": "reef", "seed": 2, "reef": {"demo": "feeding"}})),
-            Command::Step(30),
-        ]
+    let feeding = |seed: u64| {
+        case(
+            "feeding",
+            json!({"scene": "reef", "seed": seed, "reef": {"demo": "feeding"}}),
+            30,
+        )
+        .1
     };
-    assert_eq!(run_case(case()), run_case(case()));
-    let other = vec![
-        Command::Set(json!({"scene": "reef", "seed": 3, "reef": {"demo": "feeding"}})),
-        Command::Step(30),
-    ];
-    assert_ne!(run_case(case()), run_case(other));
+    assert_eq!(run_case(feeding(2)), run_case(feeding(2)));
+    assert_ne!(run_case(feeding(2)), run_case(feeding(3)));
 }
