@@ -37,11 +37,14 @@ use super::body::PectoralFins;
 /// checks it within 3 %).
 pub const TOP_SPEED_BODY_LENGTHS_PER_SEC: f32 = 0.6;
 
-/// Steering command per radian of heading error, 1/rad. 3, tuned
-/// (`physical_fish::agility`): full steering from 19° of error; a 90° turn at
-/// 0.7 of top speed reaches 81° in 3.0 s on the converged body (3.1 s on the
-/// earlier body; gain 1.5 there: 3.5 s).
-pub const STEER_GAIN_PER_RAD: f32 = 3.0;
+/// Steering command per radian of heading error, 1/rad. 4, tuned
+/// (`physical_fish::agility`, `closed_loop_turn_times`): full steering from 14° of
+/// error. On the converged body with the braced tail fin and the averaged heading,
+/// a 90° turn from 0.7 of the top speed reaches 81° in 3.4–3.5 s at gain 4, 3.4–3.6 s
+/// at 3; 30° turns from 0.7 take 1.6–1.7 s at 4, 2.0–2.1 s at 3; gains 5 and 6 gain
+/// under 0.1 s on 90° turns. (Before the brace, gain 3: 3.0 s; on the earlier,
+/// unconverged body 3.1 s, and 3.5 s at gain 1.5.)
+pub const STEER_GAIN_PER_RAD: f32 = 4.0;
 
 /// Fin pitch per radian of elevation error (2, chosen: a 15° climb request tilts
 /// the fins by the full 0.5 rad).

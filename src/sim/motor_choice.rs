@@ -112,9 +112,12 @@ impl Wish {
 /// keeps the course (see the module doc).
 pub const TURN_MC_MIN_DEG: f32 = 90.0;
 /// Bend per radian of heading error while keeping the course, 1/rad (3: full bend
-/// from 19° of error; the physics scene's bridge uses the same,
-/// `motor_bridge::STEER_GAIN_PER_RAD`).
-pub const COURSE_GAIN_PER_RAD: f32 = super::motor_bridge::STEER_GAIN_PER_RAD;
+/// from 19° of error). The physics scene's bridge, which turns whole corners with
+/// the held bend, uses 4 (`motor_bridge::STEER_GAIN_PER_RAD`); here, where turns
+/// of 90° and more go to the turn-MC, 4 measured worse on the reef demos (feeding
+/// seeds 3–4: 27 plankton against 32 at 3; courtship seed 2 reached only nuzzling;
+/// 25 collision starts in the muscle reef's minute on seed 2).
+pub const COURSE_GAIN_PER_RAD: f32 = 3.0;
 /// Fin pitch per radian of elevation error (2, chosen: a 15° climb request tilts
 /// the fins by the full 0.5 rad).
 const PITCH_GAIN: f32 = 2.0;

@@ -366,7 +366,23 @@ mod tests {
     /// [`turn_at_speed_deg`] with the turn requested `extra_steps` steps later
     /// (at another phase of the tail beat).
     fn turn_at_speed_after_deg(angle_deg: f32, speed_fraction: f32, extra_steps: usize) -> f32 {
+        turn_with_map_deg(
+            super::super::body::turn_mc::SteeringMap::DEFAULT,
+            angle_deg,
+            speed_fraction,
+            extra_steps,
+        )
+    }
+
+    /// [`turn_at_speed_after_deg`] by a fish whose turn-MC uses `map`.
+    fn turn_with_map_deg(
+        map: super::super::body::turn_mc::SteeringMap,
+        angle_deg: f32,
+        speed_fraction: f32,
+        extra_steps: usize,
+    ) -> f32 {
         let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+        fish.turn.map = map;
         let dt = fish.body().dt_secs();
         let swim = MotorIntent {
             speed_fraction,
@@ -482,6 +498,44 @@ mod tests {
             let a = i as f32 / 20.0;
             let v = straight_speed_at_amplitude(a);
             println!("| {a:.2} | {v:.4} m/s | {:.3} |", v / full);
+        }
+    }
+
+    /// Behind `SteeringMap::DEFAULT`: each key's r bisected so that its turn,
+    /// averaged over the swim speeds the minds ask for (0.3, 0.6 and 1.0 of the
+    /// top speed), is the key's angle. `cargo test --release --lib
+    /// keys_over_swim_speeds -- --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn keys_over_swim_speeds() {
+        use super::super::body::turn_mc::{SteeringMap, key};
+        let mut map = SteeringMap::DEFAULT;
+        for k in 0..4 {
+            let target = map.keys[k].0;
+            let mean = |map: SteeringMap| {
+                [0.3, 0.6, 1.0]
+                    .iter()
+                    .map(|&s| turn_with_map_deg(map, target, s, 0))
+                    .sum::<f32>()
+                    / 3.0
+            };
+            let (mut lo, mut hi) = (0.0f32, 1.0f32);
+            for _ in 0..14 {
+                let mid = 0.5 * (lo + hi);
+                map.keys[k].1 = key(mid);
+                if mean(map) < target {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            let r = 0.5 * (lo + hi);
+            map.keys[k].1 = key(r);
+            let row: Vec<String> = [0.0, 0.3, 0.6, 1.0]
+                .iter()
+                .map(|&s| format!("{:.1}", turn_with_map_deg(map, target, s, 0)))
+                .collect();
+            println!("| {target}° | {r:.4} | {} |", row.join(" | "));
         }
     }
 

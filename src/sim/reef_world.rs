@@ -2810,8 +2810,17 @@ mod tests {
     }
 
     fn prey_eaten_on(body: ReefBodyKind, schools: bool, secs: f32) -> (u32, u32) {
+        prey_eaten_seeds(body, schools, secs, 1..=8)
+    }
+
+    fn prey_eaten_seeds(
+        body: ReefBodyKind,
+        schools: bool,
+        secs: f32,
+        seeds: std::ops::RangeInclusive<u64>,
+    ) -> (u32, u32) {
         let (mut eaten, mut missed) = (0, 0);
-        for seed in 1..=8 {
+        for seed in seeds {
             let mut w = reef(ReefScene::PredatorAndSchool, body, seed);
             for i in 0..w.animals().len() {
                 if w.animals()[i].habits.kind == FishKind::Prey {
@@ -2838,6 +2847,17 @@ mod tests {
             println!(
                 "{body:?}, 8 x {secs} s: schooling {schooled}, lone {lone}, missed {missed_school} / {missed_lone}"
             );
+        }
+    }
+
+    #[test]
+    #[ignore]
+    fn predator_points_census() {
+        for k in 0..4u64 {
+            let r = 1 + 8 * k..=8 + 8 * k;
+            let s = prey_eaten_seeds(ReefBodyKind::PointMass, true, 120.0, r.clone());
+            let l = prey_eaten_seeds(ReefBodyKind::PointMass, false, 120.0, r.clone());
+            println!("seeds {r:?}: schooling {s:?}, lone {l:?}");
         }
     }
 
