@@ -505,7 +505,8 @@ pub struct ReefCounts {
     /// predator's S_k, which asks whether schoolmates were around it).
     pub schooling_prey_eaten: u32,
     pub food_eaten: u32,
-    /// Starts of body overlaps between two fish.
+    /// Starts of body overlaps between two fish, not counting a bonded
+    /// courting pair's (circling, ascending and nuzzling are close by design).
     pub fish_collisions: u32,
     /// Body-steps inside a rock (should stay 0).
     pub inside_rock_steps: u32,
@@ -2198,6 +2199,16 @@ impl ReefWorld {
                 if !self.animals[j].alive {
                     continue;
                 }
+                // A bonded pair chases each other's tails, rises together and
+                // nuzzles: their contacts are the courtship, not collisions.
+                let courting = self.pairs.iter().any(|p| {
+                    p.bonded()
+                        && ((p.male, p.female) == (i as u32, j as u32)
+                            || (p.male, p.female) == (j as u32, i as u32))
+                });
+                if courting {
+                    continue;
+                }
                 let (a, b) = (&self.animals[i].body, &self.animals[j].body);
                 let mean = 0.5 * (a.body_length_m() + b.body_length_m());
                 if a.position_m().distance(b.position_m()) < COLLISION_BODY_LENGTHS * mean {
@@ -2523,6 +2534,51 @@ mod tests {
             ][k as usize]
         });
         (None, phase)
+    }
+
+    #[test]
+    #[ignore]
+    fn nuzzle_trace() {
+        let seed: u64 = std::env::var("SEED")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(1);
+        let mut w = reef(ReefScene::Courtship, ReefBodyKind::Physical, seed);
+        let mut next = 0.0;
+        for _ in 0..(300.0 / w.dt_secs()) as u32 {
+            w.step();
+            if let Some(p) = w.pairs().first().cloned() {
+                if p.phase == Phase::Nuzzling && w.time_secs() as f32 >= next {
+                    next = w.time_secs() as f32 + 0.5;
+                    let m = &w.animals()[p.male as usize].body;
+                    let f = &w.animals()[p.female as usize].body;
+                    let ab = f.position_m() - Vec3::Y * 0.2 * f.body_length_m();
+                    let off = m.head_m() - ab;
+                    let along = off.dot(f.heading());
+                    let lvl = Vec3::new(1.0, 0.0, 1.0);
+                    let aside = ((off - f.heading() * along) * lvl).length();
+                    println!(
+                        "t {:.1} n {} since {:.1} d {:.2} along {:.2} aside {:.2} dy {:.2} vm {:.3} vf {:.3} mfwd {:.2} ffwd {:.2} fy {:.2}",
+                        w.time_secs(),
+                        p.count,
+                        p.since_count_secs,
+                        off.length(),
+                        along,
+                        aside,
+                        off.y,
+                        m.velocity_m_per_s().length(),
+                        f.velocity_m_per_s().length(),
+                        m.heading().dot(f.heading()),
+                        f.heading().y,
+                        f.position_m().y
+                    );
+                }
+            }
+            if w.counts().spawnings > 0 {
+                println!("spawned at {:.1}", w.time_secs());
+                break;
+            }
+        }
     }
 
     #[test]
