@@ -33,25 +33,26 @@
 //! time spent bent. With the slow restoring stroke (1/20 of the contraction rate)
 //! that time is r/s·(1 + 20).
 //!
-//! Measured on the default (converged) body, `tests::turn_table`, each turn's quick
-//! stroke timed to the beat ([`KEY_BEAT_PHASE_RAD`]):
+//! Measured on the default (converged) body with the braced tail fin,
+//! `tests::turn_table`, each turn's quick stroke timed to the beat
+//! ([`KEY_BEAT_PHASE_RAD`]):
 //!
 //! | key angle | r0 = r1 | s0 = s1 (1/s) | duration (s) | measured (left) |
 //! |-----------|---------|---------------|--------------|-----------------|
-//! | 30°       | 0.3493  | 2.0           | 3.7          | 31.2°           |
-//! | 45°       | 0.4367  | 2.0           | 4.6          | 45.0°           |
-//! | 60°       | 0.5186  | 2.0           | 5.4          | 60.0°           |
-//! | 90°       | 0.6773  | 2.0           | 7.1          | 90.0°           |
+//! | 30°       | 0.3529  | 2.0           | 3.7          | 30.0°           |
+//! | 45°       | 0.4698  | 2.0           | 4.9          | 46.1°           |
+//! | 60°       | 0.5561  | 2.0           | 5.8          | 59.9°           |
+//! | 90°       | 0.7160  | 2.0           | 7.5          | 89.5°           |
 //!
-//! (The 30° key jumps from below 30° to 31.2° within the search's last step: near
-//! it the turn is sensitive to the fourth decimal.) Interpolated (measured
-//! left/right): 10° → 12.4/−12.4, 20° → 21.4/−21.5, 35° → 32.8/−32.8, 50° →
-//! 46.8/−46.9, 75° → 74.3/−74.5. Sequences: 135° requested → 129.8°, 180° →
-//! 180.8°. (With the earlier, chiral skin, `body_layout::TRIANGLES`, right turns
-//! came out 0.7–0.9° smaller than left ones.) Doubling the body's time resolution
-//! changes the key turns by 0.7 / 0.2 / 0.7 / 1.8 %
-//! (`fish_body.rs`, "Convergence"). On the earlier, unconverged body (backward
-//! Euler, controllers sampled once per step) the same keys turn about 28 % less.
+//! [`SteeringMap::DEFAULT`] keeps the 45°, 60° and 90° keys (0.5559 for 60°,
+//! from an earlier run of the same search: 60.0°) and takes a larger 30° key,
+//! r = 0.3701, bisected on the turn averaged over 0.3, 0.6 and 1.0 of the top
+//! speed (see there). Interpolated (measured left/right): 10° → 13.0/−13.0,
+//! 20° → 22.7/−22.5, 35° → 37.6/−37.2, 50° → 48.0/−48.1, 75° → 73.2/−73.5.
+//! Sequences: 135° requested → 133.5°, 180° → 181.2°. Doubling the body's time
+//! resolution changes the key turns by under 3 % (`fish_body.rs`,
+//! "Convergence"). On the earlier, unconverged body (backward Euler, controllers
+//! sampled once per step) the same keys turn about 28 % less.
 
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{FRAC_PI_2, PI, TAU};
