@@ -127,7 +127,8 @@ pub fn learning_controls_ui(
     ui.horizontal(|ui| {
         let r = ui.button("Run the race").on_hover_text(
             "Copies of the fish, saved after more and more tries of the first drill, race \
-             from the same start line (the paper's Fig. 7)",
+             from the same start line (the paper's Fig. 7). Practice helps a lot at first \
+             and then hardly at all: the last two copies finish almost together",
         );
         rects.insert("learning_race", r.rect);
         if r.clicked() {
