@@ -108,8 +108,10 @@ fn main() {
     }
 
     println!();
+    let body = shoal::sim::body::BodyParams::default();
     println!(
-        "Muscle-driven fish (Tu & Terzopoulos body, schooling, Δt = 0.055 s, 16 BDF2 substeps):"
+        "Muscle-driven fish (Tu & Terzopoulos body, schooling, Δt = 0.055 s, {:?}, {} substeps, matrix every {}):",
+        body.integrator, body.substeps, body.jacobian_interval
     );
     println!(
         "{:>7} | {:>10} | {:>14} | {:>19} | {:>17}",
