@@ -32,8 +32,8 @@ use serde::{Deserialize, Serialize};
 use super::body::PectoralFins;
 
 /// Swimming speed of the default body at the swim-MC's top setting, body lengths
-/// per second. 0.6, measured (`body::tests::speed_table`: 0.608 at 2.3 Hz and full
-/// amplitude on the converged body; `body::tests::the_default_body_is_converged`
+/// per second. 0.6, measured (`body::tests::speed_table`: 0.585 at 2.3 Hz and full
+/// amplitude on the converged body with the braced tail fin; `body::tests::the_default_body_is_converged`
 /// checks it within 3 %).
 pub const TOP_SPEED_BODY_LENGTHS_PER_SEC: f32 = 0.6;
 

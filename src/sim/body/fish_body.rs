@@ -87,46 +87,21 @@
 //! control sampling and the substeps per 0.055 s step ("matrix every": substeps per
 //! factorisation).
 //!
-//! | integrator | controllers sampled | substeps | matrix every | 1 Hz | 2 Hz | 2.3 Hz (top) | 3 Hz | 4 Hz | 5 Hz | 30° key | 45° key | 60° key | 90° key |
-//! |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|
-//! | backward Euler (before) | once per step | 8 | 1 | 0.174 | 0.431 | 0.493 | 0.593 | 0.654 | 0.649 | 21.9° | 33.7° | 44.4° | 64.9° |
-//! | backward Euler | once per step | 16 | 1 | 0.181 | 0.460 | 0.532 | 0.658 | 0.748 | 0.764 | 24.5° | 37.9° | 50.1° | 73.3° |
-//! | backward Euler | once per step | 32 | 1 | 0.184 | 0.475 | 0.552 | 0.688 | 0.793 | 0.819 | 25.9° | 40.4° | 53.2° | 77.7° |
-//! | backward Euler | every substep | 8 | 1 | 0.177 | 0.452 | 0.522 | 0.641 | 0.744 | 0.786 | 23.2° | 35.4° | 46.6° | 68.5° |
-//! | backward Euler | every substep | 16 | 1 | 0.183 | 0.483 | 0.564 | 0.712 | 0.837 | 0.886 | 26.0° | 39.7° | 52.4° | 77.5° |
-//! | backward Euler | every substep | 32 | 1 | 0.187 | 0.499 | 0.585 | 0.745 | 0.889 | 0.913 | 27.5° | 41.9° | 55.4° | 82.2° |
-//! | backward Euler | every substep | 64 | 1 | 0.189 | 0.508 | 0.596 | 0.760 | 0.914 | −0.110 | 28.4° | 43.2° | 57.1° | 84.8° |
-//! | BDF2 | every substep | 8 | 1 | 0.192 | 0.519 | 0.607 | 0.774 | 0.870 | 0.278 | 30.1° | 45.9° | 61.1° | 90.6° |
-//! | BDF2 | every substep | 12 | 1 | 0.191 | 0.518 | 0.607 | 0.776 | 0.910 | 0.001 | 29.7° | 45.4° | 60.1° | 89.3° |
-//! | **BDF2 (default)** | every substep | **12** | **2** | 0.192 | 0.518 | **0.608** | 0.779 | 0.914 | 0.269 | **29.7°** | **45.0°** | **60.0°** | **90.0°** |
-//! | BDF2 | every substep | 12 | 3 | 0.192 | 0.518 | 0.607 | 0.775 | 0.901 | 0.000 | 29.7° | 45.5° | 60.2° | 89.3° |
-//! | BDF2 | every substep | 16 | 1 | 0.191 | 0.517 | 0.607 | 0.775 | 0.922 | −0.041 | 29.6° | 45.2° | 59.8° | 88.8° |
-//! | BDF2 (the previous default) | every substep | 16 | 2 | 0.191 | 0.518 | 0.608 | 0.776 | 0.922 | −0.019 | 29.4° | 45.0° | 59.4° | 88.1° |
-//! | BDF2 | every substep | 16 | 4 | 0.192 | 0.520 | 0.610 | 0.778 | 0.922 | 0.000 | 29.6° | 45.3° | 59.7° | 88.6° |
-//! | BDF2 | every substep | 24 | 4 | 0.191 | 0.517 | 0.608 | 0.775 | 0.930 | −0.046 | 29.5° | 45.1° | 59.6° | 88.4° |
-//! | BDF2 | every substep | 32 | 4 | 0.191 | 0.517 | 0.608 | 0.775 | 0.933 | −0.065 | 29.5° | 45.0° | 59.4° | 88.2° |
-//! | BDF2 | every substep | 64 | 8 | 0.191 | 0.516 | 0.608 | 0.775 | 0.936 | −0.085 | 29.5° | 44.8° | 59.2° | 87.9° |
-//!
-//! (Every row with the spring damping of 2.0, [`BodyParams::spring_damping`], the
-//! mirror-symmetric skin and the current keys.)
-//! - The old default was far from converged: its top speed and turns grew with every
-//!   doubling, its "saturation" above 3–4 Hz (0.654 at 4 Hz, 0.649 at 5) was numerical
-//!   damping, and the keys turn about 28 % less on it.
-//! - Backward Euler converges only to first order: at 64 substeps a doubling still adds
-//!   2 % to the speed and 4 % to the 90° turn. Sampling the controllers every substep
-//!   removes the ramp's error (0.593 → 0.641 at 3 Hz and 8 substeps).
+//! The whole table is in `docs/fish-body.md` ("Convergence"). In short, with the
+//! spring damping of 2.0, the mirror-symmetric skin and the braced tail fin:
+//! - The old default (8 backward Euler substeps, one command per step) was far from
+//!   converged: the top speed 0.469 body lengths/s against 0.581 at 64 BDF2
+//!   substeps, the keys about a third short (90° key: 59.9°).
+//! - Backward Euler converges only to first order: at 64 substeps a doubling still
+//!   adds 2 % to the speed and 5 % to the 90° turn.
 //! - BDF2 with per-substep sampling has the speed converged from 8 substeps on
-//!   (0.607–0.610 at 2.3 Hz). From the default, 12 substeps with a matrix every 2, a
-//!   doubling (24 substeps, matrix every 4: as fresh in time) changes the top speed
-//!   by less than 0.1 % and the 30/45/60/90° keys by 0.7 / 0.2 / 0.7 / 1.8 %.
-//!   `tests::the_default_body_is_converged` fails if a doubling changes the top speed
-//!   or a key turn by 3 % or more.
-//! - At a 3 Hz top setting the turns converge more slowly (while choosing, on the
-//!   earlier body: from 24 substeps a doubling still changed the 90° key by 2.7 %);
-//!   at 2.3 Hz the top speed stays the 0.6 body lengths/s every scene was tuned to.
-//! - The 5 Hz column is not converged and need not be: between 4.5 and 5 Hz the
-//!   passive tail fails (`motor_controller.rs`) and what is left of the swimming is
-//!   erratic.
+//!   (0.581–0.587 at 2.3 Hz). From the default, 12 substeps with a matrix every 2,
+//!   a doubling (24 substeps, matrix every 4) changes the top speed by 0.5 % and the
+//!   30/45/60/90° keys by 1.0 / 0.4 / 2.2 / 1.0 %. `tests::the_default_body_is_converged`
+//!   fails if a doubling changes the top speed or a key turn by 3 % or more.
+//! - Above 3 Hz the swimming is erratic and not converged (4 Hz: 0.55–0.79 across
+//!   resolutions; at 5 Hz the passive tail fails in some runs): the top setting,
+//!   2.3 Hz, stays well below.
 //!
 //! ## Converged is not enough: the held bend's second state
 //! With the spring damping of the earlier body, 0.1, a slow fish that steered with a

@@ -8,47 +8,26 @@
 //! The paper lags the posterior segment 180° behind the anterior one. With this body
 //! (two short, adjacent actuated segments, each 0.19 body lengths long) a 180° lag
 //! makes a standing S-wave and no thrust. Measured on the default body at the top
-//! setting, 2.3 Hz (`tests::wave_table`): lag 0° 0.610, 30° 0.608, 90° 0.447,
-//! 180° 0.010 body lengths/s. So the lag between the two segments does not make
-//! the travelling wave: 0° swims as fast as 30°. The wave comes from the passive tail, which the
-//! water drags behind the actuated body: the tail fin's sideways motion lags the
-//! last body ring's by about 45° at every frequency from 1 to 4 Hz. Default 30°,
-//! kept (as fast as 0°; the lag is a parameter).
+//! setting, 2.3 Hz (`tests::wave_table`): lag 0° 0.578, 30° 0.585, 90° 0.416,
+//! 180° −0.006 body lengths/s. So the lag between the two segments does not make
+//! the travelling wave: 0° swims almost as fast as 30°. The wave comes from the
+//! passive tail, which the water drags behind the actuated body: the tail fin's
+//! sideways motion lags the last body ring's by about 40° at every frequency from 1
+//! to 4.5 Hz. Default 30°, kept (the lag is a parameter).
 //!
-//! # Measured speed table (`tests::speed_table`, 26-unit fish, default
-//! `BodyParams`: k = 40 paper time units per second, 12 BDF2 substeps of the fixed
-//! Δt = 0.055 s with the controllers sampled at every substep, converged: see
-//! `fish_body.rs`; lag 30°, 60 s runs, speed over the last 30 s)
-//!
-//! | amplitude r1 = r2 | frequency s (Hz) | speed (body lengths/s) |
-//! |-------------------|------------------|------------------------|
-//! | 1.0               | 0.5              | 0.073                  |
-//! | 1.0               | 1.0              | 0.192                  |
-//! | 1.0               | 1.5              | 0.349                  |
-//! | 1.0               | 2.0              | 0.518                  |
-//! | 1.0               | 2.3              | 0.608 (top, ŝ)         |
-//! | 1.0               | 2.5              | 0.660                  |
-//! | 1.0               | 3.0              | 0.779                  |
-//! | 1.0               | 4.0              | 0.914                  |
-//! | 1.0               | 5.0              | 0.269 (fails)          |
-//! | 0.75              | 2.3              | 0.446                  |
-//! | 0.5               | 2.3              | 0.257                  |
-//! | 0.25              | 2.3              | 0.097                  |
-//!
-//! Speed grows with amplitude and, up to about 2.5 Hz, about linearly with
-//! frequency (0.26 body lengths per tail beat at 2 and 3 Hz), then more slowly: the
-//! tail fin's sideways amplitude stops growing (0.17, 0.19, 0.19 body lengths at 2,
-//! 3, 4 Hz) while the water's drag on the body grows with speed. Between 4.5 and
-//! 5 Hz the passive tail fails: its amplitude falls seventeen-fold (0.17 → 0.010
-//! body lengths) and it swings about 153° behind the last ring instead of 45°
-//! (`tests::wave_table`). That cliff is a property of this model's light, passive
-//! tail in the one-sided water force, and where it lies depends on details (with
-//! the earlier spring damping of 0.1 between 4 and 4.25 Hz, the same at 16 and 64
-//! substeps; with damping 2.0 and the earlier, chiral skin between 4.25 and 4.5
-//! Hz); it is not Webb's biological threshold, and the paper's "below
-//! certain threshold values" is not reproduced by any mechanism of the model.
+//! # Speed (`tests::speed_table`; the table is in `docs/fish-body.md`, "Swimming")
+//! On the default body (12 BDF2 substeps per 0.055 s step, converged, tail fin
+//! braced) full amplitude swims 0.152 / 0.468 / 0.585 / 0.826 body lengths/s at
+//! 1 / 2 / 2.3 / 3 Hz: about linearly with frequency up to 3 Hz, 0.23–0.28 body
+//! lengths per beat. Above 3 Hz the swimming is erratic (4 Hz: 0.63–0.86 depending
+//! on the run's length) and at 5 Hz the passive tail fails. That failure is a
+//! property of this model's light, passive tail in the one-sided water force, and
+//! where it lies depends on details (spring damping, skin, fin brace); it is not
+//! Webb's biological threshold, and the paper's "below certain threshold values" is
+//! not reproduced by any mechanism of the model. Speed grows faster than amplitude
+//! ([`SPEED_AT_AMPLITUDE`]), so swim-MC(speed) reads the amplitude off that curve.
 //! Maximal parameters: r̂1 = r̂2 = 1, ŝ1 = ŝ2 = 2.3 Hz, chosen: the top speed,
-//! 0.608 body lengths/s, stays the 0.6 that every scene was tuned to
+//! 0.585 body lengths/s, is within 3 % of the 0.6 that every scene was tuned to
 //! (`motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC`), inside the 1–3 Hz of real
 //! cruising fish, well below the cliff; at 3 Hz (0.779) the turns converged more
 //! slowly and held-bend steering was weak on the earlier body (`fish_body.rs`,
