@@ -3220,19 +3220,13 @@ mod tests {
     /// `secs`? (one school, split, rejoined)
     fn pillar_outcome(seed: u64, secs: f32) -> (bool, bool, bool) {
         let mut w = reef(ReefScene::SchoolMeetsObstacle, ReefBodyKind::Physical, seed);
-        let n = w.animals().len() as f32;
         let (mut before, mut split, mut rejoined) = (false, false, false);
         for step in 0..(secs / w.dt_secs()) as u32 {
             w.step();
             if step % 9 != 0 {
                 continue;
             }
-            let x = w
-                .animals()
-                .iter()
-                .map(|a| a.body.position_m().x)
-                .sum::<f32>()
-                / n;
+            let x = mean_x_m(&w);
             let m = w.school_metrics();
             if x < -2.0 && m.groups == 1 {
                 before = true;
@@ -3247,9 +3241,18 @@ mod tests {
         (before, split, rejoined)
     }
 
+    /// The animals' mean x, metres.
+    fn mean_x_m(w: &ReefWorld) -> f32 {
+        w.animals()
+            .iter()
+            .map(|a| a.body.position_m().x)
+            .sum::<f32>()
+            / w.animals().len() as f32
+    }
+
     /// The pillar school's course: `PILLAR_SEED=8 cargo test --release --lib
     /// pillar_trace -- --ignored --nocapture` prints every 3 s its mean x, speed,
-    /// groups and polarization.
+    /// groups, polarization and how many fish have a folded tail fin.
     #[test]
     #[ignore]
     fn pillar_trace() {
@@ -3265,12 +3268,7 @@ mod tests {
             if step % every != 0 {
                 continue;
             }
-            let x = w
-                .animals()
-                .iter()
-                .map(|a| a.body.position_m().x)
-                .sum::<f32>()
-                / n;
+            let x = mean_x_m(&w);
             let v = w
                 .animals()
                 .iter()
@@ -3278,93 +3276,6 @@ mod tests {
                 .sum::<f32>()
                 / n;
             let m = w.school_metrics();
-            if std::env::var("PILLAR_FISH").is_ok() && (w.time_secs() - 45.4).abs() < 0.1 {
-                for a in w.animals() {
-                    if let ReefBody::Physical(f) = &a.body {
-                        if f.point.position_m.x > -0.8 {
-                            continue;
-                        }
-                        let mut g = (**f).clone();
-                        let shape = |g: &PhysicalFish| {
-                            let b = g.body();
-                            let pos = b.positions_m();
-                            let fwd = b.forward();
-                            let up = b.up();
-                            let side = fwd.cross(up);
-                            let c4: Vec3 = (17..21).map(|k| pos[k]).sum::<Vec3>() / 4.0;
-                            let len = g.body_length_m();
-                            (13..23)
-                                .map(|k| {
-                                    let d = (pos[k] - c4) / len;
-                                    format!(
-                                        "{k}:({:.2},{:.2},{:.2})",
-                                        d.dot(fwd),
-                                        d.dot(up),
-                                        d.dot(side)
-                                    )
-                                })
-                                .collect::<Vec<_>>()
-                                .join(" ")
-                        };
-                        println!("stuck shape {}", shape(&g));
-                        let fresh = PhysicalFish::new(
-                            crate::sim::physical_fish::BodySpecies::Fish,
-                            g.body_length_m(),
-                            Vec3::ZERO,
-                            Vec3::X,
-                            0.3,
-                        );
-                        println!("rest  shape {}", shape(&fresh));
-                        println!(
-                            "stuck? up {:?} spine {:.3} len {:.3}",
-                            g.up(),
-                            g.body().spine_length_m(),
-                            g.body_length_m()
-                        );
-                        let intent = crate::sim::motor_bridge::MotorIntent {
-                            speed_fraction: 1.0,
-                            start_turn_deg: None,
-                            steer: 0.0,
-                            fins: crate::sim::body::PectoralFins::NEUTRAL,
-                        };
-                        for k in 0..400 {
-                            let p0 = g.point.position_m;
-                            g.step(&intent, Vec3::ZERO);
-                            if k % 50 == 0 {
-                                println!(
-                                    "  open water {:.1} s: speed {:.3} up {:?} spine {:.3}",
-                                    k as f32 * 0.055,
-                                    (g.point.position_m - p0).length() / 0.055,
-                                    g.up(),
-                                    g.body().spine_length_m()
-                                );
-                            }
-                        }
-                    }
-                }
-            }
-            if std::env::var("PILLAR_FISH").is_ok() {
-                let mut xs: Vec<String> = w
-                    .animals()
-                    .iter()
-                    .map(|a| {
-                        let p = a.body.position_m();
-                        let v = a.body.velocity_m_per_s();
-                        let h = a.body.heading();
-                        let m = match &a.body {
-                            ReefBody::Physical(f) => format!("sf {:.2} fins {:?} turning {}", f.motor().speed_fraction, f.motor().fins, f.motor().turning),
-                            ReefBody::Point(_) => String::new(),
-                        };
-                        format!(
-                            "{m} ({:.1},{:.1},{:.1} {:?} v {:.2} want {:.2} h ({:.1},{:.1}) wd ({:.1},{:.1}))",
-                            p.x, p.y, p.z, a.focus.intention, v.length(), a.desired_m_per_s.length(), h.x, h.z,
-                            a.desired_m_per_s.normalize_or_zero().x, a.desired_m_per_s.normalize_or_zero().z
-                        )
-                    })
-                    .collect();
-                xs.sort();
-                println!("{}", xs.join("\n"));
-            }
             let folded = w
                 .animals()
                 .iter()
