@@ -142,6 +142,13 @@ describe("physics fish", () => {
   });
 
   test("by hand: the Turn button turns the selected fish", async () => {
+    // A known start, paused: where the earlier tests left the fish depends on how
+    // long they ran in real time, and a fish that meets the glass mid-turn is
+    // pushed round further by the hard rule (a CI run measured 141°). Seed 1's
+    // fish 0 turns in open water.
+    await page.evaluate(() => window.shoal.pause());
+    await page.evaluate(() => window.shoal.reset(1));
+    await page.evaluate(() => window.shoal.set({ physics: { selected: 0 } }));
     await clickUntil(page, "hand_control", () => window.shoal.settings().physics.hand_control);
     await page.evaluate(() => window.shoal.set({ physics: { hand_speed: 1.0, turn_angle_deg: 90 } }));
     await page.evaluate(() => window.shoal.step(60));
@@ -150,7 +157,7 @@ describe("physics fish", () => {
     await page.evaluate(() => window.shoal.step(220));
     const after = (await state(page)).physics.selected.heading;
     const turned = turnedDeg(before, after);
-    assert.ok(turned > 50 && turned < 130, `turned ${turned}° left for a 90° command`);
+    assert.ok(turned > 70 && turned < 110, `turned ${turned}° left for a 90° command`);
     assert.equal((await state(page)).physics.selected.hand_control, true);
   });
 
