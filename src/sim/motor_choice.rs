@@ -7,7 +7,7 @@
 //! | to swim on (heading error under [`TURN_MC_MIN_DEG`]) | swim-MC at the wished speed; course kept by a bend of the turning segments proportional to the error ([`COURSE_GAIN_PER_RAD`], `body::turn_mc::add_steering`) |
 //! | to swim somewhere [`TURN_MC_MIN_DEG`] or more off its heading | turn-MC(angle), at most 90° at a time; the routine asks again when the turn is done (not while pursuing a moving target, [`Gait::Pursue`]: it keeps re-aiming with the held bend) |
 //! | to climb or dive                       | both pectoral fins pitched (twice the elevation error, at most ±0.5 rad) |
-//! | to go much slower than it swims        | fins across the flow (brake), no tail beat |
+//! | to go much slower than it swims, towards a goal less than [`TURN_MC_MIN_DEG`] off its heading | fins across the flow (brake), no tail beat (a goal further round is turned to first: the turn needs the tail's thrust) |
 //! | to hover ([`Gait::Hover`])             | no tail beat, fins across the flow: the fish stops within a body length and stays |
 //! | to hover and bob ([`Gait::Bob`])       | a slow tail beat ([`BOB_SWIM_FRACTION`]) against fins that brake and tilt up and down together at [`BOB_HZ`]: the fish holds its place and rises and sinks |
 //!
@@ -193,7 +193,25 @@ pub fn choose(wish: &Wish, body: &Body, time_secs: f32) -> MotorIntent {
         0.0
     };
     let wanted = d.length();
-    if wanted < 0.5 * speed && speed > BRAKE_ABOVE_FRACTION * top && !body.turning {
+    let level = Vec3::new(d.x, 0.0, d.z).length();
+    let has_level_goal =
+        level > 1e-3 * top && Vec3::new(body.heading.x, 0.0, body.heading.z).length() > 1e-3;
+    let error_deg = if has_level_goal {
+        level_turn_deg(body.heading, d)
+    } else {
+        0.0
+    };
+    // Brake for a goal ahead only: a goal TURN_MC_MIN_DEG or more round is turned
+    // to first, and a turn needs the tail's thrust. (Braking for any goal, a
+    // nuzzling male behind the female but facing away from her braked, coasted,
+    // beat again and braked, turning about 6°/s while he swam out of her sight:
+    // courtship seeds 1-16 spawned 14 times within 5 minutes, now 15, and no
+    // pair stalls in nuzzling; `reef_world::tests::courtship_seeds`.)
+    if wanted < 0.5 * speed
+        && speed > BRAKE_ABOVE_FRACTION * top
+        && !body.turning
+        && error_deg.abs() < TURN_MC_MIN_DEG
+    {
         return MotorIntent {
             fins: PectoralFins::BRAKE,
             ..idle
@@ -201,7 +219,6 @@ pub fn choose(wish: &Wish, body: &Body, time_secs: f32) -> MotorIntent {
     }
     let mut speed_fraction = (wanted / top).clamp(0.0, 1.0);
     // Climb or dive with the fins.
-    let level = Vec3::new(d.x, 0.0, d.z).length();
     let elevation = d.y.atan2(level);
     let pitch = body.heading.y.clamp(-1.0, 1.0).asin();
     let fins = if wanted > 0.0 {
@@ -212,13 +229,6 @@ pub fn choose(wish: &Wish, body: &Body, time_secs: f32) -> MotorIntent {
         PectoralFins::NEUTRAL
     };
     // Yaw: a turn-MC turn for a large error, the held bend for a small one.
-    let has_level_goal =
-        level > 1e-3 * top && Vec3::new(body.heading.x, 0.0, body.heading.z).length() > 1e-3;
-    let error_deg = if has_level_goal {
-        level_turn_deg(body.heading, d)
-    } else {
-        0.0
-    };
     let (mut start_turn_deg, mut steer) = (None, 0.0);
     if body.turning {
         // The turn runs to its end.
@@ -296,6 +306,16 @@ mod tests {
         // Much slower than now: brake.
         let m = choose(&Wish::swim(Vec3::X * 0.02), &body(0.25, false), 0.0);
         assert_eq!((m.speed_fraction, m.fins), (0.0, PectoralFins::BRAKE));
+        // Much slower, but towards a goal behind: no brake, the tail beats and the
+        // fish bends round (pursuit) or starts a turn-MC turn (swim).
+        for wish in [Wish::pursue(-Vec3::X * 0.02), Wish::swim(-Vec3::X * 0.02)] {
+            let m = choose(&wish, &body(0.25, false), 0.0);
+            assert_ne!(m.fins, PectoralFins::BRAKE, "{wish:?}");
+            assert!(
+                m.speed_fraction > 0.0 || m.start_turn_deg.is_some(),
+                "{wish:?}: {m:?}"
+            );
+        }
     }
 
     #[test]
