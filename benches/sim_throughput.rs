@@ -94,7 +94,7 @@ fn main() {
         let mut settings = Settings::default();
         settings.left.fish_count = fish_count as u32;
         let lab = Lab::new(settings);
-        let tank = lab.world().tank();
+        let tank = lab.scene().tank();
         let camera = OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0);
         let mut builder = FrameBuilder::default();
         let frames_per_sec = rate(Duration::from_secs(1), || {
@@ -130,7 +130,7 @@ fn main() {
         let mut lab = Lab::new(settings);
         lab.step(40);
         let steps_per_sec = rate(Duration::from_secs(3), || lab.step(1));
-        let tank = lab.world().tank();
+        let tank = lab.scene().tank();
         let camera = OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0);
         let mut builder = FrameBuilder::default();
         let frames_per_sec = rate(Duration::from_secs(1), || {

@@ -133,7 +133,7 @@ impl ShoalApp {
         cc.egui_ctx.set_theme(egui::Theme::Dark);
         let mut lab = Lab::new(settings);
         lab.set_frame_budget(Some(crate::lab::INTERACTIVE_FRAME_BUDGET_SECS));
-        let tank = lab.world().tank();
+        let tank = lab.scene().tank();
         Ok(Self {
             camera: OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0),
             camera_is_default: true,
@@ -279,7 +279,7 @@ impl ShoalApp {
     }
 
     fn reset_view(&mut self) {
-        let tank = self.lab.world().tank();
+        let tank = self.lab.scene().tank();
         self.camera = OrbitCamera::framing(tank.min_m, tank.max_m, self.framed_aspect);
         // The learning lab's swimmers are small in a big tank: look at them.
         if let Some(l) = self.lab.runs()[0].learning() {
@@ -606,7 +606,7 @@ impl ShoalApp {
         let Some(run) = self.lab.run(side) else {
             return;
         };
-        let world = run.world();
+        let world = run.scene();
         let tank = *world.tank();
         let current: Vec<Obstacle> = settings
             .tank(side)
@@ -877,11 +877,15 @@ fn draw_vision(
     run: &Run,
     alpha: f32,
 ) {
-    let Some(boids) = run.world().boids() else {
+    let Some(world) = run.scene().boids() else {
+        return;
+    };
+    let Some(boids) = world.boids() else {
         return;
     };
     let perception = boids.perception;
-    let fish = run.world().fish();
+    let fish = world.fish();
+    let drawn = run.drawn_positions_m(alpha);
     let aspect = rect.width() / rect.height().max(1.0);
     let to_screen = |p: Vec3| {
         camera
@@ -895,13 +899,13 @@ fn draw_vision(
     // The neighbours each fish actually heeds this step, as the simulation chose them.
     let mut heeded: Vec<usize> = Vec::new();
     for i in 0..fish.len().min(VISION_OBSERVERS_MAX) {
-        run.world().interaction_neighbours(i, &mut heeded);
-        let Some(a) = to_screen(run.drawn_position_m(i, alpha)) else {
+        world.interaction_neighbours(i, &mut heeded);
+        let Some(a) = to_screen(drawn[i]) else {
             continue;
         };
         for &j in heeded.iter().take(VISION_LINKS_PER_FISH) {
             if j < fish.len()
-                && let Some(b) = to_screen(run.drawn_position_m(j, alpha))
+                && let Some(b) = to_screen(drawn[j])
             {
                 painter.line_segment([a, b], link_stroke);
             }
@@ -910,7 +914,7 @@ fn draw_vision(
     // Fans: the field of view in the plane of the heading and the horizontal side.
     let half = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
     for (i, me) in fish.iter().enumerate().take(VISION_FANS) {
-        let centre = run.drawn_position_m(i, alpha);
+        let centre = drawn[i];
         let forward = me.heading();
         let side = forward.cross(Vec3::Y).normalize_or(Vec3::Z);
         let mut points = Vec::new();

@@ -495,12 +495,7 @@ impl StateReport {
         Self {
             time_secs: run.time_secs(),
             steps: run.steps(),
-            fish_count: match (run.physics(), run.reef(), run.learning()) {
-                (Some(p), _, _) => p.fish_count(),
-                (_, Some(r), _) => r.alive_count(),
-                (_, _, Some(l)) => 1 + l.race_nodes_m().len(),
-                _ => run.world().fish().len(),
-            },
+            fish_count: run.scene().fish_count(),
             tier,
             fps,
             frames: 0,
@@ -605,7 +600,7 @@ mod tests {
             .unwrap_err();
         assert!(err.to_string().contains("speed"), "{err}");
         assert_eq!(lab.settings(), &Settings::default());
-        assert_eq!(lab.world().fish().len(), 200);
+        assert_eq!(lab.boids().unwrap().fish().len(), 200);
     }
 
     #[test]

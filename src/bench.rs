@@ -235,6 +235,6 @@ mod tests {
                 .iter()
                 .all(|r| r.sim_steps_per_sec > 0.0 && r.frame_ms > 0.0)
         );
-        assert_eq!(lab.world().fish().len(), 200);
+        assert_eq!(lab.boids().unwrap().fish().len(), 200);
     }
 }

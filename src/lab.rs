@@ -9,16 +9,13 @@ use glam::Vec3;
 use std::collections::VecDeque;
 
 use crate::clock::{FixedStepClock, RateMeter};
-use crate::metrics_history::{MetricsHistory, MetricsSample, SAMPLE_EVERY_STEPS};
+use crate::metrics_history::{MetricsHistory, MetricsSample};
 use crate::settings::{Scene, Settings, Side};
 use crate::sim::body::{MUSCLE_COUNT, NODE_COUNT};
 use crate::sim::learning::learning_lab::LearningLab;
-use crate::sim::reef_world::{ReefBody, ReefWorld};
+use crate::sim::reef_world::ReefWorld;
+use crate::sim::scene::{SceneWorld, centre};
 use crate::sim::{HandCommand, PhysicsConfig, PhysicsWorld, World, WorldConfig};
-
-/// Physics steps between two metrics samples: 5 × 0.055 s = 0.275 s, about the
-/// boid scenes' 15 × 1/60 s.
-const PHYSICS_SAMPLE_EVERY_STEPS: u64 = 5;
 
 /// Seconds of the selected fish's muscles and speed kept for the plots.
 pub const BODY_TRACE_SECS: f64 = 10.0;
@@ -33,25 +30,19 @@ pub struct BodySample {
     pub muscles: [f32; MUSCLE_COUNT],
 }
 
-/// One tank's run: its world, what is needed to draw it smoothly, and its metrics.
+/// One tank's run: its scene's world, what is needed to draw it smoothly, and its
+/// metrics.
 pub struct Run {
     side: Side,
-    /// The boid world; in the physics scene it holds only the tank and its rocks.
-    world: World,
-    /// The muscle-driven fish of the physics scene.
-    physics: Option<PhysicsWorld>,
-    /// The fish with minds of the reef scene.
-    reef: Option<ReefWorld>,
-    /// The learning lab's training, demo fish and race (kept by the `Lab` while
-    /// another scene is shown, so progress survives a visit elsewhere).
-    learning: Option<LearningLab>,
-    /// Node positions of every physical animal before the last step.
+    scene: SceneWorld,
+    /// Every animal's position before the last step (see
+    /// [`SceneWorld::positions_m`]), for interpolated drawing.
+    previous_positions_m: Vec<Vec3>,
+    /// Every animal's nodes before the last step (see [`SceneWorld::nodes_m`]).
     previous_nodes_m: Vec<[Vec3; NODE_COUNT]>,
     /// The selected physical fish's last seconds, and which fish it is.
     body_trace: VecDeque<BodySample>,
     traced: Option<u32>,
-    /// Fish positions before the last step, for interpolated drawing.
-    previous_positions_m: Vec<Vec3>,
     history: MetricsHistory,
     /// Which rebuild of the lab made this world.
     generation: u64,
@@ -62,155 +53,132 @@ pub struct Run {
 }
 
 impl Run {
-    fn new(side: Side, settings: &Settings, generation: u64) -> Self {
-        let mut world = World::new(world_config(settings, side));
-        world.set_boids(boid_params(settings, side));
-        let physics = (settings.scene == Scene::Physics)
-            .then(|| PhysicsWorld::new(physics_config(settings, world.obstacles())));
-        let reef = (settings.scene == Scene::Reef)
-            .then(|| ReefWorld::new(settings.reef.config(settings.seed)));
-        if let Some(reef) = &reef {
-            // The boid world only holds the tank and the reef's rocks, for drawing.
-            world.set_obstacles(reef.obstacles().to_vec());
-        }
-        if settings.scene == Scene::Learning {
-            // Open water for the learners: no rocks.
-            world.set_obstacles(Vec::new());
-        }
+    /// A run of `settings`' scene for tank `side`; the learning lab takes
+    /// `learning` (kept while another scene was shown) if it fits the settings.
+    fn new(
+        side: Side,
+        settings: &Settings,
+        generation: u64,
+        learning: &mut Option<LearningLab>,
+    ) -> Self {
         let mut run = Self {
             side,
-            world,
-            physics,
-            reef,
-            learning: None,
+            scene: build_scene(settings, side, learning),
+            previous_positions_m: Vec::new(),
             previous_nodes_m: Vec::new(),
             body_trace: VecDeque::new(),
             traced: None,
-            previous_positions_m: Vec::new(),
             history: MetricsHistory::default(),
             generation,
-            obstacles_from_settings: settings.tank(side).obstacles.clone(),
+            obstacles_from_settings: world_config(settings, side).obstacles,
             obstacle_edits: 0,
         };
-        run.snapshot_positions();
-        run.follow_physics(settings);
-        run.follow_reef(settings);
+        run.snapshot();
+        run.follow(settings);
         run.sample_metrics();
         run
     }
 
+    /// The simulated world of this tank.
+    pub fn scene(&self) -> &SceneWorld {
+        &self.scene
+    }
+
+    /// The boid world, in the aquarium and the schooling lab.
+    pub fn boids(&self) -> Option<&World> {
+        self.scene.boids()
+    }
+
     /// The physical fish, in the physics scene.
     pub fn physics(&self) -> Option<&PhysicsWorld> {
-        self.physics.as_ref()
+        self.scene.physics()
     }
 
     /// The fish with minds, in the reef scene.
     pub fn reef(&self) -> Option<&ReefWorld> {
-        self.reef.as_ref()
+        self.scene.reef()
     }
 
     /// The learning lab, in its scene.
     pub fn learning(&self) -> Option<&LearningLab> {
-        self.learning.as_ref()
-    }
-
-    /// The muscle bodies of the learning scene (the demo fish, then the racing
-    /// sharks) now, tank frame.
-    fn learning_nodes(&self) -> Vec<[Vec3; NODE_COUNT]> {
-        self.learning.as_ref().map_or_else(Vec::new, |l| {
-            std::iter::once(l.demo_nodes_m())
-                .chain(l.race_nodes_m().into_iter().map(|(_, n)| n))
-                .collect()
-        })
+        self.scene.learning()
     }
 
     /// Simulated seconds since the run began.
     pub fn time_secs(&self) -> f64 {
-        if self.learning.is_some() {
-            return self.steps() as f64 * step_secs(Scene::Learning);
-        }
-        match (&self.physics, &self.reef) {
-            (Some(physics), _) => physics.time_secs(),
-            (_, Some(reef)) => reef.time_secs(),
-            _ => self.world.time_secs(),
-        }
+        self.scene.time_secs()
     }
 
     /// Steps since the run began.
     pub fn steps(&self) -> u64 {
-        if let Some(l) = &self.learning {
-            return l.demo_steps();
-        }
-        match (&self.physics, &self.reef) {
-            (Some(physics), _) => physics.steps(),
-            (_, Some(reef)) => reef.steps(),
-            _ => self.world.steps(),
-        }
+        self.scene.steps()
     }
 
-    /// Animals in the tank: fish (boids, physical or with minds; eaten ones
-    /// not counted), sharks and stingrays.
+    /// Animals in the tank (eaten ones not counted).
     pub fn animal_count(&self) -> usize {
-        match (&self.physics, &self.reef) {
-            (Some(physics), _) => physics.animals().len(),
-            (_, Some(reef)) => reef.alive_count(),
-            _ => self.world.fish().len() + self.world.sharks().len() + self.world.stingrays().len(),
-        }
+        self.scene.animal_count()
     }
 
-    /// The nodes of muscle-driven animal `index` (physics scene, or a reef
-    /// animal with the muscle body).
-    fn nodes_now(&self, index: usize) -> Option<[Vec3; NODE_COUNT]> {
-        if self.learning.is_some() {
-            return self.learning_nodes().get(index).copied();
+    /// Where every animal's nodes should be drawn, by index: `alpha` of the way
+    /// from their previous to their current positions (tank frame, metres; see
+    /// [`SceneWorld::nodes_m`]).
+    pub fn drawn_nodes_all_m(&self, alpha: f32) -> Vec<[Vec3; NODE_COUNT]> {
+        let mut now = Vec::new();
+        self.scene.nodes_m(&mut now);
+        for (i, current) in now.iter_mut().enumerate() {
+            if let Some(previous) = self.previous_nodes_m.get(i) {
+                *current = std::array::from_fn(|k| previous[k].lerp(current[k], alpha));
+            }
         }
-        if let Some(physics) = &self.physics {
-            return physics.animals().get(index).map(|a| a.nodes_m());
-        }
-        match self.reef.as_ref()?.animals().get(index).map(|a| &a.body) {
-            Some(ReefBody::Physical(p)) => Some(p.nodes_m()),
-            _ => None,
-        }
+        now
     }
 
-    /// Where physical animal `index`'s nodes should be drawn: `alpha` of the way
-    /// from their previous to their current positions (tank frame, metres).
+    /// Where animal `index`'s nodes should be drawn (see
+    /// [`Self::drawn_nodes_all_m`]; for one animal, not in a loop).
     pub fn drawn_nodes_m(&self, index: usize, alpha: f32) -> [Vec3; NODE_COUNT] {
-        let Some(current) = self.nodes_now(index) else {
-            return [Vec3::ZERO; NODE_COUNT];
-        };
-        match self.previous_nodes_m.get(index) {
-            Some(previous) => std::array::from_fn(|k| previous[k].lerp(current[k], alpha)),
-            None => current,
-        }
+        self.drawn_nodes_all_m(alpha)
+            .get(index)
+            .copied()
+            .unwrap_or([Vec3::ZERO; NODE_COUNT])
     }
 
-    /// Every animal that can be selected (physics scene; living reef animals):
-    /// index, drawn centre (`alpha` of the way from the last step) and body
-    /// length.
-    pub fn selectable_animals(&self, alpha: f32) -> Vec<(usize, Vec3, f32)> {
-        let centre = |nodes: [Vec3; NODE_COUNT]| nodes.iter().sum::<Vec3>() / NODE_COUNT as f32;
-        if let Some(physics) = &self.physics {
-            return physics
-                .animals()
-                .iter()
-                .enumerate()
-                .map(|(i, a)| (i, centre(self.drawn_nodes_m(i, alpha)), a.body_length_m()))
-                .collect();
+    /// Where every animal should be drawn, by index: `alpha` of the way from
+    /// its previous to its current position (see [`SceneWorld::positions_m`]).
+    pub fn drawn_positions_m(&self, alpha: f32) -> Vec<Vec3> {
+        let mut now = Vec::new();
+        self.scene.positions_m(&mut now);
+        for (i, current) in now.iter_mut().enumerate() {
+            if let Some(previous) = self.previous_positions_m.get(i) {
+                *current = previous.lerp(*current, alpha);
+            }
         }
-        let Some(reef) = &self.reef else {
-            return Vec::new();
-        };
-        reef.animals()
-            .iter()
-            .enumerate()
-            .filter(|(_, a)| a.alive)
-            .map(|(i, a)| {
-                let c = match &a.body {
-                    ReefBody::Physical(_) => centre(self.drawn_nodes_m(i, alpha)),
-                    ReefBody::Point(_) => self.drawn_reef_m(i, alpha),
+        now
+    }
+
+    /// Where animal `index` should be drawn (see [`Self::drawn_positions_m`];
+    /// for one animal, not in a loop).
+    pub fn drawn_position_m(&self, index: usize, alpha: f32) -> Vec3 {
+        self.drawn_positions_m(alpha)
+            .get(index)
+            .copied()
+            .unwrap_or(Vec3::ZERO)
+    }
+
+    /// Every animal that can be selected: index, drawn centre (`alpha` of the
+    /// way from the last step) and body length.
+    pub fn selectable_animals(&self, alpha: f32) -> Vec<(usize, Vec3, f32)> {
+        let positions = self.drawn_positions_m(alpha);
+        let nodes = self.drawn_nodes_all_m(alpha);
+        self.scene
+            .pickable()
+            .into_iter()
+            .map(|(i, length)| {
+                let c = if self.scene.has_body(i) {
+                    centre(&nodes[i])
+                } else {
+                    positions[i]
                 };
-                (i, c, a.body.body_length_m())
+                (i, c, length)
             })
             .collect()
     }
@@ -223,10 +191,6 @@ impl Run {
 
     pub fn side(&self) -> Side {
         self.side
-    }
-
-    pub fn world(&self) -> &World {
-        &self.world
     }
 
     /// Changes whenever the world is rebuilt (new seed, scene or reset) or its
@@ -246,62 +210,24 @@ impl Run {
     }
 
     fn step(&mut self, snapshot: bool) {
-        if self.learning.is_some() {
-            if snapshot {
-                self.previous_nodes_m = self.learning_nodes();
-            }
-            if let Some(learning) = &mut self.learning {
-                learning.step();
-            }
-            return;
-        }
-        if let Some(reef) = &mut self.reef {
-            if snapshot {
-                self.previous_nodes_m.clear();
-                self.previous_positions_m.clear();
-                for a in reef.animals() {
-                    self.previous_positions_m.push(a.body.position_m());
-                    if let ReefBody::Physical(p) = &a.body {
-                        self.previous_nodes_m.push(p.nodes_m());
-                    } else {
-                        self.previous_nodes_m
-                            .push([a.body.position_m(); NODE_COUNT]);
-                    }
-                }
-            }
-            reef.step();
-            if let Some(ReefBody::Physical(p)) = self
-                .traced
-                .and_then(|i| reef.animals().get(i as usize))
-                .map(|a| &a.body)
-            {
-                push_trace(&mut self.body_trace, sample_of(p, reef.time_secs()));
-            }
-            if reef.steps().is_multiple_of(PHYSICS_SAMPLE_EVERY_STEPS) {
-                self.sample_metrics();
-            }
-            return;
-        }
-        if let Some(physics) = &mut self.physics {
-            if snapshot {
-                self.previous_nodes_m.clear();
-                self.previous_nodes_m
-                    .extend(physics.animals().iter().map(|a| a.nodes_m()));
-            }
-            physics.step();
-            if let Some(animal) = self.traced.and_then(|i| physics.animals().get(i as usize)) {
-                push_trace(&mut self.body_trace, sample_of(animal, physics.time_secs()));
-            }
-            if physics.steps().is_multiple_of(PHYSICS_SAMPLE_EVERY_STEPS) {
-                self.sample_metrics();
-            }
-            return;
-        }
         if snapshot {
-            self.snapshot_positions();
+            self.snapshot();
         }
-        self.world.step();
-        if self.world.steps().is_multiple_of(SAMPLE_EVERY_STEPS) {
+        self.scene.step();
+        if let Some(fish) = self
+            .traced
+            .and_then(|i| self.scene.physical_fish(i as usize))
+        {
+            push_trace(
+                &mut self.body_trace,
+                sample_of(fish, self.scene.time_secs()),
+            );
+        }
+        if self
+            .scene
+            .steps()
+            .is_multiple_of(self.scene.sample_every_steps())
+        {
             self.sample_metrics();
         }
     }
@@ -309,97 +235,31 @@ impl Run {
     /// Records the world's latest metrics (computed by the simulation every step).
     /// Force shares are over the last second, so a mode switch shows at once.
     fn sample_metrics(&mut self) {
-        if let Some(reef) = &self.reef {
-            self.history.push(MetricsSample::new(
-                reef.time_secs(),
-                &reef.school_metrics(),
-                [0.0; 5],
-                u64::from(reef.counts().prey_eaten),
-            ));
+        let Some(m) = self.scene.metrics() else {
             return;
-        }
-        if let Some(physics) = &self.physics {
-            self.history.push(MetricsSample::new(
-                physics.time_secs(),
-                &physics.school_metrics(),
-                [0.0; 5],
-                0,
-            ));
-            return;
-        }
-        let metrics = self.world.metrics();
-        let force_frequencies = if self.world.boids().is_some() {
-            metrics.force_frequencies_recent
-        } else {
-            [0.0; 5]
         };
         self.history.push(MetricsSample::new(
-            self.world.time_secs(),
-            &metrics.school,
-            force_frequencies,
-            metrics.catches,
+            m.time_secs,
+            &m.school,
+            m.force_frequencies,
+            m.catches,
         ));
     }
 
-    /// Remembers where every animal is (fish, then sharks, then stingrays).
-    fn snapshot_positions(&mut self) {
-        self.previous_positions_m.clear();
-        let world = &self.world;
-        self.previous_positions_m.extend(
-            world
-                .fish()
-                .iter()
-                .chain(world.sharks().iter().map(|s| &s.body))
-                .chain(world.stingrays().iter().map(|r| &r.body))
-                .map(|f| f.position_m),
-        );
-    }
-
-    fn interpolated(&self, slot: usize, current: Vec3, alpha: f32) -> Vec3 {
-        match self.previous_positions_m.get(slot) {
-            Some(previous) => previous.lerp(current, alpha),
-            None => current,
-        }
-    }
-
-    /// Where fish `index` should be drawn: `alpha` of the way from its previous to
-    /// its current simulated position.
-    pub fn drawn_position_m(&self, index: usize, alpha: f32) -> Vec3 {
-        self.interpolated(index, self.world.fish()[index].position_m, alpha)
-    }
-
-    /// Where reef animal `index`'s centre should be drawn (see
-    /// [`Self::drawn_position_m`]).
-    pub fn drawn_reef_m(&self, index: usize, alpha: f32) -> Vec3 {
-        match self.reef.as_ref().and_then(|r| r.animals().get(index)) {
-            Some(a) => self.interpolated(index, a.body.position_m(), alpha),
-            None => Vec3::ZERO,
-        }
-    }
-
-    /// Where shark `index` should be drawn (see [`Self::drawn_position_m`]).
-    pub fn drawn_shark_m(&self, index: usize, alpha: f32) -> Vec3 {
-        let slot = self.world.fish().len() + index;
-        self.interpolated(slot, self.world.sharks()[index].body.position_m, alpha)
-    }
-
-    /// Where stingray `index` should be drawn (see [`Self::drawn_position_m`]).
-    pub fn drawn_stingray_m(&self, index: usize, alpha: f32) -> Vec3 {
-        let slot = self.world.fish().len() + self.world.sharks().len() + index;
-        self.interpolated(slot, self.world.stingrays()[index].body.position_m, alpha)
+    /// Remembers where every animal is, for interpolated drawing.
+    fn snapshot(&mut self) {
+        self.scene.positions_m(&mut self.previous_positions_m);
+        self.scene.nodes_m(&mut self.previous_nodes_m);
     }
 
     /// Follows the physics scene's settings: counts, behaviour, current, the
-    /// selected fish's hand command and its trace.
-    fn follow_physics(&mut self, settings: &Settings) {
-        let Some(physics) = &mut self.physics else {
-            return;
-        };
+    /// selected fish's hand command.
+    fn follow_physics(physics: &mut PhysicsWorld, settings: &Settings) -> bool {
         let wanted = &settings.physics;
         let counts = (wanted.fish_count as usize, wanted.sharks as usize);
-        if counts != (physics.fish_count(), physics.shark_count()) {
+        let recount = counts != (physics.fish_count(), physics.shark_count());
+        if recount {
             physics.set_counts(counts.0, counts.1);
-            self.previous_nodes_m.clear();
         }
         if physics.behaviour() != wanted.behaviour {
             physics.set_behaviour(wanted.behaviour);
@@ -417,24 +277,18 @@ impl Run {
             )
         });
         physics.set_hand_command(hand);
-        if self.traced != wanted.selected {
-            self.traced = wanted.selected;
-            self.body_trace.clear();
-        }
+        recount
     }
 
     /// Starts a turn of `angle_deg` (+ left) on physical animal `index`.
     fn turn(&mut self, index: usize, angle_deg: f32) {
-        if let Some(physics) = &mut self.physics {
+        if let SceneWorld::Physics(physics) = &mut self.scene {
             physics.turn(index, angle_deg);
         }
     }
 
-    /// Follows the reef scene's live settings (water) and the selected fish.
-    fn follow_reef(&mut self, settings: &Settings) {
-        let Some(reef) = &mut self.reef else {
-            return;
-        };
+    /// Follows the reef scene's live settings (water, minds).
+    fn follow_reef(reef: &mut ReefWorld, settings: &Settings) {
         let wanted = &settings.reef;
         if reef.config().visibility_m != wanted.visibility_m {
             reef.set_visibility(wanted.visibility_m);
@@ -445,62 +299,100 @@ impl Run {
         if reef.config().traits != wanted.traits {
             reef.set_traits(wanted.traits);
         }
-        if self.traced != wanted.selected {
-            self.traced = wanted.selected;
-            self.body_trace.clear();
+    }
+
+    /// Follows the schooling lab's settings for this tank: counts, boid layer,
+    /// species and obstacles. Returns whether animals came or went.
+    fn follow_boids(&mut self, settings: &Settings) -> bool {
+        let SceneWorld::Boids(world) = &mut self.scene else {
+            return false;
+        };
+        let mut recount = false;
+        let tank = settings.tank(self.side);
+        let fish_count = tank.fish_count as usize;
+        if fish_count != world.fish().len() {
+            world.set_fish_count(fish_count);
+            recount = true;
         }
+        let boids = boid_params(settings, self.side);
+        if world.boids() != boids.as_ref() {
+            world.set_boids(boids);
+        }
+        let config = world_config(settings, self.side);
+        if (config.sharks, config.stingrays) != (world.sharks().len(), world.stingrays().len()) {
+            world.set_species_counts(config.sharks, config.stingrays);
+            recount = true;
+        }
+        if config.obstacles.as_ref() != self.obstacles_from_settings.as_ref() {
+            world.set_obstacles(match &config.obstacles {
+                Some(obstacles) => obstacles.clone(),
+                // Back to the seed's layout.
+                None => World::seeded_obstacles(config.seed),
+            });
+            self.obstacles_from_settings = config.obstacles;
+            self.obstacle_edits += 1;
+        }
+        recount
     }
 
     /// Follows new settings for this tank without restarting where possible.
     fn follow(&mut self, settings: &Settings) {
-        if self.learning.is_some() {
-            // The lab applies the learning settings itself; the boid world
-            // stays empty open water.
-            return;
-        }
-        if self.reef.is_some() {
-            self.follow_reef(settings);
-            return;
-        }
-        if self.physics.is_some() {
-            self.follow_physics(settings);
-            return;
-        }
-        let tank = settings.tank(self.side);
-        let fish_count = tank.fish_count as usize;
-        if fish_count != self.world.fish().len() {
-            self.world.set_fish_count(fish_count);
-            self.snapshot_positions();
-        }
-        let boids = boid_params(settings, self.side);
-        if self.world.boids() != boids.as_ref() {
-            self.world.set_boids(boids);
-        }
-        let config = world_config(settings, self.side);
-        if (config.sharks, config.stingrays)
-            != (self.world.sharks().len(), self.world.stingrays().len())
-        {
-            self.world
-                .set_species_counts(config.sharks, config.stingrays);
-            self.snapshot_positions();
-        }
-        if config.obstacles.as_ref() != self.obstacles_from_settings.as_ref() {
-            match &config.obstacles {
-                Some(obstacles) => self.world.set_obstacles(obstacles.clone()),
-                // Back to the seed's layout: the obstacles are placed first from
-                // the seed, so an empty world of the same seed has the same ones.
-                None => {
-                    let seeded = World::new(WorldConfig {
-                        fish_count: 0,
-                        sharks: 0,
-                        stingrays: 0,
-                        ..config.clone()
-                    });
-                    self.world.set_obstacles(seeded.obstacles().to_vec());
-                }
+        let (recount, selected) = match &mut self.scene {
+            SceneWorld::Boids(_) => (self.follow_boids(settings), None),
+            SceneWorld::Physics(physics) => (
+                Self::follow_physics(physics, settings),
+                settings.physics.selected,
+            ),
+            SceneWorld::Reef(reef) => {
+                Self::follow_reef(reef, settings);
+                (false, settings.reef.selected)
             }
-            self.obstacles_from_settings = config.obstacles;
-            self.obstacle_edits += 1;
+            // The lab applies the learning settings itself.
+            SceneWorld::Learning(_) => (false, None),
+        };
+        if recount {
+            self.snapshot();
+        }
+        if self.traced != selected {
+            self.traced = selected;
+            self.body_trace.clear();
+        }
+    }
+}
+
+/// The world of `settings`' scene for tank `side`.
+fn build_scene(settings: &Settings, side: Side, learning: &mut Option<LearningLab>) -> SceneWorld {
+    match settings.scene {
+        Scene::Aquarium | Scene::Boids => {
+            let mut world = World::new(world_config(settings, side));
+            world.set_boids(boid_params(settings, side));
+            SceneWorld::Boids(Box::new(world))
+        }
+        Scene::Physics => SceneWorld::Physics(PhysicsWorld::new(physics_config(settings))),
+        Scene::Reef => SceneWorld::Reef(ReefWorld::new(settings.reef.config(settings.seed))),
+        Scene::Learning => {
+            let wanted = &settings.learning;
+            // The lab kept while another scene was shown, if it is the same
+            // training.
+            let kept = learning.take().filter(|l| {
+                l.species() == wanted.species
+                    && l.annealing_steps() == u64::from(wanted.annealing_steps)
+                    && l.seed() == settings.seed
+            });
+            let mut learning = kept.unwrap_or_else(|| {
+                // Open water for the learners: no rocks.
+                LearningLab::new(
+                    wanted.species,
+                    u64::from(wanted.annealing_steps),
+                    settings.seed,
+                    wanted.controller,
+                    &crate::sim::Tank::default(),
+                )
+            });
+            if learning.controller() != wanted.controller {
+                learning.set_controller(wanted.controller);
+            }
+            SceneWorld::Learning(Box::new(learning))
         }
     }
 }
@@ -558,10 +450,9 @@ impl Lab {
     pub fn new(settings: Settings) -> Self {
         let mut settings = settings;
         settings.clamp();
-        let scene = settings.scene;
         let mut lab = Self {
             settings,
-            clock: FixedStepClock::new(step_secs(scene)),
+            clock: FixedStepClock::new(f64::from(World::DT_SECS)),
             runs: Vec::new(),
             steps_meter: RateMeter::default(),
             rebuilds: 0,
@@ -579,8 +470,23 @@ impl Lab {
     }
 
     /// The left (or only) tank's world.
-    pub fn world(&self) -> &World {
-        &self.runs[0].world
+    pub fn scene(&self) -> &SceneWorld {
+        &self.runs[0].scene
+    }
+
+    /// The left (or only) tank's boid world, in the aquarium and the schooling
+    /// lab.
+    pub fn boids(&self) -> Option<&World> {
+        self.runs[0].boids()
+    }
+
+    /// The left (or only) tank's learning lab, for the app's actions (race,
+    /// save, load) and training.
+    pub fn learning_mut(&mut self) -> Option<&mut LearningLab> {
+        match &mut self.runs[0].scene {
+            SceneWorld::Learning(l) => Some(l),
+            _ => None,
+        }
     }
 
     /// The tanks shown: one, or two while comparing.
@@ -613,11 +519,11 @@ impl Lab {
         new.settle(&self.settings);
         new.clamp();
         let before = std::mem::replace(&mut self.settings, new);
-        if self.settings.scene == Scene::Learning
-            && before.learning.controller != self.settings.learning.controller
-            && let Some(l) = self.runs[0].learning.as_mut()
+        let controller = self.settings.learning.controller;
+        if before.learning.controller != controller
+            && let Some(l) = self.learning_mut()
         {
-            l.set_controller(self.settings.learning.controller);
+            l.set_controller(controller);
         }
         let rebuild = before.seed != self.settings.seed
             || before.scene != self.settings.scene
@@ -643,47 +549,31 @@ impl Lab {
     }
 
     fn rebuild(&mut self) {
-        if let Some(l) = self.runs.first_mut().and_then(|r| r.learning.take()) {
-            self.parked_learning = Some(l);
+        let mut learning = self.parked_learning.take();
+        for run in std::mem::take(&mut self.runs) {
+            if let SceneWorld::Learning(l) = run.scene {
+                learning = Some(*l);
+            }
         }
-        let max_steps = self.clock.max_steps_per_frame;
-        self.clock = FixedStepClock::new(step_secs(self.settings.scene));
-        self.clock.max_steps_per_frame = max_steps;
-        self.step_cost_secs = 0.0;
         self.runs = Side::BOTH[..self.wanted_runs()]
             .iter()
             .map(|&side| {
                 self.rebuilds += 1;
-                Run::new(side, &self.settings, self.rebuilds)
+                Run::new(side, &self.settings, self.rebuilds, &mut learning)
             })
             .collect();
-        if self.settings.scene == Scene::Learning {
-            let wanted = &self.settings.learning;
-            let keep = self.parked_learning.take().filter(|l| {
-                l.species() == wanted.species
-                    && l.annealing_steps() == u64::from(wanted.annealing_steps)
-                    && l.seed() == self.settings.seed
-            });
-            let mut learning = keep.unwrap_or_else(|| {
-                LearningLab::new(
-                    wanted.species,
-                    u64::from(wanted.annealing_steps),
-                    self.settings.seed,
-                    wanted.controller,
-                    self.runs[0].world.tank(),
-                )
-            });
-            if learning.controller() != wanted.controller {
-                learning.set_controller(wanted.controller);
-            }
-            self.runs[0].learning = Some(learning);
-        }
+        // A learning lab the scene did not take waits for the next visit.
+        self.parked_learning = learning;
+        let max_steps = self.clock.max_steps_per_frame;
+        self.clock = FixedStepClock::new(self.runs[0].scene.dt_secs());
+        self.clock.max_steps_per_frame = max_steps;
+        self.step_cost_secs = 0.0;
         self.clock.clear();
     }
 
     /// Runs `n` annealing evaluations of the learning lab now (`shoal.train(n)`).
     pub fn train(&mut self, n: u32) -> Result<u32, String> {
-        let Some(l) = self.runs[0].learning.as_mut() else {
+        let Some(l) = self.learning_mut() else {
             return Err("train() works in the learning lab only".to_owned());
         };
         Ok(l.train(n as usize) as u32)
@@ -693,14 +583,9 @@ impl Lab {
     pub fn reset_training(&mut self) {
         if self.settings.scene == Scene::Learning {
             self.parked_learning = None;
-            self.runs[0].learning = None;
+            self.runs.clear();
             self.rebuild();
         }
-    }
-
-    /// The learning lab, for the app's actions (race, save, load).
-    pub fn learning_mut(&mut self) -> Option<&mut LearningLab> {
-        self.runs[0].learning.as_mut()
     }
 
     /// Trains for a share of the frame budget while `learning.training` is on,
@@ -718,7 +603,7 @@ impl Lab {
         } else {
             1
         };
-        let Some(l) = self.runs[0].learning.as_mut() else {
+        let Some(l) = self.learning_mut() else {
             return;
         };
         let started = web_time::Instant::now();
@@ -803,7 +688,7 @@ impl Lab {
 
     /// Length of one simulation step of the current scene, seconds.
     pub fn step_secs(&self) -> f64 {
-        step_secs(self.settings.scene)
+        self.runs[0].scene.dt_secs()
     }
 
     /// Runs exactly `n` steps now, paused or not (single step, `shoal.step(n)`).
@@ -853,19 +738,7 @@ impl Lab {
     }
 }
 
-/// Length of one simulation step, seconds: the fish world's 0.055 s
-/// (`sim::paper_time::FISH_STEP_SECS`) for physical fish, the reef and the
-/// learning lab, 1/60 s for boids.
-fn step_secs(scene: Scene) -> f64 {
-    match scene {
-        Scene::Physics => f64::from(crate::sim::body::BodyParams::default().dt_secs),
-        Scene::Reef => f64::from(crate::sim::reef_world::POINT_BODY_DT_SECS),
-        Scene::Learning => f64::from(crate::sim::body::BodyParams::default().dt_secs),
-        Scene::Aquarium | Scene::Boids => f64::from(World::DT_SECS),
-    }
-}
-
-fn physics_config(settings: &Settings, obstacles: &[crate::sim::Obstacle]) -> PhysicsConfig {
+fn physics_config(settings: &Settings) -> PhysicsConfig {
     let physics = &settings.physics;
     PhysicsConfig {
         seed: settings.seed,
@@ -873,7 +746,8 @@ fn physics_config(settings: &Settings, obstacles: &[crate::sim::Obstacle]) -> Ph
         sharks: physics.sharks as usize,
         behaviour: physics.behaviour,
         current_m_per_s: physics.current_m_per_s,
-        obstacles: obstacles.to_vec(),
+        // The seed's rocks, as the schooling lab's tank has them.
+        obstacles: World::seeded_obstacles(settings.seed),
     }
 }
 
@@ -882,7 +756,7 @@ fn world_config(settings: &Settings, side: Side) -> WorldConfig {
     let boids = settings.scene == Scene::Boids;
     WorldConfig {
         seed: settings.seed,
-        // In the other scenes the boid world only holds the tank and its rocks.
+        // The aquarium and the schooling lab (other scenes build no boid world).
         fish_count: if matches!(settings.scene, Scene::Aquarium | Scene::Boids) {
             tank.fish_count as usize
         } else {
@@ -903,8 +777,48 @@ fn boid_params(settings: &Settings, side: Side) -> Option<crate::sim::BoidParams
 mod tests {
     use super::*;
 
+    #[test]
+    fn every_scene_draws_its_animals_between_their_last_two_states() {
+        for scene in Scene::ALL {
+            let mut settings = Settings {
+                scene,
+                ..Settings::default()
+            };
+            settings.left.sharks = 1;
+            settings.left.stingrays = 1;
+            let mut lab = Lab::new(settings);
+            lab.step(3);
+            let run = &lab.runs()[0];
+            let (mut before, mut now) = (Vec::new(), Vec::new());
+            run.scene().positions_m(&mut now);
+            before.clone_from(&run.previous_positions_m);
+            assert_eq!(now.len(), run.scene().animal_count(), "{scene:?}");
+            assert!(now != before, "{scene:?}: nobody moved");
+            assert_eq!(run.drawn_positions_m(0.0), before, "{scene:?}");
+            assert_eq!(run.drawn_positions_m(1.0), now, "{scene:?}");
+            let half = run.drawn_positions_m(0.5);
+            for (k, p) in half.iter().enumerate() {
+                assert!(p.distance(before[k].lerp(now[k], 0.5)) < 1e-5, "{scene:?}");
+            }
+            // Muscle bodies draw their nodes the same way.
+            let (mut nodes_before, mut nodes_now) = (Vec::new(), Vec::new());
+            run.scene().nodes_m(&mut nodes_now);
+            nodes_before.clone_from(&run.previous_nodes_m);
+            assert_eq!(run.drawn_nodes_all_m(0.0), nodes_before, "{scene:?}");
+            assert_eq!(run.drawn_nodes_all_m(1.0), nodes_now, "{scene:?}");
+            let bodies = run.scene().bodies_to_draw();
+            let muscles = matches!(scene, Scene::Physics | Scene::Reef | Scene::Learning);
+            assert_eq!(!bodies.is_empty(), muscles, "{scene:?}");
+        }
+    }
+
     fn positions(lab: &Lab) -> Vec<Vec3> {
-        lab.world().fish().iter().map(|f| f.position_m).collect()
+        lab.boids()
+            .unwrap()
+            .fish()
+            .iter()
+            .map(|f| f.position_m)
+            .collect()
     }
 
     #[test]
@@ -914,9 +828,9 @@ mod tests {
             ..Settings::default()
         });
         assert_eq!(lab.advance_frame(0.1, 0.1), 0);
-        assert_eq!(lab.world().steps(), 0);
+        assert_eq!(lab.boids().unwrap().steps(), 0);
         lab.step(3);
-        assert_eq!(lab.world().steps(), 3);
+        assert_eq!(lab.boids().unwrap().steps(), 3);
     }
 
     #[test]
@@ -930,7 +844,7 @@ mod tests {
             seed: 99,
             ..b.settings().clone()
         });
-        assert_eq!(b.world().steps(), 0, "a new seed starts a new run");
+        assert_eq!(b.boids().unwrap().steps(), 0, "a new seed starts a new run");
         b.step(120);
         assert_ne!(positions(&a), positions(&b));
         b.reset(Some(1));
@@ -945,8 +859,8 @@ mod tests {
         let mut settings = lab.settings().clone();
         settings.left.fish_count = 37;
         lab.apply_settings(settings);
-        assert_eq!(lab.world().fish().len(), 37);
-        assert_eq!(lab.world().steps(), 10);
+        assert_eq!(lab.boids().unwrap().fish().len(), 37);
+        assert_eq!(lab.boids().unwrap().steps(), 10);
     }
 
     #[test]
@@ -965,14 +879,14 @@ mod tests {
             fast.advance_frame(1.0 / 60.0, now);
         }
         assert!(
-            (14..=15).contains(&slow.world().steps()),
+            (14..=15).contains(&slow.boids().unwrap().steps()),
             "{}",
-            slow.world().steps()
+            slow.boids().unwrap().steps()
         );
         assert!(
-            (479..=480).contains(&fast.world().steps()),
+            (479..=480).contains(&fast.boids().unwrap().steps()),
             "{}",
-            fast.world().steps()
+            fast.boids().unwrap().steps()
         );
     }
 
@@ -982,7 +896,7 @@ mod tests {
         lab.advance_frame(1.5 / 60.0, 0.0);
         let alpha = lab.clock.alpha();
         assert!(alpha > 0.0 && alpha < 1.0);
-        for (i, fish) in lab.world().fish().iter().enumerate() {
+        for (i, fish) in lab.boids().unwrap().fish().iter().enumerate() {
             let drawn = lab.drawn_position_m(i);
             let previous = lab.runs[0].previous_positions_m[i];
             let total = previous.distance(fish.position_m);
@@ -1006,12 +920,9 @@ mod tests {
         let mut lab = physics_lab();
         let run = &lab.runs()[0];
         assert_eq!(run.physics().unwrap().animals().len(), 5);
+        assert!(lab.boids().is_none(), "no boids in the physics tank");
         assert!(
-            lab.world().fish().is_empty(),
-            "no boids in the physics tank"
-        );
-        assert!(
-            !lab.world().obstacles().is_empty(),
+            !lab.scene().obstacles().is_empty(),
             "the seed's rocks are there"
         );
         lab.advance_frame(0.2, 0.2);
@@ -1055,7 +966,7 @@ mod tests {
         let reef = lab.runs()[0].reef().expect("a reef");
         assert_eq!(reef.config().scene, ReefScene::Reef);
         assert_eq!(
-            lab.world().obstacles(),
+            lab.scene().obstacles(),
             reef.obstacles(),
             "the reef's rocks are drawn"
         );
@@ -1117,7 +1028,7 @@ mod tests {
         };
         settings.learning.annealing_steps = 90;
         let mut lab = Lab::new(settings);
-        assert!(lab.world().fish().is_empty() && lab.world().obstacles().is_empty());
+        assert!(lab.boids().is_none() && lab.scene().obstacles().is_empty());
         assert_eq!(lab.train(30), Ok(30));
         lab.step(10);
         assert_eq!(lab.runs()[0].steps(), 10, "the swimmer swims");
@@ -1153,7 +1064,7 @@ mod tests {
         s.speed = 2.0;
         s.left.fish_count = 500;
         lab.apply_settings(s);
-        assert!(lab.world().fish().is_empty() && lab.world().obstacles().is_empty());
+        assert!(lab.boids().is_none() && lab.scene().obstacles().is_empty());
         // A different length, or Reset training, starts from a brain-dead fish.
         lab.reset_training();
         assert_eq!(lab.runs()[0].learning().unwrap().trainer().evaluations(), 0);

@@ -13,7 +13,7 @@ use crate::sim::SchoolMetrics;
 
 /// Steps between two samples. Default 15 (a quarter of a simulated second): smooth
 /// plots, and five minutes fit in 1,200 samples.
-pub const SAMPLE_EVERY_STEPS: u64 = 15;
+pub const SAMPLE_EVERY_STEPS: u64 = crate::sim::scene::BOID_SAMPLE_EVERY_STEPS;
 
 /// How much simulated time the history keeps, in seconds. Default 300 s: "the last
 /// minutes" of a lesson, long enough to see a school form and break.

@@ -97,8 +97,7 @@ fn fingerprint(lab: &Lab) -> u64 {
             }
             h.u64(learning.annealing_steps());
             h.f32(learning.progress());
-        } else {
-            let world = run.world();
+        } else if let Some(world) = run.boids() {
             for f in world.fish() {
                 h.vec3(f.position_m);
                 h.vec3(f.velocity_m_per_s);

@@ -9,7 +9,9 @@ use shoal::settings::Settings;
 
 fn assert_sound(lab: &Lab) {
     for run in lab.runs() {
-        assert_world_sound(run.world());
+        if let Some(world) = run.boids() {
+            assert_world_sound(world);
+        }
         let metrics = run.metrics();
         assert!(
             metrics.polarization.is_finite()
@@ -57,7 +59,7 @@ fn a_scripted_lesson_is_reproducible_to_the_bit() {
         }
         lab.runs()
             .iter()
-            .flat_map(|run| run.world().fish().iter())
+            .flat_map(|run| run.boids().unwrap().fish().iter())
             .map(|f| (f.position_m, f.velocity_m_per_s))
             .collect::<Vec<_>>()
     };
@@ -120,8 +122,8 @@ fn compare_mode_starts_both_tanks_from_the_same_fish_and_they_part_ways() {
         panic!("compare mode shows two tanks");
     };
     assert_eq!(
-        left.world().fish(),
-        right.world().fish(),
+        left.boids().unwrap().fish(),
+        right.boids().unwrap().fish(),
         "same seed, same starting positions"
     );
     // A minute: the group school forms within it (docs/boids.md).

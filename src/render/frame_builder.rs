@@ -24,6 +24,7 @@ use crate::lab::Run;
 use crate::sim::BodySpecies;
 use crate::sim::mind::FishKind;
 use crate::sim::reef_world::{ReefBody, ReefWorld};
+use crate::sim::scene::BodyToDraw;
 
 /// Fish drawn shorter than this (physical pixels, snout to tail root) use the
 /// low-poly mesh. Chosen by eye: below about 30 pixels the two meshes are hard to
@@ -81,56 +82,43 @@ fn build_bodies(
 ) {
     out.vertices.clear();
     out.indices.clear();
-    // (index, species, hue) of every living muscle-driven animal.
-    let animals: Vec<(usize, BodySpecies, f32)> = if let Some(physics) = run.physics() {
-        physics
-            .animals()
-            .iter()
-            .enumerate()
-            .map(|(i, a)| (i, a.species, a.hue))
-            .collect()
-    } else if let Some(learning) = run.learning() {
+    let scene = run.scene();
+    if let Some(learning) = scene.learning() {
         mesh::append_particles(
             out,
             &learning.buoys_m(),
             BUOY_DRAWN_RADIUS_M,
             mesh::BUOY_RGB,
         );
-        let species = learning.species();
-        let racers = learning.race_nodes_m().len();
-        std::iter::once((0, species, 0.1))
-            .chain((1..=racers).map(|k| (k, species, 0.55 + 0.05 * k as f32)))
-            .collect()
-    } else if let Some(reef) = run.reef() {
+    }
+    if let Some(reef) = scene.reef() {
         append_reef_scenery(reef, out);
-        reef.animals()
-            .iter()
-            .enumerate()
-            .filter(|(_, a)| a.alive)
-            .filter_map(|(i, a)| match &a.body {
-                ReefBody::Physical(p) => Some((i, p.species, a.hue)),
-                ReefBody::Point(_) => None,
-            })
-            .collect()
-    } else {
+    }
+    let animals = scene.bodies_to_draw();
+    if animals.is_empty() {
         return;
-    };
+    }
     let skins = skins.get_or_insert_with(|| Skins {
         fish: BodySkin::new(BodyShape::Fish),
         shark: BodySkin::new(BodyShape::Shark),
     });
-    for (i, species, hue) in animals {
-        let nodes = run.drawn_nodes_m(i, alpha);
+    let nodes = run.drawn_nodes_all_m(alpha);
+    for BodyToDraw {
+        index,
+        species,
+        hue,
+    } in animals
+    {
         let (skin, look) = match species {
             BodySpecies::Fish => (&skins.fish, BodyLook::fish(livery(hue))),
             BodySpecies::Shark => (&skins.shark, BodyLook::shark(shark_livery(hue))),
         };
-        let look = if selected == Some(i) {
+        let look = if selected == Some(index) {
             look.highlighted(SELECTED_HIGHLIGHT)
         } else {
             look
         };
-        skin.append_deformed(&nodes, &look, out);
+        skin.append_deformed(&nodes[index], &look, out);
     }
 }
 
@@ -179,8 +167,8 @@ impl FrameBuilder {
         time_secs: f32,
         view_id: u32,
     ) -> SceneCallback {
-        let world = run.world();
-        let tank = world.tank();
+        let scene = run.scene();
+        let tank = scene.tank();
         let view = self.views.draw(view_id, BuiltView::default);
         let world_generation = run.generation();
         let statics = match &view.statics {
@@ -189,7 +177,10 @@ impl FrameBuilder {
                 let mut scene = Mesh::default();
                 scene.append(&mesh::sand_floor(tank));
                 scene.append(&mesh::tank_frame(tank));
-                scene.append(&mesh::obstacles(world.obstacles(), world.seed()));
+                scene.append(&mesh::obstacles(
+                    run.scene().obstacles(),
+                    run.scene().seed(),
+                ));
                 let statics = StaticScene {
                     generation: NEXT_STATIC_GENERATION.fetch_add(1, Ordering::Relaxed),
                     mesh: Arc::new(scene),
@@ -201,7 +192,8 @@ impl FrameBuilder {
         };
 
         let eye = camera.eye_m();
-        let detailed = if let Some(reef) = run.reef() {
+        let drawn = run.drawn_positions_m(alpha);
+        let detailed = if let Some(reef) = scene.reef() {
             let (fish, sharks) = (
                 Arc::make_mut(&mut view.fish),
                 Arc::make_mut(&mut view.sharks),
@@ -215,16 +207,15 @@ impl FrameBuilder {
                 if !a.alive {
                     continue;
                 }
-                let position = run.drawn_reef_m(i, alpha);
                 if a.habits.kind == FishKind::Predator {
-                    sharks.push(instance(f, position, shark_livery(a.hue).rgba()));
+                    sharks.push(instance(f, drawn[i], shark_livery(a.hue).rgba()));
                 } else {
-                    fish.push(instance(f, position, livery(a.hue).rgba()));
+                    fish.push(instance(f, drawn[i], livery(a.hue).rgba()));
                 }
             }
             Arc::make_mut(&mut view.rays).clear();
             fish.len()
-        } else {
+        } else if let Some(world) = scene.boids() {
             // Near fish from the front of the list, far ones from the back.
             let focal_px = size_px[1] as f32 / (2.0 * (camera.fov_y_rad * 0.5).tan());
             let lod_below = FISH_LOD_BELOW_PX / focal_px.max(1e-3);
@@ -234,7 +225,7 @@ impl FrameBuilder {
             fish.resize(count, FishInstance::zeroed());
             let (mut near, mut far) = (0, count);
             for (i, f) in world.fish().iter().enumerate() {
-                let position = run.drawn_position_m(i, alpha);
+                let position = drawn[i];
                 let instance = instance(f, position, livery(f.hue).rgba());
                 // Drawn length ≈ focal × length / distance, compared without a root.
                 let length = f.body_length_m;
@@ -255,20 +246,27 @@ impl FrameBuilder {
                 });
                 detailed = MAX_DETAILED_FISH;
             }
+            // Sharks and stingrays follow the fish in the scene's numbering.
             let sharks = Arc::make_mut(&mut view.sharks);
             sharks.clear();
             sharks.extend(world.sharks().iter().enumerate().map(|(i, shark)| {
                 let f = &shark.body;
-                instance(f, run.drawn_shark_m(i, alpha), shark_livery(f.hue).rgba())
+                instance(f, drawn[count + i], shark_livery(f.hue).rgba())
             }));
+            let first_ray = count + world.sharks().len();
             let rays = Arc::make_mut(&mut view.rays);
             rays.clear();
             rays.extend(world.stingrays().iter().enumerate().map(|(i, ray)| {
                 let f = &ray.body;
-                instance(f, run.drawn_stingray_m(i, alpha), ray_livery(f.hue).rgba())
+                instance(f, drawn[first_ray + i], ray_livery(f.hue).rgba())
             }));
-
             detailed
+        } else {
+            // Only skinned bodies (below).
+            for list in [&mut view.fish, &mut view.sharks, &mut view.rays] {
+                Arc::make_mut(list).clear();
+            }
+            0
         };
 
         build_bodies(
@@ -321,13 +319,13 @@ mod tests {
     fn one_instance_per_fish_and_statics_rebuilt_only_on_reset() {
         let mut lab = Lab::new(Settings::default());
         let camera = OrbitCamera::framing(
-            lab.world().tank().min_m,
-            lab.world().tank().max_m,
+            lab.scene().tank().min_m,
+            lab.scene().tank().max_m,
             16.0 / 9.0,
         );
         let mut builder = FrameBuilder::default();
         let first = builder.build(&lab.runs()[0], 1.0, &camera, [800, 450], 0.0, 0);
-        assert_eq!(first.fish.len(), lab.world().fish().len());
+        assert_eq!(first.fish.len(), lab.boids().unwrap().fish().len());
         assert!(
             first
                 .fish
@@ -350,7 +348,7 @@ mod tests {
             seed: 99,
             ..Settings::default()
         });
-        let tank = lab_a.world().tank();
+        let tank = lab_a.scene().tank();
         let camera = OrbitCamera::framing(tank.min_m, tank.max_m, 1.0);
         let mut builder = FrameBuilder::default();
         let a1 = builder.build(&lab_a.runs()[0], 1.0, &camera, [400, 400], 0.0, 0);
@@ -375,7 +373,7 @@ mod tests {
         let mut settings = Settings::default();
         settings.left.fish_count = 2_000;
         let lab = Lab::new(settings);
-        let tank = lab.world().tank();
+        let tank = lab.scene().tank();
         let mut camera = OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0);
         let mut builder = FrameBuilder::default();
         let mut budget_used = false;
@@ -437,7 +435,7 @@ mod tests {
             let mut settings = Settings::default();
             settings.left.fish_count = fish_count;
             let lab = Lab::new(settings);
-            let tank = lab.world().tank();
+            let tank = lab.scene().tank();
             let camera = OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0);
             let mut builder = FrameBuilder::default();
             let mut staging: Vec<u8> = Vec::new();

@@ -246,6 +246,8 @@ pub struct PhysicsWorld {
     current: WaterCurrent,
     hand: Option<(usize, HandCommand)>,
     rng: ChaCha8Rng,
+    /// The seed the tank was built from.
+    seed: u64,
     time_secs: f64,
     steps: u64,
     /// Node moves made by the hard rule (should stay rare).
@@ -273,6 +275,7 @@ impl PhysicsWorld {
             current: WaterCurrent::new(tank, config.current_m_per_s),
             hand: None,
             rng: ChaCha8Rng::seed_from_u64(config.seed ^ 0x5EED_B0D1),
+            seed: config.seed,
             time_secs: 0.0,
             steps: 0,
             constraint_moves: 0,
@@ -287,6 +290,11 @@ impl PhysicsWorld {
 
     pub fn tank(&self) -> &Tank {
         &self.tank
+    }
+
+    /// The seed the tank was built from.
+    pub fn seed(&self) -> u64 {
+        self.seed
     }
 
     pub fn obstacles(&self) -> &[Obstacle] {

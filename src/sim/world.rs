@@ -373,6 +373,12 @@ impl World {
         world
     }
 
+    /// The rocks that a world of `seed` places when no layout is given (they
+    /// are placed first, so the fish counts do not change them).
+    pub fn seeded_obstacles(seed: u64) -> Vec<Obstacle> {
+        place_obstacles(&Tank::default(), &mut ChaCha8Rng::seed_from_u64(seed))
+    }
+
     /// The tank.
     pub fn tank(&self) -> &Tank {
         &self.tank

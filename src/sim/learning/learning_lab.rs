@@ -101,6 +101,8 @@ pub struct LearningLab {
     /// Where the demo's body frame origin sits in the tank (metres).
     origin_m: Vec3,
     demo_steps: u64,
+    /// The open-water tank the demo fish and the race swim in.
+    tank: Tank,
 }
 
 /// The buoys of Fig. 9 in body lengths from the demo fish's start (forward, left):
@@ -143,6 +145,7 @@ impl LearningLab {
             })),
             origin_m,
             demo_steps: 0,
+            tank: *tank,
         };
         lab.rebuild_demo();
         lab
@@ -185,6 +188,15 @@ impl LearningLab {
     }
     pub fn seed(&self) -> u64 {
         self.seed
+    }
+    /// The open-water tank the demo fish and the race swim in.
+    pub fn tank(&self) -> &Tank {
+        &self.tank
+    }
+    /// Length of one step of the demo fish and the race, seconds (the fish
+    /// world's one step).
+    pub fn dt_secs(&self) -> f32 {
+        crate::sim::paper_time::FISH_STEP_SECS
     }
     /// Body steps the demo fish has swum since it (re)started.
     pub fn demo_steps(&self) -> u64 {

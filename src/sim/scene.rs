@@ -1,0 +1,368 @@
+//! One interface over the four simulated scenes: the boid tank (the aquarium and
+//! the schooling lab), the physics fish tank, the reef and the learning lab.
+//!
+//! Everything outside `sim/` that needs "the world of this tank" (the lab's runs,
+//! the renderer, the automation API, the benchmarks) holds one [`SceneWorld`] and
+//! asks it; the dispatch over the scenes lives here, one `match` per method, and
+//! nowhere else. A scene that wants to be drawn, stepped, measured and picked
+//! implements the methods below; `ARCHITECTURE.md` ("Add a scene") lists the rest
+//! of a new scene's files.
+//!
+//! Animals are numbered per scene (the index every method and the UI use):
+//! - boids: the fish, then the sharks, then the stingrays;
+//! - physics: the fish, then the sharks;
+//! - reef: every animal, eaten ones included (they are not drawn or picked);
+//! - learning: the demo fish, then the race's sharks.
+
+use glam::Vec3;
+
+use super::body::NODE_COUNT;
+use super::learning::learning_lab::LearningLab;
+use super::reef_world::{ReefBody, ReefWorld};
+use super::{BodySpecies, Obstacle, PhysicalFish, PhysicsWorld, SchoolMetrics, Tank, World};
+
+/// Metrics samples of the boid scenes are taken every this many steps
+/// (15 × 1/60 s = 0.25 s).
+pub const BOID_SAMPLE_EVERY_STEPS: u64 = 15;
+/// Metrics samples of the fish-world scenes are taken every this many steps
+/// (5 × 0.055 s = 0.275 s, about the boid scenes' quarter second).
+pub const FISH_WORLD_SAMPLE_EVERY_STEPS: u64 = 5;
+
+/// What a scene reports to the metrics history at a sample.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SceneMetrics {
+    pub time_secs: f64,
+    /// Order parameters of the school (the boid fish; the physics fish; the
+    /// reef's living prey; nothing in the learning lab).
+    pub school: SchoolMetrics,
+    /// Share of fish-steps on which each boid force acted over the last second
+    /// (boid scenes with the boid layer on; zeros elsewhere).
+    pub force_frequencies: [f64; 5],
+    /// Animals eaten by predators since the start.
+    pub catches: u64,
+}
+
+/// A muscle-driven animal to draw with the skinned body.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BodyToDraw {
+    /// The animal's index in its scene.
+    pub index: usize,
+    pub species: BodySpecies,
+    /// Livery hue, 0–1.
+    pub hue: f32,
+}
+
+/// The simulated world of one tank.
+pub enum SceneWorld {
+    /// Point-mass fish, sharks and stingrays: the aquarium (wandering) and the
+    /// schooling lab (the SIMBA boid layer on).
+    Boids(Box<World>),
+    /// Muscle-driven fish steered by the boid layer (Tu & Terzopoulos §3).
+    Physics(PhysicsWorld),
+    /// Fish with minds, on muscle or point-mass bodies (Tu & Terzopoulos §5–7).
+    Reef(ReefWorld),
+    /// The learning centre (Tu & Terzopoulos §4): training, the demo fish and the
+    /// race, in open water.
+    Learning(Box<LearningLab>),
+}
+
+impl SceneWorld {
+    /// Advances the world by one step of [`Self::dt_secs`].
+    pub fn step(&mut self) {
+        match self {
+            Self::Boids(w) => w.step(),
+            Self::Physics(w) => w.step(),
+            Self::Reef(w) => w.step(),
+            Self::Learning(w) => w.step(),
+        }
+    }
+
+    /// Length of one step, seconds: 1/60 s for boids, the fish world's
+    /// 0.055 s for the others (`paper_time::FISH_STEP_SECS`).
+    pub fn dt_secs(&self) -> f64 {
+        match self {
+            Self::Boids(_) => f64::from(World::DT_SECS),
+            Self::Physics(w) => f64::from(w.dt_secs()),
+            Self::Reef(w) => f64::from(w.dt_secs()),
+            Self::Learning(w) => f64::from(w.dt_secs()),
+        }
+    }
+
+    /// Simulated seconds since the world began.
+    pub fn time_secs(&self) -> f64 {
+        match self {
+            Self::Boids(w) => w.time_secs(),
+            Self::Physics(w) => w.time_secs(),
+            Self::Reef(w) => w.time_secs(),
+            Self::Learning(w) => w.demo_steps() as f64 * f64::from(w.dt_secs()),
+        }
+    }
+
+    /// Steps since the world began.
+    pub fn steps(&self) -> u64 {
+        match self {
+            Self::Boids(w) => w.steps(),
+            Self::Physics(w) => w.steps(),
+            Self::Reef(w) => w.steps(),
+            Self::Learning(w) => w.demo_steps(),
+        }
+    }
+
+    /// The seed the world was built from (it also shapes the rocks' look).
+    pub fn seed(&self) -> u64 {
+        match self {
+            Self::Boids(w) => w.seed(),
+            Self::Physics(w) => w.seed(),
+            Self::Reef(w) => w.config().seed,
+            Self::Learning(w) => w.seed(),
+        }
+    }
+
+    pub fn tank(&self) -> &Tank {
+        match self {
+            Self::Boids(w) => w.tank(),
+            Self::Physics(w) => w.tank(),
+            Self::Reef(w) => w.tank(),
+            Self::Learning(w) => w.tank(),
+        }
+    }
+
+    /// Rocks, pillars and ledges (none in the learning lab's open water).
+    pub fn obstacles(&self) -> &[Obstacle] {
+        match self {
+            Self::Boids(w) => w.obstacles(),
+            Self::Physics(w) => w.obstacles(),
+            Self::Reef(w) => w.obstacles(),
+            Self::Learning(_) => &[],
+        }
+    }
+
+    /// Animals in the tank now (eaten ones not counted).
+    pub fn animal_count(&self) -> usize {
+        match self {
+            Self::Boids(w) => w.fish().len() + w.sharks().len() + w.stingrays().len(),
+            Self::Physics(w) => w.animals().len(),
+            Self::Reef(w) => w.alive_count(),
+            Self::Learning(w) => 1 + w.race_nodes_m().len(),
+        }
+    }
+
+    /// Fish in the tank now: the boid or physics fish without sharks and
+    /// stingrays; the reef's living animals; the learning lab's demo fish and
+    /// racers.
+    pub fn fish_count(&self) -> usize {
+        match self {
+            Self::Boids(w) => w.fish().len(),
+            Self::Physics(w) => w.fish_count(),
+            Self::Reef(_) | Self::Learning(_) => self.animal_count(),
+        }
+    }
+
+    /// Steps between two metrics samples.
+    pub fn sample_every_steps(&self) -> u64 {
+        match self {
+            Self::Boids(_) => BOID_SAMPLE_EVERY_STEPS,
+            Self::Physics(_) | Self::Reef(_) | Self::Learning(_) => FISH_WORLD_SAMPLE_EVERY_STEPS,
+        }
+    }
+
+    /// The metrics now (`None`: the scene has no school to measure).
+    pub fn metrics(&self) -> Option<SceneMetrics> {
+        Some(match self {
+            Self::Boids(w) => {
+                let m = w.metrics();
+                SceneMetrics {
+                    time_secs: w.time_secs(),
+                    school: m.school,
+                    force_frequencies: if w.boids().is_some() {
+                        m.force_frequencies_recent
+                    } else {
+                        [0.0; 5]
+                    },
+                    catches: m.catches,
+                }
+            }
+            Self::Physics(w) => SceneMetrics {
+                time_secs: w.time_secs(),
+                school: w.school_metrics(),
+                ..SceneMetrics::default()
+            },
+            Self::Reef(w) => SceneMetrics {
+                time_secs: w.time_secs(),
+                school: w.school_metrics(),
+                catches: u64::from(w.counts().prey_eaten),
+                ..SceneMetrics::default()
+            },
+            Self::Learning(_) => return None,
+        })
+    }
+
+    /// Where every animal is now, by index (see the module doc): its centre for a
+    /// point mass, its position for a muscle body. The lab keeps the previous
+    /// step's copy so that drawing interpolates the same way in every scene.
+    pub fn positions_m(&self, out: &mut Vec<Vec3>) {
+        out.clear();
+        match self {
+            Self::Boids(w) => out.extend(
+                w.fish()
+                    .iter()
+                    .chain(w.sharks().iter().map(|s| &s.body))
+                    .chain(w.stingrays().iter().map(|r| &r.body))
+                    .map(|f| f.position_m),
+            ),
+            Self::Physics(w) => out.extend(w.animals().iter().map(|a| a.point.position_m)),
+            Self::Reef(w) => out.extend(w.animals().iter().map(|a| a.body.position_m())),
+            Self::Learning(_) => {
+                let mut nodes = Vec::new();
+                self.nodes_m(&mut nodes);
+                out.extend(nodes.iter().map(centre));
+            }
+        }
+    }
+
+    /// The nodes of every animal now, by index: a muscle body's 23 nodes, a
+    /// point mass's centre 23 times (boid scenes: none).
+    pub fn nodes_m(&self, out: &mut Vec<[Vec3; NODE_COUNT]>) {
+        out.clear();
+        match self {
+            Self::Boids(_) => {}
+            Self::Physics(w) => out.extend(w.animals().iter().map(|a| a.nodes_m())),
+            Self::Reef(w) => out.extend(w.animals().iter().map(|a| match &a.body {
+                ReefBody::Physical(p) => p.nodes_m(),
+                ReefBody::Point(_) => [a.body.position_m(); NODE_COUNT],
+            })),
+            Self::Learning(w) => out.extend(
+                std::iter::once(w.demo_nodes_m())
+                    .chain(w.race_nodes_m().into_iter().map(|(_, n)| n)),
+            ),
+        }
+    }
+
+    /// The muscle-driven animals to draw with the skinned body (living ones).
+    pub fn bodies_to_draw(&self) -> Vec<BodyToDraw> {
+        match self {
+            Self::Boids(_) => Vec::new(),
+            Self::Physics(w) => w
+                .animals()
+                .iter()
+                .enumerate()
+                .map(|(index, a)| BodyToDraw {
+                    index,
+                    species: a.species,
+                    hue: a.hue,
+                })
+                .collect(),
+            Self::Reef(w) => w
+                .animals()
+                .iter()
+                .enumerate()
+                .filter(|(_, a)| a.alive)
+                .filter_map(|(index, a)| match &a.body {
+                    ReefBody::Physical(p) => Some(BodyToDraw {
+                        index,
+                        species: p.species,
+                        hue: a.hue,
+                    }),
+                    ReefBody::Point(_) => None,
+                })
+                .collect(),
+            Self::Learning(w) => {
+                let species = w.species();
+                let racers = w.race_nodes_m().len();
+                std::iter::once(BodyToDraw {
+                    index: 0,
+                    species,
+                    hue: 0.1,
+                })
+                .chain((1..=racers).map(|index| BodyToDraw {
+                    index,
+                    species,
+                    hue: 0.55 + 0.05 * index as f32,
+                }))
+                .collect()
+            }
+        }
+    }
+
+    /// The animals a click can select, by index, with their body lengths
+    /// (the physics fish; the reef's living animals; none elsewhere).
+    pub fn pickable(&self) -> Vec<(usize, f32)> {
+        match self {
+            Self::Physics(w) => w
+                .animals()
+                .iter()
+                .enumerate()
+                .map(|(i, a)| (i, a.body_length_m()))
+                .collect(),
+            Self::Reef(w) => w
+                .animals()
+                .iter()
+                .enumerate()
+                .filter(|(_, a)| a.alive)
+                .map(|(i, a)| (i, a.body.body_length_m()))
+                .collect(),
+            Self::Boids(_) | Self::Learning(_) => Vec::new(),
+        }
+    }
+
+    /// Is animal `index` drawn from its nodes (a muscle body)?
+    pub fn has_body(&self, index: usize) -> bool {
+        match self {
+            Self::Boids(_) => false,
+            Self::Physics(_) | Self::Learning(_) => true,
+            Self::Reef(w) => w
+                .animals()
+                .get(index)
+                .is_some_and(|a| matches!(a.body, ReefBody::Physical(_))),
+        }
+    }
+
+    /// Muscle-driven animal `index`, whose muscles the plots can trace.
+    pub fn physical_fish(&self, index: usize) -> Option<&PhysicalFish> {
+        match self {
+            Self::Physics(w) => w.animals().get(index),
+            Self::Reef(w) => match &w.animals().get(index)?.body {
+                ReefBody::Physical(p) => Some(p),
+                ReefBody::Point(_) => None,
+            },
+            Self::Boids(_) | Self::Learning(_) => None,
+        }
+    }
+
+    /// The boid world, in the aquarium and the schooling lab.
+    pub fn boids(&self) -> Option<&World> {
+        match self {
+            Self::Boids(w) => Some(w.as_ref()),
+            _ => None,
+        }
+    }
+
+    /// The physics fish tank, in its scene.
+    pub fn physics(&self) -> Option<&PhysicsWorld> {
+        match self {
+            Self::Physics(w) => Some(w),
+            _ => None,
+        }
+    }
+
+    /// The reef, in its scene.
+    pub fn reef(&self) -> Option<&ReefWorld> {
+        match self {
+            Self::Reef(w) => Some(w),
+            _ => None,
+        }
+    }
+
+    /// The learning lab, in its scene.
+    pub fn learning(&self) -> Option<&LearningLab> {
+        match self {
+            Self::Learning(w) => Some(w),
+            _ => None,
+        }
+    }
+}
+
+/// The centre of a body's nodes.
+pub fn centre(nodes: &[Vec3; NODE_COUNT]) -> Vec3 {
+    nodes.iter().sum::<Vec3>() / NODE_COUNT as f32
+}
