@@ -8,12 +8,12 @@
 //! | desired velocity d, fish heading f           | command |
 //! |----------------------------------------------|---------|
 //! | ‖d‖                                          | swim-MC speed fraction ‖d‖ / top speed |
-//! | horizontal angle Δ from f to d              | steering command clamp(Δ × 3/rad, −1, 1), + = left (`body::turn_mc::add_steering`); none while a hand turn-MC turn runs |
+//! | horizontal angle Δ from f to d              | steering command clamp(Δ × [`STEER_GAIN_PER_RAD`], −1, 1), + = left (`body::turn_mc::add_steering`); none while a hand turn-MC turn runs |
 //! | elevation of d minus the fish's pitch        | both fins pitched by 2 × the difference, at most ±0.5 rad (ascend, descend) |
 //! | ‖d‖ below half the current speed            | both fins across the flow (brake), no swimming |
 //!
 //! Why a continuous steering command and not turn-MC turns: a turn-MC turn
-//! contracts quickly and restores twenty times slower, so a 90° turn takes 7.4 s
+//! contracts quickly and restores twenty times slower, so a 90° turn takes 7.5 s
 //! (`body/turn_mc.rs`), and one restarted every step never finishes its quick
 //! stroke. The steering command holds the turning side's bend for as long as the
 //! heading error lasts, proportionally to it, and the tail's thrust on the bent

@@ -18,7 +18,7 @@
 //! that a 90° key turns the fish 90° at any speed the routine asked for.
 //!
 //! Why the held bend for small corrections: a turn-MC turn of any angle lasts
-//! as long as its restoring stroke (3.7 s for the smallest key,
+//! as long as its restoring stroke (3.9 s for the smallest key,
 //! `body/turn_mc.rs`), so a chase steered only by turn-MC turns zigzags: the
 //! target moves while the fish cannot re-aim. The held bend is the turn-MC's
 //! own bend (the same anterior and middle segments, contracted on the turning

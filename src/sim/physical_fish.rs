@@ -3,8 +3,7 @@
 //! (`motor_bridge.rs`) and a point-mass summary (centre of mass and velocity) that
 //! the steering layer and the school metrics read like any boid.
 //!
-//! Species differ by size, mass and colour only (Tu & Terzopoulos: "species differ
-//! by scale and mass"): the body scales its masses with the square of its length
+//! Species differ by size, mass and colour only (chosen): the body scales its masses with the square of its length
 //! (see `body/fish_body.rs`), so a shark twice as long is four times heavier
 //! and swims twice as fast in metres per second.
 

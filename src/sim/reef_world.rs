@@ -63,7 +63,7 @@ pub const MAX_FOOD: usize = 200;
 /// bodies see the same world clock.
 pub const POINT_BODY_DT_SECS: f32 = crate::sim::paper_time::FISH_STEP_SECS;
 /// Time in which a behaviour's wish becomes a steering force, seconds (0.25,
-/// the boid layer's value).
+/// chosen, as the physics tank's).
 const RESPONSE_TIME_SECS: f32 = 0.25;
 /// Food within this distance of the mouth, and in front of it
 /// ([`SUCK_CONE_COS`]), is sucked in, body lengths (1.0, chosen: the muscle
@@ -138,8 +138,9 @@ pub enum ReefBodyKind {
 }
 
 /// How far ahead a reef fish foresees the glass, sand and surface, seconds
-/// of its present velocity. Default 8 (tuned with the muscle body, whose
-/// turning circle is about 0.75 body lengths at cruising speed).
+/// of its present velocity. Default 8 (tuned with the earlier muscle body,
+/// whose turning circle was about 0.75 body lengths at cruising speed; the
+/// converged body's is about 1.2, `BODY_TURN_RADIUS_BODY_LENGTHS`).
 const CONTAINMENT_LOOK_AHEAD_SECS: f32 = 8.0;
 
 /// How far from the glass, sand and surface a reef fish keeps, body lengths.
@@ -386,7 +387,8 @@ pub struct ReefAnimal {
     pub mouth_open: bool,
     /// The velocity the behaviour asked for last step, m/s.
     pub desired_m_per_s: Vec3,
-    /// Mean brightness of the retinal image (refreshed every second).
+    /// Mean brightness of the retinal image (refreshed about every 4 s, one
+    /// fish in four each second).
     pub brightness: f32,
     /// Water temperature at the centre, °C.
     pub temperature_c: f32,

@@ -73,8 +73,8 @@ pub const SATIATED_S: f32 = 5.0;
 
 /// Fish closer than this to the shark's target confuse the shark, in metres.
 /// Default 0.8 m (tuned): two fish lengths, the spacing inside a school;
-/// solitary fish keep farther apart (their personal space is 1.2 m), so a
-/// shark hunting loners is rarely confused.
+/// loners are seldom within it of each other, so a shark hunting loners is
+/// rarely confused.
 pub const CONFUSION_RADIUS_M: f32 = 0.8;
 
 /// Rate of losing the lock per confusing fish, per second. Default 2.0 /s

@@ -1,7 +1,8 @@
 //! The dynamic fish: 23 point masses joined by 91 springs, 12 of them muscles,
 //! pushed by the water. Tu & Terzopoulos 1994 §3.1 eq. (1)
 //! m_i ẍ_i + γ_i ẋ_i − w_i = f^w_i, with w_i = Σ_j c_ij e_ij r_ij/‖r_ij‖, muscles
-//! (§3.2) and the water force of `hydrodynamics.rs`, integrated by implicit Euler.
+//! (§3.2) and the water force of `hydrodynamics.rs`, integrated implicitly (BDF2 by
+//! default, backward Euler on request; see "Integration").
 //!
 //! # Scale
 //! The paper's constants are for a fish 26 units long with Δt = 0.055. A fish of

@@ -116,7 +116,8 @@ pub const DEVOTED_BODY_LENGTHS: f32 = 20.0;
 
 impl Habits {
     /// An ordinary fish of `kind`: appetite by kind (predators 4 food units, one
-    /// prey; others 3 plankton particles), nominal p0 and p1.
+    /// prey; others 3 plankton particles), Shoal's calm default p0 and p1
+    /// (`MentalConstants::shoal_default`).
     pub fn new(kind: FishKind, sex: Sex, species: u8) -> Self {
         let appetite = match kind {
             FishKind::Predator => super::mental_state::PREY_FOOD_UNITS,
