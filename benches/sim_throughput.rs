@@ -9,10 +9,10 @@ use std::time::{Duration, Instant};
 use shoal::lab::Lab;
 use shoal::render::{FrameBuilder, OrbitCamera};
 use shoal::settings::{Scene, Settings};
+use shoal::sim::boids::world::SPATIAL_METRICS_EVERY_STEPS;
+use shoal::sim::common::school_metrics::{SchoolMeter, order_parameters};
 use shoal::sim::learning::Trainer;
-use shoal::sim::reef_world::ReefBodyKind;
-use shoal::sim::school_metrics::{SchoolMeter, order_parameters};
-use shoal::sim::world::SPATIAL_METRICS_EVERY_STEPS;
+use shoal::sim::reef::world::ReefBodyKind;
 use shoal::sim::{BoidParams, World, WorldConfig};
 
 /// Runs `f` repeatedly for about `budget`, returning calls per second.

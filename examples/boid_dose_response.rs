@@ -11,7 +11,7 @@
 //! second) and then over the seeds. Each dose varies one weight from the *Group*
 //! preset's values, everything else as the app's defaults.
 
-use shoal::sim::control_mode::{ControlMode, GROUP_WEIGHTS, INDIVIDUAL_WEIGHTS};
+use shoal::sim::boids::control_mode::{ControlMode, GROUP_WEIGHTS, INDIVIDUAL_WEIGHTS};
 use shoal::sim::{BoidParams, World, WorldConfig};
 
 /// Seeds of each measurement.
@@ -131,7 +131,8 @@ fn main() {
         }
     }
     let paper = BoidParams {
-        weights: shoal::sim::control_mode::MONTE_CARLO_PAPER_WEIGHTS.map(|w| w * 100.0 / 3.2),
+        weights: shoal::sim::boids::control_mode::MONTE_CARLO_PAPER_WEIGHTS
+            .map(|w| w * 100.0 / 3.2),
         mode: ControlMode::MonteCarlo,
         ..group
     };

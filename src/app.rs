@@ -1137,7 +1137,7 @@ impl eframe::App for ShoalApp {
         // The Minds section shows the demo's own values under the teacher's.
         self.panel.reef_demo_habits.clear();
         if let Some(reef) = self.lab.runs()[0].reef() {
-            for kind in crate::sim::mind::FishKind::ALL {
+            for kind in crate::sim::reef::mind::FishKind::ALL {
                 if let Some(a) = reef.animals().iter().find(|a| a.demo_habits.kind == kind) {
                     self.panel.reef_demo_habits.push(a.demo_habits);
                 }

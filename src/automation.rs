@@ -297,18 +297,18 @@ impl PhysicsReport {
 /// The reef scene as `shoal.state().reef` reports it.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct ReefReport {
-    pub demo: crate::sim::reef_world::ReefScene,
-    pub body: crate::sim::reef_world::ReefBodyKind,
+    pub demo: crate::sim::reef::world::ReefScene,
+    pub body: crate::sim::reef::world::ReefBodyKind,
     /// Living animals by kind.
     pub predators: usize,
     pub prey: usize,
     pub pacifists: usize,
     pub food: usize,
-    pub counts: crate::sim::reef_world::ReefCounts,
+    pub counts: crate::sim::reef::world::ReefCounts,
     /// Courting pairs: male, female, phase.
-    pub pairs: Vec<(u32, u32, crate::sim::courtship::Phase)>,
+    pub pairs: Vec<(u32, u32, crate::sim::reef::courtship::Phase)>,
     /// The last 20 events, oldest first.
-    pub events: Vec<crate::sim::reef_world::ReefEvent>,
+    pub events: Vec<crate::sim::reef::world::ReefEvent>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub selected: Option<SelectedMindReport>,
 }
@@ -319,16 +319,16 @@ pub struct SelectedMindReport {
     pub index: usize,
     pub name: String,
     pub alive: bool,
-    pub habits: crate::sim::mind::Habits,
+    pub habits: crate::sim::reef::mind::Habits,
     pub hunger: f32,
     pub libido: f32,
     pub fear: f32,
-    pub intention: crate::sim::mind::Intention,
+    pub intention: crate::sim::reef::mind::Intention,
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub target: Option<crate::sim::mind::Target>,
+    pub target: Option<crate::sim::reef::mind::Target>,
     /// The single-item memory: an intention interrupted by an avoidance.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub remembered: Option<crate::sim::mind::Focus>,
+    pub remembered: Option<crate::sim::reef::mind::Focus>,
     pub mouth_open: bool,
     /// Mean brightness of its retinal image, [0, 1].
     pub brightness: f32,
@@ -347,8 +347,8 @@ pub struct SelectedMindReport {
 
 impl ReefReport {
     fn new(lab: &Lab) -> Option<Self> {
-        use crate::sim::mind::FishKind;
-        use crate::sim::reef_world::ReefBody;
+        use crate::sim::reef::mind::FishKind;
+        use crate::sim::reef::world::ReefBody;
         let reef = lab.runs()[0].reef()?;
         let alive = |kind: FishKind| {
             reef.animals()

@@ -13,7 +13,7 @@ use crate::metrics_history::{MetricsHistory, MetricsSample};
 use crate::settings::{Scene, Settings, Side};
 use crate::sim::body::{MUSCLE_COUNT, NODE_COUNT};
 use crate::sim::learning::learning_lab::LearningLab;
-use crate::sim::reef_world::ReefWorld;
+use crate::sim::reef::world::ReefWorld;
 use crate::sim::scene::{SceneWorld, centre};
 use crate::sim::{HandCommand, PhysicsConfig, PhysicsWorld, World, WorldConfig};
 
@@ -957,7 +957,7 @@ mod tests {
 
     #[test]
     fn the_reef_scene_runs_minds_and_rebuilds_only_for_demo_body_and_counts() {
-        use crate::sim::reef_world::{ReefBodyKind, ReefScene};
+        use crate::sim::reef::world::{ReefBodyKind, ReefScene};
         let settings = Settings {
             scene: Scene::Reef,
             ..Settings::default()
@@ -988,7 +988,7 @@ mod tests {
             let ravenous = a.habits.mental.digestion_rate_per_unit == 0.005;
             assert_eq!(
                 ravenous,
-                a.habits.kind == crate::sim::mind::FishKind::Predator
+                a.habits.kind == crate::sim::reef::mind::FishKind::Predator
             );
         }
         lab.step(5);

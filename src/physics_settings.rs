@@ -6,7 +6,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::sim::PhysicsBehaviour;
-use crate::sim::physics_world::{MAX_PHYSICAL_FISH, MAX_PHYSICAL_SHARKS};
+use crate::sim::physics::world::{MAX_PHYSICAL_FISH, MAX_PHYSICAL_SHARKS};
 
 /// Most physical fish the slider offers.
 pub const PHYSICS_FISH_MAX: u32 = MAX_PHYSICAL_FISH as u32;

@@ -5,9 +5,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::sim::mind::FishKind;
-use crate::sim::mind::habits::KindTraits;
-use crate::sim::reef_world::{MAX_FOOD, ReefBodyKind, ReefConfig, ReefScene};
+use crate::sim::reef::mind::FishKind;
+use crate::sim::reef::mind::habits::KindTraits;
+use crate::sim::reef::world::{MAX_FOOD, ReefBodyKind, ReefConfig, ReefScene};
 
 /// Most prey fish the slider offers: the Reef demo then holds
 /// `MAX_REEF_ANIMALS` (200) animals.

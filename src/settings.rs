@@ -390,7 +390,7 @@ fn type_hint(err: &serde_json::Error) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sim::control_mode::{ControlMode, GROUP_WEIGHTS};
+    use crate::sim::boids::control_mode::{ControlMode, GROUP_WEIGHTS};
     use serde_json::json;
 
     #[test]

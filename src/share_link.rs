@@ -82,7 +82,7 @@ pub fn decode(fragment: &str) -> Result<Option<Settings>, ShareLinkError> {
 mod tests {
     use super::*;
     use crate::settings::Scene;
-    use crate::sim::control_mode::ControlMode;
+    use crate::sim::boids::control_mode::ControlMode;
     use crate::tank_settings::{Preset, TankSettings};
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
@@ -141,7 +141,7 @@ mod tests {
 
     fn random_reef(rng: &mut ChaCha8Rng) -> crate::reef_settings::ReefSettings {
         use crate::reef_settings::*;
-        use crate::sim::reef_world::{ReefBodyKind, ReefScene};
+        use crate::sim::reef::world::{ReefBodyKind, ReefScene};
         let mut reef = ReefSettings {
             demo: ReefScene::ALL[rng.random_range(0..ReefScene::ALL.len())],
             body: if rng.random_bool(0.5) {
@@ -163,9 +163,9 @@ mod tests {
             overlay: ReefOverlay::ALL[rng.random_range(0..3)],
             traits: Default::default(),
         };
-        for kind in crate::sim::mind::FishKind::ALL {
+        for kind in crate::sim::reef::mind::FishKind::ALL {
             let traits = reef.traits.of_mut(kind);
-            for t in &crate::sim::mind::habits::MindTraits::ALL {
+            for t in &crate::sim::reef::mind::habits::MindTraits::ALL {
                 let value = rng
                     .random_bool(0.3)
                     .then(|| rng.random_range(t.min..=t.max));

@@ -12,9 +12,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::sim::control_mode::{self, ControlMode};
-use crate::sim::shark::MAX_SHARKS;
-use crate::sim::stingray::MAX_STINGRAYS;
+use crate::sim::boids::control_mode::{self, ControlMode};
+use crate::sim::boids::shark::MAX_SHARKS;
+use crate::sim::boids::stingray::MAX_STINGRAYS;
 use crate::sim::{BoidParams, Tank};
 
 /// Largest fish count a teacher can ask for (per tank).

@@ -21,7 +21,7 @@ use serde_json::json;
 use shoal::automation::Command;
 use shoal::lab::Lab;
 use shoal::settings::Settings;
-use shoal::sim::reef_world::ReefBody;
+use shoal::sim::reef::world::ReefBody;
 
 /// FNV-1a, 64 bits, over the bits of the numbers fed to it.
 struct Fingerprint(u64);

@@ -22,8 +22,8 @@ use super::orbit_camera::OrbitCamera;
 use super::scene_renderer::{FishInstance, SceneCallback, SceneUniforms, StaticScene, ViewCache};
 use crate::lab::Run;
 use crate::sim::BodySpecies;
-use crate::sim::mind::FishKind;
-use crate::sim::reef_world::{ReefBody, ReefWorld};
+use crate::sim::reef::mind::FishKind;
+use crate::sim::reef::world::{ReefBody, ReefWorld};
 use crate::sim::scene::BodyToDraw;
 
 /// Fish drawn shorter than this (physical pixels, snout to tail root) use the

@@ -628,7 +628,7 @@ pub fn prism(footprint: &[glam::Vec2], base_y: f32, height: f32, color: [f32; 3]
     let mut mesh = Mesh::default();
     let tint = pack_rgb(color);
     let mut corners: Vec<glam::Vec2> = footprint.to_vec();
-    if crate::sim::obstacle::signed_area_m2(&corners) < 0.0 {
+    if crate::sim::common::obstacle::signed_area_m2(&corners) < 0.0 {
         corners.reverse();
     }
     let n = corners.len();

@@ -16,10 +16,10 @@
 
 use glam::Vec3;
 
-use super::body::NODE_COUNT;
-use super::learning::learning_lab::LearningLab;
-use super::reef_world::{ReefBody, ReefWorld};
-use super::{BodySpecies, Obstacle, PhysicalFish, PhysicsWorld, SchoolMetrics, Tank, World};
+use crate::sim::body::NODE_COUNT;
+use crate::sim::learning::learning_lab::LearningLab;
+use crate::sim::reef::world::{ReefBody, ReefWorld};
+use crate::sim::{BodySpecies, Obstacle, PhysicalFish, PhysicsWorld, SchoolMetrics, Tank, World};
 
 /// Metrics samples of the boid scenes are taken every this many steps
 /// (15 × 1/60 s = 0.25 s).

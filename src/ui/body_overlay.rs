@@ -11,7 +11,7 @@ use crate::render::OrbitCamera;
 use crate::sim::body::NODE_COUNT;
 use crate::sim::body::body_layout::{MUSCLES, SPRINGS, SpringKind};
 use crate::sim::body::hydrodynamics::add_water_forces;
-use crate::sim::motor_bridge::{to_body_frame, to_tank_frame};
+use crate::sim::body::motor_bridge::{to_body_frame, to_tank_frame};
 
 /// Skeletons drawn at most when no fish is selected. 40, chosen: 3,600 lines stay
 /// cheap and readable; with a selection only the selected fish is drawn.

@@ -7,7 +7,7 @@ use eframe::egui;
 use super::WidgetRects;
 use super::tank_panel::tank_ui;
 use crate::settings::{FISH_COUNT_MAX, SEED_MAX, SPEED_MAX, SPEED_MIN, Scene, Settings, Side};
-use crate::sim::mind::{FishKind, Habits};
+use crate::sim::reef::mind::{FishKind, Habits};
 
 /// What a click in the tank does.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -10,8 +10,8 @@ use super::reef_panel::intention_color;
 use crate::lab::Run;
 use crate::reef_settings::ReefOverlay;
 use crate::render::OrbitCamera;
-use crate::sim::mind::Target;
-use crate::sim::perception::FIELD_OF_VIEW_RAD;
+use crate::sim::reef::mind::Target;
+use crate::sim::reef::perception::FIELD_OF_VIEW_RAD;
 
 fn project(camera: &OrbitCamera, rect: egui::Rect, p: Vec3) -> Option<egui::Pos2> {
     let aspect = rect.width() / rect.height().max(1.0);

@@ -14,16 +14,16 @@ use crate::reef_settings::{
     REEF_CURRENT_MAX_M_PER_S, REEF_FOOD_MAX, REEF_PREY_MAX, ReefOverlay, ReefSettings,
     VISIBILITY_MAX_M, VISIBILITY_MIN_M,
 };
-use crate::sim::mind::habits::{
+use crate::sim::reef::mind::habits::{
     COURAGEOUS_BOX_BODY_LENGTHS, DEFAULT_BOX_BODY_LENGTHS, DEFAULT_PERSISTENCE_BODY_LENGTHS,
     DEVOTED_BODY_LENGTHS, FICKLE_BODY_LENGTHS, KindTraits, MindTraits, TIMID_BOX_BODY_LENGTHS,
 };
-use crate::sim::mind::mental_state::{
+use crate::sim::reef::mind::mental_state::{
     CALM_DIGESTION_RATE, CALM_LIBIDO_RATE, MANIC_LIBIDO_RATE, NOMINAL_DIGESTION_RATE,
     NOMINAL_LIBIDO_RATE, RAVENOUS_DIGESTION_RATE,
 };
-use crate::sim::mind::{FishKind, Habits, Intention, Liking, Sex, Target};
-use crate::sim::reef_world::{ReefAnimal, ReefBody, ReefBodyKind, ReefScene, ReefWorld};
+use crate::sim::reef::mind::{FishKind, Habits, Intention, Liking, Sex, Target};
+use crate::sim::reef::world::{ReefAnimal, ReefBody, ReefBodyKind, ReefScene, ReefWorld};
 
 /// Colours of the three urges, used by the bars, the plot and the focus line.
 pub const HUNGER_COLOR: egui::Color32 = egui::Color32::from_rgb(255, 170, 60);
@@ -441,7 +441,7 @@ fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, height: f32, rects: &mut W
         egui::Label::new(egui::RichText::new("Its mind over the last two minutes").strong())
             .truncate(),
     );
-    let series = |f: fn(&crate::sim::reef_world::MindSample) -> f32| -> PlotPoints {
+    let series = |f: fn(&crate::sim::reef::world::MindSample) -> f32| -> PlotPoints {
         a.history
             .iter()
             .map(|s| [f64::from(s.time_secs), f64::from(f(s))])

@@ -5,7 +5,7 @@
 use eframe::egui;
 
 use super::WidgetRects;
-use crate::sim::control_mode::ControlMode;
+use crate::sim::boids::control_mode::ControlMode;
 use crate::tank_settings::{
     FISH_COUNT_MAX, MAX_FORCE_RANGE_M_PER_S2, MAX_SPEED_RANGE_M_PER_S, PERSONAL_SPACE_RANGE_M,
     Preset, SHARKS_MAX, STINGRAYS_MAX, TankSettings, VISION_ANGLE_RANGE_DEG,

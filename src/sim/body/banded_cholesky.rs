@@ -341,7 +341,7 @@ fn transpose(m: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::body::banded_cholesky::*;
 
     #[test]
     fn solves_a_banded_spd_system_exactly() {

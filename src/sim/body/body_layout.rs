@@ -7,7 +7,7 @@
 //! coordinates of Fig. 3. This layout follows the figure (a head tip, cross-section
 //! rings of four nodes, a tail section, two tail-fin nodes) with the coordinates
 //! chosen by the public re-implementation vanish87/UnityFishSimulation. Everything
-//! here is in *paper units*: the fish is 26 units long; [`super::FishBody`] scales it.
+//! here is in *paper units*: the fish is 26 units long; [`crate::sim::body::FishBody`] scales it.
 //!
 //! Body frame: x forward (head at x = 0, tail towards −x), y to the fish's left,
 //! z dorsal (up). Right-handed.
@@ -421,7 +421,7 @@ const fn build_triangles() -> [[usize; 3]; TRIANGLE_COUNT] {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::body::body_layout::*;
 
     #[test]
     fn layout_has_paper_counts_23_nodes_91_springs_12_muscles() {

@@ -155,14 +155,14 @@
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::banded_cholesky::{BandedCholesky, SYSTEM_SIZE, sym3_outer};
-use super::body_layout::{
+use crate::sim::body::banded_cholesky::{BandedCholesky, SYSTEM_SIZE, sym3_outer};
+use crate::sim::body::body_layout::{
     HEAD_NODE, MASSES, MUSCLE_COUNT, MUSCLES, NODE_COUNT, PAPER_BODY_LENGTH, REST_POSITIONS,
     RING_COUNT, SPRING_COUNT, SPRINGS, TAIL_FIN_NODES, ring_nodes,
 };
-use super::hydrodynamics::add_water_forces;
-use super::pectoral_fins::PectoralFins;
-use crate::sim::paper_time::{FISH_STEP_SECS, PAPER_TIME_UNITS_PER_SEC};
+use crate::sim::body::hydrodynamics::add_water_forces;
+use crate::sim::body::pectoral_fins::PectoralFins;
+use crate::sim::common::paper_time::{FISH_STEP_SECS, PAPER_TIME_UNITS_PER_SEC};
 
 /// Largest accepted [`BodyParams::substeps`] (1024: enough for convergence checks
 /// far beyond the default; it was 64, which silently capped such checks).

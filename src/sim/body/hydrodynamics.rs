@@ -16,8 +16,8 @@
 
 use glam::Vec3;
 
-use super::banded_cholesky::{BandedCholesky, sym3_outer};
-use super::body_layout::{NODE_COUNT, TRIANGLE_COUNT, TRIANGLES};
+use crate::sim::body::banded_cholesky::{BandedCholesky, sym3_outer};
+use crate::sim::body::body_layout::{NODE_COUNT, TRIANGLE_COUNT, TRIANGLES};
 
 /// Adds the water force of every triangle to `forces`, and, when `system` is given,
 /// `dt · (−∂f/∂v)` to the implicit system matrix.
@@ -88,8 +88,8 @@ pub fn add_water_forces(
 
 #[cfg(test)]
 mod tests {
-    use super::*;
     use crate::sim::body::body_layout::REST_POSITIONS;
+    use crate::sim::body::hydrodynamics::*;
 
     #[test]
     fn water_only_resists_faces_moving_into_it() {

@@ -11,8 +11,10 @@ pub mod banded_cholesky;
 pub mod body_layout;
 pub mod fish_body;
 pub mod hydrodynamics;
+pub mod motor_bridge;
 pub mod motor_controller;
 pub mod pectoral_fins;
+pub mod physical_fish;
 pub mod turn_mc;
 
 #[cfg(test)]

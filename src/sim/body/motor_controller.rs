@@ -36,7 +36,7 @@
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{FRAC_PI_6, TAU};
 
-use super::body_layout::{MUSCLE_COUNT, MuscleSegment, Side, muscle_index};
+use crate::sim::body::body_layout::{MUSCLE_COUNT, MuscleSegment, Side, muscle_index};
 
 /// Amplitudes (contraction factor, [0, 1]) and frequencies (Hz) of the two swimming
 /// segments.

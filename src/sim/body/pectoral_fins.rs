@@ -21,7 +21,7 @@ use glam::Vec3;
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
-use super::body_layout::ring_nodes;
+use crate::sim::body::body_layout::ring_nodes;
 
 /// Angles of the two pectoral fins (θ of the paper, radians).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -102,7 +102,7 @@ impl PectoralFins {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::body::pectoral_fins::*;
 
     #[test]
     fn fin_force_lifts_dives_and_brakes() {

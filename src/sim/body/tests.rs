@@ -6,8 +6,8 @@
 
 use glam::Vec3;
 
-use super::body_layout::{REST_POSITIONS, TRIANGLES};
-use super::{
+use crate::sim::body::body_layout::{REST_POSITIONS, TRIANGLES};
+use crate::sim::body::{
     BodyCommand, BodyParams, ControlSampling, FishBody, Integrator, PectoralFins, SwimMc,
     SwimParams,
 };
@@ -295,7 +295,7 @@ fn braking_fins_reduce_speed() {
 /// degrees) on a body with `body` parameters, the controllers sampled as
 /// `sampling` says.
 fn resolution_row(body: BodyParams, sampling: ControlSampling) -> (f32, [f32; 4]) {
-    use super::turn_mc::{SteeringMap, TurnDirection, measure_turn_deg_with};
+    use crate::sim::body::turn_mc::{SteeringMap, TurnDirection, measure_turn_deg_with};
     let top = speed_with(SwimParams::MAX, body, sampling);
     let turns = SteeringMap::DEFAULT
         .keys
@@ -328,7 +328,7 @@ fn the_default_body_is_converged() {
         assert!(change(a, b) < 0.03, "key turn {k}: {a}° → {b}°");
     }
     // The bridge's top speed is the body's.
-    let bridge = crate::sim::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
+    let bridge = crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
     assert!(
         change(bridge, top) < 0.03,
         "bridge {bridge}, body {top} BL/s"
@@ -412,7 +412,7 @@ fn convergence_table() {
 #[test]
 #[ignore]
 fn wave_table() {
-    use super::body_layout::{RING_COUNT, TAIL_FIN_NODES, ring_nodes};
+    use crate::sim::body::body_layout::{RING_COUNT, TAIL_FIN_NODES, ring_nodes};
     for lag_deg in [0.0f32, 30.0, 90.0, 180.0] {
         let mut fish = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
         let mut mc = SwimMc::default();
@@ -610,7 +610,7 @@ fn step_cost() {
 #[test]
 #[ignore]
 fn turn_table() {
-    use super::turn_mc::{
+    use crate::sim::body::turn_mc::{
         TurnDirection, TurnMc, find_steering_map, measure_heading_change_deg, measure_turn_deg,
     };
     let (map, measured) = find_steering_map();
@@ -643,7 +643,7 @@ fn turn_table() {
 }
 
 mod turning {
-    use super::super::turn_mc::{
+    use crate::sim::body::turn_mc::{
         SteeringMap, TurnDirection, TurnMc, measure_heading_change_deg, measure_turn_deg,
         mirror_muscles,
     };
@@ -735,7 +735,7 @@ fn a_tail_fin_folded_over_the_last_ring_springs_back() {
     // The fin's tips mirrored through the plane of the last ring, to the front of
     // it: with the tips tied to that ring only, every spring kept its rest
     // length there and the fold was a second rest shape that fish fell into.
-    use super::body_layout::{TAIL_FIN_NODES, ring_nodes};
+    use crate::sim::body::body_layout::{TAIL_FIN_NODES, ring_nodes};
     let mut fish = FishBody::new(LENGTH_M, Vec3::ZERO, Vec3::X);
     assert!(!fish.tail_fin_folded());
     let (positions, _) = fish.nodes_mut();

@@ -57,8 +57,8 @@
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{FRAC_PI_2, PI, TAU};
 
-use super::body_layout::{MUSCLE_COUNT, MuscleSegment, Side, muscle_index};
-use super::motor_controller::ControlSampling;
+use crate::sim::body::body_layout::{MUSCLE_COUNT, MuscleSegment, Side, muscle_index};
+use crate::sim::body::motor_controller::ControlSampling;
 
 /// Straight swimming before a measured turn, seconds. 3.0, chosen: the fish is at
 /// its top speed after about 1 s.
@@ -424,7 +424,7 @@ pub fn measure_turn_deg(params: TurnParams, direction: TurnDirection) -> f32 {
     measure_turn_deg_with(
         params,
         direction,
-        super::BodyParams::default(),
+        crate::sim::body::BodyParams::default(),
         ControlSampling::default(),
     )
 }
@@ -434,7 +434,7 @@ pub fn measure_turn_deg(params: TurnParams, direction: TurnDirection) -> f32 {
 pub fn measure_turn_deg_with(
     params: TurnParams,
     direction: TurnDirection,
-    body: super::BodyParams,
+    body: crate::sim::body::BodyParams,
     sampling: ControlSampling,
 ) -> f32 {
     let mut mc = TurnMc::default();
@@ -492,7 +492,7 @@ pub fn measure_heading_change_deg(mc: &mut TurnMc, mirror_swim: bool) -> f32 {
     measure_heading_change_deg_with(
         mc,
         mirror_swim,
-        super::BodyParams::default(),
+        crate::sim::body::BodyParams::default(),
         ControlSampling::default(),
     )
 }
@@ -502,12 +502,12 @@ pub fn measure_heading_change_deg(mc: &mut TurnMc, mirror_swim: bool) -> f32 {
 pub fn measure_heading_change_deg_with(
     mc: &mut TurnMc,
     mirror_swim: bool,
-    body: super::BodyParams,
+    body: crate::sim::body::BodyParams,
     sampling: ControlSampling,
 ) -> f32 {
-    use super::{BodyCommand, FishBody, PectoralFins, SwimMc, SwimParams};
+    use crate::sim::body::{BodyCommand, FishBody, PectoralFins, SwimMc, SwimParams};
     use glam::Vec3;
-    let length_m = super::body_layout::PAPER_BODY_LENGTH;
+    let length_m = crate::sim::body::body_layout::PAPER_BODY_LENGTH;
     let mut fish = FishBody::with_params(length_m, Vec3::ZERO, Vec3::X, body);
     let mut swim = SwimMc::default();
     let dt = fish.dt_secs();
@@ -589,11 +589,11 @@ pub fn measure_heading_change_deg_with(
 /// angle (30°, 45°, 60°, 90°) on left turns, assuming the turn grows with r (checked
 /// by the tests). Returns the map and the measured angle of each key.
 pub fn find_steering_map() -> (SteeringMap, [f32; 4]) {
-    find_steering_map_with(super::BodyParams::default())
+    find_steering_map_with(crate::sim::body::BodyParams::default())
 }
 
 /// [`find_steering_map`] on a body with `body` parameters.
-pub fn find_steering_map_with(body: super::BodyParams) -> (SteeringMap, [f32; 4]) {
+pub fn find_steering_map_with(body: crate::sim::body::BodyParams) -> (SteeringMap, [f32; 4]) {
     let measure = |p: TurnParams| {
         measure_turn_deg_with(p, TurnDirection::Left, body, ControlSampling::default())
     };

@@ -29,8 +29,8 @@ use rustfft::num_complex::Complex;
 use serde::{Deserialize, Serialize};
 use std::f32::consts::TAU;
 
-use super::muscle_spline::MuscleSpline;
 use crate::sim::body::MUSCLE_COUNT;
+use crate::sim::learning::muscle_spline::MuscleSpline;
 
 /// Spectral power per sample and muscle below which a peak is rounding noise, not
 /// a mode (an amplitude of about 10⁻⁴).
@@ -340,7 +340,7 @@ pub fn abstract_controls(controls: &MuscleSpline, settings: &AbstractionSettings
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::learning::abstraction::*;
     use crate::sim::learning::muscle_spline::Interpolation;
 
     #[test]

@@ -6,7 +6,7 @@
 //!
 //! The fish starts brain-dead: every sample uniformly random in [0, 1] (seeded), no
 //! warm start. One annealing step = one perturbation = one forward simulation
-//! ([`super::evaluate`]). A move adds Gaussian noise of standard deviation σ to 1 …
+//! ([`crate::sim::learning::evaluate`]). A move adds Gaussian noise of standard deviation σ to 1 …
 //! [`AnnealingSchedule::entries_per_move`] random samples (a time index and a
 //! muscle each, clamped to [0, 1]). Metropolis rule: a move that lowers E is kept; a
 //! move that raises it by ΔE is kept with probability exp(−ΔE / T).
@@ -29,9 +29,9 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
-use super::muscle_spline::MuscleSpline;
-use super::objective::{Evaluation, TrainingSetup, evaluate};
 use crate::sim::body::MUSCLE_COUNT;
+use crate::sim::learning::muscle_spline::MuscleSpline;
+use crate::sim::learning::objective::{Evaluation, TrainingSetup, evaluate};
 
 /// The temperature and step schedule.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -358,8 +358,8 @@ impl Trainer {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
     use crate::sim::body::BodyParams;
+    use crate::sim::learning::annealing::*;
 
     pub(crate) fn cheap_setup() -> TrainingSetup {
         TrainingSetup {

@@ -4,11 +4,13 @@
 
 use std::time::Instant;
 
-use super::learned_motor::{MEASURE_SECS, measure_hand_tuned_swim, measure_motion_with};
-use super::race::PAPER_RACE_STEPS;
-use super::*;
 use crate::sim::body::BodyParams;
-use crate::sim::physical_fish::BodySpecies;
+use crate::sim::body::physical_fish::BodySpecies;
+use crate::sim::learning::learned_motor::{
+    MEASURE_SECS, measure_hand_tuned_swim, measure_motion_with,
+};
+use crate::sim::learning::race::PAPER_RACE_STEPS;
+use crate::sim::learning::*;
 
 #[test]
 #[ignore = "figures for docs/learning.md: about a minute in release"]

@@ -36,14 +36,14 @@ use glam::Vec3;
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{PI, TAU};
 
-use super::abstraction::{AbstractedController, FourierMode};
-use super::objective::{Task, heading_rad, unwrap_angle};
+use crate::sim::body::physical_fish::BodySpecies;
 use crate::sim::body::turn_mc::mirror_muscles;
 use crate::sim::body::{
     BodyParams, FishBody, MUSCLE_COUNT, MuscleSegment, PectoralFins, Side, SwimMc,
     body_layout::muscle_index,
 };
-use crate::sim::physical_fish::BodySpecies;
+use crate::sim::learning::abstraction::{AbstractedController, FourierMode};
+use crate::sim::learning::objective::{Task, heading_rad, unwrap_angle};
 
 /// Most modes a learned motor runs (oscillators), count.
 pub const MAX_MODES: usize = 4;
@@ -510,7 +510,7 @@ fn finite_non_negative(x: f32) -> f32 {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::learning::learned_motor::*;
     use crate::sim::learning::learned_set::LearnedControllerSet;
 
     pub(crate) fn shipped_map() -> LearnedMotorMap {

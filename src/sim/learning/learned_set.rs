@@ -6,12 +6,14 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::abstraction::{AbstractionSettings, abstract_controls};
-use super::annealing::{AnnealingSchedule, Trainer};
-use super::learned_motor::{LearnedController, LearnedMapError, LearnedMotorMap, MAX_MODES};
-use super::muscle_spline::MuscleSpline;
-use super::objective::{Task, TrainingSetup};
-use crate::sim::physical_fish::BodySpecies;
+use crate::sim::body::physical_fish::BodySpecies;
+use crate::sim::learning::abstraction::{AbstractionSettings, abstract_controls};
+use crate::sim::learning::annealing::{AnnealingSchedule, Trainer};
+use crate::sim::learning::learned_motor::{
+    LearnedController, LearnedMapError, LearnedMotorMap, MAX_MODES,
+};
+use crate::sim::learning::muscle_spline::MuscleSpline;
+use crate::sim::learning::objective::{Task, TrainingSetup};
 
 /// Version written by this code and the only one read.
 pub const FORMAT_VERSION: u32 = 1;
@@ -216,7 +218,7 @@ impl LearnedControllerSet {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::learning::learned_set::*;
 
     /// The shipped set's recipe.
     pub(crate) fn pretrained_recipe() -> LearnedControllerSet {
@@ -248,7 +250,7 @@ mod tests {
 
 #[cfg(test)]
 mod file_tests {
-    use super::*;
+    use crate::sim::learning::learned_set::*;
     use serde_json::{Value, json};
 
     fn shipped() -> LearnedControllerSet {
@@ -383,9 +385,9 @@ mod file_tests {
 
 #[cfg(test)]
 mod live_tests {
-    use super::*;
     use crate::sim::body::BodyParams;
     use crate::sim::learning::learned_motor::{LearnedMotor, MEASURE_SECS, measure_motion_with};
+    use crate::sim::learning::learned_set::*;
 
     /// The whole of §4 live, on a small budget: two drills of 1000 steps from a
     /// brain-dead start, abstracted, mapped, driven. Seeds 4 (straight) and 5

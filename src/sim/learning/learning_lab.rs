@@ -13,16 +13,16 @@
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::abstraction::{Abstraction, AbstractionSettings, abstract_controls};
-use super::annealing::{AnnealingSchedule, Trainer};
-use super::learned_set::{LearnedControllerSet, TrainedDrill, routine_drills};
-use super::objective::{Task, TrainingSetup};
-use super::race::{PAPER_RACE_STEPS, Race, RaceEntrant};
-use super::target_tracking::BuoyTracker;
+use crate::sim::body::motor_bridge::to_tank_frame;
+use crate::sim::body::physical_fish::{BodySpecies, PhysicalFish};
 use crate::sim::body::{BodyParams, NODE_COUNT};
-use crate::sim::motor_bridge::to_tank_frame;
-use crate::sim::physical_fish::{BodySpecies, PhysicalFish};
-use crate::sim::tank::Tank;
+use crate::sim::common::tank::Tank;
+use crate::sim::learning::abstraction::{Abstraction, AbstractionSettings, abstract_controls};
+use crate::sim::learning::annealing::{AnnealingSchedule, Trainer};
+use crate::sim::learning::learned_set::{LearnedControllerSet, TrainedDrill, routine_drills};
+use crate::sim::learning::objective::{Task, TrainingSetup};
+use crate::sim::learning::race::{PAPER_RACE_STEPS, Race, RaceEntrant};
+use crate::sim::learning::target_tracking::BuoyTracker;
 
 /// Which controllers drive the demo fish.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -44,7 +44,7 @@ pub enum SetSource {
     Loaded,
 }
 
-/// A hand-tuned fish swimming between the buoys: the bridge (`motor_bridge.rs`)
+/// A hand-tuned fish swimming between the buoys: the bridge (`body/motor_bridge.rs`)
 /// turns "swim to the buoy at full speed" into swim-MC and turn-MC commands.
 #[derive(Clone, Debug)]
 struct HandTunedTracker {
@@ -196,7 +196,7 @@ impl LearningLab {
     /// Length of one step of the demo fish and the race, seconds (the fish
     /// world's one step).
     pub fn dt_secs(&self) -> f32 {
-        crate::sim::paper_time::FISH_STEP_SECS
+        crate::sim::common::paper_time::FISH_STEP_SECS
     }
     /// Body steps the demo fish has swum since it (re)started.
     pub fn demo_steps(&self) -> u64 {
@@ -457,7 +457,7 @@ impl LearningLab {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::learning::learning_lab::*;
 
     fn lab(steps: u64) -> LearningLab {
         LearningLab::new(

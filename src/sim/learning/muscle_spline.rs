@@ -183,7 +183,7 @@ impl MuscleSpline {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::learning::muscle_spline::*;
 
     fn ramp(interpolation: Interpolation) -> MuscleSpline {
         let samples = (0..5).map(|i| [i as f32 / 4.0; MUSCLE_COUNT]).collect();

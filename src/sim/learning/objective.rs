@@ -25,9 +25,9 @@ use glam::Vec3;
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{PI, TAU};
 
-use super::muscle_spline::{DEFAULT_SAMPLE_COUNT, Interpolation, MuscleSpline};
+use crate::sim::body::physical_fish::BodySpecies;
 use crate::sim::body::{BodyParams, FishBody, MUSCLE_COUNT, PectoralFins};
-use crate::sim::physical_fish::BodySpecies;
+use crate::sim::learning::muscle_spline::{DEFAULT_SAMPLE_COUNT, Interpolation, MuscleSpline};
 
 /// Penalty reported instead of a non-finite objective (the body guards against
 /// NaN, so this is never expected), dimensionless.
@@ -297,7 +297,7 @@ pub fn evaluate(setup: &TrainingSetup, controls: &MuscleSpline) -> Evaluation {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::learning::objective::*;
 
     fn cheap() -> TrainingSetup {
         TrainingSetup {

@@ -15,10 +15,10 @@
 
 use glam::Vec3;
 
-use super::annealing::Checkpoint;
-use super::muscle_spline::MuscleSpline;
+use crate::sim::body::physical_fish::BodySpecies;
 use crate::sim::body::{BodyParams, FishBody, PectoralFins};
-use crate::sim::physical_fish::BodySpecies;
+use crate::sim::learning::annealing::Checkpoint;
+use crate::sim::learning::muscle_spline::MuscleSpline;
 
 /// Annealing steps of the six sharks of Fig. 7: 90, then 1350 more each.
 pub const PAPER_RACE_STEPS: [u64; 6] = [90, 1440, 2790, 4140, 5490, 6840];
@@ -144,9 +144,9 @@ impl Race {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
     use crate::sim::learning::annealing::{AnnealingSchedule, Trainer};
     use crate::sim::learning::objective::TrainingSetup;
+    use crate::sim::learning::race::*;
 
     #[test]
     fn sharks_trained_longer_race_farther() {

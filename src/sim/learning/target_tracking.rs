@@ -8,16 +8,16 @@
 //! its heading and the buoy ([`FULL_TURN_ERROR_DEG`] or more asks for the largest
 //! learned turn rate). Its heading is the fore body's direction averaged over
 //! [`HEADING_SMOOTHING_SECS`] (the fore body yaws with every tail beat, as in
-//! `physical_fish.rs`). A buoy is reached when the centre of mass comes within
+//! `body/physical_fish.rs`). A buoy is reached when the centre of mass comes within
 //! [`REACH_RADIUS_BODY_LENGTHS`]; the fish then makes for the other one, and so on.
 //! Everything is in the body frame of the start (z up); the buoys' heights are
 //! ignored.
 
 use glam::{Vec2, Vec3};
 
-use super::learned_motor::{LearnedMotor, LearnedMotorMap};
+use crate::sim::body::physical_fish::BodySpecies;
 use crate::sim::body::{BodyParams, FishBody, PectoralFins};
-use crate::sim::physical_fish::BodySpecies;
+use crate::sim::learning::learned_motor::{LearnedMotor, LearnedMotorMap};
 
 /// Heading error that asks for the largest learned turn, degrees. 30, chosen:
 /// smaller errors ask for proportionally gentler turns, so the fish does not
@@ -26,7 +26,7 @@ pub const FULL_TURN_ERROR_DEG: f32 = 30.0;
 /// A buoy is reached within this distance of the centre of mass, body lengths.
 /// 1.0, chosen: the fish passes beside it, as in Fig. 9.
 pub const REACH_RADIUS_BODY_LENGTHS: f32 = 1.0;
-/// Time constant of the heading average, seconds (0.5, as `physical_fish.rs`).
+/// Time constant of the heading average, seconds (0.5, as `body/physical_fish.rs`).
 pub const HEADING_SMOOTHING_SECS: f32 = 0.5;
 
 /// A fish swimming between two buoys on learned controllers.
@@ -136,8 +136,8 @@ impl BuoyTracker {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
     use crate::sim::learning::learned_set::LearnedControllerSet;
+    use crate::sim::learning::target_tracking::*;
 
     #[test]
     fn a_learned_fish_swims_to_both_buoys_in_bounded_time() {

@@ -19,9 +19,9 @@
 
 use glam::Vec3;
 
-use super::fish::heading_of;
-use super::spatial_grid::{MAX_NEAREST, Nearest, SpatialGrid};
-use super::steering::limit;
+use crate::sim::common::fish::heading_of;
+use crate::sim::common::spatial_grid::{MAX_NEAREST, Nearest, SpatialGrid};
+use crate::sim::common::steering::limit;
 
 /// Strength of the far field's pull relative to the near neighbours' (0–1).
 /// Default 0.5 (tuned): strong enough to merge schools that see each other
@@ -61,7 +61,7 @@ pub struct Perception {
     /// Largest steering acceleration, m/s².
     pub max_force_m_per_s2: f32,
     /// How many of the nearest seen neighbours a fish heeds (topological range,
-    /// at most [`crate::sim::spatial_grid::MAX_NEAREST`]).
+    /// at most [`crate::sim::common::spatial_grid::MAX_NEAREST`]).
     pub max_neighbours: usize,
     /// Neighbours closer than this push the fish away (its personal space),
     /// metres; farther ones only attract and align it.
@@ -233,7 +233,7 @@ pub struct NeighbourForces {
     /// How much the fish needs to separate now, 0–1: the mean intrusion of its
     /// heeded neighbours into its personal space, (1/n) Σ max(0, 1 − d / personal
     /// space). Classic mode ranks separation by it (see
-    /// [`super::control_mode::combine`]); the force itself grows with the summed
+    /// [`crate::sim::boids::control_mode::combine`]); the force itself grows with the summed
     /// intrusion.
     pub separation_need: f32,
     /// How much the fish needs to close up now, 0–1: its distance from the
@@ -588,8 +588,8 @@ pub fn avoid_neighbours(
 
 #[cfg(test)]
 mod tests {
-    use super::*;
-    use crate::sim::fish::Fish;
+    use crate::sim::boids::forces::*;
+    use crate::sim::common::fish::Fish;
 
     const PERCEPTION: Perception = Perception {
         vision_distance_m: 2.0,

@@ -1,9 +1,9 @@
 //! The bridge from the steering layer of the physics scene to the muscles: a
-//! *desired velocity* (what the boid forces of `boid_forces.rs` and `steering.rs`
+//! *desired velocity* (what the boid forces of `boids/forces.rs` and `common/steering.rs`
 //! ask of a point-mass fish) becomes motor commands of Tu & Terzopoulos 1994
 //! §3.3–3.4: a swim-MC speed, a steering bend of the turning segments and
 //! pectoral fin angles. (The reef's minds do not use it: their behaviour
-//! routines pick the motor controllers themselves, `motor_choice.rs`.)
+//! routines pick the motor controllers themselves, `reef/motor_choice.rs`.)
 //!
 //! | desired velocity d, fish heading f           | command |
 //! |----------------------------------------------|---------|
@@ -17,7 +17,7 @@
 //! (`body/turn_mc.rs`), and one restarted every step never finishes its quick
 //! stroke. The steering command holds the turning side's bend for as long as the
 //! heading error lasts, proportionally to it, and the tail's thrust on the bent
-//! body yaws the fish at up to about 30–41°/s (measured in `physical_fish.rs`,
+//! body yaws the fish at up to about 30–41°/s (measured in `body/physical_fish.rs`,
 //! `agility`). The discrete turn-MC stays for hand commands (`PhysicalFish::turn`).
 //!
 //! Frames: the steering layer lives in the tank frame (y up); the body in its own
@@ -29,7 +29,7 @@ use std::f32::consts::PI;
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::body::PectoralFins;
+use crate::sim::body::PectoralFins;
 
 /// Swimming speed of the default body at the swim-MC's top setting, body lengths
 /// per second. 0.6, measured (`body::tests::speed_table`: 0.585 at 2.3 Hz and full
@@ -175,7 +175,7 @@ impl MotorBridge {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::body::motor_bridge::*;
 
     #[test]
     fn frames_convert_back_and_forth_and_up_is_up() {

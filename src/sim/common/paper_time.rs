@@ -13,7 +13,7 @@
 //! "Time scale"). The mind reads the same unit: the time since the last meal Δt_H
 //! and since the last mating Δt_L are counted in paper time units, so hunger and
 //! libido grow at the paper's p0 and p1 per unit, 40 × p0 and 40 × p1 per second
-//! (`mind/mental_state.rs`).
+//! (`reef/mind/mental_state.rs`).
 //!
 //! Shoal's fish world advances in steps of [`FISH_STEP_SECS`] = 0.055 s of
 //! simulated time = 2.2 paper time units, the length of 40 of the paper's steps.
@@ -35,7 +35,7 @@ pub fn paper_units(secs: f32) -> f32 {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::common::paper_time::*;
 
     #[test]
     fn a_fish_step_is_forty_of_the_papers_steps() {

@@ -11,9 +11,9 @@ use std::f32::consts::{PI, TAU};
 use glam::{Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 
-use super::fish::Fish;
-use super::obstacle::{Obstacle, convex_hull};
-use super::steering::SteeringParams;
+use crate::sim::common::fish::Fish;
+use crate::sim::common::obstacle::{Obstacle, convex_hull};
+use crate::sim::common::steering::SteeringParams;
 
 /// Most stingrays a world holds. Default 20: enough to pave a corner of the sand
 /// and show the polygon rule; more would leave the fish no floor.
@@ -170,7 +170,7 @@ pub fn cluster_obstacles(stingrays: &[Stingray], floor_y_m: f32, out: &mut Vec<O
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::boids::stingray::*;
 
     fn ray_at(x: f32, z: f32) -> Stingray {
         new_stingray(Vec3::new(x, 0.4, z), 0.0, 0.0)

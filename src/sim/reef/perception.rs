@@ -19,8 +19,8 @@
 
 use glam::Vec3;
 
-use super::environment::Environment;
-use super::obstacle::Obstacle;
+use crate::sim::common::obstacle::Obstacle;
+use crate::sim::reef::environment::Environment;
 
 /// The paper's field of view, radians (300°).
 pub const FIELD_OF_VIEW_RAD: f32 = 300.0 * std::f32::consts::PI / 180.0;
@@ -392,8 +392,8 @@ fn ray_ellipsoid(o: Vec3, dir: Vec3, centre: Vec3, axis: Vec3, a: f32, b: f32) -
 
 #[cfg(test)]
 mod tests {
-    use super::*;
-    use crate::sim::tank::Tank;
+    use crate::sim::common::tank::Tank;
+    use crate::sim::reef::perception::*;
 
     fn eye() -> Eye {
         Eye::new(Vec3::new(0.0, 2.0, 0.0), Vec3::X, 5.0)

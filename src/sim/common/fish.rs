@@ -6,7 +6,7 @@ use std::f32::consts::TAU;
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::steering::{SteeringParams, limit};
+use crate::sim::common::steering::{SteeringParams, limit};
 
 /// Tail beats per second of a fish that is barely moving, in hertz.
 /// Default 1.5 Hz: a resting fish still fans its tail slowly, so the renderer
@@ -126,7 +126,7 @@ pub fn heading_of(velocity_m_per_s: Vec3) -> Vec3 {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::common::fish::*;
 
     #[test]
     fn heading_follows_velocity_and_falls_back_to_plus_x_when_still() {

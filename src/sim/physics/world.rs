@@ -1,8 +1,8 @@
 //! The "Physics fish" tank: muscle-driven fish (Tu & Terzopoulos 1994 §3) steered by
-//! the same steering layer as the boids (SIMBA forces of `boid_forces.rs`,
-//! containment, obstacle avoidance and wander of `steering.rs`), through the
-//! desired-velocity bridge of `motor_bridge.rs`, in a slowly varying current
-//! (`water_current.rs`).
+//! the same steering layer as the boids (SIMBA forces of `boids/forces.rs`,
+//! containment, obstacle avoidance and wander of `common/steering.rs`), through the
+//! desired-velocity bridge of `body/motor_bridge.rs`, in a slowly varying current
+//! (`common/water_current.rs`).
 //!
 //! One step (Δt = the body's 0.055 s):
 //! 1. every fish is seen where its body is (centre of mass) and heading where its
@@ -11,7 +11,7 @@
 //!    velocity integrated like a boid's, turning at most 29°/s: the fish's wish,
 //!    which its slow muscles then chase;
 //! 3. the bridge turns the intended velocity into a swim-MC speed, a steering
-//!    bend of the turning segments and fin angles (`motor_bridge.rs`; or the
+//!    bend of the turning segments and fin angles (`body/motor_bridge.rs`; or the
 //!    teacher's hand command drives the selected fish, whose turns are turn-MC
 //!    turns);
 //! 4. each body takes one implicit step in the water at its centre;
@@ -24,17 +24,17 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
-use super::boid_forces::{self, Perception};
-use super::control_mode::{self, ControlMode, GROUP_WEIGHTS};
-use super::fish::Fish;
-use super::motor_bridge::MotorIntent;
-use super::obstacle::Obstacle;
-use super::physical_fish::{BodySpecies, PhysicalFish};
-use super::school_metrics::{self, SchoolMetrics};
-use super::spatial_grid::SpatialGrid;
-use super::steering::{self, SteeringParams};
-use super::tank::Tank;
-use super::water_current::WaterCurrent;
+use crate::sim::body::motor_bridge::MotorIntent;
+use crate::sim::body::physical_fish::{BodySpecies, PhysicalFish};
+use crate::sim::boids::control_mode::{self, ControlMode, GROUP_WEIGHTS};
+use crate::sim::boids::forces::{self, Perception};
+use crate::sim::common::fish::Fish;
+use crate::sim::common::obstacle::Obstacle;
+use crate::sim::common::school_metrics::{self, SchoolMetrics};
+use crate::sim::common::spatial_grid::SpatialGrid;
+use crate::sim::common::steering::{self, SteeringParams};
+use crate::sim::common::tank::Tank;
+use crate::sim::common::water_current::WaterCurrent;
 
 /// Most physical fish in one tank.
 pub const MAX_PHYSICAL_FISH: usize = 300;
@@ -47,7 +47,7 @@ pub const MAX_PHYSICAL_SHARKS: usize = 3;
 const RESPONSE_TIME_SECS: f32 = 0.25;
 /// How far ahead in time containment predicts the path, seconds. 10, chosen: at
 /// cruising speed (0.2 m/s for the default fish) the fish reacts 2 m before the
-/// margin, time for the body's held bend (26–28°/s, `motor_bridge.rs`) to turn
+/// margin, time for the body's held bend (26–28°/s, `body/motor_bridge.rs`) to turn
 /// it round with room to spare.
 const CONTAINMENT_LOOK_AHEAD_SECS: f32 = 10.0;
 /// Room kept from the glass, floor and surface by the predicted path, body
@@ -65,11 +65,12 @@ const WANDER_JITTER_RAD: f32 = 0.36;
 /// Swimming speed of a fish whose head touched something, fraction of its top
 /// speed: the turn-MC's minimum thrust (`motor_bridge::MIN_TURN_SPEED_FRACTION`),
 /// enough to turn away, too little to crush the body.
-pub(crate) const TOUCH_SPEED_FRACTION: f32 = super::motor_bridge::MIN_TURN_SPEED_FRACTION;
+pub(crate) const TOUCH_SPEED_FRACTION: f32 =
+    crate::sim::body::motor_bridge::MIN_TURN_SPEED_FRACTION;
 
 /// Fastest turn of the intended velocity, radians per second: 29°/s, a little
 /// faster than the body's measured 26–28°/s under continuous steering
-/// (`motor_bridge.rs`, `physical_fish::agility`), so the body always has a turn
+/// (`body/motor_bridge.rs`, `physical_fish::agility`), so the body always has a turn
 /// to chase but the steering layer never plans a path the body cannot swim.
 const MAX_INTENT_TURN_RAD_PER_SEC: f32 = 0.5;
 /// Largest angle between the intended velocity and where the body points, radians
@@ -326,7 +327,7 @@ impl PhysicsWorld {
     pub fn dt_secs(&self) -> f32 {
         self.animals
             .first()
-            .map_or(super::body::BodyParams::default().dt_secs, |a| {
+            .map_or(crate::sim::body::BodyParams::default().dt_secs, |a| {
                 a.body().dt_secs()
             })
     }
@@ -484,7 +485,7 @@ impl PhysicsWorld {
             vision_angle_rad: 300f32.to_radians(),
             max_speed_m_per_s: a.top_speed_m_per_s(),
             max_force_m_per_s2: a.top_speed_m_per_s() / RESPONSE_TIME_SECS,
-            max_neighbours: boid_forces::TOPOLOGICAL_NEIGHBOURS,
+            max_neighbours: forces::TOPOLOGICAL_NEIGHBOURS,
             separation_distance_m: 1.2 * a.body_length_m(),
             response_time_s: RESPONSE_TIME_SECS,
             // Muscle fish are few and far apart: every heeded neighbour counts.
@@ -512,14 +513,14 @@ impl PhysicsWorld {
                     speed_fraction: command.speed_fraction.clamp(0.0, 1.0),
                     start_turn_deg: None,
                     steer: 0.0,
-                    fins: super::body::PectoralFins::pitch(command.pitch_rad.clamp(-0.5, 0.5)),
+                    fins: crate::sim::body::PectoralFins::pitch(command.pitch_rad.clamp(-0.5, 0.5)),
                 }
             } else if self.behaviour == PhysicsBehaviour::Drift {
                 MotorIntent {
                     speed_fraction: 0.0,
                     start_turn_deg: None,
                     steer: 0.0,
-                    fins: super::body::PectoralFins::NEUTRAL,
+                    fins: crate::sim::body::PectoralFins::NEUTRAL,
                 }
             } else {
                 let steering = self.steering(i, &perception_of(&self.animals[i]), &sharks);
@@ -561,7 +562,7 @@ impl PhysicsWorld {
             max_speed_m_per_s: top,
             min_speed_m_per_s: 0.3 * top,
             cruise_speed_body_lengths_per_s: 0.7
-                * super::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC,
+                * crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC,
             max_force_m_per_s2: max_force,
             wander_jitter_rad: WANDER_JITTER_RAD,
             containment_look_ahead_s: CONTAINMENT_LOOK_AHEAD_SECS,
@@ -584,7 +585,7 @@ impl PhysicsWorld {
             params.containment_margin_m,
             top,
         );
-        let containment = boid_forces::steer_towards(velocity + containment, velocity, perception);
+        let containment = forces::steer_towards(velocity + containment, velocity, perception);
         let avoidance = steering::limit(
             steering::avoid_obstacles(
                 position,
@@ -600,7 +601,7 @@ impl PhysicsWorld {
         let (alignment, cohesion, separation) = if is_fish {
             // The fish knows its own wish; the others it sees by their bodies.
             let seen_self = std::mem::replace(&mut self.seen_velocities_m_per_s[i], velocity);
-            let forces = boid_forces::neighbour_forces(
+            let forces = forces::neighbour_forces(
                 &self.seen_positions_m,
                 &self.seen_velocities_m_per_s,
                 i,
@@ -669,7 +670,7 @@ impl PhysicsWorld {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::physics::world::*;
     use crate::sim::{World, WorldConfig};
 
     fn world(
@@ -813,7 +814,7 @@ mod tests {
             w.step();
         }
         let after = w.animals()[0].heading();
-        let turned = crate::sim::motor_bridge::level_turn_deg(before, after);
+        let turned = crate::sim::body::motor_bridge::level_turn_deg(before, after);
         assert!((60.0..=120.0).contains(&turned), "turned {turned}°");
     }
 

@@ -120,7 +120,7 @@ pub struct Combined {
 /// How much each urge is needed now, 0–1, read from the forces themselves:
 /// ‖force‖ / maximum force. The boid layer uses it for every urge but
 /// separation, whose force saturates in any school (see
-/// [`super::boid_forces::NeighbourForces::separation_need`]).
+/// [`crate::sim::boids::forces::NeighbourForces::separation_need`]).
 pub fn needs_from_forces(forces: &[Vec3; 5], max_force_m_per_s2: f32) -> [f32; 5] {
     std::array::from_fn(|i| {
         if max_force_m_per_s2 > 0.0 {
@@ -229,12 +229,12 @@ fn sanitize_weight(w: f32) -> f32 {
 }
 
 fn limit_finite(v: Vec3, max_len: f32) -> Vec3 {
-    super::steering::limit(v, max_len)
+    crate::sim::common::steering::limit(v, max_len)
 }
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::boids::control_mode::*;
     use rand::SeedableRng;
     use rand_chacha::ChaCha8Rng;
 

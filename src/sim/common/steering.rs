@@ -14,9 +14,9 @@ use glam::Vec3;
 use rand::Rng;
 use serde::{Deserialize, Serialize};
 
-use super::fish::Fish;
-use super::obstacle::Obstacle;
-use super::tank::Tank;
+use crate::sim::common::fish::Fish;
+use crate::sim::common::obstacle::Obstacle;
+use crate::sim::common::tank::Tank;
 
 /// Fraction of the wander pitch that fades away each step (dimensionless).
 /// Default 0.01: at 60 steps/s a tilt halves in about 1.2 s, so fish glide
@@ -637,8 +637,8 @@ fn signed_unit(rng: &mut impl Rng) -> f32 {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
-    use crate::sim::world::DT_SECS;
+    use crate::sim::boids::world::DT_SECS;
+    use crate::sim::common::steering::*;
     use rand::SeedableRng;
     use rand_chacha::ChaCha8Rng;
 

@@ -24,8 +24,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::habits::{FishKind, Habits};
-use super::mental_state::MentalState;
+use crate::sim::reef::mind::habits::{FishKind, Habits};
+use crate::sim::reef::mind::mental_state::MentalState;
 
 /// What a fish means to do.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -157,7 +157,7 @@ impl Default for IntentionGenerator {
 impl IntentionGenerator {
     /// Chooses this step's intention and target. `state.fear` must already
     /// include the seen predators (see `MentalState::update`). `partner`: the
-    /// fish is bonded in a courtship sequence (past looping, `courtship.rs`) and
+    /// fish is bonded in a courtship sequence (past looping, `reef/courtship.rs`) and
     /// keeps courting this partner whatever its urges and ranks say; only a
     /// danger of collision interrupts it.
     pub fn decide(
@@ -284,9 +284,9 @@ fn body_length_unit(_habits: &Habits) -> f32 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::habits::Sex;
-    use super::super::mental_state::MentalConstants;
-    use super::*;
+    use crate::sim::reef::mind::habits::Sex;
+    use crate::sim::reef::mind::intention::*;
+    use crate::sim::reef::mind::mental_state::MentalConstants;
 
     fn state(hunger: f32, libido: f32, fear: f32) -> MentalState {
         let mut s = MentalState::new(&MentalConstants::nominal(3.0), 0.0, 0.0);

@@ -22,7 +22,7 @@ use std::f32::consts::{PI, TAU};
 
 use glam::Vec3;
 
-use super::tank::Tank;
+use crate::sim::common::tank::Tank;
 
 /// Period of the main gyre's breathing, seconds (47, chosen: slow next to a fish's
 /// seconds-long turns, fast enough to notice in a lesson).
@@ -83,7 +83,7 @@ impl WaterCurrent {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::common::water_current::*;
 
     fn grid(tank: &Tank, n: usize) -> impl Iterator<Item = Vec3> + '_ {
         (0..=n).flat_map(move |i| {

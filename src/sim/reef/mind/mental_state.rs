@@ -31,7 +31,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::sim::body::body_layout::PAPER_BODY_LENGTH;
-use crate::sim::paper_time::paper_units;
+use crate::sim::common::paper_time::paper_units;
 
 /// The paper's nominal digestion rate p0, per paper time unit.
 pub const NOMINAL_DIGESTION_RATE: f32 = 0.00067;
@@ -212,10 +212,10 @@ fn finite_or(x: f32, fallback: f32) -> f32 {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::reef::mind::mental_state::*;
 
     /// One paper time unit, seconds.
-    const UNIT: f32 = 1.0 / crate::sim::paper_time::PAPER_TIME_UNITS_PER_SEC;
+    const UNIT: f32 = 1.0 / crate::sim::common::paper_time::PAPER_TIME_UNITS_PER_SEC;
 
     #[test]
     fn hunger_matches_the_formula_by_hand() {
@@ -234,7 +234,7 @@ mod tests {
 
     #[test]
     fn hunger_and_libido_run_on_the_bodys_clock() {
-        use crate::sim::paper_time::PAPER_TIME_UNITS_PER_SEC;
+        use crate::sim::common::paper_time::PAPER_TIME_UNITS_PER_SEC;
         // One paper time unit is 1/40 s for the body and the mind alike.
         assert_eq!(
             crate::sim::body::BodyParams::default().paper_time_units_per_sec,

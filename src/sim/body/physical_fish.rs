@@ -1,6 +1,6 @@
 //! A muscle-driven fish in the tank: the spring–mass body of `body/` with its swim
 //! and turn motor controllers, the bridge from the steering layer
-//! (`motor_bridge.rs`) and a point-mass summary (centre of mass and velocity) that
+//! (`body/motor_bridge.rs`) and a point-mass summary (centre of mass and velocity) that
 //! the steering layer and the school metrics read like any boid.
 //!
 //! Species differ by size, mass and colour only (chosen): the body scales its masses with the square of its length
@@ -10,11 +10,11 @@
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::body::{FishBody, MUSCLE_COUNT, NODE_COUNT, PectoralFins, SwimMc, TurnMc};
-use super::fish::Fish;
-use super::motor_bridge::{
+use crate::sim::body::motor_bridge::{
     MotorBridge, MotorIntent, TOP_SPEED_BODY_LENGTHS_PER_SEC, to_body_frame, to_tank_frame,
 };
+use crate::sim::body::{FishBody, MUSCLE_COUNT, NODE_COUNT, PectoralFins, SwimMc, TurnMc};
+use crate::sim::common::fish::Fish;
 
 /// Body steps over which the fore body's direction is averaged into the heading.
 /// 8, chosen: 8 steps of 0.055 s = 0.44 s, one tail beat at the swim-MC's 2.3 Hz,
@@ -247,11 +247,11 @@ impl PhysicalFish {
         let (swim, turn) = (&self.swim, &self.turn);
         self.body
             .step_with(&intent.fins, to_body_frame(water_m_per_s), |t| {
-                let mut muscles = super::body::turn_mc::combine_swim_and_turn(
+                let mut muscles = crate::sim::body::turn_mc::combine_swim_and_turn(
                     &swim.muscles_at(&params, t),
                     &turn.muscles_at(t),
                 );
-                super::body::turn_mc::add_steering(&mut muscles, intent.steer);
+                crate::sim::body::turn_mc::add_steering(&mut muscles, intent.steer);
                 muscles
             });
         self.swim.advance(&params, dt);
@@ -327,9 +327,9 @@ impl PhysicalFish {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
     use crate::sim::body::SwimParams;
-    use crate::sim::motor_bridge::level_turn_deg;
+    use crate::sim::body::motor_bridge::level_turn_deg;
+    use crate::sim::body::physical_fish::*;
     use std::f32::consts::{FRAC_PI_2, PI};
 
     #[test]
@@ -366,7 +366,7 @@ mod tests {
     /// (at another phase of the tail beat).
     fn turn_at_speed_after_deg(angle_deg: f32, speed_fraction: f32, extra_steps: usize) -> f32 {
         turn_with_map_deg(
-            super::super::body::turn_mc::SteeringMap::DEFAULT,
+            crate::sim::body::turn_mc::SteeringMap::DEFAULT,
             angle_deg,
             speed_fraction,
             extra_steps,
@@ -375,7 +375,7 @@ mod tests {
 
     /// [`turn_at_speed_after_deg`] by a fish whose turn-MC uses `map`.
     fn turn_with_map_deg(
-        map: super::super::body::turn_mc::SteeringMap,
+        map: crate::sim::body::turn_mc::SteeringMap,
         angle_deg: f32,
         speed_fraction: f32,
         extra_steps: usize,
@@ -472,7 +472,7 @@ mod tests {
         // swim-MC(speed) reads the amplitude off the measured speed curve; if the
         // body changes and the curve is not re-measured, this fails.
         let full = straight_speed_at_amplitude(1.0);
-        let top = 0.5 * crate::sim::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
+        let top = 0.5 * crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
         assert!(
             (full - top).abs() < 0.03 * top,
             "full {full} m/s, top {top}"
@@ -507,7 +507,7 @@ mod tests {
     #[test]
     #[ignore]
     fn keys_over_swim_speeds() {
-        use super::super::body::turn_mc::{SteeringMap, key};
+        use crate::sim::body::turn_mc::{SteeringMap, key};
         let mut map = SteeringMap::DEFAULT;
         for k in 0..4 {
             let target = map.keys[k].0;
@@ -632,8 +632,8 @@ mod tests {
 /// `docs/fish-body.md`: `cargo test --lib turn_agility -- --ignored --nocapture`.
 #[cfg(test)]
 mod agility {
-    use super::*;
-    use crate::sim::motor_bridge::level_turn_deg;
+    use crate::sim::body::motor_bridge::level_turn_deg;
+    use crate::sim::body::physical_fish::*;
 
     /// A 0.5 m fish swims straight at `speed_fraction` for 3 s, then is told to
     /// swim at the same speed in a fixed direction `angle_deg` to its left.

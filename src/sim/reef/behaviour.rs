@@ -1,7 +1,7 @@
 //! The behaviour routines of Tu & Terzopoulos 1994 §6.4: given the intention
 //! and the focusser's target, bring the fish one step closer to its goal. Each
 //! routine returns the velocity the fish wants now (tank frame, m/s); for the
-//! muscle-driven body the routine's motor choice (`motor_choice.rs`) picks the
+//! muscle-driven body the routine's motor choice (`reef/motor_choice.rs`) picks the
 //! swim-MC, turn-MC and fin settings that swim it, and the eating fish and the
 //! courted female hover instead (the point-mass body is steered to the velocity
 //! by the boid layer).
@@ -11,7 +11,7 @@
 //! - *eating-food*: chase the food (chasing-target) until it is within reach of
 //!   the mouth, then hover (tail still, fins braking) while the vacuum sucks it
 //!   in (the world applies the suck-in);
-//! - *mating*: chase the partner (the courtship sequence is in `courtship.rs`);
+//! - *mating*: chase the partner (the courtship sequence is in `reef/courtship.rs`);
 //! - *leaving*: swim up the gradient of the light or temperature the fish likes;
 //! - *wandering*: the wander steering of the boid layer;
 //! - *escaping*: swim away from the predator, sideways if it is ahead;
@@ -253,7 +253,7 @@ pub fn leave(me: &Me, gradient: Vec3) -> Vec3 {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::reef::behaviour::*;
 
     fn me() -> Me {
         Me {

@@ -1,14 +1,14 @@
 //! What the world measures after every step, for the lab's charts: the school's
 //! order parameters ([`SchoolMetrics`]; the nearest-neighbour distance and the
-//! groups four times a second, see [`super::world::SPATIAL_METRICS_EVERY_STEPS`]), how often each SIMBA force was applied
+//! groups four times a second, see [`crate::sim::boids::world::SPATIAL_METRICS_EVERY_STEPS`]), how often each SIMBA force was applied
 //! (the control modes' lottery made visible), and the sharks' catches.
 
 use serde::Serialize;
 
-use super::school_metrics::SchoolMetrics;
+use crate::sim::common::school_metrics::SchoolMetrics;
 
 /// Steps in the "recent" window of force frequencies. Default 60 steps = 1 s at
-/// [`super::DT_SECS`]: long enough to average a random mode's lottery over a
+/// [`crate::sim::DT_SECS`]: long enough to average a random mode's lottery over a
 /// school (200 fish × 60 steps = 12,000 draws, about ±0.5 %), short enough to
 /// follow a slider within a second.
 pub const FORCE_WINDOW_STEPS: usize = 60;
@@ -20,7 +20,7 @@ pub struct WorldMetrics {
     /// of the fish.
     pub school: SchoolMetrics,
     /// Fraction of fish-steps on which each force (in
-    /// [`super::control_mode::Force::ALL`] order) was applied over the last
+    /// [`crate::sim::boids::control_mode::Force::ALL`] order) was applied over the last
     /// [`FORCE_WINDOW_STEPS`] boid steps.
     pub force_frequencies_recent: [f64; 5],
     /// The same since the start (or the last reset).
@@ -85,7 +85,7 @@ impl ForceWindow {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::boids::metrics::*;
 
     #[test]
     fn the_recent_window_forgets_steps_older_than_a_second() {

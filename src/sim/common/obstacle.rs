@@ -13,7 +13,7 @@
 use glam::{Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 
-use super::tank::Tank;
+use crate::sim::common::tank::Tank;
 
 /// Smallest radius of a rock or pillar, in metres. Default 0.1 m: about a
 /// third of a fish; anything smaller would not be seen as an obstacle.
@@ -566,7 +566,7 @@ pub fn convex_hull(points: &[Vec2]) -> Vec<Vec2> {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::common::obstacle::*;
 
     const EPS: f32 = 1e-5;
 

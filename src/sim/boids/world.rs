@@ -17,17 +17,17 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
-use super::boid_forces::{self, Perception};
-use super::control_mode::{self, ControlMode};
-use super::fish::{Fish, heading_of};
-use super::obstacle::{Obstacle, ObstacleSet, WALL_CLEARANCE_M};
-use super::school_metrics::{self, SchoolMeter, SchoolMetrics};
-use super::shark::{self, MAX_SHARKS, Shark};
-use super::spatial_grid::{Nearest, SpatialGrid};
-use super::steering::{self, AVOIDANCE_CLEARANCE_M, SteeringParams};
-use super::stingray::{self, MAX_STINGRAYS, Stingray};
-use super::tank::Tank;
-use super::world_metrics::{ForceWindow, WorldMetrics};
+use crate::sim::boids::control_mode::{self, ControlMode};
+use crate::sim::boids::forces::{self, Perception};
+use crate::sim::boids::metrics::{ForceWindow, WorldMetrics};
+use crate::sim::boids::shark::{self, MAX_SHARKS, Shark};
+use crate::sim::boids::stingray::{self, MAX_STINGRAYS, Stingray};
+use crate::sim::common::fish::{Fish, heading_of};
+use crate::sim::common::obstacle::{Obstacle, ObstacleSet, WALL_CLEARANCE_M};
+use crate::sim::common::school_metrics::{self, SchoolMeter, SchoolMetrics};
+use crate::sim::common::spatial_grid::{Nearest, SpatialGrid};
+use crate::sim::common::steering::{self, AVOIDANCE_CLEARANCE_M, SteeringParams};
+use crate::sim::common::tank::Tank;
 
 /// Length of one simulation step in seconds. Default 1/60 s: one step per
 /// frame on a 60 Hz display. The step is fixed (the app runs as many steps as
@@ -142,7 +142,7 @@ pub const SPATIAL_METRICS_EVERY_STEPS: u64 = 15;
 /// How often a fish searches for the neighbours it heeds, in steps. Default 4
 /// (15 times a second; chosen, not from the papers): in between, it keeps
 /// heeding the same fish, rechecked every step against its field of view
-/// with their positions now ([`boid_forces::recheck_heeded`]), so it never
+/// with their positions now ([`forces::recheck_heeded`]), so it never
 /// heeds a fish it cannot see; each search starts from them, so it is short.
 /// Which fish are the seven nearest changes slowly: a list is at most 67 ms
 /// old, in which a fish at 0.5 m/s moves 3.3 cm, under a tenth of a body
@@ -239,10 +239,10 @@ impl BoidParams {
                 vision_angle_rad: 300f32.to_radians(),
                 max_speed_m_per_s: 0.8,
                 max_force_m_per_s2: 8.0,
-                max_neighbours: boid_forces::TOPOLOGICAL_NEIGHBOURS,
+                max_neighbours: forces::TOPOLOGICAL_NEIGHBOURS,
                 separation_distance_m: 0.8,
                 response_time_s: 0.1,
-                clear_sight_m: boid_forces::ALIGNMENT_CLEAR_SIGHT_M,
+                clear_sight_m: forces::ALIGNMENT_CLEAR_SIGHT_M,
             },
             wander_weight: DEFAULT_WANDER,
         }
@@ -259,7 +259,7 @@ impl BoidParams {
 }
 
 /// What one fish heeds of the school: its nearest seen neighbours and the
-/// centre of the distant fish it sees ([`boid_forces::FarField`]).
+/// centre of the distant fish it sees ([`forces::FarField`]).
 #[derive(Clone, Copy, Debug)]
 struct Heeded {
     neighbours: Nearest,
@@ -306,7 +306,7 @@ pub struct World {
     /// Fixed obstacles followed by the stingrays' avoidance shapes.
     avoid_all: ObstacleSet,
     meter: SchoolMeter,
-    far_field: boid_forces::FarField,
+    far_field: forces::FarField,
     /// What each fish heeded in the last boid step: its neighbours and the
     /// centre of the far school it saw (see [`NEIGHBOUR_SEARCH_EVERY_STEPS`]).
     heeded: Vec<Heeded>,
@@ -361,7 +361,7 @@ impl World {
             stingray_solids: ObstacleSet::default(),
             avoid_all: ObstacleSet::default(),
             meter: SchoolMeter::default(),
-            far_field: boid_forces::FarField::default(),
+            far_field: forces::FarField::default(),
             heeded: Vec::new(),
             fear: Vec::new(),
             next_fear: Vec::new(),
@@ -592,7 +592,7 @@ impl World {
         // order: every fish sees the snapshot.)
         // After a change of settings or of the number of fish every fish
         // searches; otherwise a quarter of them (NEIGHBOUR_SEARCH_EVERY_STEPS).
-        let cone = boid_forces::ViewCone::new(perception);
+        let cone = forces::ViewCone::new(perception);
         let everyone_searches = !self.snapshot_is_last_boid_step || self.heeded.len() != n;
         self.heeded.resize(
             n,
@@ -610,7 +610,7 @@ impl World {
             let known = if everyone_searches {
                 Nearest::new(perception.max_neighbours)
             } else {
-                boid_forces::recheck_heeded(
+                forces::recheck_heeded(
                     &self.positions_m,
                     &self.velocities_m_per_s,
                     i,
@@ -621,7 +621,7 @@ impl World {
             let heeded = if searches {
                 Heeded {
                     // The last neighbours, rechecked, bound the search.
-                    neighbours: boid_forces::search_heeded(
+                    neighbours: forces::search_heeded(
                         &self.positions_m,
                         &self.velocities_m_per_s,
                         i,
@@ -643,7 +643,7 @@ impl World {
                 }
             };
             self.heeded[i] = heeded;
-            let neighbours = boid_forces::forces_from_neighbours(
+            let neighbours = forces::forces_from_neighbours(
                 &self.positions_m,
                 &self.velocities_m_per_s,
                 i,
@@ -661,7 +661,7 @@ impl World {
                 * ALARM_SHARE;
             // Containment: stay in the pond, away from its edges (turn back
             // towards open water when the path leaves the comfortable middle).
-            let containment = boid_forces::steer_towards(
+            let containment = forces::steer_towards(
                 velocity_m_per_s
                     + steering::containment(
                         position_m,
@@ -690,7 +690,7 @@ impl World {
                     params.avoidance_look_ahead_m,
                     AVOIDANCE_CLEARANCE_M,
                     params.max_speed_m_per_s,
-                ) + boid_forces::avoid_neighbours(
+                ) + forces::avoid_neighbours(
                     &self.positions_m,
                     &self.velocities_m_per_s,
                     i,
@@ -896,7 +896,7 @@ impl World {
                 let (p, heading) = (shark.body.position_m, shark.body.heading());
                 self.grid
                     .k_nearest(p, shark::SHARK_VISION_M, &mut nearest, |_, q, _| {
-                        boid_forces::sees(p, heading, q, &shark_perception)
+                        forces::sees(p, heading, q, &shark_perception)
                     });
                 shark.target = nearest.iter().next().map(|(j, _)| j);
                 shark.lock_secs = 0.0;
@@ -1648,7 +1648,7 @@ fn spawn_stingray(tank: &Tank, obstacles: &[Obstacle], rng: &mut ChaCha8Rng) -> 
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::boids::world::*;
 
     fn world(seed: u64, fish_count: usize) -> World {
         World::new(WorldConfig {
@@ -2434,7 +2434,7 @@ mod tests {
         let mut seen: Vec<(f32, usize)> = (0..school.len())
             .filter(|&j| {
                 j != i
-                    && boid_forces::sees(
+                    && forces::sees(
                         me.position_m,
                         me.heading(),
                         school[j].position_m,
@@ -2489,7 +2489,7 @@ mod tests {
                 w.interaction_neighbours(i, &mut links);
                 for &j in &links {
                     assert!(
-                        boid_forces::sees(
+                        forces::sees(
                             me.position_m,
                             me.heading(),
                             before[j].position_m,
@@ -2520,14 +2520,15 @@ mod tests {
             w.step();
         }
         // Step 90 is a multiple of SPATIAL_METRICS_EVERY_STEPS: all fresh.
-        let fresh = crate::sim::school_metrics::measure(w.fish(), w.tank().min_m, w.tank().max_m);
+        let fresh =
+            crate::sim::common::school_metrics::measure(w.fish(), w.tank().min_m, w.tank().max_m);
         assert_eq!(w.metrics().school, fresh);
         // Blended mode applies every weighted force on every fish-step.
         assert_eq!(w.metrics().force_frequencies_recent, [1.0; 5]);
         assert_eq!(w.metrics().force_frequencies_total, w.force_frequencies());
         // One step later the order parameters are new, the spatial ones kept.
         w.step();
-        let order = crate::sim::school_metrics::order_parameters(w.fish());
+        let order = crate::sim::common::school_metrics::order_parameters(w.fish());
         let school = w.metrics().school;
         assert_eq!(school.polarization, order.polarization);
         assert_eq!(school.mean_speed_m_per_s, order.mean_speed_m_per_s);

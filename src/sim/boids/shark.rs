@@ -17,15 +17,15 @@
 //! of the mouth) is counted, the fish reappears far away, and the shark cruises
 //! satiated for [`SATIATED_S`].
 //!
-//! [`pursue`]: super::steering::pursue
+//! [`pursue`]: crate::sim::common::steering::pursue
 
 use std::f32::consts::TAU;
 
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::fish::Fish;
-use super::steering::SteeringParams;
+use crate::sim::common::fish::Fish;
+use crate::sim::common::steering::SteeringParams;
 
 /// Most sharks a world holds. Default 10: a few predators already scatter a
 /// school of 200; more turn the tank into a feeding frenzy.
@@ -212,7 +212,7 @@ pub fn new_shark(position_m: Vec3, yaw_rad: f32, body_length_m: f32) -> Shark {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::boids::shark::*;
 
     #[test]
     fn a_lone_fish_never_confuses_the_shark_and_a_schooled_one_soon_does() {

@@ -13,7 +13,7 @@
 //!
 //! A turn-MC turn, once started, runs to its end (the paper's turns are
 //! ballistic: a quick bend and a slow release); while it runs the routine's wish
-//! sets only the fins, and [`crate::sim::physical_fish::PhysicalFish::step`]
+//! sets only the fins, and [`crate::sim::body::physical_fish::PhysicalFish::step`]
 //! beats the tail at the setting the turn-MC's key turns were measured at, so
 //! that a 90° key turns the fish 90° at any speed the routine asked for.
 //!
@@ -34,8 +34,8 @@ use std::f32::consts::TAU;
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::body::PectoralFins;
-use super::motor_bridge::{MotorIntent, level_turn_deg};
+use crate::sim::body::PectoralFins;
+use crate::sim::body::motor_bridge::{MotorIntent, level_turn_deg};
 
 /// How a routine wants its body to move.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -52,7 +52,7 @@ pub enum Gait {
     /// Swim with the school (schooling, and foraging with the school): the
     /// muscle body is steered like the physics scene's schooling fish, by the
     /// boid layer's intended velocity through the desired-velocity bridge
-    /// (`motor_bridge.rs`), whose smoothing keeps a school together (driven
+    /// (`body/motor_bridge.rs`), whose smoothing keeps a school together (driven
     /// step by step by the school routine's wish, the fish thrashed at full
     /// bend among their neighbours and the school of *School meets obstacle*
     /// slowed to 0.05 m/s in four to six groups, measured). Here, like
@@ -129,7 +129,7 @@ const MAX_FIN_PITCH_RAD: f32 = 0.5;
 const BRAKE_ABOVE_FRACTION: f32 = 0.3;
 /// swim-MC speed of a bobbing fish, fraction of the top speed (0.15, chosen:
 /// enough water over the fins to lift and sink the fish, slow enough for the
-/// braking fins to hold it almost in place; measured in `physical_fish.rs`).
+/// braking fins to hold it almost in place; measured in `body/physical_fish.rs`).
 pub const BOB_SWIM_FRACTION: f32 = 0.15;
 /// Bobbing frequency, Hz (0.5, chosen: one rise and fall every 2 s).
 pub const BOB_HZ: f32 = 0.5;
@@ -250,7 +250,7 @@ pub fn choose(wish: &Wish, body: &Body, time_secs: f32) -> MotorIntent {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::reef::motor_choice::*;
 
     fn body(speed: f32, turning: bool) -> Body {
         Body {

@@ -13,12 +13,12 @@
 //! [`PHASE_TIMEOUT_SECS`] in one phase, breaks up.
 //!
 //! This module holds the pair's state machine and where each partner wants to
-//! go; the reef world (`reef_world.rs`) forms pairs and moves the bodies.
+//! go; the reef world (`reef/world.rs`) forms pairs and moves the bodies.
 
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::motor_choice::Gait;
+use crate::sim::reef::motor_choice::Gait;
 
 /// Passes of the male's mouth through the looping point before circling (the
 /// paper: "currently 6").
@@ -98,7 +98,7 @@ pub struct Partner {
 }
 
 /// What a partner wants this step: a point to chase, a speed fraction, and how
-/// (the female hovers while the male loops or nuzzles, `motor_choice.rs`). A
+/// (the female hovers while the male loops or nuzzles, `reef/motor_choice.rs`). A
 /// hovering point-mass body, which has no fins, swims slowly to the point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Wish {
@@ -321,7 +321,7 @@ impl Pair {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::reef::courtship::*;
 
     fn partner(at: Vec3, heading: Vec3) -> Partner {
         Partner {

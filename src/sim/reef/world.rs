@@ -1,17 +1,17 @@
 //! The living reef of Tu & Terzopoulos 1994 (Plate 1): fish with minds. Each
 //! step every animal
-//! 1. **perceives** (`perception.rs`): what it sees with its 300° occluded
+//! 1. **perceives** (`reef/perception.rs`): what it sees with its 300° occluded
 //!    vision out to the water's visibility V_r, the temperature at its centre
 //!    and the brightness of its retinal image;
 //! 2. updates its **mental state** and lets the **intention generator** choose an
-//!    intention and a focus (`mind/`);
-//! 3. runs the **behaviour routine** for it (`behaviour.rs`, `courtship.rs`),
+//!    intention and a focus (`reef/mind/`);
+//! 3. runs the **behaviour routine** for it (`reef/behaviour.rs`, `reef/courtship.rs`),
 //!    which gives the velocity it wants and how (swim, hover, or hover and bob);
 //!    keeping off the glass, sand, surface and rocks bends the direction of a
 //!    swimming wish (motor preferences);
 //! 4. moves its **body**: the muscle-driven spring–mass fish by default, whose
 //!    motor controllers (swim-MC, turn-MC, pectoral fins) the routine's motor
-//!    choice picks (`motor_choice.rs`), or the light point-mass fish of the boid
+//!    choice picks (`reef/motor_choice.rs`), or the light point-mass fish of the boid
 //!    layer for big scenes, steered to the wished velocity — the same mind
 //!    drives either.
 //!
@@ -27,25 +27,25 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
-use super::behaviour::{self, Me, Neighbour};
-use super::body::body_layout::HEAD_NODE;
-use super::courtship::{Pair, Partner, Phase};
-use super::environment::Environment;
-use super::fish::Fish;
-use super::mind::habits::KindTraits;
-use super::mind::{
+use crate::sim::body::body_layout::HEAD_NODE;
+use crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
+use crate::sim::body::physical_fish::{BodySpecies, PhysicalFish};
+use crate::sim::common::fish::Fish;
+use crate::sim::common::obstacle::Obstacle;
+use crate::sim::common::steering::{self, SteeringParams};
+use crate::sim::common::tank::Tank;
+use crate::sim::common::water_current::WaterCurrent;
+use crate::sim::physics::world::{drive_physical, step_and_constrain};
+use crate::sim::reef::behaviour::{self, Me, Neighbour};
+use crate::sim::reef::courtship::{Pair, Partner, Phase};
+use crate::sim::reef::environment::Environment;
+use crate::sim::reef::mind::habits::KindTraits;
+use crate::sim::reef::mind::{
     FishKind, Focus, Habits, Intention, IntentionGenerator, Liking, MentalState, Percept, Sex,
     Target,
 };
-use super::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
-use super::motor_choice::{self, Gait, Wish};
-use super::obstacle::Obstacle;
-use super::perception::{Eye, Retina, RetinaScene, Sphere, fish_occluder};
-use super::physical_fish::{BodySpecies, PhysicalFish};
-use super::physics_world::{drive_physical, step_and_constrain};
-use super::steering::{self, SteeringParams};
-use super::tank::Tank;
-use super::water_current::WaterCurrent;
+use crate::sim::reef::motor_choice::{self, Gait, Wish};
+use crate::sim::reef::perception::{Eye, Retina, RetinaScene, Sphere, fish_occluder};
 
 /// Most animals in a reef.
 pub const MAX_REEF_ANIMALS: usize = 200;
@@ -59,9 +59,9 @@ pub const COURTSHIP_DIGESTION_FRACTION: f32 = 0.1;
 /// Most plankton particles kept in the water.
 pub const MAX_FOOD: usize = 200;
 /// Time step of the point-mass body, seconds: the fish world's one step
-/// ([`crate::sim::paper_time::FISH_STEP_SECS`]), as the muscle body's, so both
+/// ([`crate::sim::common::paper_time::FISH_STEP_SECS`]), as the muscle body's, so both
 /// bodies see the same world clock.
-pub const POINT_BODY_DT_SECS: f32 = crate::sim::paper_time::FISH_STEP_SECS;
+pub const POINT_BODY_DT_SECS: f32 = crate::sim::common::paper_time::FISH_STEP_SECS;
 /// Time in which a behaviour's wish becomes a steering force, seconds (0.25,
 /// chosen, as the physics tank's).
 const RESPONSE_TIME_SECS: f32 = 0.25;
@@ -108,7 +108,7 @@ const HISTORY_EVERY_SECS: f64 = 0.5;
 const HISTORY_LEN: usize = 240;
 /// Radius of the muscle body's turning circle, body lengths (1.2: measured
 /// 1.03–1.14 for 90° turns from 0.4–1.0 of the top speed on the converged body,
-/// `physical_fish.rs` agility tests, docs/fish-body.md; a little more for margin.
+/// `body/physical_fish.rs` agility tests, docs/fish-body.md; a little more for margin.
 /// It was 0.75 on the earlier body, which turned in 0.6–0.7. In the *Feeding*
 /// demo, seeds 3 and 4, 60 s, muscle fish ate 32 plankton with 0.75, 34 with 1.2
 /// and 35 with 0: within the seed noise.)
@@ -394,7 +394,7 @@ pub struct ReefAnimal {
     pub temperature_c: f32,
     /// Recent hunger, libido and fear.
     pub history: VecDeque<MindSample>,
-    /// Point-mass velocity the muscle body chases (see `physics_world.rs`).
+    /// Point-mass velocity the muscle body chases (see `physics/world.rs`).
     intended_m_per_s: Vec3,
     touch: Option<Vec3>,
     /// The predator last seen, where, and for how many more seconds it is
@@ -687,7 +687,7 @@ impl ReefWorld {
     }
 
     /// The prey school's order parameters (living prey only).
-    pub fn school_metrics(&self) -> super::school_metrics::SchoolMetrics {
+    pub fn school_metrics(&self) -> crate::sim::common::school_metrics::SchoolMetrics {
         let fish: Vec<Fish> = self
             .animals
             .iter()
@@ -704,7 +704,7 @@ impl ReefWorld {
                 f
             })
             .collect();
-        super::school_metrics::measure(&fish, self.tank.min_m, self.tank.max_m)
+        crate::sim::common::school_metrics::measure(&fish, self.tank.min_m, self.tank.max_m)
     }
 
     /// Mutable access for tests and teachers' edits (habits, mental state).
@@ -853,7 +853,7 @@ impl ReefWorld {
                 // not.)
                 let mut shark = predator_habits();
                 shark.mental.digestion_rate_per_unit =
-                    super::mind::mental_state::NOMINAL_DIGESTION_RATE;
+                    crate::sim::reef::mind::mental_state::NOMINAL_DIGESTION_RATE;
                 self.spawn(Vec3::new(4.0, 2.3, -2.0), -Vec3::X, shark, 1.0);
                 self.plant_seaweed(4);
             }
@@ -865,9 +865,10 @@ impl ReefWorld {
                 // before they spawn; the *Minds* panel sets it back.
                 let courting = |sex| {
                     let mut h = Habits::new(FishKind::Pacifist, sex, 1);
-                    h.mental.libido_rate_per_unit = super::mind::mental_state::MANIC_LIBIDO_RATE;
+                    h.mental.libido_rate_per_unit =
+                        crate::sim::reef::mind::mental_state::MANIC_LIBIDO_RATE;
                     h.mental.digestion_rate_per_unit = COURTSHIP_DIGESTION_FRACTION
-                        * super::mind::mental_state::NOMINAL_DIGESTION_RATE;
+                        * crate::sim::reef::mind::mental_state::NOMINAL_DIGESTION_RATE;
                     h
                 };
                 let female = courting(Sex::Female);
@@ -883,7 +884,7 @@ impl ReefWorld {
                 for k in 0..6 {
                     let mut h = Habits::new(FishKind::Pacifist, Sex::Female, k as u8);
                     h.mental.digestion_rate_per_unit =
-                        super::mind::mental_state::RAVENOUS_DIGESTION_RATE;
+                        crate::sim::reef::mind::mental_state::RAVENOUS_DIGESTION_RATE;
                     h.mental.libido_rate_per_unit = 0.0;
                     let p = self.random_free_point(1.0);
                     self.spawn(p, Vec3::X, h, 0.45);
@@ -894,7 +895,7 @@ impl ReefWorld {
                 self.obstacles = vec![Obstacle::Cylinder {
                     base_center_m: Vec3::new(0.0, 0.0, 0.0),
                     radius_m: 1.0,
-                    height_m: t.size_m().y - super::obstacle::SURFACE_CLEARANCE_M,
+                    height_m: t.size_m().y - crate::sim::common::obstacle::SURFACE_CLEARANCE_M,
                 }];
                 for k in 0..self.config.prey_count.unwrap_or(scene.default_prey_count()) {
                     let p = Vec3::new(-4.5, 2.2, 0.0) + self.jitter(1.0);
@@ -1193,7 +1194,8 @@ impl ReefWorld {
                 if sees_animal(j) {
                     let body_lengths = d / me.length_m.max(1e-3);
                     predator_distances.push(body_lengths);
-                    let fear = super::mind::mental_state::fear_of(&habits.mental, body_lengths);
+                    let fear =
+                        crate::sim::reef::mind::mental_state::fear_of(&habits.mental, body_lengths);
                     percept.predators.push((j as u32, fear));
                 }
             }
@@ -1212,7 +1214,8 @@ impl ReefWorld {
                 {
                     let body_lengths = at.distance(me.head_m) / me.length_m.max(1e-3);
                     predator_distances.push(body_lengths);
-                    let fear = super::mind::mental_state::fear_of(&habits.mental, body_lengths);
+                    let fear =
+                        crate::sim::reef::mind::mental_state::fear_of(&habits.mental, body_lengths);
                     percept.predators.push((j, fear));
                 }
                 _ => {}
@@ -1683,7 +1686,7 @@ impl ReefWorld {
     }
 
     /// Moves animal `i`'s body as `wish` asks. The muscle body: the motor choice
-    /// (`motor_choice.rs`) picks its motor controllers; the point-mass body: the
+    /// (`reef/motor_choice.rs`) picks its motor controllers; the point-mass body: the
     /// boid layer steers it towards the wished velocity. Under both, keeping off
     /// the glass, sand, surface and rocks bends the direction of a swimming wish.
     fn move_body(&mut self, i: usize, wish: Wish, dt: f32) {
@@ -1750,7 +1753,7 @@ impl ReefWorld {
                     let bent = desired + keep_off(path);
                     let mut v = bent.normalize_or(heading) * wanted;
                     if let Some(away) = a.touch {
-                        v = super::physics_world::touch_reflex(v, away, top);
+                        v = crate::sim::physics::world::touch_reflex(v, away, top);
                     }
                     wish.velocity_m_per_s = v;
                 }
@@ -1941,8 +1944,10 @@ impl ReefWorld {
                             self.animals[j].alive = false;
                             self.animals[j].mouth_open = false;
                             let a = &mut self.animals[i];
-                            a.mental
-                                .eat(&a.habits.mental, super::mind::mental_state::PREY_FOOD_UNITS);
+                            a.mental.eat(
+                                &a.habits.mental,
+                                crate::sim::reef::mind::mental_state::PREY_FOOD_UNITS,
+                            );
                             self.counts.prey_eaten += 1;
                             if schooling {
                                 self.counts.schooling_prey_eaten += 1;
@@ -2352,7 +2357,7 @@ fn hue_rgb(hue: f32, kind: FishKind) -> [f32; 3] {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::reef::world::*;
 
     fn reef(scene: ReefScene, body: ReefBodyKind, seed: u64) -> ReefWorld {
         ReefWorld::new(ReefConfig {
@@ -2629,7 +2634,7 @@ mod tests {
         // Two runs on the default (muscle) body that differ only in p0: the
         // demo's slow digestion spawns within 5 minutes; the paper's nominal p0
         // on the one clock makes the pair break up to feed, and it does not.
-        use super::super::mind::mental_state::NOMINAL_DIGESTION_RATE;
+        use crate::sim::reef::mind::mental_state::NOMINAL_DIGESTION_RATE;
         let config = ReefConfig {
             scene: ReefScene::Courtship,
             seed: 2,
@@ -2652,7 +2657,7 @@ mod tests {
         // Libido stays above hunger for the demo's five minutes (with the
         // nominal p0 hunger overtook it after about 30 s and the pairs broke
         // up to feed: 1 of 8 seeds spawned on muscle bodies).
-        use super::super::mind::mental_state::{hunger, libido};
+        use crate::sim::reef::mind::mental_state::{hunger, libido};
         let w = reef(ReefScene::Courtship, ReefBodyKind::PointMass, 1);
         for a in w.animals() {
             let c = a.habits.mental;
@@ -2661,7 +2666,7 @@ mod tests {
                 assert!(libido(&c, h, t) > h, "at {t} s: hunger {h}");
             }
         }
-        use super::super::mind::mental_state::NOMINAL_DIGESTION_RATE;
+        use crate::sim::reef::mind::mental_state::NOMINAL_DIGESTION_RATE;
         let mut config = ReefConfig {
             scene: ReefScene::Courtship,
             seed: 1,
@@ -3006,8 +3011,8 @@ mod tests {
 
     #[test]
     fn a_teachers_traits_change_every_fish_of_the_kind_at_once() {
-        use super::super::mind::habits::{DEVOTED_BODY_LENGTHS, MindTraits};
-        use super::super::mind::mental_state::RAVENOUS_DIGESTION_RATE;
+        use crate::sim::reef::mind::habits::{DEVOTED_BODY_LENGTHS, MindTraits};
+        use crate::sim::reef::mind::mental_state::RAVENOUS_DIGESTION_RATE;
         let mut w = reef(ReefScene::Reef, ReefBodyKind::PointMass, 2);
         run(&mut w, 5.0);
         let before: Vec<Habits> = w.animals().iter().map(|a| a.habits).collect();
@@ -3386,7 +3391,7 @@ mod tests {
                 ..ReefConfig::default()
             };
             nominal.traits.pacifist.digestion_rate_per_unit =
-                Some(super::super::mind::mental_state::NOMINAL_DIGESTION_RATE);
+                Some(crate::sim::reef::mind::mental_state::NOMINAL_DIGESTION_RATE);
             let (n, np) = spawning_secs_in(ReefWorld::new(nominal), 300.0);
             println!(
                 "courtship seed {seed}: muscle {secs:?} ({phase:?}) points {p:?} ({pp:?}) muscle with nominal p0 {n:?} ({np:?})"

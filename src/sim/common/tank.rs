@@ -65,7 +65,7 @@ impl Tank {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::common::tank::*;
 
     #[test]
     fn default_tank_is_12_by_4_5_by_8_metres_with_floor_at_zero() {

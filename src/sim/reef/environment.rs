@@ -15,7 +15,7 @@
 
 use glam::Vec3;
 
-use super::tank::Tank;
+use crate::sim::common::tank::Tank;
 
 /// Depth over which light falls to 1/e, metres (3, chosen: the floor of the
 /// 4.5 m tank gets a fifth of the surface light, like clear coastal water a few
@@ -110,7 +110,7 @@ fn smoothstep(x: f32) -> f32 {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::reef::environment::*;
 
     #[test]
     fn light_is_brighter_near_the_surface_and_at_the_sunny_end() {

@@ -470,7 +470,7 @@ impl SpatialGrid {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::common::spatial_grid::*;
 
     fn lcg_points(n: usize, seed: u64) -> Vec<Vec3> {
         let mut s = seed;

@@ -6,7 +6,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::mental_state::{CALM_DIGESTION_RATE, CALM_LIBIDO_RATE, MentalConstants};
+use crate::sim::reef::mind::mental_state::{
+    CALM_DIGESTION_RATE, CALM_LIBIDO_RATE, MentalConstants,
+};
 
 /// The three kinds of artificial fish of §7.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -120,7 +122,7 @@ impl Habits {
     /// (`MentalConstants::shoal_default`).
     pub fn new(kind: FishKind, sex: Sex, species: u8) -> Self {
         let appetite = match kind {
-            FishKind::Predator => super::mental_state::PREY_FOOD_UNITS,
+            FishKind::Predator => crate::sim::reef::mind::mental_state::PREY_FOOD_UNITS,
             FishKind::Prey | FishKind::Pacifist => 3.0,
         };
         Self {
@@ -374,7 +376,7 @@ impl KindTraits {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::reef::mind::habits::*;
 
     #[test]
     fn liking_has_a_dead_band() {
@@ -390,7 +392,9 @@ mod tests {
         let demo = Habits::new(FishKind::Predator, Sex::Male, 9);
         assert_eq!(MindTraits::default().applied_to(demo), demo);
         let ravenous = MindTraits {
-            digestion_rate_per_unit: Some(super::super::mental_state::RAVENOUS_DIGESTION_RATE),
+            digestion_rate_per_unit: Some(
+                crate::sim::reef::mind::mental_state::RAVENOUS_DIGESTION_RATE,
+            ),
             persistence_body_lengths: Some(DEVOTED_BODY_LENGTHS),
             ..MindTraits::default()
         };

@@ -18,8 +18,8 @@
 use glam::{IVec3, Vec3};
 use serde::Serialize;
 
-use super::fish::Fish;
-use super::spatial_grid::{Nearest, SpatialGrid};
+use crate::sim::common::fish::Fish;
+use crate::sim::common::spatial_grid::{Nearest, SpatialGrid};
 
 /// The school's order parameters at one instant.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
@@ -574,7 +574,7 @@ fn root(parent: &mut [u32], mut i: usize) -> usize {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::sim::common::school_metrics::*;
 
     const LO: Vec3 = Vec3::new(-6.0, 0.0, -4.0);
     const HI: Vec3 = Vec3::new(6.0, 4.5, 4.0);

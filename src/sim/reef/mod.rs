@@ -1,0 +1,15 @@
+//! The reef: fish with minds (Tu & Terzopoulos §5–7). Each step every animal
+//! perceives (`perception`), its mind chooses an intention (`mind`), a
+//! behaviour routine turns it into a wish (`behaviour`, `courtship`), the
+//! motor choice drives the muscle body (`motor_choice`) or the point mass
+//! follows it; the world (`world`) holds the step order, feeding and
+//! predation, plankton, seaweed, the demos and the event log. Light and
+//! temperature of the water: `environment`.
+
+pub mod behaviour;
+pub mod courtship;
+pub mod environment;
+pub mod mind;
+pub mod motor_choice;
+pub mod perception;
+pub mod world;
