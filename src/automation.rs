@@ -297,7 +297,7 @@ impl PhysicsReport {
 /// The reef scene as `shoal.state().reef` reports it.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct ReefReport {
-    pub demo: crate::sim::reef::world::ReefScene,
+    pub demo: crate::sim::reef::demos::ReefScene,
     pub body: crate::sim::reef::world::ReefBodyKind,
     /// Living animals by kind.
     pub predators: usize,
@@ -308,7 +308,7 @@ pub struct ReefReport {
     /// Courting pairs: male, female, phase.
     pub pairs: Vec<(u32, u32, crate::sim::reef::courtship::Phase)>,
     /// The last 20 events, oldest first.
-    pub events: Vec<crate::sim::reef::world::ReefEvent>,
+    pub events: Vec<crate::sim::reef::events::ReefEvent>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub selected: Option<SelectedMindReport>,
 }

@@ -9,7 +9,7 @@ use crate::lab::Lab;
 use crate::physics_settings::PhysicsSettings;
 use crate::reef_settings::ReefSettings;
 use crate::settings::{Scene, Settings};
-use crate::sim::reef::world::ReefScene;
+use crate::sim::reef::demos::ReefScene;
 use crate::tank_settings::{Preset, TankSettings};
 
 /// Scenes and fish counts the benchmark visits: the wandering aquarium, the boid

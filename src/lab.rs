@@ -957,7 +957,8 @@ mod tests {
 
     #[test]
     fn the_reef_scene_runs_minds_and_rebuilds_only_for_demo_body_and_counts() {
-        use crate::sim::reef::world::{ReefBodyKind, ReefScene};
+        use crate::sim::reef::demos::ReefScene;
+        use crate::sim::reef::world::ReefBodyKind;
         let settings = Settings {
             scene: Scene::Reef,
             ..Settings::default()

@@ -5,9 +5,10 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::FishKind;
 use crate::sim::reef::mind::habits::KindTraits;
-use crate::sim::reef::world::{MAX_FOOD, ReefBodyKind, ReefConfig, ReefScene};
+use crate::sim::reef::world::{MAX_FOOD, ReefBodyKind, ReefConfig};
 
 /// Most prey fish the slider offers: the Reef demo then holds
 /// `MAX_REEF_ANIMALS` (200) animals.

@@ -141,7 +141,8 @@ mod tests {
 
     fn random_reef(rng: &mut ChaCha8Rng) -> crate::reef_settings::ReefSettings {
         use crate::reef_settings::*;
-        use crate::sim::reef::world::{ReefBodyKind, ReefScene};
+        use crate::sim::reef::demos::ReefScene;
+        use crate::sim::reef::world::ReefBodyKind;
         let mut reef = ReefSettings {
             demo: ReefScene::ALL[rng.random_range(0..ReefScene::ALL.len())],
             body: if rng.random_bool(0.5) {

@@ -14,6 +14,7 @@ use crate::reef_settings::{
     REEF_CURRENT_MAX_M_PER_S, REEF_FOOD_MAX, REEF_PREY_MAX, ReefOverlay, ReefSettings,
     VISIBILITY_MAX_M, VISIBILITY_MIN_M,
 };
+use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::habits::{
     COURAGEOUS_BOX_BODY_LENGTHS, DEFAULT_BOX_BODY_LENGTHS, DEFAULT_PERSISTENCE_BODY_LENGTHS,
     DEVOTED_BODY_LENGTHS, FICKLE_BODY_LENGTHS, KindTraits, MindTraits, TIMID_BOX_BODY_LENGTHS,
@@ -23,7 +24,7 @@ use crate::sim::reef::mind::mental_state::{
     NOMINAL_LIBIDO_RATE, RAVENOUS_DIGESTION_RATE,
 };
 use crate::sim::reef::mind::{FishKind, Habits, Intention, Liking, Sex, Target};
-use crate::sim::reef::world::{ReefAnimal, ReefBody, ReefBodyKind, ReefScene, ReefWorld};
+use crate::sim::reef::world::{ReefAnimal, ReefBody, ReefBodyKind, ReefWorld};
 
 /// Colours of the three urges, used by the bars, the plot and the focus line.
 pub const HUNGER_COLOR: egui::Color32 = egui::Color32::from_rgb(255, 170, 60);

@@ -251,6 +251,287 @@ pub fn leave(me: &Me, gradient: Vec3) -> Vec3 {
     direction * CRUISE_FRACTION * me.top_speed_m_per_s
 }
 
+// The reef's behaviour step: each animal's routine turns its intention into a wish.
+
+use super::feeding::in_suck_reach;
+use super::world::*;
+use crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
+use crate::sim::common::steering::{self, SteeringParams};
+use crate::sim::reef::courtship::Partner;
+use crate::sim::reef::environment::Environment;
+use crate::sim::reef::mind::{Intention, Liking, Target};
+use crate::sim::reef::motor_choice::{Gait, Wish};
+
+impl ReefWorld {
+    /// What animal `i`'s behaviour routine asks of its body.
+    pub(super) fn behave(&mut self, i: usize, seen: &[Seen], neighbours: &[Neighbour]) -> Wish {
+        let velocity_m_per_s = self.behave_velocity(i, seen, neighbours);
+        let a = &self.animals[i];
+        let s = seen[i];
+        let gait = match (a.focus.intention, a.focus.target) {
+            // eating-food: hover while the vacuum sucks the food in.
+            (Intention::Eat, Some(Target::Food(id))) => self
+                .food
+                .iter()
+                .find(|f| f.id == id)
+                .filter(|f| in_suck_reach(s.head_m, s.heading, s.length_m, f.position_m))
+                .map_or(Gait::Pursue, |_| Gait::Hover),
+            (Intention::Eat, Some(Target::Animal(_))) => Gait::Pursue,
+            // schooling, and foraging with the school (see Gait::School).
+            (Intention::School, _) => Gait::School,
+            (Intention::Eat, None) if a.habits.schools && !neighbours.is_empty() => Gait::School,
+            // mating: the courtship routine says (the female hovers).
+            (Intention::Mate, Some(_)) => self.pair_of(i).map_or(Gait::Pursue, |pair| {
+                if pair.female as usize == i {
+                    let partner = |k: u32| {
+                        let o = &seen[k as usize];
+                        Partner {
+                            position_m: o.position_m,
+                            head_m: o.head_m,
+                            heading: o.heading,
+                            body_length_m: o.length_m,
+                        }
+                    };
+                    let (_, wish) = pair.wishes(
+                        &partner(pair.male),
+                        &partner(pair.female),
+                        self.time_secs as f32,
+                        self.tank.max_m.y,
+                    );
+                    wish.gait
+                } else {
+                    Gait::Pursue
+                }
+            }),
+            _ => Gait::Swim,
+        };
+        Wish {
+            velocity_m_per_s,
+            gait,
+        }
+    }
+
+    /// The velocity animal `i`'s behaviour routine asks for (the point-mass body
+    /// follows it; the muscle body's motor choice reads it).
+    pub(super) fn behave_velocity(
+        &mut self,
+        i: usize,
+        seen: &[Seen],
+        neighbours: &[Neighbour],
+    ) -> Vec3 {
+        let s = seen[i];
+        let me = Me {
+            position_m: s.position_m,
+            head_m: s.head_m,
+            heading: s.heading,
+            velocity_m_per_s: s.velocity_m_per_s,
+            body_length_m: s.length_m,
+            top_speed_m_per_s: TOP_SPEED_BODY_LENGTHS_PER_SEC * s.length_m,
+        };
+        let focus = self.animals[i].focus;
+        // Radius of the body's turning circle at its speed now (none for the
+        // point mass, which turns as fast as its steering force allows).
+        let turn_radius = match self.animals[i].body {
+            ReefBody::Physical(_) => BODY_TURN_RADIUS_BODY_LENGTHS * s.length_m,
+            ReefBody::Point(_) => 0.0,
+        };
+        let animal_at = |t: Option<Target>| match t {
+            Some(Target::Animal(j)) => seen
+                .get(j as usize)
+                .filter(|o| o.alive)
+                .map(|o| o.position_m),
+            _ => None,
+        };
+        // Where the predator the fish fears is: where it is now if the fish
+        // sees it; where it was last seen if the fish only remembers it (the
+        // fish must not know where an unseen predator went). The memory is
+        // refreshed with the present position whenever the predator is seen.
+        let last_threat = self.animals[i].last_threat;
+        let threat_at = |t: Option<Target>| match (t, last_threat) {
+            (Some(Target::Animal(j)), Some((k, at, _))) if j == k => animal_at(t).map(|_| at),
+            _ => animal_at(t),
+        };
+        let wander = |world: &mut Self| {
+            let a = &mut world.animals[i];
+            a.wander.position_m = s.position_m;
+            a.wander.velocity_m_per_s = a.intended_m_per_s;
+            let params = SteeringParams {
+                max_speed_m_per_s: me.top_speed_m_per_s,
+                wander_distance_m: 2.0 * s.length_m,
+                wander_radius_m: s.length_m,
+                wander_jitter_rad: 0.36,
+                ..SteeringParams::default()
+            };
+            let push = steering::wander(&mut a.wander, &mut world.rng, &params);
+            (s.heading + push.normalize_or_zero() * 0.8).normalize_or(s.heading)
+                * CRUISE_FRACTION
+                * me.top_speed_m_per_s
+        };
+        match focus.intention {
+            Intention::Avoid => {
+                let point = match focus.target {
+                    Some(Target::Obstacle(k)) => self
+                        .obstacles
+                        .get(k as usize)
+                        .map(|o| o.core_point_m(s.head_m))
+                        .unwrap_or(s.head_m + s.heading),
+                    Some(Target::Animal(j)) => {
+                        // The other fish is a box moving in a direction (§6.4): one
+                        // swimming the same way ahead is avoided by falling back,
+                        // not by swerving out of the school.
+                        if let Some(o) = seen.get(j as usize).filter(|o| o.alive)
+                            && o.heading.dot(s.heading) > 0.7
+                        {
+                            return fall_back(&me, o.position_m, o.velocity_m_per_s);
+                        }
+                        animal_at(Some(Target::Animal(j))).unwrap_or(s.head_m + s.heading)
+                    }
+                    _ => {
+                        // The glass: the nearest point of it ahead.
+                        let probe = s.head_m + s.heading * s.length_m * 2.0;
+                        let inside = self.tank.clamp_inside(probe, 0.0);
+                        probe + (probe - inside)
+                    }
+                };
+                avoid(&me, point, self.animals[i].mental.fear)
+            }
+            Intention::Escape => match threat_at(focus.target) {
+                // A schooling fish flees with the schoolmates it sees.
+                Some(p) if self.animals[i].habits.schools && !neighbours.is_empty() => {
+                    escape_with_school(&me, neighbours, p)
+                }
+                Some(p) => escape(&me, p),
+                None => wander(self),
+            },
+            Intention::School => {
+                let urgency = self.animals[i].mental.fear;
+                let threat = threat_at(focus.target);
+                if neighbours.is_empty() && threat.is_none() {
+                    wander(self)
+                } else {
+                    school(&me, neighbours, urgency, threat)
+                }
+            }
+            Intention::Eat => match focus.target {
+                Some(Target::Food(id)) => match self.food.iter().find(|f| f.id == id) {
+                    Some(f) => chase(
+                        &me,
+                        f.position_m,
+                        CRUISE_FRACTION,
+                        0.8 * s.length_m,
+                        turn_radius,
+                    ),
+                    None => wander(self),
+                },
+                Some(Target::Animal(j)) => match seen.get(j as usize).filter(|o| o.alive) {
+                    Some(prey) => {
+                        // chasing-target with a short prediction of where the prey swims.
+                        let lead =
+                            (prey.position_m.distance(s.head_m) / me.top_speed_m_per_s).min(2.0);
+                        chase(
+                            &me,
+                            prey.position_m + prey.velocity_m_per_s * lead,
+                            1.0,
+                            0.0,
+                            turn_radius,
+                        )
+                    }
+                    None => wander(self),
+                },
+                // No food in view: a schooling fish forages with its school, others
+                // search alone.
+                _ if self.animals[i].habits.schools && !neighbours.is_empty() => {
+                    school(&me, neighbours, 0.0, None)
+                }
+                _ => wander(self),
+            },
+            Intention::Mate => {
+                let partner_of = |k: u32| {
+                    seen.get(k as usize).map(|o| Partner {
+                        position_m: o.position_m,
+                        head_m: o.head_m,
+                        heading: o.heading,
+                        body_length_m: o.length_m,
+                    })
+                };
+                let t = self.time_secs as f32;
+                let surface = self.tank.max_m.y;
+                let mine = self.pair_of(i).copied();
+                let theirs = match focus.target {
+                    Some(Target::Animal(j)) => self.pair_of(j as usize).copied(),
+                    _ => None,
+                };
+                match (mine, theirs, focus.target) {
+                    // In a pair: the courtship routine.
+                    (Some(pair), _, _) => match (partner_of(pair.male), partner_of(pair.female)) {
+                        (Some(m), Some(f)) => {
+                            let (male_wish, female_wish) = pair.wishes(&m, &f, t, surface);
+                            let wish = if pair.male as usize == i {
+                                male_wish
+                            } else {
+                                female_wish
+                            };
+                            chase(&me, wish.target_m, wish.speed_fraction, 0.0, turn_radius)
+                        }
+                        _ => wander(self),
+                    },
+                    // Her partner is another male: join the looping display
+                    // (case 2); she may prefer him.
+                    (None, Some(pair), Some(Target::Animal(j)))
+                        if pair.female == j && !pair.bonded() =>
+                    {
+                        match partner_of(j) {
+                            Some(f) => chase(&me, pair.loop_point_m(&f, t), 0.9, 0.0, turn_radius),
+                            None => wander(self),
+                        }
+                    }
+                    // Not yet a pair: follow the chosen partner around (case 1).
+                    _ => match animal_at(focus.target) {
+                        Some(p) => chase(&me, p, CRUISE_FRACTION, 1.5 * s.length_m, turn_radius),
+                        None => wander(self),
+                    },
+                }
+            }
+            Intention::Leave => {
+                let h = self.animals[i].habits;
+                let sign = |l: Liking| match l {
+                    Liking::High => 1.0,
+                    Liking::Low => -1.0,
+                    Liking::Indifferent => 0.0,
+                };
+                let g = self
+                    .env
+                    .gradient_direction(s.position_m, Environment::brightness_at)
+                    * sign(h.light)
+                    + self
+                        .env
+                        .gradient_direction(s.position_m, Environment::temperature_01_at)
+                        * sign(h.temperature);
+                leave(&me, g.normalize_or(s.heading))
+            }
+            Intention::Wander => wander(self),
+        }
+    }
+
+    /// Where animal `i` is swimming to, when it is closing in on something:
+    /// the food or prey it eats or the partner it courts.
+    pub(super) fn chase_target_m(&self, i: usize) -> Option<Vec3> {
+        let focus = self.animals[i].focus;
+        if !matches!(focus.intention, Intention::Eat | Intention::Mate) {
+            return None;
+        }
+        match focus.target? {
+            Target::Animal(j) => self
+                .animals
+                .get(j as usize)
+                .filter(|a| a.alive)
+                .map(|a| a.body.position_m()),
+            Target::Food(id) => self.food.iter().find(|f| f.id == id).map(|f| f.position_m),
+            Target::Obstacle(_) | Target::Glass => None,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use crate::sim::reef::behaviour::*;

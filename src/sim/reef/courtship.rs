@@ -319,6 +319,179 @@ impl Pair {
     }
 }
 
+// The reef's courtship step: pairs form, the sequence advances, pairs end.
+
+use super::events::ReefEventKind;
+use super::world::*;
+use crate::sim::reef::mind::{FishKind, Focus, Intention, IntentionGenerator, Sex, Target};
+
+impl ReefWorld {
+    /// Forms courting pairs from mutual choices, lets a female change to a
+    /// larger male during looping, advances each pair's sequence and ends it.
+    pub(super) fn court(&mut self, dt: f32) {
+        let mates_with = |a: &ReefAnimal| match (a.alive, a.focus) {
+            (
+                true,
+                Focus {
+                    intention: Intention::Mate,
+                    target: Some(Target::Animal(j)),
+                },
+            ) => Some(j),
+            _ => None,
+        };
+        // A female in a looping pair who now chooses another male who
+        // chooses her: she leaves the first (he turns away for a while).
+        for k in 0..self.pairs.len() {
+            let pair = self.pairs[k];
+            if pair.bonded() {
+                continue;
+            }
+            let chosen = mates_with(&self.animals[pair.female as usize]);
+            if let Some(new) = chosen
+                && new != pair.male
+                && mates_with(&self.animals[new as usize]) == Some(pair.female)
+                && self.pair_of(new as usize).is_none()
+                && self.animals[new as usize].body.body_length_m()
+                    > self.animals[pair.male as usize].body.body_length_m()
+            {
+                self.pairs[k] = Pair::new(
+                    new,
+                    pair.female,
+                    self.animals[pair.female as usize].body.heading(),
+                );
+                self.animals[pair.male as usize].rejected_by = Some((pair.female, 30.0));
+                let text = format!(
+                    "{} left {} for the larger {}",
+                    self.animals[pair.female as usize].name(pair.female as usize),
+                    self.animals[pair.male as usize].name(pair.male as usize),
+                    self.animals[new as usize].name(new as usize)
+                );
+                self.log(
+                    ReefEventKind::LeftForLarger {
+                        female: pair.female,
+                        old: pair.male,
+                        new,
+                    },
+                    text,
+                );
+            }
+        }
+        // New pairs: a male and a female who choose each other.
+        for i in 0..self.animals.len() {
+            let a = &self.animals[i];
+            if a.habits.kind != FishKind::Pacifist
+                || a.habits.sex != Sex::Male
+                || self.pair_of(i).is_some()
+            {
+                continue;
+            }
+            let Some(j) = mates_with(a) else {
+                continue;
+            };
+            if mates_with(&self.animals[j as usize]) == Some(i as u32)
+                && self.pair_of(j as usize).is_none()
+            {
+                self.pairs.push(Pair::new(
+                    i as u32,
+                    j,
+                    self.animals[j as usize].body.heading(),
+                ));
+                let text = format!(
+                    "{} and {} began courting: looping",
+                    self.animals[i].name(i),
+                    self.animals[j as usize].name(j as usize)
+                );
+                self.log(
+                    ReefEventKind::Courtship {
+                        male: i as u32,
+                        female: j,
+                        phase: Phase::Looping,
+                    },
+                    text,
+                );
+            }
+        }
+        // Advance, finish or break up.
+        let t = self.time_secs as f32;
+        let surface = self.tank.max_m.y;
+        let visibility = self.config.visibility_m;
+        let mut k = 0;
+        while k < self.pairs.len() {
+            let pair = self.pairs[k];
+            let partner = |i: u32| {
+                let a = &self.animals[i as usize];
+                Partner {
+                    position_m: a.body.position_m(),
+                    head_m: a.body.head_m(),
+                    heading: a.body.heading(),
+                    body_length_m: a.body.body_length_m(),
+                }
+            };
+            let (m, f) = (partner(pair.male), partner(pair.female));
+            let both_alive =
+                self.animals[pair.male as usize].alive && self.animals[pair.female as usize].alive;
+            let (mut pair, entered) = {
+                let mut p = pair;
+                let entered = p.advance(&m, &f, t, surface, dt);
+                p.lost_secs = if m.position_m.distance(f.position_m) > visibility {
+                    p.lost_secs + dt
+                } else {
+                    0.0
+                };
+                (p, entered)
+            };
+            let names = (
+                self.animals[pair.male as usize].name(pair.male as usize),
+                self.animals[pair.female as usize].name(pair.female as usize),
+            );
+            if let Some(phase) = entered {
+                let text = if phase == Phase::Spawned {
+                    format!("{} and {} spawned", names.0, names.1)
+                } else {
+                    format!("{} and {} began {}", names.0, names.1, phase.label())
+                };
+                self.log(
+                    ReefEventKind::Courtship {
+                        male: pair.male,
+                        female: pair.female,
+                        phase,
+                    },
+                    text,
+                );
+            }
+            if pair.phase == Phase::Spawned {
+                self.counts.spawnings += 1;
+                for id in [pair.male, pair.female] {
+                    let a = &mut self.animals[id as usize];
+                    let constants = a.habits.mental;
+                    a.mental.mated(&constants);
+                    a.generator = IntentionGenerator::default();
+                }
+                self.pairs.remove(k);
+                continue;
+            }
+            let wanted = mates_with(&self.animals[pair.male as usize]) == Some(pair.female)
+                || mates_with(&self.animals[pair.female as usize]) == Some(pair.male)
+                || self.animals[pair.male as usize].focus.intention == Intention::Avoid
+                || self.animals[pair.female as usize].focus.intention == Intention::Avoid;
+            if !both_alive || pair.timed_out() || (!pair.bonded() && !wanted) {
+                pair.phase_secs = 0.0;
+                self.pairs.remove(k);
+                self.log(
+                    ReefEventKind::BrokeUp {
+                        male: pair.male,
+                        female: pair.female,
+                    },
+                    format!("{} and {} stopped courting", names.0, names.1),
+                );
+                continue;
+            }
+            self.pairs[k] = pair;
+            k += 1;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use crate::sim::reef::courtship::*;

@@ -8,8 +8,14 @@
 
 pub mod behaviour;
 pub mod courtship;
+pub mod demos;
 pub mod environment;
+pub mod events;
+pub mod feeding;
 pub mod mind;
 pub mod motor_choice;
 pub mod perception;
 pub mod world;
+
+#[cfg(test)]
+mod tests;

@@ -390,6 +390,397 @@ fn ray_ellipsoid(o: Vec3, dir: Vec3, centre: Vec3, axis: Vec3, a: f32, b: f32) -
     Some(t / len)
 }
 
+// The reef's perception step: what each animal sees, its retina and its fellows.
+
+use super::world::*;
+use crate::sim::reef::behaviour::Neighbour;
+use crate::sim::reef::mind::{FishKind, Intention, Percept, Sex, Target};
+
+/// β1 of the prey cost: schooling prey are harder to take (paper: 0.5).
+pub const PREY_BETA_SCHOOL: f32 = 0.5;
+
+/// β2 of the prey cost: prey that needs a large turn costs more (paper: 0.2).
+pub const PREY_BETA_TURN: f32 = 0.2;
+
+/// A fish swims in a school (S_k = 1 in the prey cost) when at least this many
+/// live fish of its kind and species are within [`SCHOOLMATE_RADIUS_BODY_LENGTHS`]
+/// and head within [`SCHOOLMATE_MAX_ANGLE_RAD`] of its heading (2, chosen: the
+/// fewest that make a group around the fish, not a pair passing by).
+pub const SCHOOLMATES_FOR_S_K: usize = 2;
+
+/// How near a schoolmate must be, body lengths of the fish (3, chosen: schooling
+/// fish keep about one body length apart, §7.2, so a fish in a school has its
+/// nearest mates within one or two; three tolerates a school loosened by a turn
+/// or a swerve).
+pub const SCHOOLMATE_RADIUS_BODY_LENGTHS: f32 = 3.0;
+
+/// Largest angle between a schoolmate's heading and the fish's, radians (45°,
+/// chosen: a school swims roughly the same way; a fish crossing its path at a
+/// right angle does not school with it).
+pub const SCHOOLMATE_MAX_ANGLE_RAD: f32 = std::f32::consts::FRAC_PI_4;
+
+/// Does fish `i` swim in a school: at least [`SCHOOLMATES_FOR_S_K`] live fish of
+/// its kind and species near it swimming roughly its way?
+pub(super) fn in_a_school(seen: &[Seen], i: usize) -> bool {
+    let me = seen[i];
+    if !me.alive {
+        return false;
+    }
+    let radius = SCHOOLMATE_RADIUS_BODY_LENGTHS * me.length_m;
+    let min_cos = SCHOOLMATE_MAX_ANGLE_RAD.cos();
+    seen.iter()
+        .enumerate()
+        .filter(|&(j, o)| {
+            j != i
+                && o.alive
+                && o.kind == me.kind
+                && o.species == me.species
+                && o.position_m.distance(me.position_m) <= radius
+                && o.heading.dot(me.heading) >= min_cos
+        })
+        .take(SCHOOLMATES_FOR_S_K)
+        .count()
+        >= SCHOOLMATES_FOR_S_K
+}
+
+/// A display colour for the retina (linear RGB) from a hue.
+pub(super) fn hue_rgb(hue: f32, kind: FishKind) -> [f32; 3] {
+    if kind == FishKind::Predator {
+        return [0.35, 0.38, 0.42];
+    }
+    let h = hue.rem_euclid(1.0) * 6.0;
+    let x = 1.0 - (h % 2.0 - 1.0).abs();
+    let (r, g, b) = match h as u32 {
+        0 => (1.0, x, 0.0),
+        1 => (x, 1.0, 0.0),
+        2 => (0.0, 1.0, x),
+        3 => (0.0, x, 1.0),
+        4 => (x, 0.0, 1.0),
+        _ => (1.0, 0.0, x),
+    };
+    [0.15 + 0.75 * r, 0.15 + 0.75 * g, 0.15 + 0.75 * b]
+}
+
+impl ReefWorld {
+    /// Renders animal `i`'s retinal image (`size` × `size`).
+    pub fn retina(&self, i: usize, size: usize) -> Option<Retina> {
+        let a = self.animals.get(i)?;
+        let eye = Eye::new(a.body.head_m(), a.body.heading(), self.config.visibility_m);
+        let scene = self.retina_scene(i);
+        Some(Retina::render(&eye, Vec3::Y, size, &scene, &self.env))
+    }
+
+    pub(super) fn retina_scene(&self, viewer: usize) -> RetinaScene<'_> {
+        RetinaScene {
+            fish: self
+                .animals
+                .iter()
+                .enumerate()
+                .filter(|(j, a)| *j != viewer && a.alive)
+                .map(|(_, a)| {
+                    (
+                        a.body.position_m(),
+                        a.body.heading(),
+                        a.body.body_length_m(),
+                        hue_rgb(a.hue, a.habits.kind),
+                    )
+                })
+                .collect(),
+            food_m: self.food.iter().map(|f| f.position_m).collect(),
+            obstacles: &self.obstacles,
+        }
+    }
+
+    /// What animal `i` sees: the percept for its intention generator, its
+    /// schooling neighbours, and its distances (in its body lengths) to the
+    /// predators it fears, and the most frightening predator actually in view.
+    pub(super) fn perceive(
+        &self,
+        i: usize,
+        seen: &[Seen],
+        bodies: &[Sphere],
+    ) -> (Percept, Vec<Neighbour>, Vec<f32>, Option<u32>) {
+        let me = seen[i];
+        let habits = &self.animals[i].habits;
+        let eye = Eye::new(me.head_m, me.heading, self.config.visibility_m);
+        let sees_animal = |j: usize| -> bool {
+            let target = bodies[j];
+            if !eye.in_view_volume(target) {
+                return false;
+            }
+            let others: Vec<Sphere> = bodies
+                .iter()
+                .enumerate()
+                .filter(|(k, s)| *k != i && *k != j && s.radius_m > 0.0)
+                .map(|(_, s)| *s)
+                .filter(|s| {
+                    s.center_m.distance(me.head_m)
+                        < target.center_m.distance(me.head_m) + target.radius_m
+                })
+                .collect();
+            eye.sees(target, &others, &self.obstacles)
+        };
+        let mut percept = Percept {
+            content: habits.light.content_at(self.animals[i].brightness)
+                && habits
+                    .temperature
+                    .content_at(self.env.temperature_01_at(me.position_m)),
+            ..Default::default()
+        };
+        // Candidates by distance, nearest first.
+        let mut others: Vec<(usize, f32)> = seen
+            .iter()
+            .enumerate()
+            .filter(|(j, s)| *j != i && s.alive)
+            .map(|(j, s)| (j, s.position_m.distance(me.head_m)))
+            .filter(|(_, d)| *d < self.config.visibility_m + 1.0)
+            .collect();
+        others.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+
+        // Predators (prey and pacifists look out for them).
+        let mut predator_distances = Vec::new();
+        if habits.kind != FishKind::Predator {
+            for &(j, d) in others
+                .iter()
+                .filter(|(j, _)| seen[*j].kind == FishKind::Predator)
+            {
+                if sees_animal(j) {
+                    let body_lengths = d / me.length_m.max(1e-3);
+                    predator_distances.push(body_lengths);
+                    let fear =
+                        crate::sim::reef::mind::mental_state::fear_of(&habits.mental, body_lengths);
+                    percept.predators.push((j as u32, fear));
+                }
+            }
+        }
+        // The most frightening predator in view, then one just lost from view,
+        // still feared where it was seen.
+        let sighted = percept
+            .predators
+            .iter()
+            .max_by(|x, y| x.1.total_cmp(&y.1).then(y.0.cmp(&x.0)))
+            .map(|p| p.0);
+        if habits.kind != FishKind::Predator {
+            match (percept.predators.first(), self.animals[i].last_threat) {
+                (None, Some((j, at, left)))
+                    if left > 0.0 && seen.get(j as usize).is_some_and(|s| s.alive) =>
+                {
+                    let body_lengths = at.distance(me.head_m) / me.length_m.max(1e-3);
+                    predator_distances.push(body_lengths);
+                    let fear =
+                        crate::sim::reef::mind::mental_state::fear_of(&habits.mental, body_lengths);
+                    percept.predators.push((j, fear));
+                }
+                _ => {}
+            }
+        }
+        // Prey for predators: cost C_k = d_k (1 + β1 S_k + β2 E_k / π).
+        if habits.kind == FishKind::Predator {
+            let mut candidates: Vec<(usize, f32)> = others
+                .iter()
+                .filter(|(j, _)| seen[*j].kind == FishKind::Prey)
+                .map(|&(j, d)| {
+                    let to = (seen[j].position_m - me.head_m).normalize_or(me.heading);
+                    let turn = me.heading.dot(to).clamp(-1.0, 1.0).acos();
+                    let schooling = if seen[j].schooling { 1.0 } else { 0.0 };
+                    (
+                        j,
+                        d * (1.0
+                            + PREY_BETA_SCHOOL * schooling
+                            + PREY_BETA_TURN * turn / std::f32::consts::PI),
+                    )
+                })
+                .collect();
+            candidates.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+            // The current target is always checked, then the cheapest few.
+            let current = match self.animals[i].focus.target {
+                Some(Target::Animal(id)) => candidates.iter().position(|c| c.0 == id as usize),
+                _ => None,
+            };
+            // The cheapest three in view (and the current target, if in view).
+            for (k, &(j, cost)) in candidates.iter().enumerate() {
+                if (percept.prey.len() < 3 || Some(k) == current) && sees_animal(j) {
+                    percept.prey.push((j as u32, cost));
+                }
+            }
+        }
+        // Food (prey and pacifists): the nearest few seen particles, by the
+        // effort of reaching them (see CLIMB_EFFORT_MUSCLE_BODY).
+        if habits.kind != FishKind::Predator {
+            let climb_effort = match self.animals[i].body {
+                ReefBody::Physical(_) => CLIMB_EFFORT_MUSCLE_BODY,
+                ReefBody::Point(_) => 1.0,
+            };
+            let effort = |p: Vec3| {
+                let o = p - me.head_m;
+                Vec3::new(o.x, 0.0, o.z).length().hypot(climb_effort * o.y)
+            };
+            let mut food: Vec<(u32, f32, f32)> = self
+                .food
+                .iter()
+                .map(|f| (f.id, f.position_m.distance(me.head_m), effort(f.position_m)))
+                .filter(|(_, d, _)| *d < self.config.visibility_m)
+                .collect();
+            food.sort_by(|a, b| a.2.total_cmp(&b.2).then(a.0.cmp(&b.0)));
+            let current = match self.animals[i].focus.target {
+                Some(Target::Food(id)) => Some(id),
+                _ => None,
+            };
+            for (k, &(id, d, effort)) in food.iter().enumerate() {
+                if k >= 4 && Some(id) != current {
+                    continue;
+                }
+                let Some(f) = self.food.iter().find(|f| f.id == id) else {
+                    continue;
+                };
+                let s = Sphere {
+                    center_m: f.position_m,
+                    radius_m: 0.03,
+                };
+                let blockers: Vec<Sphere> = bodies
+                    .iter()
+                    .enumerate()
+                    .filter(|(k, b)| {
+                        *k != i && b.radius_m > 0.0 && b.center_m.distance(me.head_m) < d
+                    })
+                    .map(|(_, b)| *b)
+                    .collect();
+                if eye.sees(s, &blockers, &self.obstacles) {
+                    percept.food.push((id, effort));
+                }
+            }
+        }
+        // Partners (pacifists): same species first, then nearer; females
+        // prefer bigger males.
+        if habits.kind == FishKind::Pacifist {
+            let mut mates: Vec<(usize, f32)> = others
+                .iter()
+                .filter(|(j, _)| {
+                    seen[*j].kind == FishKind::Pacifist
+                        && seen[*j].sex != habits.sex
+                        && self.animals[i]
+                            .rejected_by
+                            .is_none_or(|r| r.0 as usize != *j)
+                })
+                .map(|&(j, d)| {
+                    let other_species = if seen[j].species == habits.species {
+                        0.0
+                    } else {
+                        20.0
+                    };
+                    let rank = match habits.sex {
+                        Sex::Male => d,
+                        Sex::Female => 0.2 * d - 10.0 * seen[j].length_m,
+                    };
+                    (j, rank + other_species)
+                })
+                .collect();
+            mates.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+            for &(j, rank) in mates.iter().take(4) {
+                if sees_animal(j) {
+                    percept.mates.push((j as u32, rank));
+                }
+            }
+        }
+        // Schoolmates: the seven nearest seen schooling fish of the species.
+        let mut neighbours = Vec::new();
+        if habits.schools {
+            for &(j, _) in others
+                .iter()
+                .filter(|(j, _)| seen[*j].kind == habits.kind && seen[*j].species == habits.species)
+            {
+                if neighbours.len() >= 7 {
+                    break;
+                }
+                if eye.in_view_volume(bodies[j]) {
+                    neighbours.push(Neighbour {
+                        position_m: seen[j].position_m,
+                        heading: seen[j].heading,
+                        velocity_m_per_s: seen[j].velocity_m_per_s,
+                    });
+                }
+            }
+            percept.schoolmates_seen = neighbours.len();
+        }
+        percept.collision = self.collision_check(i, seen, &neighbours);
+        (percept, neighbours, predator_distances, sighted)
+    }
+
+    /// The most dangerous thing inside animal `i`'s collision-sensitivity box:
+    /// a box ahead of the head, as wide as the body, `collision_box_ahead`
+    /// long (halved for a schooling fish in formation, §7.2).
+    pub(super) fn collision_check(
+        &self,
+        i: usize,
+        seen: &[Seen],
+        neighbours: &[Neighbour],
+    ) -> Option<Target> {
+        let me = seen[i];
+        let a = &self.animals[i];
+        // In formation: schooling, or swerving within the school (an avoidance
+        // that interrupted schooling).
+        let schooling = a.focus.intention == Intention::School
+            || a.generator
+                .memory
+                .is_some_and(|m| m.intention == Intention::School);
+        let in_formation = schooling && neighbours.len() >= 2;
+        let mut ahead = a.habits.collision_box_ahead_body_lengths * me.length_m;
+        if in_formation {
+            ahead *= 0.5;
+        }
+        let half_width = 0.3 * me.length_m;
+        // The glass, the sand and the surface.
+        let probe = me.head_m + me.heading * ahead;
+        if !self.tank.contains(probe, 0.3 * me.length_m) {
+            return Some(Target::Glass);
+        }
+        // Rocks.
+        let mut best: Option<(f32, Target)> = None;
+        for (k, o) in self.obstacles.iter().enumerate() {
+            let steps = 4;
+            for s in 0..=steps {
+                let p = me.head_m + me.heading * (ahead * s as f32 / steps as f32);
+                let d = o.signed_distance_m(p);
+                if d < half_width && best.is_none_or(|b| d < b.0) {
+                    best = Some((d, Target::Obstacle(k as u32)));
+                }
+            }
+        }
+        // Other fish, except the prey a predator is about to swallow and a
+        // courting partner (the pair's sensitivity regions are set tightly to
+        // their bodies, §7.3).
+        let exempt = match a.focus.target {
+            Some(Target::Animal(j)) if a.focus.intention == Intention::Eat => Some(j as usize),
+            _ => self.pair_of(i).map(|p| {
+                if p.male as usize == i {
+                    p.female as usize
+                } else {
+                    p.male as usize
+                }
+            }),
+        };
+        for (j, o) in seen.iter().enumerate() {
+            if j == i || !o.alive || Some(j) == exempt {
+                continue;
+            }
+            // Prey do not swerve from the shark here: fear handles it.
+            let offset = o.position_m - me.head_m;
+            let along = offset.dot(me.heading);
+            if along < -0.2 * me.length_m || along > ahead + 0.5 * o.length_m {
+                continue;
+            }
+            let across = (offset - me.heading * along).length();
+            if across < half_width + 0.15 * o.length_m {
+                let d = offset.length();
+                if best.is_none_or(|b| d < b.0) {
+                    best = Some((d, Target::Animal(j as u32)));
+                }
+            }
+        }
+        best.map(|b| b.1)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use crate::sim::common::tank::Tank;

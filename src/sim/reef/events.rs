@@ -1,0 +1,100 @@
+//! The reef's event log: readable lines ("shark 12 ate fish 3") a student can
+//! follow, and the intention changes worth logging.
+
+use serde::{Deserialize, Serialize};
+
+use super::world::*;
+use crate::sim::reef::courtship::Phase;
+use crate::sim::reef::mind::{Focus, Intention, Target};
+
+/// Something a student can read.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ReefEvent {
+    pub time_secs: f64,
+    pub kind: ReefEventKind,
+    pub text: String,
+}
+
+/// What happened.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", tag = "kind")]
+pub enum ReefEventKind {
+    AtePrey {
+        predator: u32,
+        prey: u32,
+    },
+    AteFood {
+        fish: u32,
+    },
+    BeganEscape {
+        fish: u32,
+        predator: u32,
+    },
+    BeganMating {
+        fish: u32,
+        partner: u32,
+    },
+    Courtship {
+        male: u32,
+        female: u32,
+        phase: Phase,
+    },
+    LeftForLarger {
+        female: u32,
+        old: u32,
+        new: u32,
+    },
+    BrokeUp {
+        male: u32,
+        female: u32,
+    },
+    /// A strike that failed: the prey around the target confused the predator.
+    Missed {
+        predator: u32,
+        prey: u32,
+        /// Other prey near the target.
+        crowd: u32,
+    },
+    Intention {
+        fish: u32,
+    },
+}
+
+impl ReefWorld {
+    pub(super) fn log_decision(&mut self, i: usize, before: Focus, after: Focus) {
+        let name = self.animals[i].name(i);
+        match (before.intention, after.intention, after.target) {
+            (b, Intention::Escape, Some(Target::Animal(p)))
+                if b != Intention::Escape
+                    && self.animals[i]
+                        .last_escape_logged_secs
+                        .is_none_or(|t| self.time_secs - t >= ESCAPE_LOG_EVERY_SECS) =>
+            {
+                self.animals[i].last_escape_logged_secs = Some(self.time_secs);
+                let text = format!(
+                    "{name} fled from {}",
+                    self.animals[p as usize].name(p as usize)
+                );
+                self.log(
+                    ReefEventKind::BeganEscape {
+                        fish: i as u32,
+                        predator: p,
+                    },
+                    text,
+                );
+            }
+            _ => {}
+        }
+    }
+
+    pub(super) fn log(&mut self, kind: ReefEventKind, text: String) {
+        if self.events.len() == EVENT_LOG_LEN {
+            self.events.pop_front();
+        }
+        self.events.push_back(ReefEvent {
+            time_secs: self.time_secs,
+            kind,
+            text,
+        });
+    }
+}
