@@ -9,6 +9,7 @@
 
 pub mod banded_cholesky;
 pub mod body_layout;
+pub mod drive;
 pub mod fish_body;
 pub mod hydrodynamics;
 pub mod motor_bridge;

@@ -30,6 +30,7 @@ use serde::{Deserialize, Serialize};
 use super::demos::ReefScene;
 use super::events::ReefEvent;
 use crate::sim::body::body_layout::HEAD_NODE;
+use crate::sim::body::drive::{drive_physical, step_and_constrain};
 use crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
 use crate::sim::body::physical_fish::PhysicalFish;
 use crate::sim::common::fish::Fish;
@@ -37,7 +38,6 @@ use crate::sim::common::obstacle::Obstacle;
 use crate::sim::common::steering::{self, SteeringParams};
 use crate::sim::common::tank::Tank;
 use crate::sim::common::water_current::WaterCurrent;
-use crate::sim::physics::world::{drive_physical, step_and_constrain};
 use crate::sim::reef::courtship::Pair;
 use crate::sim::reef::environment::Environment;
 use crate::sim::reef::mind::habits::KindTraits;
@@ -786,7 +786,7 @@ impl ReefWorld {
                     let bent = desired + keep_off(path);
                     let mut v = bent.normalize_or(heading) * wanted;
                     if let Some(away) = a.touch {
-                        v = crate::sim::physics::world::touch_reflex(v, away, top);
+                        v = crate::sim::body::drive::touch_reflex(v, away, top);
                     }
                     wish.velocity_m_per_s = v;
                 }
