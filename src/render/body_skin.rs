@@ -62,7 +62,7 @@ use std::f32::consts::{FRAC_PI_2, PI, TAU};
 use glam::{Vec3, vec3};
 
 use super::fish_palette::Livery;
-use super::mesh::{Material, Mesh, Vertex};
+use super::mesh::{Material, Mesh, Vertex, pack_rgba};
 use crate::sim::body::body_layout::{
     HEAD_NODE, NODE_COUNT, PAPER_BODY_LENGTH, REST_POSITIONS, RING_COUNT, TAIL_FIN_NODES,
     ring_nodes,
@@ -523,12 +523,6 @@ fn pack_material(material: Material, p: Vec3) -> u32 {
         word |= q << (8 + 8 * axis);
     }
     word
-}
-
-/// Packs linear RGB and an alpha byte into RGBA8.
-fn pack_rgba(rgb: [f32; 3], alpha: u32) -> u32 {
-    let c = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u32;
-    c(rgb[0]) | (c(rgb[1]) << 8) | (c(rgb[2]) << 16) | (alpha.min(255) << 24)
 }
 
 fn smoothstep(edge0: f32, edge1: f32, x: f32) -> f32 {

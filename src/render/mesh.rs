@@ -73,10 +73,15 @@ pub struct Mesh {
     pub indices: Vec<u32>,
 }
 
-/// Packs a linear-ish RGB colour into RGBA8.
+/// Packs a linear-ish RGB colour into RGBA8, opaque.
 pub fn pack_rgb(rgb: [f32; 3]) -> u32 {
+    pack_rgba(rgb, 255)
+}
+
+/// Packs a linear-ish RGB colour and an alpha byte into RGBA8.
+pub fn pack_rgba(rgb: [f32; 3], alpha: u32) -> u32 {
     let c = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u32;
-    c(rgb[0]) | (c(rgb[1]) << 8) | (c(rgb[2]) << 16) | (255 << 24)
+    c(rgb[0]) | (c(rgb[1]) << 8) | (c(rgb[2]) << 16) | (alpha.min(255) << 24)
 }
 
 impl Mesh {
