@@ -5,7 +5,9 @@
 //! A [`BodySkin`] is built once per [`BodyShape`] from a template surface in the body
 //! frame of `body_layout` (paper units: head tip at x = 0, tail-fin tips at x = −26;
 //! y to the fish's left, z dorsal): a closed, lofted body, single-sided fins and two
-//! eyes. [`BodySkin::append_deformed`] writes it into a [`Mesh`] in world space.
+//! eyes. The body follows the outlines in [`super::profile`] (22 paper units from the
+//! head node to the tail root at ring 5), as the rigid meshes of `mesh` do.
+//! [`BodySkin::append_deformed`] writes it into a [`Mesh`] in world space.
 //!
 //! # Deformation
 //!
@@ -57,12 +59,13 @@
 //! The world frame is whatever the nodes are given in; the lighting in `scene.wgsl`
 //! takes +y as up.
 
-use std::f32::consts::{FRAC_PI_2, PI, TAU};
+use std::f32::consts::{PI, TAU};
 
 use glam::{Vec3, vec3};
 
 use super::fish_palette::Livery;
 use super::mesh::{Material, Mesh, Vertex, pack_rgba};
+use super::profile::{self, PlacedProfile, Up};
 use crate::sim::body::body_layout::{
     HEAD_NODE, NODE_COUNT, PAPER_BODY_LENGTH, REST_POSITIONS, RING_COUNT, TAIL_FIN_NODES,
     ring_nodes,
@@ -564,30 +567,26 @@ impl Template {
         self.indices.extend_from_slice(&[a, b, c]);
     }
 
-    /// A closed body along −x: an apex at `snout`, a ring of `segments` points at
-    /// each of `xs` (decreasing), a fan closing the last ring. `surface(x, θ)` is a
-    /// point on the skin, θ = 0 on the left (+y), π/2 on the back (+z). Normals by
-    /// finite differences, outwards; `tone(p, n)` is the countershading.
+    /// The closed skin of `body` along −x: an apex at its snout, a ring of
+    /// `segments` points at each of `xs` (decreasing), a fan closing the last ring;
+    /// ring points from θ = 0 on the left (+y) through π/2 on the back (+z). Normals
+    /// by finite differences, outwards; `tone(p, n)` is the countershading.
     fn tube(
         &mut self,
-        snout: Vec3,
+        body: &PlacedProfile,
         xs: &[f32],
         segments: u32,
-        surface: &dyn Fn(f32, f32) -> Vec3,
         material: Material,
         tone: &dyn Fn(Vec3, Vec3) -> f32,
     ) {
+        let snout = body.snout();
         let apex = self.push(snout, Vec3::X, material, tone(snout, Vec3::X));
         let mut rings = Vec::with_capacity(xs.len());
         for &x in xs {
             rings.push(self.vertices.len() as u32);
             for k in 0..segments {
                 let angle = k as f32 / segments as f32 * TAU;
-                let (dx, da) = (0.02, 0.01);
-                let along = surface(x - dx, angle) - surface(x + dx, angle);
-                let around = surface(x, angle + da) - surface(x, angle - da);
-                let p = surface(x, angle);
-                let n = along.cross(around).normalize_or(Vec3::X);
+                let (p, n) = surface_frame(body, x, angle);
                 self.push(p, n, material, tone(p, n));
             }
         }
@@ -688,9 +687,9 @@ fn ring_xs(end_x: f32, rings: usize, power: f32) -> Vec<f32> {
         .collect()
 }
 
-/// A point on a skin and its outward normal by finite differences (for eyes and fin
-/// roots).
-fn surface_frame(surface: &dyn Fn(f32, f32) -> Vec3, x: f32, angle: f32) -> (Vec3, Vec3) {
+/// A point on a body's skin and its outward normal by finite differences.
+fn surface_frame(body: &PlacedProfile, x: f32, angle: f32) -> (Vec3, Vec3) {
+    let surface = |x, angle| body.surface(x, angle);
     let along = surface(x - 0.02, angle) - surface(x + 0.02, angle);
     let around = surface(x, angle + 0.01) - surface(x, angle - 0.01);
     (surface(x, angle), along.cross(around).normalize_or(Vec3::Y))
@@ -701,59 +700,43 @@ fn mirror(p: Vec3) -> Vec3 {
     vec3(p.x, -p.y, p.z)
 }
 
-/// Where the fish's body tube ends, inside the caudal fin's root.
-const FISH_TUBE_END_X: f32 = -22.6;
+/// Where the body ends and the caudal fin begins, the profiles' tail root (x, paper
+/// units): ring 5. The head node (x = 0) is the snout.
+const TAIL_ROOT_X: f32 = -22.0;
 
-/// Half height, half width and axis height of the fish's body at x (paper units):
-/// deep and laterally compressed, deepest a third of the way back, a rounded head
-/// and a slim caudal peduncle.
-fn fish_profile(x: f32) -> (f32, f32, f32) {
-    let t = (-x / 22.0).clamp(0.0, 1.0);
-    let nose = (t / 0.3).min(1.0);
-    let rounded = (1.0 - (1.0 - nose).powi(2)).powf(0.75);
-    let taper = 1.0 - ((t - 0.3).max(0.0) / 0.7).powf(1.3) * 0.8;
-    let half_height = 3.4 * rounded * taper + 0.25;
-    let half_width = half_height * (0.48 + 0.08 * (1.0 - nose));
-    let axis = -0.2 + 0.15 * t;
-    (half_height, half_width, axis)
-}
+/// Where the body tubes end, inside the caudal fin's root (a little past the tail
+/// root, with the tail root's section).
+const TUBE_END_X: f32 = -22.6;
 
-/// A point on the fish's skin (see [`Template::tube`]): the back more arched than the
-/// belly.
-fn fish_skin(x: f32, angle: f32) -> Vec3 {
-    let (h, w, axis) = fish_profile(x);
-    let s = angle.sin();
-    vec3(x, w * angle.cos(), axis + h * s * (1.0 + 0.06 * s))
-}
+/// The fish's body in the body frame (paper units): [`profile::FISH`] from the head
+/// node to the tail root.
+pub(super) const FISH_BODY: PlacedProfile = PlacedProfile {
+    profile: profile::FISH,
+    snout_x: 0.0,
+    tail_root_x: TAIL_ROOT_X,
+    up: Up::Z,
+};
 
-fn fish_top(x: f32) -> f32 {
-    fish_skin(x, FRAC_PI_2).z
-}
-
-fn fish_bottom(x: f32) -> f32 {
-    fish_skin(x, -FRAC_PI_2).z
-}
+/// The shark's body in the body frame (paper units): [`profile::SHARK`] from the
+/// head node to the tail root.
+pub(super) const SHARK_BODY: PlacedProfile = PlacedProfile {
+    profile: profile::SHARK,
+    ..FISH_BODY
+};
 
 /// The reef fish (see [`BodyShape::Fish`]).
 fn build_fish(t: &mut Template) {
     let tone = |p: Vec3, _n: Vec3| {
-        let (h, _, axis) = fish_profile(p.x);
-        ((p.z - axis) / h).clamp(-1.0, 1.0) * 0.5 + 0.5
+        let s = FISH_BODY.section(p.x);
+        ((p.z - s.axis) / s.half_height()).clamp(-1.0, 1.0) * 0.5 + 0.5
     };
-    let (_, _, snout_z) = fish_profile(0.0);
-    t.tube(
-        vec3(0.0, 0.0, snout_z),
-        &ring_xs(FISH_TUBE_END_X, 24, 1.3),
-        18,
-        &fish_skin,
-        Material::SkinFish,
-        &tone,
-    );
+    let rings = ring_xs(TUBE_END_X, 24, 1.3);
+    t.tube(&FISH_BODY, &rings, 18, Material::SkinFish, &tone);
     let fin = Material::SkinFin;
 
     // Forked caudal fin around the tail-fin nodes (x = −26, z = ±3): from the
     // peduncle to lobe tips at x = −27.4, z = ±4.4, notched to x = −24.6.
-    let (_, _, axis) = fish_profile(-21.0);
+    let axis = FISH_BODY.section(-21.0).axis;
     let rows: Vec<Vec<Vec3>> = (0..=4)
         .map(|i| {
             let u = i as f32 / 4.0;
@@ -782,7 +765,11 @@ fn build_fish(t: &mut Template) {
                         * (s / 0.15).min(1.0).sqrt()
                         * (1.0 - 0.25 * s)
                         * (1.0 - 0.85 * smoothstep(0.8, 1.0, s));
-                vec3(x - 0.6 * height * v, 0.0, fish_top(x) - 0.3 + height * v)
+                vec3(
+                    x - 0.6 * height * v,
+                    0.0,
+                    FISH_BODY.top(x) - 0.3 + height * v,
+                )
             })
             .collect()
     };
@@ -796,7 +783,11 @@ fn build_fish(t: &mut Template) {
                 let x = -13.0 - 5.8 * s;
                 let depth =
                     0.2 + 1.7 * (s / 0.2).min(1.0).sqrt() * (1.0 - 0.8 * smoothstep(0.75, 1.0, s));
-                vec3(x - 0.5 * depth * v, 0.0, fish_bottom(x) + 0.3 - depth * v)
+                vec3(
+                    x - 0.5 * depth * v,
+                    0.0,
+                    FISH_BODY.bottom(x) + 0.3 - depth * v,
+                )
             })
             .collect()
     };
@@ -808,7 +799,7 @@ fn build_fish(t: &mut Template) {
         let root: Vec<Vec3> = [(-5.2, -0.05), (-5.6, -0.25), (-6.0, -0.45)]
             .iter()
             .map(|&(x, sine): &(f32, f32)| {
-                let (p, n) = surface_frame(&fish_skin, x, sine.asin());
+                let (p, n) = surface_frame(&FISH_BODY, x, sine.asin());
                 p - n * 0.12
             })
             .collect();
@@ -832,7 +823,7 @@ fn build_fish(t: &mut Template) {
             0.5,
         );
         // Pelvic fins: under the belly, hanging down and back.
-        let (b0, b1) = (fish_bottom(-6.6) + 0.25, fish_bottom(-7.6) + 0.25);
+        let (b0, b1) = (FISH_BODY.bottom(-6.6) + 0.25, FISH_BODY.bottom(-7.6) + 0.25);
         t.sheet(
             &[
                 vec![place(vec3(-6.6, 0.45, b0)), place(vec3(-7.6, 0.45, b1))],
@@ -846,42 +837,9 @@ fn build_fish(t: &mut Template) {
         );
         // Eyes: domes on the sides of the head, above the axis.
         let angle = if side > 0.0 { 0.34 } else { PI - 0.34 };
-        let (p, n) = surface_frame(&fish_skin, -2.3, angle);
+        let (p, n) = surface_frame(&FISH_BODY, -2.3, angle);
         t.eye(p - n * 0.12, n, 0.55, 8);
     }
-}
-
-/// Where the shark's body tube ends, inside the tail's root.
-const SHARK_TUBE_END_X: f32 = -22.6;
-
-/// Half height, half width and axis height of the shark's body at x (paper units):
-/// a torpedo with a conical snout, deepest a third of the way back, a slim caudal
-/// peduncle; the head a little broader than tall, the axis rising towards the tail
-/// as the spine runs up into the upper lobe.
-fn shark_profile(x: f32) -> (f32, f32, f32) {
-    let t = (-x / 22.0).clamp(0.0, 1.0);
-    let nose = (t / 0.3).min(1.0);
-    let pointed = 1.0 - (1.0 - nose).powf(2.2);
-    let taper = 1.0 - ((t - 0.33).max(0.0) / 0.67).powf(1.4) * 0.76;
-    let half_height = 2.5 * pointed * taper + 0.15;
-    let half_width = half_height * (0.82 + 0.3 * (1.0 - nose));
-    let axis = 0.7 * t.powi(3) - 0.15;
-    (half_height, half_width, axis)
-}
-
-/// A point on the shark's skin; the belly flatter than the back.
-fn shark_skin(x: f32, angle: f32) -> Vec3 {
-    let (h, w, axis) = shark_profile(x);
-    let s = angle.sin();
-    vec3(x, w * angle.cos(), axis + h * s * (0.88 + 0.12 * s))
-}
-
-fn shark_top(x: f32) -> f32 {
-    shark_skin(x, FRAC_PI_2).z
-}
-
-fn shark_bottom(x: f32) -> f32 {
-    shark_skin(x, -FRAC_PI_2).z
 }
 
 /// The shark (see [`BodyShape::Shark`]).
@@ -890,22 +848,15 @@ fn build_shark(t: &mut Template) {
     // down the belly colour; a little darker along the top.
     let tone =
         |_p: Vec3, n: Vec3| 0.5 * smoothstep(-0.3, -0.02, n.z) + 0.2 * smoothstep(0.4, 1.0, n.z);
-    let (_, _, snout_z) = shark_profile(0.0);
-    t.tube(
-        vec3(0.0, 0.0, snout_z),
-        &ring_xs(SHARK_TUBE_END_X, 24, 1.2),
-        18,
-        &shark_skin,
-        Material::SkinShark,
-        &tone,
-    );
+    let rings = ring_xs(TUBE_END_X, 24, 1.2);
+    t.tube(&SHARK_BODY, &rings, 18, Material::SkinShark, &tone);
     let fin = Material::SkinSharkFin;
-    let top = |x: f32, dz: f32| vec3(x, 0.0, shark_top(x) + dz);
-    let bottom = |x: f32, dz: f32| vec3(x, 0.0, shark_bottom(x) + dz);
+    let top = |x: f32, dz: f32| vec3(x, 0.0, SHARK_BODY.top(x) + dz);
+    let bottom = |x: f32, dz: f32| vec3(x, 0.0, SHARK_BODY.bottom(x) + dz);
 
     // First dorsal fin: tall, its apex leaning back, a concave trailing edge and a
     // free rear tip.
-    let apex_z = shark_top(-8.6) + 4.6;
+    let apex_z = SHARK_BODY.top(-8.6) + 4.6;
     t.fan(
         top(-8.6, -0.7),
         &[
@@ -951,7 +902,7 @@ fn build_shark(t: &mut Template) {
 
     // Heterocercal tail: the spine runs up into a long upper lobe that reaches well
     // past the upper tail-fin node (−26, +3); a short lower lobe near the lower one.
-    let (_, _, tail_axis) = shark_profile(-22.0);
+    let tail_axis = SHARK_BODY.section(TAIL_ROOT_X).axis;
     t.fan(
         vec3(-21.5, 0.0, tail_axis),
         &[
@@ -964,7 +915,7 @@ fn build_shark(t: &mut Template) {
             vec3(-24.8, 0.0, 0.5),
             vec3(-26.0, 0.0, -2.5),
             vec3(-23.8, 0.0, -1.3),
-            bottom(-22.0, 0.1),
+            bottom(TAIL_ROOT_X, 0.1),
         ],
         &[0.1, 0.4, 0.7, 1.0],
         fin,
@@ -975,7 +926,7 @@ fn build_shark(t: &mut Template) {
         // Pectoral fins: long, swept back and angled down, from low on the flank
         // behind the gills. Rows from root to tip, leading to trailing edge.
         let root_at = |x: f32| {
-            let (p, n) = surface_frame(&shark_skin, x, -0.5);
+            let (p, n) = surface_frame(&SHARK_BODY, x, -0.5);
             p - n * 0.15
         };
         let (front, rear) = (root_at(-4.8), root_at(-7.6));
@@ -995,8 +946,8 @@ fn build_shark(t: &mut Template) {
         t.sheet(&rows, fin, 0.5);
         // Pelvic fins, small, under the rear of the belly.
         let (p0, p1) = (
-            surface_frame(&shark_skin, -13.6, -1.1).0,
-            surface_frame(&shark_skin, -14.9, -1.1).0,
+            surface_frame(&SHARK_BODY, -13.6, -1.1).0,
+            surface_frame(&SHARK_BODY, -14.9, -1.1).0,
         );
         t.sheet(
             &[
@@ -1014,7 +965,7 @@ fn build_shark(t: &mut Template) {
         );
         // Eyes, on the sides of the head.
         let angle = if side > 0.0 { 0.3 } else { PI - 0.3 };
-        let (p, n) = surface_frame(&shark_skin, -2.6, angle);
+        let (p, n) = surface_frame(&SHARK_BODY, -2.6, angle);
         t.eye(p - n * 0.06, n + vec3(0.0, 0.0, 0.25), 0.3, 8);
     }
 }
@@ -1190,6 +1141,13 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn the_tail_root_of_the_profiles_is_ring_5() {
+        let ring_5 = ring_nodes(RING_COUNT - 1).map(|i| REST_POSITIONS[i].x);
+        assert!(ring_5.iter().all(|&x| x == TAIL_ROOT_X), "{ring_5:?}");
+        const { assert!(TUBE_END_X < TAIL_ROOT_X) };
     }
 
     #[test]

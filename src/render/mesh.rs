@@ -4,7 +4,9 @@
 //! Animal meshes share one frame: one body length long, snout towards +x, back up
 //! (+y), scaled and oriented per instance by the vertex shader, which also animates
 //! them (`vs_fish` beats the tail of fish and sharks, `vs_ray` flaps the stingray's
-//! wings; see `scene.wgsl`). The `Material` of each vertex picks the shading.
+//! wings; see `scene.wgsl`). The `Material` of each vertex picks the shading. The
+//! bodies of the fish and the shark follow the outlines in [`super::profile`], which
+//! the skinned muscle bodies (`body_skin`) follow too.
 //!
 //! Everything here is plain geometry (no GPU types), so it is tested natively: normals
 //! are unit length, animals point along +x, rocks are closed.
@@ -14,6 +16,7 @@ use std::f32::consts::TAU;
 
 use glam::{Vec3, vec3};
 
+use super::profile::{self, PlacedProfile, Section, Up};
 use crate::sim::{Obstacle, Tank};
 
 /// How the fragment shader colours a surface (the `material` vertex attribute).
@@ -228,30 +231,23 @@ impl Mesh {
     }
 }
 
-/// Half height and half width of the fish body at `x` ∈ [−0.5, 0.5] (tail root to
-/// snout), in body lengths. A streamlined, laterally compressed profile: deepest a
-/// third of the way back from the snout, a narrow caudal peduncle.
-fn fish_profile(x: f32) -> (f32, f32) {
-    let t = (0.5 - x).clamp(0.0, 1.0); // 0 at the snout, 1 at the tail root
-    let nose = (t / 0.28).min(1.0);
-    let rounded_nose = (1.0 - (1.0 - nose).powi(2)).sqrt();
-    let taper = 1.0 - ((t - 0.28).max(0.0) / 0.72).powf(1.3) * 0.86;
-    let half_height = 0.15 * rounded_nose * taper + 0.012;
-    let half_width = half_height * 0.55;
-    (half_height, half_width)
-}
+/// Where every animal mesh's snout is (x, body lengths).
+const SNOUT_X: f32 = 0.5;
 
-/// A point on the fish's skin (see [`Mesh::loft`]).
-fn fish_skin(x: f32, angle: f32) -> Vec3 {
-    let (h, w) = fish_profile(x);
-    vec3(x, h * angle.sin() - 0.01, w * angle.cos())
-}
+/// The fish's body: [`profile::FISH`], one body length from the snout to the tail
+/// root at x = −0.5, where the tail fin begins.
+pub(super) const FISH_BODY: PlacedProfile = PlacedProfile {
+    profile: profile::FISH,
+    snout_x: SNOUT_X,
+    tail_root_x: -0.5,
+    up: Up::Y,
+};
 
 /// Ring positions from the snout (+0.5) to the tail root (−0.5), closer together at
 /// the snout where the profile curves most.
 fn fish_rings(rings: usize) -> Vec<f32> {
     (1..=rings)
-        .map(|i| 0.5 - (i as f32 / rings as f32).powf(1.15))
+        .map(|i| SNOUT_X - FISH_BODY.length() * (i as f32 / rings as f32).powf(1.15))
         .collect()
 }
 
@@ -273,13 +269,13 @@ fn fish_tail_fin(mesh: &mut Mesh, with_notch: bool) {
     }
 }
 
-/// The dorsal fin of both fish meshes.
+/// The dorsal fin of both fish meshes, sized by the height of the back at x = 0.05.
 fn fish_dorsal_fin(mesh: &mut Mesh) {
-    let (h_dorsal, _) = fish_profile(0.05);
+    let back = FISH_BODY.top(0.05);
     mesh.fin_triangle(
-        vec3(0.12, h_dorsal - 0.02, 0.0),
-        vec3(-0.2, h_dorsal * 0.8 - 0.02, 0.0),
-        vec3(-0.12, h_dorsal + 0.11, 0.0),
+        vec3(0.12, back - 0.01, 0.0),
+        vec3(-0.2, back * 0.8 - 0.012, 0.0),
+        vec3(-0.12, back + 0.12, 0.0),
         Material::FishFin,
     );
 }
@@ -289,10 +285,10 @@ fn fish_dorsal_fin(mesh: &mut Mesh) {
 pub fn fish() -> Mesh {
     let mut mesh = Mesh::default();
     mesh.loft(
-        vec3(0.5, -0.01, 0.0),
+        FISH_BODY.snout(),
         &fish_rings(18),
         14,
-        fish_skin,
+        |x, angle| FISH_BODY.surface(x, angle),
         Material::FishBody,
     );
     fish_tail_fin(&mut mesh, true);
@@ -306,7 +302,7 @@ pub fn fish() -> Mesh {
     );
     // Pectoral fins, angled out and back from behind the gills.
     for side in [-1.0_f32, 1.0] {
-        let (_, w) = fish_profile(0.22);
+        let w = FISH_BODY.section(0.22).half_width;
         mesh.fin_triangle(
             vec3(0.24, -0.05, side * w * 0.9),
             vec3(0.16, -0.06, side * w * 0.9),
@@ -316,8 +312,8 @@ pub fn fish() -> Mesh {
     }
     // Eyes: small domes on each side of the head.
     for side in [-1.0_f32, 1.0] {
-        let (h, w) = fish_profile(0.38);
-        let center = vec3(0.38, h * 0.35, side * w * 0.92);
+        let s = FISH_BODY.section(0.38);
+        let center = vec3(0.38, s.half_height() * 0.35, side * s.half_width * 0.92);
         mesh.eye(center, vec3(0.0, 0.0, side), 0.028, 8);
     }
     mesh
@@ -329,17 +325,17 @@ pub fn fish() -> Mesh {
 pub fn fish_lod() -> Mesh {
     let mut mesh = Mesh::default();
     mesh.loft(
-        vec3(0.5, -0.01, 0.0),
+        FISH_BODY.snout(),
         &fish_rings(5),
         8,
-        fish_skin,
+        |x, angle| FISH_BODY.surface(x, angle),
         Material::FishBody,
     );
     fish_tail_fin(&mut mesh, false);
     fish_dorsal_fin(&mut mesh);
     for side in [-1.0_f32, 1.0] {
-        let (h, w) = fish_profile(0.38);
-        let center = vec3(0.38, h * 0.35, side * w * 0.92);
+        let s = FISH_BODY.section(0.38);
+        let center = vec3(0.38, s.half_height() * 0.35, side * s.half_width * 0.92);
         mesh.eye(center, vec3(0.0, 0.0, side), 0.03, 3);
     }
     mesh
@@ -348,38 +344,14 @@ pub fn fish_lod() -> Mesh {
 /// Where the shark's body ends and its tail fin begins (x, body lengths).
 const SHARK_TAIL_ROOT_X: f32 = -0.3;
 
-/// Half height, half width and the height of the axis of the shark's body at `x`
-/// (body lengths). A torpedo: a conical snout, deepest at a third of its length, a
-/// slim caudal peduncle; the head a little broader than tall, the axis rising towards
-/// the tail as the spine runs up into the upper tail lobe.
-fn shark_profile(x: f32) -> (f32, f32, f32) {
-    let t = ((0.5 - x) / (0.5 - SHARK_TAIL_ROOT_X)).clamp(0.0, 1.0);
-    let nose = (t / 0.3).min(1.0);
-    let pointed_nose = 1.0 - (1.0 - nose).powf(2.2);
-    let taper = 1.0 - ((t - 0.33).max(0.0) / 0.67).powf(1.4) * 0.8;
-    let half_height = 0.08 * pointed_nose * taper + 0.004;
-    let half_width = half_height * (0.85 + 0.3 * (1.0 - nose));
-    let axis_y = 0.025 * t.powi(3) - 0.005;
-    (half_height, half_width, axis_y)
-}
-
-/// A point on the shark's skin (see [`Mesh::loft`]); the belly is flatter than the
-/// back.
-fn shark_skin(x: f32, angle: f32) -> Vec3 {
-    let (h, w, axis_y) = shark_profile(x);
-    let s = angle.sin();
-    vec3(x, axis_y + h * s * (0.85 + 0.15 * s), w * angle.cos())
-}
-
-/// The top of the shark's back at `x`.
-fn shark_back_y(x: f32) -> f32 {
-    shark_skin(x, TAU / 4.0).y
-}
-
-/// The bottom of the shark's belly at `x`.
-fn shark_belly_y(x: f32) -> f32 {
-    shark_skin(x, -TAU / 4.0).y
-}
+/// The shark's body: [`profile::SHARK`], 0.8 body lengths from the snout to the
+/// tail root.
+pub(super) const SHARK_BODY: PlacedProfile = PlacedProfile {
+    profile: profile::SHARK,
+    snout_x: SNOUT_X,
+    tail_root_x: SHARK_TAIL_ROOT_X,
+    up: Up::Y,
+};
 
 /// A shark (requiem-shark shape), one body length from the snout at +x = 0.5 to the
 /// tip of the upper tail lobe at −0.5, back up: a grey torpedo with a pointed snout,
@@ -392,18 +364,18 @@ pub fn shark() -> Mesh {
     let skin = Material::SharkSkin;
     let mut mesh = Mesh::default();
     let xs: Vec<f32> = (1..=RINGS)
-        .map(|i| 0.5 - (0.5 - SHARK_TAIL_ROOT_X) * (i as f32 / RINGS as f32).powf(1.2))
+        .map(|i| SNOUT_X - SHARK_BODY.length() * (i as f32 / RINGS as f32).powf(1.2))
         .collect();
-    let (_, _, snout_y) = shark_profile(0.5);
-    mesh.loft(vec3(0.5, snout_y, 0.0), &xs, SEGMENTS, shark_skin, skin);
+    let surface = |x, angle| SHARK_BODY.surface(x, angle);
+    mesh.loft(SHARK_BODY.snout(), &xs, SEGMENTS, surface, skin);
 
     // First dorsal fin: a tall triangle whose apex leans back, and a free rear tip.
-    let base = |x: f32| vec3(x, shark_back_y(x) - 0.01, 0.0);
-    let apex = vec3(-0.07, shark_back_y(0.02) + 0.14, 0.0);
+    let base = |x: f32| vec3(x, SHARK_BODY.top(x) - 0.01, 0.0);
+    let apex = vec3(-0.07, SHARK_BODY.top(0.02) + 0.14, 0.0);
     mesh.fin_triangle(base(0.13), base(-0.04), apex, skin);
     mesh.fin_triangle(
         base(-0.04),
-        vec3(-0.08, shark_back_y(-0.08) + 0.012, 0.0),
+        vec3(-0.08, SHARK_BODY.top(-0.08) + 0.012, 0.0),
         apex,
         skin,
     );
@@ -411,10 +383,10 @@ pub fn shark() -> Mesh {
     mesh.fin_triangle(
         base(-0.17),
         base(-0.23),
-        vec3(-0.245, shark_back_y(-0.2) + 0.04, 0.0),
+        vec3(-0.245, SHARK_BODY.top(-0.2) + 0.04, 0.0),
         skin,
     );
-    let belly = |x: f32| vec3(x, shark_belly_y(x) + 0.01, 0.0);
+    let belly = |x: f32| vec3(x, SHARK_BODY.bottom(x) + 0.01, 0.0);
     mesh.fin_triangle(
         belly(-0.23),
         belly(-0.18),
@@ -423,26 +395,26 @@ pub fn shark() -> Mesh {
     );
     for side in [-1.0_f32, 1.0] {
         // Pectoral fins: long, swept back and angled down, behind the gills.
-        let (_, w, axis_y) = shark_profile(0.16);
-        let root_y = axis_y - 0.04;
+        let s = SHARK_BODY.section(0.16);
+        let root_y = s.axis - 0.04;
         mesh.fin_triangle(
-            vec3(0.21, root_y, side * w * 0.75),
-            vec3(0.09, root_y, side * w * 0.75),
+            vec3(0.21, root_y, side * s.half_width * 0.75),
+            vec3(0.09, root_y, side * s.half_width * 0.75),
             vec3(0.0, root_y - 0.075, side * 0.22),
             skin,
         );
         // Pelvic fins.
-        let (_, w, axis_y) = shark_profile(-0.12);
+        let s = SHARK_BODY.section(-0.12);
         mesh.fin_triangle(
-            vec3(-0.09, axis_y - 0.03, side * w * 0.6),
-            vec3(-0.16, axis_y - 0.025, side * w * 0.5),
-            vec3(-0.17, axis_y - 0.06, side * (w + 0.04)),
+            vec3(-0.09, s.axis - 0.03, side * s.half_width * 0.6),
+            vec3(-0.16, s.axis - 0.025, side * s.half_width * 0.5),
+            vec3(-0.17, s.axis - 0.06, side * (s.half_width + 0.04)),
             skin,
         );
         // Eyes, on the sides of the head.
-        let (h, w, axis_y) = shark_profile(0.37);
+        let s = SHARK_BODY.section(0.37);
         mesh.eye(
-            vec3(0.37, axis_y + h * 0.3, side * w * 0.92),
+            vec3(0.37, s.axis + s.back * 0.3, side * s.half_width * 0.92),
             vec3(0.15, 0.2, side),
             0.013,
             8,
@@ -450,7 +422,11 @@ pub fn shark() -> Mesh {
     }
     // Heterocercal tail: a long, narrow upper lobe following the spine up and back,
     // a short lower lobe, fanned from the middle of the caudal peduncle.
-    let (h, _, axis_y) = shark_profile(SHARK_TAIL_ROOT_X);
+    let Section {
+        axis: axis_y,
+        back: h,
+        ..
+    } = SHARK_BODY.section(SHARK_TAIL_ROOT_X);
     let root = vec3(SHARK_TAIL_ROOT_X + 0.02, axis_y, 0.0);
     let outline = [
         vec3(SHARK_TAIL_ROOT_X + 0.02, axis_y + h + 0.01, 0.0),
@@ -1113,7 +1089,7 @@ mod tests {
         let body_depth = (0..=100)
             .map(|i| {
                 let x = 0.5 - i as f32 / 100.0 * (0.5 - SHARK_TAIL_ROOT_X);
-                shark_back_y(x) - shark_belly_y(x)
+                SHARK_BODY.top(x) - SHARK_BODY.bottom(x)
             })
             .fold(0.0_f32, f32::max);
         assert!(body_depth * 5.0 < 1.0, "body depth {body_depth}");
@@ -1126,12 +1102,12 @@ mod tests {
             .map(|v| v.position[1])
             .fold(f32::MIN, f32::max);
         assert!(
-            fin_top > shark_back_y(0.0) + 0.1,
+            fin_top > SHARK_BODY.top(0.0) + 0.1,
             "dorsal fin top {fin_top}"
         );
         // Heterocercal tail: the upper lobe reaches further from the spine than the
         // lower one.
-        let (_, _, axis_y) = shark_profile(SHARK_TAIL_ROOT_X);
+        let axis_y = SHARK_BODY.section(SHARK_TAIL_ROOT_X).axis;
         let tail: Vec<f32> = mesh
             .vertices
             .iter()
@@ -1142,7 +1118,11 @@ mod tests {
         let lower = -tail.iter().copied().fold(f32::MAX, f32::min);
         assert!(upper > 1.4 * lower, "upper lobe {upper}, lower {lower}");
         // Big pectoral fins: wider than the body by more than a third of its depth.
-        assert!(hi.z > shark_profile(0.16).1 + body_depth / 3.0, "{}", hi.z);
+        assert!(
+            hi.z > SHARK_BODY.section(0.16).half_width + body_depth / 3.0,
+            "{}",
+            hi.z
+        );
     }
 
     #[test]

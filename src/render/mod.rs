@@ -6,6 +6,7 @@ pub mod fish_palette;
 pub mod frame_builder;
 pub mod mesh;
 pub mod orbit_camera;
+pub mod profile;
 pub mod render_tier;
 pub mod scene_renderer;
 
