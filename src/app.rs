@@ -262,7 +262,7 @@ impl ShoalApp {
         format!(
             "{}#{}",
             self.page_url.as_deref().unwrap_or_default(),
-            crate::share_link::encode(self.lab.settings())
+            crate::settings::share_link::encode(self.lab.settings())
         )
     }
 

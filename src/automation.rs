@@ -85,12 +85,12 @@ impl Command {
     /// `shoal.turn(deg)`.
     pub fn turn(angle: Option<&Value>) -> Result<Self, AutomationError> {
         match angle.and_then(Value::as_f64) {
-            Some(deg) if deg.abs() <= f64::from(crate::physics_settings::TURN_MAX_DEG) => {
+            Some(deg) if deg.abs() <= f64::from(crate::settings::physics::TURN_MAX_DEG) => {
                 Ok(Self::Turn(deg as f32))
             }
             _ => Err(AutomationError::BadArgument(format!(
                 "turn(deg): expected a number of degrees from -{0} to {0} (+ turns left), got {1}",
-                crate::physics_settings::TURN_MAX_DEG,
+                crate::settings::physics::TURN_MAX_DEG,
                 angle.map_or("nothing".to_owned(), Value::to_string)
             ))),
         }

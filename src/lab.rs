@@ -676,10 +676,10 @@ impl Lab {
         let Some(selected) = self.settings.physics.selected else {
             return Err("turn(): select a fish first (physics.selected)".to_owned());
         };
-        if !angle_deg.is_finite() || angle_deg.abs() > crate::physics_settings::TURN_MAX_DEG {
+        if !angle_deg.is_finite() || angle_deg.abs() > crate::settings::physics::TURN_MAX_DEG {
             return Err(format!(
                 "turn(): {angle_deg} is out of range: choose from -{0} to {0} degrees",
-                crate::physics_settings::TURN_MAX_DEG
+                crate::settings::physics::TURN_MAX_DEG
             ));
         }
         self.runs[0].turn(selected as usize, angle_deg);
