@@ -11,7 +11,7 @@ use glam::{Vec2, Vec3};
 use crate::automation::{AutomationError, CameraReport, Command, StateReport};
 use crate::bench::Benchmark;
 use crate::clock::RateMeter;
-use crate::lab::{Lab, Run};
+use crate::lab::{Lab, LabError, Run};
 use crate::render::{FrameBuilder, OrbitCamera, RenderCaps, SceneRenderer};
 use crate::settings::{Scene, Settings, Side};
 use crate::sim::Obstacle;
@@ -262,7 +262,7 @@ impl ShoalApp {
         format!(
             "{}#{}",
             self.page_url.as_deref().unwrap_or_default(),
-            crate::share_link::encode(self.lab.settings())
+            crate::settings::share_link::encode(self.lab.settings())
         )
     }
 
@@ -700,9 +700,9 @@ impl ShoalApp {
                     });
                 }
                 PanelAction::Turn(angle_deg) => {
-                    if let Err(text) = self.lab.turn_selected(angle_deg) {
+                    if let Err(err) = self.lab.turn_selected(angle_deg) {
                         self.notice = Some(Notice {
-                            text,
+                            text: err.to_string(),
                             is_error: true,
                         });
                     }
@@ -721,7 +721,7 @@ impl ShoalApp {
                         .lab
                         .learning_mut()
                         .ok_or_else(|| "Open the learning lab first.".to_owned())
-                        .and_then(|l| l.start_race());
+                        .and_then(|l| l.start_race().map_err(|e| e.to_string()));
                     if let Err(reason) = result {
                         self.notice = Some(Notice {
                             text: format!("No race yet: {reason}."),
@@ -747,8 +747,9 @@ impl ShoalApp {
     pub fn controllers_json(&self) -> Result<String, String> {
         self.lab.runs()[0]
             .learning()
-            .ok_or_else(|| "save_controllers() works in the learning lab only".to_owned())?
+            .ok_or_else(|| LabError::LearningLabOnly("save_controllers").to_string())?
             .save_json()
+            .map_err(|e| e.to_string())
     }
 
     /// Opens a controllers file: the browser's file dialog (the text arrives in a
@@ -788,7 +789,7 @@ impl ShoalApp {
             self.lab
                 .learning_mut()
                 .ok_or_else(|| "open the learning lab first".to_owned())
-                .and_then(|l| l.load_json(&text))
+                .and_then(|l| l.load_json(&text).map_err(|e| e.to_string()))
         });
         self.notice = Some(match result {
             Ok(()) => Notice {

@@ -21,7 +21,7 @@
 use serde::Serialize;
 use serde_json::Value;
 
-use crate::lab::Lab;
+use crate::lab::{Lab, LabError};
 use crate::metrics_history::MetricsSample;
 use crate::settings::{SEED_MAX, SettingsError, Side};
 
@@ -57,6 +57,14 @@ pub enum AutomationError {
     Settings(#[from] SettingsError),
     #[error("{0}")]
     BadArgument(String),
+    /// A command's whole-number argument (`call` names it: "step(n)").
+    #[error("{call}: {reason}")]
+    BadNumber {
+        call: &'static str,
+        reason: WholeNumberError,
+    },
+    #[error(transparent)]
+    Lab(#[from] LabError),
     #[error("Shoal is not running (it stopped after an error; reload the page)")]
     NotRunning,
 }
@@ -68,7 +76,10 @@ impl Command {
             None | Some(Value::Null) => Ok(Self::Step(1)),
             Some(value) => whole_number(value, 1, u64::from(MAX_STEPS_PER_CALL))
                 .map(|n| Self::Step(n as u32))
-                .map_err(|reason| AutomationError::BadArgument(format!("step(n): {reason}"))),
+                .map_err(|reason| AutomationError::BadNumber {
+                    call: "step(n)",
+                    reason,
+                }),
         }
     }
 
@@ -78,19 +89,22 @@ impl Command {
             None | Some(Value::Null) => Ok(Self::Reset(None)),
             Some(value) => whole_number(value, 0, SEED_MAX)
                 .map(|seed| Self::Reset(Some(seed)))
-                .map_err(|reason| AutomationError::BadArgument(format!("reset(seed): {reason}"))),
+                .map_err(|reason| AutomationError::BadNumber {
+                    call: "reset(seed)",
+                    reason,
+                }),
         }
     }
 
     /// `shoal.turn(deg)`.
     pub fn turn(angle: Option<&Value>) -> Result<Self, AutomationError> {
         match angle.and_then(Value::as_f64) {
-            Some(deg) if deg.abs() <= f64::from(crate::physics_settings::TURN_MAX_DEG) => {
+            Some(deg) if deg.abs() <= f64::from(crate::settings::physics::TURN_MAX_DEG) => {
                 Ok(Self::Turn(deg as f32))
             }
             _ => Err(AutomationError::BadArgument(format!(
                 "turn(deg): expected a number of degrees from -{0} to {0} (+ turns left), got {1}",
-                crate::physics_settings::TURN_MAX_DEG,
+                crate::settings::physics::TURN_MAX_DEG,
                 angle.map_or("nothing".to_owned(), Value::to_string)
             ))),
         }
@@ -102,7 +116,10 @@ impl Command {
             None | Some(Value::Null) => Ok(Self::Train(1)),
             Some(value) => whole_number(value, 1, u64::from(MAX_TRAIN_PER_CALL))
                 .map(|n| Self::Train(n as u32))
-                .map_err(|reason| AutomationError::BadArgument(format!("train(n): {reason}"))),
+                .map_err(|reason| AutomationError::BadNumber {
+                    call: "train(n)",
+                    reason,
+                }),
         }
     }
 
@@ -133,34 +150,46 @@ impl Command {
                 lab.apply_settings(settings);
             }
             Self::Reset(seed) => lab.reset(seed),
-            Self::Turn(deg) => lab
-                .turn_selected(deg)
-                .map_err(AutomationError::BadArgument)?,
+            Self::Turn(deg) => lab.turn_selected(deg)?,
             Self::Train(n) => {
-                lab.train(n).map_err(AutomationError::BadArgument)?;
+                lab.train(n)?;
             }
             Self::Race => lab
                 .learning_mut()
-                .ok_or_else(|| "race() works in the learning lab only".to_owned())
-                .and_then(|l| l.start_race())
-                .map_err(AutomationError::BadArgument)?,
-            Self::LoadControllers(text) => lab
-                .learning_mut()
-                .ok_or_else(|| "load_controllers() works in the learning lab only".to_owned())
-                .and_then(|l| l.load_json(&text))
-                .map_err(|e| AutomationError::BadArgument(format!("load_controllers: {e}")))?,
+                .ok_or(LabError::LearningLabOnly("race"))?
+                .start_race()
+                .map_err(LabError::from)?,
+            Self::LoadControllers(text) => {
+                let loaded = match lab.learning_mut() {
+                    Some(l) => l.load_json(&text).map_err(|e| e.to_string()),
+                    None => Err(LabError::LearningLabOnly("load_controllers").to_string()),
+                };
+                loaded
+                    .map_err(|e| AutomationError::BadArgument(format!("load_controllers: {e}")))?;
+            }
         }
         Ok(())
     }
 }
 
-fn whole_number(value: &Value, min: u64, max: u64) -> Result<u64, String> {
+/// Why an argument is not a whole number in its range.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum WholeNumberError {
+    #[error("{n} is out of range: choose from {min} to {max}")]
+    OutOfRange { n: u64, min: u64, max: u64 },
+    #[error("expected a whole number from {min} to {max}, got {value}")]
+    NotAWholeNumber { value: Value, min: u64, max: u64 },
+}
+
+fn whole_number(value: &Value, min: u64, max: u64) -> Result<u64, WholeNumberError> {
     match value.as_u64() {
         Some(n) if (min..=max).contains(&n) => Ok(n),
-        Some(n) => Err(format!("{n} is out of range: choose from {min} to {max}")),
-        None => Err(format!(
-            "expected a whole number from {min} to {max}, got {value}"
-        )),
+        Some(n) => Err(WholeNumberError::OutOfRange { n, min, max }),
+        None => Err(WholeNumberError::NotAWholeNumber {
+            value: value.clone(),
+            min,
+            max,
+        }),
     }
 }
 

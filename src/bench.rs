@@ -6,11 +6,11 @@ use serde::Serialize;
 use web_time::Instant;
 
 use crate::lab::Lab;
-use crate::physics_settings::PhysicsSettings;
-use crate::reef_settings::ReefSettings;
+use crate::settings::physics::PhysicsSettings;
+use crate::settings::reef::ReefSettings;
+use crate::settings::tank::{Preset, TankSettings};
 use crate::settings::{Scene, Settings};
 use crate::sim::reef::demos::ReefScene;
-use crate::tank_settings::{Preset, TankSettings};
 
 /// Scenes and fish counts the benchmark visits: the wandering aquarium, the boid
 /// layer with the group preset at the 500, 5,000 and 20,000 fish, and the

@@ -10,9 +10,11 @@ use std::collections::VecDeque;
 
 use crate::clock::{FixedStepClock, RateMeter};
 use crate::metrics_history::{MetricsHistory, MetricsSample};
+use crate::settings::physics::TURN_MAX_DEG;
 use crate::settings::{Scene, Settings, Side};
 use crate::sim::body::{MUSCLE_COUNT, NODE_COUNT};
 use crate::sim::learning::learning_lab::LearningLab;
+use crate::sim::learning::learning_lab::RaceNotReady;
 use crate::sim::reef::world::ReefWorld;
 use crate::sim::scene::{SceneWorld, centre};
 use crate::sim::{HandCommand, PhysicsConfig, PhysicsWorld, World, WorldConfig};
@@ -417,6 +419,22 @@ fn push_trace(trace: &mut VecDeque<BodySample>, sample: BodySample) {
     }
 }
 
+/// Why the lab refused a command (`shoal.turn`, `shoal.train`, `shoal.race`).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum LabError {
+    /// The command (named without its parentheses) needs the learning lab.
+    #[error("{0}() works in the learning lab only")]
+    LearningLabOnly(&'static str),
+    #[error("turn() works in the physics fish scene only")]
+    PhysicsSceneOnly,
+    #[error("turn(): select a fish first (physics.selected)")]
+    NoFishSelected,
+    #[error("turn(): {0} is out of range: choose from -{TURN_MAX_DEG} to {TURN_MAX_DEG} degrees")]
+    TurnOutOfRange(f32),
+    #[error(transparent)]
+    RaceNotReady(#[from] RaceNotReady),
+}
+
 /// The running experiment: one tank, or two side by side, sharing one clock.
 pub struct Lab {
     settings: Settings,
@@ -572,9 +590,9 @@ impl Lab {
     }
 
     /// Runs `n` annealing evaluations of the learning lab now (`shoal.train(n)`).
-    pub fn train(&mut self, n: u32) -> Result<u32, String> {
+    pub fn train(&mut self, n: u32) -> Result<u32, LabError> {
         let Some(l) = self.learning_mut() else {
-            return Err("train() works in the learning lab only".to_owned());
+            return Err(LabError::LearningLabOnly("train"));
         };
         Ok(l.train(n as usize) as u32)
     }
@@ -669,18 +687,15 @@ impl Lab {
     }
 
     /// Starts a turn of `angle_deg` degrees (+ left) on the selected physical fish.
-    pub fn turn_selected(&mut self, angle_deg: f32) -> Result<(), String> {
+    pub fn turn_selected(&mut self, angle_deg: f32) -> Result<(), LabError> {
         if self.settings.scene != Scene::Physics {
-            return Err("turn() works in the physics fish scene only".to_owned());
+            return Err(LabError::PhysicsSceneOnly);
         }
         let Some(selected) = self.settings.physics.selected else {
-            return Err("turn(): select a fish first (physics.selected)".to_owned());
+            return Err(LabError::NoFishSelected);
         };
-        if !angle_deg.is_finite() || angle_deg.abs() > crate::physics_settings::TURN_MAX_DEG {
-            return Err(format!(
-                "turn(): {angle_deg} is out of range: choose from -{0} to {0} degrees",
-                crate::physics_settings::TURN_MAX_DEG
-            ));
+        if !angle_deg.is_finite() || angle_deg.abs() > TURN_MAX_DEG {
+            return Err(LabError::TurnOutOfRange(angle_deg));
         }
         self.runs[0].turn(selected as usize, angle_deg);
         Ok(())
@@ -1122,7 +1137,7 @@ mod tests {
         let mut boids = Lab::new(Settings::default());
         assert!(boids.turn_selected(30.0).is_err());
         let mut lab = physics_lab();
-        let err = lab.turn_selected(30.0).unwrap_err();
+        let err = lab.turn_selected(30.0).unwrap_err().to_string();
         assert!(err.contains("select"), "{err}");
         let mut settings = lab.settings().clone();
         settings.physics.selected = Some(0);

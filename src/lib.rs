@@ -12,15 +12,10 @@ pub mod automation;
 pub mod bench;
 pub mod clock;
 pub mod lab;
-pub mod learning_settings;
 pub mod metrics_history;
-pub mod physics_settings;
-pub mod reef_settings;
 pub mod render;
 pub mod settings;
-pub mod share_link;
 pub mod sim;
-pub mod tank_settings;
 pub mod ui;
 
 #[cfg(target_arch = "wasm32")]

@@ -6,7 +6,8 @@ use eframe::egui;
 
 use super::WidgetRects;
 use super::tank_panel::tank_ui;
-use crate::settings::{FISH_COUNT_MAX, SEED_MAX, SPEED_MAX, SPEED_MIN, Scene, Settings, Side};
+use crate::settings::tank::TankSettings;
+use crate::settings::{SEED_MAX, Scene, Settings, Side};
 use crate::sim::reef::mind::{FishKind, Habits};
 
 /// What a click in the tank does.
@@ -182,7 +183,7 @@ pub fn control_panel_ui(
                 .on_hover_text("How fast time runs: 1× is real time, 2× is twice as fast");
             let speed = ui
                 .add(
-                    egui::Slider::new(&mut settings.speed, SPEED_MIN..=SPEED_MAX)
+                    egui::Slider::new(&mut settings.speed, Settings::SPEED.bounds())
                         .logarithmic(true)
                         .suffix("×")
                         .max_decimals(2),
@@ -196,9 +197,12 @@ pub fn control_panel_ui(
                     .on_hover_text("How many fish are in the tank");
                 let fish = ui
                     .add(
-                        egui::Slider::new(&mut settings.left.fish_count, 0..=FISH_COUNT_MAX)
-                            .logarithmic(true)
-                            .smallest_positive(1.0),
+                        egui::Slider::new(
+                            &mut settings.left.fish_count,
+                            TankSettings::FISH_COUNT.bounds(),
+                        )
+                        .logarithmic(true)
+                        .smallest_positive(1.0),
                     )
                     .on_hover_text("How many fish are in the tank");
                 rects.insert("fish_count", fish.rect);
@@ -211,7 +215,7 @@ pub fn control_panel_ui(
             );
             ui.horizontal(|ui| {
                 let seed = ui
-                    .add(egui::DragValue::new(&mut settings.seed).range(0..=SEED_MAX))
+                    .add(egui::DragValue::new(&mut settings.seed).range(Settings::SEED.bounds()))
                     .on_hover_text("Type a number to start a new run from it");
                 rects.insert("seed", seed.rect);
                 let dice = ui

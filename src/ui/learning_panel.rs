@@ -11,7 +11,7 @@ use super::body_overlay::muscle_color;
 use super::bottom_panel::plot_height_under_caption;
 use super::control_panel::PanelAction;
 use crate::lab::Run;
-use crate::learning_settings::{ANNEALING_STEPS_MAX, ANNEALING_STEPS_MIN, LearningSettings};
+use crate::settings::learning::LearningSettings;
 use crate::sim::BodySpecies;
 use crate::sim::body::body_layout::muscle_index;
 use crate::sim::body::{MuscleSegment, Side};
@@ -74,7 +74,7 @@ pub fn learning_controls_ui(
                 .add(
                     egui::Slider::new(
                         &mut learning.annealing_steps,
-                        ANNEALING_STEPS_MIN..=ANNEALING_STEPS_MAX,
+                        LearningSettings::ANNEALING_STEPS.bounds(),
                     )
                     .logarithmic(true),
                 )

@@ -10,10 +10,7 @@ use super::body_overlay::muscle_color;
 use super::bottom_panel::plot_height_under_caption;
 use super::control_panel::PanelAction;
 use crate::lab::{BODY_TRACE_SECS, Run};
-use crate::physics_settings::{
-    CURRENT_MAX_M_PER_S, HAND_PITCH_MAX_DEG, PHYSICS_FISH_MAX, PHYSICS_SHARKS_MAX, PhysicsSettings,
-    TURN_MAX_DEG,
-};
+use crate::settings::physics::PhysicsSettings;
 use crate::sim::PhysicsBehaviour;
 use crate::sim::body::body_layout::muscle_index;
 use crate::sim::body::{MuscleSegment, Side};
@@ -36,8 +33,11 @@ pub fn physics_controls_ui(
             ui.label("Fish").on_hover_text(help);
             let fish = ui
                 .add(
-                    egui::Slider::new(&mut physics.fish_count, 1..=PHYSICS_FISH_MAX)
-                        .logarithmic(true),
+                    egui::Slider::new(
+                        &mut physics.fish_count,
+                        PhysicsSettings::FISH_COUNT.bounds(),
+                    )
+                    .logarithmic(true),
                 )
                 .on_hover_text(help);
             rects.insert("physics_fish", fish.rect);
@@ -47,7 +47,10 @@ pub fn physics_controls_ui(
             ui.label("Sharks").on_hover_text(help);
             ui.horizontal(|ui| {
                 let minus = ui
-                    .add_enabled(physics.sharks > 0, egui::Button::new("−"))
+                    .add_enabled(
+                        physics.sharks > PhysicsSettings::SHARKS.min,
+                        egui::Button::new("−"),
+                    )
                     .on_hover_text("One shark fewer");
                 rects.insert("physics_sharks_minus", minus.rect);
                 if minus.clicked() {
@@ -55,7 +58,10 @@ pub fn physics_controls_ui(
                 }
                 ui.label(physics.sharks.to_string()).on_hover_text(help);
                 let plus = ui
-                    .add_enabled(physics.sharks < PHYSICS_SHARKS_MAX, egui::Button::new("+"))
+                    .add_enabled(
+                        physics.sharks < PhysicsSettings::SHARKS.max,
+                        egui::Button::new("+"),
+                    )
                     .on_hover_text("One more shark");
                 rects.insert("physics_sharks_plus", plus.rect);
                 if plus.clicked() {
@@ -69,9 +75,12 @@ pub fn physics_controls_ui(
             ui.label("Current").on_hover_text(help);
             let current = ui
                 .add(
-                    egui::Slider::new(&mut physics.current_m_per_s, 0.0..=CURRENT_MAX_M_PER_S)
-                        .suffix(" m/s")
-                        .max_decimals(2),
+                    egui::Slider::new(
+                        &mut physics.current_m_per_s,
+                        PhysicsSettings::CURRENT_M_PER_S.bounds(),
+                    )
+                    .suffix(" m/s")
+                    .max_decimals(2),
                 )
                 .on_hover_text(help);
             rects.insert("physics_current", current.rect);
@@ -175,7 +184,13 @@ fn selected_fish_ui(
                 let help = "How hard the tail muscles beat: 0 rests, 1 is the fastest swimming";
                 ui.label("Swim").on_hover_text(help);
                 let speed = ui
-                    .add(egui::Slider::new(&mut physics.hand_speed, 0.0..=1.0).max_decimals(2))
+                    .add(
+                        egui::Slider::new(
+                            &mut physics.hand_speed,
+                            PhysicsSettings::HAND_SPEED.bounds(),
+                        )
+                        .max_decimals(2),
+                    )
                     .on_hover_text(help);
                 rects.insert("hand_speed", speed.rect);
                 ui.end_row();
@@ -187,7 +202,7 @@ fn selected_fish_ui(
                     .add(
                         egui::Slider::new(
                             &mut physics.hand_pitch_deg,
-                            -HAND_PITCH_MAX_DEG..=HAND_PITCH_MAX_DEG,
+                            PhysicsSettings::HAND_PITCH_DEG.bounds(),
                         )
                         .suffix("°")
                         .max_decimals(0),
@@ -203,7 +218,7 @@ fn selected_fish_ui(
                     let angle = ui
                         .add(
                             egui::DragValue::new(&mut physics.turn_angle_deg)
-                                .range(-TURN_MAX_DEG..=TURN_MAX_DEG)
+                                .range(PhysicsSettings::TURN_ANGLE_DEG.bounds())
                                 .suffix("°")
                                 .speed(1.0),
                         )

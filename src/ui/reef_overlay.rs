@@ -8,8 +8,8 @@ use glam::Vec3;
 
 use super::reef_panel::intention_color;
 use crate::lab::Run;
-use crate::reef_settings::ReefOverlay;
 use crate::render::OrbitCamera;
+use crate::settings::reef::ReefOverlay;
 use crate::sim::reef::mind::Target;
 use crate::sim::reef::perception::FIELD_OF_VIEW_RAD;
 

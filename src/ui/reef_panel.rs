@@ -10,10 +10,7 @@ use super::WidgetRects;
 use super::bottom_panel::plot_height_under_caption;
 use super::control_panel::PanelAction;
 use crate::lab::Run;
-use crate::reef_settings::{
-    REEF_CURRENT_MAX_M_PER_S, REEF_FOOD_MAX, REEF_PREY_MAX, ReefOverlay, ReefSettings,
-    VISIBILITY_MAX_M, VISIBILITY_MIN_M,
-};
+use crate::settings::reef::{ReefOverlay, ReefSettings};
 use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::habits::{
     COURAGEOUS_BOX_BODY_LENGTHS, DEFAULT_BOX_BODY_LENGTHS, DEFAULT_PERSISTENCE_BODY_LENGTHS,
@@ -106,7 +103,10 @@ pub fn reef_controls_ui(
             ui.label("Prey fish").on_hover_text(help);
             let mut prey = reef.prey_count.unwrap_or(demo_prey);
             let r = ui
-                .add(egui::Slider::new(&mut prey, 0..=REEF_PREY_MAX))
+                .add(egui::Slider::new(
+                    &mut prey,
+                    ReefSettings::PREY_COUNT.bounds(),
+                ))
                 .on_hover_text(help);
             rects.insert("reef_prey", r.rect);
             if r.changed() {
@@ -121,7 +121,10 @@ pub fn reef_controls_ui(
                 .food_count
                 .unwrap_or(reef.demo.default_food_count() as u32);
             let r = ui
-                .add(egui::Slider::new(&mut food, 0..=REEF_FOOD_MAX))
+                .add(egui::Slider::new(
+                    &mut food,
+                    ReefSettings::FOOD_COUNT.bounds(),
+                ))
                 .on_hover_text(help);
             rects.insert("reef_food", r.rect);
             if r.changed() {
@@ -134,7 +137,7 @@ pub fn reef_controls_ui(
             ui.label("Visibility").on_hover_text(help);
             let r = ui
                 .add(
-                    egui::Slider::new(&mut reef.visibility_m, VISIBILITY_MIN_M..=VISIBILITY_MAX_M)
+                    egui::Slider::new(&mut reef.visibility_m, ReefSettings::VISIBILITY_M.bounds())
                         .suffix(" m"),
                 )
                 .on_hover_text(help);
@@ -145,8 +148,11 @@ pub fn reef_controls_ui(
             ui.label("Current").on_hover_text(help);
             let r = ui
                 .add(
-                    egui::Slider::new(&mut reef.current_m_per_s, 0.0..=REEF_CURRENT_MAX_M_PER_S)
-                        .suffix(" m/s"),
+                    egui::Slider::new(
+                        &mut reef.current_m_per_s,
+                        ReefSettings::CURRENT_M_PER_S.bounds(),
+                    )
+                    .suffix(" m/s"),
                 )
                 .on_hover_text(help);
             rects.insert("reef_current", r.rect);

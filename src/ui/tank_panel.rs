@@ -5,12 +5,9 @@
 use eframe::egui;
 
 use super::WidgetRects;
+use crate::settings::range::Range;
+use crate::settings::tank::{Preset, TankSettings};
 use crate::sim::boids::control_mode::ControlMode;
-use crate::tank_settings::{
-    FISH_COUNT_MAX, MAX_FORCE_RANGE_M_PER_S2, MAX_SPEED_RANGE_M_PER_S, PERSONAL_SPACE_RANGE_M,
-    Preset, SHARKS_MAX, STINGRAYS_MAX, TankSettings, VISION_ANGLE_RANGE_DEG,
-    VISION_DISTANCE_RANGE_M, WEIGHT_MAX,
-};
 
 /// The name on a mode's radio button.
 pub fn mode_label(mode: ControlMode) -> &'static str {
@@ -107,12 +104,12 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
         .num_columns(2)
         .spacing([8.0, 4.0])
         .show(ui, |ui| {
-            for ((name, weight), (label, help)) in tank.weights_mut().into_iter().zip(FORCE_HELP) {
+            for ((range, weight), (label, help)) in tank.weights_mut().into_iter().zip(FORCE_HELP) {
                 ui.label(label).on_hover_text(help);
                 let response = ui
-                    .add(egui::Slider::new(weight, 0.0..=WEIGHT_MAX).max_decimals(0))
+                    .add(egui::Slider::new(weight, range.bounds()).max_decimals(0))
                     .on_hover_text(help);
-                rects.insert(&format!("weight_{name}"), response.rect);
+                rects.insert(&format!("weight_{}", range.key), response.rect);
                 ui.end_row();
             }
         });
@@ -129,37 +126,34 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
         .show(ui, |ui| {
             let mut slider = |ui: &mut egui::Ui,
                               label: &str,
-                              name: &str,
                               value: &mut f32,
-                              (lo, hi): (f32, f32),
+                              range: Range<f32>,
                               suffix: &str,
                               help: &str| {
                 ui.label(label).on_hover_text(help);
                 let response = ui
                     .add(
-                        egui::Slider::new(value, lo..=hi)
+                        egui::Slider::new(value, range.bounds())
                             .suffix(suffix)
                             .max_decimals(1),
                     )
                     .on_hover_text(help);
-                rects.insert(name, response.rect);
+                rects.insert(range.key, response.rect);
                 ui.end_row();
             };
             slider(
                 ui,
                 "Vision distance",
-                "vision_distance_m",
                 &mut tank.vision_distance_m,
-                VISION_DISTANCE_RANGE_M,
+                TankSettings::VISION_DISTANCE_M,
                 " m",
                 "How far a fish can see its neighbours, in metres.",
             );
             slider(
                 ui,
                 "Vision angle",
-                "vision_angle_deg",
                 &mut tank.vision_angle_deg,
-                VISION_ANGLE_RANGE_DEG,
+                TankSettings::VISION_ANGLE_DEG,
                 "°",
                 "How wide a fish sees around itself. At 360° it sees behind too; \
                  at 300° there is a blind spot behind its tail.",
@@ -167,18 +161,16 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
             slider(
                 ui,
                 "Top speed",
-                "max_speed_m_per_s",
                 &mut tank.max_speed_m_per_s,
-                MAX_SPEED_RANGE_M_PER_S,
+                TankSettings::MAX_SPEED_M_PER_S,
                 " m/s",
                 "The fastest a fish can swim, in metres per second.",
             );
             slider(
                 ui,
                 "Turning power",
-                "max_force_m_per_s2",
                 &mut tank.max_force_m_per_s2,
-                MAX_FORCE_RANGE_M_PER_S2,
+                TankSettings::MAX_FORCE_M_PER_S2,
                 " m/s²",
                 "How hard a fish can turn or speed up at once (the maximum force). \
                  Small values make slow, lazy turns.",
@@ -186,9 +178,8 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
             slider(
                 ui,
                 "Personal space",
-                "personal_space_m",
                 &mut tank.personal_space_m,
-                PERSONAL_SPACE_RANGE_M,
+                TankSettings::PERSONAL_SPACE_M,
                 " m",
                 "How close another fish may come before separation pushes this one away. \
                  A school settles at about one body length (0.3–0.5 m here).",
@@ -196,9 +187,8 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
             slider(
                 ui,
                 "Wander",
-                "wander",
                 &mut tank.wander,
-                (0.0, WEIGHT_MAX),
+                TankSettings::WANDER,
                 "",
                 "How much a fish roams about on its own, 0 to 100 (on the urges' scale). \
                  The same for loners and schools: a school's alignment and cohesion \
@@ -218,7 +208,7 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
                 "Fish",
                 "fish",
                 &mut tank.fish_count,
-                FISH_COUNT_MAX,
+                TankSettings::FISH_COUNT,
                 10,
                 "How many fish (the prey) are in the tank.",
             );
@@ -228,7 +218,7 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
                 "Sharks",
                 "sharks",
                 &mut tank.sharks,
-                SHARKS_MAX,
+                TankSettings::SHARKS,
                 1,
                 "Hunters. A shark chases a fish; fish that see it flee and bunch together.",
             );
@@ -238,7 +228,7 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
                 "Stingrays",
                 "stingrays",
                 &mut tank.stingrays,
-                STINGRAYS_MAX,
+                TankSettings::STINGRAYS,
                 1,
                 "Flat fish that glide over the sand. Other fish swim around them like rocks.",
             );
@@ -253,33 +243,33 @@ fn count_row(
     label: &str,
     name: &str,
     count: &mut u32,
-    max: u32,
+    range: Range<u32>,
     step: u32,
     help: &str,
 ) {
     ui.label(label).on_hover_text(help);
     ui.horizontal(|ui| {
         let minus = ui
-            .add_enabled(*count > 0, egui::Button::new(" − "))
+            .add_enabled(*count > range.min, egui::Button::new(" − "))
             .on_hover_text(format!("Take {step} away"));
         rects.insert(&format!("{name}_minus"), minus.rect);
         if minus.clicked() {
-            *count = count.saturating_sub(step);
+            *count = range.clamp(count.saturating_sub(step));
         }
         let value = ui
             .add(
                 egui::DragValue::new(count)
-                    .range(0..=max)
+                    .range(range.bounds())
                     .speed(f64::from(step).max(1.0) * 0.2),
             )
             .on_hover_text(help);
         rects.insert(&format!("{name}_count"), value.rect);
         let plus = ui
-            .add_enabled(*count < max, egui::Button::new(" + "))
+            .add_enabled(*count < range.max, egui::Button::new(" + "))
             .on_hover_text(format!("Add {step}"));
         rects.insert(&format!("{name}_plus"), plus.rect);
         if plus.clicked() {
-            *count = (*count + step).min(max);
+            *count = range.clamp(*count + step);
         }
     });
     ui.end_row();

@@ -27,7 +27,7 @@ pub async fn start() {
     };
     let bench = page::query_has("bench");
     // A share link's settings, or the defaults and a notice saying why not.
-    let (settings, link_error) = match crate::share_link::decode(&page::fragment()) {
+    let (settings, link_error) = match crate::settings::share_link::decode(&page::fragment()) {
         Ok(settings) => (settings.unwrap_or_default(), None),
         Err(err) => (
             Settings::default(),

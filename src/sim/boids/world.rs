@@ -23,7 +23,7 @@ use crate::sim::boids::metrics::{ForceWindow, WorldMetrics};
 use crate::sim::boids::shark::{self, MAX_SHARKS, Shark};
 use crate::sim::boids::stingray::{self, MAX_STINGRAYS, Stingray};
 use crate::sim::common::fish::{Fish, heading_of};
-use crate::sim::common::obstacle::{Obstacle, ObstacleSet, WALL_CLEARANCE_M};
+use crate::sim::common::obstacle::{Obstacle, ObstacleError, ObstacleSet, WALL_CLEARANCE_M};
 use crate::sim::common::school_metrics::{self, SchoolMeter, SchoolMetrics};
 use crate::sim::common::spatial_grid::{Nearest, SpatialGrid};
 use crate::sim::common::steering::{self, AVOIDANCE_CLEARANCE_M, SteeringParams};
@@ -1066,7 +1066,7 @@ impl World {
     /// Add an obstacle after checking it ([`Obstacle::validate`], and at least
     /// 0.3 m from every other obstacle); returns its index. Fish inside it are
     /// pushed out at once; stingrays too close to it move to a free place.
-    pub fn add_obstacle(&mut self, obstacle: Obstacle) -> Result<usize, String> {
+    pub fn add_obstacle(&mut self, obstacle: Obstacle) -> Result<usize, ObstacleEditError> {
         obstacle.validate(&self.tank)?;
         check_gap(&obstacle, &self.obstacles, None)?;
         self.obstacles.push(obstacle);
@@ -1077,15 +1077,19 @@ impl World {
     /// Move obstacle `index` so that its footprint centre is at `new_floor_xz`
     /// ((x, z) in metres), keeping its shape and height. Errors if there is no
     /// such obstacle or the new place is not allowed (then nothing changes).
-    pub fn move_obstacle(&mut self, index: usize, new_floor_xz: Vec2) -> Result<(), String> {
+    pub fn move_obstacle(
+        &mut self,
+        index: usize,
+        new_floor_xz: Vec2,
+    ) -> Result<(), ObstacleEditError> {
         let Some(old) = self.obstacles.get(index) else {
-            return Err(format!(
-                "there is no obstacle number {index} (there are {})",
-                self.obstacles.len()
-            ));
+            return Err(ObstacleEditError::NoSuchObstacle {
+                index,
+                count: self.obstacles.len(),
+            });
         };
         if !new_floor_xz.is_finite() {
-            return Err("the new place must be a pair of numbers".to_owned());
+            return Err(ObstacleEditError::PlaceNotANumber);
         }
         let moved = old.moved_to(new_floor_xz);
         moved.validate(&self.tank)?;
@@ -1181,6 +1185,7 @@ fn valid_obstacles(obstacles: Vec<Obstacle>, tank: &Tank) -> Vec<Obstacle> {
     for (i, obstacle) in obstacles.into_iter().enumerate() {
         match obstacle
             .validate(tank)
+            .map_err(ObstacleEditError::from)
             .and_then(|()| check_gap(&obstacle, &kept, None))
         {
             Ok(()) => kept.push(obstacle),
@@ -1190,19 +1195,36 @@ fn valid_obstacles(obstacles: Vec<Obstacle>, tank: &Tank) -> Vec<Obstacle> {
     kept
 }
 
+/// Why a teacher's obstacle edit was refused (nothing changed).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ObstacleEditError {
+    #[error(transparent)]
+    Invalid(#[from] ObstacleError),
+    #[error("there is no obstacle number {index} (there are {count})")]
+    NoSuchObstacle { index: usize, count: usize },
+    #[error("the new place must be a pair of numbers")]
+    PlaceNotANumber,
+    #[error(
+        "it is too close to obstacle {0}: keep at least {EDITED_OBSTACLE_GAP_M} m between them"
+    )]
+    TooClose(usize),
+}
+
 /// Is `obstacle` at least [`EDITED_OBSTACLE_GAP_M`] from each of `others`
 /// (except number `skip`)? Judged on the floor footprints: each footprint's
 /// bounding circle against the other's shape.
-fn check_gap(obstacle: &Obstacle, others: &[Obstacle], skip: Option<usize>) -> Result<(), String> {
+fn check_gap(
+    obstacle: &Obstacle,
+    others: &[Obstacle],
+    skip: Option<usize>,
+) -> Result<(), ObstacleEditError> {
     for (j, other) in others.iter().enumerate() {
         if Some(j) == skip {
             continue;
         }
         let gap_m = footprint_gap_m(obstacle, other).min(footprint_gap_m(other, obstacle));
         if gap_m < EDITED_OBSTACLE_GAP_M {
-            return Err(format!(
-                "it is too close to obstacle {j}: keep at least {EDITED_OBSTACLE_GAP_M} m between them"
-            ));
+            return Err(ObstacleEditError::TooClose(j));
         }
     }
     Ok(())
@@ -2295,7 +2317,7 @@ mod tests {
                 }
                 assert!(w.remove_obstacle(index));
             }
-            Err(reason) => assert!(reason.contains("too close"), "{reason}"),
+            Err(reason) => assert!(reason.to_string().contains("too close"), "{reason}"),
         }
         assert!(!w.remove_obstacle(99));
         assert!(w.move_obstacle(99, Vec2::ZERO).is_err());
@@ -2306,7 +2328,12 @@ mod tests {
             radius_m: 0.3,
             height_m: 2.0,
         };
-        assert!(w.add_obstacle(outside).unwrap_err().contains("glass"));
+        assert!(
+            w.add_obstacle(outside)
+                .unwrap_err()
+                .to_string()
+                .contains("glass")
+        );
         assert_eq!(w.obstacles().len(), count);
         // A whole new layout: a ledge across the middle.
         w.set_obstacles(vec![Obstacle::Polygon {

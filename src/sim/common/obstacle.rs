@@ -45,6 +45,49 @@ pub const WALL_CLEARANCE_M: f32 = 1.0;
 /// Default 0.5 m: fish can always swim over an obstacle.
 pub const SURFACE_CLEARANCE_M: f32 = 0.5;
 
+/// Why an obstacle cannot be put in the tank, in words a teacher understands.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ObstacleError {
+    #[error("the radius must be between {MIN_RADIUS_M} m and {MAX_RADIUS_M} m (got {0} m)")]
+    Radius(f32),
+    #[error(
+        "it must stay at least {WALL_CLEARANCE_M} m away from the glass (at ({x_m:.2}, {z_m:.2}) m)"
+    )]
+    NearTheGlass { x_m: f32, z_m: f32 },
+    #[error("its position and height must be numbers")]
+    HeightNotANumber,
+    #[error("it must stand on the sand (base at y = {floor_y_m} m, got {base_y_m} m)")]
+    OffTheSand { floor_y_m: f32, base_y_m: f32 },
+    #[error(
+        "its height must be above 0 m and its top at least {SURFACE_CLEARANCE_M} m below the surface (height {0} m)"
+    )]
+    Height(f32),
+    #[error("the rock's position must be numbers")]
+    RockNotANumber,
+    #[error("the rock is buried in the sand: raise its centre")]
+    RockBuried,
+    #[error("the rock floats: it must touch the sand")]
+    RockFloats,
+    #[error("the rock's top must be at least {SURFACE_CLEARANCE_M} m below the surface")]
+    RockTooHigh,
+    #[error("the pillar's position must be numbers")]
+    PillarNotANumber,
+    #[error(
+        "a polygon needs {min} to {max} corners (got {0})",
+        min = POLYGON_VERTICES.start(),
+        max = POLYGON_VERTICES.end()
+    )]
+    Corners(usize),
+    #[error("every corner must be a pair of numbers")]
+    CornerNotANumber,
+    #[error("corners {0} and {1} are closer than {MIN_POLYGON_EDGE_M} m")]
+    CornersTooClose(usize, usize),
+    #[error("the polygon is flat: its area is below {MIN_POLYGON_AREA_M2} m²")]
+    Flat,
+    #[error("the polygon must be convex (it bends inwards at corner {0})")]
+    NotConvex(usize),
+}
+
 /// A solid obstacle. Sizes in metres.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -212,15 +255,13 @@ impl Obstacle {
     /// sunk into) the sand, a radius in [`MIN_RADIUS_M`]..=[`MAX_RADIUS_M`], and a
     /// polygon with 3–12 corners that form a convex, non-degenerate footprint.
     /// The error says what is wrong in words a teacher understands.
-    pub fn validate(&self, tank: &Tank) -> Result<(), String> {
+    pub fn validate(&self, tank: &Tank) -> Result<(), ObstacleError> {
         const FLOOR_TOLERANCE_M: f32 = 0.01;
         let floor_y_m = tank.min_m.y;
         let top_limit_m = tank.max_m.y - SURFACE_CLEARANCE_M;
         let check_radius = |radius_m: f32| {
             if !radius_m.is_finite() || !(MIN_RADIUS_M..=MAX_RADIUS_M).contains(&radius_m) {
-                Err(format!(
-                    "the radius must be between {MIN_RADIUS_M} m and {MAX_RADIUS_M} m (got {radius_m} m)"
-                ))
+                Err(ObstacleError::Radius(radius_m))
             } else {
                 Ok(())
             }
@@ -233,45 +274,39 @@ impl Obstacle {
             if fits {
                 Ok(())
             } else {
-                Err(format!(
-                    "it must stay at least {WALL_CLEARANCE_M} m away from the glass (at ({:.2}, {:.2}) m)",
-                    p.x, p.y
-                ))
+                Err(ObstacleError::NearTheGlass { x_m: p.x, z_m: p.y })
             }
         };
         let check_height = |base_y_m: f32, height_m: f32| {
             if !base_y_m.is_finite() || !height_m.is_finite() {
-                return Err("its position and height must be numbers".to_owned());
+                return Err(ObstacleError::HeightNotANumber);
             }
             if (base_y_m - floor_y_m).abs() > FLOOR_TOLERANCE_M {
-                return Err(format!(
-                    "it must stand on the sand (base at y = {floor_y_m} m, got {base_y_m} m)"
-                ));
+                return Err(ObstacleError::OffTheSand {
+                    floor_y_m,
+                    base_y_m,
+                });
             }
             if height_m <= 0.0 || base_y_m + height_m > top_limit_m {
-                return Err(format!(
-                    "its height must be above 0 m and its top at least {SURFACE_CLEARANCE_M} m below the surface (height {height_m} m)"
-                ));
+                return Err(ObstacleError::Height(height_m));
             }
             Ok(())
         };
         match self {
             Obstacle::Rock { center_m, radius_m } => {
                 if !center_m.is_finite() {
-                    return Err("the rock's position must be numbers".to_owned());
+                    return Err(ObstacleError::RockNotANumber);
                 }
                 check_radius(*radius_m)?;
                 check_inside(Vec2::new(center_m.x, center_m.z), *radius_m)?;
                 if center_m.y + radius_m <= floor_y_m + MIN_RADIUS_M {
-                    return Err("the rock is buried in the sand: raise its centre".to_owned());
+                    return Err(ObstacleError::RockBuried);
                 }
                 if center_m.y - radius_m > floor_y_m + FLOOR_TOLERANCE_M {
-                    return Err("the rock floats: it must touch the sand".to_owned());
+                    return Err(ObstacleError::RockFloats);
                 }
                 if center_m.y + radius_m > top_limit_m {
-                    return Err(format!(
-                        "the rock's top must be at least {SURFACE_CLEARANCE_M} m below the surface"
-                    ));
+                    return Err(ObstacleError::RockTooHigh);
                 }
                 Ok(())
             }
@@ -281,7 +316,7 @@ impl Obstacle {
                 height_m,
             } => {
                 if !base_center_m.is_finite() {
-                    return Err("the pillar's position must be numbers".to_owned());
+                    return Err(ObstacleError::PillarNotANumber);
                 }
                 check_radius(*radius_m)?;
                 check_inside(Vec2::new(base_center_m.x, base_center_m.z), *radius_m)?;
@@ -293,15 +328,10 @@ impl Obstacle {
                 height_m,
             } => {
                 if !POLYGON_VERTICES.contains(&footprint_m.len()) {
-                    return Err(format!(
-                        "a polygon needs {} to {} corners (got {})",
-                        POLYGON_VERTICES.start(),
-                        POLYGON_VERTICES.end(),
-                        footprint_m.len()
-                    ));
+                    return Err(ObstacleError::Corners(footprint_m.len()));
                 }
                 if footprint_m.iter().any(|v| !v.is_finite()) {
-                    return Err("every corner must be a pair of numbers".to_owned());
+                    return Err(ObstacleError::CornerNotANumber);
                 }
                 for v in footprint_m {
                     check_inside(*v, 0.0)?;
@@ -309,18 +339,12 @@ impl Obstacle {
                 let n = footprint_m.len();
                 for i in 0..n {
                     if footprint_m[i].distance(footprint_m[(i + 1) % n]) < MIN_POLYGON_EDGE_M {
-                        return Err(format!(
-                            "corners {} and {} are closer than {MIN_POLYGON_EDGE_M} m",
-                            i + 1,
-                            (i + 1) % n + 1
-                        ));
+                        return Err(ObstacleError::CornersTooClose(i + 1, (i + 1) % n + 1));
                     }
                 }
                 let area_m2 = signed_area_m2(footprint_m);
                 if area_m2.abs() < MIN_POLYGON_AREA_M2 {
-                    return Err(format!(
-                        "the polygon is flat: its area is below {MIN_POLYGON_AREA_M2} m²"
-                    ));
+                    return Err(ObstacleError::Flat);
                 }
                 // Convex: every turn goes the same way as the whole outline.
                 for i in 0..n {
@@ -330,10 +354,7 @@ impl Obstacle {
                         footprint_m[(i + 2) % n],
                     );
                     if (b - a).perp_dot(c - b) * area_m2.signum() < 0.0 {
-                        return Err(format!(
-                            "the polygon must be convex (it bends inwards at corner {})",
-                            (i + 1) % n + 1
-                        ));
+                        return Err(ObstacleError::NotConvex((i + 1) % n + 1));
                     }
                 }
                 check_height(*base_y_m, *height_m)
@@ -738,7 +759,7 @@ mod tests {
     #[test]
     fn validate_explains_what_is_wrong_in_plain_words() {
         let tank = Tank::default();
-        let error = |o: Obstacle| o.validate(&tank).unwrap_err();
+        let error = |o: Obstacle| o.validate(&tank).unwrap_err().to_string();
         assert_eq!(ledge().validate(&tank), Ok(()));
         assert!(
             error(Obstacle::Rock {

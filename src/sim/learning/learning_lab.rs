@@ -19,7 +19,9 @@ use crate::sim::body::{BodyParams, NODE_COUNT};
 use crate::sim::common::tank::Tank;
 use crate::sim::learning::abstraction::{Abstraction, AbstractionSettings, abstract_controls};
 use crate::sim::learning::annealing::{AnnealingSchedule, Trainer};
-use crate::sim::learning::learned_set::{LearnedControllerSet, TrainedDrill, routine_drills};
+use crate::sim::learning::learned_set::{
+    LearnedControllerSet, LearnedSetError, TrainedDrill, routine_drills,
+};
 use crate::sim::learning::objective::{Task, TrainingSetup};
 use crate::sim::learning::race::{PAPER_RACE_STEPS, Race, RaceEntrant};
 use crate::sim::learning::target_tracking::BuoyTracker;
@@ -76,6 +78,15 @@ impl HandTunedTracker {
 enum Demo {
     Learned(Box<BuoyTracker>),
     HandTuned(Box<HandTunedTracker>),
+}
+
+/// Why the race cannot start yet: the sharks it races are snapshotted during the
+/// first drill.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("the race needs the first drill to finish ({done} of {needed} annealing steps done)")]
+pub struct RaceNotReady {
+    pub done: u64,
+    pub needed: u64,
 }
 
 /// The learning lab.
@@ -322,31 +333,30 @@ impl LearningLab {
     }
 
     /// Loads a learned set from JSON; on success the demo uses it.
-    pub fn load_json(&mut self, text: &str) -> Result<(), String> {
-        let set = LearnedControllerSet::from_json(text).map_err(|e| e.to_string())?;
-        set.motor_map().map_err(|e| e.to_string())?;
+    pub fn load_json(&mut self, text: &str) -> Result<(), LearnedSetError> {
+        let set = LearnedControllerSet::from_json(text)?;
+        set.motor_map()?;
         self.loaded_set = Some(set);
         self.rebuild_demo();
         Ok(())
     }
 
     /// The set in use as JSON, for saving.
-    pub fn save_json(&self) -> Result<String, String> {
-        self.learned_set().0.to_json().map_err(|e| e.to_string())
+    pub fn save_json(&self) -> Result<String, LearnedSetError> {
+        self.learned_set().0.to_json()
     }
 
     /// Starts the race of the sharks snapshotted during the first drill.
-    pub fn start_race(&mut self) -> Result<(), String> {
+    pub fn start_race(&mut self) -> Result<(), RaceNotReady> {
         if self.race_entrants.is_empty() {
-            return Err(format!(
-                "the race needs the first drill to finish ({} of {} annealing steps done)",
-                if self.drill == 0 {
+            return Err(RaceNotReady {
+                done: if self.drill == 0 {
                     self.trainer.evaluations()
                 } else {
                     self.annealing_steps
                 },
-                self.annealing_steps
-            ));
+                needed: self.annealing_steps,
+            });
         }
         self.race = Some(Race::new(
             self.race_entrants.clone(),

@@ -12,6 +12,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::settings::range::{Range, SettingError};
 use crate::sim::boids::control_mode::{self, ControlMode};
 use crate::sim::boids::shark::MAX_SHARKS;
 use crate::sim::boids::stingray::MAX_STINGRAYS;
@@ -25,19 +26,6 @@ pub const SHARKS_MAX: u32 = MAX_SHARKS as u32;
 pub const STINGRAYS_MAX: u32 = MAX_STINGRAYS as u32;
 /// Force weights run from 0 to this, as in the papers' Table 1.
 pub const WEIGHT_MAX: f32 = 100.0;
-/// Vision distance range, metres: from under two body lengths to the tank's width.
-pub const VISION_DISTANCE_RANGE_M: (f32, f32) = (0.5, 12.0);
-/// Vision angle range, degrees (360: no blind spot).
-pub const VISION_ANGLE_RANGE_DEG: (f32, f32) = (0.0, 360.0);
-/// Maximum speed range, m/s: from a crawl (a third of a body length per second) to a
-/// sprint (about ten body lengths per second).
-pub const MAX_SPEED_RANGE_M_PER_S: (f32, f32) = (0.1, 3.0);
-/// Maximum steering force range, m/s².
-pub const MAX_FORCE_RANGE_M_PER_S2: (f32, f32) = (0.1, 10.0);
-/// Personal space range, metres: from a third of a body length (packed) to ten body
-/// lengths (a loner that keeps everybody away).
-pub const PERSONAL_SPACE_RANGE_M: (f32, f32) = (0.1, 3.0);
-
 /// Named sets of weights and perception.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -188,14 +176,15 @@ impl TankSettings {
         ] = w;
     }
 
-    /// Mutable access to each weight with its name, for sliders.
-    pub fn weights_mut(&mut self) -> [(&'static str, &mut f32); 5] {
+    /// Mutable access to each weight with its range (which names it), for sliders.
+    pub fn weights_mut(&mut self) -> [(Range<f32>, &mut f32); 5] {
+        let [c, a, h, s, v] = Self::WEIGHTS;
         [
-            ("containment", &mut self.containment),
-            ("alignment", &mut self.alignment),
-            ("cohesion", &mut self.cohesion),
-            ("separation", &mut self.separation),
-            ("avoidance", &mut self.avoidance),
+            (c, &mut self.containment),
+            (a, &mut self.alignment),
+            (h, &mut self.cohesion),
+            (s, &mut self.separation),
+            (v, &mut self.avoidance),
         ]
     }
 
@@ -251,79 +240,76 @@ impl TankSettings {
         }
     }
 
+    /// The five weights in [`control_mode::Force::ALL`] order, 0 to [`WEIGHT_MAX`].
+    pub const WEIGHTS: [Range<f32>; 5] = [
+        Range::new("containment", 0.0, WEIGHT_MAX),
+        Range::new("alignment", 0.0, WEIGHT_MAX),
+        Range::new("cohesion", 0.0, WEIGHT_MAX),
+        Range::new("separation", 0.0, WEIGHT_MAX),
+        Range::new("avoidance", 0.0, WEIGHT_MAX),
+    ];
+    /// Vision distance, metres: from under two body lengths to the tank's width.
+    pub const VISION_DISTANCE_M: Range<f32> = Range::new("vision_distance_m", 0.5, 12.0);
+    /// Vision angle, degrees (360: no blind spot).
+    pub const VISION_ANGLE_DEG: Range<f32> = Range::new("vision_angle_deg", 0.0, 360.0);
+    /// Maximum speed, m/s: from a crawl (a third of a body length per second) to a
+    /// sprint (about ten body lengths per second).
+    pub const MAX_SPEED_M_PER_S: Range<f32> = Range::new("max_speed_m_per_s", 0.1, 3.0);
+    /// Maximum steering force, m/s².
+    pub const MAX_FORCE_M_PER_S2: Range<f32> = Range::new("max_force_m_per_s2", 0.1, 10.0);
+    /// Personal space, metres: from a third of a body length (packed) to ten body
+    /// lengths (a loner that keeps everybody away).
+    pub const PERSONAL_SPACE_M: Range<f32> = Range::new("personal_space_m", 0.1, 3.0);
+    /// The urge to roam, on the weights' scale.
+    pub const WANDER: Range<f32> = Range::new("wander", 0.0, WEIGHT_MAX);
+    pub const FISH_COUNT: Range<u32> = Range::new("fish_count", 0, FISH_COUNT_MAX);
+    pub const SHARKS: Range<u32> = Range::new("sharks", 0, SHARKS_MAX);
+    pub const STINGRAYS: Range<u32> = Range::new("stingrays", 0, STINGRAYS_MAX);
+    /// Every numeric setting's range.
+    pub const F32_RANGES: [Range<f32>; 11] = [
+        Self::WEIGHTS[0],
+        Self::WEIGHTS[1],
+        Self::WEIGHTS[2],
+        Self::WEIGHTS[3],
+        Self::WEIGHTS[4],
+        Self::VISION_DISTANCE_M,
+        Self::VISION_ANGLE_DEG,
+        Self::MAX_SPEED_M_PER_S,
+        Self::MAX_FORCE_M_PER_S2,
+        Self::PERSONAL_SPACE_M,
+        Self::WANDER,
+    ];
+    pub const U32_RANGES: [Range<u32>; 3] = [Self::FISH_COUNT, Self::SHARKS, Self::STINGRAYS];
+
     /// Checks every range; `prefix` names the tank in messages ("left.").
-    pub fn validate(&self, prefix: &str, tank: &Tank) -> Result<(), (String, String)> {
-        let range = |key: &str, value: f32, (lo, hi): (f32, f32)| {
-            if value.is_finite() && (lo..=hi).contains(&value) {
-                Ok(())
-            } else {
-                Err((
-                    format!("{prefix}{key}"),
-                    format!("{value} is out of range: choose from {lo} to {hi}"),
-                ))
-            }
-        };
-        for (name, weight) in [
-            ("containment", self.containment),
-            ("alignment", self.alignment),
-            ("cohesion", self.cohesion),
-            ("separation", self.separation),
-            ("avoidance", self.avoidance),
-        ] {
-            range(name, weight, (0.0, WEIGHT_MAX))?;
+    pub fn validate(&self, prefix: &str, tank: &Tank) -> Result<(), SettingError> {
+        for (range, weight) in Self::WEIGHTS.iter().zip(self.weights()) {
+            range.check(prefix, weight)?;
         }
-        range(
-            "vision_distance_m",
-            self.vision_distance_m,
-            VISION_DISTANCE_RANGE_M,
-        )?;
-        range(
-            "vision_angle_deg",
-            self.vision_angle_deg,
-            VISION_ANGLE_RANGE_DEG,
-        )?;
-        range(
-            "max_speed_m_per_s",
-            self.max_speed_m_per_s,
-            MAX_SPEED_RANGE_M_PER_S,
-        )?;
-        range(
-            "max_force_m_per_s2",
-            self.max_force_m_per_s2,
-            MAX_FORCE_RANGE_M_PER_S2,
-        )?;
-        range(
-            "personal_space_m",
-            self.personal_space_m,
-            PERSONAL_SPACE_RANGE_M,
-        )?;
-        range("wander", self.wander, (0.0, WEIGHT_MAX))?;
-        for (key, value, max) in [
-            ("fish_count", self.fish_count, FISH_COUNT_MAX),
-            ("sharks", self.sharks, SHARKS_MAX),
-            ("stingrays", self.stingrays, STINGRAYS_MAX),
-        ] {
-            if value > max {
-                return Err((
-                    format!("{prefix}{key}"),
-                    format!("{value} is out of range: choose from 0 to {max}"),
-                ));
-            }
-        }
+        Self::VISION_DISTANCE_M.check(prefix, self.vision_distance_m)?;
+        Self::VISION_ANGLE_DEG.check(prefix, self.vision_angle_deg)?;
+        Self::MAX_SPEED_M_PER_S.check(prefix, self.max_speed_m_per_s)?;
+        Self::MAX_FORCE_M_PER_S2.check(prefix, self.max_force_m_per_s2)?;
+        Self::PERSONAL_SPACE_M.check(prefix, self.personal_space_m)?;
+        Self::WANDER.check(prefix, self.wander)?;
+        Self::FISH_COUNT.check(prefix, self.fish_count)?;
+        Self::SHARKS.check(prefix, self.sharks)?;
+        Self::STINGRAYS.check(prefix, self.stingrays)?;
         if let Some(obstacles) = &self.obstacles {
             if obstacles.len() > MAX_OBSTACLES {
-                return Err((
-                    format!("{prefix}obstacles"),
-                    format!(
+                return Err(SettingError {
+                    key: format!("{prefix}obstacles"),
+                    reason: format!(
                         "{} obstacles is too many: at most {MAX_OBSTACLES}",
                         obstacles.len()
                     ),
-                ));
+                });
             }
             for (i, obstacle) in obstacles.iter().enumerate() {
-                obstacle
-                    .validate(tank)
-                    .map_err(|reason| (format!("{prefix}obstacles[{i}]"), reason))?;
+                obstacle.validate(tank).map_err(|reason| SettingError {
+                    key: format!("{prefix}obstacles[{i}]"),
+                    reason: reason.to_string(),
+                })?;
             }
         }
         Ok(())
@@ -332,21 +318,18 @@ impl TankSettings {
     /// Brings every value into its range (for paths that cannot refuse, such as the
     /// UI's own widgets). Invalid obstacles are dropped.
     pub fn clamp(&mut self, tank: &Tank) {
-        let clamp = |v: &mut f32, (lo, hi): (f32, f32)| {
-            *v = if v.is_finite() { v.clamp(lo, hi) } else { lo };
-        };
-        for (_, w) in self.weights_mut() {
-            clamp(w, (0.0, WEIGHT_MAX));
+        for (range, weight) in self.weights_mut() {
+            *weight = range.clamp(*weight);
         }
-        clamp(&mut self.vision_distance_m, VISION_DISTANCE_RANGE_M);
-        clamp(&mut self.vision_angle_deg, VISION_ANGLE_RANGE_DEG);
-        clamp(&mut self.max_speed_m_per_s, MAX_SPEED_RANGE_M_PER_S);
-        clamp(&mut self.max_force_m_per_s2, MAX_FORCE_RANGE_M_PER_S2);
-        clamp(&mut self.personal_space_m, PERSONAL_SPACE_RANGE_M);
-        clamp(&mut self.wander, (0.0, WEIGHT_MAX));
-        self.fish_count = self.fish_count.min(FISH_COUNT_MAX);
-        self.sharks = self.sharks.min(SHARKS_MAX);
-        self.stingrays = self.stingrays.min(STINGRAYS_MAX);
+        self.vision_distance_m = Self::VISION_DISTANCE_M.clamp(self.vision_distance_m);
+        self.vision_angle_deg = Self::VISION_ANGLE_DEG.clamp(self.vision_angle_deg);
+        self.max_speed_m_per_s = Self::MAX_SPEED_M_PER_S.clamp(self.max_speed_m_per_s);
+        self.max_force_m_per_s2 = Self::MAX_FORCE_M_PER_S2.clamp(self.max_force_m_per_s2);
+        self.personal_space_m = Self::PERSONAL_SPACE_M.clamp(self.personal_space_m);
+        self.wander = Self::WANDER.clamp(self.wander);
+        self.fish_count = Self::FISH_COUNT.clamp(self.fish_count);
+        self.sharks = Self::SHARKS.clamp(self.sharks);
+        self.stingrays = Self::STINGRAYS.clamp(self.stingrays);
         if let Some(obstacles) = &mut self.obstacles {
             obstacles.retain(|o| o.validate(tank).is_ok());
             obstacles.truncate(MAX_OBSTACLES);
@@ -438,12 +421,26 @@ mod tests {
         let tank = Tank::default();
         let mut settings = TankSettings::with_preset(Preset::Group);
         settings.separation = 101.0;
-        let (key, reason) = settings.validate("left.", &tank).unwrap_err();
+        let SettingError { key, reason } = settings.validate("left.", &tank).unwrap_err();
         assert_eq!(key, "left.separation");
         assert!(reason.contains("out of range"));
         settings.clamp(&tank);
         assert!(settings.validate("", &tank).is_ok());
         settings.max_speed_m_per_s = f32::NAN;
         assert!(settings.validate("", &tank).is_err());
+    }
+
+    #[test]
+    fn every_range_refuses_a_value_just_outside_and_clamps_it_to_the_bound() {
+        let tank = Tank::default();
+        crate::settings::range::check_tables(
+            &TankSettings::with_preset(Preset::Group),
+            "left.",
+            &TankSettings::F32_RANGES,
+            &TankSettings::U32_RANGES,
+            &[],
+            |s| s.validate("left.", &tank),
+            |s| s.clamp(&tank),
+        );
     }
 }

@@ -5,13 +5,21 @@
 //! through [`Settings::apply_patch`], which either applies the whole patch or, on the
 //! first unknown key, wrong type or out-of-range value, changes nothing and explains why.
 
+pub mod learning;
+pub mod physics;
+pub mod range;
+pub mod reef;
+pub mod share_link;
+pub mod tank;
+
 use serde::{Deserialize, Serialize};
 
-use crate::learning_settings::LearningSettings;
-use crate::physics_settings::PhysicsSettings;
-use crate::reef_settings::ReefSettings;
+pub use self::range::{Range, SettingError};
+use crate::settings::learning::LearningSettings;
+use crate::settings::physics::PhysicsSettings;
+use crate::settings::reef::ReefSettings;
+use crate::settings::tank::{Preset, TankSettings};
 use crate::sim::Tank;
-use crate::tank_settings::{Preset, TankSettings};
 
 /// The scenes Shoal can show.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -93,7 +101,7 @@ impl Scene {
 pub const SPEED_MIN: f32 = 0.25;
 /// Fastest simulation speed multiplier (eight times real time).
 pub const SPEED_MAX: f32 = 8.0;
-pub use crate::tank_settings::FISH_COUNT_MAX;
+pub use crate::settings::tank::FISH_COUNT_MAX;
 /// Largest seed: JavaScript numbers are exact integers only up to 2^53 − 1, so seeds
 /// stay within 32 bits to travel through JSON and URLs unchanged.
 pub const SEED_MAX: u64 = u32::MAX as u64;
@@ -181,8 +189,8 @@ pub enum SettingsError {
     NotAnObject(String),
     #[error("unknown setting '{key}'; the settings are: {known}")]
     UnknownKey { key: String, known: String },
-    #[error("setting '{key}': {reason}")]
-    Invalid { key: String, reason: String },
+    #[error(transparent)]
+    Invalid(#[from] SettingError),
 }
 
 impl Settings {
@@ -207,56 +215,29 @@ impl Settings {
         }
     }
 
+    /// Simulated seconds per real second.
+    pub const SPEED: Range<f32> = Range::or_else("speed", SPEED_MIN, SPEED_MAX, 1.0);
+    pub const SEED: Range<u64> = Range::new("seed", 0, SEED_MAX);
+
     /// Checks every range. Returns the first violation.
     pub fn validate(&self) -> Result<(), SettingsError> {
-        let invalid = |key: &str, reason: String| {
-            Err(SettingsError::Invalid {
-                key: key.to_owned(),
-                reason,
-            })
-        };
-        if !(self.speed.is_finite() && (SPEED_MIN..=SPEED_MAX).contains(&self.speed)) {
-            return invalid(
-                "speed",
-                format!(
-                    "{} is out of range: choose from {SPEED_MIN} to {SPEED_MAX}",
-                    self.speed
-                ),
-            );
-        }
-        if self.seed > SEED_MAX {
-            return invalid(
-                "seed",
-                format!("{} is out of range: choose from 0 to {SEED_MAX}", self.seed),
-            );
-        }
+        Self::SPEED.check("", self.speed)?;
+        Self::SEED.check("", self.seed)?;
         let tank = Tank::default();
         for side in Side::BOTH {
             let prefix = format!("{}.", side.name());
-            if let Err((key, reason)) = self.tank(side).validate(&prefix, &tank) {
-                return invalid(&key, reason);
-            }
+            self.tank(side).validate(&prefix, &tank)?;
         }
-        if let Err((key, reason)) = self.physics.validate("physics.") {
-            return invalid(&key, reason);
-        }
-        if let Err((key, reason)) = self.reef.validate("reef.") {
-            return invalid(&key, reason);
-        }
-        if let Err((key, reason)) = self.learning.validate("learning.") {
-            return invalid(&key, reason);
-        }
+        self.physics.validate("physics.")?;
+        self.reef.validate("reef.")?;
+        self.learning.validate("learning.")?;
         Ok(())
     }
 
     /// Brings every value into range (for paths that cannot refuse).
     pub fn clamp(&mut self) {
-        self.speed = if self.speed.is_finite() {
-            self.speed.clamp(SPEED_MIN, SPEED_MAX)
-        } else {
-            1.0
-        };
-        self.seed = self.seed.min(SEED_MAX);
+        self.speed = Self::SPEED.clamp(self.speed);
+        self.seed = Self::SEED.clamp(self.seed);
         let tank = Tank::default();
         self.left.clamp(&tank);
         self.right.clamp(&tank);
@@ -296,11 +277,10 @@ impl Settings {
         let mut merged = serde_json::to_value(&base)
             .map_err(|err| SettingsError::NotAnObject(err.to_string()))?;
         merge_checked(&mut merged, &[], patch)?;
-        let mut candidate: Self =
-            serde_json::from_value(merged).map_err(|err| SettingsError::Invalid {
-                key: "?".to_owned(),
-                reason: err.to_string(),
-            })?;
+        let mut candidate: Self = serde_json::from_value(merged).map_err(|err| SettingError {
+            key: "?".to_owned(),
+            reason: err.to_string(),
+        })?;
         candidate.validate()?;
         candidate.settle(&base);
         *self = candidate;
@@ -348,10 +328,11 @@ fn merge_checked(
                     *slot = value.clone();
                 }
                 if let Err(err) = serde_json::from_value::<Settings>(single) {
-                    return Err(SettingsError::Invalid {
+                    return Err(SettingError {
                         key: dotted,
                         reason: format!("{value} has the wrong type ({})", type_hint(&err)),
-                    });
+                    }
+                    .into());
                 }
                 if let Some(slot) = value_at_mut(root, &full_path) {
                     *slot = value.clone();
@@ -561,5 +542,24 @@ mod tests {
         assert_eq!(settings.left.preset, Preset::Individual);
         assert_eq!(settings.right.preset, Preset::Group);
         assert!(settings.validate().is_ok());
+    }
+
+    #[test]
+    fn every_range_refuses_a_value_just_outside_and_clamps_it_to_the_bound() {
+        range::check_tables(
+            &Settings::default(),
+            "",
+            &[Settings::SPEED],
+            &[],
+            &[Settings::SEED],
+            |s| match s.validate() {
+                Err(SettingsError::Invalid(err)) => Err(err),
+                other => {
+                    assert_eq!(other, Ok(()));
+                    Ok(())
+                }
+            },
+            Settings::clamp,
+        );
     }
 }

@@ -5,6 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::settings::range::{Range, SettingError};
 use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::FishKind;
 use crate::sim::reef::mind::habits::KindTraits;
@@ -122,85 +123,55 @@ impl ReefSettings {
         (self.demo, self.body, self.prey_count, self.food_count)
     }
 
-    /// The first out-of-range value as (key under `prefix`, reason).
-    pub fn validate(&self, prefix: &str) -> Result<(), (String, String)> {
-        let out = |key: &str, value: String, lo: String, hi: String| {
-            Err((
-                format!("{prefix}{key}"),
-                format!("{value} is out of range: choose from {lo} to {hi}"),
-            ))
-        };
-        if let Some(n) = self.prey_count
-            && n > REEF_PREY_MAX
-        {
-            return out(
-                "prey_count",
-                n.to_string(),
-                "0".into(),
-                REEF_PREY_MAX.to_string(),
-            );
+    pub const PREY_COUNT: Range<u32> = Range::new("prey_count", 0, REEF_PREY_MAX);
+    pub const FOOD_COUNT: Range<u32> = Range::new("food_count", 0, REEF_FOOD_MAX);
+    pub const VISIBILITY_M: Range<f32> =
+        Range::or_else("visibility_m", VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0);
+    pub const CURRENT_M_PER_S: Range<f32> =
+        Range::or_else("current_m_per_s", 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03);
+    /// Every numeric setting's range (the traits have their own table, `selected`
+    /// depends on the demo and the counts).
+    pub const U32_RANGES: [Range<u32>; 2] = [Self::PREY_COUNT, Self::FOOD_COUNT];
+    pub const F32_RANGES: [Range<f32>; 2] = [Self::VISIBILITY_M, Self::CURRENT_M_PER_S];
+
+    /// The first out-of-range value, its key under `prefix`.
+    pub fn validate(&self, prefix: &str) -> Result<(), SettingError> {
+        if let Some(n) = self.prey_count {
+            Self::PREY_COUNT.check(prefix, n)?;
         }
-        if let Some(n) = self.food_count
-            && n > REEF_FOOD_MAX
-        {
-            return out(
-                "food_count",
-                n.to_string(),
-                "0".into(),
-                REEF_FOOD_MAX.to_string(),
-            );
+        if let Some(n) = self.food_count {
+            Self::FOOD_COUNT.check(prefix, n)?;
         }
-        let range = |key: &str, value: f32, lo: f32, hi: f32| {
-            if value.is_finite() && (lo..=hi).contains(&value) {
-                Ok(())
-            } else {
-                out(key, value.to_string(), lo.to_string(), hi.to_string())
-            }
-        };
-        range(
-            "visibility_m",
-            self.visibility_m,
-            VISIBILITY_MIN_M,
-            VISIBILITY_MAX_M,
-        )?;
-        range(
-            "current_m_per_s",
-            self.current_m_per_s,
-            0.0,
-            REEF_CURRENT_MAX_M_PER_S,
-        )?;
+        Self::VISIBILITY_M.check(prefix, self.visibility_m)?;
+        Self::CURRENT_M_PER_S.check(prefix, self.current_m_per_s)?;
         for kind in FishKind::ALL {
             if let Err((name, reason)) = self.traits.of(kind).validate() {
-                return Err((format!("{prefix}traits.{}.{name}", kind.label()), reason));
+                return Err(SettingError {
+                    key: format!("{prefix}traits.{}.{name}", kind.label()),
+                    reason,
+                });
             }
         }
         let animals = self.animal_count();
         if let Some(i) = self.selected
             && i as usize >= animals
         {
-            return out(
-                "selected",
-                i.to_string(),
-                "0".into(),
-                animals.saturating_sub(1).to_string(),
-            );
+            return Err(SettingError::out_of_range(
+                format!("{prefix}selected"),
+                i,
+                0,
+                animals.saturating_sub(1),
+            ));
         }
         Ok(())
     }
 
     /// Brings every value into range.
     pub fn clamp(&mut self) {
-        let fix = |v: f32, lo: f32, hi: f32, default: f32| {
-            if v.is_finite() {
-                v.clamp(lo, hi)
-            } else {
-                default
-            }
-        };
-        self.prey_count = self.prey_count.map(|n| n.min(REEF_PREY_MAX));
-        self.food_count = self.food_count.map(|n| n.min(REEF_FOOD_MAX));
-        self.visibility_m = fix(self.visibility_m, VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0);
-        self.current_m_per_s = fix(self.current_m_per_s, 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03);
+        self.prey_count = self.prey_count.map(|n| Self::PREY_COUNT.clamp(n));
+        self.food_count = self.food_count.map(|n| Self::FOOD_COUNT.clamp(n));
+        self.visibility_m = Self::VISIBILITY_M.clamp(self.visibility_m);
+        self.current_m_per_s = Self::CURRENT_M_PER_S.clamp(self.current_m_per_s);
         for kind in FishKind::ALL {
             let traits = self.traits.of_mut(kind);
             *traits = traits.clamped();
@@ -222,14 +193,14 @@ mod tests {
             visibility_m: 40.0,
             ..s.clone()
         };
-        let (key, reason) = bad.validate("reef.").unwrap_err();
+        let SettingError { key, reason } = bad.validate("reef.").unwrap_err();
         assert_eq!(key, "reef.visibility_m");
         assert!(reason.contains("choose from 1 to 12"), "{reason}");
         let bad = ReefSettings {
             prey_count: Some(1000),
             ..s.clone()
         };
-        assert_eq!(bad.validate("reef.").unwrap_err().0, "reef.prey_count");
+        assert_eq!(bad.validate("reef.").unwrap_err().key, "reef.prey_count");
         let mut nan = ReefSettings {
             current_m_per_s: f32::NAN,
             prey_count: Some(999),
@@ -250,7 +221,7 @@ mod tests {
         let json = serde_json::to_string(&s).unwrap();
         assert_eq!(serde_json::from_str::<ReefSettings>(&json).unwrap(), s);
         s.traits.prey.fear_threshold = Some(0.9);
-        let (key, reason) = s.validate("reef.").unwrap_err();
+        let SettingError { key, reason } = s.validate("reef.").unwrap_err();
         assert_eq!(key, "reef.traits.prey.fear_threshold");
         assert!(reason.contains("choose from 0.1 to 0.5"), "{reason}");
         s.traits.prey.urge_threshold = Some(f32::NAN);
@@ -290,5 +261,18 @@ mod tests {
                 .unwrap();
         assert_eq!(v.demo, ReefScene::SchoolMeetsObstacle);
         assert_eq!(v.body, ReefBodyKind::PointMass);
+    }
+
+    #[test]
+    fn every_range_refuses_a_value_just_outside_and_clamps_it_to_the_bound() {
+        crate::settings::range::check_tables(
+            &ReefSettings::default(),
+            "reef.",
+            &ReefSettings::F32_RANGES,
+            &ReefSettings::U32_RANGES,
+            &[],
+            |s| s.validate("reef."),
+            ReefSettings::clamp,
+        );
     }
 }

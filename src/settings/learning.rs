@@ -5,6 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::settings::range::{Range, SettingError};
 use crate::sim::BodySpecies;
 use crate::sim::learning::learning_lab::ControllerChoice;
 
@@ -44,24 +45,19 @@ impl LearningSettings {
         (self.species, self.annealing_steps)
     }
 
-    /// The first out-of-range value as (key under `prefix`, reason).
-    pub fn validate(&self, prefix: &str) -> Result<(), (String, String)> {
-        if !(ANNEALING_STEPS_MIN..=ANNEALING_STEPS_MAX).contains(&self.annealing_steps) {
-            return Err((
-                format!("{prefix}annealing_steps"),
-                format!(
-                    "{} is out of range: choose from {ANNEALING_STEPS_MIN} to {ANNEALING_STEPS_MAX}",
-                    self.annealing_steps
-                ),
-            ));
-        }
-        Ok(())
+    /// Annealing steps per drill.
+    pub const ANNEALING_STEPS: Range<u32> =
+        Range::new("annealing_steps", ANNEALING_STEPS_MIN, ANNEALING_STEPS_MAX);
+    /// Every numeric setting's range.
+    pub const U32_RANGES: [Range<u32>; 1] = [Self::ANNEALING_STEPS];
+
+    /// The first out-of-range value, its key under `prefix`.
+    pub fn validate(&self, prefix: &str) -> Result<(), SettingError> {
+        Self::ANNEALING_STEPS.check(prefix, self.annealing_steps)
     }
 
     pub fn clamp(&mut self) {
-        self.annealing_steps = self
-            .annealing_steps
-            .clamp(ANNEALING_STEPS_MIN, ANNEALING_STEPS_MAX);
+        self.annealing_steps = Self::ANNEALING_STEPS.clamp(self.annealing_steps);
     }
 }
 
@@ -78,12 +74,25 @@ mod tests {
             ..s.clone()
         };
         assert_eq!(
-            bad.validate("learning.").unwrap_err().0,
+            bad.validate("learning.").unwrap_err().key,
             "learning.annealing_steps"
         );
         let v: LearningSettings =
             serde_json::from_str(r#"{"species": "shark", "controller": "hand_tuned"}"#).unwrap();
         assert_eq!(v.species, BodySpecies::Shark);
         assert_eq!(v.controller, ControllerChoice::HandTuned);
+    }
+
+    #[test]
+    fn every_range_refuses_a_value_just_outside_and_clamps_it_to_the_bound() {
+        crate::settings::range::check_tables(
+            &LearningSettings::default(),
+            "learning.",
+            &[],
+            &LearningSettings::U32_RANGES,
+            &[],
+            |s| s.validate("learning."),
+            LearningSettings::clamp,
+        );
     }
 }

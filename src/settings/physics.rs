@@ -5,6 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::settings::range::{Range, SettingError};
 use crate::sim::PhysicsBehaviour;
 use crate::sim::physics::world::{MAX_PHYSICAL_FISH, MAX_PHYSICAL_SHARKS};
 
@@ -77,91 +78,58 @@ impl PhysicsSettings {
         self.fish_count + self.sharks
     }
 
-    /// The first out-of-range value as (key under `prefix`, reason).
-    pub fn validate(&self, prefix: &str) -> Result<(), (String, String)> {
-        let out = |key: &str, value: String, lo: String, hi: String| {
-            Err((
-                format!("{prefix}{key}"),
-                format!("{value} is out of range: choose from {lo} to {hi}"),
-            ))
-        };
-        let range = |key: &str, value: f32, lo: f32, hi: f32| {
-            if value.is_finite() && (lo..=hi).contains(&value) {
-                Ok(())
-            } else {
-                out(key, value.to_string(), lo.to_string(), hi.to_string())
-            }
-        };
-        if !(1..=PHYSICS_FISH_MAX).contains(&self.fish_count) {
-            return out(
-                "fish_count",
-                self.fish_count.to_string(),
-                "1".into(),
-                PHYSICS_FISH_MAX.to_string(),
-            );
-        }
-        if self.sharks > PHYSICS_SHARKS_MAX {
-            return out(
-                "sharks",
-                self.sharks.to_string(),
-                "0".into(),
-                PHYSICS_SHARKS_MAX.to_string(),
-            );
-        }
-        range(
-            "current_m_per_s",
-            self.current_m_per_s,
-            0.0,
-            CURRENT_MAX_M_PER_S,
-        )?;
-        range("hand_speed", self.hand_speed, 0.0, 1.0)?;
-        range(
-            "hand_pitch_deg",
-            self.hand_pitch_deg,
-            -HAND_PITCH_MAX_DEG,
-            HAND_PITCH_MAX_DEG,
-        )?;
-        range(
-            "turn_angle_deg",
-            self.turn_angle_deg,
-            -TURN_MAX_DEG,
-            TURN_MAX_DEG,
-        )?;
+    pub const FISH_COUNT: Range<u32> = Range::new("fish_count", 1, PHYSICS_FISH_MAX);
+    pub const SHARKS: Range<u32> = Range::new("sharks", 0, PHYSICS_SHARKS_MAX);
+    pub const CURRENT_M_PER_S: Range<f32> = Range::new("current_m_per_s", 0.0, CURRENT_MAX_M_PER_S);
+    pub const HAND_SPEED: Range<f32> = Range::new("hand_speed", 0.0, 1.0);
+    pub const HAND_PITCH_DEG: Range<f32> = Range::or_else(
+        "hand_pitch_deg",
+        -HAND_PITCH_MAX_DEG,
+        HAND_PITCH_MAX_DEG,
+        0.0,
+    );
+    pub const TURN_ANGLE_DEG: Range<f32> =
+        Range::or_else("turn_angle_deg", -TURN_MAX_DEG, TURN_MAX_DEG, 0.0);
+    /// Every numeric setting's range (`selected` depends on the counts).
+    pub const U32_RANGES: [Range<u32>; 2] = [Self::FISH_COUNT, Self::SHARKS];
+    pub const F32_RANGES: [Range<f32>; 4] = [
+        Self::CURRENT_M_PER_S,
+        Self::HAND_SPEED,
+        Self::HAND_PITCH_DEG,
+        Self::TURN_ANGLE_DEG,
+    ];
+
+    /// The first out-of-range value, its key under `prefix`.
+    pub fn validate(&self, prefix: &str) -> Result<(), SettingError> {
+        Self::FISH_COUNT.check(prefix, self.fish_count)?;
+        Self::SHARKS.check(prefix, self.sharks)?;
+        Self::CURRENT_M_PER_S.check(prefix, self.current_m_per_s)?;
+        Self::HAND_SPEED.check(prefix, self.hand_speed)?;
+        Self::HAND_PITCH_DEG.check(prefix, self.hand_pitch_deg)?;
+        Self::TURN_ANGLE_DEG.check(prefix, self.turn_angle_deg)?;
         if let Some(selected) = self.selected
             && selected >= self.animal_count()
         {
-            return Err((
-                format!("{prefix}selected"),
-                format!(
+            return Err(SettingError {
+                key: format!("{prefix}selected"),
+                reason: format!(
                     "{selected} is out of range: there are {} animals (0 to {}), or null for none",
                     self.animal_count(),
                     self.animal_count() - 1
                 ),
-            ));
+            });
         }
         Ok(())
     }
 
     /// Brings every value into range.
     pub fn clamp(&mut self) {
-        let clamp = |v: &mut f32, lo: f32, hi: f32, default: f32| {
-            *v = if v.is_finite() {
-                v.clamp(lo, hi)
-            } else {
-                default
-            };
-        };
-        self.fish_count = self.fish_count.clamp(1, PHYSICS_FISH_MAX);
-        self.sharks = self.sharks.min(PHYSICS_SHARKS_MAX);
-        clamp(&mut self.current_m_per_s, 0.0, CURRENT_MAX_M_PER_S, 0.0);
-        clamp(&mut self.hand_speed, 0.0, 1.0, 0.0);
-        clamp(
-            &mut self.hand_pitch_deg,
-            -HAND_PITCH_MAX_DEG,
-            HAND_PITCH_MAX_DEG,
-            0.0,
-        );
-        clamp(&mut self.turn_angle_deg, -TURN_MAX_DEG, TURN_MAX_DEG, 0.0);
+        self.fish_count = Self::FISH_COUNT.clamp(self.fish_count);
+        self.sharks = Self::SHARKS.clamp(self.sharks);
+        self.current_m_per_s = Self::CURRENT_M_PER_S.clamp(self.current_m_per_s);
+        self.hand_speed = Self::HAND_SPEED.clamp(self.hand_speed);
+        self.hand_pitch_deg = Self::HAND_PITCH_DEG.clamp(self.hand_pitch_deg);
+        self.turn_angle_deg = Self::TURN_ANGLE_DEG.clamp(self.turn_angle_deg);
         if self.selected.is_some_and(|s| s >= self.animal_count()) {
             self.selected = None;
         }
@@ -195,7 +163,7 @@ mod tests {
         for (key, break_it) in cases {
             let mut s = ok.clone();
             break_it(&mut s);
-            let (got, reason) = s.validate("physics.").unwrap_err();
+            let SettingError { key: got, reason } = s.validate("physics.").unwrap_err();
             assert_eq!(got, key, "{reason}");
             assert!(reason.contains("out of range"), "{reason}");
             s.clamp();
@@ -216,5 +184,18 @@ mod tests {
         s.clamp();
         assert_eq!(s.selected, None);
         assert!(!s.hand_control && !s.follow);
+    }
+
+    #[test]
+    fn every_range_refuses_a_value_just_outside_and_clamps_it_to_the_bound() {
+        crate::settings::range::check_tables(
+            &PhysicsSettings::default(),
+            "physics.",
+            &PhysicsSettings::F32_RANGES,
+            &PhysicsSettings::U32_RANGES,
+            &[],
+            |s| s.validate("physics."),
+            PhysicsSettings::clamp,
+        );
     }
 }

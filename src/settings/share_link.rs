@@ -82,8 +82,8 @@ pub fn decode(fragment: &str) -> Result<Option<Settings>, ShareLinkError> {
 mod tests {
     use super::*;
     use crate::settings::Scene;
+    use crate::settings::tank::{Preset, TankSettings};
     use crate::sim::boids::control_mode::ControlMode;
-    use crate::tank_settings::{Preset, TankSettings};
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 
@@ -105,8 +105,8 @@ mod tests {
         tank.mode = ControlMode::ALL[rng.random_range(0..4)];
         tank.preset = tank.matching_preset();
         tank.fish_count = rng.random_range(0..=20_000);
-        tank.sharks = rng.random_range(0..=crate::tank_settings::SHARKS_MAX);
-        tank.stingrays = rng.random_range(0..=crate::tank_settings::STINGRAYS_MAX);
+        tank.sharks = rng.random_range(0..=crate::settings::tank::SHARKS_MAX);
+        tank.stingrays = rng.random_range(0..=crate::settings::tank::STINGRAYS_MAX);
         tank
     }
 
@@ -122,7 +122,7 @@ mod tests {
             right: random_tank(rng),
             physics: random_physics(rng),
             reef: random_reef(rng),
-            learning: crate::learning_settings::LearningSettings {
+            learning: crate::settings::learning::LearningSettings {
                 species: if rng.random_bool(0.5) {
                     crate::sim::BodySpecies::Fish
                 } else {
@@ -139,8 +139,8 @@ mod tests {
         }
     }
 
-    fn random_reef(rng: &mut ChaCha8Rng) -> crate::reef_settings::ReefSettings {
-        use crate::reef_settings::*;
+    fn random_reef(rng: &mut ChaCha8Rng) -> crate::settings::reef::ReefSettings {
+        use crate::settings::reef::*;
         use crate::sim::reef::demos::ReefScene;
         use crate::sim::reef::world::ReefBodyKind;
         let mut reef = ReefSettings {
@@ -178,8 +178,8 @@ mod tests {
         reef
     }
 
-    fn random_physics(rng: &mut ChaCha8Rng) -> crate::physics_settings::PhysicsSettings {
-        use crate::physics_settings::*;
+    fn random_physics(rng: &mut ChaCha8Rng) -> crate::settings::physics::PhysicsSettings {
+        use crate::settings::physics::*;
         let fish_count = rng.random_range(1..=PHYSICS_FISH_MAX);
         let sharks = rng.random_range(0..=PHYSICS_SHARKS_MAX);
         let selected = rng

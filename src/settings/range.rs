@@ -1,0 +1,178 @@
+//! One numeric setting's valid range, written once: [`Range::check`] refuses a value
+//! outside it (settings validation), [`Range::clamp`] brings a value into it (paths
+//! that cannot refuse), [`Range::bounds`] is the slider's. Each settings struct keeps
+//! one `Range` constant per numeric setting and lists them in its `RANGES` tables.
+
+use std::fmt::Display;
+use std::ops::RangeInclusive;
+
+/// Why a setting was refused: the setting's full key ("left.cohesion") and the
+/// reason a user reads.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("setting '{key}': {reason}")]
+pub struct SettingError {
+    pub key: String,
+    pub reason: String,
+}
+
+impl SettingError {
+    /// `value` outside `min..=max` for the setting `key`.
+    pub fn out_of_range(
+        key: String,
+        value: impl Display,
+        min: impl Display,
+        max: impl Display,
+    ) -> Self {
+        Self {
+            key,
+            reason: format!("{value} is out of range: choose from {min} to {max}"),
+        }
+    }
+}
+
+/// A number a setting can hold.
+pub trait SettingValue: Copy + PartialOrd + Display {
+    /// False for NaN and the infinities, which no range holds.
+    fn is_number(self) -> bool;
+}
+
+impl SettingValue for f32 {
+    fn is_number(self) -> bool {
+        self.is_finite()
+    }
+}
+
+impl SettingValue for u32 {
+    fn is_number(self) -> bool {
+        true
+    }
+}
+
+impl SettingValue for u64 {
+    fn is_number(self) -> bool {
+        true
+    }
+}
+
+/// The valid values of one numeric setting.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Range<T> {
+    /// The setting's name in the automation API and share links ("cohesion").
+    pub key: &'static str,
+    pub min: T,
+    pub max: T,
+    /// What [`Range::clamp`] puts in place of a value that is not a number.
+    pub if_not_a_number: T,
+}
+
+impl<T: SettingValue> Range<T> {
+    /// `min..=max`; a value that is not a number clamps to `min`.
+    pub const fn new(key: &'static str, min: T, max: T) -> Self {
+        Self {
+            key,
+            min,
+            max,
+            if_not_a_number: min,
+        }
+    }
+
+    /// `min..=max`; a value that is not a number clamps to `if_not_a_number`.
+    pub const fn or_else(key: &'static str, min: T, max: T, if_not_a_number: T) -> Self {
+        Self {
+            key,
+            min,
+            max,
+            if_not_a_number,
+        }
+    }
+
+    /// The slider's bounds.
+    pub fn bounds(&self) -> RangeInclusive<T> {
+        self.min..=self.max
+    }
+
+    pub fn contains(&self, value: T) -> bool {
+        value.is_number() && self.min <= value && value <= self.max
+    }
+
+    /// Refuses a value outside the range, naming the setting as `prefix` + key.
+    pub fn check(&self, prefix: &str, value: T) -> Result<(), SettingError> {
+        if self.contains(value) {
+            Ok(())
+        } else {
+            Err(SettingError::out_of_range(
+                format!("{prefix}{}", self.key),
+                value,
+                self.min,
+                self.max,
+            ))
+        }
+    }
+
+    /// The nearest value in the range.
+    pub fn clamp(&self, value: T) -> T {
+        if !value.is_number() {
+            self.if_not_a_number
+        } else if value < self.min {
+            self.min
+        } else if value > self.max {
+            self.max
+        } else {
+            value
+        }
+    }
+}
+
+/// For every range in `f32s`, `u32s` and `u64s`: a value just outside each bound, written
+/// into `settings` by key through JSON, is refused by `validate` with an error naming
+/// `prefix` + key, and `clamp` brings it to the bound. Shared by each settings
+/// struct's tests.
+#[cfg(test)]
+pub(crate) fn check_tables<S>(
+    settings: &S,
+    prefix: &str,
+    f32s: &[Range<f32>],
+    u32s: &[Range<u32>],
+    u64s: &[Range<u64>],
+    validate: impl Fn(&S) -> Result<(), SettingError>,
+    clamp: impl Fn(&mut S),
+) where
+    S: serde::Serialize + serde::de::DeserializeOwned,
+{
+    use serde_json::{Value, json};
+    let mut cases: Vec<(&str, Value, Value)> = Vec::new();
+    for r in f32s {
+        let step = (r.max - r.min).abs().max(1.0) * 1e-3;
+        cases.push((r.key, json!(r.min - step), json!(r.min)));
+        cases.push((r.key, json!(r.max + step), json!(r.max)));
+    }
+    for r in u32s {
+        if r.min > 0 {
+            cases.push((r.key, json!(r.min - 1), json!(r.min)));
+        }
+        cases.push((r.key, json!(u64::from(r.max) + 1), json!(r.max)));
+    }
+    for r in u64s {
+        if r.min > 0 {
+            cases.push((r.key, json!(r.min - 1), json!(r.min)));
+        }
+        cases.push((r.key, json!(r.max + 1), json!(r.max)));
+    }
+    assert!(!cases.is_empty());
+    for (key, outside, bound) in cases {
+        let mut value = serde_json::to_value(settings).expect("settings serialise");
+        value[key] = outside.clone();
+        let mut s: S = serde_json::from_value(value).expect("a number the field takes");
+        let err = validate(&s).expect_err(&format!("{key} = {outside} is refused"));
+        assert_eq!(err.key, format!("{prefix}{key}"), "{err}");
+        assert!(err.reason.contains("out of range"), "{err}");
+        clamp(&mut s);
+        let clamped = serde_json::to_value(&s).expect("settings serialise")[key].clone();
+        assert_eq!(
+            clamped.as_f64(),
+            bound.as_f64(),
+            "{key} = {outside} clamps to the bound"
+        );
+        assert!(validate(&s).is_ok(), "{key}: clamp makes it valid");
+    }
+}
