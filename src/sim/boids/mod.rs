@@ -7,6 +7,11 @@
 pub mod control_mode;
 pub mod forces;
 pub mod metrics;
+pub mod placement;
+pub mod predators;
 pub mod shark;
 pub mod stingray;
 pub mod world;
+
+#[cfg(test)]
+mod tests;
