@@ -174,16 +174,13 @@ impl FrameBuilder {
         let statics = match &view.statics {
             Some(statics) if view.world_generation == Some(world_generation) => statics.clone(),
             _ => {
-                let mut scene = Mesh::default();
-                scene.append(&mesh::sand_floor(tank));
-                scene.append(&mesh::tank_frame(tank));
-                scene.append(&mesh::obstacles(
-                    run.scene().obstacles(),
-                    run.scene().seed(),
-                ));
+                let mut mesh_of_statics = Mesh::default();
+                mesh_of_statics.append(&mesh::sand_floor(tank));
+                mesh_of_statics.append(&mesh::tank_frame(tank));
+                mesh_of_statics.append(&mesh::obstacles(scene.obstacles(), scene.seed()));
                 let statics = StaticScene {
                     generation: NEXT_STATIC_GENERATION.fetch_add(1, Ordering::Relaxed),
-                    mesh: Arc::new(scene),
+                    mesh: Arc::new(mesh_of_statics),
                 };
                 view.world_generation = Some(world_generation);
                 view.statics = Some(statics.clone());

@@ -253,10 +253,7 @@ impl SceneWorld {
                 })
                 .collect(),
             Self::Reef(w) => w
-                .animals()
-                .iter()
-                .enumerate()
-                .filter(|(_, a)| a.alive)
+                .living()
                 .filter_map(|(index, a)| match &a.body {
                     ReefBody::Physical(p) => Some(BodyToDraw {
                         index,
@@ -295,10 +292,7 @@ impl SceneWorld {
                 .map(|(i, a)| (i, a.body_length_m()))
                 .collect(),
             Self::Reef(w) => w
-                .animals()
-                .iter()
-                .enumerate()
-                .filter(|(_, a)| a.alive)
+                .living()
                 .map(|(i, a)| (i, a.body.body_length_m()))
                 .collect(),
             Self::Boids(_) | Self::Learning(_) => Vec::new(),

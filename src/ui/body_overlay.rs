@@ -101,8 +101,9 @@ pub fn draw_skeletons(
         0.7,
         egui::Color32::from_rgba_unmultiplied(200, 200, 200, 55),
     );
+    let drawn = run.drawn_nodes_all_m(alpha);
     for i in shown(run, selected) {
-        let nodes = run.drawn_nodes_m(i, alpha);
+        let nodes = drawn[i];
         let screen: [Option<egui::Pos2>; NODE_COUNT] = nodes.map(|p| project.point(p));
         let muscles = physics.animals()[i].motor().muscles;
         for spring in SPRINGS.iter() {
@@ -142,10 +143,11 @@ pub fn draw_forces(
         return;
     };
     let project = Projector::new(camera, rect);
+    let drawn = run.drawn_nodes_all_m(alpha);
     for i in shown(run, selected) {
         let animal = &physics.animals()[i];
         let length = animal.body_length_m();
-        let nodes = run.drawn_nodes_m(i, alpha);
+        let nodes = drawn[i];
         let body = animal.body();
         let water = physics.water_at(animal.point.position_m);
         // The paper's water force on the body as it is now (drag coefficient 1:

@@ -529,7 +529,11 @@ impl ReefWorld {
     }
     /// Living animals.
     pub fn alive_count(&self) -> usize {
-        self.animals.iter().filter(|a| a.alive).count()
+        self.living().count()
+    }
+    /// The living animals with their indices.
+    pub fn living(&self) -> impl Iterator<Item = (usize, &ReefAnimal)> {
+        self.animals.iter().enumerate().filter(|(_, a)| a.alive)
     }
 
     /// Sets V_r, metres (clamped to 1–20).
