@@ -231,281 +231,13 @@ pub struct StateReport {
     /// could not be opened).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub notice: Option<String>,
-    /// The physics scene: the selected fish, in detail.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub physics: Option<PhysicsReport>,
-    /// The reef scene: counts, the selected fish's mind, the latest events.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub reef: Option<ReefReport>,
-    /// The learning lab: training progress, the controllers in use, race, buoys.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub learning: Option<LearningReport>,
+    /// The scene's own part: `physics`, `reef` or `learning` (see
+    /// [`crate::sim::SceneReport`]).
+    #[serde(flatten)]
+    pub scene_report: crate::sim::SceneReport,
     /// Benchmark progress and results, in `?bench` mode only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bench: Option<crate::bench::BenchReport>,
-}
-
-/// The physics scene as `shoal.state().physics` reports it.
-#[derive(Clone, Debug, Serialize, PartialEq)]
-pub struct PhysicsReport {
-    /// Muscle-driven fish and sharks.
-    pub fish: usize,
-    pub sharks: usize,
-    /// Node moves made by the hard rule (glass and rocks) since the start.
-    pub constraint_moves: u64,
-    /// The selected animal, if any.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub selected: Option<SelectedFishReport>,
-}
-
-/// One physical fish, in the tank frame (y up), SI units.
-#[derive(Clone, Debug, Serialize, PartialEq)]
-pub struct SelectedFishReport {
-    pub index: usize,
-    pub species: &'static str,
-    pub body_length_m: f32,
-    /// Length along the spine over the rest length (1 when relaxed).
-    pub length_ratio: f32,
-    pub position_m: [f32; 3],
-    pub velocity_m_per_s: [f32; 3],
-    pub speed_m_per_s: f32,
-    /// Where the fore body points, averaged over a tail beat (unit).
-    pub heading: [f32; 3],
-    /// The velocity the steering layer (or the hand command) asked for.
-    pub desired_velocity_m_per_s: [f32; 3],
-    /// swim-MC speed, fraction of the top speed.
-    pub swim_speed_fraction: f32,
-    pub turning: bool,
-    /// Pectoral fin angles θ, radians (π/2 flat, π brake).
-    pub fin_left_rad: f32,
-    pub fin_right_rad: f32,
-    /// The 12 muscle contractions in [0, 1]: anterior, middle, posterior
-    /// segment; each left dorsal, left ventral, right dorsal, right ventral.
-    pub muscles: [f32; crate::sim::body::MUSCLE_COUNT],
-    /// The water current at the fish.
-    pub water_m_per_s: [f32; 3],
-    /// Is the teacher driving it?
-    pub hand_control: bool,
-}
-
-impl PhysicsReport {
-    fn new(lab: &Lab) -> Option<Self> {
-        let physics = lab.runs()[0].physics()?;
-        let settings = &lab.settings().physics;
-        let selected = settings.selected.and_then(|i| {
-            let index = i as usize;
-            let a = physics.animals().get(index)?;
-            Some(SelectedFishReport {
-                index,
-                species: a.species.name(),
-                body_length_m: a.body_length_m(),
-                length_ratio: a.body().spine_length_m() / a.body_length_m(),
-                position_m: a.point.position_m.to_array(),
-                velocity_m_per_s: a.point.velocity_m_per_s.to_array(),
-                speed_m_per_s: a.point.velocity_m_per_s.length(),
-                heading: a.heading().to_array(),
-                desired_velocity_m_per_s: physics.desired_m_per_s(index).to_array(),
-                swim_speed_fraction: a.motor().speed_fraction,
-                turning: a.is_turning(),
-                fin_left_rad: a.motor().fins.left_angle_rad,
-                fin_right_rad: a.motor().fins.right_angle_rad,
-                muscles: a.motor().muscles,
-                water_m_per_s: physics.water_at(a.point.position_m).to_array(),
-                hand_control: settings.hand_control,
-            })
-        });
-        Some(Self {
-            fish: physics.fish_count(),
-            sharks: physics.shark_count(),
-            constraint_moves: physics.constraint_moves(),
-            selected,
-        })
-    }
-}
-
-/// The reef scene as `shoal.state().reef` reports it.
-#[derive(Clone, Debug, Serialize, PartialEq)]
-pub struct ReefReport {
-    pub demo: crate::sim::reef::demos::ReefScene,
-    pub body: crate::sim::reef::world::ReefBodyKind,
-    /// Living animals by kind.
-    pub predators: usize,
-    pub prey: usize,
-    pub pacifists: usize,
-    pub food: usize,
-    pub counts: crate::sim::reef::world::ReefCounts,
-    /// Courting pairs: male, female, phase.
-    pub pairs: Vec<(u32, u32, crate::sim::reef::courtship::Phase)>,
-    /// The last 20 events, oldest first.
-    pub events: Vec<crate::sim::reef::events::ReefEvent>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub selected: Option<SelectedMindReport>,
-}
-
-/// The selected reef fish: body, habits and mind.
-#[derive(Clone, Debug, Serialize, PartialEq)]
-pub struct SelectedMindReport {
-    pub index: usize,
-    pub name: String,
-    pub alive: bool,
-    pub habits: crate::sim::reef::mind::Habits,
-    pub hunger: f32,
-    pub libido: f32,
-    pub fear: f32,
-    pub intention: crate::sim::reef::mind::Intention,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub target: Option<crate::sim::reef::mind::Target>,
-    /// The single-item memory: an intention interrupted by an avoidance.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub remembered: Option<crate::sim::reef::mind::Focus>,
-    pub mouth_open: bool,
-    /// Mean brightness of its retinal image, [0, 1].
-    pub brightness: f32,
-    pub temperature_c: f32,
-    pub position_m: [f32; 3],
-    pub heading: [f32; 3],
-    pub speed_m_per_s: f32,
-    /// The velocity its behaviour routine asked for.
-    pub desired_velocity_m_per_s: [f32; 3],
-    /// Muscle body only: swim-MC speed fraction and the 12 muscles.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub swim_speed_fraction: Option<f32>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub muscles: Option<[f32; crate::sim::body::MUSCLE_COUNT]>,
-}
-
-impl ReefReport {
-    fn new(lab: &Lab) -> Option<Self> {
-        use crate::sim::reef::mind::FishKind;
-        use crate::sim::reef::world::ReefBody;
-        let reef = lab.runs()[0].reef()?;
-        let alive = |kind: FishKind| {
-            reef.animals()
-                .iter()
-                .filter(|a| a.alive && a.habits.kind == kind)
-                .count()
-        };
-        let selected = lab.settings().reef.selected.and_then(|i| {
-            let index = i as usize;
-            let a = reef.animals().get(index)?;
-            let (swim_speed_fraction, muscles) = match &a.body {
-                ReefBody::Physical(p) => (Some(p.motor().speed_fraction), Some(p.motor().muscles)),
-                ReefBody::Point(_) => (None, None),
-            };
-            Some(SelectedMindReport {
-                index,
-                name: a.name(index),
-                alive: a.alive,
-                habits: a.habits,
-                hunger: a.mental.hunger,
-                libido: a.mental.libido,
-                fear: a.mental.fear,
-                intention: a.focus.intention,
-                target: a.focus.target,
-                remembered: a.generator.memory,
-                mouth_open: a.mouth_open,
-                brightness: a.brightness,
-                temperature_c: a.temperature_c,
-                position_m: a.body.position_m().to_array(),
-                heading: a.body.heading().to_array(),
-                speed_m_per_s: a.body.velocity_m_per_s().length(),
-                desired_velocity_m_per_s: a.desired_m_per_s.to_array(),
-                swim_speed_fraction,
-                muscles,
-            })
-        });
-        let events = reef.events();
-        Some(Self {
-            demo: reef.config().scene,
-            body: reef.config().body,
-            predators: alive(FishKind::Predator),
-            prey: alive(FishKind::Prey),
-            pacifists: alive(FishKind::Pacifist),
-            food: reef.food().len(),
-            counts: reef.counts(),
-            pairs: reef
-                .pairs()
-                .iter()
-                .map(|p| (p.male, p.female, p.phase))
-                .collect(),
-            events: events
-                .iter()
-                .skip(events.len().saturating_sub(20))
-                .cloned()
-                .collect(),
-            selected,
-        })
-    }
-}
-
-/// The learning lab as `shoal.state().learning` reports it.
-#[derive(Clone, Debug, Serialize, PartialEq)]
-pub struct LearningReport {
-    /// The drill in training (0-based), `null` when all are learned.
-    pub drill: Option<usize>,
-    pub drills: usize,
-    /// Whole training, 0–1.
-    pub progress: f32,
-    /// Annealing steps done in the current drill.
-    pub evaluations: u64,
-    pub annealing_steps: u64,
-    /// E of the best and of the current controls of the current drill.
-    pub best_objective: f32,
-    pub current_objective: f32,
-    /// E at the random start of the current drill.
-    pub start_objective: f32,
-    /// Drills learned: their objective and the energy kept by two modes.
-    pub finished: Vec<(f32, f32)>,
-    /// `"shipped"`, `"trained_here"` or `"loaded"`.
-    pub source: crate::sim::learning::learning_lab::SetSource,
-    pub controller: crate::sim::learning::learning_lab::ControllerChoice,
-    /// Seconds at which the swimmer reached a buoy.
-    pub buoy_times_secs: Vec<f32>,
-    /// The race: annealing steps and distance of each shark.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub race: Option<Vec<(u64, f32)>>,
-    /// Entrants ready for a race.
-    pub race_entrants: usize,
-}
-
-impl LearningReport {
-    fn new(lab: &Lab) -> Option<Self> {
-        let l = lab.runs()[0].learning()?;
-        let t = l.trainer();
-        let (_, source) = l.learned_set();
-        Some(Self {
-            drill: l.current_drill(),
-            drills: l.drills().len(),
-            progress: l.progress(),
-            evaluations: t.evaluations(),
-            annealing_steps: l.annealing_steps(),
-            best_objective: t.best_evaluation().objective,
-            current_objective: t.current_objective(),
-            start_objective: t
-                .history()
-                .first()
-                .map_or(t.current_objective(), |h| h.current_objective),
-            finished: (0..l.finished_drills().len())
-                .map(|k| {
-                    (
-                        l.finished_drills()[k].objective,
-                        l.abstraction(k)
-                            .map_or(0.0, |a| a.controller.energy_fraction),
-                    )
-                })
-                .collect(),
-            source,
-            controller: l.controller(),
-            buoy_times_secs: l.buoy_times_secs(),
-            race: l.race().map(|r| {
-                r.entrants()
-                    .map(|e| e.annealing_steps)
-                    .zip(r.distances_m())
-                    .collect()
-            }),
-            race_entrants: l.race_entrants().len(),
-        })
-    }
 }
 
 /// The orbit camera, as `shoal.state().camera` reports it.
@@ -539,9 +271,7 @@ impl StateReport {
             compare: lab.comparing(),
             notice: None,
             camera: None,
-            physics: PhysicsReport::new(lab),
-            reef: ReefReport::new(lab),
-            learning: LearningReport::new(lab),
+            scene_report: run.scene().report(settings.selected()),
             bench: None,
         }
     }
@@ -552,6 +282,32 @@ mod tests {
     use super::*;
     use crate::settings::Settings;
     use serde_json::json;
+
+    #[test]
+    fn each_scene_reports_its_own_part_of_the_state_and_no_other() {
+        use crate::settings::Scene;
+        let parts = ["physics", "reef", "learning"];
+        for (scene, own) in [
+            (Scene::Aquarium, None),
+            (Scene::Boids, None),
+            (Scene::Physics, Some("physics")),
+            (Scene::Reef, Some("reef")),
+            (Scene::Learning, Some("learning")),
+        ] {
+            let lab = Lab::new(Settings {
+                scene,
+                ..Settings::default()
+            });
+            let state = serde_json::to_value(StateReport::new(&lab, "webgl2", 0.0)).unwrap();
+            for part in parts {
+                assert_eq!(
+                    state.get(part).is_some(),
+                    own == Some(part),
+                    "{scene:?} and {part}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn step_runs_exactly_n_steps_even_when_paused() {

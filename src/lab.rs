@@ -1105,6 +1105,7 @@ mod tests {
         lab.apply_settings(s);
         let evaluations = |lab: &Lab| {
             crate::automation::StateReport::new(lab, "test", 60.0)
+                .scene_report
                 .learning
                 .expect("the learning lab reports")
                 .evaluations

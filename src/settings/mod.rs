@@ -107,8 +107,10 @@ pub use crate::settings::tank::FISH_COUNT_MAX;
 pub const SEED_MAX: u64 = u32::MAX as u64;
 
 /// Which of the two tanks.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Side {
+    /// The only tank when not comparing.
+    #[default]
     Left,
     Right,
 }
@@ -197,6 +199,16 @@ impl Settings {
     /// The top-level names `apply_patch` accepts, in UI order.
     pub fn keys() -> Vec<String> {
         keys_of(&Self::default())
+    }
+
+    /// The animal selected in the scene on show (by index), if the scene
+    /// lets one pick an animal.
+    pub fn selected(&self) -> Option<u32> {
+        match self.scene {
+            Scene::Physics => self.physics.selected,
+            Scene::Reef => self.reef.selected,
+            Scene::Aquarium | Scene::Boids | Scene::Learning => None,
+        }
     }
 
     /// The tank settings of `side`.

@@ -26,4 +26,4 @@ pub use common::spatial_grid::SpatialGrid;
 pub use common::steering::SteeringParams;
 pub use common::tank::Tank;
 pub use physics::world::{HandCommand, PhysicsBehaviour, PhysicsConfig, PhysicsWorld};
-pub use scene::SceneWorld;
+pub use scene::{SceneReport, SceneWorld};

@@ -15,6 +15,7 @@
 //! - learning: the demo fish, then the race's sharks.
 
 use glam::Vec3;
+use serde::Serialize;
 
 use crate::sim::body::NODE_COUNT;
 use crate::sim::learning::learning_lab::LearningLab;
@@ -52,6 +53,21 @@ pub struct BodyToDraw {
     pub hue: f32,
 }
 
+/// A scene's own part of `shoal.state()`: at most one of these is present,
+/// under its scene's key. The boid scenes report through the metrics.
+#[derive(Clone, Debug, Default, Serialize, PartialEq)]
+pub struct SceneReport {
+    /// The physics scene: the selected fish, in detail.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub physics: Option<crate::sim::physics::report::PhysicsReport>,
+    /// The reef scene: counts, the selected fish's mind, the latest events.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reef: Option<crate::sim::reef::report::ReefReport>,
+    /// The learning lab: training progress, the controllers in use, race, buoys.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub learning: Option<crate::sim::learning::report::LearningReport>,
+}
+
 /// The simulated world of one tank.
 pub enum SceneWorld {
     /// Point-mass fish, sharks and stingrays: the aquarium (wandering) and the
@@ -74,6 +90,26 @@ impl SceneWorld {
             Self::Physics(w) => w.step(),
             Self::Reef(w) => w.step(),
             Self::Learning(w) => w.step(),
+        }
+    }
+
+    /// The scene's part of `shoal.state()`, with the animal `selected` (by
+    /// index) in detail.
+    pub fn report(&self, selected: Option<u32>) -> SceneReport {
+        match self {
+            Self::Boids(_) => SceneReport::default(),
+            Self::Physics(w) => SceneReport {
+                physics: Some(w.report(selected)),
+                ..SceneReport::default()
+            },
+            Self::Reef(w) => SceneReport {
+                reef: Some(w.report(selected)),
+                ..SceneReport::default()
+            },
+            Self::Learning(w) => SceneReport {
+                learning: Some(w.report()),
+                ..SceneReport::default()
+            },
         }
     }
 

@@ -43,6 +43,7 @@ pub mod learning_lab;
 pub mod muscle_spline;
 pub mod objective;
 pub mod race;
+pub mod report;
 pub mod target_tracking;
 
 pub use abstraction::{

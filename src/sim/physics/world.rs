@@ -249,6 +249,11 @@ impl PhysicsWorld {
         self.constraint_moves
     }
 
+    /// The animal under a hand command, if any.
+    pub fn hand_controlled(&self) -> Option<usize> {
+        self.hand.map(|(i, _)| i)
+    }
+
     /// Puts animal `index` under a hand command (`None`: all steer themselves).
     pub fn set_hand_command(&mut self, command: Option<(usize, HandCommand)>) {
         self.hand = command.filter(|(i, _)| *i < self.animals.len());

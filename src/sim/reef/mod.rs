@@ -15,6 +15,7 @@ pub mod feeding;
 pub mod mind;
 pub mod motor_choice;
 pub mod perception;
+pub mod report;
 pub mod world;
 
 #[cfg(test)]
