@@ -6,6 +6,8 @@
 use eframe::egui;
 use glam::Vec3;
 
+use super::WidgetRects;
+use super::scene_panel::{ViewContext, ViewInput};
 use crate::lab::Run;
 use crate::render::OrbitCamera;
 use crate::sim::body::NODE_COUNT;
@@ -271,4 +273,42 @@ pub fn pick_animal(
         })
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .map(|(i, _)| i)
+}
+
+/// Physical animals whose screen rectangles `shoal.widgets()` reports (`animal_0`,
+/// …), for tests that click a fish. 20: the default tank's ten fish and shark.
+const ANIMAL_RECTS_MAX: usize = 20;
+
+/// Records where the first pickable animals are on screen (`animal_0`, …), so
+/// browser tests can click one.
+pub fn record_animal_rects(view: &ViewContext, rects: &mut WidgetRects) {
+    let on_screen = animal_screen_rects(
+        view.rect,
+        view.camera,
+        view.run,
+        view.alpha,
+        ANIMAL_RECTS_MAX,
+    );
+    for (i, r) in on_screen.into_iter().enumerate() {
+        if let Some(r) = r {
+            rects.insert(&format!("animal_{i}"), r);
+        }
+    }
+}
+
+/// A click on a view: `Some(Some(i))` picked animal `i`, `Some(None)` a click on
+/// open water, `None` no click.
+pub fn clicked_animal(input: &ViewInput) -> Option<Option<u32>> {
+    if !input.response.clicked() {
+        return None;
+    }
+    let pointer = input.response.interact_pointer_pos()?;
+    let run = input.lab.run(input.side)?;
+    Some(pick_animal(
+        pointer,
+        input.rect,
+        input.camera,
+        run,
+        input.lab.draw_alpha(),
+    ))
 }

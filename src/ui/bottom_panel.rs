@@ -63,7 +63,7 @@ mod tests {
     use crate::lab::Lab;
     use crate::settings::{Scene, Settings};
     use crate::ui::learning_panel::{LEARNING_PANEL_HEIGHT, learning_plots_ui};
-    use crate::ui::reef_panel::{reef_inspector_height, reef_inspector_ui};
+    use crate::ui::reef_inspector::{reef_inspector_height, reef_inspector_ui};
     use crate::ui::{
         BODY_PLOTS_PANEL_HEIGHT, METRICS_PANEL_HEIGHT, WidgetRects, body_plots_ui, metrics_panel_ui,
     };

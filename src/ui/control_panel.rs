@@ -1,118 +1,21 @@
-//! The side panel: scene, play/pause, single step, reset, speed, seed, the boid
-//! tanks' controls, obstacle tools, share and export, and the view. Every control has
-//! hover help a 12-year-old understands.
+//! The side panel: scene, play/pause, single step, reset, speed, seed, the
+//! scene's own controls (from its [`super::ScenePanel`]), share and export, and the
+//! view. Every control has hover help a 12-year-old understands.
 
 use eframe::egui;
 
 use super::WidgetRects;
-use super::tank_panel::tank_ui;
-use crate::settings::tank::TankSettings;
-use crate::settings::{SEED_MAX, Scene, Settings, Side};
-use crate::sim::reef::mind::{FishKind, Habits};
-
-/// What a click in the tank does.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum EditTool {
-    /// Clicks and drags turn the camera.
-    #[default]
-    Look,
-    /// A click on the sand puts a rock there.
-    AddRock,
-    /// Drag a rock to move it.
-    MoveRock,
-    /// A click on a rock removes it.
-    RemoveRock,
-}
-
-impl EditTool {
-    pub const ALL: [Self; 4] = [Self::Look, Self::AddRock, Self::MoveRock, Self::RemoveRock];
-
-    fn label(self) -> &'static str {
-        match self {
-            Self::Look => "Look",
-            Self::AddRock => "Add rock",
-            Self::MoveRock => "Move rock",
-            Self::RemoveRock => "Remove",
-        }
-    }
-
-    fn name(self) -> &'static str {
-        match self {
-            Self::Look => "tool_look",
-            Self::AddRock => "tool_add_rock",
-            Self::MoveRock => "tool_move_rock",
-            Self::RemoveRock => "tool_remove_rock",
-        }
-    }
-
-    fn help(self) -> &'static str {
-        match self {
-            Self::Look => "Drag to turn the tank, scroll to zoom.",
-            Self::AddRock => "Click on the sand to put a rock there.",
-            Self::MoveRock => "Drag a rock or pillar to a new place.",
-            Self::RemoveRock => "Click a rock, pillar or ledge to take it out.",
-        }
-    }
-}
-
-/// Panel state that is not a setting: which tank the controls edit, and the tool.
-#[derive(Clone, Debug, PartialEq)]
-pub struct PanelState {
-    pub edit_side: Side,
-    pub tool: EditTool,
-    /// Reef scene: whose mind the *Minds* section edits.
-    pub minds_kind: FishKind,
-    /// Reef scene: the habits the demo gives each kind of fish present (the
-    /// first of each kind), filled in by the app every frame.
-    pub reef_demo_habits: Vec<Habits>,
-}
-
-impl Default for PanelState {
-    fn default() -> Self {
-        Self {
-            edit_side: Side::Left,
-            tool: EditTool::Look,
-            minds_kind: FishKind::Predator,
-            reef_demo_habits: Vec::new(),
-        }
-    }
-}
-
-/// One-off things the teacher asked for this frame.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum PanelAction {
-    /// Advance the simulation by one step.
-    Step,
-    /// Start the run again from the same seed.
-    Reset,
-    /// Put the camera back where it started.
-    ResetView,
-    /// Collapse the panel so the aquarium fills the screen.
-    HidePanel,
-    /// Put the link to this exact setting on the clipboard.
-    CopyLink,
-    /// Download the metrics of the last minutes as a CSV file.
-    ExportCsv,
-    /// Bring back the rocks the seed placed in the tank being edited.
-    RestoreObstacles,
-    /// Physics scene: the selected fish starts a turn of this many degrees (+ left).
-    Turn(f32),
-    /// Learning lab: forget the training.
-    ResetTraining,
-    /// Learning lab: start the race.
-    StartRace,
-    /// Learning lab: download the learned controllers.
-    SaveControllers,
-    /// Learning lab: open a controllers file.
-    LoadControllers,
-}
+use super::scene_panel::{CurrentPanel, PanelAction};
+use crate::settings::{SEED_MAX, Scene, Settings};
 
 /// Draws the control panel, editing `settings` in place, and records where the
 /// main widgets are (for the browser tests' real clicks, see `shoal.widgets()`).
+/// `step_secs` is one simulation step of the scene on show.
 pub fn control_panel_ui(
     ui: &mut egui::Ui,
     settings: &mut Settings,
-    state: &mut PanelState,
+    panel: &mut CurrentPanel,
+    step_secs: f64,
     rects: &mut WidgetRects,
 ) -> Vec<PanelAction> {
     let mut actions = Vec::new();
@@ -154,13 +57,7 @@ pub fn control_panel_ui(
         if play_pause.clicked() {
             settings.paused = !settings.paused;
         }
-        let step = ui
-            .button("Step")
-            .on_hover_text(if settings.scene == Scene::Physics {
-                "Move time forward by one step of the muscle physics, 0.055 seconds (S)"
-            } else {
-                "Move time forward by one tiny step, 1/60 of a second (S)"
-            });
+        let step = ui.button("Step").on_hover_text(step_help(step_secs));
         rects.insert("step", step.rect);
         if step.clicked() {
             actions.push(PanelAction::Step);
@@ -192,23 +89,6 @@ pub fn control_panel_ui(
             rects.insert("speed", speed.rect);
             ui.end_row();
 
-            if settings.scene == Scene::Aquarium {
-                ui.label("Fish")
-                    .on_hover_text("How many fish are in the tank");
-                let fish = ui
-                    .add(
-                        egui::Slider::new(
-                            &mut settings.left.fish_count,
-                            TankSettings::FISH_COUNT.bounds(),
-                        )
-                        .logarithmic(true)
-                        .smallest_positive(1.0),
-                    )
-                    .on_hover_text("How many fish are in the tank");
-                rects.insert("fish_count", fish.rect);
-                ui.end_row();
-            }
-
             ui.label("Seed").on_hover_text(
                 "The number that decides where everything starts. \
                  The same seed always gives the same run, so a class can share it",
@@ -229,37 +109,11 @@ pub fn control_panel_ui(
             ui.end_row();
         });
 
-    if settings.scene == Scene::Boids {
-        boids_ui(ui, settings, state, rects, &mut actions);
-    }
-    if settings.scene == Scene::Physics {
-        actions.extend(super::physics_panel::physics_controls_ui(
-            ui,
-            &mut settings.physics,
-            rects,
-        ));
-    }
-    if settings.scene == Scene::Reef {
-        actions.extend(super::reef_panel::reef_controls_ui(
-            ui,
-            &mut settings.reef,
-            rects,
-        ));
-        super::reef_panel::minds_ui(
-            ui,
-            &mut settings.reef.traits,
-            &mut state.minds_kind,
-            &state.reef_demo_habits,
-            rects,
-        );
-    }
-    if settings.scene == Scene::Learning {
-        actions.extend(super::learning_panel::learning_controls_ui(
-            ui,
-            &mut settings.learning,
-            rects,
-        ));
-    }
+    // The scene's own controls: those of the scene just chosen, if a tab was
+    // clicked above.
+    panel
+        .for_scene(settings.scene)
+        .controls_ui(ui, settings, rects);
 
     ui.separator();
     ui.label(egui::RichText::new("Share").strong());
@@ -300,72 +154,16 @@ pub fn control_panel_ui(
     actions
 }
 
-/// The boid scene's controls: compare, vision, which tank, its sliders and tools.
-fn boids_ui(
-    ui: &mut egui::Ui,
-    settings: &mut Settings,
-    state: &mut PanelState,
-    rects: &mut WidgetRects,
-    actions: &mut Vec<PanelAction>,
-) {
-    ui.separator();
-    ui.horizontal_wrapped(|ui| {
-        let compare = ui
-            .checkbox(&mut settings.compare, "Compare two tanks")
-            .on_hover_text(
-                "Show two tanks side by side with the same fish at the same start. \
-             Give them different urges and see how differently they behave.",
-            );
-        rects.insert("compare", compare.rect);
-        let vision = ui
-            .checkbox(&mut settings.show_vision, "Show vision")
-            .on_hover_text(
-                "Draw what each fish can see: its field of view and lines to the \
-                 neighbours it notices",
-            );
-        rects.insert("show_vision", vision.rect);
-    });
-    if !settings.compare {
-        state.edit_side = Side::Left;
-    } else {
-        ui.horizontal(|ui| {
-            ui.label("Edit:");
-            for side in Side::BOTH {
-                let label = match side {
-                    Side::Left => "Left tank",
-                    Side::Right => "Right tank",
-                };
-                let response = ui
-                    .selectable_value(&mut state.edit_side, side, label)
-                    .on_hover_text("Choose which tank the controls below change");
-                rects.insert(&format!("edit_{}", side.name()), response.rect);
-            }
-        });
-    }
-    ui.add_space(4.0);
-    tank_ui(ui, settings.tank_mut(state.edit_side), rects);
-
-    ui.add_space(4.0);
-    ui.label(egui::RichText::new("Rocks").strong())
-        .on_hover_text("Change the rocks in the tank with the mouse");
-    ui.horizontal_wrapped(|ui| {
-        for tool in EditTool::ALL {
-            let response = ui
-                .selectable_value(&mut state.tool, tool, tool.label())
-                .on_hover_text(tool.help());
-            rects.insert(tool.name(), response.rect);
-        }
-    });
-    ui.label(egui::RichText::new(state.tool.help()).small().weak());
-    let restore = ui
-        .add_enabled(
-            settings.tank(state.edit_side).obstacles.is_some(),
-            egui::Button::new("Restore the seed's rocks"),
+/// The Step button's help: one step of the scene on show, in words.
+fn step_help(step_secs: f64) -> String {
+    let per_second = 1.0 / step_secs.max(1e-9);
+    if (per_second - per_second.round()).abs() < 0.01 {
+        format!(
+            "Move time forward by one tiny step, 1/{} of a second (S)",
+            per_second.round()
         )
-        .on_hover_text("Undo all rock changes in this tank");
-    rects.insert("restore_rocks", restore.rect);
-    if restore.clicked() {
-        actions.push(PanelAction::RestoreObstacles);
+    } else {
+        format!("Move time forward by one step, {step_secs:.3} seconds (S)")
     }
 }
 
@@ -380,6 +178,12 @@ fn next_seed(seed: u64) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_step_help_says_how_long_a_step_is() {
+        assert!(step_help(1.0 / 60.0).contains("1/60 of a second"));
+        assert!(step_help(0.055).contains("0.055 seconds"));
+    }
 
     #[test]
     fn new_seeds_differ_and_stay_in_range() {

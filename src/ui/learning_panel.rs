@@ -8,13 +8,16 @@ use egui_plot::{Legend, Line, Plot, PlotPoints};
 
 use super::WidgetRects;
 use super::body_overlay::muscle_color;
-use super::bottom_panel::plot_height_under_caption;
-use super::control_panel::PanelAction;
-use crate::lab::Run;
+use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
+use super::files::{FileError, PendingFile, open_text_file, save_text_file};
+use super::scene_panel::{Notice, ScenePanel};
+use crate::lab::{Lab, LabError, Run};
+use crate::settings::Settings;
 use crate::settings::learning::LearningSettings;
 use crate::sim::BodySpecies;
 use crate::sim::body::body_layout::muscle_index;
 use crate::sim::body::{MuscleSegment, Side};
+use crate::sim::learning::learned_set::LearnedSetError;
 use crate::sim::learning::learning_lab::{ControllerChoice, LearningLab, SetSource};
 use crate::sim::learning::{Abstraction, Task};
 
@@ -40,12 +43,25 @@ pub fn drill_label(task: &Task) -> String {
     }
 }
 
+/// The learning lab's one-off actions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum LearningAction {
+    /// Forget the training.
+    ResetTraining,
+    /// Start the race.
+    StartRace,
+    /// Download the learned controllers.
+    SaveControllers,
+    /// Open a controllers file.
+    LoadControllers,
+}
+
 /// The learning lab's section of the control panel.
-pub fn learning_controls_ui(
+fn learning_controls_ui(
     ui: &mut egui::Ui,
     learning: &mut LearningSettings,
     rects: &mut WidgetRects,
-) -> Vec<PanelAction> {
+) -> Vec<LearningAction> {
     let mut actions = Vec::new();
     ui.separator();
     ui.label(egui::RichText::new("Learning to swim").strong());
@@ -101,7 +117,7 @@ pub fn learning_controls_ui(
             .on_hover_text("Forget everything: the fish is brain-dead again");
         rects.insert("learning_reset", r.rect);
         if r.clicked() {
-            actions.push(PanelAction::ResetTraining);
+            actions.push(LearningAction::ResetTraining);
             learning.training = false;
         }
     });
@@ -132,7 +148,7 @@ pub fn learning_controls_ui(
         );
         rects.insert("learning_race", r.rect);
         if r.clicked() {
-            actions.push(PanelAction::StartRace);
+            actions.push(LearningAction::StartRace);
         }
     });
     ui.horizontal(|ui| {
@@ -141,14 +157,14 @@ pub fn learning_controls_ui(
             .on_hover_text("Download what the fish learned as a file");
         rects.insert("learning_save", r.rect);
         if r.clicked() {
-            actions.push(PanelAction::SaveControllers);
+            actions.push(LearningAction::SaveControllers);
         }
         let r = ui
             .button("Load controllers")
             .on_hover_text("Open a file saved before; the swimmer then uses it");
         rects.insert("learning_load", r.rect);
         if r.clicked() {
-            actions.push(PanelAction::LoadControllers);
+            actions.push(LearningAction::LoadControllers);
         }
     });
     actions
@@ -380,4 +396,149 @@ fn fig8_ui(ui: &mut egui::Ui, a: &Abstraction, width: f32, height: f32, rects: &
             rects.insert(name, r.response.rect);
         });
     }
+}
+
+/// Seconds between two refreshes of the current drill's abstraction (Fig. 8):
+/// 0.5, chosen (it changes slowly, and abstracting costs a few milliseconds).
+const ABSTRACTION_EVERY_SECS: f64 = 0.5;
+
+/// The learning lab's panel: its controls, the progress and plots under the
+/// tank, saving and loading controllers, and the default view on the buoys.
+#[derive(Default)]
+pub struct LearningPanel {
+    /// The current drill abstracted (for Fig. 8), and when (app time, seconds).
+    abstraction: Option<(f64, Abstraction)>,
+    /// A controllers file the user picked, read asynchronously in the browser.
+    pending_load: PendingFile,
+    asked: Vec<LearningAction>,
+}
+
+/// How far the default camera stands from the learning lab's buoys, metres (7.5:
+/// the buoys, the swimmer and the race lanes fill the view).
+const LEARNING_VIEW_DISTANCE_M: f32 = 7.5;
+
+impl ScenePanel for LearningPanel {
+    fn before_frame(
+        &mut self,
+        lab: &mut Lab,
+        now_secs: f64,
+        _ctx: &egui::Context,
+    ) -> Option<Notice> {
+        let stale = self
+            .abstraction
+            .as_ref()
+            .is_none_or(|(at, _)| now_secs - at > ABSTRACTION_EVERY_SECS);
+        if stale && let Some(l) = lab.runs()[0].learning() {
+            self.abstraction = Some((now_secs, l.current_abstraction()));
+        }
+        self.apply_loaded_controllers(lab)
+    }
+
+    fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
+        self.asked = learning_controls_ui(ui, &mut settings.learning, rects);
+    }
+
+    fn bottom_ui(&mut self, ui: &mut egui::Ui, lab: &Lab, rects: &mut WidgetRects) {
+        let run = &lab.runs()[0];
+        let abstraction = self.abstraction.as_ref().map(|(_, a)| a);
+        show_bottom_panel(
+            ui,
+            "learning_plots",
+            LEARNING_PANEL_HEIGHT,
+            rects,
+            |ui, height, rects| learning_plots_ui(ui, run, abstraction, height, rects),
+        );
+    }
+
+    fn apply(&mut self, lab: &mut Lab, ctx: &egui::Context) -> Option<Notice> {
+        let mut notice = None;
+        for action in std::mem::take(&mut self.asked) {
+            let outcome = match action {
+                LearningAction::ResetTraining => {
+                    lab.reset_training();
+                    self.abstraction = None;
+                    None
+                }
+                LearningAction::StartRace => lab
+                    .learning_mut()
+                    .ok_or_else(|| "Open the learning lab first.".to_owned())
+                    .and_then(|l| l.start_race().map_err(|e| e.to_string()))
+                    .err()
+                    .map(|reason| Notice::info(format!("No race yet: {reason}."))),
+                LearningAction::SaveControllers => Some(
+                    match controllers_json(lab).and_then(|json| {
+                        Ok(save_text_file(
+                            "shoal-controllers.json",
+                            "application/json",
+                            &json,
+                            None,
+                        )?)
+                    }) {
+                        Ok(message) => Notice::info(message),
+                        Err(err) => Notice::error(err.to_string()),
+                    },
+                ),
+                LearningAction::LoadControllers => open_text_file(
+                    ".json,application/json",
+                    "shoal-controllers.json",
+                    &self.pending_load,
+                    ctx,
+                )
+                .err()
+                .map(|err| Notice::error(err.to_string())),
+            };
+            notice = outcome.or(notice);
+        }
+        notice
+    }
+
+    fn view_focus(&self, run: &Run) -> Option<(glam::Vec3, f32)> {
+        // The swimmers are small in a big tank: look between the buoys and the
+        // race's start line behind the swimmer.
+        let buoys = run.learning()?.buoys_m();
+        Some((
+            (buoys[0] + buoys[1]) * 0.5 - glam::Vec3::new(1.0, 0.0, 0.0),
+            LEARNING_VIEW_DISTANCE_M,
+        ))
+    }
+}
+
+impl LearningPanel {
+    /// Uses a controllers file the user picked, or says why it cannot be used.
+    fn apply_loaded_controllers(&mut self, lab: &mut Lab) -> Option<Notice> {
+        let text = self.pending_load.borrow_mut().take()?;
+        let result = text.and_then(|text| {
+            lab.learning_mut()
+                .ok_or_else(|| "open the learning lab first".to_owned())
+                .and_then(|l| l.load_json(&text).map_err(|e| e.to_string()))
+        });
+        Some(match result {
+            Ok(()) => Notice::info("Controllers loaded: the swimmer now uses them."),
+            Err(reason) => Notice::error(format!(
+                "That file cannot be used, nothing was changed: {reason}"
+            )),
+        })
+    }
+}
+
+/// Why the learned controllers could not be saved.
+#[derive(Debug, thiserror::Error)]
+pub enum SaveControllersError {
+    /// Not in the learning lab.
+    #[error(transparent)]
+    NotHere(#[from] LabError),
+    /// The controllers could not be written as JSON.
+    #[error("the controllers could not be written: {0}")]
+    Set(#[from] LearnedSetError),
+    /// The file could not be saved.
+    #[error(transparent)]
+    File(#[from] FileError),
+}
+
+/// The learned controllers in use, as JSON (`shoal.save_controllers()`).
+pub fn controllers_json(lab: &Lab) -> Result<String, SaveControllersError> {
+    Ok(lab.runs()[0]
+        .learning()
+        .ok_or(LabError::LearningLabOnly("save_controllers"))?
+        .save_json()?)
 }

@@ -1,21 +1,34 @@
-//! The egui panels around the aquarium. They edit `Settings` and report one-off
-//! actions; they never touch the simulation directly.
+//! The egui panels around the aquarium. The controls every scene has are in
+//! `control_panel.rs`; each scene's own controls, panel under the tank, overlays
+//! and picking are its [`ScenePanel`] (`scene_panel.rs` registers them). Panels
+//! edit `Settings` and report one-off actions; the only simulation calls they
+//! make are a scene's own actions, in [`ScenePanel::apply`].
 
 pub mod body_overlay;
+mod boids_panel;
 pub mod bottom_panel;
 mod control_panel;
+mod files;
 pub mod learning_panel;
 mod metrics_panel;
 mod physics_panel;
+pub mod reef_inspector;
+mod reef_minds;
 pub mod reef_overlay;
 pub mod reef_panel;
+mod scene_panel;
 mod status_line;
 mod tank_panel;
 
 pub use bottom_panel::show_bottom_panel;
-pub use control_panel::{EditTool, PanelAction, PanelState, control_panel_ui};
+pub use control_panel::control_panel_ui;
+pub use files::{FileError, save_text_file};
+pub use learning_panel::{SaveControllersError, controllers_json};
 pub use metrics_panel::{METRICS_PANEL_HEIGHT, metrics_panel_ui, side_color};
 pub use physics_panel::{BODY_PLOTS_PANEL_HEIGHT, body_plots_ui};
+pub use scene_panel::{
+    CurrentPanel, Notice, PanelAction, ScenePanel, ViewContext, ViewInput, scene_panel,
+};
 pub use status_line::status_line_ui;
 pub use tank_panel::mode_label;
 

@@ -6,22 +6,24 @@ use eframe::egui;
 use egui_plot::{Line, Plot, PlotPoints};
 
 use super::WidgetRects;
-use super::body_overlay::muscle_color;
-use super::bottom_panel::plot_height_under_caption;
-use super::control_panel::PanelAction;
-use crate::lab::{BODY_TRACE_SECS, Run};
+use super::body_overlay::{self, muscle_color};
+use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
+use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
+use crate::lab::{BODY_TRACE_SECS, Lab, Run};
+use crate::settings::Settings;
 use crate::settings::physics::PhysicsSettings;
 use crate::sim::PhysicsBehaviour;
 use crate::sim::body::body_layout::muscle_index;
 use crate::sim::body::{MuscleSegment, Side};
 
-/// The physics scene's section of the control panel.
-pub fn physics_controls_ui(
+/// The physics scene's section of the control panel. Returns the turn, degrees,
+/// the teacher asked the selected fish to make.
+fn physics_controls_ui(
     ui: &mut egui::Ui,
     physics: &mut PhysicsSettings,
     rects: &mut WidgetRects,
-) -> Vec<PanelAction> {
-    let mut actions = Vec::new();
+) -> Option<f32> {
+    let mut turn = None;
     ui.separator();
     ui.label(egui::RichText::new("Physical fish").strong());
     egui::Grid::new("physics_grid")
@@ -152,18 +154,18 @@ pub fn physics_controls_ui(
                 }
             });
             if physics.selected.is_some() {
-                selected_fish_ui(ui, physics, rects, &mut actions);
+                selected_fish_ui(ui, physics, rects, &mut turn);
             }
         }
     }
-    actions
+    turn
 }
 
 fn selected_fish_ui(
     ui: &mut egui::Ui,
     physics: &mut PhysicsSettings,
     rects: &mut WidgetRects,
-    actions: &mut Vec<PanelAction>,
+    turn_asked: &mut Option<f32>,
 ) {
     let follow = ui
         .checkbox(&mut physics.follow, "Camera follows it")
@@ -233,7 +235,7 @@ fn selected_fish_ui(
                         );
                     rects.insert("turn", turn.rect);
                     if turn.clicked() {
-                        actions.push(PanelAction::Turn(physics.turn_angle_deg));
+                        *turn_asked = Some(physics.turn_angle_deg);
                     }
                 });
                 ui.end_row();
@@ -362,4 +364,87 @@ pub fn body_plots_ui(
             rects.insert("speed_plot", plot.response.rect);
         });
     });
+}
+
+/// The physics scene's panel: its controls, the selected fish's plots under the
+/// tank, the skeletons and forces over it, and picking a fish with a click.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PhysicsPanel {
+    /// The turn the teacher asked the selected fish to make this frame, degrees.
+    turn_asked: Option<f32>,
+}
+
+impl ScenePanel for PhysicsPanel {
+    fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
+        self.turn_asked = physics_controls_ui(ui, &mut settings.physics, rects);
+    }
+
+    fn bottom_ui(&mut self, ui: &mut egui::Ui, lab: &Lab, rects: &mut WidgetRects) {
+        let run = &lab.runs()[0];
+        // The plots need a selected fish; until then one line says how to get them.
+        match lab.settings().physics.selected {
+            Some(selected) => {
+                show_bottom_panel(
+                    ui,
+                    "body_plots",
+                    BODY_PLOTS_PANEL_HEIGHT,
+                    rects,
+                    |ui, height, rects| body_plots_ui(ui, run, Some(selected), height, rects),
+                );
+            }
+            None => {
+                // One line of text: the panel takes the line's height, which does not
+                // depend on the panel's.
+                let hint = egui::Panel::bottom("body_plots_hint")
+                    .resizable(false)
+                    .show(ui, |ui| {
+                        let height = ui.available_height();
+                        body_plots_ui(ui, run, None, height, rects);
+                    });
+                rects.insert("panel_body_plots_hint", hint.response.rect);
+            }
+        }
+    }
+
+    fn draw_overlays(&self, view: &ViewContext, settings: &Settings, rects: &mut WidgetRects) {
+        let physics = &settings.physics;
+        let (painter, rect, camera, run, alpha) =
+            (view.painter, view.rect, view.camera, view.run, view.alpha);
+        if physics.show_body {
+            body_overlay::draw_skeletons(painter, rect, camera, run, alpha, physics.selected);
+        }
+        if physics.show_forces {
+            body_overlay::draw_forces(painter, rect, camera, run, alpha, physics.selected);
+        }
+        if let Some(selected) = physics.selected {
+            body_overlay::draw_selection(painter, rect, camera, run, alpha, selected);
+        }
+        body_overlay::record_animal_rects(view, rects);
+    }
+
+    /// A click on a fish selects it; a click on open water lets go.
+    fn view_input(&mut self, input: &ViewInput, settings: &mut Settings) -> Option<Notice> {
+        let picked = body_overlay::clicked_animal(input)?;
+        let physics = &mut settings.physics;
+        physics.selected = picked;
+        if picked.is_none() {
+            physics.hand_control = false;
+            physics.follow = false;
+        }
+        None
+    }
+
+    fn apply(&mut self, lab: &mut Lab, _ctx: &egui::Context) -> Option<Notice> {
+        let angle_deg = self.turn_asked.take()?;
+        lab.turn_selected(angle_deg)
+            .err()
+            .map(|err| Notice::error(err.to_string()))
+    }
+
+    fn followed(&self, settings: &Settings) -> Option<u32> {
+        settings
+            .physics
+            .selected
+            .filter(|_| settings.physics.follow)
+    }
 }

@@ -1,27 +1,22 @@
-//! The "Reef" scene's controls (which demo, which body, the water, overlays) and
-//! its inspector: the selected fish's habits, its hunger, libido and fear (bars
-//! and their history), its intention, memory and focus, its motor command, its
-//! fish-eye view; and the reef's event log.
+//! The "Reef" scene's panel: its controls (which demo, which body, the water,
+//! overlays; the *Minds* section is in `reef_minds.rs`), the inspector under the
+//! tank (`reef_inspector.rs`), what the selected fish sees drawn over the tank,
+//! and picking and following a fish.
 
 use eframe::egui;
-use egui_plot::{Legend, Line, Plot, PlotPoints};
 
 use super::WidgetRects;
-use super::bottom_panel::plot_height_under_caption;
-use super::control_panel::PanelAction;
-use crate::lab::Run;
+use super::bottom_panel::show_bottom_panel;
+use super::reef_inspector::{FishEyeView, reef_inspector_height, reef_inspector_ui};
+use super::reef_minds::minds_ui;
+use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
+use super::{body_overlay, reef_overlay};
+use crate::lab::Lab;
+use crate::settings::Settings;
 use crate::settings::reef::{ReefOverlay, ReefSettings};
 use crate::sim::reef::demos::ReefScene;
-use crate::sim::reef::mind::habits::{
-    COURAGEOUS_BOX_BODY_LENGTHS, DEFAULT_BOX_BODY_LENGTHS, DEFAULT_PERSISTENCE_BODY_LENGTHS,
-    DEVOTED_BODY_LENGTHS, FICKLE_BODY_LENGTHS, KindTraits, MindTraits, TIMID_BOX_BODY_LENGTHS,
-};
-use crate::sim::reef::mind::mental_state::{
-    CALM_DIGESTION_RATE, CALM_LIBIDO_RATE, MANIC_LIBIDO_RATE, NOMINAL_DIGESTION_RATE,
-    NOMINAL_LIBIDO_RATE, RAVENOUS_DIGESTION_RATE,
-};
-use crate::sim::reef::mind::{FishKind, Habits, Intention, Liking, Sex, Target};
-use crate::sim::reef::world::{ReefAnimal, ReefBody, ReefBodyKind, ReefWorld};
+use crate::sim::reef::mind::{FishKind, Habits, Intention};
+use crate::sim::reef::world::ReefBodyKind;
 
 /// Colours of the three urges, used by the bars, the plot and the focus line.
 pub const HUNGER_COLOR: egui::Color32 = egui::Color32::from_rgb(255, 170, 60);
@@ -53,12 +48,7 @@ pub fn intention_color(intention: Intention) -> egui::Color32 {
 }
 
 /// The reef scene's section of the control panel.
-pub fn reef_controls_ui(
-    ui: &mut egui::Ui,
-    reef: &mut ReefSettings,
-    rects: &mut WidgetRects,
-) -> Vec<PanelAction> {
-    let mut actions = Vec::new();
+fn reef_controls_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut WidgetRects) {
     ui.separator();
     ui.label(egui::RichText::new("Reef").strong());
     ui.horizontal_wrapped(|ui| {
@@ -201,8 +191,6 @@ pub fn reef_controls_ui(
             ui.label("Click a fish in the tank to look inside its head.");
         }
     }
-    actions.shrink_to_fit();
-    actions
 }
 
 /// The settings name of a demo (`reef.demo`).
@@ -216,569 +204,160 @@ pub fn demo_name(demo: ReefScene) -> &'static str {
     }
 }
 
-/// What the fish-eye panel shows (made by the app from `ReefWorld::retina`).
-pub struct FishEyeView<'a> {
-    pub texture: &'a egui::TextureHandle,
-    pub mean_brightness: f32,
+/// Seconds between two renders of the fish-eye view (0.2, chosen: smooth enough
+/// to follow, cheap: one 96 × 96 ray cast).
+const FISH_EYE_EVERY_SECS: f64 = 0.2;
+/// Pixels across the fish-eye view.
+const FISH_EYE_SIZE_PX: usize = 96;
+
+/// The selected fish's retinal image: which fish, the texture, its mean
+/// brightness and when (app time, seconds) it was rendered.
+struct FishEye {
+    fish: u32,
+    texture: egui::TextureHandle,
+    mean_brightness: f32,
+    at_secs: f64,
 }
 
-/// The height the reef inspector under the tank would like, points, with a fish
-/// selected and without (see [`super::bottom_panel::bottom_panel_height`] for what it gets).
-pub fn reef_inspector_height(selected: bool) -> f32 {
-    if selected { 230.0 } else { 120.0 }
+/// The reef scene's panel.
+pub struct ReefPanel {
+    /// Whose mind the *Minds* section edits.
+    minds_kind: FishKind,
+    /// The habits the demo gives each kind of fish present (the first of each
+    /// kind), refreshed every frame.
+    demo_habits: Vec<Habits>,
+    fish_eye: Option<FishEye>,
 }
 
-/// The bottom panel of the reef scene: the inspector of the selected fish, or a
-/// hint; and the event log; in `content_height` points (a column that needs more
-/// scrolls).
-pub fn reef_inspector_ui(
-    ui: &mut egui::Ui,
-    run: &Run,
-    selected: Option<u32>,
-    fish_eye: Option<FishEyeView>,
-    content_height: f32,
-    rects: &mut WidgetRects,
-) {
-    let Some(reef) = run.reef() else {
-        return;
-    };
-    let animal = selected.and_then(|i| reef.animals().get(i as usize).map(|a| (i as usize, a)));
-    // Every column fits `content_height`: the text columns scroll, the plot and the
-    // event log take what their caption (one line) leaves.
-    let line = ui.text_style_height(&egui::TextStyle::Body);
-    let spacing = ui.spacing().item_spacing.y;
-    let under_caption = plot_height_under_caption(content_height, line, spacing);
-    ui.horizontal_top(|ui| {
-        match animal {
-            Some((i, a)) => {
-                ui.vertical(|ui| {
-                    ui.set_width(300.0);
-                    egui::ScrollArea::vertical()
-                        .id_salt("reef_mind_summary")
-                        .max_height(content_height)
-                        .show(ui, |ui| mind_summary_ui(ui, reef, i, a, rects));
-                });
-                ui.separator();
-                ui.vertical(|ui| {
-                    ui.set_width((ui.available_width() - 560.0).max(220.0));
-                    history_plot_ui(ui, a, under_caption, rects);
-                });
-                ui.separator();
-                ui.vertical(|ui| {
-                    ui.set_width(180.0);
-                    ui.label(egui::RichText::new("What it sees").strong())
-                        .on_hover_text(
-                            "The world through this fish's eye: it sees almost all around, \
-                             squeezed into a circle. Its brain only uses how bright it is",
-                        );
-                    if let Some(view) = fish_eye {
-                        // The eye and the two lines under it fit under the caption.
-                        let side = (under_caption - 2.0 * (line + spacing)).clamp(0.0, 150.0);
-                        let r = ui.add(
-                            egui::Image::new(view.texture)
-                                .fit_to_exact_size(egui::vec2(side, side)),
-                        );
-                        rects.insert("fish_eye", r.rect);
-                        ui.label(format!("Brightness {:.2}", view.mean_brightness));
-                    }
-                    ui.label(format!("Water {:.1} °C", a.temperature_c));
-                });
+impl Default for ReefPanel {
+    fn default() -> Self {
+        Self {
+            minds_kind: FishKind::Predator,
+            demo_habits: Vec::new(),
+            fish_eye: None,
+        }
+    }
+}
+
+impl ScenePanel for ReefPanel {
+    fn before_frame(
+        &mut self,
+        lab: &mut Lab,
+        now_secs: f64,
+        ctx: &egui::Context,
+    ) -> Option<Notice> {
+        // The Minds section shows the demo's own values under the teacher's.
+        self.demo_habits.clear();
+        if let Some(reef) = lab.runs()[0].reef() {
+            for kind in FishKind::ALL {
+                if let Some(a) = reef.animals().iter().find(|a| a.demo_habits.kind == kind) {
+                    self.demo_habits.push(a.demo_habits);
+                }
+            }
+        }
+        self.refresh_fish_eye(lab, now_secs, ctx);
+        None
+    }
+
+    fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
+        reef_controls_ui(ui, &mut settings.reef, rects);
+        minds_ui(
+            ui,
+            &mut settings.reef.traits,
+            &mut self.minds_kind,
+            &self.demo_habits,
+            rects,
+        );
+    }
+
+    fn bottom_ui(&mut self, ui: &mut egui::Ui, lab: &Lab, rects: &mut WidgetRects) {
+        let selected = lab.settings().reef.selected;
+        let fish_eye = self
+            .fish_eye
+            .as_ref()
+            .filter(|f| Some(f.fish) == selected)
+            .map(|f| FishEyeView {
+                texture: &f.texture,
+                mean_brightness: f.mean_brightness,
+            });
+        let run = &lab.runs()[0];
+        show_bottom_panel(
+            ui,
+            "reef_inspector",
+            reef_inspector_height(selected.is_some()),
+            rects,
+            |ui, height, rects| reef_inspector_ui(ui, run, selected, fish_eye, height, rects),
+        );
+    }
+
+    fn draw_overlays(&self, view: &ViewContext, settings: &Settings, rects: &mut WidgetRects) {
+        let (painter, rect, camera, run, alpha) =
+            (view.painter, view.rect, view.camera, view.run, view.alpha);
+        reef_overlay::draw_water(painter, rect, camera, run, settings.reef.overlay);
+        if let Some(selected) = settings.reef.selected {
+            if settings.reef.show_vision {
+                reef_overlay::draw_vision(painter, rect, camera, run, alpha, selected);
+            }
+            body_overlay::draw_selection(painter, rect, camera, run, alpha, selected);
+        }
+        body_overlay::record_animal_rects(view, rects);
+    }
+
+    /// A click on a fish selects it; a click on open water lets go.
+    fn view_input(&mut self, input: &ViewInput, settings: &mut Settings) -> Option<Notice> {
+        let picked = body_overlay::clicked_animal(input)?;
+        settings.reef.selected = picked;
+        if picked.is_none() {
+            settings.reef.follow = false;
+        }
+        None
+    }
+
+    fn followed(&self, settings: &Settings) -> Option<u32> {
+        settings.reef.selected.filter(|_| settings.reef.follow)
+    }
+}
+
+impl ReefPanel {
+    /// Renders the selected fish's retinal image every [`FISH_EYE_EVERY_SECS`].
+    fn refresh_fish_eye(&mut self, lab: &Lab, now_secs: f64, ctx: &egui::Context) {
+        let Some(selected) = lab.settings().reef.selected else {
+            self.fish_eye = None;
+            return;
+        };
+        let fresh = self
+            .fish_eye
+            .as_ref()
+            .is_some_and(|f| f.fish == selected && now_secs - f.at_secs < FISH_EYE_EVERY_SECS);
+        if fresh {
+            return;
+        }
+        let Some(retina) = lab.runs()[0]
+            .reef()
+            .and_then(|r| r.retina(selected as usize, FISH_EYE_SIZE_PX))
+        else {
+            self.fish_eye = None;
+            return;
+        };
+        let image = egui::ColorImage::from_rgba_unmultiplied(
+            [retina.size, retina.size],
+            &retina.to_rgba8(),
+        );
+        match &mut self.fish_eye {
+            Some(eye) => {
+                eye.texture.set(image, egui::TextureOptions::LINEAR);
+                (eye.fish, eye.mean_brightness, eye.at_secs) =
+                    (selected, retina.mean_brightness, now_secs);
             }
             None => {
-                ui.vertical(|ui| {
-                    ui.set_width(300.0);
-                    egui::ScrollArea::vertical()
-                        .id_salt("reef_summary")
-                        .max_height(content_height)
-                        .show(ui, |ui| {
-                            let counts = reef.counts();
-                            ui.label(egui::RichText::new("Reef").strong());
-                            ui.label(format!(
-                                "{} animals alive · {} plankton · {} prey eaten · {} spawnings",
-                                reef.alive_count(),
-                                reef.food().len(),
-                                counts.prey_eaten,
-                                counts.spawnings
-                            ));
-                            ui.label(
-                                "Click a fish to see its hunger, fear and plans, and what it sees.",
-                            );
-                        });
+                let texture = ctx.load_texture("fish_eye", image, egui::TextureOptions::LINEAR);
+                self.fish_eye = Some(FishEye {
+                    fish: selected,
+                    texture,
+                    mean_brightness: retina.mean_brightness,
+                    at_secs: now_secs,
                 });
             }
         }
-        ui.separator();
-        ui.vertical(|ui| {
-            event_log_ui(ui, reef, under_caption, rects);
-        });
-    });
-}
-
-fn mind_summary_ui(
-    ui: &mut egui::Ui,
-    reef: &ReefWorld,
-    i: usize,
-    a: &ReefAnimal,
-    rects: &mut WidgetRects,
-) {
-    let h = &a.habits;
-    let sex = match h.sex {
-        Sex::Male => "male",
-        Sex::Female => "female",
-    };
-    let title = if a.alive {
-        format!("{} · {} {}", a.name(i), sex, h.kind.label())
-    } else {
-        format!("{} · eaten", a.name(i))
-    };
-    let r = ui.label(egui::RichText::new(title).strong());
-    rects.insert("reef_inspector", r.rect);
-    let liking = |l: Liking, high: &str, low: &str| match l {
-        Liking::Indifferent => "any".to_owned(),
-        Liking::High => high.to_owned(),
-        Liking::Low => low.to_owned(),
-    };
-    ui.label(format!(
-        "Species {} · {:.2} m · likes {} light, {} water{}",
-        h.species,
-        a.body.body_length_m(),
-        liking(h.light, "bright", "dim"),
-        liking(h.temperature, "warm", "cool"),
-        if h.schools { " · schools" } else { "" }
-    ))
-    .on_hover_text("Habits: what this fish was born liking. They never change.");
-    for (name, value, color, help) in [
-        (
-            "Hunger",
-            a.mental.hunger,
-            HUNGER_COLOR,
-            "Grows as food digests; drops when it eats",
-        ),
-        (
-            "Libido",
-            a.mental.libido,
-            LIBIDO_COLOR,
-            "Grows with time since mating, unless it is hungry",
-        ),
-        (
-            "Fear",
-            a.mental.fear,
-            FEAR_COLOR,
-            "High when it sees a predator close by",
-        ),
-    ] {
-        ui.horizontal(|ui| {
-            ui.label(format!("{name:<7}")).on_hover_text(help);
-            let bar = egui::ProgressBar::new(value.clamp(0.0, 1.0))
-                .fill(color)
-                .text(format!("{value:.2}"))
-                .desired_width(180.0);
-            let r = ui.add(bar).on_hover_text(help);
-            rects.insert(&format!("reef_bar_{}", name.to_lowercase()), r.rect);
-        });
     }
-    let focus = a.focus;
-    let sentence = match (focus.intention, h.kind) {
-        (Intention::Eat, FishKind::Predator) => "it is hungry: it hunts",
-        (intention, _) => intention_sentence(intention),
-    };
-    let r = ui.label(
-        egui::RichText::new(format!(
-            "Intends to {}: {}",
-            focus.intention.label(),
-            sentence
-        ))
-        .color(intention_color(focus.intention)),
-    );
-    rects.insert("reef_intention", r.rect);
-    ui.label(format!("Focus: {}", target_text(reef, focus.target)));
-    match a.generator.memory {
-        Some(m) => ui.label(format!(
-            "Remembers: {} {} (resumes it after swerving)",
-            m.intention.label(),
-            target_text(reef, m.target)
-        )),
-        None => ui.label("Remembers: nothing"),
-    };
-    if let Some(pair) = reef.pair_of(i) {
-        ui.label(format!(
-            "Courting: {} with animal {} ({})",
-            pair.phase.label(),
-            if pair.male as usize == i {
-                pair.female
-            } else {
-                pair.male
-            },
-            pair.count
-        ));
-    }
-    if let ReefBody::Physical(p) = &a.body {
-        let m = p.motor();
-        ui.label(format!(
-            "Muscles: swim {:.0} %{}, fins {:+.0}°",
-            100.0 * m.speed_fraction,
-            if m.turning { ", turning" } else { "" },
-            (m.fins.left_angle_rad - std::f32::consts::FRAC_PI_2).to_degrees()
-        ))
-        .on_hover_text("What the brain tells the muscles this moment");
-    } else {
-        ui.label(format!(
-            "Speed {:.2} m/s (point body)",
-            a.body.velocity_m_per_s().length()
-        ));
-    }
-}
-
-/// "plankton 12", "animal 3 (shark 3)", "the glass", "rock 1", "nothing".
-pub fn target_text(reef: &ReefWorld, target: Option<Target>) -> String {
-    match target {
-        None => "nothing in particular".to_owned(),
-        Some(Target::Food(id)) => format!("plankton {id}"),
-        Some(Target::Animal(j)) => reef
-            .animals()
-            .get(j as usize)
-            .map_or_else(|| format!("animal {j}"), |o| o.name(j as usize)),
-        Some(Target::Obstacle(k)) => format!("rock {k}"),
-        Some(Target::Glass) => "the glass".to_owned(),
-    }
-}
-
-fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, height: f32, rects: &mut WidgetRects) {
-    ui.add(
-        egui::Label::new(egui::RichText::new("Its mind over the last two minutes").strong())
-            .truncate(),
-    );
-    let series = |f: fn(&crate::sim::reef::world::MindSample) -> f32| -> PlotPoints {
-        a.history
-            .iter()
-            .map(|s| [f64::from(s.time_secs), f64::from(f(s))])
-            .collect()
-    };
-    let r = Plot::new("reef_mind_history")
-        .height(height)
-        .include_y(0.0)
-        .include_y(1.0)
-        .allow_scroll(false)
-        .allow_drag(false)
-        .legend(Legend::default())
-        .x_axis_label("time (s)")
-        .show(ui, |plot| {
-            plot.line(Line::new("hunger", series(|s| s.hunger)).color(HUNGER_COLOR));
-            plot.line(Line::new("libido", series(|s| s.libido)).color(LIBIDO_COLOR));
-            plot.line(Line::new("fear", series(|s| s.fear)).color(FEAR_COLOR));
-        });
-    rects.insert("reef_mind_plot", r.response.rect);
-}
-
-fn event_log_ui(ui: &mut egui::Ui, reef: &ReefWorld, height: f32, rects: &mut WidgetRects) {
-    ui.label(egui::RichText::new("What happened").strong())
-        .on_hover_text("Newest first: meals, chases, courtship");
-    let r = egui::ScrollArea::vertical()
-        .id_salt("reef_events")
-        .max_height(height)
-        .show(ui, |ui| {
-            if reef.events().is_empty() {
-                ui.label("Nothing yet.");
-            }
-            for e in reef.events().iter().rev().take(60) {
-                let minutes = (e.time_secs / 60.0).floor();
-                let secs = e.time_secs - 60.0 * minutes;
-                ui.label(format!("{minutes:.0}:{secs:04.1}  {}", e.text));
-            }
-        });
-    rects.insert("reef_events", r.inner_rect);
-}
-
-/// A row of the *Minds* section: one of [`MindTraits::ALL`] (by name), how it
-/// reads to a student, and its named values.
-struct MindRow {
-    /// The trait's settings name, in [`MindTraits::ALL`].
-    name: &'static str,
-    /// Short name for the widget rectangles (`reef_minds_<key>`).
-    key: &'static str,
-    label: &'static str,
-    help: &'static str,
-    suffix: &'static str,
-    /// A slider (logarithmic or not), or only the named values.
-    slider: Option<bool>,
-    /// Named values: (label, value, what it means).
-    presets: &'static [(&'static str, f32, &'static str)],
-    /// The kinds the row matters for.
-    kinds: &'static [FishKind],
-}
-
-const ALL_KINDS: &[FishKind] = &FishKind::ALL;
-const NOT_PREDATORS: &[FishKind] = &[FishKind::Prey, FishKind::Pacifist];
-
-const MIND_ROWS: [MindRow; 9] = [
-    MindRow {
-        name: "digestion_rate_per_unit",
-        key: "hunger",
-        label: "Hunger grows (p0)",
-        help: "p0: how fast a meal is digested, so how soon the fish is hungry again, \
-               per time unit of 1/40 s. Calm (Shoal's default) 0.0003: hungry again \
-               21 s after a full meal. The paper's nominal 0.00067: after 9 s; \
-               ravenous 0.005: after 1 s",
-        suffix: "",
-        slider: Some(true),
-        presets: &[
-            ("Calm", CALM_DIGESTION_RATE, "p0 = 0.0003 (Shoal's default)"),
-            (
-                "Nominal",
-                NOMINAL_DIGESTION_RATE,
-                "p0 = 0.00067 (the paper's)",
-            ),
-            (
-                "Ravenous",
-                RAVENOUS_DIGESTION_RATE,
-                "p0 = 0.005 (the paper's)",
-            ),
-        ],
-        kinds: ALL_KINDS,
-    },
-    MindRow {
-        name: "libido_rate_per_unit",
-        key: "libido",
-        label: "Libido grows (p1)",
-        help: "p1: how fast the wish to mate grows after mating, per time unit of \
-               1/40 s. Calm (Shoal's default) 0.0011: a fed fish wants to mate again \
-               6 s after mating. The paper's nominal 0.0025: after 2.5 s; sexual \
-               mania 0.01: after 0.6 s",
-        suffix: "",
-        slider: Some(true),
-        presets: &[
-            ("Calm", CALM_LIBIDO_RATE, "p1 = 0.0011 (Shoal's default)"),
-            ("Nominal", NOMINAL_LIBIDO_RATE, "p1 = 0.0025 (the paper's)"),
-            ("Sexual mania", MANIC_LIBIDO_RATE, "p1 = 0.01 (the paper's)"),
-        ],
-        kinds: &[FishKind::Pacifist],
-    },
-    MindRow {
-        name: "appetite_food_units",
-        key: "appetite",
-        label: "Appetite (α)",
-        help: "α: how much food fills the fish (a plankton particle is 1, a prey fish 4)",
-        suffix: " food",
-        slider: Some(false),
-        presets: &[],
-        kinds: ALL_KINDS,
-    },
-    MindRow {
-        name: "fear_distance_body_lengths",
-        key: "fear_distance",
-        label: "Fear distance (D0)",
-        help: "D0: a shark nearer than this many body lengths frightens the fish as much \
-               as it can be (paper: 3.85)",
-        suffix: " BL",
-        slider: Some(false),
-        presets: &[],
-        kinds: NOT_PREDATORS,
-    },
-    MindRow {
-        name: "fear_threshold",
-        key: "alarm",
-        label: "Alarm at fear (f0)",
-        help: "f0: fear above this makes the fish take evasive action (paper: between 0.1 \
-               and 0.5)",
-        suffix: "",
-        slider: Some(false),
-        presets: &[],
-        kinds: NOT_PREDATORS,
-    },
-    MindRow {
-        name: "panic_threshold",
-        key: "panic",
-        label: "Panic at fear (f1)",
-        help: "f1: when the nearest shark frightens it more than this, a schooling fish \
-               stops schooling and flees alone",
-        suffix: "",
-        slider: Some(false),
-        presets: &[],
-        kinds: &[FishKind::Prey],
-    },
-    MindRow {
-        name: "urge_threshold",
-        key: "urge",
-        label: "Acts on urges at (r)",
-        help: "r: hunger (or the wish to mate) above this sends the fish looking for food \
-               (or a partner) (paper: below 0.5)",
-        suffix: "",
-        slider: Some(false),
-        presets: &[],
-        kinds: ALL_KINDS,
-    },
-    MindRow {
-        name: "collision_box_ahead_body_lengths",
-        key: "box",
-        label: "Collision box",
-        help: "How far ahead the fish watches for things in its way",
-        suffix: "",
-        slider: None,
-        presets: &[
-            (
-                "Timid",
-                TIMID_BOX_BODY_LENGTHS,
-                "swerves from anything far ahead (1.5 body lengths)",
-            ),
-            (
-                "Ordinary",
-                DEFAULT_BOX_BODY_LENGTHS,
-                "swerves from what is 0.8 body lengths ahead",
-            ),
-            (
-                "Courageous",
-                COURAGEOUS_BOX_BODY_LENGTHS,
-                "swerves only at the last moment (0.3 body lengths)",
-            ),
-        ],
-        kinds: ALL_KINDS,
-    },
-    MindRow {
-        name: "persistence_body_lengths",
-        key: "persistence",
-        label: "Persistence",
-        help: "Does the fish stick to the food, prey or partner it chose?",
-        suffix: "",
-        slider: None,
-        presets: &[
-            (
-                "Fickle",
-                FICKLE_BODY_LENGTHS,
-                "switches to any target that is a little nearer",
-            ),
-            (
-                "Ordinary",
-                DEFAULT_PERSISTENCE_BODY_LENGTHS,
-                "switches when another is 2 body lengths nearer",
-            ),
-            (
-                "Devoted",
-                DEVOTED_BODY_LENGTHS,
-                "sticks to its target unless another is 20 body lengths nearer",
-            ),
-        ],
-        kinds: ALL_KINDS,
-    },
-];
-
-/// One row of the *Minds* grid: the label, a slider over the trait's range
-/// and its named values as buttons; what the teacher picks goes into `traits`.
-fn mind_row_ui(
-    ui: &mut egui::Ui,
-    row: &MindRow,
-    traits: &mut MindTraits,
-    now: &Habits,
-    rects: &mut WidgetRects,
-) {
-    let Some(spec) = MindTraits::ALL.iter().find(|t| t.name == row.name) else {
-        return;
-    };
-    ui.label(row.label).on_hover_text(row.help);
-    ui.vertical(|ui| {
-        let value = (spec.current)(now);
-        if let Some(logarithmic) = row.slider {
-            let mut v = value;
-            let r = ui
-                .add(
-                    egui::Slider::new(&mut v, spec.min..=spec.max)
-                        .logarithmic(logarithmic)
-                        .suffix(row.suffix),
-                )
-                .on_hover_text(row.help);
-            rects.insert(&format!("reef_minds_{}", row.key), r.rect);
-            if r.changed() {
-                (spec.set)(traits, Some(v));
-            }
-        }
-        if !row.presets.is_empty() {
-            ui.horizontal_wrapped(|ui| {
-                for &(label, v, what) in row.presets {
-                    let r = ui
-                        .selectable_label(value == v, label)
-                        .on_hover_text(format!("{label}: {what}"));
-                    let name = label.to_lowercase().replace(' ', "_");
-                    rects.insert(&format!("reef_minds_{}_{name}", row.key), r.rect);
-                    if r.clicked() {
-                        (spec.set)(traits, Some(v));
-                    }
-                }
-            });
-        }
-    });
-    ui.end_row();
-}
-
-/// The reef's *Minds* section: the constants of hunger, libido and fear and
-/// the personality of one kind of fish at a time (Tu & Terzopoulos §6), over
-/// the values the demo chose (`demo_habits`: the first fish of each kind in
-/// the reef). Every change applies to every fish of the kind at once.
-pub fn minds_ui(
-    ui: &mut egui::Ui,
-    traits: &mut KindTraits,
-    kind: &mut FishKind,
-    demo_habits: &[Habits],
-    rects: &mut WidgetRects,
-) {
-    ui.separator();
-    let header = egui::CollapsingHeader::new(egui::RichText::new("Minds").strong())
-        .id_salt("reef_minds")
-        .default_open(false)
-        .show(ui, |ui| {
-            ui.label(
-                egui::RichText::new(
-                    "How fast each kind of fish gets hungry or wants to mate, how far away a \
-                     shark frightens it, and its character. Changes apply at once.",
-                )
-                .small(),
-            );
-            if !demo_habits.iter().any(|h| h.kind == *kind)
-                && let Some(first) = demo_habits.first()
-            {
-                *kind = first.kind;
-            }
-            ui.horizontal(|ui| {
-                for (k, label) in [
-                    (FishKind::Predator, "Sharks"),
-                    (FishKind::Prey, "Prey fish"),
-                    (FishKind::Pacifist, "Pacifists"),
-                ] {
-                    let present = demo_habits.iter().any(|h| h.kind == k);
-                    let r = ui
-                        .add_enabled(present, egui::Button::selectable(*kind == k, label))
-                        .on_hover_text(match k {
-                            FishKind::Predator => "The hunters: they eat prey fish",
-                            FishKind::Prey => "Small fish that school and flee the shark",
-                            FishKind::Pacifist => "Fish that graze on plankton and court",
-                        })
-                        .on_disabled_hover_text("None of these in this demo");
-                    rects.insert(&format!("reef_minds_{}", k.label()), r.rect);
-                    if r.clicked() {
-                        *kind = k;
-                    }
-                }
-            });
-            let Some(demo) = demo_habits.iter().find(|h| h.kind == *kind).copied() else {
-                ui.label("No fish in this reef.");
-                return;
-            };
-            let t = traits.of_mut(*kind);
-            let now = t.applied_to(demo);
-            egui::Grid::new("reef_minds_grid")
-                .num_columns(2)
-                .spacing([8.0, 6.0])
-                .show(ui, |ui| {
-                    for row in MIND_ROWS.iter().filter(|r| r.kinds.contains(kind)) {
-                        mind_row_ui(ui, row, t, &now, rects);
-                    }
-                });
-            let changed = *t != MindTraits::default();
-            let r = ui
-                .add_enabled(changed, egui::Button::new("The demo's own values"))
-                .on_hover_text("Undo every change to this kind of fish");
-            rects.insert("reef_minds_reset", r.rect);
-            if r.clicked() {
-                *t = MindTraits::default();
-            }
-        });
-    rects.insert("reef_minds", header.header_response.rect);
 }

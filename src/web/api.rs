@@ -103,7 +103,7 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
             Box::new(|app, _| {
                 let text = app
                     .controllers_json()
-                    .map_err(AutomationError::BadArgument)?;
+                    .map_err(|err| AutomationError::BadArgument(err.to_string()))?;
                 Ok(serde_json::Value::String(text))
             }),
         ),

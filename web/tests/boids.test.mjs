@@ -15,6 +15,7 @@ import {
   clickWidget,
   clickUntil,
   waitForWidget,
+  waitFrames,
 } from "./harness.mjs";
 
 const state = (page) => page.evaluate(() => window.shoal.state());
@@ -116,9 +117,13 @@ describe("schooling lab", () => {
     await page.waitForFunction(() => window.shoal.state().compare && window.shoal.widgets().edit_left, null, {
       timeout: 30_000,
     });
+    // A frame after choosing the tank, so a slow software GPU does not fold the
+    // two clicks into one frame (egui takes one click per widget per frame).
     await clickUntil(page, "edit_left", () => window.shoal.widgets().preset_individual);
+    await waitFrames(page, 2);
     await clickUntil(page, "preset_individual", () => window.shoal.settings().left.preset === "individual");
     await clickUntil(page, "edit_right", () => window.shoal.widgets().preset_group);
+    await waitFrames(page, 2);
     await clickUntil(page, "preset_group", () => window.shoal.settings().right.preset === "group");
     const chosen = await settings(page);
     const withoutWeights = (tank) => {

@@ -1,0 +1,445 @@
+//! The boid scenes' panels: the aquarium (fish and rocks, one slider) and the
+//! schooling lab (compare two tanks, each tank's urges, the rock tools, the
+//! metrics plots under the tank, and *Show vision* over it).
+
+use eframe::egui;
+use glam::{Vec2, Vec3};
+
+use super::WidgetRects;
+use super::metrics_panel::{METRICS_PANEL_HEIGHT, metrics_panel_ui, side_color};
+use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
+use super::show_bottom_panel;
+use super::tank_panel::{mode_label, tank_ui};
+use crate::lab::Lab;
+use crate::render::OrbitCamera;
+use crate::settings::tank::TankSettings;
+use crate::settings::{Settings, Side};
+use crate::sim::Obstacle;
+
+/// Radius of a rock a teacher adds by clicking, metres. Default 0.6 m: clearly
+/// visible, two fish lengths across, small enough to place between others.
+const NEW_ROCK_RADIUS_M: f32 = 0.6;
+
+/// Fish whose vision is drawn at most ("Show vision"). Default 300: every fish of a
+/// classroom-sized school; beyond that the lines would hide the fish.
+const VISION_OBSERVERS_MAX: usize = 300;
+
+/// Neighbour links drawn per fish at most. Default 7: the number of neighbours a
+/// schooling animal attends to (Ballerini et al. 2008), and a readable picture.
+const VISION_LINKS_PER_FISH: usize = 7;
+
+/// Fish whose field of view is drawn as a fan. Default 3: a few examples; fans for
+/// every fish would cover the tank.
+const VISION_FANS: usize = 3;
+
+/// The aquarium: fish wander among the rocks; one slider, how many.
+pub struct AquariumPanel;
+
+impl ScenePanel for AquariumPanel {
+    fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
+        egui::Grid::new("aquarium_grid")
+            .num_columns(2)
+            .spacing([8.0, 6.0])
+            .show(ui, |ui| {
+                ui.label("Fish")
+                    .on_hover_text("How many fish are in the tank");
+                let fish = ui
+                    .add(
+                        egui::Slider::new(
+                            &mut settings.left.fish_count,
+                            TankSettings::FISH_COUNT.bounds(),
+                        )
+                        .logarithmic(true)
+                        .smallest_positive(1.0),
+                    )
+                    .on_hover_text("How many fish are in the tank");
+                rects.insert("fish_count", fish.rect);
+                ui.end_row();
+            });
+    }
+}
+
+/// What a click in the schooling lab's tank does.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum EditTool {
+    /// Clicks and drags turn the camera.
+    #[default]
+    Look,
+    /// A click on the sand puts a rock there.
+    AddRock,
+    /// Drag a rock to move it.
+    MoveRock,
+    /// A click on a rock removes it.
+    RemoveRock,
+}
+
+impl EditTool {
+    pub const ALL: [Self; 4] = [Self::Look, Self::AddRock, Self::MoveRock, Self::RemoveRock];
+
+    fn label(self) -> &'static str {
+        match self {
+            Self::Look => "Look",
+            Self::AddRock => "Add rock",
+            Self::MoveRock => "Move rock",
+            Self::RemoveRock => "Remove",
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            Self::Look => "tool_look",
+            Self::AddRock => "tool_add_rock",
+            Self::MoveRock => "tool_move_rock",
+            Self::RemoveRock => "tool_remove_rock",
+        }
+    }
+
+    fn help(self) -> &'static str {
+        match self {
+            Self::Look => "Drag to turn the tank, scroll to zoom.",
+            Self::AddRock => "Click on the sand to put a rock there.",
+            Self::MoveRock => "Drag a rock or pillar to a new place.",
+            Self::RemoveRock => "Click a rock, pillar or ledge to take it out.",
+        }
+    }
+}
+
+/// The schooling lab: which tank the controls edit, the rock tool, and the rock
+/// being dragged.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct BoidsPanel {
+    edit_side: Side,
+    tool: EditTool,
+    /// The obstacle being dragged with the Move tool: tank and index.
+    dragging: Option<(Side, usize)>,
+}
+
+impl ScenePanel for BoidsPanel {
+    fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
+        ui.separator();
+        ui.horizontal_wrapped(|ui| {
+            let compare = ui
+                .checkbox(&mut settings.compare, "Compare two tanks")
+                .on_hover_text(
+                    "Show two tanks side by side with the same fish at the same start. \
+                     Give them different urges and see how differently they behave.",
+                );
+            rects.insert("compare", compare.rect);
+            let vision = ui
+                .checkbox(&mut settings.show_vision, "Show vision")
+                .on_hover_text(
+                    "Draw what each fish can see: its field of view and lines to the \
+                     neighbours it notices",
+                );
+            rects.insert("show_vision", vision.rect);
+        });
+        if !settings.compare {
+            self.edit_side = Side::Left;
+        } else {
+            ui.horizontal(|ui| {
+                ui.label("Edit:");
+                for side in Side::BOTH {
+                    let label = match side {
+                        Side::Left => "Left tank",
+                        Side::Right => "Right tank",
+                    };
+                    let response = ui
+                        .selectable_value(&mut self.edit_side, side, label)
+                        .on_hover_text("Choose which tank the controls below change");
+                    rects.insert(&format!("edit_{}", side.name()), response.rect);
+                }
+            });
+        }
+        ui.add_space(4.0);
+        tank_ui(ui, settings.tank_mut(self.edit_side), rects);
+
+        ui.add_space(4.0);
+        ui.label(egui::RichText::new("Rocks").strong())
+            .on_hover_text("Change the rocks in the tank with the mouse");
+        ui.horizontal_wrapped(|ui| {
+            for tool in EditTool::ALL {
+                let response = ui
+                    .selectable_value(&mut self.tool, tool, tool.label())
+                    .on_hover_text(tool.help());
+                rects.insert(tool.name(), response.rect);
+            }
+        });
+        ui.label(egui::RichText::new(self.tool.help()).small().weak());
+        let restore = ui
+            .add_enabled(
+                settings.tank(self.edit_side).obstacles.is_some(),
+                egui::Button::new("Restore the seed's rocks"),
+            )
+            .on_hover_text("Undo all rock changes in this tank");
+        rects.insert("restore_rocks", restore.rect);
+        if restore.clicked() {
+            settings.tank_mut(self.edit_side).obstacles = None;
+        }
+    }
+
+    fn bottom_ui(&mut self, ui: &mut egui::Ui, lab: &Lab, rects: &mut WidgetRects) {
+        let labels: Vec<String> = lab
+            .runs()
+            .iter()
+            .map(|run| {
+                let tank = lab.settings().tank(run.side());
+                if lab.comparing() {
+                    format!("{} ({})", run.side().name(), tank.preset.label())
+                } else {
+                    tank.preset.label().to_owned()
+                }
+            })
+            .collect();
+        show_bottom_panel(
+            ui,
+            "metrics",
+            METRICS_PANEL_HEIGHT,
+            rects,
+            |ui, height, rects| metrics_panel_ui(ui, lab.runs(), &labels, height, rects),
+        );
+    }
+
+    fn draw_overlays(&self, view: &ViewContext, settings: &Settings, _rects: &mut WidgetRects) {
+        if settings.show_vision {
+            draw_vision(view);
+        }
+        if view.comparing {
+            draw_tank_label(view, settings);
+        }
+    }
+
+    fn view_input(&mut self, input: &ViewInput, settings: &mut Settings) -> Option<Notice> {
+        self.rock_tool_input(input, settings)
+    }
+
+    fn holds_drag(&self) -> bool {
+        self.dragging.is_some()
+    }
+}
+
+impl BoidsPanel {
+    /// Adds, moves or removes obstacles with the mouse (the panel's rock tools).
+    fn rock_tool_input(&mut self, input: &ViewInput, settings: &mut Settings) -> Option<Notice> {
+        let (response, rect, side) = (input.response, input.rect, input.side);
+        if self.tool == EditTool::Look {
+            return None;
+        }
+        let pointer = response.interact_pointer_pos().or(response.hover_pos())?;
+        let uv = Vec2::new(
+            (pointer.x - rect.min.x) / rect.width().max(1.0),
+            (pointer.y - rect.min.y) / rect.height().max(1.0),
+        );
+        let (origin, direction) = input.camera.ray(uv, input.aspect());
+        let world = input.lab.run(side)?.scene();
+        let tank = *world.tank();
+        let current: Vec<Obstacle> = settings
+            .tank(side)
+            .obstacles
+            .clone()
+            .unwrap_or_else(|| world.obstacles().to_vec());
+        let floor_hit = floor_point(origin, direction, tank.min_m.y);
+        match self.tool {
+            EditTool::Look => None,
+            EditTool::AddRock => {
+                let p = floor_hit.filter(|_| response.clicked())?;
+                let rock = Obstacle::Rock {
+                    center_m: Vec3::new(p.x, tank.min_m.y - 0.2 * NEW_ROCK_RADIUS_M, p.z),
+                    radius_m: NEW_ROCK_RADIUS_M,
+                };
+                let mut next = current;
+                next.push(rock);
+                propose_obstacles(settings, side, next)
+            }
+            EditTool::RemoveRock => {
+                if !response.clicked() {
+                    return None;
+                }
+                let i = picked_obstacle(&current, origin, direction)?;
+                let mut next = current;
+                next.remove(i);
+                propose_obstacles(settings, side, next)
+            }
+            EditTool::MoveRock => {
+                if response.drag_started_by(egui::PointerButton::Primary) {
+                    self.dragging = picked_obstacle(&current, origin, direction).map(|i| (side, i));
+                }
+                let mut notice = None;
+                if let (Some((drag_side, i)), Some(p)) = (self.dragging, floor_hit)
+                    && drag_side == side
+                    && response.dragged_by(egui::PointerButton::Primary)
+                    && i < current.len()
+                {
+                    let mut next = current;
+                    next[i] = next[i].moved_to(Vec2::new(p.x, p.z));
+                    notice = propose_obstacles(settings, side, next);
+                }
+                if response.drag_stopped() {
+                    self.dragging = None;
+                }
+                notice
+            }
+        }
+    }
+}
+
+/// Uses `obstacles` for the tank of `side` if every one is valid; otherwise
+/// explains why not and changes nothing.
+fn propose_obstacles(
+    settings: &mut Settings,
+    side: Side,
+    obstacles: Vec<Obstacle>,
+) -> Option<Notice> {
+    let mut candidate = settings.clone();
+    candidate.tank_mut(side).obstacles = Some(obstacles);
+    match candidate.validate() {
+        Ok(()) => {
+            *settings = candidate;
+            None
+        }
+        Err(err) => Some(Notice::info(format!("That rock cannot go there: {err}"))),
+    }
+}
+
+/// Where the ray meets the floor plane, if it points down at it.
+fn floor_point(origin: Vec3, direction: Vec3, floor_y_m: f32) -> Option<Vec3> {
+    if direction.y >= -1e-4 {
+        return None;
+    }
+    let t = (floor_y_m - origin.y) / direction.y;
+    (t > 0.0).then(|| origin + direction * t)
+}
+
+/// The obstacle the ray passes closest to (within its radius plus a little slack).
+fn picked_obstacle(obstacles: &[Obstacle], origin: Vec3, direction: Vec3) -> Option<usize> {
+    /// Extra reach when picking, metres: thin pillars stay easy to click.
+    const SLACK_M: f32 = 0.3;
+    obstacles
+        .iter()
+        .enumerate()
+        .filter_map(|(i, obstacle)| {
+            // The closest point of the ray to the obstacle's core at the ray's height.
+            let mut best = f32::INFINITY;
+            let mut along = 0.0;
+            for _ in 0..48 {
+                let p = origin + direction * along;
+                let d = obstacle.signed_distance_m(p);
+                best = best.min(d);
+                along += d.max(0.05);
+                if d < 0.0 || along > 200.0 {
+                    break;
+                }
+            }
+            (best < SLACK_M).then_some((i, along))
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(i, _)| i)
+}
+
+/// In compare mode, each tank's name, preset and control mode at its top left.
+fn draw_tank_label(view: &ViewContext, settings: &Settings) {
+    let tank = settings.tank(view.side);
+    let label = format!(
+        "{} · {} · {}",
+        match (view.side, view.stacked) {
+            (Side::Left, false) => "Left tank",
+            (Side::Right, false) => "Right tank",
+            (Side::Left, true) => "Left tank (top)",
+            (Side::Right, true) => "Right tank (bottom)",
+        },
+        tank.preset.label(),
+        mode_label(tank.mode)
+    );
+    // Below the *Controls* button when the panel is hidden.
+    let top = if view.side == Side::Left && view.panel_hidden {
+        44.0
+    } else {
+        8.0
+    };
+    let at = view.rect.left_top() + egui::vec2(10.0, top);
+    let color = side_color(view.side);
+    let galley = view
+        .painter
+        .layout_no_wrap(label, egui::FontId::proportional(15.0), color);
+    view.painter.rect_filled(
+        egui::Rect::from_min_size(at, galley.size()).expand(4.0),
+        4.0,
+        egui::Color32::from_black_alpha(150),
+    );
+    view.painter.galley(at, galley, color);
+}
+
+/// "Show vision": each fish's links to the nearest neighbours it sees, and the field
+/// of view of a few fish as a fan in their swimming plane.
+fn draw_vision(view: &ViewContext) {
+    let (painter, rect, camera, run) = (view.painter, view.rect, view.camera, view.run);
+    let Some(world) = run.scene().boids() else {
+        return;
+    };
+    let Some(boids) = world.boids() else {
+        return;
+    };
+    let perception = boids.perception;
+    let fish = world.fish();
+    let drawn = run.drawn_positions_m(view.alpha);
+    let to_screen = |p: Vec3| screen_point(camera, rect, p);
+    let link_stroke = egui::Stroke::new(
+        1.0,
+        egui::Color32::from_rgba_unmultiplied(255, 255, 160, 90),
+    );
+    // The neighbours each fish actually heeds this step, as the simulation chose them.
+    let mut heeded: Vec<usize> = Vec::new();
+    for i in 0..fish.len().min(VISION_OBSERVERS_MAX) {
+        world.interaction_neighbours(i, &mut heeded);
+        let Some(a) = to_screen(drawn[i]) else {
+            continue;
+        };
+        for &j in heeded.iter().take(VISION_LINKS_PER_FISH) {
+            if j < fish.len()
+                && let Some(b) = to_screen(drawn[j])
+            {
+                painter.line_segment([a, b], link_stroke);
+            }
+        }
+    }
+    // Fans: the field of view in the plane of the heading and the horizontal side.
+    let half = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
+    for (i, me) in fish.iter().enumerate().take(VISION_FANS) {
+        let centre = drawn[i];
+        let forward = me.heading();
+        let side = forward.cross(Vec3::Y).normalize_or(Vec3::Z);
+        let mut points = Vec::new();
+        if let Some(c) = to_screen(centre) {
+            points.push(c);
+        }
+        let segments = 32;
+        for k in 0..=segments {
+            let angle = -half + 2.0 * half * k as f32 / segments as f32;
+            let dir = forward * angle.cos() + side * angle.sin();
+            if let Some(p) = to_screen(centre + dir * perception.vision_distance_m) {
+                points.push(p);
+            }
+        }
+        if points.len() > 3 {
+            painter.add(egui::Shape::line(
+                points.clone(),
+                egui::Stroke::new(
+                    1.5,
+                    egui::Color32::from_rgba_unmultiplied(120, 255, 200, 110),
+                ),
+            ));
+            painter.add(egui::Shape::convex_polygon(
+                points,
+                egui::Color32::from_rgba_unmultiplied(120, 255, 200, 18),
+                egui::Stroke::NONE,
+            ));
+        }
+    }
+}
+
+/// Where `p` is drawn in `rect`, if in front of the camera.
+fn screen_point(camera: &OrbitCamera, rect: egui::Rect, p: Vec3) -> Option<egui::Pos2> {
+    let aspect = rect.width() / rect.height().max(1.0);
+    camera
+        .project(p, aspect)
+        .map(|uv| rect.min + egui::vec2(uv.x * rect.width(), uv.y * rect.height()))
+}

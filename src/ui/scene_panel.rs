@@ -1,0 +1,301 @@
+//! The panel interface: what each scene shows around its tank.
+//!
+//! The app draws what every scene has (the scene tabs, play, pause, step, reset,
+//! speed, seed, share and view in the side panel; the status line; the 3D views
+//! and the camera) and asks the scene's [`ScenePanel`] for the rest: its own
+//! controls, the panel under the tank, the drawings over each view, what a click
+//! or drag on a view does, which animal is selected or followed, and where the
+//! default camera looks. [`scene_panel`] is the one place that knows which panel
+//! belongs to which scene; the app knows no scene by name.
+
+use eframe::egui;
+use glam::Vec3;
+
+use super::WidgetRects;
+use crate::lab::{Lab, Run};
+use crate::render::OrbitCamera;
+use crate::settings::{Scene, Settings, Side};
+
+/// One-off things the user asked for this frame that every scene has. A scene's
+/// own one-off actions (turn the selected fish, start a race…) stay inside its
+/// panel and run in [`ScenePanel::apply`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PanelAction {
+    /// Advance the simulation by one step.
+    Step,
+    /// Start the run again from the same seed.
+    Reset,
+    /// Put the camera back where it started.
+    ResetView,
+    /// Collapse the panel so the aquarium fills the screen.
+    HidePanel,
+    /// Put the link to this exact setting on the clipboard.
+    CopyLink,
+    /// Download the metrics of the last minutes as a CSV file.
+    ExportCsv,
+}
+
+/// A message shown at the top of the 3D view until dismissed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Notice {
+    pub text: String,
+    pub is_error: bool,
+}
+
+impl Notice {
+    /// News the user asked for (a download started, a link copied).
+    pub fn info(text: impl Into<String>) -> Self {
+        Self {
+            text: text.into(),
+            is_error: false,
+        }
+    }
+
+    /// Something went wrong; nothing was changed.
+    pub fn error(text: impl Into<String>) -> Self {
+        Self {
+            text: text.into(),
+            is_error: true,
+        }
+    }
+}
+
+/// One 3D view as a scene panel sees it, to draw over it.
+pub struct ViewContext<'a> {
+    pub painter: &'a egui::Painter,
+    pub rect: egui::Rect,
+    pub camera: &'a OrbitCamera,
+    pub run: &'a Run,
+    /// How far the drawing is between the last two simulation steps.
+    pub alpha: f32,
+    pub side: Side,
+    /// Two tanks are shown.
+    pub comparing: bool,
+    /// The two tanks are one above the other.
+    pub stacked: bool,
+    /// The side panel is hidden (its *Controls* button then sits at the top left).
+    pub panel_hidden: bool,
+}
+
+/// A click or drag on one 3D view.
+pub struct ViewInput<'a> {
+    pub response: &'a egui::Response,
+    pub rect: egui::Rect,
+    pub camera: &'a OrbitCamera,
+    pub lab: &'a Lab,
+    pub side: Side,
+}
+
+impl ViewInput<'_> {
+    /// The view's width over its height.
+    pub fn aspect(&self) -> f32 {
+        self.rect.width() / self.rect.height().max(1.0)
+    }
+}
+
+/// What one scene adds to the screen. Every method but [`Self::controls_ui`] has
+/// a default that adds nothing.
+pub trait ScenePanel {
+    /// Once a frame, before any panel is drawn: refresh what the panel shows
+    /// from the simulation (a fish's retinal image, the learner's current
+    /// drill), and use what arrived since the last frame (a file the user
+    /// picked). A notice, if something needs saying.
+    fn before_frame(
+        &mut self,
+        _lab: &mut Lab,
+        _now_secs: f64,
+        _ctx: &egui::Context,
+    ) -> Option<Notice> {
+        None
+    }
+
+    /// The scene's section of the side panel, under the controls every scene
+    /// has. It edits `settings`; one-off actions wait for [`Self::apply`].
+    fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects);
+
+    /// The panel under the tank, if the scene has one (see
+    /// [`super::show_bottom_panel`]: its height comes from the window only).
+    fn bottom_ui(&mut self, _ui: &mut egui::Ui, _lab: &Lab, _rects: &mut WidgetRects) {}
+
+    /// Drawings over a 3D view (skeletons, vision, selection rings…), and where
+    /// pickable animals are on screen for the browser tests (`animal_0`, …).
+    fn draw_overlays(&self, _view: &ViewContext, _settings: &Settings, _rects: &mut WidgetRects) {}
+
+    /// A click or drag on a view: select a fish, add or move a rock. It may
+    /// change `settings`, and say why it did not.
+    fn view_input(&mut self, _input: &ViewInput, _settings: &mut Settings) -> Option<Notice> {
+        None
+    }
+
+    /// True while a drag on the view belongs to the scene (a rock being moved),
+    /// not to the camera.
+    fn holds_drag(&self) -> bool {
+        false
+    }
+
+    /// The scene's one-off actions asked for this frame, once the new settings
+    /// are in use.
+    fn apply(&mut self, _lab: &mut Lab, _ctx: &egui::Context) -> Option<Notice> {
+        None
+    }
+
+    /// The animal drawn highlighted: the scene's selected one.
+    fn selected(&self, settings: &Settings) -> Option<u32> {
+        settings.selected()
+    }
+
+    /// The animal the camera follows.
+    fn followed(&self, _settings: &Settings) -> Option<u32> {
+        None
+    }
+
+    /// Where the default camera looks and from how far, metres, when not at the
+    /// whole tank.
+    fn view_focus(&self, _run: &Run) -> Option<(Vec3, f32)> {
+        None
+    }
+}
+
+/// The panel of `scene`: the registration of every scene's panel.
+pub fn scene_panel(scene: Scene) -> Box<dyn ScenePanel> {
+    match scene {
+        Scene::Aquarium => Box::new(super::boids_panel::AquariumPanel),
+        Scene::Boids => Box::new(super::boids_panel::BoidsPanel::default()),
+        Scene::Physics => Box::new(super::physics_panel::PhysicsPanel::default()),
+        Scene::Reef => Box::new(super::reef_panel::ReefPanel::default()),
+        Scene::Learning => Box::new(super::learning_panel::LearningPanel::default()),
+    }
+}
+
+/// The panel of the scene on show, swapped for a fresh one when the scene
+/// changes (so a scene's panel state, such as the rock tool, starts afresh).
+pub struct CurrentPanel {
+    scene: Scene,
+    panel: Box<dyn ScenePanel>,
+}
+
+impl CurrentPanel {
+    pub fn new(scene: Scene) -> Self {
+        Self {
+            scene,
+            panel: scene_panel(scene),
+        }
+    }
+
+    /// The panel for `scene`: the same one while the scene stays.
+    pub fn for_scene(&mut self, scene: Scene) -> &mut dyn ScenePanel {
+        if scene != self.scene {
+            *self = Self::new(scene);
+        }
+        self.panel.as_mut()
+    }
+
+    /// The panel as it is (the scene it was last asked for).
+    pub fn get(&self) -> &dyn ScenePanel {
+        self.panel.as_ref()
+    }
+
+    pub fn get_mut(&mut self) -> &mut dyn ScenePanel {
+        self.panel.as_mut()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Draws each scene's side-panel section and panel under the tank for a few
+    /// frames through [`scene_panel`], as the app does, and returns the widget
+    /// rectangles of the last frame.
+    fn draw_scene(scene: Scene) -> WidgetRects {
+        let mut settings = Settings {
+            scene,
+            ..Settings::default()
+        };
+        let mut lab = Lab::new(settings.clone());
+        let mut current = CurrentPanel::new(Scene::Aquarium);
+        let ctx = egui::Context::default();
+        let mut rects = WidgetRects::new();
+        for frame in 0..3 {
+            let input = egui::RawInput {
+                screen_rect: Some(egui::Rect::from_min_size(
+                    egui::Pos2::ZERO,
+                    egui::vec2(1280.0, 800.0),
+                )),
+                time: Some(f64::from(frame) / 60.0),
+                ..Default::default()
+            };
+            rects.clear();
+            let mut output = ctx.run_ui(input, |ui| {
+                let panel = current.for_scene(scene);
+                panel.before_frame(&mut lab, f64::from(frame) / 60.0, ui.ctx());
+                panel.bottom_ui(ui, &lab, &mut rects);
+                egui::Panel::left("controls").show(ui, |ui| {
+                    panel.controls_ui(ui, &mut settings, &mut rects);
+                });
+            });
+            output.textures_delta.clear();
+            lab.step(1);
+        }
+        rects
+    }
+
+    #[test]
+    fn every_scene_gets_its_own_controls_and_panel_under_the_tank() {
+        // (scene, a control of its own, its panel under the tank)
+        let expected = [
+            (Scene::Aquarium, "fish_count", None),
+            (Scene::Boids, "compare", Some("panel_metrics")),
+            (
+                Scene::Physics,
+                "physics_fish",
+                Some("panel_body_plots_hint"),
+            ),
+            (Scene::Reef, "reef_prey", Some("panel_reef_inspector")),
+            (
+                Scene::Learning,
+                "learning_train",
+                Some("panel_learning_plots"),
+            ),
+        ];
+        // (The schooling lab's tank controls have a fish count too.)
+        let own: Vec<&str> = expected.iter().skip(1).map(|e| e.1).collect();
+        for (scene, control, bottom) in expected {
+            let rects = draw_scene(scene);
+            assert!(rects.get(control).is_some(), "{scene:?} has no {control}");
+            // No other scene's controls.
+            for other in own.iter().filter(|o| **o != control) {
+                assert!(rects.get(other).is_none(), "{scene:?} shows {other}");
+            }
+            let panels: Vec<&String> = rects
+                .iter()
+                .map(|(name, _)| name)
+                .filter(|name| name.starts_with("panel_"))
+                .collect();
+            match bottom {
+                Some(name) => assert_eq!(panels, [name], "{scene:?}"),
+                None => assert!(panels.is_empty(), "{scene:?}: {panels:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn a_new_scene_gets_a_fresh_panel_and_the_same_scene_keeps_its_own() {
+        let mut current = CurrentPanel::new(Scene::Boids);
+        let address = |p: &mut dyn ScenePanel| (p as *mut dyn ScenePanel).cast::<()>() as usize;
+        let first = address(current.for_scene(Scene::Boids));
+        assert_eq!(address(current.for_scene(Scene::Boids)), first);
+        current.for_scene(Scene::Reef);
+        assert_eq!(current.scene, Scene::Reef);
+    }
+
+    #[test]
+    fn the_app_knows_no_scene_by_name() {
+        // The registration above is the one place that maps scenes to panels.
+        let app = include_str!("../app.rs");
+        for scene in Scene::ALL {
+            let name = format!("Scene::{scene:?}");
+            assert!(!app.contains(&name), "app.rs names {name}");
+        }
+    }
+}
