@@ -58,8 +58,9 @@ pub struct ShoalApp {
     page_url: Option<String>,
     /// Is the camera following the selected fish?
     following: bool,
-    /// The scene the camera was last framed for (none before the first frame).
-    viewed_scene: Option<Scene>,
+    /// The scene and subject (a demo) the camera was last framed for (none
+    /// before the first frame).
+    viewed: Option<(Scene, &'static str)>,
     /// The scene's own controls, panel under the tank, overlays and picking.
     scene_panel: CurrentPanel,
     ctx: egui::Context,
@@ -103,7 +104,7 @@ impl ShoalApp {
             notice: None,
             page_url: None,
             following: false,
-            viewed_scene: None,
+            viewed: None,
             scene_panel: CurrentPanel::new(lab_scene),
             ctx: cc.egui_ctx.clone(),
         })
@@ -222,19 +223,21 @@ impl ShoalApp {
         result
     }
 
+    /// Frames what the scene is about (the whole tank unless its panel says
+    /// otherwise), and stops following.
     fn reset_view(&mut self) {
         let tank = self.lab.scene().tank();
-        self.camera = OrbitCamera::framing(tank.min_m, tank.max_m, self.framed_aspect);
-        let scene = self.lab.settings().scene;
-        if let Some((target_m, distance_m)) = self
+        let settings = self.lab.settings();
+        self.camera = match self
             .scene_panel
-            .for_scene(scene)
-            .view_focus(&self.lab.runs()[0])
+            .for_scene(settings.scene)
+            .framing(&self.lab.runs()[0], settings)
         {
-            self.camera.target_m = target_m;
-            self.camera.distance_m = distance_m;
-        }
+            Some(framing) => OrbitCamera::framed(&framing, self.framed_aspect),
+            None => OrbitCamera::framing(tank.min_m, tank.max_m, self.framed_aspect),
+        };
         self.camera_is_default = true;
+        self.following = false;
     }
 
     /// Orbit, zoom and pan from mouse and touch input on a 3D view.
@@ -382,6 +385,22 @@ impl ShoalApp {
         self.scene_panel
             .get()
             .draw_overlays(&view, settings, &mut self.widget_rects);
+
+        // Reset view, always at hand: at the top right of the last view.
+        if index + 1 == self.lab.runs().len() {
+            let size = egui::vec2(112.0, 26.0);
+            let at = rect.right_top() + egui::vec2(-size.x - 8.0, 8.0);
+            let button = ui
+                .put(
+                    egui::Rect::from_min_size(at, size),
+                    egui::Button::new("Reset view (V)"),
+                )
+                .on_hover_text("Put the camera back on what this scene is about");
+            self.widget_rects.insert("reset_view", button.rect);
+            if button.clicked() {
+                self.reset_view();
+            }
+        }
     }
 
     fn apply(&mut self, actions: Vec<PanelAction>) {
@@ -461,7 +480,8 @@ impl ShoalApp {
     }
 }
 
-/// Space: play/pause; S: one step; R: reset. Ignored while typing in a text field.
+/// Space: play/pause; S: one step; R: reset; V: reset the view. Ignored while
+/// typing in a text field.
 fn keyboard_shortcuts(ui: &egui::Ui, settings: &mut Settings) -> Vec<PanelAction> {
     let mut actions = Vec::new();
     if ui.ctx().egui_wants_keyboard_input() {
@@ -476,6 +496,9 @@ fn keyboard_shortcuts(ui: &egui::Ui, settings: &mut Settings) -> Vec<PanelAction
         }
         if input.key_pressed(egui::Key::R) {
             actions.push(PanelAction::Reset);
+        }
+        if input.key_pressed(egui::Key::V) {
+            actions.push(PanelAction::ResetView);
         }
     });
     actions
@@ -556,12 +579,18 @@ impl eframe::App for ShoalApp {
             self.lab.apply_settings(settings);
         }
         self.apply(actions);
-        // A new scene: an untouched camera frames what it shows.
-        if Some(self.lab.settings().scene) != self.viewed_scene {
-            self.viewed_scene = Some(self.lab.settings().scene);
-            if self.camera_is_default {
-                self.reset_view();
-            }
+        // A new scene or demo opens framed on what it is about, wherever the
+        // camera was (a close-up of the last scene's fish would show a corner).
+        let scene = self.lab.settings().scene;
+        let viewing = (
+            scene,
+            self.scene_panel
+                .for_scene(scene)
+                .view_subject(self.lab.settings()),
+        );
+        if self.viewed != Some(viewing) {
+            self.viewed = Some(viewing);
+            self.reset_view();
         }
 
         self.benchmark_ui(ui);

@@ -12,6 +12,6 @@ pub mod scene_renderer;
 
 pub use body_skin::{BodyLook, BodyShape, BodySkin};
 pub use frame_builder::FrameBuilder;
-pub use orbit_camera::OrbitCamera;
+pub use orbit_camera::{Framing, OrbitCamera};
 pub use render_tier::{RenderCaps, RenderTier};
 pub use scene_renderer::{FishInstance, SceneCallback, SceneRenderer, SceneUniforms, StaticScene};

@@ -22,6 +22,25 @@ pub struct OrbitCamera {
 }
 
 const PITCH_LIMIT_RAD: f32 = 85.0 * std::f32::consts::PI / 180.0;
+/// The default view's direction: a little from the left (−0.18 rad) and a little
+/// from above (0.22 rad), so the front glass does not hide the sand.
+pub const DEFAULT_YAW_RAD: f32 = -0.18;
+pub const DEFAULT_PITCH_RAD: f32 = 0.22;
+
+/// What a scene wants the default camera to show.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Framing {
+    /// This box, whole and as large as it fits, seen from this direction
+    /// (radians; pitch up from level: a top view is about 1.2).
+    Box {
+        min_m: Vec3,
+        max_m: Vec3,
+        yaw_rad: f32,
+        pitch_rad: f32,
+    },
+    /// This point from this distance, from the default direction.
+    Target { target_m: Vec3, distance_m: f32 },
+}
 const MIN_DISTANCE_M: f32 = 1.0;
 const MAX_DISTANCE_M: f32 = 60.0;
 
@@ -29,34 +48,47 @@ impl OrbitCamera {
     /// A view of the whole tank from the front and a little above, like standing in
     /// front of an aquarium, for a viewport of the given aspect ratio (width / height).
     pub fn framing(tank_min_m: Vec3, tank_max_m: Vec3, aspect: f32) -> Self {
-        let center = (tank_min_m + tank_max_m) * 0.5;
         let size = tank_max_m - tank_min_m;
+        Self::fitting(
+            tank_min_m,
+            tank_max_m,
+            DEFAULT_YAW_RAD,
+            DEFAULT_PITCH_RAD,
+            // A little below the middle: the sand and the rocks matter more
+            // than the surface.
+            vec3(0.0, -size.y * 0.08, 0.0),
+            aspect,
+        )
+    }
+
+    /// A camera looking at the box `min_m`–`max_m` from `yaw_rad` and
+    /// `pitch_rad` (radians; pitch up from level), as close as it can be with
+    /// every corner in a view of `aspect` (a small margin kept), its target at
+    /// the box's centre plus `target_offset_m`.
+    pub fn fitting(
+        min_m: Vec3,
+        max_m: Vec3,
+        yaw_rad: f32,
+        pitch_rad: f32,
+        target_offset_m: Vec3,
+        aspect: f32,
+    ) -> Self {
+        let center = (min_m + max_m) * 0.5;
+        let size = max_m - min_m;
         let mut camera = Self {
-            target_m: center - vec3(0.0, size.y * 0.08, 0.0),
-            yaw_rad: -0.18,
-            pitch_rad: 0.22,
-            distance_m: size.length() * 0.5,
+            target_m: center + target_offset_m,
+            yaw_rad,
+            pitch_rad: pitch_rad.clamp(-PITCH_LIMIT_RAD, PITCH_LIMIT_RAD),
+            distance_m: (size.length() * 0.5).max(MIN_DISTANCE_M),
             fov_y_rad: 40f32.to_radians(),
         };
         // Back off until every corner fits the view with a small margin.
         let corners: Vec<Vec3> = (0..8)
             .map(|i| {
                 vec3(
-                    if i & 1 == 0 {
-                        tank_min_m.x
-                    } else {
-                        tank_max_m.x
-                    },
-                    if i & 2 == 0 {
-                        tank_min_m.y
-                    } else {
-                        tank_max_m.y
-                    },
-                    if i & 4 == 0 {
-                        tank_min_m.z
-                    } else {
-                        tank_max_m.z
-                    },
+                    if i & 1 == 0 { min_m.x } else { max_m.x },
+                    if i & 2 == 0 { min_m.y } else { max_m.y },
+                    if i & 4 == 0 { min_m.z } else { max_m.z },
                 )
             })
             .collect();
@@ -72,6 +104,28 @@ impl OrbitCamera {
             camera.distance_m *= 1.03;
         }
         camera
+    }
+
+    /// The camera a scene asks for with `framing`, in a view of `aspect`.
+    pub fn framed(framing: &Framing, aspect: f32) -> Self {
+        match *framing {
+            Framing::Box {
+                min_m,
+                max_m,
+                yaw_rad,
+                pitch_rad,
+            } => Self::fitting(min_m, max_m, yaw_rad, pitch_rad, Vec3::ZERO, aspect),
+            Framing::Target {
+                target_m,
+                distance_m,
+            } => Self {
+                target_m,
+                yaw_rad: DEFAULT_YAW_RAD,
+                pitch_rad: DEFAULT_PITCH_RAD,
+                distance_m: distance_m.clamp(MIN_DISTANCE_M, MAX_DISTANCE_M),
+                fov_y_rad: 40f32.to_radians(),
+            },
+        }
     }
 
     /// Camera position in world space, metres.

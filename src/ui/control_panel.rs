@@ -137,16 +137,10 @@ pub fn control_panel_ui(
 
     ui.separator();
     ui.label(egui::RichText::new("View").strong());
-    let reset_view = ui
-        .button("Reset view")
-        .on_hover_text("Put the camera back in front of the tank");
-    rects.insert("reset_view", reset_view.rect);
-    if reset_view.clicked() {
-        actions.push(PanelAction::ResetView);
-    }
     ui.label(
         egui::RichText::new(
-            "Drag to turn the tank · scroll or pinch to zoom · right-drag or two fingers to move",
+            "Drag to turn the tank · scroll or pinch to zoom · right-drag or two fingers to \
+             move · V or the button on the tank puts the camera back",
         )
         .small()
         .weak(),

@@ -12,6 +12,7 @@ use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
 use super::files::{FileError, PendingFile, open_text_file, save_text_file};
 use super::scene_panel::{Notice, ScenePanel};
 use crate::lab::{Lab, LabError, Run};
+use crate::render::Framing;
 use crate::settings::Settings;
 use crate::settings::learning::LearningSettings;
 use crate::sim::BodySpecies;
@@ -492,14 +493,14 @@ impl ScenePanel for LearningPanel {
         notice
     }
 
-    fn view_focus(&self, run: &Run) -> Option<(glam::Vec3, f32)> {
+    fn framing(&self, run: &Run, _settings: &Settings) -> Option<Framing> {
         // The swimmers are small in a big tank: look between the buoys and the
         // race's start line behind the swimmer.
         let buoys = run.learning()?.buoys_m();
-        Some((
-            (buoys[0] + buoys[1]) * 0.5 - glam::Vec3::new(1.0, 0.0, 0.0),
-            LEARNING_VIEW_DISTANCE_M,
-        ))
+        Some(Framing::Target {
+            target_m: (buoys[0] + buoys[1]) * 0.5 - glam::Vec3::new(1.0, 0.0, 0.0),
+            distance_m: LEARNING_VIEW_DISTANCE_M,
+        })
     }
 }
 

@@ -11,12 +11,14 @@ use super::reef_inspector::{FishEyeView, reef_inspector_height, reef_inspector_u
 use super::reef_minds::minds_ui;
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
 use super::{body_overlay, reef_overlay};
-use crate::lab::Lab;
+use crate::lab::{Lab, Run};
+use crate::render::Framing;
+use crate::render::orbit_camera::{DEFAULT_PITCH_RAD, DEFAULT_YAW_RAD};
 use crate::settings::Settings;
 use crate::settings::reef::{ReefOverlay, ReefSettings};
 use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::{FishKind, Habits, Intention};
-use crate::sim::reef::world::ReefBodyKind;
+use crate::sim::reef::world::{ReefBodyKind, ReefWorld};
 
 /// Colours of the three urges, used by the bars, the plot and the focus line.
 pub const HUNGER_COLOR: egui::Color32 = egui::Color32::from_rgb(255, 170, 60);
@@ -61,7 +63,11 @@ fn reef_controls_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut Widg
                 reef.demo = demo;
                 reef.prey_count = None;
                 reef.food_count = None;
-                reef.selected = None;
+                // The feeding demo is about bites, too small to see from across
+                // the tank: it opens following its first fish.
+                let feeding = demo == ReefScene::Feeding;
+                reef.selected = feeding.then_some(0);
+                reef.follow = feeding;
             }
         }
     });
@@ -316,6 +322,57 @@ impl ScenePanel for ReefPanel {
     fn followed(&self, settings: &Settings) -> Option<u32> {
         settings.reef.selected.filter(|_| settings.reef.follow)
     }
+
+    fn framing(&self, run: &Run, settings: &Settings) -> Option<Framing> {
+        demo_framing(run.reef()?, settings.reef.demo)
+    }
+
+    fn view_subject(&self, settings: &Settings) -> &'static str {
+        demo_name(settings.reef.demo)
+    }
+}
+
+/// Margin round the animals a demo frames, metres (1.2, chosen: a body length
+/// or two of water round them, so a turn stays in view).
+const FRAMING_MARGIN_M: f32 = 1.2;
+
+/// How steeply the *School meets obstacle* demo looks down, radians (1.2, about
+/// 70°: from the front the school splits behind the pillar, unseen).
+const TOP_VIEW_PITCH_RAD: f32 = 1.2;
+
+/// What each demo opens on: the whole reef; the shark and its prey; the
+/// courting trio; the fish the feeding demo follows; the pillar from above.
+pub fn demo_framing(reef: &ReefWorld, demo: ReefScene) -> Option<Framing> {
+    let around = |kinds: &[FishKind]| {
+        let points: Vec<glam::Vec3> = reef
+            .living()
+            .filter(|(_, a)| kinds.contains(&a.habits.kind))
+            .map(|(_, a)| a.body.position_m())
+            .collect();
+        let first = *points.first()?;
+        let (min, max) = points
+            .iter()
+            .fold((first, first), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+        let margin = glam::Vec3::splat(FRAMING_MARGIN_M);
+        let tank = reef.tank();
+        Some(Framing::Box {
+            min_m: (min - margin).max(tank.min_m),
+            max_m: (max + margin).min(tank.max_m),
+            yaw_rad: DEFAULT_YAW_RAD,
+            pitch_rad: DEFAULT_PITCH_RAD,
+        })
+    };
+    match demo {
+        ReefScene::Reef => None,
+        ReefScene::PredatorAndSchool => around(&[FishKind::Predator, FishKind::Prey]),
+        ReefScene::Courtship | ReefScene::Feeding => around(&[FishKind::Pacifist]),
+        ReefScene::SchoolMeetsObstacle => Some(Framing::Box {
+            min_m: reef.tank().min_m,
+            max_m: reef.tank().max_m,
+            yaw_rad: 0.0,
+            pitch_rad: TOP_VIEW_PITCH_RAD,
+        }),
+    }
 }
 
 impl ReefPanel {
@@ -357,6 +414,66 @@ impl ReefPanel {
                     mean_brightness: retina.mean_brightness,
                     at_secs: now_secs,
                 });
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::OrbitCamera;
+    use crate::sim::reef::world::ReefConfig;
+
+    fn on_screen(camera: &OrbitCamera, p: glam::Vec3) -> bool {
+        camera
+            .project(p, 16.0 / 9.0)
+            .is_some_and(|uv| (0.0..=1.0).contains(&uv.x) && (0.0..=1.0).contains(&uv.y))
+    }
+
+    #[test]
+    fn each_demo_opens_on_its_subject() {
+        for demo in ReefScene::ALL {
+            let reef = ReefWorld::new(ReefConfig {
+                seed: 3,
+                scene: demo,
+                ..ReefConfig::default()
+            });
+            let tank = *reef.tank();
+            let whole = OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0);
+            let Some(framing) = demo_framing(&reef, demo) else {
+                assert_eq!(
+                    demo,
+                    ReefScene::Reef,
+                    "only the whole reef shows the whole tank"
+                );
+                continue;
+            };
+            let camera = OrbitCamera::framed(&framing, 16.0 / 9.0);
+            // Every animal the demo is about is in view.
+            let subjects: &[FishKind] = match demo {
+                ReefScene::PredatorAndSchool => &[FishKind::Predator, FishKind::Prey],
+                ReefScene::Courtship | ReefScene::Feeding => &[FishKind::Pacifist],
+                _ => &FishKind::ALL,
+            };
+            for (i, a) in reef.living() {
+                if subjects.contains(&a.habits.kind) {
+                    assert!(
+                        on_screen(&camera, a.body.position_m()),
+                        "{demo:?}: animal {i} is out of view"
+                    );
+                }
+            }
+            match demo {
+                // The obstacle from above: the split is seen, not hidden behind it.
+                ReefScene::SchoolMeetsObstacle => {
+                    assert!(camera.pitch_rad > 1.0, "{}", camera.pitch_rad);
+                }
+                // The trio is closer than the whole tank would put it.
+                ReefScene::Courtship => {
+                    assert!(camera.distance_m < 0.8 * whole.distance_m);
+                }
+                _ => assert!(camera.distance_m <= whole.distance_m * 1.01),
             }
         }
     }

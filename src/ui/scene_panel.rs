@@ -9,11 +9,10 @@
 //! belongs to which scene; the app knows no scene by name.
 
 use eframe::egui;
-use glam::Vec3;
 
 use super::WidgetRects;
 use crate::lab::{Lab, Run};
-use crate::render::OrbitCamera;
+use crate::render::{Framing, OrbitCamera};
 use crate::settings::{Scene, Settings, Side};
 
 /// One-off things the user asked for this frame that every scene has. A scene's
@@ -149,10 +148,16 @@ pub trait ScenePanel {
         None
     }
 
-    /// Where the default camera looks and from how far, metres, when not at the
-    /// whole tank.
-    fn view_focus(&self, _run: &Run) -> Option<(Vec3, f32)> {
+    /// What the default camera shows, when not the whole tank from the front
+    /// (the demo's subject: the pair, the shark and its prey…).
+    fn framing(&self, _run: &Run, _settings: &Settings) -> Option<Framing> {
         None
+    }
+
+    /// The name of what the scene shows now (a demo), if it can change within
+    /// the scene: a new subject is framed afresh, as a new scene is.
+    fn view_subject(&self, _settings: &Settings) -> &'static str {
+        ""
     }
 }
 

@@ -61,6 +61,44 @@ describe("orbit camera with a mouse (WebGL2 tier)", () => {
   });
 });
 
+describe("framing (WebGL2 tier)", () => {
+  test("V puts the camera back, and a new scene or demo opens framed on its subject (issue 14)", async () => {
+    const server = await serveDist();
+    const browser = await launch("webgl2");
+    try {
+      const { page } = await openShoal(browser, server.url);
+      const start = await camera(page);
+      const c = await aquariumCentre(page);
+      await page.mouse.move(c.x, c.y);
+      await page.mouse.wheel(0, -400);
+      await page.waitForFunction((d) => window.shoal.state().camera.distance_m < d * 0.9, start.distance_m, { timeout: 15_000 });
+      await sleep(1000);
+      await page.keyboard.press("v", { delay: 100 });
+      await page.waitForFunction((d) => window.shoal.state().camera.distance_m === d, start.distance_m, { timeout: 15_000 });
+      assert.deepEqual(await camera(page), start, "V frames the tank again");
+
+      // The courtship demo opens on the trio, closer than the whole tank.
+      await page.evaluate(() => window.shoal.set({ scene: "reef", reef: { demo: "courtship" } }));
+      await page.waitForFunction((d) => window.shoal.state().camera.distance_m < d * 0.8, start.distance_m, { timeout: 30_000 });
+      // School meets obstacle looks down on the pillar.
+      await page.evaluate(() => window.shoal.set({ reef: { demo: "school_meets_obstacle" } }));
+      await page.waitForFunction(() => window.shoal.state().camera.pitch_deg > 60, null, { timeout: 30_000 });
+      // Following a fish brings the camera close; the next scene opens on its whole tank.
+      await page.evaluate(() => window.shoal.set({ reef: { demo: "reef", selected: 0, follow: true } }));
+      await page.waitForFunction((d) => window.shoal.state().camera.distance_m < d * 0.7, start.distance_m, { timeout: 30_000 });
+      await page.evaluate(() => window.shoal.set({ scene: "boids" }));
+      await page.waitForFunction((d) => window.shoal.state().camera.distance_m === d, start.distance_m, { timeout: 30_000 });
+      assert.deepEqual(await camera(page), start, "the schooling lab opens on its whole tank");
+      const button = await page.evaluate(() => window.shoal.widgets().reset_view);
+      const view = await page.evaluate(() => window.shoal.widgets().view_left);
+      assert.ok(button.y + button.height <= view.y + view.height, "Reset view is on the tank, in sight");
+    } finally {
+      await browser.close();
+      await server.close();
+    }
+  });
+});
+
 describe("keyboard (WebGL2 tier)", () => {
   test("Space pauses and plays, S steps once", async () => {
     const server = await serveDist();
