@@ -34,6 +34,47 @@ pub fn plot_height_under_caption(content_height: f32, caption_height: f32, spaci
     (content_height - caption_height - spacing).max(0.0)
 }
 
+/// A "nice" step (1, 2, 2.5 or 5 times a power of ten) at least `raw`.
+fn nice_step(raw: f64) -> f64 {
+    if !(raw.is_finite() && raw > 0.0) {
+        return 1.0;
+    }
+    let power = 10f64.powf(raw.log10().floor());
+    [1.0, 2.0, 2.5, 5.0, 10.0]
+        .into_iter()
+        .map(|m| m * power)
+        .find(|step| *step >= raw * (1.0 - 1e-9))
+        .unwrap_or(10.0 * power)
+}
+
+/// Grid marks for a plot's value axis that a class can read from the back: a
+/// nice step giving two to four numbered lines over the visible range, so even a
+/// low plot shows more than "0" (`egui_plot`'s own spacer numbers only lines
+/// far enough apart for its default label spacing).
+pub fn readable_marks(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
+    let (lo, hi) = input.bounds;
+    let step = nice_step((hi - lo) / 3.0).max(input.base_step_size);
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    (first..=last)
+        .map(|k| egui_plot::GridMark {
+            value: k as f64 * step,
+            step_size: step,
+        })
+        .collect()
+}
+
+/// A number on a plot axis: as many decimals as the grid step needs.
+pub fn axis_number(value: f64, step: f64) -> String {
+    let decimals = (0..3)
+        .find(|d| {
+            let scaled = step * 10f64.powi(*d);
+            (scaled - scaled.round()).abs() < 1e-6 * scaled.max(1.0)
+        })
+        .unwrap_or(3) as usize;
+    format!("{value:.decimals$}")
+}
+
 /// Shows a panel under the tank (`id`), [`bottom_panel_height`] high for a
 /// panel that would like `wanted` points. It is not resizable: its height is
 /// exact, so nothing inside it can make it grow. `add_contents` gets the height
@@ -60,6 +101,29 @@ pub fn show_bottom_panel<R>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn value_axes_get_two_to_four_nice_numbered_lines() {
+        for (lo, hi) in [
+            (0.0, 1.0),
+            (0.0, 1.83),
+            (0.0, 0.42),
+            (0.0, 31.0),
+            (0.3, 0.9),
+        ] {
+            let marks = readable_marks(egui_plot::GridInput {
+                bounds: (lo, hi),
+                base_step_size: 1e-6,
+            });
+            assert!((2..=4).contains(&marks.len()), "{lo}–{hi}: {marks:?}");
+            assert!(marks.iter().all(|m| (lo..=hi).contains(&m.value)));
+        }
+        assert_eq!(axis_number(0.5, 0.25), "0.50");
+        assert_eq!(axis_number(0.4, 0.2), "0.4");
+        assert_eq!(axis_number(10.0, 5.0), "10");
+        assert_eq!(nice_step(0.61), 1.0);
+        assert_eq!(nice_step(0.14), 0.2);
+    }
     use crate::lab::Lab;
     use crate::settings::{Scene, Settings};
     use crate::ui::learning_panel::{LEARNING_PANEL_HEIGHT, learning_plots_ui};
@@ -225,7 +289,7 @@ mod tests {
             window,
             "panel_metrics",
             METRICS_PANEL_HEIGHT,
-            &["metric_numbers", "plot_0"],
+            &["plot_0", "plot_4", "plot_urges"],
         );
 
         let mut settings = Settings {

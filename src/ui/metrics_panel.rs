@@ -5,7 +5,7 @@ use eframe::egui;
 use egui_plot::{Line, Plot, PlotPoints};
 
 use super::WidgetRects;
-use super::bottom_panel::plot_height_under_caption;
+use super::bottom_panel::{axis_number, plot_height_under_caption, readable_marks};
 use crate::lab::Run;
 use crate::metrics_history::MetricsSample;
 use crate::settings::Side;
@@ -67,11 +67,16 @@ const METRICS: [Metric; 5] = [
 ];
 
 /// The height the metrics panel under the tank would like, points (see
-/// [`super::bottom_panel::bottom_panel_height`] for what it gets).
-pub const METRICS_PANEL_HEIGHT: f32 = 180.0;
+/// [`super::bottom_panel::bottom_panel_height`] for what it gets: at most 30 % of
+/// the window). 260: plots a class reads from the back of the room.
+pub const METRICS_PANEL_HEIGHT: f32 = 260.0;
 
-/// Draws the numbers and plots for `runs` (one or two tanks); `labels` names each.
-/// The plots fill what the numbers leave of `content_height` points.
+/// The urges by their short names, in `Force::ALL` order (the bar chart's axis).
+const URGE_NAMES: [&str; 5] = ["contain", "align", "cohere", "separate", "avoid"];
+
+/// Draws the six plots for `runs` (one or two tanks; `labels` names each): the
+/// five school metrics over time and the urges used, each under a caption with
+/// its current value per tank in the tank's colour, in `content_height` points.
 pub fn metrics_panel_ui(
     ui: &mut egui::Ui,
     runs: &[Run],
@@ -79,57 +84,35 @@ pub fn metrics_panel_ui(
     content_height: f32,
     rects: &mut WidgetRects,
 ) {
-    let numbers = egui::Grid::new("metric_numbers")
-        .num_columns(METRICS.len() + 2)
-        .spacing([14.0, 2.0])
-        .show(ui, |ui| {
-            ui.strong("Tank");
-            for metric in &METRICS {
-                ui.strong(metric.title).on_hover_text(metric.help);
-            }
-            ui.strong("Urge chosen (share of moves)").on_hover_text(
-                "How often each urge was used: containment, alignment, cohesion, \
-                 separation, avoidance. In the lottery modes this follows the weights.",
-            );
-            ui.end_row();
-            for (run, label) in runs.iter().zip(labels) {
-                let latest = run.metrics();
-                ui.colored_label(side_color(run.side()), label);
-                for metric in &METRICS {
-                    let value = (metric.value)(&latest);
-                    ui.monospace(if metric.title == "Groups" {
-                        format!("{value:.0}")
-                    } else {
-                        format!("{value:.2}")
-                    });
-                }
-                let shares = latest.force_frequencies.to_array();
-                ui.monospace(
-                    shares
-                        .iter()
-                        .map(|s| format!("{:>3.0}%", s * 100.0))
-                        .collect::<Vec<_>>()
-                        .join(" "),
-                );
-                ui.end_row();
-            }
-        });
-    rects.insert("metric_numbers", numbers.response.rect);
-
+    let columns = METRICS.len() + 1;
+    let spacing = ui.spacing().item_spacing;
     let plot_width =
-        ((ui.available_width() - 8.0 * METRICS.len() as f32) / METRICS.len() as f32).max(120.0);
-    let spacing = ui.spacing().item_spacing.y;
-    let caption_height = ui.text_style_height(&egui::TextStyle::Small);
-    let plot_height = plot_height_under_caption(
-        content_height - numbers.response.rect.height() - spacing,
-        caption_height,
-        spacing,
-    );
+        ((ui.available_width() - spacing.x * (columns as f32 - 1.0)) / columns as f32).max(120.0);
+    let caption_height = ui.spacing().interact_size.y;
+    let plot_height = plot_height_under_caption(content_height, caption_height, spacing.y);
     let link = egui::Id::unique("metrics_time_axis");
-    ui.horizontal(|ui| {
+    let latest: Vec<MetricsSample> = runs.iter().map(Run::metrics).collect();
+    let response = ui.horizontal(|ui| {
         for (index, metric) in METRICS.iter().enumerate() {
             ui.vertical(|ui| {
-                ui.small(metric.title).on_hover_text(metric.help);
+                ui.set_width(plot_width);
+                caption_ui(ui, caption_height, metric.title, metric.help, |ui| {
+                    for ((run, sample), label) in runs.iter().zip(&latest).zip(labels) {
+                        let value = (metric.value)(sample);
+                        let text = if metric.title == "Groups" {
+                            format!("{value:.0}")
+                        } else {
+                            format!("{value:.2}")
+                        };
+                        ui.label(
+                            egui::RichText::new(text)
+                                .monospace()
+                                .strong()
+                                .color(side_color(run.side())),
+                        )
+                        .on_hover_text(label);
+                    }
+                });
                 let mut plot = Plot::new(("metric_plot", index))
                     .width(plot_width)
                     .height(plot_height)
@@ -139,7 +122,9 @@ pub fn metrics_panel_ui(
                     .allow_boxed_zoom(false)
                     .show_axes([true, true])
                     .link_axis(link, [true, false])
-                    .x_axis_formatter(|mark, _| format!("{:.0}s", mark.value));
+                    .y_grid_spacer(readable_marks)
+                    .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
+                    .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value));
                 if let Some((lo, hi)) = metric.y_range {
                     plot = plot.include_y(lo).include_y(hi);
                 } else {
@@ -155,12 +140,106 @@ pub fn metrics_panel_ui(
                         plot_ui.line(
                             Line::new(label.clone(), points)
                                 .color(side_color(run.side()))
-                                .width(1.5),
+                                .width(2.0),
                         );
                     }
                 });
                 rects.insert(&format!("plot_{index}"), response.response.rect);
             });
         }
+        ui.vertical(|ui| {
+            ui.set_width(plot_width);
+            urges_plot_ui(
+                ui,
+                runs,
+                &latest,
+                labels,
+                caption_height,
+                plot_height,
+                rects,
+            );
+        });
     });
+    rects.insert("metric_plots", response.response.rect);
+}
+
+/// A caption row of `height` points: the title in strong text (hover: `help`),
+/// then `values`.
+fn caption_ui(
+    ui: &mut egui::Ui,
+    height: f32,
+    title: &str,
+    help: &str,
+    values: impl FnOnce(&mut egui::Ui),
+) {
+    ui.horizontal(|ui| {
+        ui.set_height(height);
+        ui.label(egui::RichText::new(title).strong())
+            .on_hover_text(help);
+        values(ui);
+    });
+}
+
+/// How often each urge was the one applied over the last second, per tank, as
+/// bars named on the axis.
+fn urges_plot_ui(
+    ui: &mut egui::Ui,
+    runs: &[Run],
+    latest: &[MetricsSample],
+    labels: &[String],
+    caption_height: f32,
+    plot_height: f32,
+    rects: &mut WidgetRects,
+) {
+    let help = "How often each urge was used over the last second: containment, alignment, \
+                cohesion, separation, avoidance. In Blended mode every urge acts in every \
+                move (100 % each, mixed by its weight); in the one-urge modes the shares \
+                follow the weights.";
+    caption_ui(ui, caption_height, "Urges used (% of moves)", help, |_| {});
+    let bar_width = 0.8 / runs.len().max(1) as f64;
+    let plot = Plot::new("urges_plot")
+        .height(plot_height)
+        .allow_scroll(false)
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_boxed_zoom(false)
+        .include_y(0.0)
+        .include_y(100.0)
+        .include_x(-0.5)
+        .include_x(URGE_NAMES.len() as f64 - 0.5)
+        .y_grid_spacer(readable_marks)
+        .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
+        .x_grid_spacer(|_| {
+            (0..URGE_NAMES.len())
+                .map(|k| egui_plot::GridMark {
+                    value: k as f64,
+                    step_size: 1.0,
+                })
+                .collect()
+        })
+        .x_axis_formatter(|mark, _| {
+            URGE_NAMES
+                .get(mark.value.round() as usize)
+                .map_or_else(String::new, |name| (*name).to_owned())
+        })
+        .show(ui, |plot_ui| {
+            for (k, ((run, sample), label)) in runs.iter().zip(latest).zip(labels).enumerate() {
+                let offset = (k as f64 - (runs.len() as f64 - 1.0) / 2.0) * bar_width;
+                let bars = sample
+                    .force_frequencies
+                    .to_array()
+                    .iter()
+                    .enumerate()
+                    .map(|(i, share)| {
+                        egui_plot::Bar::new(i as f64 + offset, *share * 100.0)
+                            .width(bar_width * 0.9)
+                            .name(URGE_NAMES[i])
+                    })
+                    .collect();
+                plot_ui.bar_chart(
+                    egui_plot::BarChart::new(label.clone(), bars).color(side_color(run.side())),
+                );
+            }
+        });
+    rects.insert("plot_urges", plot.response.rect);
 }

@@ -7,6 +7,7 @@ use egui_plot::{Line, Plot, PlotPoints};
 
 use super::WidgetRects;
 use super::body_overlay::{self, muscle_color};
+use super::bottom_panel::{axis_number, readable_marks};
 use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
 use crate::lab::{BODY_TRACE_SECS, Lab, Run};
@@ -309,6 +310,9 @@ pub fn body_plots_ui(
                 );
                 let plot = Plot::new(("muscles", index, k))
                     .height(plot_height)
+                    .y_grid_spacer(readable_marks)
+                    .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
+                    .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value))
                     .include_y(0.0)
                     .include_y(1.0)
                     .include_x(start)
@@ -348,6 +352,9 @@ pub fn body_plots_ui(
             });
             let plot = Plot::new(("speed", index))
                 .height(plot_height)
+                .y_grid_spacer(readable_marks)
+                .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
+                .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value))
                 .include_y(0.0)
                 .include_x(start)
                 .include_x(now)

@@ -7,6 +7,7 @@ use egui_plot::{Legend, Line, Plot, PlotPoints};
 
 use super::WidgetRects;
 use super::bottom_panel::plot_height_under_caption;
+use super::bottom_panel::{axis_number, readable_marks};
 use super::reef_panel::{
     FEAR_COLOR, HUNGER_COLOR, LIBIDO_COLOR, intention_color, intention_sentence,
 };
@@ -254,12 +255,14 @@ fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, height: f32, rects: &mut W
     };
     let r = Plot::new("reef_mind_history")
         .height(height)
+        .y_grid_spacer(readable_marks)
+        .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
+        .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value))
         .include_y(0.0)
         .include_y(1.0)
         .allow_scroll(false)
         .allow_drag(false)
         .legend(Legend::default())
-        .x_axis_label("time (s)")
         .show(ui, |plot| {
             plot.line(Line::new("hunger", series(|s| s.hunger)).color(HUNGER_COLOR));
             plot.line(Line::new("libido", series(|s| s.libido)).color(LIBIDO_COLOR));
