@@ -217,6 +217,9 @@ pub struct StateReport {
     pub speed: f32,
     /// True when the machine cannot keep up and the simulation runs slower than asked.
     pub fell_behind: bool,
+    /// Behind for more than a moment (`clock::SLOWED_DOWN_AFTER_SECS`): the
+    /// status line then says "slowed down".
+    pub slowed_down: bool,
     /// Where the camera looks from (filled in by the app, which owns the camera).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub camera: Option<CameraReport>,
@@ -266,6 +269,7 @@ impl StateReport {
             scene: settings.scene.name(),
             speed: settings.speed,
             fell_behind: lab.fell_behind(),
+            slowed_down: lab.slowed_down(),
             metrics: lab.runs()[0].metrics(),
             metrics_right: lab.run(Side::Right).map(|run| run.metrics()),
             compare: lab.comparing(),

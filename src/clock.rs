@@ -19,9 +19,16 @@ pub struct FixedStepClock {
     /// Most steps run in one frame. Default 32: at 60 frames/s that is 8× real time
     /// at a 1/60 s step, the fastest speed offered, with no backlog.
     pub max_steps_per_frame: u32,
-    /// Whether the last frame hit the cap (the UI says "slowed down").
+    /// Whether the last frame hit the cap.
     fell_behind: bool,
+    /// Real seconds the clock has been behind without a break.
+    behind_secs: f64,
 }
+
+/// Real seconds the clock must stay behind before the UI says "slowed down"
+/// (1.5, chosen: the first frames after loading, while the GPU compiles its
+/// shaders, are long but pass; a machine that cannot keep up stays behind).
+pub const SLOWED_DOWN_AFTER_SECS: f64 = 1.5;
 
 /// A frame is never counted as longer than this, seconds: after the tab was hidden
 /// or the debugger paused, the simulation resumes instead of replaying the gap.
@@ -34,6 +41,7 @@ impl FixedStepClock {
             accumulator_secs: 0.0,
             max_steps_per_frame: 32,
             fell_behind: false,
+            behind_secs: 0.0,
         }
     }
 
@@ -59,6 +67,11 @@ impl FixedStepClock {
         // machine) that part of it was not counted: either way simulated time runs
         // slower than asked.
         self.fell_behind = capped || (frame_too_long && speed > 0.0);
+        self.behind_secs = if self.fell_behind {
+            self.behind_secs + frame_secs
+        } else {
+            0.0
+        };
         self.accumulator_secs -= f64::from(steps) * self.step_secs;
         if capped {
             // Drop the backlog rather than carry it into the next frame.
@@ -78,10 +91,17 @@ impl FixedStepClock {
         self.fell_behind
     }
 
+    /// Has the clock been behind for [`SLOWED_DOWN_AFTER_SECS`] of real time
+    /// without a break (what the status line reports as "slowed down")?
+    pub fn slowed_down(&self) -> bool {
+        self.behind_secs >= SLOWED_DOWN_AFTER_SECS
+    }
+
     /// Forgets owed time (after a pause or a reset).
     pub fn clear(&mut self) {
         self.accumulator_secs = 0.0;
         self.fell_behind = false;
+        self.behind_secs = 0.0;
     }
 }
 
@@ -153,6 +173,27 @@ mod tests {
         }
         // The backlog is dropped: a fast frame afterwards does not catch up.
         assert!(clock.steps_for_frame(STEP, 1.0) <= 1);
+    }
+
+    #[test]
+    fn a_few_long_frames_at_start_do_not_say_slowed_down_but_a_slow_machine_does() {
+        let mut clock = FixedStepClock::new(STEP);
+        // Loading: three long frames, then smooth ones.
+        for _ in 0..3 {
+            clock.steps_for_frame(0.4, 1.0);
+        }
+        assert!(!clock.slowed_down());
+        clock.steps_for_frame(STEP, 1.0);
+        assert!(!clock.slowed_down());
+        // A machine that stays behind for two seconds.
+        clock.max_steps_per_frame = 2;
+        for _ in 0..20 {
+            clock.steps_for_frame(0.1, 8.0);
+        }
+        assert!(clock.slowed_down());
+        clock.max_steps_per_frame = 32;
+        clock.steps_for_frame(STEP, 1.0);
+        assert!(!clock.slowed_down());
     }
 
     #[test]

@@ -738,7 +738,13 @@ impl Lab {
         self.steps_meter.rate_per_sec()
     }
 
-    /// Did the last frame hit the step cap (the machine cannot keep up)?
+    /// Has the clock been behind for more than a moment (the machine cannot
+    /// keep up)?
+    pub fn slowed_down(&self) -> bool {
+        self.clock.slowed_down()
+    }
+
+    /// Did the last frame hit the step cap?
     pub fn fell_behind(&self) -> bool {
         self.clock.fell_behind()
     }

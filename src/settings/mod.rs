@@ -90,8 +90,10 @@ impl Scene {
                  to do next from what it sees and how it feels. Click a fish to look inside its head."
             }
             Self::Learning => {
-                "A fish that does not know how to swim tries random muscle moves, keeps what \
-                 works and slowly learns to swim and turn, like practising a new sport."
+                "How a fish learns to swim: starting from random muscle moves, it keeps what \
+                 works and slowly learns to swim and turn, like practising a new sport. The \
+                 swimmer between the buoys uses controllers learned before until you train \
+                 your own."
             }
         }
     }

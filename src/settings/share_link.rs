@@ -34,9 +34,13 @@ pub enum ShareLinkError {
     TooLong(usize),
     #[error("the link does not start with a Shoal version tag ('{PREFIX}')")]
     UnknownVersion,
-    #[error("the link is damaged (it is not valid base64 text); was it cut off?")]
+    #[error(
+        "the link is damaged (it is not valid base64 text): perhaps it was cut off when copied"
+    )]
     NotBase64,
-    #[error("the link is damaged (its data cannot be unpacked); was it cut off?")]
+    #[error(
+        "the link is damaged (its data cannot be unpacked): perhaps it was cut off when copied"
+    )]
     NotDeflate,
     #[error("the link's data is not valid settings text")]
     NotJson,

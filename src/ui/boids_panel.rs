@@ -106,9 +106,11 @@ impl EditTool {
 
 /// The schooling lab: which tank the controls edit, the rock tool, and the rock
 /// being dragged.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default)]
 pub struct BoidsPanel {
     edit_side: Side,
+    /// Are the two tanks drawn one above the other (then named top and bottom)?
+    stacked: std::cell::Cell<bool>,
     tool: EditTool,
     /// The obstacle being dragged with the Move tool: tank and index.
     dragging: Option<(Side, usize)>,
@@ -139,10 +141,7 @@ impl ScenePanel for BoidsPanel {
             ui.horizontal(|ui| {
                 ui.label("Edit:");
                 for side in Side::BOTH {
-                    let label = match side {
-                        Side::Left => "Left tank",
-                        Side::Right => "Right tank",
-                    };
+                    let label = tank_name(side, self.stacked.get());
                     let response = ui
                         .selectable_value(&mut self.edit_side, side, label)
                         .on_hover_text("Choose which tank the controls below change");
@@ -184,7 +183,11 @@ impl ScenePanel for BoidsPanel {
             .map(|run| {
                 let tank = lab.settings().tank(run.side());
                 if lab.comparing() {
-                    format!("{} ({})", run.side().name(), tank.preset.label())
+                    format!(
+                        "{} ({})",
+                        tank_name(run.side(), self.stacked.get()),
+                        tank.preset.label()
+                    )
                 } else {
                     tank.preset.label().to_owned()
                 }
@@ -200,6 +203,7 @@ impl ScenePanel for BoidsPanel {
     }
 
     fn draw_overlays(&self, view: &ViewContext, settings: &Settings, _rects: &mut WidgetRects) {
+        self.stacked.set(view.stacked);
         if settings.show_vision {
             draw_vision(view);
         }
@@ -335,17 +339,23 @@ fn picked_obstacle(obstacles: &[Obstacle], origin: Vec3, direction: Vec3) -> Opt
         .map(|(i, _)| i)
 }
 
+/// What a tank is called on screen: left and right side by side, top and bottom
+/// when a tall window stacks them (the settings keep `left` and `right`).
+fn tank_name(side: Side, stacked: bool) -> &'static str {
+    match (side, stacked) {
+        (Side::Left, false) => "Left tank",
+        (Side::Right, false) => "Right tank",
+        (Side::Left, true) => "Top tank",
+        (Side::Right, true) => "Bottom tank",
+    }
+}
+
 /// In compare mode, each tank's name, preset and control mode at its top left.
 fn draw_tank_label(view: &ViewContext, settings: &Settings) {
     let tank = settings.tank(view.side);
     let label = format!(
         "{} · {} · {}",
-        match (view.side, view.stacked) {
-            (Side::Left, false) => "Left tank",
-            (Side::Right, false) => "Right tank",
-            (Side::Left, true) => "Left tank (top)",
-            (Side::Right, true) => "Right tank (bottom)",
-        },
+        tank_name(view.side, view.stacked),
         tank.preset.label(),
         mode_label(tank.mode)
     );
@@ -379,6 +389,7 @@ fn draw_vision(view: &ViewContext) {
         return;
     };
     let perception = boids.perception;
+    let tank = *world.tank();
     let fish = world.fish();
     let drawn = run.drawn_positions_m(view.alpha);
     let to_screen = |p: Vec3| screen_point(camera, rect, p);
@@ -415,7 +426,10 @@ fn draw_vision(view: &ViewContext) {
         for k in 0..=segments {
             let angle = -half + 2.0 * half * k as f32 / segments as f32;
             let dir = forward * angle.cos() + side * angle.sin();
-            if let Some(p) = to_screen(centre + dir * perception.vision_distance_m) {
+            let reach = perception
+                .vision_distance_m
+                .min(distance_to_glass(tank, centre, dir));
+            if let Some(p) = to_screen(centre + dir * reach) {
                 points.push(p);
             }
         }
@@ -436,10 +450,47 @@ fn draw_vision(view: &ViewContext) {
     }
 }
 
+/// How far from `p` (inside the tank) along the unit `direction` the glass, sand
+/// or surface is, metres: a fish sees no farther than its tank.
+fn distance_to_glass(tank: crate::sim::Tank, p: Vec3, direction: Vec3) -> f32 {
+    let mut nearest = f32::INFINITY;
+    for axis in 0..3 {
+        let d = direction[axis];
+        if d.abs() > 1e-6 {
+            let wall = if d > 0.0 {
+                tank.max_m[axis]
+            } else {
+                tank.min_m[axis]
+            };
+            nearest = nearest.min(((wall - p[axis]) / d).max(0.0));
+        }
+    }
+    nearest
+}
+
 /// Where `p` is drawn in `rect`, if in front of the camera.
 fn screen_point(camera: &OrbitCamera, rect: egui::Rect, p: Vec3) -> Option<egui::Pos2> {
     let aspect = rect.width() / rect.height().max(1.0);
     camera
         .project(p, aspect)
         .map(|uv| rect.min + egui::vec2(uv.x * rect.width(), uv.y * rect.height()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_fish_sees_no_farther_than_its_glass() {
+        let tank = crate::sim::Tank {
+            min_m: Vec3::ZERO,
+            max_m: Vec3::new(10.0, 4.0, 6.0),
+        };
+        let p = Vec3::new(8.0, 2.0, 3.0);
+        assert!((distance_to_glass(tank, p, Vec3::X) - 2.0).abs() < 1e-6);
+        assert!((distance_to_glass(tank, p, -Vec3::X) - 8.0).abs() < 1e-6);
+        let diagonal = Vec3::new(1.0, 1.0, 0.0).normalize_or_zero();
+        assert!((distance_to_glass(tank, p, diagonal) - 2.0f32.sqrt() * 2.0).abs() < 1e-5);
+        assert_eq!(tank_name(Side::Right, true), "Bottom tank");
+    }
 }

@@ -262,24 +262,32 @@ fn progress_ui(ui: &mut egui::Ui, lab: &LearningLab, rects: &mut WidgetRects) {
     if let Some(race) = lab.race() {
         let distances = race.distances_m();
         let leader = race.leader();
-        let line: Vec<String> = race
-            .entrants()
-            .zip(&distances)
-            .enumerate()
-            .map(|(k, (e, d))| {
-                format!(
-                    "{}{} tries: {:.2} m",
-                    if Some(k) == leader { "★ " } else { "" },
-                    e.annealing_steps,
-                    d
-                )
+        let r = ui
+            .vertical(|ui| {
+                ui.label(format!(
+                    "Race after {:.1} s (the paper's Fig. 7):",
+                    race.time_secs()
+                ));
+                egui::Grid::new("race_results")
+                    .num_columns(3)
+                    .spacing([12.0, 2.0])
+                    .striped(true)
+                    .show(ui, |ui| {
+                        ui.strong("racer");
+                        ui.strong("practice (tries)");
+                        ui.strong("distance");
+                        ui.end_row();
+                        for (k, (e, d)) in race.entrants().zip(&distances).enumerate() {
+                            let first = Some(k) == leader;
+                            let name = format!("{}{}", if first { "★ " } else { "" }, k + 1);
+                            ui.label(name);
+                            ui.label(e.annealing_steps.to_string());
+                            ui.label(format!("{d:.2} m"));
+                            ui.end_row();
+                        }
+                    });
             })
-            .collect();
-        let r = ui.label(format!(
-            "Race after {:.1} s · {}",
-            race.time_secs(),
-            line.join(" · ")
-        ));
+            .response;
         rects.insert("learning_race_result", r.rect);
     }
 }
@@ -491,6 +499,49 @@ impl ScenePanel for LearningPanel {
             notice = outcome.or(notice);
         }
         notice
+    }
+
+    /// Name tags over the racers, matching the race table's numbers.
+    fn draw_overlays(
+        &self,
+        view: &super::ViewContext,
+        _settings: &Settings,
+        _rects: &mut WidgetRects,
+    ) {
+        let Some(lab) = view.run.learning() else {
+            return;
+        };
+        let Some(race) = lab.race() else {
+            return;
+        };
+        let leader = race.leader();
+        let drawn = view.run.drawn_positions_m(view.alpha);
+        let aspect = view.rect.width() / view.rect.height().max(1.0);
+        // Index 0 is the swimmer between the buoys; the racers follow in order.
+        for (k, p) in drawn.iter().skip(1).enumerate() {
+            let Some(uv) = view.camera.project(*p + glam::Vec3::Y * 0.35, aspect) else {
+                continue;
+            };
+            let at =
+                view.rect.min + egui::vec2(uv.x * view.rect.width(), uv.y * view.rect.height());
+            if !view.rect.contains(at) {
+                continue;
+            }
+            let text = format!("{}{}", if Some(k) == leader { "★ " } else { "" }, k + 1);
+            let galley = view.painter.layout_no_wrap(
+                text,
+                egui::FontId::proportional(14.0),
+                egui::Color32::WHITE,
+            );
+            let rect = egui::Rect::from_center_size(at, galley.size()).expand(3.0);
+            view.painter
+                .rect_filled(rect, 3.0, egui::Color32::from_black_alpha(150));
+            view.painter.galley(
+                rect.min + egui::vec2(3.0, 3.0),
+                galley,
+                egui::Color32::WHITE,
+            );
+        }
     }
 
     fn framing(&self, run: &Run, _settings: &Settings) -> Option<Framing> {

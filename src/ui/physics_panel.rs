@@ -429,10 +429,16 @@ impl ScenePanel for PhysicsPanel {
         body_overlay::record_animal_rects(view, rects);
     }
 
-    /// A click on a fish selects it; a click on open water lets go.
+    /// A click on a fish selects it; a click on open water lets go, unless the
+    /// fish is being steered by hand.
     fn view_input(&mut self, input: &ViewInput, settings: &mut Settings) -> Option<Notice> {
         let picked = body_overlay::clicked_animal(input)?;
         let physics = &mut settings.physics;
+        // While steering by hand a click that misses every fish (easily done on
+        // a moving one) keeps the steering; *Deselect* lets go.
+        if picked.is_none() && physics.hand_control {
+            return None;
+        }
         physics.selected = picked;
         if picked.is_none() {
             physics.hand_control = false;

@@ -50,7 +50,12 @@ pub fn intention_color(intention: Intention) -> egui::Color32 {
 }
 
 /// The reef scene's section of the control panel.
-fn reef_controls_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut WidgetRects) {
+fn reef_controls_ui(
+    ui: &mut egui::Ui,
+    reef: &mut ReefSettings,
+    selected_name: Option<&str>,
+    rects: &mut WidgetRects,
+) {
     ui.separator();
     ui.label(egui::RichText::new("Reef").strong());
     ui.horizontal_wrapped(|ui| {
@@ -191,7 +196,8 @@ fn reef_controls_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut Widg
                     reef.follow = false;
                 }
             });
-            ui.label(format!("Selected: animal {i} (its mind is shown below)"));
+            let name = selected_name.map_or_else(|| format!("animal {i}"), str::to_owned);
+            ui.label(format!("Selected: {name} (its mind is shown below)"));
         }
         None => {
             ui.label("Click a fish in the tank to look inside its head.");
@@ -233,6 +239,8 @@ pub struct ReefPanel {
     /// kind), refreshed every frame.
     demo_habits: Vec<Habits>,
     fish_eye: Option<FishEye>,
+    /// The selected animal's name as the log and the inspector give it.
+    selected_name: Option<String>,
 }
 
 impl Default for ReefPanel {
@@ -241,6 +249,7 @@ impl Default for ReefPanel {
             minds_kind: FishKind::Predator,
             demo_habits: Vec::new(),
             fish_eye: None,
+            selected_name: None,
         }
     }
 }
@@ -262,11 +271,15 @@ impl ScenePanel for ReefPanel {
             }
         }
         self.refresh_fish_eye(lab, now_secs, ctx);
+        self.selected_name = lab.settings().reef.selected.and_then(|i| {
+            let reef = lab.runs()[0].reef()?;
+            Some(reef.animals().get(i as usize)?.name(i as usize))
+        });
         None
     }
 
     fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
-        reef_controls_ui(ui, &mut settings.reef, rects);
+        reef_controls_ui(ui, &mut settings.reef, self.selected_name.as_deref(), rects);
         minds_ui(
             ui,
             &mut settings.reef.traits,

@@ -33,12 +33,13 @@ pub fn status_line_ui(ui: &mut egui::Ui, state: &StateReport, caps: RenderCaps) 
             ui.separator();
             ui.label(egui::RichText::new("paused").strong());
         }
-        if state.fell_behind {
+        if state.slowed_down {
             ui.separator();
             ui.label(egui::RichText::new("slowed down").color(ui.visuals().warn_fg_color))
                 .on_hover_text(
                     "This computer cannot keep up with the chosen speed, so the simulation \
-                     runs slower than asked. Try fewer fish or a lower speed.",
+                     runs slower than asked (nothing is skipped: the fish just move in slow \
+                     motion). Try fewer fish or a lower speed.",
                 );
         }
     });
