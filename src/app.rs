@@ -42,6 +42,12 @@ pub struct ShoalApp {
     frame_builders: [FrameBuilder; 2],
     caps: RenderCaps,
     panel_open: bool,
+    /// The interface scale the teacher chose (`None`: automatic from the screen,
+    /// see [`crate::ui::screen::auto_scale`]).
+    interface_scale: Option<f32>,
+    /// Has the first frame chosen the layout (a narrow window starts with the
+    /// side panel closed)?
+    layout_chosen: bool,
     fps_meter: RateMeter,
     last_frame_time_secs: Option<f64>,
     /// Frames drawn since start (`state().frames`).
@@ -94,6 +100,8 @@ impl ShoalApp {
             frame_builders: Default::default(),
             caps,
             panel_open: true,
+            interface_scale: None,
+            layout_chosen: false,
             fps_meter: RateMeter::default(),
             last_frame_time_secs: None,
             frames_drawn: 0,
@@ -137,6 +145,7 @@ impl ShoalApp {
             target_m: self.camera.target_m.to_array(),
         });
         report.notice = self.notice.as_ref().map(|n| n.text.clone());
+        report.ui_scale = Some(self.ctx.zoom_factor());
         report
     }
 
@@ -192,6 +201,12 @@ impl ShoalApp {
             });
     }
 
+    /// The interface scale in use: CSS pixels per egui point, beyond the
+    /// screen's own pixel ratio.
+    pub fn interface_scale_now(&self) -> f32 {
+        self.ctx.zoom_factor()
+    }
+
     /// Where the named widgets are, for `shoal.widgets()`.
     pub fn widget_rects(&self) -> &WidgetRects {
         &self.widget_rects
@@ -238,6 +253,26 @@ impl ShoalApp {
         };
         self.camera_is_default = true;
         self.following = false;
+    }
+
+    /// The interface scale (automatic unless chosen) and, on the first frame,
+    /// the side panel closed in a narrow window (a phone sees the tank first).
+    fn choose_screen_layout(&mut self) {
+        use crate::ui::screen::{auto_scale, is_narrow};
+        let zoom = self.ctx.zoom_factor();
+        let css = self.ctx.content_rect().size() * zoom;
+        let wanted = self
+            .interface_scale
+            .unwrap_or_else(|| auto_scale(css.x, css.y));
+        if (wanted - zoom).abs() > 0.005 {
+            self.ctx.set_zoom_factor(wanted);
+        }
+        if !self.layout_chosen && css.x > 0.0 {
+            self.layout_chosen = true;
+            if is_narrow(css.x / wanted) {
+                self.panel_open = false;
+            }
+        }
     }
 
     /// Orbit, zoom and pan from mouse and touch input on a 3D view.
@@ -523,6 +558,7 @@ impl eframe::App for ShoalApp {
         self.fps_meter.record(now_secs, 1);
         self.frames_drawn += 1;
 
+        self.choose_screen_layout();
         let status = self.state_report();
         egui::Panel::bottom("status").show(ui, |ui| {
             status_line_ui(ui, &status, self.caps);
@@ -540,8 +576,17 @@ impl eframe::App for ShoalApp {
         let mut settings = self.lab.settings().clone();
         let mut actions = keyboard_shortcuts(ui, &mut settings);
         let step_secs = self.lab.scene().dt_secs();
+        let width = ui.ctx().content_rect().width();
+        let mut view = crate::ui::ViewOptions {
+            interface_scale: self.interface_scale,
+            current_scale: ui.ctx().zoom_factor(),
+        };
         egui::Panel::left("controls")
-            .default_size(270.0)
+            .default_size(if crate::ui::screen::is_narrow(width) {
+                crate::ui::screen::drawer_width(width)
+            } else {
+                270.0
+            })
             .resizable(true)
             .show_collapsible(ui, &mut self.panel_open, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| {
@@ -550,10 +595,12 @@ impl eframe::App for ShoalApp {
                         &mut settings,
                         &mut self.scene_panel,
                         step_secs,
+                        &mut view,
                         &mut self.widget_rects,
                     ));
                 });
             });
+        self.interface_scale = view.interface_scale;
 
         egui::CentralPanel::default()
             .frame(egui::Frame::NONE)

@@ -223,6 +223,10 @@ pub struct StateReport {
     /// Where the camera looks from (filled in by the app, which owns the camera).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub camera: Option<CameraReport>,
+    /// The interface scale (egui's zoom factor): 1 on a laptop, more on a big
+    /// screen (app only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ui_scale: Option<f32>,
     /// The (left) tank's school metrics, see [`MetricsSample`].
     pub metrics: MetricsSample,
     /// The right tank's metrics while comparing.
@@ -275,6 +279,7 @@ impl StateReport {
             compare: lab.comparing(),
             notice: None,
             camera: None,
+            ui_scale: None,
             scene_report: run.scene().report(settings.selected()),
             bench: None,
         }

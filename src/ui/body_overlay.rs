@@ -20,8 +20,12 @@ use crate::sim::body::motor_bridge::{to_body_frame, to_tank_frame};
 pub const SKELETONS_MAX: usize = 40;
 
 /// Screen distance within which a click picks a fish, points (plus its drawn
-/// half-length). 12, chosen: easy to hit on a touch screen.
+/// half-length). 12, chosen: easy to hit with a mouse.
 const PICK_SLACK_PT: f32 = 12.0;
+
+/// The same on a touch screen: 22 points, so a fish is at least a 44-point
+/// target, the size touch guidelines ask for (a fingertip is about 10 mm).
+const TOUCH_PICK_SLACK_PT: f32 = 22.0;
 
 /// The colour of a muscle contracted by `u` in [0, 1]: relaxed pale blue, fully
 /// contracted red.
@@ -261,6 +265,7 @@ pub fn pick_animal(
     camera: &OrbitCamera,
     run: &Run,
     alpha: f32,
+    slack_pt: f32,
 ) -> Option<u32> {
     let project = Projector::new(camera, rect);
     let eye = camera.eye_m();
@@ -268,8 +273,7 @@ pub fn pick_animal(
         .into_iter()
         .filter_map(|(i, centre, length)| {
             let (c, half) = screen_disc(&project, centre, length)?;
-            (c.distance(pointer) <= half + PICK_SLACK_PT)
-                .then_some((i as u32, centre.distance(eye)))
+            (c.distance(pointer) <= half + slack_pt).then_some((i as u32, centre.distance(eye)))
         })
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .map(|(i, _)| i)
@@ -304,11 +308,17 @@ pub fn clicked_animal(input: &ViewInput) -> Option<Option<u32>> {
     }
     let pointer = input.response.interact_pointer_pos()?;
     let run = input.lab.run(input.side)?;
+    let touch = input.response.ctx.input(|i| i.has_touch_screen());
     Some(pick_animal(
         pointer,
         input.rect,
         input.camera,
         run,
         input.lab.draw_alpha(),
+        if touch {
+            TOUCH_PICK_SLACK_PT
+        } else {
+            PICK_SLACK_PT
+        },
     ))
 }

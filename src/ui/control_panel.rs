@@ -8,6 +8,16 @@ use super::WidgetRects;
 use super::scene_panel::{CurrentPanel, PanelAction};
 use crate::settings::{SEED_MAX, Scene, Settings};
 
+/// The view options the side panel edits that are not settings (they belong
+/// to this screen, not to the run a link shares).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ViewOptions {
+    /// The interface scale chosen, `None` for automatic.
+    pub interface_scale: Option<f32>,
+    /// The scale in use now.
+    pub current_scale: f32,
+}
+
 /// Draws the control panel, editing `settings` in place, and records where the
 /// main widgets are (for the browser tests' real clicks, see `shoal.widgets()`).
 /// `step_secs` is one simulation step of the scene on show.
@@ -16,6 +26,7 @@ pub fn control_panel_ui(
     settings: &mut Settings,
     panel: &mut CurrentPanel,
     step_secs: f64,
+    view: &mut ViewOptions,
     rects: &mut WidgetRects,
 ) -> Vec<PanelAction> {
     let mut actions = Vec::new();
@@ -32,7 +43,7 @@ pub fn control_panel_ui(
             }
         });
     });
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         for scene in Scene::ALL {
             let response = ui
                 .selectable_value(&mut settings.scene, scene, scene.label())
@@ -137,6 +148,35 @@ pub fn control_panel_ui(
 
     ui.separator();
     ui.label(egui::RichText::new("View").strong());
+    ui.horizontal_wrapped(|ui| {
+        let help = "How big text, buttons and plots are. Auto: bigger on a big screen, so \
+                    the back of the room can read it";
+        ui.label("Text size").on_hover_text(help);
+        let mut auto = view.interface_scale.is_none();
+        let r = ui.checkbox(&mut auto, "Auto").on_hover_text(help);
+        rects.insert("ui_scale_auto", r.rect);
+        if r.changed() {
+            view.interface_scale = (!auto).then_some(view.current_scale);
+        }
+        // Buttons, not a slider: the scale changes the panel under the pointer.
+        let range = super::screen::SCALE_RANGE;
+        let current = view.interface_scale.unwrap_or(view.current_scale);
+        let r = ui
+            .add_enabled(current > *range.start() + 0.01, egui::Button::new("A−"))
+            .on_hover_text("Smaller text");
+        rects.insert("ui_scale_smaller", r.rect);
+        if r.clicked() {
+            view.interface_scale = Some((current - 0.1).max(*range.start()));
+        }
+        ui.label(format!("{current:.2}×"));
+        let r = ui
+            .add_enabled(current < *range.end() - 0.01, egui::Button::new("A+"))
+            .on_hover_text("Bigger text");
+        rects.insert("ui_scale_bigger", r.rect);
+        if r.clicked() {
+            view.interface_scale = Some((current + 0.1).min(*range.end()));
+        }
+    });
     ui.label(
         egui::RichText::new(
             "Drag to turn the tank · scroll or pinch to zoom · right-drag or two fingers to \

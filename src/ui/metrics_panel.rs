@@ -87,80 +87,85 @@ pub fn metrics_panel_ui(
     let columns = METRICS.len() + 1;
     let spacing = ui.spacing().item_spacing;
     let plot_width =
-        ((ui.available_width() - spacing.x * (columns as f32 - 1.0)) / columns as f32).max(120.0);
+        ((ui.available_width() - spacing.x * (columns as f32 - 1.0)) / columns as f32).max(150.0);
     let caption_height = ui.spacing().interact_size.y;
     let plot_height = plot_height_under_caption(content_height, caption_height, spacing.y);
     let link = egui::Id::unique("metrics_time_axis");
     let latest: Vec<MetricsSample> = runs.iter().map(Run::metrics).collect();
-    let response = ui.horizontal(|ui| {
-        for (index, metric) in METRICS.iter().enumerate() {
-            ui.vertical(|ui| {
-                ui.set_width(plot_width);
-                caption_ui(ui, caption_height, metric.title, metric.help, |ui| {
-                    for ((run, sample), label) in runs.iter().zip(&latest).zip(labels) {
-                        let value = (metric.value)(sample);
-                        let text = if metric.title == "Groups" {
-                            format!("{value:.0}")
+    // On a narrow screen the plots keep a readable width and scroll sideways.
+    let scroll = egui::ScrollArea::horizontal()
+        .id_salt("metric_plots_scroll")
+        .show(ui, |ui| {
+            ui.horizontal(|ui| {
+                for (index, metric) in METRICS.iter().enumerate() {
+                    ui.vertical(|ui| {
+                        ui.set_width(plot_width);
+                        caption_ui(ui, caption_height, metric.title, metric.help, |ui| {
+                            for ((run, sample), label) in runs.iter().zip(&latest).zip(labels) {
+                                let value = (metric.value)(sample);
+                                let text = if metric.title == "Groups" {
+                                    format!("{value:.0}")
+                                } else {
+                                    format!("{value:.2}")
+                                };
+                                ui.label(
+                                    egui::RichText::new(text)
+                                        .monospace()
+                                        .strong()
+                                        .color(side_color(run.side())),
+                                )
+                                .on_hover_text(label);
+                            }
+                        });
+                        let mut plot = Plot::new(("metric_plot", index))
+                            .width(plot_width)
+                            .height(plot_height)
+                            .allow_scroll(false)
+                            .allow_drag(false)
+                            .allow_zoom(false)
+                            .allow_boxed_zoom(false)
+                            .show_axes([true, true])
+                            .link_axis(link, [true, false])
+                            .y_grid_spacer(readable_marks)
+                            .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
+                            .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value));
+                        if let Some((lo, hi)) = metric.y_range {
+                            plot = plot.include_y(lo).include_y(hi);
                         } else {
-                            format!("{value:.2}")
-                        };
-                        ui.label(
-                            egui::RichText::new(text)
-                                .monospace()
-                                .strong()
-                                .color(side_color(run.side())),
-                        )
-                        .on_hover_text(label);
-                    }
-                });
-                let mut plot = Plot::new(("metric_plot", index))
-                    .width(plot_width)
-                    .height(plot_height)
-                    .allow_scroll(false)
-                    .allow_drag(false)
-                    .allow_zoom(false)
-                    .allow_boxed_zoom(false)
-                    .show_axes([true, true])
-                    .link_axis(link, [true, false])
-                    .y_grid_spacer(readable_marks)
-                    .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
-                    .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value));
-                if let Some((lo, hi)) = metric.y_range {
-                    plot = plot.include_y(lo).include_y(hi);
-                } else {
-                    plot = plot.include_y(0.0);
+                            plot = plot.include_y(0.0);
+                        }
+                        let response = plot.show(ui, |plot_ui| {
+                            for (run, label) in runs.iter().zip(labels) {
+                                let points: PlotPoints = run
+                                    .history()
+                                    .samples()
+                                    .map(|s| [s.time_secs, (metric.value)(s)])
+                                    .collect();
+                                plot_ui.line(
+                                    Line::new(label.clone(), points)
+                                        .color(side_color(run.side()))
+                                        .width(2.0),
+                                );
+                            }
+                        });
+                        rects.insert(&format!("plot_{index}"), response.response.rect);
+                    });
                 }
-                let response = plot.show(ui, |plot_ui| {
-                    for (run, label) in runs.iter().zip(labels) {
-                        let points: PlotPoints = run
-                            .history()
-                            .samples()
-                            .map(|s| [s.time_secs, (metric.value)(s)])
-                            .collect();
-                        plot_ui.line(
-                            Line::new(label.clone(), points)
-                                .color(side_color(run.side()))
-                                .width(2.0),
-                        );
-                    }
+                ui.vertical(|ui| {
+                    ui.set_width(plot_width);
+                    urges_plot_ui(
+                        ui,
+                        runs,
+                        &latest,
+                        labels,
+                        caption_height,
+                        plot_height,
+                        rects,
+                    );
                 });
-                rects.insert(&format!("plot_{index}"), response.response.rect);
             });
-        }
-        ui.vertical(|ui| {
-            ui.set_width(plot_width);
-            urges_plot_ui(
-                ui,
-                runs,
-                &latest,
-                labels,
-                caption_height,
-                plot_height,
-                rects,
-            );
         });
-    });
-    rects.insert("metric_plots", response.response.rect);
+    rects.insert("metric_plots", scroll.inner_rect);
 }
 
 /// A caption row of `height` points: the title in strong text (hover: `help`),

@@ -17,11 +17,12 @@ mod reef_minds;
 pub mod reef_overlay;
 pub mod reef_panel;
 mod scene_panel;
+pub mod screen;
 mod status_line;
 mod tank_panel;
 
 pub use bottom_panel::show_bottom_panel;
-pub use control_panel::control_panel_ui;
+pub use control_panel::{ViewOptions, control_panel_ui};
 pub use files::{FileError, save_text_file};
 pub use learning_panel::{SaveControllersError, controllers_json};
 pub use metrics_panel::{METRICS_PANEL_HEIGHT, metrics_panel_ui, side_color};

@@ -129,15 +129,18 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
 }
 
 /// `{name: {x, y, width, height}}` in CSS pixels.
+/// Where the widgets are, in CSS pixels: egui's points times the interface
+/// scale (its zoom factor), so a test clicks where a person would.
 fn widgets_json(app: &ShoalApp) -> serde_json::Value {
+    let scale = app.interface_scale_now();
     app.widget_rects()
         .iter()
         .map(|(name, rect)| {
             (
                 (*name).to_owned(),
                 serde_json::json!({
-                    "x": rect.min.x, "y": rect.min.y,
-                    "width": rect.width(), "height": rect.height(),
+                    "x": rect.min.x * scale, "y": rect.min.y * scale,
+                    "width": rect.width() * scale, "height": rect.height() * scale,
                 }),
             )
         })

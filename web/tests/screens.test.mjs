@@ -1,0 +1,109 @@
+// The screen a class sees on a phone, a laptop and a projector (issue 14): the
+// schooling lab at 390 × 844 (touch), 1280 × 800 and 1920 × 1080. A phone opens
+// on the tank with the side panel as a drawer; plots keep their height over 300
+// frames and are tall enough to read; a projector gets a bigger interface scale.
+// The screenshots go to web/test-artifacts/ (copies are in docs/).
+
+import { describe, test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import { serveDist, launch, saveArtifact, clickUntil, waitFrames } from "./harness.mjs";
+
+const widgets = (page) => page.evaluate(() => window.shoal.widgets());
+
+async function open(browser, url, { width, height, touch = false }) {
+  const context = await browser.newContext({ viewport: { width, height }, hasTouch: touch, isMobile: touch });
+  const page = await context.newPage();
+  await page.goto(url);
+  await page.waitForFunction(() => window.shoal && window.shoal.state().steps > 30, null, { timeout: 90_000 });
+  await page.evaluate(() => window.shoal.set({ scene: "boids" }));
+  await page.waitForFunction(() => window.shoal.widgets().plot_0, null, { timeout: 60_000 });
+  return { context, page };
+}
+
+/** The plot panel's and the tank's heights over `frames` frames. */
+async function heightsOver(page, frames) {
+  const start = (await page.evaluate(() => window.shoal.state())).frames;
+  const seen = new Set();
+  for (;;) {
+    const w = await widgets(page);
+    seen.add(`${w.panel_metrics.height}/${w.aquarium.height}`);
+    const now = (await page.evaluate(() => window.shoal.state())).frames;
+    if (now >= start + frames) break;
+    await page.waitForTimeout(50);
+  }
+  return seen;
+}
+
+describe("phone, laptop and projector (WebGL2 tier)", () => {
+  let server, browser;
+  before(async () => {
+    server = await serveDist();
+    browser = await launch("webgl2");
+  });
+  after(async () => {
+    await browser?.close();
+    await server?.close();
+  });
+
+  test("a phone opens on the tank; the controls are a drawer; nothing is cut off", async () => {
+    const { context, page } = await open(browser, server.url, { width: 390, height: 844, touch: true });
+    try {
+      let w = await widgets(page);
+      assert.ok(w.aquarium.width > 350, `the tank is visible: ${JSON.stringify(w.aquarium)}`);
+      assert.ok(w.show_panel, "a Controls button opens the drawer");
+      assert.equal(w.compare, undefined, "the side panel starts closed");
+      saveArtifact("screen-phone.png", await page.screenshot());
+
+      await clickUntil(page, "show_panel", () => window.shoal.widgets().hide_panel);
+      await waitFrames(page, 2);
+      w = await widgets(page);
+      for (const name of ["scene_aquarium", "scene_boids", "scene_physics", "scene_reef", "scene_learning"]) {
+        assert.ok(w[name], `${name} is drawn`);
+        assert.ok(w[name].x + w[name].width <= 390, `${name} fits the screen: ${JSON.stringify(w[name])}`);
+      }
+      assert.ok(w.aquarium.width > 0, "a strip of tank stays in view");
+      saveArtifact("screen-phone-drawer.png", await page.screenshot());
+      // Every plot is reachable: they keep a readable width and scroll sideways.
+      assert.ok(w.plot_0.width >= 140, `plot width ${w.plot_0.width}`);
+      assert.ok(w.metric_plots.width <= 390, `the plot row scrolls within the screen`);
+    } finally {
+      await context.close();
+    }
+  });
+
+  for (const [name, width, height, minScale, minPlot] of [
+    ["laptop", 1280, 800, 1.0, 150],
+    ["projector", 1920, 1080, 1.25, 200],
+  ]) {
+    test(`${name} (${width} × ${height}): readable plots of a steady height, the scale the screen asks for`, async () => {
+      const { context, page } = await open(browser, server.url, { width, height });
+      try {
+        const state = await page.evaluate(() => window.shoal.state());
+        assert.ok(state.ui_scale >= minScale && state.ui_scale <= minScale + 0.1, `scale ${state.ui_scale}`);
+        const w = await widgets(page);
+        assert.ok(w.plot_0.height >= minPlot, `plot height ${w.plot_0.height} CSS px`);
+        assert.ok(w.plot_urges, "the urges are a plot of their own");
+        assert.ok(w.reset_view.y + w.reset_view.height <= w.view_left.y + w.view_left.height, "Reset view is in sight");
+        const seen = await heightsOver(page, 300);
+        assert.equal(seen.size, 1, `panel/tank heights over 300 frames: ${[...seen]}`);
+        saveArtifact(`screen-${name}.png`, await page.screenshot());
+      } finally {
+        await context.close();
+      }
+    });
+  }
+
+  test("the text size buttons make the interface bigger and Auto brings it back", async () => {
+    const { context, page } = await open(browser, server.url, { width: 1280, height: 800 });
+    try {
+      // The aquarium's short panel shows the View section without scrolling.
+      await page.evaluate(() => window.shoal.set({ scene: "aquarium" }));
+      await page.waitForFunction(() => window.shoal.widgets().ui_scale_bigger, null, { timeout: 30_000 });
+      assert.equal((await page.evaluate(() => window.shoal.state())).ui_scale, 1);
+      await clickUntil(page, "ui_scale_bigger", () => window.shoal.state().ui_scale > 1.05);
+      await clickUntil(page, "ui_scale_auto", () => window.shoal.state().ui_scale === 1);
+    } finally {
+      await context.close();
+    }
+  });
+});
