@@ -100,23 +100,33 @@ pub fn metrics_panel_ui(
                 for (index, metric) in METRICS.iter().enumerate() {
                     ui.vertical(|ui| {
                         ui.set_width(plot_width);
-                        caption_ui(ui, caption_height, metric.title, metric.help, |ui| {
-                            for ((run, sample), label) in runs.iter().zip(&latest).zip(labels) {
-                                let value = (metric.value)(sample);
-                                let text = if metric.title == "Groups" {
-                                    format!("{value:.0}")
-                                } else {
-                                    format!("{value:.2}")
-                                };
-                                ui.label(
-                                    egui::RichText::new(text)
-                                        .monospace()
-                                        .strong()
-                                        .color(side_color(run.side())),
-                                )
-                                .on_hover_text(label);
-                            }
-                        });
+                        caption_ui(
+                            ui,
+                            plot_width,
+                            caption_height,
+                            metric.title,
+                            metric.help,
+                            |ui| {
+                                // Right to left: the last tank first.
+                                for ((run, sample), label) in
+                                    runs.iter().zip(&latest).zip(labels).rev()
+                                {
+                                    let value = (metric.value)(sample);
+                                    let text = if metric.title == "Groups" {
+                                        format!("{value:.0}")
+                                    } else {
+                                        format!("{value:.2}")
+                                    };
+                                    ui.label(
+                                        egui::RichText::new(text)
+                                            .monospace()
+                                            .strong()
+                                            .color(side_color(run.side())),
+                                    )
+                                    .on_hover_text(label);
+                                }
+                            },
+                        );
                         let mut plot = Plot::new(("metric_plot", index))
                             .width(plot_width)
                             .height(plot_height)
@@ -128,6 +138,7 @@ pub fn metrics_panel_ui(
                             .link_axis(link, [true, false])
                             .y_grid_spacer(readable_marks)
                             .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
+                            .x_grid_spacer(readable_marks)
                             .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value));
                         if let Some((lo, hi)) = metric.y_range {
                             plot = plot.include_y(lo).include_y(hi);
@@ -170,19 +181,27 @@ pub fn metrics_panel_ui(
 
 /// A caption row of `height` points: the title in strong text (hover: `help`),
 /// then `values`.
+/// The values come first (at the right) and the title takes what is left,
+/// shortened with "…" if it must (its hover shows it whole): a caption never
+/// widens its plot's column, so the panel never grows wider than the window.
 fn caption_ui(
     ui: &mut egui::Ui,
+    width: f32,
     height: f32,
     title: &str,
     help: &str,
     values: impl FnOnce(&mut egui::Ui),
 ) {
-    ui.horizontal(|ui| {
-        ui.set_height(height);
-        ui.label(egui::RichText::new(title).strong())
-            .on_hover_text(help);
-        values(ui);
-    });
+    ui.allocate_ui_with_layout(
+        egui::vec2(width, height),
+        egui::Layout::right_to_left(egui::Align::Center),
+        |ui| {
+            ui.set_width(width);
+            values(ui);
+            ui.add(egui::Label::new(egui::RichText::new(title).strong()).truncate())
+                .on_hover_text(format!("{title}: {help}"));
+        },
+    );
 }
 
 /// How often each urge was the one applied over the last second, per tank, as
@@ -200,21 +219,32 @@ fn urges_plot_ui(
                 cohesion, separation, avoidance. In Blended mode every urge acts in every \
                 move (100 % each, mixed by its weight); in the one-urge modes the shares \
                 follow the weights.";
-    caption_ui(ui, caption_height, "Urges used (% of moves)", help, |_| {});
+    caption_ui(
+        ui,
+        ui.available_width(),
+        caption_height,
+        "Urges used (% of moves)",
+        help,
+        |_| {},
+    );
     let bar_width = 0.8 / runs.len().max(1) as f64;
+    // Horizontal bars, the urges named down the side (names under narrow
+    // vertical bars would not fit); the first urge at the top.
+    let row = |i: usize| (URGE_NAMES.len() - 1 - i) as f64;
     let plot = Plot::new("urges_plot")
         .height(plot_height)
         .allow_scroll(false)
         .allow_drag(false)
         .allow_zoom(false)
         .allow_boxed_zoom(false)
-        .include_y(0.0)
-        .include_y(100.0)
-        .include_x(-0.5)
-        .include_x(URGE_NAMES.len() as f64 - 0.5)
-        .y_grid_spacer(readable_marks)
-        .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
-        .x_grid_spacer(|_| {
+        .include_x(0.0)
+        .include_x(100.0)
+        .include_y(-0.5)
+        .include_y(URGE_NAMES.len() as f64 - 0.5)
+        .y_axis_min_width(56.0)
+        .x_grid_spacer(readable_marks)
+        .x_axis_formatter(|mark, _| format!("{:.0} %", mark.value))
+        .y_grid_spacer(|_| {
             (0..URGE_NAMES.len())
                 .map(|k| egui_plot::GridMark {
                     value: k as f64,
@@ -222,27 +252,32 @@ fn urges_plot_ui(
                 })
                 .collect()
         })
-        .x_axis_formatter(|mark, _| {
-            URGE_NAMES
-                .get(mark.value.round() as usize)
-                .map_or_else(String::new, |name| (*name).to_owned())
+        .y_axis_formatter(move |mark, _| {
+            let k = mark.value.round();
+            if (0.0..URGE_NAMES.len() as f64).contains(&k) {
+                URGE_NAMES[URGE_NAMES.len() - 1 - k as usize].to_owned()
+            } else {
+                String::new()
+            }
         })
         .show(ui, |plot_ui| {
             for (k, ((run, sample), label)) in runs.iter().zip(latest).zip(labels).enumerate() {
-                let offset = (k as f64 - (runs.len() as f64 - 1.0) / 2.0) * bar_width;
+                let offset = ((runs.len() as f64 - 1.0) / 2.0 - k as f64) * bar_width;
                 let bars = sample
                     .force_frequencies
                     .to_array()
                     .iter()
                     .enumerate()
                     .map(|(i, share)| {
-                        egui_plot::Bar::new(i as f64 + offset, *share * 100.0)
+                        egui_plot::Bar::new(row(i) + offset, *share * 100.0)
                             .width(bar_width * 0.9)
                             .name(URGE_NAMES[i])
                     })
                     .collect();
                 plot_ui.bar_chart(
-                    egui_plot::BarChart::new(label.clone(), bars).color(side_color(run.side())),
+                    egui_plot::BarChart::new(label.clone(), bars)
+                        .color(side_color(run.side()))
+                        .horizontal(),
                 );
             }
         });

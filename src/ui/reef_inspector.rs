@@ -257,6 +257,7 @@ fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, height: f32, rects: &mut W
         .height(height)
         .y_grid_spacer(readable_marks)
         .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
+        .x_grid_spacer(readable_marks)
         .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value))
         .include_y(0.0)
         .include_y(1.0)

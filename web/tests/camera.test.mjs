@@ -84,7 +84,8 @@ describe("framing (WebGL2 tier)", () => {
       await page.evaluate(() => window.shoal.set({ reef: { demo: "school_meets_obstacle" } }));
       await page.waitForFunction(() => window.shoal.state().camera.pitch_deg > 60, null, { timeout: 30_000 });
       // Following a fish brings the camera close; the next scene opens on its whole tank.
-      await page.evaluate(() => window.shoal.set({ reef: { demo: "reef", selected: 0, follow: true } }));
+      // (The feeding demo's fish are small: following one comes within a few metres.)
+      await page.evaluate(() => window.shoal.set({ reef: { demo: "feeding", selected: 0, follow: true } }));
       await page.waitForFunction((d) => window.shoal.state().camera.distance_m < d * 0.7, start.distance_m, { timeout: 30_000 });
       await page.evaluate(() => window.shoal.set({ scene: "boids" }));
       await page.waitForFunction((d) => window.shoal.state().camera.distance_m === d, start.distance_m, { timeout: 30_000 });
