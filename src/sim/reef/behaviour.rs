@@ -274,7 +274,9 @@ impl ReefWorld {
                 .food
                 .iter()
                 .find(|f| f.id == id)
-                .filter(|f| in_suck_reach(s.head_m, s.heading, s.length_m, f.position_m))
+                .filter(|f| {
+                    in_suck_reach(&self.params, s.head_m, s.heading, s.length_m, f.position_m)
+                })
                 .map_or(Gait::Pursue, |_| Gait::Hover),
             (Intention::Eat, Some(Target::Animal(_))) => Gait::Pursue,
             // schooling, and foraging with the school (see Gait::School).
@@ -293,6 +295,7 @@ impl ReefWorld {
                         }
                     };
                     let (_, wish) = pair.wishes(
+                        &self.params.courtship,
                         &partner(pair.male),
                         &partner(pair.female),
                         self.time_secs as f32,
@@ -332,7 +335,7 @@ impl ReefWorld {
         // Radius of the body's turning circle at its speed now (none for the
         // point mass, which turns as fast as its steering force allows).
         let turn_radius = match self.animals[i].body {
-            ReefBody::Physical(_) => BODY_TURN_RADIUS_BODY_LENGTHS * s.length_m,
+            ReefBody::Physical(_) => self.params.body_turn_radius_body_lengths * s.length_m,
             ReefBody::Point(_) => 0.0,
         };
         let animal_at = |t: Option<Target>| match t {
@@ -465,7 +468,8 @@ impl ReefWorld {
                     // In a pair: the courtship routine.
                     (Some(pair), _, _) => match (partner_of(pair.male), partner_of(pair.female)) {
                         (Some(m), Some(f)) => {
-                            let (male_wish, female_wish) = pair.wishes(&m, &f, t, surface);
+                            let (male_wish, female_wish) =
+                                pair.wishes(&self.params.courtship, &m, &f, t, surface);
                             let wish = if pair.male as usize == i {
                                 male_wish
                             } else {
@@ -481,7 +485,13 @@ impl ReefWorld {
                         if pair.female == j && !pair.bonded() =>
                     {
                         match partner_of(j) {
-                            Some(f) => chase(&me, pair.loop_point_m(&f, t), 0.9, 0.0, turn_radius),
+                            Some(f) => chase(
+                                &me,
+                                pair.loop_point_m(&self.params.courtship, &f, t),
+                                0.9,
+                                0.0,
+                                turn_radius,
+                            ),
                             None => wander(self),
                         }
                     }

@@ -605,10 +605,10 @@ impl ReefWorld {
             }
         }
         // Food (prey and pacifists): the nearest few seen particles, by the
-        // effort of reaching them (see CLIMB_EFFORT_MUSCLE_BODY).
+        // effort of reaching them (see `ReefParams::climb_effort_muscle_body`).
         if habits.kind != FishKind::Predator {
             let climb_effort = match self.animals[i].body {
-                ReefBody::Physical(_) => CLIMB_EFFORT_MUSCLE_BODY,
+                ReefBody::Physical(_) => self.params.climb_effort_muscle_body,
                 ReefBody::Point(_) => 1.0,
             };
             let effort = |p: Vec3| {

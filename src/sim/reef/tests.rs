@@ -777,7 +777,11 @@ fn a_fish_flees_from_where_it_last_saw_the_predator_not_from_where_it_is() {
         let remembered = c + Vec3::Z;
         let fish = w.animal_mut(0).unwrap();
         fish.habits.schools = false;
-        fish.last_threat = Some((shark as u32, remembered, 0.5 * THREAT_MEMORY_SECS));
+        fish.last_threat = Some((
+            shark as u32,
+            remembered,
+            0.5 * crate::sim::reef::params::ReefParams::default().threat_memory_secs,
+        ));
         w.step();
         let a = &w.animals()[0];
         assert_eq!(a.focus.intention, Intention::Escape, "{body:?}");
