@@ -14,19 +14,23 @@ use crate::sim::common::spatial_grid::Nearest;
 use crate::sim::common::steering::{self, SteeringParams};
 use crate::sim::common::tank::Tank;
 
+use super::params::BoidWorldParams;
 use super::placement::stingray_fits;
 use super::world::*;
 
 /// The escape force of a fish and how urgent it is (0–1), or `None` when the
-/// fish is calm. A fish that notices a shark (within [`FEAR_RADIUS_M`] inside
-/// its 300° field of view, or within [`LATERAL_LINE_M`] from any direction)
-/// [`steering::evade`]s the nearest one it notices, at full urgency within
-/// [`LATERAL_LINE_M`] fading to a quarter at [`FEAR_RADIUS_M`] (a distant
-/// shark makes the school veer away together rather than scatter). A fish that
-/// notices none but is alarmed by frightened neighbours (`alarm`, their
-/// urgency × [`ALARM_SHARE`], see [`ALARM_THRESHOLD`]) evades the nearest shark
-/// with that urgency. The force is the maximum force × urgency.
+/// fish is calm. A fish that notices a shark (within
+/// [`BoidWorldParams::fear_radius_m`] inside its 300° field of view, or within
+/// [`BoidWorldParams::lateral_line_m`] from any direction) [`steering::evade`]s
+/// the nearest one it notices, at full urgency within the lateral line's range
+/// fading to a quarter at the fear radius (a distant shark makes the school veer
+/// away together rather than scatter). A fish that notices none but is alarmed by
+/// frightened neighbours (`alarm`, their urgency ×
+/// [`BoidWorldParams::alarm_share`], see [`BoidWorldParams::alarm_threshold`])
+/// evades the nearest shark with that urgency. The force is the maximum force ×
+/// urgency.
 pub(super) fn escape_force(
+    world: &BoidWorldParams,
     position_m: Vec3,
     velocity_m_per_s: Vec3,
     sharks: &[Shark],
@@ -41,7 +45,8 @@ pub(super) fn escape_force(
         let offset_m = shark.body.position_m - position_m;
         let distance_m = offset_m.length();
         let in_view = heading.dot(offset_m) >= cos_half_view * distance_m;
-        let seen = distance_m < LATERAL_LINE_M || (distance_m < FEAR_RADIUS_M && in_view);
+        let seen =
+            distance_m < world.lateral_line_m || (distance_m < world.fear_radius_m && in_view);
         if seen && noticed.is_none_or(|(d, _)| distance_m < d) {
             noticed = Some((distance_m, shark));
         }
@@ -51,14 +56,15 @@ pub(super) fn escape_force(
     }
     let (urgency, shark) = match (noticed, nearest) {
         (Some((distance_m, shark)), _) => {
-            let urgency = if distance_m <= LATERAL_LINE_M {
+            let urgency = if distance_m <= world.lateral_line_m {
                 1.0
             } else {
-                1.0 - 0.75 * (distance_m - LATERAL_LINE_M) / (FEAR_RADIUS_M - LATERAL_LINE_M)
+                1.0 - 0.75 * (distance_m - world.lateral_line_m)
+                    / (world.fear_radius_m - world.lateral_line_m)
             };
             (urgency.max(alarm.min(1.0)), shark)
         }
-        (None, Some((_, shark))) if alarm >= ALARM_THRESHOLD => (alarm.min(1.0), shark),
+        (None, Some((_, shark))) if alarm >= world.alarm_threshold => (alarm.min(1.0), shark),
         _ => return None,
     };
     let evade = steering::evade(
