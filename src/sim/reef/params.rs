@@ -20,6 +20,10 @@ pub struct ReefParams {
     pub drive: DriveParams,
     /// The courtship routine's numbers (`reef/courtship.rs`).
     pub courtship: CourtshipParams,
+    /// The behaviour routines' numbers (`reef/behaviour.rs`).
+    pub behaviour: BehaviourParams,
+    /// The motor choice's numbers (`reef/motor_choice.rs`).
+    pub motor_choice: MotorChoiceParams,
     /// Longest time since the last meal (and mating) a reef fish starts with,
     /// seconds. 30, chosen: the clocks differ from fish to fish, and a fish with
     /// Shoal's calm p0 that ate 0.7 of its appetite 30 s ago has hunger 0.55.
@@ -112,6 +116,8 @@ impl Default for ReefParams {
         Self {
             drive: DriveParams::reef(),
             courtship: CourtshipParams::default(),
+            behaviour: BehaviourParams::default(),
+            motor_choice: MotorChoiceParams::default(),
             start_fed_for_max_secs: 30.0,
             courtship_digestion_fraction: 0.1,
             suck_range_body_lengths: 1.0,
@@ -199,6 +205,98 @@ impl Default for CourtshipParams {
             pass_interval_secs: 3.0,
             staging_body_lengths: 3.0,
             touch_body_lengths: 0.35,
+        }
+    }
+}
+
+/// The behaviour routines' tuning (Tu & Terzopoulos §6.4 and §7.2,
+/// `reef/behaviour.rs`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BehaviourParams {
+    /// Cruising speed, fraction of the top speed (0.7, the physics scene's value).
+    pub cruise_fraction: f32,
+    /// Speed while avoiding, fraction of the top speed: slow enough to turn
+    /// tightly, fast enough for the turn-MC's thrust (0.5).
+    pub avoid_fraction: f32,
+    /// Distance kept between schooling neighbours, body lengths ("roughly one body
+    /// length", §7.2; 1).
+    pub school_spacing_body_lengths: f32,
+    /// Slowest a schooling fish swims to match slow neighbours, fraction of its top
+    /// speed (0.2: the point-mass body's minimum speed in the reef; a muscle body
+    /// slower than that barely turns).
+    pub school_min_speed_fraction: f32,
+    /// Steepest climb or dive of a chase by a body that turns in circles, radians
+    /// (0.44, 25°, the physics tank's limit on intended pitch).
+    pub max_chase_pitch_rad: f32,
+    /// How much a fleeing schooling fish follows its own flight rather than its
+    /// school (0–1). Default 0.6 (chosen: the school stays together but every
+    /// fish still turns away from the predator).
+    pub escape_share_in_school: f32,
+}
+
+impl Default for BehaviourParams {
+    fn default() -> Self {
+        Self {
+            cruise_fraction: 0.7,
+            avoid_fraction: 0.5,
+            school_spacing_body_lengths: 1.0,
+            school_min_speed_fraction: 0.2,
+            max_chase_pitch_rad: 0.44,
+            escape_share_in_school: 0.6,
+        }
+    }
+}
+
+/// The motor choice's tuning (the muscle body's motor controllers for a
+/// routine's wish, `reef/motor_choice.rs`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MotorChoiceParams {
+    /// Smallest heading error the routine turns with a turn-MC turn, degrees: 90,
+    /// chosen, a goal at the fish's side or behind it (`docs/fish-mind.md`: the six
+    /// hungry fish of the *Feeding* demo ate 99, 145 and 160 plankton in 4 × 132 s
+    /// with 45°, 90° and 120°, 173 with the held bend alone: a turn-MC turn swims a
+    /// wide arc at full beat and overshoots near food). Below it the held bend
+    /// keeps the course (see `reef/motor_choice.rs`'s module doc).
+    pub turn_mc_min_deg: f32,
+    /// Bend per radian of heading error while keeping the course, 1/rad (3: full bend
+    /// from 19° of error). The physics scene's bridge, which turns whole corners with
+    /// the held bend, uses 4 (`motor_bridge::STEER_GAIN_PER_RAD`); here, where turns
+    /// of 90° and more go to the turn-MC, 4 measured worse on the reef demos (feeding
+    /// seeds 3–4: 27 plankton against 32 at 3; courtship seed 2 reached only nuzzling;
+    /// 25 collision starts in the muscle reef's minute on seed 2).
+    pub course_gain_per_rad: f32,
+    /// Fin pitch per radian of elevation error (2, chosen: a 15° climb request tilts
+    /// the fins by the full 0.5 rad).
+    pub pitch_gain: f32,
+    /// Largest fin pitch while swimming, radians (0.5, as in the fin tests of
+    /// `body/tests.rs`).
+    pub max_fin_pitch_rad: f32,
+    /// A fish swimming faster than this share of its top speed brakes with its fins
+    /// when the routine wants less than half its speed (0.3, the bridge's rule).
+    pub brake_above_fraction: f32,
+    /// swim-MC speed of a bobbing fish, fraction of the top speed (0.15, chosen:
+    /// enough water over the fins to lift and sink the fish, slow enough for the
+    /// braking fins to hold it almost in place; measured in `body/physical_fish.rs`).
+    pub bob_swim_fraction: f32,
+    /// Bobbing frequency, Hz (0.5, chosen: one rise and fall every 2 s).
+    pub bob_hz: f32,
+    /// Fin angle of a bobbing fish while it rises, radians from flat (1.1, chosen:
+    /// leading edge well up, the fin brakes and lifts). While it sinks the fins are
+    /// tilted the other way as far as they go (θ = π/4).
+    pub bob_lift_pitch_rad: f32,
+}
+
+impl Default for MotorChoiceParams {
+    fn default() -> Self {
+        Self {
+            turn_mc_min_deg: 90.0,
+            course_gain_per_rad: 3.0,
+            pitch_gain: 2.0,
+            max_fin_pitch_rad: 0.5,
+            brake_above_fraction: 0.3,
+            bob_swim_fraction: 0.15,
+            bob_hz: 0.5,
+            bob_lift_pitch_rad: 1.1,
         }
     }
 }

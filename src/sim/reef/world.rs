@@ -712,7 +712,8 @@ impl ReefWorld {
                     top_speed_m_per_s: top,
                     turning: p.is_turning(),
                 };
-                let intent = motor_choice::choose(&wish, &body, time_secs);
+                let intent =
+                    motor_choice::choose(&self.params.motor_choice, &wish, &body, time_secs);
                 let (moved, touch) =
                     step_and_constrain(drive, p, &intent, water, &self.tank, &self.obstacles);
                 self.constraint_moves += moved as u64;
