@@ -5,7 +5,8 @@
 //!
 //! Paper data stays where it is: the body (node masses, spring stiffnesses)
 //! in `body/body_layout.rs`, the mind's rates in `mind/mental_state.rs` and
-//! `mind/habits.rs`. Array sizes, counts and logging intervals stay consts
+//! `mind/habits.rs`, the paper's field of view and prey-cost weights β1, β2
+//! in `reef/perception.rs`. Array sizes, counts and logging intervals stay consts
 //! (`MAX_REEF_ANIMALS`, `MAX_FOOD`, `HISTORY_LEN`, `EVENT_LOG_LEN`, …), as does
 //! the point body's time step (`POINT_BODY_DT_SECS`, the world clock).
 
@@ -24,6 +25,8 @@ pub struct ReefParams {
     pub behaviour: BehaviourParams,
     /// The motor choice's numbers (`reef/motor_choice.rs`).
     pub motor_choice: MotorChoiceParams,
+    /// The vision sensor's and the school test's numbers (`reef/perception.rs`).
+    pub perception: PerceptionParams,
     /// Longest time since the last meal (and mating) a reef fish starts with,
     /// seconds. 30, chosen: the clocks differ from fish to fish, and a fish with
     /// Shoal's calm p0 that ate 0.7 of its appetite 30 s ago has hunger 0.55.
@@ -118,6 +121,7 @@ impl Default for ReefParams {
             courtship: CourtshipParams::default(),
             behaviour: BehaviourParams::default(),
             motor_choice: MotorChoiceParams::default(),
+            perception: PerceptionParams::default(),
             start_fed_for_max_secs: 30.0,
             courtship_digestion_fraction: 0.1,
             suck_range_body_lengths: 1.0,
@@ -297,6 +301,44 @@ impl Default for MotorChoiceParams {
             bob_swim_fraction: 0.15,
             bob_hz: 0.5,
             bob_lift_pitch_rad: 1.1,
+        }
+    }
+}
+
+/// The perception's tuning (`reef/perception.rs`). The paper's numbers (the 300°
+/// field of view, the prey cost's β1 and β2) stay consts there.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PerceptionParams {
+    /// Radius of the sphere by which a fish's body hides what lies behind it, body
+    /// lengths (0.3, chosen). The body is drawn, and rendered in the retina, as an
+    /// ellipsoid 1 body length long and 0.3 across; seen from the side it covers
+    /// π · 0.5 · 0.15 ≈ 0.24 square body lengths, as much as a disc of radius 0.27.
+    /// 0.3 rounds that up a little for the fins.
+    pub occluder_radius_body_lengths: f32,
+    /// A fish swims in a school (S_k = 1 in the prey cost) when at least this many
+    /// live fish of its kind and species are within
+    /// [`PerceptionParams::schoolmate_radius_body_lengths`] and head within
+    /// [`PerceptionParams::schoolmate_max_angle_rad`] of its heading (2, chosen: the
+    /// fewest that make a group around the fish, not a pair passing by).
+    pub schoolmates_for_s_k: usize,
+    /// How near a schoolmate must be, body lengths of the fish (3, chosen: schooling
+    /// fish keep about one body length apart, §7.2, so a fish in a school has its
+    /// nearest mates within one or two; three tolerates a school loosened by a turn
+    /// or a swerve).
+    pub schoolmate_radius_body_lengths: f32,
+    /// Largest angle between a schoolmate's heading and the fish's, radians (π/4, 45°,
+    /// chosen: a school swims roughly the same way; a fish crossing its path at a
+    /// right angle does not school with it).
+    pub schoolmate_max_angle_rad: f32,
+}
+
+impl Default for PerceptionParams {
+    fn default() -> Self {
+        Self {
+            occluder_radius_body_lengths: 0.3,
+            schoolmates_for_s_k: 2,
+            schoolmate_radius_body_lengths: 3.0,
+            schoolmate_max_angle_rad: std::f32::consts::FRAC_PI_4,
         }
     }
 }

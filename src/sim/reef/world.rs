@@ -548,13 +548,22 @@ impl ReefWorld {
             .collect();
         // S_k of the predator's prey cost: does the fish swim in a school now
         // (whatever it intends)?
-        let schooling: Vec<bool> = (0..seen.len()).map(|i| in_a_school(&seen, i)).collect();
+        let perception = &self.params.perception;
+        let schooling: Vec<bool> = (0..seen.len())
+            .map(|i| in_a_school(perception, &seen, i))
+            .collect();
         for (s, schooling) in seen.iter_mut().zip(schooling) {
             s.schooling = schooling;
         }
         let bodies: Vec<Sphere> = seen
             .iter()
-            .map(|s| fish_occluder(s.position_m, if s.alive { s.length_m } else { 0.0 }))
+            .map(|s| {
+                fish_occluder(
+                    perception,
+                    s.position_m,
+                    if s.alive { s.length_m } else { 0.0 },
+                )
+            })
             .collect();
         let refresh_brightness = self.steps.is_multiple_of(18);
         let threat_memory_secs = self.params.threat_memory_secs;
