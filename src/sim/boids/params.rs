@@ -17,7 +17,7 @@
 //! the benchmarks read.
 
 /// The boid world's tuning: the glass and the pond's edge for the SIMBA layer,
-/// and fear of sharks.
+/// fear of sharks, and the sharks' hunting.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BoidWorldParams {
     /// How far from a vertical glass wall the boid layer's wall algorithm starts
@@ -65,6 +65,8 @@ pub struct BoidWorldParams {
     /// Factor on the separation weight of a frightened fish. Default 0.5: with
     /// doubled cohesion, the school halves its spacing.
     pub fear_separation_factor: f32,
+    /// The sharks' hunting: confusion, strike and lunge.
+    pub shark: SharkHuntParams,
 }
 
 impl Default for BoidWorldParams {
@@ -79,6 +81,80 @@ impl Default for BoidWorldParams {
             alarm_threshold: 0.25,
             fear_cohesion_factor: 2.0,
             fear_separation_factor: 0.5,
+            shark: SharkHuntParams::default(),
+        }
+    }
+}
+
+/// The boid world's sharks' hunting tuning (`boids/shark.rs`, the confusion
+/// effect and the strike). The sharks' body and species numbers (length,
+/// speeds, force, vision) stay consts in `boids/shark.rs`, as do
+/// `MAX_SHARKS`, `MAX_CONFUSING_NEIGHBOURS` (a cost bound) and
+/// `RESPAWN_DISTANCE_M` (placement).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SharkHuntParams {
+    /// Distance from the shark's mouth (half a body length ahead of its centre) to
+    /// the target's centre that counts as a catch, in metres. Default 0.4 m
+    /// (tuned): about one fish length, a bite with a sweep of the head.
+    pub catch_distance_m: f32,
+    /// Time a shark cruises without hunting after a catch, in seconds. Default 5 s:
+    /// long enough to see the school re-form, short enough to keep a lesson lively.
+    pub satiated_secs: f32,
+    /// Fish closer than this to the shark's target confuse the shark, in metres.
+    /// Default 0.8 m (tuned): two fish lengths, the spacing inside a school;
+    /// loners are seldom within it of each other, so a shark hunting loners is
+    /// rarely confused.
+    pub confusion_radius_m: f32,
+    /// Rate of losing the lock per confusing fish, per second. Default 2.0 /s
+    /// (tuned): with the 7 close neighbours of a schooling fish the lock lasts
+    /// about a fourteenth of a second on average, almost never the
+    /// [`SharkHuntParams::strike_lock_secs`] a strike needs; a lone fish is never lost (Landeau &
+    /// Terborgh 1986: lone prey caught at once, shoals of 8+ rarely).
+    pub confusion_rate_per_neighbour_per_s: f32,
+    /// Time a shark must keep its lock on one fish before it can bite, in seconds.
+    /// Default 0.5 s (chosen): a strike needs aiming; a predator fixates its prey
+    /// before the final lunge. With the confusion rate above, a shark keeps a lock
+    /// on a fish with 7 close neighbours that long in about one attack in a
+    /// thousand, on a fish with one neighbour in three, on a lone fish always.
+    pub strike_lock_secs: f32,
+    /// A shark lunges at its target once it has kept its lock for
+    /// [`SharkHuntParams::strike_lock_secs`] and the target is closer than this, in metres. Default
+    /// 1.5 m (chosen): under a body length of the shark; predators strike from
+    /// close range, where a burst cannot be outturned.
+    pub lunge_distance_m: f32,
+    /// Longest a shark keeps a lock after it could first strike, seconds. Default
+    /// 2 s (chosen): a strike is a short burst; a shark that has not caught its
+    /// target by then breaks off, loses the lock and needs [`SharkHuntParams::refocus_secs`] to pick
+    /// a fish again (instead of circling one agile fish for minutes).
+    pub lunge_max_secs: f32,
+    /// Top speed of the lunge, m/s. Default 3.0 m/s (chosen): a burst of about
+    /// two body lengths per second for a 1.5–2 m reef shark, several times the
+    /// fish's 0.8 m/s; sharks strike prey at bursts of a few metres per second.
+    pub lunge_m_per_s: f32,
+    /// Largest steering acceleration during the lunge, m/s². Default 12 m/s²
+    /// (chosen): a predator's strike out-accelerates small fish for the fraction
+    /// of a second it lasts (Domenici 2001: fast-start accelerations of tens of
+    /// m/s² in predators as in prey), so a lone fish cannot simply dodge at its
+    /// 8 m/s²; only the confusion of a school (no lock lasts long enough) saves it.
+    pub lunge_force_m_per_s2: f32,
+    /// Time a shark that lost its target needs to pick a new one, in seconds.
+    /// Default 1 s: it swims on, confused, before singling out another fish.
+    pub refocus_secs: f32,
+}
+
+impl Default for SharkHuntParams {
+    fn default() -> Self {
+        Self {
+            catch_distance_m: 0.4,
+            satiated_secs: 5.0,
+            confusion_radius_m: 0.8,
+            confusion_rate_per_neighbour_per_s: 2.0,
+            strike_lock_secs: 0.5,
+            lunge_distance_m: 1.5,
+            lunge_max_secs: 2.0,
+            lunge_m_per_s: 3.0,
+            lunge_force_m_per_s2: 12.0,
+            refocus_secs: 1.0,
         }
     }
 }
