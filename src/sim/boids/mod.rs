@@ -7,6 +7,7 @@
 pub mod control_mode;
 pub mod forces;
 pub mod metrics;
+pub mod params;
 pub mod placement;
 pub mod predators;
 pub mod shark;

@@ -14,19 +14,23 @@ use crate::sim::common::spatial_grid::Nearest;
 use crate::sim::common::steering::{self, SteeringParams};
 use crate::sim::common::tank::Tank;
 
+use super::params::BoidWorldParams;
 use super::placement::stingray_fits;
 use super::world::*;
 
 /// The escape force of a fish and how urgent it is (0–1), or `None` when the
-/// fish is calm. A fish that notices a shark (within [`FEAR_RADIUS_M`] inside
-/// its 300° field of view, or within [`LATERAL_LINE_M`] from any direction)
-/// [`steering::evade`]s the nearest one it notices, at full urgency within
-/// [`LATERAL_LINE_M`] fading to a quarter at [`FEAR_RADIUS_M`] (a distant
-/// shark makes the school veer away together rather than scatter). A fish that
-/// notices none but is alarmed by frightened neighbours (`alarm`, their
-/// urgency × [`ALARM_SHARE`], see [`ALARM_THRESHOLD`]) evades the nearest shark
-/// with that urgency. The force is the maximum force × urgency.
+/// fish is calm. A fish that notices a shark (within
+/// [`BoidWorldParams::fear_radius_m`] inside its 300° field of view, or within
+/// [`BoidWorldParams::lateral_line_m`] from any direction) [`steering::evade`]s
+/// the nearest one it notices, at full urgency within the lateral line's range
+/// fading to a quarter at the fear radius (a distant shark makes the school veer
+/// away together rather than scatter). A fish that notices none but is alarmed by
+/// frightened neighbours (`alarm`, their urgency ×
+/// [`BoidWorldParams::alarm_share`], see [`BoidWorldParams::alarm_threshold`])
+/// evades the nearest shark with that urgency. The force is the maximum force ×
+/// urgency.
 pub(super) fn escape_force(
+    world: &BoidWorldParams,
     position_m: Vec3,
     velocity_m_per_s: Vec3,
     sharks: &[Shark],
@@ -41,7 +45,8 @@ pub(super) fn escape_force(
         let offset_m = shark.body.position_m - position_m;
         let distance_m = offset_m.length();
         let in_view = heading.dot(offset_m) >= cos_half_view * distance_m;
-        let seen = distance_m < LATERAL_LINE_M || (distance_m < FEAR_RADIUS_M && in_view);
+        let seen =
+            distance_m < world.lateral_line_m || (distance_m < world.fear_radius_m && in_view);
         if seen && noticed.is_none_or(|(d, _)| distance_m < d) {
             noticed = Some((distance_m, shark));
         }
@@ -51,14 +56,15 @@ pub(super) fn escape_force(
     }
     let (urgency, shark) = match (noticed, nearest) {
         (Some((distance_m, shark)), _) => {
-            let urgency = if distance_m <= LATERAL_LINE_M {
+            let urgency = if distance_m <= world.lateral_line_m {
                 1.0
             } else {
-                1.0 - 0.75 * (distance_m - LATERAL_LINE_M) / (FEAR_RADIUS_M - LATERAL_LINE_M)
+                1.0 - 0.75 * (distance_m - world.lateral_line_m)
+                    / (world.fear_radius_m - world.lateral_line_m)
             };
             (urgency.max(alarm.min(1.0)), shark)
         }
-        (None, Some((_, shark))) if alarm >= ALARM_THRESHOLD => (alarm.min(1.0), shark),
+        (None, Some((_, shark))) if alarm >= world.alarm_threshold => (alarm.min(1.0), shark),
         _ => return None,
     };
     let evade = steering::evade(
@@ -166,6 +172,7 @@ impl World {
             response_time_s: 1.0,
             clear_sight_m: 0.0,
         };
+        let hunt = self.world_params.shark.clone();
         for s in 0..self.sharks.len() {
             let mut shark = self.sharks[s];
             let params = shark::shark_params(&self.params, shark.body.body_length_m);
@@ -180,18 +187,18 @@ impl World {
                     None => true,
                     Some(prey) => {
                         // A strike that has not caught the fish by now has failed.
-                        let failed = shark.lock_secs > shark::STRIKE_LOCK_S + shark::LUNGE_MAX_S;
+                        let failed = shark.lock_secs > hunt.strike_lock_secs + hunt.lunge_max_secs;
                         let far = failed
                             || prey.position_m.distance(shark.body.position_m)
                                 > shark::SHARK_VISION_M * 1.5;
                         let confusing = self.count_near(prey.position_m, t);
-                        let p_lose = shark::lose_lock_probability(confusing, DT_SECS);
+                        let p_lose = shark::lose_lock_probability(&hunt, confusing, DT_SECS);
                         far || self.rng.random::<f32>() < p_lose
                     }
                 };
                 if lost {
                     shark.target = None;
-                    shark.refocus_secs = shark::REFOCUS_S;
+                    shark.refocus_secs = hunt.refocus_secs;
                 } else {
                     shark.lock_secs += DT_SECS;
                 }
@@ -214,11 +221,11 @@ impl World {
                 .target
                 .and_then(|t| self.fish.get(t))
                 .is_some_and(|prey| {
-                    shark.lock_secs >= shark::STRIKE_LOCK_S
-                        && prey.position_m.distance(before.position_m) < shark::LUNGE_DISTANCE_M
+                    shark.lock_secs >= hunt.strike_lock_secs
+                        && prey.position_m.distance(before.position_m) < hunt.lunge_distance_m
                 });
             let params = if lunging {
-                shark::lunge_params(&params)
+                shark::lunge_params(&hunt, &params)
             } else {
                 params
             };
@@ -260,14 +267,14 @@ impl World {
             shark.body.advance_tail_phase(DT_SECS);
             // The bite.
             if let Some(t) = shark.target
-                && shark.lock_secs >= shark::STRIKE_LOCK_S
+                && shark.lock_secs >= hunt.strike_lock_secs
                 && let Some(prey) = self.fish.get(t)
-                && prey.position_m.distance(shark.mouth_m()) < shark::CATCH_DISTANCE_M
+                && prey.position_m.distance(shark.mouth_m()) < hunt.catch_distance_m
             {
                 shark.catches += 1;
                 self.catches += 1;
                 shark.target = None;
-                shark.satiated_secs = shark::SATIATED_S;
+                shark.satiated_secs = hunt.satiated_secs;
                 self.sharks[s] = shark;
                 let replacement = self.spawn_fish_far_from_sharks();
                 self.fish[t] = replacement;
@@ -277,14 +284,18 @@ impl World {
         }
     }
 
-    /// Fish (other than `except`) within [`shark::CONFUSION_RADIUS_M`] of `p`,
+    /// Fish (other than `except`) within
+    /// [`SharkHuntParams::confusion_radius_m`](crate::sim::boids::params::SharkHuntParams::confusion_radius_m)
+    /// of `p`,
     /// counted up to [`shark::MAX_CONFUSING_NEIGHBOURS`] (snapshot positions).
     pub(super) fn count_near(&self, p: Vec3, except: usize) -> u32 {
         let mut nearest = Nearest::new(shark::MAX_CONFUSING_NEIGHBOURS as usize);
-        self.grid
-            .k_nearest(p, shark::CONFUSION_RADIUS_M, &mut nearest, |j, _, _| {
-                j != except
-            });
+        self.grid.k_nearest(
+            p,
+            self.world_params.shark.confusion_radius_m,
+            &mut nearest,
+            |j, _, _| j != except,
+        );
         nearest.len() as u32
     }
 }

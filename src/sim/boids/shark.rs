@@ -7,15 +7,18 @@
 //! Terborgh 1986 (Anim. Behav. 34:1372) saw largemouth bass catch lone silvery
 //! minnows at once but rarely succeed against shoals of 8 or more, because the
 //! bass kept switching targets. Here, each second, the shark loses its lock with
-//! rate [`CONFUSION_RATE_PER_NEIGHBOUR_PER_S`] × (fish within
-//! [`CONFUSION_RADIUS_M`] of its target), and then needs
-//! [`REFOCUS_S`] to pick a new one: a lone fish is never lost, a fish in a tight
-//! school almost at once. **The strike**: after [`STRIKE_LOCK_S`] of lock, a
-//! shark within [`LUNGE_DISTANCE_M`] of its target lunges, faster and more agile
-//! than the fish for a moment ([`lunge_params`]), and breaks off after
-//! [`LUNGE_MAX_S`] if it missed. A catch (the target within [`CATCH_DISTANCE_M`]
-//! of the mouth) is counted, the fish reappears far away, and the shark cruises
-//! satiated for [`SATIATED_S`].
+//! rate [`SharkHuntParams::confusion_rate_per_neighbour_per_s`] × (fish within
+//! [`SharkHuntParams::confusion_radius_m`] of its target), and then needs
+//! [`SharkHuntParams::refocus_secs`] to pick a new one: a lone fish is never
+//! lost, a fish in a tight school almost at once. **The strike**: after
+//! [`SharkHuntParams::strike_lock_secs`] of lock, a shark within
+//! [`SharkHuntParams::lunge_distance_m`] of its target lunges, faster and more
+//! agile than the fish for a moment ([`lunge_params`]), and breaks off after
+//! [`SharkHuntParams::lunge_max_secs`] if it missed. A catch (the target within
+//! [`SharkHuntParams::catch_distance_m`] of the mouth) is counted, the fish
+//! reappears far away, and the shark cruises satiated for
+//! [`SharkHuntParams::satiated_secs`]. The hunting numbers are
+//! [`SharkHuntParams`] (`BoidWorldParams::shark`).
 //!
 //! [`pursue`]: crate::sim::common::steering::pursue
 
@@ -24,6 +27,7 @@ use std::f32::consts::TAU;
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
+use crate::sim::boids::params::SharkHuntParams;
 use crate::sim::common::fish::Fish;
 use crate::sim::common::steering::SteeringParams;
 
@@ -62,66 +66,9 @@ pub const SHARK_VISION_M: f32 = 6.0;
 /// The shark's field of view, radians. Default 300° (as the fish's, TT §5).
 pub const SHARK_VISION_ANGLE_RAD: f32 = 300.0 * std::f32::consts::PI / 180.0;
 
-/// Distance from the shark's mouth (half a body length ahead of its centre) to
-/// the target's centre that counts as a catch, in metres. Default 0.4 m
-/// (tuned): about one fish length, a bite with a sweep of the head.
-pub const CATCH_DISTANCE_M: f32 = 0.4;
-
-/// Time a shark cruises without hunting after a catch, in seconds. Default 5 s:
-/// long enough to see the school re-form, short enough to keep a lesson lively.
-pub const SATIATED_S: f32 = 5.0;
-
-/// Fish closer than this to the shark's target confuse the shark, in metres.
-/// Default 0.8 m (tuned): two fish lengths, the spacing inside a school;
-/// loners are seldom within it of each other, so a shark hunting loners is
-/// rarely confused.
-pub const CONFUSION_RADIUS_M: f32 = 0.8;
-
-/// Rate of losing the lock per confusing fish, per second. Default 2.0 /s
-/// (tuned): with the 7 close neighbours of a schooling fish the lock lasts
-/// about a fourteenth of a second on average, almost never the
-/// [`STRIKE_LOCK_S`] a strike needs; a lone fish is never lost (Landeau &
-/// Terborgh 1986: lone prey caught at once, shoals of 8+ rarely).
-pub const CONFUSION_RATE_PER_NEIGHBOUR_PER_S: f32 = 2.0;
-
-/// Time a shark must keep its lock on one fish before it can bite, in seconds.
-/// Default 0.5 s (chosen): a strike needs aiming; a predator fixates its prey
-/// before the final lunge. With the confusion rate above, a shark keeps a lock
-/// on a fish with 7 close neighbours that long in about one attack in a
-/// thousand, on a fish with one neighbour in three, on a lone fish always.
-pub const STRIKE_LOCK_S: f32 = 0.5;
-
-/// A shark lunges at its target once it has kept its lock for
-/// [`STRIKE_LOCK_S`] and the target is closer than this, in metres. Default
-/// 1.5 m (chosen): under a body length of the shark; predators strike from
-/// close range, where a burst cannot be outturned.
-pub const LUNGE_DISTANCE_M: f32 = 1.5;
-
-/// Longest a shark keeps a lock after it could first strike, seconds. Default
-/// 2 s (chosen): a strike is a short burst; a shark that has not caught its
-/// target by then breaks off, loses the lock and needs [`REFOCUS_S`] to pick
-/// a fish again (instead of circling one agile fish for minutes).
-pub const LUNGE_MAX_S: f32 = 2.0;
-
-/// Top speed of the lunge, m/s. Default 3.0 m/s (chosen): a burst of about
-/// two body lengths per second for a 1.5–2 m reef shark, several times the
-/// fish's 0.8 m/s; sharks strike prey at bursts of a few metres per second.
-pub const LUNGE_M_PER_S: f32 = 3.0;
-
-/// Largest steering acceleration during the lunge, m/s². Default 12 m/s²
-/// (chosen): a predator's strike out-accelerates small fish for the fraction
-/// of a second it lasts (Domenici 2001: fast-start accelerations of tens of
-/// m/s² in predators as in prey), so a lone fish cannot simply dodge at its
-/// 8 m/s²; only the confusion of a school (no lock lasts long enough) saves it.
-pub const LUNGE_FORCE_M_PER_S2: f32 = 12.0;
-
 /// Confusing neighbours counted at most. Default 15: beyond that the shark is
 /// confused anyway; bounds the cost of counting in a dense school.
 pub const MAX_CONFUSING_NEIGHBOURS: u32 = 15;
-
-/// Time a shark that lost its target needs to pick a new one, in seconds.
-/// Default 1 s: it swims on, confused, before singling out another fish.
-pub const REFOCUS_S: f32 = 1.0;
 
 /// A caught fish reappears at least this far from every shark, in metres.
 /// Default 5 m: out of reach, on the other side of the tank.
@@ -171,22 +118,23 @@ pub fn shark_params(fish_params: &SteeringParams, body_length_m: f32) -> Steerin
     }
 }
 
-/// Steering limits of a shark in its final lunge: [`LUNGE_M_PER_S`] and
-/// [`LUNGE_FORCE_M_PER_S2`] instead of the attack speed and force.
-pub fn lunge_params(params: &SteeringParams) -> SteeringParams {
+/// Steering limits of a shark in its final lunge:
+/// [`SharkHuntParams::lunge_m_per_s`] and
+/// [`SharkHuntParams::lunge_force_m_per_s2`] instead of the attack speed and force.
+pub fn lunge_params(hunt: &SharkHuntParams, params: &SteeringParams) -> SteeringParams {
     SteeringParams {
-        max_speed_m_per_s: LUNGE_M_PER_S,
-        max_force_m_per_s2: LUNGE_FORCE_M_PER_S2,
+        max_speed_m_per_s: hunt.lunge_m_per_s,
+        max_force_m_per_s2: hunt.lunge_force_m_per_s2,
         ..*params
     }
 }
 
 /// Probability that a shark loses its lock during one step of `dt_secs` when
-/// `neighbours` fish are within [`CONFUSION_RADIUS_M`] of its target:
-/// `1 − exp(−rate · n · dt)`, n capped at [`MAX_CONFUSING_NEIGHBOURS`].
-pub fn lose_lock_probability(neighbours: u32, dt_secs: f32) -> f32 {
+/// `neighbours` fish are within [`SharkHuntParams::confusion_radius_m`] of its
+/// target: `1 − exp(−rate · n · dt)`, n capped at [`MAX_CONFUSING_NEIGHBOURS`].
+pub fn lose_lock_probability(hunt: &SharkHuntParams, neighbours: u32, dt_secs: f32) -> f32 {
     let n = neighbours.min(MAX_CONFUSING_NEIGHBOURS) as f32;
-    1.0 - (-CONFUSION_RATE_PER_NEIGHBOUR_PER_S * n * dt_secs).exp()
+    1.0 - (-hunt.confusion_rate_per_neighbour_per_s * n * dt_secs).exp()
 }
 
 /// A new shark at `position_m`, heading at `yaw_rad` at cruising speed, with
@@ -216,12 +164,15 @@ mod tests {
 
     #[test]
     fn a_lone_fish_never_confuses_the_shark_and_a_schooled_one_soon_does() {
-        assert_eq!(lose_lock_probability(0, 1.0 / 60.0), 0.0);
+        assert_eq!(
+            lose_lock_probability(&SharkHuntParams::default(), 0, 1.0 / 60.0),
+            0.0
+        );
         // Within one second, with 7 close neighbours: practically always lost.
-        let per_step = lose_lock_probability(7, 1.0 / 60.0);
+        let per_step = lose_lock_probability(&SharkHuntParams::default(), 7, 1.0 / 60.0);
         let kept_for_a_second = (1.0 - per_step).powi(60);
         assert!(kept_for_a_second < 0.1, "{kept_for_a_second}");
-        assert!(lose_lock_probability(100, 1.0) <= 1.0);
+        assert!(lose_lock_probability(&SharkHuntParams::default(), 100, 1.0) <= 1.0);
     }
 
     #[test]

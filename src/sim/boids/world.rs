@@ -15,6 +15,7 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
+use super::params::BoidWorldParams;
 use super::placement::{place_obstacles, valid_obstacles};
 use super::predators::escape_force;
 use crate::sim::boids::control_mode::{self, ControlMode};
@@ -71,59 +72,6 @@ pub(super) const PLACEMENT_ATTEMPTS: usize = 200;
 /// metres. Default 0.3 m: about one body length, so no fish starts touching
 /// anything.
 pub(super) const SPAWN_CLEARANCE_M: f32 = 0.3;
-
-/// How far from a vertical glass wall the boid layer's wall algorithm starts
-/// to act, in metres. Default 1.5 m (tuned): with containment's Table 1 share
-/// (26 % of 25 % of the 8 m/s² maximum ≈ 0.5 m/s²) a fish at top speed turns
-/// along the glass within about 1.3 m, so it rarely needs the hard rule.
-pub const BOID_WALL_RANGE_M: f32 = 1.5;
-
-/// How far from the glass, sand and surface the boid layer's containment
-/// ("stay in the pond") keeps a fish's predicted path (1.5 s ahead), in metres.
-/// Default 1.0 m (tuned on seeds 1–12, `docs/boids.md`): about three body
-/// lengths, so the containment slider visibly keeps fish out of the pond's edge
-/// zone (at 0.5 m the wall algorithm acted first and the slider did little).
-pub const POND_COMFORT_MARGIN_M: f32 = 1.0;
-
-/// Fish notice a shark within this distance when it is inside their field of
-/// view (300°), in metres. Default 4 m (chosen): a shark 2 m long is plain to
-/// see at that range in an aquarium; beyond it the fish keep schooling.
-pub const FEAR_RADIUS_M: f32 = 4.0;
-
-/// Fish notice a shark within this distance from any direction, in metres,
-/// through the pressure waves on their lateral line. Default 3 m (chosen): the
-/// bow wave of a 2 m shark carries a body length or two beyond it; without it a
-/// fleeing fish forgot the shark as soon as it had turned its back (the shark
-/// fell into the blind cone) and slowed down.
-pub const LATERAL_LINE_M: f32 = 3.0;
-
-/// Share of a frightened neighbour's urgency that a fish takes on when it sees
-/// that neighbour flee (dimensionless, 0–1). Default 0.8 (chosen): the "many
-/// eyes" of a school, whose fright spreads faster than the predator swims (the
-/// Trafalgar effect, Treherne & Foster 1981, Anim. Behav. 29:911), so the
-/// whole school turns away together instead of one fish bolting alone. Each
-/// hop fades the alarm by this factor; see [`ALARM_THRESHOLD`].
-pub const ALARM_SHARE: f32 = 0.8;
-
-/// Farthest heeded neighbour whose fright a fish takes on, metres. Default
-/// 1.0 m (chosen): two to three body lengths, the spacing of a school; a
-/// neighbour's fast start is plain to see that close. Solitary fish keep
-/// farther apart and so mostly meet a shark alone.
-pub const ALARM_RANGE_M: f32 = 1.0;
-
-/// Smallest passed-on alarm that frightens a fish (urgency, 0–1). Default
-/// 0.25 (chosen): the alarm crosses about six neighbours (0.8⁶ ≈ 0.26) and then
-/// dies out, so a school far from the shark keeps schooling.
-pub const ALARM_THRESHOLD: f32 = 0.25;
-
-/// Factor on the cohesion weight of a frightened fish (capped at 100).
-/// Default 2: prey tighten their school under threat (Magurran & Pitcher 1987,
-/// Proc. R. Soc. B 229:439: minnow shoals compact when a pike approaches).
-pub const FEAR_COHESION_FACTOR: f32 = 2.0;
-
-/// Factor on the separation weight of a frightened fish. Default 0.5: with
-/// doubled cohesion, the school halves its spacing.
-pub const FEAR_SEPARATION_FACTOR: f32 = 0.5;
 
 /// Side of the far field's cells as a fraction of the vision distance.
 /// Default 0.5 (2.5 m for 5 m vision: 40 cells in the default tank): coarse
@@ -276,6 +224,8 @@ pub struct World {
     pub(super) sharks: Vec<Shark>,
     pub(super) stingrays: Vec<Stingray>,
     pub(super) params: SteeringParams,
+    /// The world's tuning (walls, the pond's edge, fear).
+    pub(super) world_params: BoidWorldParams,
     pub(super) rng: ChaCha8Rng,
     pub(super) time_secs: f64,
     pub(super) steps: u64,
@@ -343,6 +293,7 @@ impl World {
             sharks: Vec::new(),
             stingrays: Vec::new(),
             params: SteeringParams::default(),
+            world_params: BoidWorldParams::default(),
             rng,
             time_secs: 0.0,
             steps: 0,
@@ -436,6 +387,11 @@ impl World {
         self.config.seed
     }
 
+    /// The world's tuning (walls, the pond's edge, fear; see [`BoidWorldParams`]).
+    pub fn world_params(&self) -> &BoidWorldParams {
+        &self.world_params
+    }
+
     /// The steering tuning in use.
     pub fn params(&self) -> &SteeringParams {
         &self.params
@@ -513,9 +469,9 @@ impl World {
         self.velocities_m_per_s.clear();
         self.velocities_m_per_s
             .extend(self.fish.iter().map(|f| f.velocity_m_per_s));
-        let vision_m = self
-            .boids
-            .map_or(FEAR_RADIUS_M, |b| b.perception.vision_distance_m);
+        let vision_m = self.boids.map_or(self.world_params.fear_radius_m, |b| {
+            b.perception.vision_distance_m
+        });
         self.rebuild_neighbour_grid(vision_m);
         match self.boids {
             Some(boids) => self.step_boid_fish(&boids),
@@ -539,6 +495,7 @@ impl World {
             let (containment, avoidance) =
                 glass_and_rock_forces(&before, &self.tank, &self.avoid_all, &params);
             let escape = escape_force(
+                &self.world_params,
                 before.position_m,
                 before.velocity_m_per_s,
                 &self.sharks,
@@ -655,10 +612,12 @@ impl World {
             let alarm = heeded
                 .neighbours
                 .iter()
-                .filter(|&(_, d2)| d2 <= ALARM_RANGE_M * ALARM_RANGE_M)
+                .filter(|&(_, d2)| {
+                    d2 <= self.world_params.alarm_range_m * self.world_params.alarm_range_m
+                })
                 .map(|(j, _)| self.fear[j])
                 .fold(0.0, f32::max)
-                * ALARM_SHARE;
+                * self.world_params.alarm_share;
             // Containment: stay in the pond, away from its edges (turn back
             // towards open water when the path leaves the comfortable middle).
             let containment = forces::steer_towards(
@@ -668,7 +627,7 @@ impl World {
                         velocity_m_per_s,
                         &self.tank,
                         params.containment_look_ahead_s,
-                        POND_COMFORT_MARGIN_M,
+                        self.world_params.pond_comfort_margin_m,
                         params.max_speed_m_per_s,
                     ),
                 velocity_m_per_s,
@@ -682,7 +641,7 @@ impl World {
                     position_m,
                     velocity_m_per_s,
                     &self.tank,
-                    BOID_WALL_RANGE_M,
+                    self.world_params.wall_range_m,
                 ) + steering::avoid_obstacles(
                     position_m,
                     velocity_m_per_s,
@@ -706,13 +665,20 @@ impl World {
                 neighbours.separation_m_per_s2,
                 avoidance,
             ];
-            let escape = escape_force(position_m, velocity_m_per_s, &self.sharks, &params, alarm);
+            let escape = escape_force(
+                &self.world_params,
+                position_m,
+                velocity_m_per_s,
+                &self.sharks,
+                &params,
+                alarm,
+            );
             self.next_fear[i] = escape.map_or(0.0, |(_, urgency)| urgency);
             let escape = escape.map(|(force, _)| force);
             let mut weights = boids.weights;
             if escape.is_some() {
-                weights[2] = (weights[2] * FEAR_COHESION_FACTOR).min(100.0);
-                weights[3] *= FEAR_SEPARATION_FACTOR;
+                weights[2] = (weights[2] * self.world_params.fear_cohesion_factor).min(100.0);
+                weights[3] *= self.world_params.fear_separation_factor;
             }
             let mut needs = control_mode::needs_from_forces(&forces, max_force);
             // Classic ranks the neighbour urges by how much each is needed

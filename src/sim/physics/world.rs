@@ -24,7 +24,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
-use crate::sim::body::drive::{drive_physical, step_and_constrain};
+use crate::sim::body::drive::{DriveParams, drive_physical, step_and_constrain};
 use crate::sim::body::motor_bridge::MotorIntent;
 use crate::sim::body::physical_fish::{BodySpecies, PhysicalFish};
 use crate::sim::boids::control_mode::{self, ControlMode, GROUP_WEIGHTS};
@@ -42,24 +42,33 @@ pub const MAX_PHYSICAL_FISH: usize = 300;
 /// Most physical sharks in one tank.
 pub const MAX_PHYSICAL_SHARKS: usize = 3;
 
-/// Time in which a steering force would reach its desired velocity, seconds
-/// (0.25, chosen; the schooling lab's *group* preset uses 0.1 for its
-/// point masses).
-const RESPONSE_TIME_SECS: f32 = 0.25;
-/// How far ahead in time containment predicts the path, seconds. 10, chosen: at
-/// cruising speed (0.2 m/s for the default fish) the fish reacts 2 m before the
-/// margin, time for the body's held bend (26–28°/s, `body/motor_bridge.rs`) to turn
-/// it round with room to spare.
-const CONTAINMENT_LOOK_AHEAD_SECS: f32 = 10.0;
-/// Room kept from the glass, floor and surface by the predicted path, body
-/// lengths (2, chosen: the turn itself swings the tail out by about one).
-const CONTAINMENT_MARGIN_BODY_LENGTHS: f32 = 2.0;
-/// A fish sees a shark and flees within this many shark lengths (2, chosen: 3 m
-/// for the default shark, a few seconds of the fish's swimming).
-const FLEE_SHARK_LENGTHS: f32 = 2.0;
-/// Wander jitter per step, radians: the boid layer's 0.2 rad per 1/60 s step
-/// scaled to this step by √(Δt·60), so the wander target diffuses at the same rate.
-const WANDER_JITTER_RAD: f32 = 0.36;
+/// The physics tank's tuning: the shared drive recipe's numbers
+/// ([`DriveParams::physics_tank`]: response time, containment look-ahead and
+/// margin, the body's reach) and the tank's own. Paper data (node masses,
+/// spring stiffnesses) stays in `body/body_layout.rs`; tank sizes and counts
+/// stay consts ([`MAX_PHYSICAL_FISH`], [`MAX_PHYSICAL_SHARKS`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PhysicsParams {
+    /// The shared "steer a muscle fish within its body's reach" recipe, with the
+    /// physics tank's containment (10 s ahead, 2 body lengths).
+    pub drive: DriveParams,
+    /// A fish sees a shark and flees within this many shark lengths (2, chosen: 3 m
+    /// for the default shark, a few seconds of the fish's swimming).
+    pub flee_shark_lengths: f32,
+    /// Wander jitter per step, radians (0.36): the boid layer's 0.2 rad per 1/60 s step
+    /// scaled to this step by √(Δt·60), so the wander target diffuses at the same rate.
+    pub wander_jitter_rad: f32,
+}
+
+impl Default for PhysicsParams {
+    fn default() -> Self {
+        Self {
+            drive: DriveParams::physics_tank(),
+            flee_shark_lengths: 2.0,
+            wander_jitter_rad: 0.36,
+        }
+    }
+}
 
 /// How the fish choose where to swim.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -121,6 +130,8 @@ pub struct PhysicsConfig {
 /// The tank of physical fish.
 #[derive(Clone, Debug)]
 pub struct PhysicsWorld {
+    /// The tank's tuning.
+    params: PhysicsParams,
     tank: Tank,
     obstacles: Vec<Obstacle>,
     /// Fish first, then sharks.
@@ -153,6 +164,7 @@ impl PhysicsWorld {
         let tank = Tank::default();
         let obstacles = config.obstacles;
         let mut world = Self {
+            params: PhysicsParams::default(),
             tank,
             obstacles,
             animals: Vec::new(),
@@ -178,6 +190,11 @@ impl PhysicsWorld {
 
     pub fn tank(&self) -> &Tank {
         &self.tank
+    }
+
+    /// The tank's tuning.
+    pub fn params(&self) -> &PhysicsParams {
+        &self.params
     }
 
     /// The seed the tank was built from.
@@ -371,14 +388,15 @@ impl PhysicsWorld {
                 .max(0.1 * a.top_speed_m_per_s());
             self.seen_velocities_m_per_s.push(a.heading() * speed);
         }
+        let response_time_secs = self.params.drive.response_time_secs;
         let perception_of = |a: &PhysicalFish| Perception {
             vision_distance_m: 5.0,
             vision_angle_rad: 300f32.to_radians(),
             max_speed_m_per_s: a.top_speed_m_per_s(),
-            max_force_m_per_s2: a.top_speed_m_per_s() / RESPONSE_TIME_SECS,
+            max_force_m_per_s2: a.top_speed_m_per_s() / response_time_secs,
             max_neighbours: forces::TOPOLOGICAL_NEIGHBOURS,
             separation_distance_m: 1.2 * a.body_length_m(),
-            response_time_s: RESPONSE_TIME_SECS,
+            response_time_s: response_time_secs,
             // Muscle fish are few and far apart: every heeded neighbour counts.
             clear_sight_m: 0.0,
         };
@@ -416,6 +434,7 @@ impl PhysicsWorld {
             } else {
                 let steering = self.steering(i, &perception_of(&self.animals[i]), &sharks);
                 drive_physical(
+                    &self.params.drive,
                     &mut self.animals[i],
                     &mut self.intended_m_per_s[i],
                     steering,
@@ -426,6 +445,7 @@ impl PhysicsWorld {
             self.desired_m_per_s[i] = self.intended_m_per_s[i];
             let water = self.water_at(self.animals[i].point.position_m);
             let (moved, touch) = step_and_constrain(
+                &self.params.drive,
                 &mut self.animals[i],
                 &intent,
                 water,
@@ -455,15 +475,15 @@ impl PhysicsWorld {
             cruise_speed_body_lengths_per_s: 0.7
                 * crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC,
             max_force_m_per_s2: max_force,
-            wander_jitter_rad: WANDER_JITTER_RAD,
-            containment_look_ahead_s: CONTAINMENT_LOOK_AHEAD_SECS,
-            containment_margin_m: CONTAINMENT_MARGIN_BODY_LENGTHS * a.body_length_m(),
+            wander_jitter_rad: self.params.wander_jitter_rad,
+            containment_look_ahead_s: self.params.drive.containment_look_ahead_secs,
+            containment_margin_m: self.params.drive.containment_margin_m(a.body_length_m()),
             avoidance_look_ahead_m: 3.0,
             ..SteeringParams::default()
         };
         // Containment by the boid layer's turn-towards-open-water rule
         // (`steering::containment`): when the path predicted
-        // CONTAINMENT_LOOK_AHEAD_SECS ahead comes within the margin of the glass,
+        // `containment_look_ahead_secs` ahead comes within the margin of the glass,
         // turn towards the middle of the tank; near the sand or the surface, pitch.
         // Chosen over the wall-following rule for bodies that turn slowly: in a
         // corner the two walls' "along the wall" pushes cancel the velocity and
@@ -485,7 +505,7 @@ impl PhysicsWorld {
                 params.avoidance_look_ahead_m,
                 steering::AVOIDANCE_CLEARANCE_M + 0.5 * a.body_length_m(),
                 top,
-            ) / RESPONSE_TIME_SECS,
+            ) / self.params.drive.response_time_secs,
             max_force,
         );
         let schooling = is_fish && self.behaviour == PhysicsBehaviour::School;
@@ -543,10 +563,11 @@ impl PhysicsWorld {
         let a = &mut self.animals[i];
         a.point.wander_angle_rad = point.wander_angle_rad;
         a.point.wander_pitch_rad = point.wander_pitch_rad;
+        let flee_shark_lengths = self.params.flee_shark_lengths;
         let flee = if is_fish {
             sharks
                 .iter()
-                .filter(|(p, len)| p.distance(position) < FLEE_SHARK_LENGTHS * len)
+                .filter(|(p, len)| p.distance(position) < flee_shark_lengths * len)
                 .map(|(p, _)| steering::flee(position, velocity, *p, top, max_force))
                 .fold(Vec3::ZERO, |sum, f| sum + f)
         } else {

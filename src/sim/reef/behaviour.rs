@@ -19,22 +19,12 @@
 //!   about one body length from the nearest, close up on the group if it drifts
 //!   away.
 //!
-//! *chasing-target* underlies eating, mating and (for predators) hunting.
+//! *chasing-target* underlies eating, mating and (for predators) hunting. The
+//! routines' numbers are [`BehaviourParams`] (`ReefParams::behaviour`).
 
 use glam::Vec3;
 
-/// Cruising speed, fraction of the top speed (0.7, the physics scene's value).
-pub const CRUISE_FRACTION: f32 = 0.7;
-/// Speed while avoiding, fraction of the top speed: slow enough to turn
-/// tightly, fast enough for the turn-MC's thrust (0.5).
-pub const AVOID_FRACTION: f32 = 0.5;
-/// Distance kept between schooling neighbours, body lengths ("roughly one body
-/// length", §7.2).
-pub const SCHOOL_SPACING_BODY_LENGTHS: f32 = 1.0;
-/// Slowest a schooling fish swims to match slow neighbours, fraction of its top
-/// speed (0.2: the point-mass body's minimum speed in the reef; a muscle body
-/// slower than that barely turns).
-pub const SCHOOL_MIN_SPEED_FRACTION: f32 = 0.2;
+use crate::sim::reef::params::BehaviourParams;
 
 /// The fish whose behaviour is computed.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -55,6 +45,7 @@ pub struct Me {
 /// circle, then turns (the shortest path of a car that cannot turn tighter,
 /// Dubins 1957).
 pub fn chase(
+    params: &BehaviourParams,
     me: &Me,
     target_m: Vec3,
     speed_fraction: f32,
@@ -86,7 +77,7 @@ pub fn chase(
         let pitch = offset
             .y
             .atan2(level.length())
-            .clamp(-MAX_CHASE_PITCH_RAD, MAX_CHASE_PITCH_RAD);
+            .clamp(-params.max_chase_pitch_rad, params.max_chase_pitch_rad);
         // Slow down for a sharp turn: the circle shrinks with the speed.
         let bearing_cos = horizontal.dot(forward).max(0.0);
         let speed = speed * (0.5 + 0.5 * bearing_cos);
@@ -95,15 +86,11 @@ pub fn chase(
     offset.normalize_or(me.heading) * speed
 }
 
-/// Steepest climb or dive of a chase by a body that turns in circles, radians
-/// (25°, the physics tank's limit on intended pitch).
-const MAX_CHASE_PITCH_RAD: f32 = 0.44;
-
 /// avoiding-static-obstacle / avoiding-fish: turn away from `obstacle_m`
 /// (the nearest point of the obstacle), towards the side it is not on. A calm
 /// fish slows down to turn tightly; a frightened one (`fear` in [0, 1]) keeps
 /// its speed, swerving without losing ground to the predator.
-pub fn avoid(me: &Me, obstacle_m: Vec3, fear: f32) -> Vec3 {
+pub fn avoid(params: &BehaviourParams, me: &Me, obstacle_m: Vec3, fear: f32) -> Vec3 {
     let to = obstacle_m - me.position_m;
     let flat = Vec3::new(1.0, 0.0, 1.0);
     let forward = (me.heading * flat).normalize_or(Vec3::X);
@@ -115,19 +102,25 @@ pub fn avoid(me: &Me, obstacle_m: Vec3, fear: f32) -> Vec3 {
         0.0
     };
     let direction = (forward * 0.4 + side + Vec3::Y * away_up).normalize_or(side);
-    direction * AVOID_FRACTION.max(fear.clamp(0.0, 1.0)) * me.top_speed_m_per_s
+    direction * params.avoid_fraction.max(fear.clamp(0.0, 1.0)) * me.top_speed_m_per_s
 }
 
 /// avoiding-fish for a fish swimming the same way just ahead: fall back to a
 /// little slower than it, edging to the side it is not on.
-pub fn fall_back(me: &Me, other_m: Vec3, other_velocity_m_per_s: Vec3) -> Vec3 {
+pub fn fall_back(
+    params: &BehaviourParams,
+    me: &Me,
+    other_m: Vec3,
+    other_velocity_m_per_s: Vec3,
+) -> Vec3 {
     let right = me.heading.cross(Vec3::Y).normalize_or(Vec3::Z);
     let side = if (other_m - me.position_m).dot(right) > 0.0 {
         -right
     } else {
         right
     };
-    let speed = (0.8 * other_velocity_m_per_s.length()).min(AVOID_FRACTION * me.top_speed_m_per_s);
+    let speed =
+        (0.8 * other_velocity_m_per_s.length()).min(params.avoid_fraction * me.top_speed_m_per_s);
     (me.heading + 0.3 * side).normalize_or(me.heading) * speed
 }
 
@@ -156,21 +149,22 @@ pub fn escape(me: &Me, predator_m: Vec3) -> Vec3 {
 /// predator at top speed like [`escape`], but also towards the schoolmates'
 /// heading and centre (the school routine at full fright), so that the
 /// school flees as a group instead of scattering one by one. Weight of the
-/// flight against the school: [`ESCAPE_SHARE_IN_SCHOOL`]. Collective
+/// flight against the school: [`BehaviourParams::escape_share_in_school`]. Collective
 /// evasion keeps the confusion effect working on the predator (Magurran &
 /// Pitcher 1987 describe schools fleeing as one, "flash expansion" and
 /// re-forming; Pitcher & Parrish 1993).
-pub fn escape_with_school(me: &Me, neighbours: &[Neighbour], predator_m: Vec3) -> Vec3 {
+pub fn escape_with_school(
+    params: &BehaviourParams,
+    me: &Me,
+    neighbours: &[Neighbour],
+    predator_m: Vec3,
+) -> Vec3 {
     let flee = escape(me, predator_m).normalize_or(me.heading);
-    let together = school(me, neighbours, 1.0, Some(predator_m)).normalize_or(flee);
-    (flee * ESCAPE_SHARE_IN_SCHOOL + together * (1.0 - ESCAPE_SHARE_IN_SCHOOL)).normalize_or(flee)
+    let together = school(params, me, neighbours, 1.0, Some(predator_m)).normalize_or(flee);
+    (flee * params.escape_share_in_school + together * (1.0 - params.escape_share_in_school))
+        .normalize_or(flee)
         * me.top_speed_m_per_s
 }
-
-/// How much a fleeing schooling fish follows its own flight rather than its
-/// school (0–1). Default 0.6 (chosen: the school stays together but every
-/// fish still turns away from the predator).
-pub const ESCAPE_SHARE_IN_SCHOOL: f32 = 0.6;
 
 /// A schooling neighbour as the fish sees it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -184,7 +178,8 @@ pub struct Neighbour {
 /// from the group → swim to it faster; otherwise match the neighbours' heading
 /// and their speed: a fish slower than its neighbours' mean speeds up by the
 /// difference, a faster one slows down, and a school whose members swim alike
-/// cruises at [`CRUISE_FRACTION`] (kept between [`SCHOOL_MIN_SPEED_FRACTION`] and
+/// cruises at [`BehaviourParams::cruise_fraction`] (kept between
+/// [`BehaviourParams::school_min_speed_fraction`] and
 /// the top speed of this fish's body). Matching the difference, not copying the
 /// neighbours' speed, is chosen: a body delivers a little less than it is asked
 /// while it steers, so copying ratchets a muscle school's speed down each round
@@ -194,14 +189,20 @@ pub struct Neighbour {
 /// faster (up to 0.3 of the top speed more) and tighter, and away from
 /// `threat_m` (the predator the fish fears, if any): a frightened school moves
 /// off together instead of scattering.
-pub fn school(me: &Me, neighbours: &[Neighbour], urgency: f32, threat_m: Option<Vec3>) -> Vec3 {
+pub fn school(
+    params: &BehaviourParams,
+    me: &Me,
+    neighbours: &[Neighbour],
+    urgency: f32,
+    threat_m: Option<Vec3>,
+) -> Vec3 {
     if neighbours.is_empty() {
         return match threat_m {
             Some(t) if urgency > 0.0 => escape(me, t),
-            _ => me.heading * CRUISE_FRACTION * me.top_speed_m_per_s,
+            _ => me.heading * params.cruise_fraction * me.top_speed_m_per_s,
         };
     }
-    let spacing = SCHOOL_SPACING_BODY_LENGTHS * me.body_length_m * (1.0 - 0.3 * urgency);
+    let spacing = params.school_spacing_body_lengths * me.body_length_m * (1.0 - 0.3 * urgency);
     let n = neighbours.len() as f32;
     let centre = neighbours.iter().map(|o| o.position_m).sum::<Vec3>() / n;
     let heading = neighbours
@@ -239,16 +240,16 @@ pub fn school(me: &Me, neighbours: &[Neighbour], urgency: f32, threat_m: Option<
         .sum::<f32>()
         / n;
     let mine = me.velocity_m_per_s.length();
-    let matched =
-        (CRUISE_FRACTION + (neighbours_speed - mine) / top).clamp(SCHOOL_MIN_SPEED_FRACTION, 1.0);
+    let matched = (params.cruise_fraction + (neighbours_speed - mine) / top)
+        .clamp(params.school_min_speed_fraction, 1.0);
     let speed = (matched + 0.3 * urgency.clamp(0.0, 1.0) + catch_up).min(1.0);
     direction * speed * me.top_speed_m_per_s
 }
 
 /// leaving: swim up `gradient` (unit, towards water the fish likes), level-ish.
-pub fn leave(me: &Me, gradient: Vec3) -> Vec3 {
+pub fn leave(params: &BehaviourParams, me: &Me, gradient: Vec3) -> Vec3 {
     let direction = (gradient * Vec3::new(1.0, 0.5, 1.0)).normalize_or(me.heading);
-    direction * CRUISE_FRACTION * me.top_speed_m_per_s
+    direction * params.cruise_fraction * me.top_speed_m_per_s
 }
 
 // The reef's behaviour step: each animal's routine turns its intention into a wish.
@@ -274,7 +275,9 @@ impl ReefWorld {
                 .food
                 .iter()
                 .find(|f| f.id == id)
-                .filter(|f| in_suck_reach(s.head_m, s.heading, s.length_m, f.position_m))
+                .filter(|f| {
+                    in_suck_reach(&self.params, s.head_m, s.heading, s.length_m, f.position_m)
+                })
                 .map_or(Gait::Pursue, |_| Gait::Hover),
             (Intention::Eat, Some(Target::Animal(_))) => Gait::Pursue,
             // schooling, and foraging with the school (see Gait::School).
@@ -293,6 +296,7 @@ impl ReefWorld {
                         }
                     };
                     let (_, wish) = pair.wishes(
+                        &self.params.courtship,
                         &partner(pair.male),
                         &partner(pair.female),
                         self.time_secs as f32,
@@ -328,11 +332,12 @@ impl ReefWorld {
             body_length_m: s.length_m,
             top_speed_m_per_s: TOP_SPEED_BODY_LENGTHS_PER_SEC * s.length_m,
         };
+        let bp = self.params.behaviour.clone();
         let focus = self.animals[i].focus;
         // Radius of the body's turning circle at its speed now (none for the
         // point mass, which turns as fast as its steering force allows).
         let turn_radius = match self.animals[i].body {
-            ReefBody::Physical(_) => BODY_TURN_RADIUS_BODY_LENGTHS * s.length_m,
+            ReefBody::Physical(_) => self.params.body_turn_radius_body_lengths * s.length_m,
             ReefBody::Point(_) => 0.0,
         };
         let animal_at = |t: Option<Target>| match t {
@@ -364,7 +369,7 @@ impl ReefWorld {
             };
             let push = steering::wander(&mut a.wander, &mut world.rng, &params);
             (s.heading + push.normalize_or_zero() * 0.8).normalize_or(s.heading)
-                * CRUISE_FRACTION
+                * bp.cruise_fraction
                 * me.top_speed_m_per_s
         };
         match focus.intention {
@@ -382,7 +387,7 @@ impl ReefWorld {
                         if let Some(o) = seen.get(j as usize).filter(|o| o.alive)
                             && o.heading.dot(s.heading) > 0.7
                         {
-                            return fall_back(&me, o.position_m, o.velocity_m_per_s);
+                            return fall_back(&bp, &me, o.position_m, o.velocity_m_per_s);
                         }
                         animal_at(Some(Target::Animal(j))).unwrap_or(s.head_m + s.heading)
                     }
@@ -393,12 +398,12 @@ impl ReefWorld {
                         probe + (probe - inside)
                     }
                 };
-                avoid(&me, point, self.animals[i].mental.fear)
+                avoid(&bp, &me, point, self.animals[i].mental.fear)
             }
             Intention::Escape => match threat_at(focus.target) {
                 // A schooling fish flees with the schoolmates it sees.
                 Some(p) if self.animals[i].habits.schools && !neighbours.is_empty() => {
-                    escape_with_school(&me, neighbours, p)
+                    escape_with_school(&bp, &me, neighbours, p)
                 }
                 Some(p) => escape(&me, p),
                 None => wander(self),
@@ -409,15 +414,16 @@ impl ReefWorld {
                 if neighbours.is_empty() && threat.is_none() {
                     wander(self)
                 } else {
-                    school(&me, neighbours, urgency, threat)
+                    school(&bp, &me, neighbours, urgency, threat)
                 }
             }
             Intention::Eat => match focus.target {
                 Some(Target::Food(id)) => match self.food.iter().find(|f| f.id == id) {
                     Some(f) => chase(
+                        &bp,
                         &me,
                         f.position_m,
-                        CRUISE_FRACTION,
+                        bp.cruise_fraction,
                         0.8 * s.length_m,
                         turn_radius,
                     ),
@@ -429,6 +435,7 @@ impl ReefWorld {
                         let lead =
                             (prey.position_m.distance(s.head_m) / me.top_speed_m_per_s).min(2.0);
                         chase(
+                            &bp,
                             &me,
                             prey.position_m + prey.velocity_m_per_s * lead,
                             1.0,
@@ -441,7 +448,7 @@ impl ReefWorld {
                 // No food in view: a schooling fish forages with its school, others
                 // search alone.
                 _ if self.animals[i].habits.schools && !neighbours.is_empty() => {
-                    school(&me, neighbours, 0.0, None)
+                    school(&bp, &me, neighbours, 0.0, None)
                 }
                 _ => wander(self),
             },
@@ -465,13 +472,21 @@ impl ReefWorld {
                     // In a pair: the courtship routine.
                     (Some(pair), _, _) => match (partner_of(pair.male), partner_of(pair.female)) {
                         (Some(m), Some(f)) => {
-                            let (male_wish, female_wish) = pair.wishes(&m, &f, t, surface);
+                            let (male_wish, female_wish) =
+                                pair.wishes(&self.params.courtship, &m, &f, t, surface);
                             let wish = if pair.male as usize == i {
                                 male_wish
                             } else {
                                 female_wish
                             };
-                            chase(&me, wish.target_m, wish.speed_fraction, 0.0, turn_radius)
+                            chase(
+                                &bp,
+                                &me,
+                                wish.target_m,
+                                wish.speed_fraction,
+                                0.0,
+                                turn_radius,
+                            )
                         }
                         _ => wander(self),
                     },
@@ -481,13 +496,27 @@ impl ReefWorld {
                         if pair.female == j && !pair.bonded() =>
                     {
                         match partner_of(j) {
-                            Some(f) => chase(&me, pair.loop_point_m(&f, t), 0.9, 0.0, turn_radius),
+                            Some(f) => chase(
+                                &bp,
+                                &me,
+                                pair.loop_point_m(&self.params.courtship, &f, t),
+                                0.9,
+                                0.0,
+                                turn_radius,
+                            ),
                             None => wander(self),
                         }
                     }
                     // Not yet a pair: follow the chosen partner around (case 1).
                     _ => match animal_at(focus.target) {
-                        Some(p) => chase(&me, p, CRUISE_FRACTION, 1.5 * s.length_m, turn_radius),
+                        Some(p) => chase(
+                            &bp,
+                            &me,
+                            p,
+                            bp.cruise_fraction,
+                            1.5 * s.length_m,
+                            turn_radius,
+                        ),
                         None => wander(self),
                     },
                 }
@@ -507,7 +536,7 @@ impl ReefWorld {
                         .env
                         .gradient_direction(s.position_m, Environment::temperature_01_at)
                         * sign(h.temperature);
-                leave(&me, g.normalize_or(s.heading))
+                leave(&bp, &me, g.normalize_or(s.heading))
             }
             Intention::Wander => wander(self),
         }
@@ -549,15 +578,43 @@ mod tests {
 
     #[test]
     fn chase_heads_for_the_target_and_slows_on_arrival() {
-        let v = chase(&me(), Vec3::new(0.25, 0.0, 3.0), 1.0, 1.0, 0.0);
+        let v = chase(
+            &BehaviourParams::default(),
+            &me(),
+            Vec3::new(0.25, 0.0, 3.0),
+            1.0,
+            1.0,
+            0.0,
+        );
         assert!(v.normalize_or_zero().dot(Vec3::Z) > 0.99 && (v.length() - 0.3).abs() < 1e-5);
-        let slow = chase(&me(), Vec3::new(0.25, 0.0, 0.5), 1.0, 1.0, 0.0);
+        let slow = chase(
+            &BehaviourParams::default(),
+            &me(),
+            Vec3::new(0.25, 0.0, 0.5),
+            1.0,
+            1.0,
+            0.0,
+        );
         assert!(slow.length() < 0.2);
         // Inside the left turning circle of a body turning in 1 m circles: on.
-        let on = chase(&me(), Vec3::new(0.6, 0.0, -0.5), 1.0, 0.0, 1.0);
+        let on = chase(
+            &BehaviourParams::default(),
+            &me(),
+            Vec3::new(0.6, 0.0, -0.5),
+            1.0,
+            0.0,
+            1.0,
+        );
         assert!(on.normalize_or_zero().dot(Vec3::X) > 0.99, "{on}");
         // Outside it: turn towards the target.
-        let turn = chase(&me(), Vec3::new(0.6, 0.0, -2.5), 1.0, 0.0, 1.0);
+        let turn = chase(
+            &BehaviourParams::default(),
+            &me(),
+            Vec3::new(0.6, 0.0, -2.5),
+            1.0,
+            0.0,
+            1.0,
+        );
         assert!(turn.normalize_or_zero().dot(-Vec3::Z) > 0.9, "{turn}");
         assert!(slow.length() < 0.2);
     }
@@ -565,16 +622,26 @@ mod tests {
     #[test]
     fn avoid_turns_to_the_free_side() {
         let right = Vec3::X.cross(Vec3::Y);
-        let v = avoid(&me(), Vec3::new(1.0, 0.0, 0.0) + right * 0.3, 0.0);
+        let v = avoid(
+            &BehaviourParams::default(),
+            &me(),
+            Vec3::new(1.0, 0.0, 0.0) + right * 0.3,
+            0.0,
+        );
         assert!(v.dot(right) < 0.0, "{v}");
-        let v = avoid(&me(), Vec3::new(1.0, 0.0, 0.0) - right * 0.3, 0.0);
+        let v = avoid(
+            &BehaviourParams::default(),
+            &me(),
+            Vec3::new(1.0, 0.0, 0.0) - right * 0.3,
+            0.0,
+        );
         assert!(v.dot(right) > 0.0, "{v}");
     }
 
     #[test]
     fn a_fish_falls_back_behind_one_swimming_the_same_way() {
         let ahead = Vec3::new(0.5, 0.0, 0.05);
-        let v = fall_back(&me(), ahead, Vec3::X * 0.2);
+        let v = fall_back(&BehaviourParams::default(), &me(), ahead, Vec3::X * 0.2);
         assert!(v.length() <= 0.8 * 0.2 + 1e-6);
         assert!(v.normalize_or_zero().dot(Vec3::X) > 0.9);
         let right = Vec3::X.cross(Vec3::Y);
@@ -599,14 +666,14 @@ mod tests {
             heading: Vec3::X,
             velocity_m_per_s: Vec3::X * 0.21,
         }];
-        assert!(school(&me(), &close, 0.0, None).z < 0.0);
+        assert!(school(&BehaviourParams::default(), &me(), &close, 0.0, None).z < 0.0);
         let aligned = [Neighbour {
             position_m: Vec3::new(0.0, 0.0, 0.5),
             heading: Vec3::Z,
             velocity_m_per_s: Vec3::Z * 0.21,
         }];
         assert!(
-            school(&me(), &aligned, 0.0, None)
+            school(&BehaviourParams::default(), &me(), &aligned, 0.0, None)
                 .normalize_or_zero()
                 .dot(Vec3::Z)
                 > 0.9
@@ -616,8 +683,8 @@ mod tests {
             heading: Vec3::X,
             velocity_m_per_s: Vec3::X * 0.21,
         }];
-        let v = school(&me(), &far, 0.0, None);
-        assert!(v.z < 0.0 && v.length() > CRUISE_FRACTION * 0.3);
+        let v = school(&BehaviourParams::default(), &me(), &far, 0.0, None);
+        assert!(v.z < 0.0 && v.length() > BehaviourParams::default().cruise_fraction * 0.3);
     }
 
     #[test]
@@ -641,26 +708,59 @@ mod tests {
         };
         let top = 0.3;
         // Neighbours as fast as me: the school's cruise.
-        let v = school(&me(), &pair(0.18, 0.22), 0.0, None);
-        assert!((v.length() - CRUISE_FRACTION * top).abs() < 1e-5, "{v}");
-        assert!(v.normalize_or_zero().dot(Vec3::X) > 0.99);
-        // Neighbours 0.06 m/s faster than me: I ask 0.06 m/s more; slower: less.
-        let v = school(&me(), &pair(0.25, 0.27), 0.0, None);
+        let v = school(
+            &BehaviourParams::default(),
+            &me(),
+            &pair(0.18, 0.22),
+            0.0,
+            None,
+        );
         assert!(
-            (v.length() - (CRUISE_FRACTION * top + 0.06)).abs() < 1e-5,
+            (v.length() - BehaviourParams::default().cruise_fraction * top).abs() < 1e-5,
             "{v}"
         );
-        let v = school(&me(), &pair(0.12, 0.16), 0.0, None);
+        assert!(v.normalize_or_zero().dot(Vec3::X) > 0.99);
+        // Neighbours 0.06 m/s faster than me: I ask 0.06 m/s more; slower: less.
+        let v = school(
+            &BehaviourParams::default(),
+            &me(),
+            &pair(0.25, 0.27),
+            0.0,
+            None,
+        );
         assert!(
-            (v.length() - (CRUISE_FRACTION * top - 0.06)).abs() < 1e-5,
+            (v.length() - (BehaviourParams::default().cruise_fraction * top + 0.06)).abs() < 1e-5,
+            "{v}"
+        );
+        let v = school(
+            &BehaviourParams::default(),
+            &me(),
+            &pair(0.12, 0.16),
+            0.0,
+            None,
+        );
+        assert!(
+            (v.length() - (BehaviourParams::default().cruise_fraction * top - 0.06)).abs() < 1e-5,
             "{v}"
         );
         // Not faster than the body's top speed, nor slower than its minimum.
-        let v = school(&me(), &pair(0.5, 0.6), 0.0, None);
+        let v = school(
+            &BehaviourParams::default(),
+            &me(),
+            &pair(0.5, 0.6),
+            0.0,
+            None,
+        );
         assert!((v.length() - top).abs() < 1e-5, "{v}");
-        let v = school(&me(), &pair(0.0, 0.01), 0.0, None);
+        let v = school(
+            &BehaviourParams::default(),
+            &me(),
+            &pair(0.0, 0.01),
+            0.0,
+            None,
+        );
         assert!(
-            (v.length() - SCHOOL_MIN_SPEED_FRACTION * top).abs() < 1e-5,
+            (v.length() - BehaviourParams::default().school_min_speed_fraction * top).abs() < 1e-5,
             "{v}"
         );
     }

@@ -1,16 +1,17 @@
 //! The courtship routine of pacifists (Tu & Terzopoulos 1994 §7.3, Plate 1b):
 //! **looping** (the male swims up and down through a point in front of the
 //! female's head; she hovers and bobs) until his mouth has passed it
-//! [`LOOPS_TO_CIRCLE`] times → **circling** (each chases the other's tail) until
-//! the female has turned [`CIRCLING_TURNS`] full turns → **spawning ascent**
-//! (she swims fast towards the surface, he follows her abdomen) → **nuzzling**
-//! (he touches her abdomen from below, backs off, and again, [`NUZZLES`] times)
-//! → spawned.
+//! [`CourtshipParams::loops_to_circle`] times → **circling** (each chases the
+//! other's tail) until the female has turned [`CourtshipParams::circling_turns`]
+//! full turns → **spawning ascent** (she swims fast towards the surface, he
+//! follows her abdomen) → **nuzzling** (he touches her abdomen from below, backs
+//! off, and again, [`CourtshipParams::nuzzles`] times) → spawned.
 //!
 //! A female may leave her male for a larger one who joins the looping display
 //! (until circling starts); the first male then turns away. A pair whose
-//! partner is lost from view for [`LOST_SECS`], or that spends more than
-//! [`PHASE_TIMEOUT_SECS`] in one phase, breaks up.
+//! partner is lost from view for [`CourtshipParams::lost_secs`], or that spends
+//! more than [`CourtshipParams::phase_timeout_secs`] in one phase, breaks up.
+//! The numbers live in [`CourtshipParams`] (`ReefParams::courtship`).
 //!
 //! This module holds the pair's state machine and where each partner wants to
 //! go; the reef world (`reef/world.rs`) forms pairs and moves the bodies.
@@ -19,51 +20,7 @@ use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
 use crate::sim::reef::motor_choice::Gait;
-
-/// Passes of the male's mouth through the looping point before circling (the
-/// paper: "currently 6").
-pub const LOOPS_TO_CIRCLE: u32 = 6;
-/// Full turns the female makes while circling before the ascent (the paper: "a
-/// fixed number"; 1.5, chosen: long enough to see, short for a slow body).
-pub const CIRCLING_TURNS: f32 = 1.5;
-/// Touches of the male's mouth on the female's abdomen (the paper: "e.g., 3").
-pub const NUZZLES: u32 = 3;
-/// Seconds the male backs off after a touch (2, chosen).
-pub const BACK_OFF_SECS: f32 = 2.0;
-/// Seconds of ascent before the female hovers (6, chosen), or until she is a
-/// body length under the surface.
-pub const ASCENT_SECS: f32 = 6.0;
-/// A phase that lasts longer than this breaks the pair up, seconds.
-pub const PHASE_TIMEOUT_SECS: f32 = 150.0;
-/// A partner out of sight this long breaks the pair up, seconds.
-pub const LOST_SECS: f32 = 10.0;
-/// Frequency of the looping point's up-and-down motion, Hz (0.2, chosen).
-pub const LOOP_HZ: f32 = 0.2;
-/// The male's speed while looping, fraction of his top speed (0.5, chosen). The
-/// paper's male loops "vigorously"; at 0.9 the muscle male overshot the point
-/// and swam wide circles back to it, passing it once in 15–40 s: with the fin
-/// brace of `body::body_layout`, 6 of 8 seeds spawned within 5 minutes at 0.9,
-/// 8 of 8 at 0.7 and at 0.5, at 0.5 sooner (104–167 s; 15 of seeds 1–16;
-/// point-mass pairs 16 of 16 at 43–61 s). `reef_world::tests::courtship_seeds`.
-pub const LOOP_SPEED_FRACTION: f32 = 0.5;
-/// The male's mouth within this many body lengths of the looping point counts
-/// one pass (the paper: "reaches the vicinity"; 1.0, chosen: the muscle body
-/// loops in circles about two body lengths wide and passed within half a
-/// length too rarely to finish in minutes, measured).
-pub const PASS_BODY_LENGTHS: f32 = 1.0;
-/// Seconds between two counted passes (3, chosen: one pass per swing).
-pub const PASS_INTERVAL_SECS: f32 = 3.0;
-/// The male's look-ahead along her axis while he swims in for a touch, and how
-/// far behind her abdomen he goes first when he is beside or ahead of her, his
-/// body lengths (3, chosen: more than twice the muscle body's turning radius,
-/// `reef_world::BODY_TURN_RADIUS_BODY_LENGTHS`, so the look-ahead point is never
-/// inside his turning circle, where the chase swims straight on. Seeds 1–8 /
-/// 1–16 spawning within 5 minutes on muscle bodies, `reef_world::tests::
-/// courtship_seeds`: look-ahead 1.5: 5 / 10; 2.5: 6 / 14; 3: 7 / 14; the earlier
-/// fixed line-up point 1.5 behind her: 1 / 4.)
-pub const STAGING_BODY_LENGTHS: f32 = 3.0;
-/// The male's mouth within this many body lengths of her abdomen is a touch.
-pub const TOUCH_BODY_LENGTHS: f32 = 0.35;
+use crate::sim::reef::params::CourtshipParams;
 
 /// The phases in order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -128,7 +85,7 @@ pub struct Pair {
 }
 
 impl Pair {
-    pub fn new(male: u32, female: u32, female_heading: Vec3) -> Self {
+    pub fn new(params: &CourtshipParams, male: u32, female: u32, female_heading: Vec3) -> Self {
         Self {
             male,
             female,
@@ -136,7 +93,7 @@ impl Pair {
             phase_secs: 0.0,
             count: 0,
             turned_rad: 0.0,
-            since_count_secs: PASS_INTERVAL_SECS,
+            since_count_secs: params.pass_interval_secs,
             lost_secs: 0.0,
             last_heading: female_heading,
         }
@@ -148,8 +105,8 @@ impl Pair {
     }
 
     /// The looping point: in front of her head, swinging up and down.
-    pub fn loop_point_m(&self, female: &Partner, time_secs: f32) -> Vec3 {
-        let swing = (std::f32::consts::TAU * LOOP_HZ * time_secs).sin();
+    pub fn loop_point_m(&self, params: &CourtshipParams, female: &Partner, time_secs: f32) -> Vec3 {
+        let swing = (std::f32::consts::TAU * params.loop_hz * time_secs).sin();
         female.head_m
             + female.heading * 0.8 * female.body_length_m
             + Vec3::Y * (0.3 + 0.5 * swing) * female.body_length_m
@@ -163,6 +120,7 @@ impl Pair {
     /// What each wants now: (male, female).
     pub fn wishes(
         &self,
+        params: &CourtshipParams,
         male: &Partner,
         female: &Partner,
         time_secs: f32,
@@ -181,7 +139,10 @@ impl Pair {
         let bob = 0.3 * (std::f32::consts::TAU * 0.5 * time_secs).sin();
         match self.phase {
             Phase::Looping => (
-                swim(self.loop_point_m(female, time_secs), LOOP_SPEED_FRACTION),
+                swim(
+                    self.loop_point_m(params, female, time_secs),
+                    params.loop_speed_fraction,
+                ),
                 hover(female, bob, Gait::Bob),
             ),
             Phase::Circling => (
@@ -206,7 +167,7 @@ impl Pair {
                 )
             }
             Phase::Nuzzling | Phase::Spawned => {
-                let backing_off = self.since_count_secs < BACK_OFF_SECS;
+                let backing_off = self.since_count_secs < params.back_off_secs;
                 let abdomen = Self::abdomen_m(female);
                 let male_wish = if backing_off {
                     swim(
@@ -218,7 +179,7 @@ impl Pair {
                 } else {
                     // From behind and below her (she hovers), along her axis.
                     // A male behind her abdomen aims at a point on her axis
-                    // [`STAGING_BODY_LENGTHS`] ahead of where he is along it (a
+                    // [`CourtshipParams::staging_body_lengths`] ahead of where he is along it (a
                     // path follower's look-ahead point), never past her abdomen:
                     // he turns onto her axis as he closes in, within his
                     // turning circle. A male beside or ahead of her swims back
@@ -232,7 +193,7 @@ impl Pair {
                     let axis = (female.heading * level).normalize_or(female.heading);
                     let offset = male.head_m - abdomen;
                     let along = offset.dot(axis);
-                    let look_ahead = STAGING_BODY_LENGTHS * male.body_length_m;
+                    let look_ahead = params.staging_body_lengths * male.body_length_m;
                     let below = 0.3 * male.body_length_m;
                     let target = if along < 0.0 {
                         let carrot = (along + look_ahead).min(0.0);
@@ -250,6 +211,7 @@ impl Pair {
     /// Advances the pair by `dt_secs`; returns the phase it entered, if any.
     pub fn advance(
         &mut self,
+        params: &CourtshipParams,
         male: &Partner,
         female: &Partner,
         time_secs: f32,
@@ -267,35 +229,35 @@ impl Pair {
         self.last_heading = female.heading;
         let next = match self.phase {
             Phase::Looping => {
-                let point = self.loop_point_m(female, time_secs);
-                if male.head_m.distance(point) < PASS_BODY_LENGTHS * male.body_length_m
-                    && self.since_count_secs >= PASS_INTERVAL_SECS
+                let point = self.loop_point_m(params, female, time_secs);
+                if male.head_m.distance(point) < params.pass_body_lengths * male.body_length_m
+                    && self.since_count_secs >= params.pass_interval_secs
                 {
                     self.count += 1;
                     self.since_count_secs = 0.0;
                 }
-                (self.count >= LOOPS_TO_CIRCLE).then_some(Phase::Circling)
+                (self.count >= params.loops_to_circle).then_some(Phase::Circling)
             }
             Phase::Circling => {
                 if turn.is_finite() {
                     self.turned_rad += turn;
                 }
-                (self.turned_rad >= CIRCLING_TURNS * std::f32::consts::TAU)
+                (self.turned_rad >= params.circling_turns * std::f32::consts::TAU)
                     .then_some(Phase::Ascending)
             }
             Phase::Ascending => {
                 let high = female.position_m.y > surface_y_m - 1.5 * female.body_length_m;
-                (high || self.phase_secs >= ASCENT_SECS).then_some(Phase::Nuzzling)
+                (high || self.phase_secs >= params.ascent_secs).then_some(Phase::Nuzzling)
             }
             Phase::Nuzzling => {
-                if self.since_count_secs >= BACK_OFF_SECS
+                if self.since_count_secs >= params.back_off_secs
                     && male.head_m.distance(Self::abdomen_m(female))
-                        < TOUCH_BODY_LENGTHS * male.body_length_m
+                        < params.touch_body_lengths * male.body_length_m
                 {
                     self.count += 1;
                     self.since_count_secs = 0.0;
                 }
-                (self.count >= NUZZLES).then_some(Phase::Spawned)
+                (self.count >= params.nuzzles).then_some(Phase::Spawned)
             }
             Phase::Spawned => None,
         };
@@ -305,17 +267,17 @@ impl Pair {
             self.count = 0;
             self.turned_rad = 0.0;
             self.since_count_secs = if phase == Phase::Nuzzling {
-                BACK_OFF_SECS
+                params.back_off_secs
             } else {
-                PASS_INTERVAL_SECS
+                params.pass_interval_secs
             };
         }
         next
     }
 
     /// Has the pair been stuck too long in one phase?
-    pub fn timed_out(&self) -> bool {
-        self.phase_secs > PHASE_TIMEOUT_SECS || self.lost_secs > LOST_SECS
+    pub fn timed_out(&self, params: &CourtshipParams) -> bool {
+        self.phase_secs > params.phase_timeout_secs || self.lost_secs > params.lost_secs
     }
 }
 
@@ -355,6 +317,7 @@ impl ReefWorld {
                     > self.animals[pair.male as usize].body.body_length_m()
             {
                 self.pairs[k] = Pair::new(
+                    &self.params.courtship,
                     new,
                     pair.female,
                     self.animals[pair.female as usize].body.heading(),
@@ -392,6 +355,7 @@ impl ReefWorld {
                 && self.pair_of(j as usize).is_none()
             {
                 self.pairs.push(Pair::new(
+                    &self.params.courtship,
                     i as u32,
                     j,
                     self.animals[j as usize].body.heading(),
@@ -432,7 +396,7 @@ impl ReefWorld {
                 self.animals[pair.male as usize].alive && self.animals[pair.female as usize].alive;
             let (mut pair, entered) = {
                 let mut p = pair;
-                let entered = p.advance(&m, &f, t, surface, dt);
+                let entered = p.advance(&self.params.courtship, &m, &f, t, surface, dt);
                 p.lost_secs = if m.position_m.distance(f.position_m) > visibility {
                     p.lost_secs + dt
                 } else {
@@ -474,7 +438,8 @@ impl ReefWorld {
                 || mates_with(&self.animals[pair.female as usize]) == Some(pair.male)
                 || self.animals[pair.male as usize].focus.intention == Intention::Avoid
                 || self.animals[pair.female as usize].focus.intention == Intention::Avoid;
-            if !both_alive || pair.timed_out() || (!pair.bonded() && !wanted) {
+            if !both_alive || pair.timed_out(&self.params.courtship) || (!pair.bonded() && !wanted)
+            {
                 pair.phase_secs = 0.0;
                 self.pairs.remove(k);
                 self.log(
@@ -496,6 +461,10 @@ impl ReefWorld {
 mod tests {
     use crate::sim::reef::courtship::*;
 
+    fn params() -> CourtshipParams {
+        CourtshipParams::default()
+    }
+
     fn partner(at: Vec3, heading: Vec3) -> Partner {
         Partner {
             position_m: at,
@@ -508,21 +477,21 @@ mod tests {
     #[test]
     fn the_phases_follow_in_order_when_their_conditions_are_met() {
         let female = partner(Vec3::new(0.0, 2.0, 0.0), Vec3::X);
-        let mut pair = Pair::new(1, 2, Vec3::X);
+        let mut pair = Pair::new(&params(), 1, 2, Vec3::X);
         let dt = 0.055;
         let mut t = 0.0;
         let mut seen = vec![pair.phase];
         // Looping: the male's mouth sits on the looping point.
         while pair.phase == Phase::Looping && t < 100.0 {
-            let point = pair.loop_point_m(&female, t);
+            let point = pair.loop_point_m(&params(), &female, t);
             let male = partner(point - Vec3::X * 0.25, Vec3::X);
-            if let Some(p) = pair.advance(&male, &female, t, 4.5, dt) {
+            if let Some(p) = pair.advance(&params(), &male, &female, t, 4.5, dt) {
                 seen.push(p);
             }
             t += dt;
         }
         // The first pass counts at once, then one per interval.
-        let expected = 5.0 * PASS_INTERVAL_SECS;
+        let expected = 5.0 * params().pass_interval_secs;
         assert!((expected - 0.5..expected + 1.0).contains(&t), "{t}");
         // Circling: she turns 20° a step.
         let mut angle: f32 = 0.0;
@@ -533,7 +502,7 @@ mod tests {
                 Vec3::new(0.0, 2.0, 0.0),
                 Vec3::new(angle.cos(), 0.0, angle.sin()),
             );
-            if let Some(p) = pair.advance(&male, &f, t, 4.5, dt) {
+            if let Some(p) = pair.advance(&params(), &male, &f, t, 4.5, dt) {
                 seen.push(p);
             }
             t += dt;
@@ -542,20 +511,23 @@ mod tests {
         // Ascending: she reaches the surface.
         let high = partner(Vec3::new(0.0, 4.0, 0.0), Vec3::X);
         seen.push(
-            pair.advance(&male, &high, t, 4.5, dt)
+            pair.advance(&params(), &male, &high, t, 4.5, dt)
                 .expect("near the surface"),
         );
         // Nuzzling: touches need the back-off in between.
         let mut touches = 0;
         while pair.phase == Phase::Nuzzling && touches < 1000 {
             let m = partner(Pair::abdomen_m(&high) - Vec3::X * 0.25, Vec3::X);
-            if let Some(p) = pair.advance(&m, &high, t, 4.5, dt) {
+            if let Some(p) = pair.advance(&params(), &m, &high, t, 4.5, dt) {
                 seen.push(p);
             }
             t += dt;
             touches += 1;
         }
-        assert!(touches as f32 * dt >= 2.0 * BACK_OFF_SECS, "{touches}");
+        assert!(
+            touches as f32 * dt >= 2.0 * params().back_off_secs,
+            "{touches}"
+        );
         assert_eq!(
             seen,
             vec![
@@ -571,14 +543,14 @@ mod tests {
     #[test]
     fn the_male_aims_at_her_abdomen_from_below() {
         let female = partner(Vec3::new(0.0, 3.0, 0.0), Vec3::X);
-        let mut pair = Pair::new(1, 2, Vec3::X);
+        let mut pair = Pair::new(&params(), 1, 2, Vec3::X);
         pair.phase = Phase::Nuzzling;
-        pair.since_count_secs = BACK_OFF_SECS;
+        pair.since_count_secs = params().back_off_secs;
         let above = partner(Vec3::new(0.0, 3.5, 0.0), Vec3::X);
-        let (wish, _) = pair.wishes(&above, &female, 0.0, 4.5);
+        let (wish, _) = pair.wishes(&params(), &above, &female, 0.0, 4.5);
         assert!(wish.target_m.y < Pair::abdomen_m(&female).y);
         let below = partner(Vec3::new(-0.3, 2.5, 0.0), Vec3::X);
-        let (wish, _) = pair.wishes(&below, &female, 0.0, 4.5);
+        let (wish, _) = pair.wishes(&params(), &below, &female, 0.0, 4.5);
         assert_eq!(wish.target_m, Pair::abdomen_m(&female));
     }
 }

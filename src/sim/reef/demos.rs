@@ -197,11 +197,12 @@ impl ReefWorld {
                 // slowed to a tenth of the nominal p0 (fully hungry after 6
                 // minutes instead of 37 s), so hunger does not break the pairs up
                 // before they spawn; the *Minds* panel sets it back.
+                let digestion_fraction = self.params.courtship_digestion_fraction;
                 let courting = |sex| {
                     let mut h = Habits::new(FishKind::Pacifist, sex, 1);
                     h.mental.libido_rate_per_unit =
                         crate::sim::reef::mind::mental_state::MANIC_LIBIDO_RATE;
-                    h.mental.digestion_rate_per_unit = COURTSHIP_DIGESTION_FRACTION
+                    h.mental.digestion_rate_per_unit = digestion_fraction
                         * crate::sim::reef::mind::mental_state::NOMINAL_DIGESTION_RATE;
                     h
                 };
@@ -240,9 +241,10 @@ impl ReefWorld {
         self.food_target = scene.default_food_count();
         // Everyone starts fed and content with a random clock, so the urges
         // do not all rise in step: 0.7 of its appetite eaten up to
-        // `START_FED_FOR_MAX_SECS` ago.
+        // `ReefParams::start_fed_for_max_secs` ago.
+        let fed_for_max_secs = self.params.start_fed_for_max_secs;
         let fed_for: Vec<f32> = (0..self.animals.len())
-            .map(|_| self.rng.random_range(0.0..START_FED_FOR_MAX_SECS))
+            .map(|_| self.rng.random_range(0.0..fed_for_max_secs))
             .collect();
         for (a, secs) in self.animals.iter_mut().zip(fed_for) {
             let starving = matches!(scene, ReefScene::Feeding | ReefScene::PredatorAndSchool)

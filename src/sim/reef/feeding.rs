@@ -7,29 +7,39 @@ use glam::Vec3;
 use rand::Rng;
 
 use super::events::ReefEventKind;
+use super::params::ReefParams;
 use super::world::*;
 use crate::sim::reef::mind::{FishKind, Intention, Target};
 
 /// Is food at `food_m` within reach of the vacuum of a mouth at `mouth_m` of a
 /// fish `length_m` long heading along `heading`: within
-/// [`SUCK_RANGE_BODY_LENGTHS`] and ahead of the mouth ([`SUCK_CONE_COS`]), or
-/// right at it?
-pub(super) fn in_suck_reach(mouth_m: Vec3, heading: Vec3, length_m: f32, food_m: Vec3) -> bool {
+/// [`ReefParams::suck_range_body_lengths`] and ahead of the mouth
+/// ([`ReefParams::suck_cone_cos`]), or right at it?
+pub(super) fn in_suck_reach(
+    params: &ReefParams,
+    mouth_m: Vec3,
+    heading: Vec3,
+    length_m: f32,
+    food_m: Vec3,
+) -> bool {
     let d = food_m.distance(mouth_m);
     let ahead = (food_m - mouth_m).normalize_or_zero().dot(heading);
-    d < SUCK_RANGE_BODY_LENGTHS * length_m && (ahead > SUCK_CONE_COS || d < 0.2 * length_m)
+    d < params.suck_range_body_lengths * length_m
+        && (ahead > params.suck_cone_cos || d < 0.2 * length_m)
 }
 
 impl ReefWorld {
     /// The confusion effect at predator `i`'s strike on prey `j`: with `n`
-    /// other prey within [`CONFUSION_RADIUS_BODY_LENGTHS`] of the target, the
-    /// strike succeeds with probability 1 / (1 + [`CONFUSION_PER_NEIGHBOUR`]
-    /// · n). On a miss (returns true) the prey darts away at its top speed, the
-    /// predator needs [`MISSED_STRIKE_RECOVERY_SECS`] before it can strike
+    /// other prey within [`ReefParams::confusion_radius_body_lengths`] of the
+    /// target, the strike succeeds with probability 1 / (1 +
+    /// [`ReefParams::confusion_per_neighbour`] · n). On a miss (returns true) the
+    /// prey darts away at its top speed, the predator needs
+    /// [`ReefParams::missed_strike_recovery_secs`] before it can strike
     /// again, and the event is logged. A lone prey is never missed.
     pub(super) fn strike_confused(&mut self, i: usize, j: usize) -> bool {
         let target_m = self.animals[j].body.position_m();
-        let reach_m = CONFUSION_RADIUS_BODY_LENGTHS * self.animals[j].body.body_length_m();
+        let reach_m =
+            self.params.confusion_radius_body_lengths * self.animals[j].body.body_length_m();
         let crowd = self
             .animals
             .iter()
@@ -41,7 +51,7 @@ impl ReefWorld {
                     && o.body.position_m().distance(target_m) < reach_m
             })
             .count();
-        let success = 1.0 / (1.0 + CONFUSION_PER_NEIGHBOUR * crowd as f32);
+        let success = 1.0 / (1.0 + self.params.confusion_per_neighbour * crowd as f32);
         if crowd == 0 || self.rng.random::<f32>() < success {
             return false;
         }
@@ -51,7 +61,7 @@ impl ReefWorld {
         let dart = away * prey.body.top_speed_m_per_s() - prey.body.velocity_m_per_s();
         prey.body.nudge(dart);
         prey.intended_m_per_s = away * prey.body.top_speed_m_per_s();
-        self.animals[i].strike_recovery_secs = MISSED_STRIKE_RECOVERY_SECS;
+        self.animals[i].strike_recovery_secs = self.params.missed_strike_recovery_secs;
         self.counts.missed_strikes += 1;
         let text = format!(
             "{} missed {}: {} other prey around it confused it",
@@ -88,10 +98,16 @@ impl ReefWorld {
                 Some(Target::Food(id)) => {
                     if let Some(k) = self.food.iter().position(|f| f.id == id) {
                         let d = self.food[k].position_m.distance(mouth);
-                        if in_suck_reach(mouth, a.body.heading(), length, self.food[k].position_m) {
+                        if in_suck_reach(
+                            &self.params,
+                            mouth,
+                            a.body.heading(),
+                            length,
+                            self.food[k].position_m,
+                        ) {
                             open = true;
                             let pull = (mouth - self.food[k].position_m).normalize_or_zero()
-                                * VACUUM_SPEED_M_PER_S
+                                * self.params.vacuum_speed_m_per_s
                                 * dt;
                             self.food[k].position_m = if pull.length() > d {
                                 mouth
@@ -100,7 +116,7 @@ impl ReefWorld {
                             };
                         }
                         if self.food[k].position_m.distance(mouth)
-                            < EAT_DISTANCE_M.max(0.1 * length)
+                            < self.params.eat_distance_m.max(0.1 * length)
                         {
                             self.food.swap_remove(k);
                             let a = &mut self.animals[i];
@@ -125,15 +141,16 @@ impl ReefWorld {
                         let ahead = (prey_at - mouth).normalize_or_zero().dot(a.body.heading());
                         let recovering = a.strike_recovery_secs > 0.0;
                         if !recovering
-                            && d < PREDATOR_SUCK_RANGE_BODY_LENGTHS * length
-                            && ahead > SUCK_CONE_COS
+                            && d < self.params.predator_suck_range_body_lengths * length
+                            && ahead > self.params.suck_cone_cos
                         {
                             open = true;
-                            let pull =
-                                (mouth - prey_at).normalize_or_zero() * VACUUM_ACCEL_M_PER_S2 * dt;
+                            let pull = (mouth - prey_at).normalize_or_zero()
+                                * self.params.vacuum_accel_m_per_s2
+                                * dt;
                             self.animals[j].body.nudge(pull);
                         }
-                        let strikes = !recovering && d < SWALLOW_BODY_LENGTHS * length;
+                        let strikes = !recovering && d < self.params.swallow_body_lengths * length;
                         if strikes && self.strike_confused(i, j) {
                             open = false;
                         } else if strikes {
@@ -180,7 +197,7 @@ impl ReefWorld {
                 self.rng.random_range(-1.0..1.0),
                 self.rng.random_range(-1.0..1.0),
             ) * 0.02;
-            let mut q = p + (water + jiggle - Vec3::Y * PLANKTON_SINK_M_PER_S) * dt;
+            let mut q = p + (water + jiggle - Vec3::Y * self.params.plankton_sink_m_per_s) * dt;
             q = self.tank.clamp_inside(q, 0.05);
             for o in &self.obstacles {
                 if o.signed_distance_m(q) < 0.02 {
@@ -195,7 +212,7 @@ impl ReefWorld {
         self.food.retain(|f| f.position_m.y > floor);
         self.food_release_secs -= dt;
         if self.food.len() < self.food_target && self.food_release_secs <= 0.0 {
-            self.food_release_secs = FOOD_RELEASE_SECS;
+            self.food_release_secs = self.params.food_release_secs;
             let mut p = self.random_free_point(0.5);
             p.y = self.rng.random_range(0.6..0.95) * self.tank.max_m.y;
             self.add_food(p);

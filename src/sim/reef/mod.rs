@@ -4,7 +4,7 @@
 //! motor choice drives the muscle body (`motor_choice`) or the point mass
 //! follows it; the world (`world`) holds the step order, feeding and
 //! predation, plankton, seaweed, the demos and the event log. Light and
-//! temperature of the water: `environment`.
+//! temperature of the water: `environment`. The reef's tuning: `params`.
 
 pub mod behaviour;
 pub mod courtship;
@@ -14,6 +14,7 @@ pub mod events;
 pub mod feeding;
 pub mod mind;
 pub mod motor_choice;
+pub mod params;
 pub mod perception;
 pub mod report;
 pub mod world;

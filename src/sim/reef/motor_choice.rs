@@ -4,12 +4,12 @@
 //!
 //! | the routine wants                      | motor controllers |
 //! |----------------------------------------|-------------------|
-//! | to swim on (heading error under [`TURN_MC_MIN_DEG`]) | swim-MC at the wished speed; course kept by a bend of the turning segments proportional to the error ([`COURSE_GAIN_PER_RAD`], `body::turn_mc::add_steering`) |
-//! | to swim somewhere [`TURN_MC_MIN_DEG`] or more off its heading | turn-MC(angle), at most 90° at a time; the routine asks again when the turn is done (not while pursuing a moving target, [`Gait::Pursue`]: it keeps re-aiming with the held bend) |
+//! | to swim on (heading error under [`MotorChoiceParams::turn_mc_min_deg`]) | swim-MC at the wished speed; course kept by a bend of the turning segments proportional to the error ([`MotorChoiceParams::course_gain_per_rad`], `body::turn_mc::add_steering`) |
+//! | to swim somewhere [`MotorChoiceParams::turn_mc_min_deg`] or more off its heading | turn-MC(angle), at most 90° at a time; the routine asks again when the turn is done (not while pursuing a moving target, [`Gait::Pursue`]: it keeps re-aiming with the held bend) |
 //! | to climb or dive                       | both pectoral fins pitched (twice the elevation error, at most ±0.5 rad) |
-//! | to go much slower than it swims, towards a goal less than [`TURN_MC_MIN_DEG`] off its heading | fins across the flow (brake), no tail beat (a goal further round is turned to first: the turn needs the tail's thrust) |
+//! | to go much slower than it swims, towards a goal less than [`MotorChoiceParams::turn_mc_min_deg`] off its heading | fins across the flow (brake), no tail beat (a goal further round is turned to first: the turn needs the tail's thrust) |
 //! | to hover ([`Gait::Hover`])             | no tail beat, fins across the flow: the fish stops within a body length and stays |
-//! | to hover and bob ([`Gait::Bob`])       | a slow tail beat ([`BOB_SWIM_FRACTION`]) against fins that brake and tilt up and down together at [`BOB_HZ`]: the fish holds its place and rises and sinks |
+//! | to hover and bob ([`Gait::Bob`])       | a slow tail beat ([`MotorChoiceParams::bob_swim_fraction`]) against fins that brake and tilt up and down together at [`MotorChoiceParams::bob_hz`]: the fish holds its place and rises and sinks |
 //!
 //! A turn-MC turn, once started, runs to its end (the paper's turns are
 //! ballistic: a quick bend and a slow release); while it runs the routine's wish
@@ -36,12 +36,13 @@ use serde::{Deserialize, Serialize};
 
 use crate::sim::body::PectoralFins;
 use crate::sim::body::motor_bridge::{MotorIntent, level_turn_deg};
+use crate::sim::reef::params::MotorChoiceParams;
 
 /// How a routine wants its body to move.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Gait {
-    /// Swim at the wished velocity; turns of [`TURN_MC_MIN_DEG`] or more are
+    /// Swim at the wished velocity; turns of [`MotorChoiceParams::turn_mc_min_deg`] or more are
     /// turn-MC turns (avoiding, escaping, schooling, leaving, wandering).
     #[default]
     Swim,
@@ -104,40 +105,6 @@ impl Wish {
     }
 }
 
-/// Smallest heading error the routine turns with a turn-MC turn, degrees: 90,
-/// chosen, a goal at the fish's side or behind it (`docs/fish-mind.md`: the six
-/// hungry fish of the *Feeding* demo ate 99, 145 and 160 plankton in 4 × 132 s
-/// with 45°, 90° and 120°, 173 with the held bend alone: a turn-MC turn swims a
-/// wide arc at full beat and overshoots near food). Below it the held bend
-/// keeps the course (see the module doc).
-pub const TURN_MC_MIN_DEG: f32 = 90.0;
-/// Bend per radian of heading error while keeping the course, 1/rad (3: full bend
-/// from 19° of error). The physics scene's bridge, which turns whole corners with
-/// the held bend, uses 4 (`motor_bridge::STEER_GAIN_PER_RAD`); here, where turns
-/// of 90° and more go to the turn-MC, 4 measured worse on the reef demos (feeding
-/// seeds 3–4: 27 plankton against 32 at 3; courtship seed 2 reached only nuzzling;
-/// 25 collision starts in the muscle reef's minute on seed 2).
-pub const COURSE_GAIN_PER_RAD: f32 = 3.0;
-/// Fin pitch per radian of elevation error (2, chosen: a 15° climb request tilts
-/// the fins by the full 0.5 rad).
-const PITCH_GAIN: f32 = 2.0;
-/// Largest fin pitch while swimming, radians (0.5, as in the fin tests of
-/// `body/tests.rs`).
-const MAX_FIN_PITCH_RAD: f32 = 0.5;
-/// A fish swimming faster than this share of its top speed brakes with its fins
-/// when the routine wants less than half its speed (0.3, the bridge's rule).
-const BRAKE_ABOVE_FRACTION: f32 = 0.3;
-/// swim-MC speed of a bobbing fish, fraction of the top speed (0.15, chosen:
-/// enough water over the fins to lift and sink the fish, slow enough for the
-/// braking fins to hold it almost in place; measured in `body/physical_fish.rs`).
-pub const BOB_SWIM_FRACTION: f32 = 0.15;
-/// Bobbing frequency, Hz (0.5, chosen: one rise and fall every 2 s).
-pub const BOB_HZ: f32 = 0.5;
-/// Fin angle of a bobbing fish while it rises, radians from flat (1.1, chosen:
-/// leading edge well up, the fin brakes and lifts). While it sinks the fins are
-/// tilted the other way as far as they go (θ = π/4).
-const BOB_LIFT_PITCH_RAD: f32 = 1.1;
-
 /// The fish as its motor choice sees it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Body {
@@ -152,8 +119,8 @@ pub struct Body {
 }
 
 /// The motor controllers that carry out `wish` for `body` at `time_secs` (the
-/// bobbing clock). Non-finite input asks for nothing.
-pub fn choose(wish: &Wish, body: &Body, time_secs: f32) -> MotorIntent {
+/// bobbing clock), tuned by `params`. Non-finite input asks for nothing.
+pub fn choose(params: &MotorChoiceParams, wish: &Wish, body: &Body, time_secs: f32) -> MotorIntent {
     let idle = MotorIntent {
         speed_fraction: 0.0,
         start_turn_deg: None,
@@ -173,14 +140,14 @@ pub fn choose(wish: &Wish, body: &Body, time_secs: f32) -> MotorIntent {
             };
         }
         Gait::Bob => {
-            let rising = (TAU * BOB_HZ * time_secs).sin() >= 0.0;
+            let rising = (TAU * params.bob_hz * time_secs).sin() >= 0.0;
             let pitch = if rising {
-                BOB_LIFT_PITCH_RAD
+                params.bob_lift_pitch_rad
             } else {
                 -std::f32::consts::FRAC_PI_4
             };
             return MotorIntent {
-                speed_fraction: BOB_SWIM_FRACTION,
+                speed_fraction: params.bob_swim_fraction,
                 fins: PectoralFins::pitch(pitch),
                 ..idle
             };
@@ -201,16 +168,16 @@ pub fn choose(wish: &Wish, body: &Body, time_secs: f32) -> MotorIntent {
     } else {
         0.0
     };
-    // Brake for a goal ahead only: a goal TURN_MC_MIN_DEG or more round is turned
+    // Brake for a goal ahead only: a goal `turn_mc_min_deg` or more round is turned
     // to first, and a turn needs the tail's thrust. (Braking for any goal, a
     // nuzzling male behind the female but facing away from her braked, coasted,
     // beat again and braked, turning about 6°/s while he swam out of her sight:
     // courtship seeds 1-16 spawned 14 times within 5 minutes, now 15, and no
     // pair stalls in nuzzling; `reef_world::tests::courtship_seeds`.)
     if wanted < 0.5 * speed
-        && speed > BRAKE_ABOVE_FRACTION * top
+        && speed > params.brake_above_fraction * top
         && !body.turning
-        && error_deg.abs() < TURN_MC_MIN_DEG
+        && error_deg.abs() < params.turn_mc_min_deg
     {
         return MotorIntent {
             fins: PectoralFins::BRAKE,
@@ -223,7 +190,8 @@ pub fn choose(wish: &Wish, body: &Body, time_secs: f32) -> MotorIntent {
     let pitch = body.heading.y.clamp(-1.0, 1.0).asin();
     let fins = if wanted > 0.0 {
         PectoralFins::pitch(
-            (PITCH_GAIN * (elevation - pitch)).clamp(-MAX_FIN_PITCH_RAD, MAX_FIN_PITCH_RAD),
+            (params.pitch_gain * (elevation - pitch))
+                .clamp(-params.max_fin_pitch_rad, params.max_fin_pitch_rad),
         )
     } else {
         PectoralFins::NEUTRAL
@@ -232,10 +200,10 @@ pub fn choose(wish: &Wish, body: &Body, time_secs: f32) -> MotorIntent {
     let (mut start_turn_deg, mut steer) = (None, 0.0);
     if body.turning {
         // The turn runs to its end.
-    } else if wish.gait == Gait::Swim && error_deg.abs() >= TURN_MC_MIN_DEG {
+    } else if wish.gait == Gait::Swim && error_deg.abs() >= params.turn_mc_min_deg {
         start_turn_deg = Some(error_deg.clamp(-90.0, 90.0));
     } else {
-        steer = (COURSE_GAIN_PER_RAD * error_deg.to_radians()).clamp(-1.0, 1.0);
+        steer = (params.course_gain_per_rad * error_deg.to_radians()).clamp(-1.0, 1.0);
         // The bend turns the fish by the tail's thrust on it: beat at least as
         // hard as the bend (the circle stays about 0.6 body lengths).
         speed_fraction = speed_fraction.max(steer.abs());
@@ -269,47 +237,91 @@ mod tests {
             Vec3::new(r.cos(), 0.0, -r.sin()) * 0.2
         };
         // 120° to the left: one 90° turn-MC turn now, the rest when it is done.
-        let m = choose(&Wish::swim(level(120.0)), &body(0.2, false), 0.0);
+        let m = choose(
+            &MotorChoiceParams::default(),
+            &Wish::swim(level(120.0)),
+            &body(0.2, false),
+            0.0,
+        );
         assert_eq!(m.start_turn_deg, Some(90.0));
         assert_eq!(m.steer, 0.0);
         // Straight behind to the right: 90° to the right.
-        let m = choose(&Wish::swim(level(-179.0)), &body(0.2, false), 0.0);
+        let m = choose(
+            &MotorChoiceParams::default(),
+            &Wish::swim(level(-179.0)),
+            &body(0.2, false),
+            0.0,
+        );
         assert_eq!(m.start_turn_deg, Some(-90.0));
         // At the turn-MC's threshold: a turn-MC turn of that angle.
         let m = choose(
-            &Wish::swim(level(TURN_MC_MIN_DEG + 1.0)),
+            &MotorChoiceParams::default(),
+            &Wish::swim(level(MotorChoiceParams::default().turn_mc_min_deg + 1.0)),
             &body(0.2, false),
             0.0,
         );
         let angle = m.start_turn_deg.expect("a turn-MC turn");
         assert!(
-            (angle - (TURN_MC_MIN_DEG + 1.0).min(90.0)).abs() < 0.1,
+            (angle - (MotorChoiceParams::default().turn_mc_min_deg + 1.0).min(90.0)).abs() < 0.1,
             "{angle}"
         );
         // While a turn runs nothing new starts.
-        let m = choose(&Wish::swim(level(120.0)), &body(0.2, true), 0.0);
+        let m = choose(
+            &MotorChoiceParams::default(),
+            &Wish::swim(level(120.0)),
+            &body(0.2, true),
+            0.0,
+        );
         assert_eq!((m.start_turn_deg, m.steer), (None, 0.0));
         // A pursuit re-aims with the held bend, however large the error.
-        let m = choose(&Wish::pursue(level(120.0)), &body(0.2, false), 0.0);
+        let m = choose(
+            &MotorChoiceParams::default(),
+            &Wish::pursue(level(120.0)),
+            &body(0.2, false),
+            0.0,
+        );
         assert_eq!((m.start_turn_deg, m.steer), (None, 1.0));
         // 10° to the right: a proportional bend, no turn-MC turn.
-        let m = choose(&Wish::swim(level(-10.0) * 0.5), &body(0.1, false), 0.0);
+        let m = choose(
+            &MotorChoiceParams::default(),
+            &Wish::swim(level(-10.0) * 0.5),
+            &body(0.1, false),
+            0.0,
+        );
         assert_eq!(m.start_turn_deg, None);
-        assert!((m.steer + COURSE_GAIN_PER_RAD * 10f32.to_radians()).abs() < 1e-4);
+        assert!(
+            (m.steer + MotorChoiceParams::default().course_gain_per_rad * 10f32.to_radians()).abs()
+                < 1e-4
+        );
     }
 
     #[test]
     fn hovering_stops_the_tail_and_brakes_with_the_fins() {
-        let m = choose(&Wish::hover(), &body(0.2, false), 0.0);
+        let m = choose(
+            &MotorChoiceParams::default(),
+            &Wish::hover(),
+            &body(0.2, false),
+            0.0,
+        );
         assert_eq!(m.speed_fraction, 0.0);
         assert_eq!(m.fins, PectoralFins::BRAKE);
         // Much slower than now: brake.
-        let m = choose(&Wish::swim(Vec3::X * 0.02), &body(0.25, false), 0.0);
+        let m = choose(
+            &MotorChoiceParams::default(),
+            &Wish::swim(Vec3::X * 0.02),
+            &body(0.25, false),
+            0.0,
+        );
         assert_eq!((m.speed_fraction, m.fins), (0.0, PectoralFins::BRAKE));
         // Much slower, but towards a goal behind: no brake, the tail beats and the
         // fish bends round (pursuit) or starts a turn-MC turn (swim).
         for wish in [Wish::pursue(-Vec3::X * 0.02), Wish::swim(-Vec3::X * 0.02)] {
-            let m = choose(&wish, &body(0.25, false), 0.0);
+            let m = choose(
+                &MotorChoiceParams::default(),
+                &wish,
+                &body(0.25, false),
+                0.0,
+            );
             assert_ne!(m.fins, PectoralFins::BRAKE, "{wish:?}");
             assert!(
                 m.speed_fraction > 0.0 || m.start_turn_deg.is_some(),
@@ -320,9 +332,22 @@ mod tests {
 
     #[test]
     fn bobbing_beats_slowly_and_tilts_the_fins_up_then_down() {
-        let up = choose(&Wish::bob(), &body(0.0, false), 0.25 / BOB_HZ);
-        let down = choose(&Wish::bob(), &body(0.0, false), 0.75 / BOB_HZ);
-        assert_eq!(up.speed_fraction, BOB_SWIM_FRACTION);
+        let up = choose(
+            &MotorChoiceParams::default(),
+            &Wish::bob(),
+            &body(0.0, false),
+            0.25 / MotorChoiceParams::default().bob_hz,
+        );
+        let down = choose(
+            &MotorChoiceParams::default(),
+            &Wish::bob(),
+            &body(0.0, false),
+            0.75 / MotorChoiceParams::default().bob_hz,
+        );
+        assert_eq!(
+            up.speed_fraction,
+            MotorChoiceParams::default().bob_swim_fraction
+        );
         assert!(up.fins.left_angle_rad > std::f32::consts::FRAC_PI_2);
         assert!(down.fins.left_angle_rad < std::f32::consts::FRAC_PI_2);
         assert_eq!(up.start_turn_deg, None);
@@ -331,12 +356,18 @@ mod tests {
     #[test]
     fn climbing_pitches_the_fins_and_garbage_asks_for_nothing() {
         let up = choose(
+            &MotorChoiceParams::default(),
             &Wish::swim(Vec3::new(1.0, 0.5, 0.0) * 0.2),
             &body(0.2, false),
             0.0,
         );
         assert!(up.fins.left_angle_rad > std::f32::consts::FRAC_PI_2);
-        let nan = choose(&Wish::swim(Vec3::NAN), &body(0.2, false), 0.0);
+        let nan = choose(
+            &MotorChoiceParams::default(),
+            &Wish::swim(Vec3::NAN),
+            &body(0.2, false),
+            0.0,
+        );
         assert_eq!(nan.speed_fraction, 0.0);
     }
 }

@@ -7,7 +7,7 @@
 //! Occlusion is tested with rays from the eye to the object's centre and to four
 //! points on its silhouette (its bounding sphere seen from the eye): the object
 //! is seen if any ray is clear. Fish bodies block rays as spheres of
-//! [`OCCLUDER_RADIUS_BODY_LENGTHS`] body lengths; rocks, pillars and ledges by
+//! [`PerceptionParams::occluder_radius_body_lengths`] body lengths; rocks, pillars and ledges by
 //! their exact shapes (sphere tracing of `Obstacle::signed_distance_m`).
 //!
 //! [`Retina`] renders the fish-eye "retinal image" of Fig. 11 by casting one ray
@@ -21,23 +21,17 @@ use glam::Vec3;
 
 use crate::sim::common::obstacle::Obstacle;
 use crate::sim::reef::environment::Environment;
+use crate::sim::reef::params::PerceptionParams;
 
 /// The paper's field of view, radians (300°).
 pub const FIELD_OF_VIEW_RAD: f32 = 300.0 * std::f32::consts::PI / 180.0;
 
-/// Radius of the sphere by which a fish's body hides what lies behind it, body
-/// lengths (0.3, chosen). The body is drawn, and rendered in the retina, as an
-/// ellipsoid 1 body length long and 0.3 across; seen from the side it covers
-/// π · 0.5 · 0.15 ≈ 0.24 square body lengths, as much as a disc of radius 0.27.
-/// 0.3 rounds that up a little for the fins.
-pub const OCCLUDER_RADIUS_BODY_LENGTHS: f32 = 0.3;
-
 /// The sphere by which a fish of `body_length_m` centred at `center_m` hides
 /// what lies behind it.
-pub fn fish_occluder(center_m: Vec3, body_length_m: f32) -> Sphere {
+pub fn fish_occluder(params: &PerceptionParams, center_m: Vec3, body_length_m: f32) -> Sphere {
     Sphere {
         center_m,
-        radius_m: OCCLUDER_RADIUS_BODY_LENGTHS * body_length_m,
+        radius_m: params.occluder_radius_body_lengths * body_length_m,
     }
 }
 
@@ -402,32 +396,16 @@ pub const PREY_BETA_SCHOOL: f32 = 0.5;
 /// β2 of the prey cost: prey that needs a large turn costs more (paper: 0.2).
 pub const PREY_BETA_TURN: f32 = 0.2;
 
-/// A fish swims in a school (S_k = 1 in the prey cost) when at least this many
-/// live fish of its kind and species are within [`SCHOOLMATE_RADIUS_BODY_LENGTHS`]
-/// and head within [`SCHOOLMATE_MAX_ANGLE_RAD`] of its heading (2, chosen: the
-/// fewest that make a group around the fish, not a pair passing by).
-pub const SCHOOLMATES_FOR_S_K: usize = 2;
-
-/// How near a schoolmate must be, body lengths of the fish (3, chosen: schooling
-/// fish keep about one body length apart, §7.2, so a fish in a school has its
-/// nearest mates within one or two; three tolerates a school loosened by a turn
-/// or a swerve).
-pub const SCHOOLMATE_RADIUS_BODY_LENGTHS: f32 = 3.0;
-
-/// Largest angle between a schoolmate's heading and the fish's, radians (45°,
-/// chosen: a school swims roughly the same way; a fish crossing its path at a
-/// right angle does not school with it).
-pub const SCHOOLMATE_MAX_ANGLE_RAD: f32 = std::f32::consts::FRAC_PI_4;
-
-/// Does fish `i` swim in a school: at least [`SCHOOLMATES_FOR_S_K`] live fish of
-/// its kind and species near it swimming roughly its way?
-pub(super) fn in_a_school(seen: &[Seen], i: usize) -> bool {
+/// Does fish `i` swim in a school: at least
+/// [`PerceptionParams::schoolmates_for_s_k`] live fish of its kind and species
+/// near it swimming roughly its way?
+pub(super) fn in_a_school(params: &PerceptionParams, seen: &[Seen], i: usize) -> bool {
     let me = seen[i];
     if !me.alive {
         return false;
     }
-    let radius = SCHOOLMATE_RADIUS_BODY_LENGTHS * me.length_m;
-    let min_cos = SCHOOLMATE_MAX_ANGLE_RAD.cos();
+    let radius = params.schoolmate_radius_body_lengths * me.length_m;
+    let min_cos = params.schoolmate_max_angle_rad.cos();
     seen.iter()
         .enumerate()
         .filter(|&(j, o)| {
@@ -438,9 +416,9 @@ pub(super) fn in_a_school(seen: &[Seen], i: usize) -> bool {
                 && o.position_m.distance(me.position_m) <= radius
                 && o.heading.dot(me.heading) >= min_cos
         })
-        .take(SCHOOLMATES_FOR_S_K)
+        .take(params.schoolmates_for_s_k)
         .count()
-        >= SCHOOLMATES_FOR_S_K
+        >= params.schoolmates_for_s_k
 }
 
 /// A display colour for the retina (linear RGB) from a hue.
@@ -605,10 +583,10 @@ impl ReefWorld {
             }
         }
         // Food (prey and pacifists): the nearest few seen particles, by the
-        // effort of reaching them (see CLIMB_EFFORT_MUSCLE_BODY).
+        // effort of reaching them (see `ReefParams::climb_effort_muscle_body`).
         if habits.kind != FishKind::Predator {
             let climb_effort = match self.animals[i].body {
-                ReefBody::Physical(_) => CLIMB_EFFORT_MUSCLE_BODY,
+                ReefBody::Physical(_) => self.params.climb_effort_muscle_body,
                 ReefBody::Point(_) => 1.0,
             };
             let effort = |p: Vec3| {

@@ -777,7 +777,11 @@ fn a_fish_flees_from_where_it_last_saw_the_predator_not_from_where_it_is() {
         let remembered = c + Vec3::Z;
         let fish = w.animal_mut(0).unwrap();
         fish.habits.schools = false;
-        fish.last_threat = Some((shark as u32, remembered, 0.5 * THREAT_MEMORY_SECS));
+        fish.last_threat = Some((
+            shark as u32,
+            remembered,
+            0.5 * crate::sim::reef::params::ReefParams::default().threat_memory_secs,
+        ));
         w.step();
         let a = &w.animals()[0];
         assert_eq!(a.focus.intention, Intention::Escape, "{body:?}");
@@ -859,18 +863,38 @@ fn a_fish_is_in_a_school_with_two_mates_near_it_swimming_its_way() {
         fish(0.0, 0.6, Vec3::X),
         fish(0.3, -0.6, Vec3::X),
     ];
-    assert!((0..3).all(|i| in_a_school(&group, i)));
+    assert!((0..3).all(|i| in_a_school(
+        &crate::sim::reef::params::PerceptionParams::default(),
+        &group,
+        i
+    )));
     // One mate only: a pair is no school.
-    assert!(!in_a_school(&group[..2], 0));
+    assert!(!in_a_school(
+        &crate::sim::reef::params::PerceptionParams::default(),
+        &group[..2],
+        0
+    ));
     // Mates too far (beyond 3 body lengths) or crossing at a right angle.
     let far = [group[0], fish(0.0, 1.6, Vec3::X), fish(0.0, -1.6, Vec3::X)];
-    assert!(!in_a_school(&far, 0));
+    assert!(!in_a_school(
+        &crate::sim::reef::params::PerceptionParams::default(),
+        &far,
+        0
+    ));
     let crossing = [group[0], fish(0.0, 0.6, Vec3::Z), fish(0.3, -0.6, Vec3::X)];
-    assert!(!in_a_school(&crossing, 0));
+    assert!(!in_a_school(
+        &crate::sim::reef::params::PerceptionParams::default(),
+        &crossing,
+        0
+    ));
     // Another species is no schoolmate.
     let mut other = group;
     other[2].species = 1;
-    assert!(!in_a_school(&other, 0));
+    assert!(!in_a_school(
+        &crate::sim::reef::params::PerceptionParams::default(),
+        &other,
+        0
+    ));
 }
 
 /// Fig. 17: does the muscle-driven school of the *School meets obstacle*

@@ -43,79 +43,21 @@ use crate::sim::reef::environment::Environment;
 use crate::sim::reef::mind::habits::KindTraits;
 use crate::sim::reef::mind::{FishKind, Focus, Habits, IntentionGenerator, MentalState, Sex};
 use crate::sim::reef::motor_choice::{self, Gait, Wish};
+use crate::sim::reef::params::ReefParams;
 use crate::sim::reef::perception::{Eye, Retina, Sphere, fish_occluder, in_a_school};
 
 /// Most animals in a reef.
 pub const MAX_REEF_ANIMALS: usize = 200;
-/// Longest time since the last meal (and mating) a reef fish starts with,
-/// seconds. 30, chosen: the clocks differ from fish to fish, and a fish with
-/// Shoal's calm p0 that ate 0.7 of its appetite 30 s ago has hunger 0.55.
-pub const START_FED_FOR_MAX_SECS: f32 = 30.0;
-/// The *Courtship* demo's digestion rate as a fraction of the nominal p0. 0.1,
-/// chosen: see the demo's setup in `populate`.
-pub const COURTSHIP_DIGESTION_FRACTION: f32 = 0.1;
 /// Most plankton particles kept in the water.
 pub const MAX_FOOD: usize = 200;
 /// Time step of the point-mass body, seconds: the fish world's one step
 /// ([`crate::sim::common::paper_time::FISH_STEP_SECS`]), as the muscle body's, so both
 /// bodies see the same world clock.
 pub const POINT_BODY_DT_SECS: f32 = crate::sim::common::paper_time::FISH_STEP_SECS;
-/// Time in which a behaviour's wish becomes a steering force, seconds (0.25,
-/// chosen, as the physics tank's).
-pub(super) const RESPONSE_TIME_SECS: f32 = 0.25;
-/// Food within this distance of the mouth, and in front of it
-/// ([`SUCK_CONE_COS`]), is sucked in, body lengths (1.0, chosen: the muscle
-/// body turns in circles of about two body lengths, so it passes food at
-/// about a body length more often than it meets it head on; with 0.4 and
-/// 0.8 six hungry fish ate 0 and 1 particles in a minute, measured).
-pub(super) const SUCK_RANGE_BODY_LENGTHS: f32 = 1.0;
-/// How many metres of level swimming a metre of climbing or diving costs a
-/// muscle fish choosing its food (its perceptual focusser weighs the food's
-/// distance so, §6.3). 10, chosen (`docs/fish-mind.md`: with 1, 4, 10 and 20
-/// the six fish of the *Feeding* demo ate 24, 128, 173 and 145 plankton in
-/// 4 × 132 s, steering by the held bend only): the righting couple
-/// holds the muscle body level and only the fins' lift raises it, about 1 cm/s
-/// at cruising speed against 0.2 m/s of level swimming (measured), so a
-/// particle a metre overhead took minutes to reach while level ones went
-/// uneaten. The point-mass body climbs as fast as it swims (1). On the converged
-/// body (seeds 1–8, 60 s, `feeding_census`): 124 plankton with 10, 111 with 20,
-/// 101 with 40.
-pub(super) const CLIMB_EFFORT_MUSCLE_BODY: f32 = 10.0;
-/// The vacuum acts in the half-space ahead of the mouth (cos 90° = 0).
-pub(super) const SUCK_CONE_COS: f32 = 0.0;
-/// A predator opens its mouth on prey within this distance, body lengths.
-pub(super) const PREDATOR_SUCK_RANGE_BODY_LENGTHS: f32 = 0.6;
-/// Prey whose centre comes this close to the predator's mouth is swallowed,
-/// body lengths of the predator (0.3, chosen).
-pub(super) const SWALLOW_BODY_LENGTHS: f32 = 0.3;
-/// Pull of the vacuum on food, m/s at the mouth.
-pub(super) const VACUUM_SPEED_M_PER_S: f32 = 0.6;
-/// Pull of the vacuum on prey, m/s² (2, chosen: a fleeing fish at top speed
-/// still slips away from a mouth it is not already in).
-pub(super) const VACUUM_ACCEL_M_PER_S2: f32 = 2.0;
-/// A food particle this close to the mouth is eaten, metres.
-pub(super) const EAT_DISTANCE_M: f32 = 0.06;
-/// Sinking speed of plankton, m/s.
-pub(super) const PLANKTON_SINK_M_PER_S: f32 = 0.01;
-/// One new particle is released every this many seconds while fewer than the
-/// target count drift in the water.
-pub(super) const FOOD_RELEASE_SECS: f32 = 1.5;
 /// Seconds between mind-history samples.
 pub(super) const HISTORY_EVERY_SECS: f64 = 0.5;
 /// Mind-history samples kept per animal (2 minutes).
 pub(super) const HISTORY_LEN: usize = 240;
-/// Radius of the muscle body's turning circle, body lengths (1.2: measured
-/// 1.03–1.14 for 90° turns from 0.4–1.0 of the top speed on the converged body,
-/// `body/physical_fish.rs` agility tests, docs/fish-body.md; a little more for margin.
-/// It was 0.75 on the earlier body, which turned in 0.6–0.7. In the *Feeding*
-/// demo, seeds 3 and 4, 60 s, muscle fish ate 32 plankton with 0.75, 34 with 1.2
-/// and 35 with 0: within the seed noise.)
-pub(super) const BODY_TURN_RADIUS_BODY_LENGTHS: f32 = 1.2;
-/// A predator that leaves the field of view still frightens for this long,
-/// seconds, at the place it was last seen (3, chosen: the paper's fear counts
-/// sighted predators only, and a fleeing fish that turned its blind cone to the
-/// shark stopped, turned back to look, and fled again, measured).
-pub const THREAT_MEMORY_SECS: f32 = 3.0;
 /// Seconds between two "fled" events of one fish.
 pub(super) const ESCAPE_LOG_EVERY_SECS: f64 = 15.0;
 /// Events kept in the log.
@@ -134,49 +76,6 @@ pub enum ReefBodyKind {
     /// The boid layer's point-mass fish: cheap, for big scenes.
     PointMass,
 }
-
-/// How far ahead a reef fish foresees the glass, sand and surface, seconds
-/// of its present velocity. Default 8 (tuned with the earlier muscle body,
-/// whose turning circle was about 0.75 body lengths at cruising speed; the
-/// converged body's is about 1.2, `BODY_TURN_RADIUS_BODY_LENGTHS`).
-pub(super) const CONTAINMENT_LOOK_AHEAD_SECS: f32 = 8.0;
-
-/// How far from the glass, sand and surface a reef fish keeps, body lengths.
-/// Default 1.5 (tuned: room for the muscle body to turn).
-pub(super) const CONTAINMENT_MARGIN_BODY_LENGTHS: f32 = 1.5;
-
-/// How far from the glass a fish keeps while it closes in on its food, prey
-/// or partner, body lengths; it then also heeds only the glass it would reach
-/// before the target. Default 0.3 (chosen). With the cruising margin of 1.5
-/// body lengths a one-metre shark turned away a metre and a half from the
-/// glass, so prey that fled to the glass could never be reached: loners
-/// escaped a hungry shark by hiding in corners (measured: one prey in 40
-/// minutes, against nine from schools).
-pub(super) const CHASE_GLASS_MARGIN_BODY_LENGTHS: f32 = 0.3;
-
-/// How close other prey must be to a predator's target to confuse its
-/// strike, in the target's body lengths. Default 2 (chosen: the spacing of a
-/// loose school, Pitcher & Partridge 1979 give about one body length between
-/// neighbours).
-pub const CONFUSION_RADIUS_BODY_LENGTHS: f32 = 2.0;
-
-/// The confusion effect (Neill & Cullen 1974; Landeau & Terborgh 1986: a
-/// predator's success per attack falls as the prey group grows, because many
-/// similar targets moving together make it hard to fix on one): a strike on
-/// prey with `n` other prey near it succeeds with probability
-/// 1 / (1 + c n), c this constant. Default 1 (chosen): one neighbour halves
-/// the success, six leave one strike in seven; with 0.5 (tried first) the
-/// schools were hardly safer than loners (105 against 130 prey eaten in
-/// 12 × 2 minutes, with 1: 88 against 129; `docs/fish-mind.md`). Not in
-/// Tu & Terzopoulos, whose schooling prey are protected only by the
-/// predator's choice (β1); without it a shark faster than its prey catches
-/// schooling and lone prey at the same rate once it has chosen.
-pub const CONFUSION_PER_NEIGHBOUR: f32 = 1.0;
-
-/// Seconds a predator needs after a missed strike before it can strike again
-/// (mouth closed, still chasing). Default 1.5 (chosen: long enough for the
-/// prey's dart to take it out of the mouth's reach).
-pub const MISSED_STRIKE_RECOVERY_SECS: f32 = 1.5;
 
 /// What to build.
 #[derive(Clone, Debug, PartialEq)]
@@ -310,7 +209,7 @@ pub struct ReefAnimal {
     pub(super) intended_m_per_s: Vec3,
     pub(super) touch: Option<Vec3>,
     /// The predator last seen, where, and for how many more seconds it is
-    /// remembered (see [`THREAT_MEMORY_SECS`]).
+    /// remembered (see [`ReefParams::threat_memory_secs`]).
     pub(super) last_threat: Option<(u32, Vec3, f32)>,
     /// When this animal's last escape was logged (the log says "fled" once per
     /// [`ESCAPE_LOG_EVERY_SECS`], not at every glance at the shark).
@@ -360,7 +259,7 @@ pub const SEAWEED_NODES: usize = 10;
 pub struct ReefCounts {
     pub prey_eaten: u32,
     /// Strikes that failed because other prey near the target confused the
-    /// predator (see [`CONFUSION_PER_NEIGHBOUR`]).
+    /// predator (see [`ReefParams::confusion_per_neighbour`]).
     pub missed_strikes: u32,
     /// Pairs that completed the courtship sequence.
     pub spawnings: u32,
@@ -378,6 +277,9 @@ pub struct ReefCounts {
 /// The reef.
 #[derive(Clone, Debug)]
 pub struct ReefWorld {
+    /// The reef's tuning (boxed: some 170 bytes a scene's world enum need not
+    /// carry inline).
+    pub(super) params: Box<ReefParams>,
     pub(super) tank: Tank,
     pub(super) env: Environment,
     pub(super) obstacles: Vec<Obstacle>,
@@ -429,6 +331,7 @@ impl ReefWorld {
             6.0
         };
         let mut world = Self {
+            params: Box::default(),
             tank,
             env: Environment::new(tank),
             obstacles: Vec::new(),
@@ -464,6 +367,11 @@ impl ReefWorld {
 
     pub fn tank(&self) -> &Tank {
         &self.tank
+    }
+
+    /// The reef's tuning.
+    pub fn params(&self) -> &ReefParams {
+        &self.params
     }
 
     /// Gives every animal its demo's habits with `traits` put in, at once
@@ -640,15 +548,25 @@ impl ReefWorld {
             .collect();
         // S_k of the predator's prey cost: does the fish swim in a school now
         // (whatever it intends)?
-        let schooling: Vec<bool> = (0..seen.len()).map(|i| in_a_school(&seen, i)).collect();
+        let perception = &self.params.perception;
+        let schooling: Vec<bool> = (0..seen.len())
+            .map(|i| in_a_school(perception, &seen, i))
+            .collect();
         for (s, schooling) in seen.iter_mut().zip(schooling) {
             s.schooling = schooling;
         }
         let bodies: Vec<Sphere> = seen
             .iter()
-            .map(|s| fish_occluder(s.position_m, if s.alive { s.length_m } else { 0.0 }))
+            .map(|s| {
+                fish_occluder(
+                    perception,
+                    s.position_m,
+                    if s.alive { s.length_m } else { 0.0 },
+                )
+            })
             .collect();
         let refresh_brightness = self.steps.is_multiple_of(18);
+        let threat_memory_secs = self.params.threat_memory_secs;
         for i in 0..self.animals.len() {
             if !self.animals[i].alive {
                 continue;
@@ -664,7 +582,7 @@ impl ReefWorld {
                 self.perceive(i, &seen, &bodies);
             let a = &mut self.animals[i];
             a.last_threat = match sighted {
-                Some(j) => Some((j, seen[j as usize].position_m, THREAT_MEMORY_SECS)),
+                Some(j) => Some((j, seen[j as usize].position_m, threat_memory_secs)),
                 None => a
                     .last_threat
                     .map(|(j, at, left)| (j, at, left - dt))
@@ -735,19 +653,22 @@ impl ReefWorld {
         a.desired_m_per_s = desired;
         let top = a.body.top_speed_m_per_s();
         let length = a.body.body_length_m();
-        let max_force = top / RESPONSE_TIME_SECS;
+        let drive = &self.params.drive;
+        let response_time_secs = drive.response_time_secs;
+        let max_force = top / response_time_secs;
         let position = a.body.position_m();
         // Motor preferences: keep off the glass, sand, surface and rocks. A fish
         // closing in on its food, prey or partner heeds only the glass that lies
-        // before it (see CHASE_GLASS_MARGIN_BODY_LENGTHS).
+        // before it (see `ReefParams::chase_glass_margin_body_lengths`).
         let (look_ahead_s, margin_m) = match chase_target {
             Some(target_m) => (
-                (target_m.distance(position) / top.max(1e-3)).min(CONTAINMENT_LOOK_AHEAD_SECS),
-                CHASE_GLASS_MARGIN_BODY_LENGTHS * length,
+                (target_m.distance(position) / top.max(1e-3))
+                    .min(drive.containment_look_ahead_secs),
+                self.params.chase_glass_margin_body_lengths * length,
             ),
             None => (
-                CONTAINMENT_LOOK_AHEAD_SECS,
-                CONTAINMENT_MARGIN_BODY_LENGTHS * length,
+                drive.containment_look_ahead_secs,
+                drive.containment_margin_m(length),
             ),
         };
         let contain = |velocity: Vec3| {
@@ -769,12 +690,12 @@ impl ReefWorld {
                 // The physics scene's way: the boid layer's intended velocity,
                 // then the bridge.
                 let velocity = a.intended_m_per_s;
-                let steer = steering::limit((desired - velocity) / RESPONSE_TIME_SECS, max_force);
-                let keep = steering::limit(keep_off(velocity) / RESPONSE_TIME_SECS, max_force);
+                let steer = steering::limit((desired - velocity) / response_time_secs, max_force);
+                let keep = steering::limit(keep_off(velocity) / response_time_secs, max_force);
                 let force = steering::limit(steer + keep, max_force);
-                let intent = drive_physical(p, &mut a.intended_m_per_s, force, a.touch, dt);
+                let intent = drive_physical(drive, p, &mut a.intended_m_per_s, force, a.touch, dt);
                 let (moved, touch) =
-                    step_and_constrain(p, &intent, water, &self.tank, &self.obstacles);
+                    step_and_constrain(drive, p, &intent, water, &self.tank, &self.obstacles);
                 self.constraint_moves += moved as u64;
                 a.touch = touch;
             }
@@ -790,7 +711,7 @@ impl ReefWorld {
                     let bent = desired + keep_off(path);
                     let mut v = bent.normalize_or(heading) * wanted;
                     if let Some(away) = a.touch {
-                        v = crate::sim::body::drive::touch_reflex(v, away, top);
+                        v = crate::sim::body::drive::touch_reflex(drive, v, away, top);
                     }
                     wish.velocity_m_per_s = v;
                 }
@@ -800,20 +721,21 @@ impl ReefWorld {
                     top_speed_m_per_s: top,
                     turning: p.is_turning(),
                 };
-                let intent = motor_choice::choose(&wish, &body, time_secs);
+                let intent =
+                    motor_choice::choose(&self.params.motor_choice, &wish, &body, time_secs);
                 let (moved, touch) =
-                    step_and_constrain(p, &intent, water, &self.tank, &self.obstacles);
+                    step_and_constrain(drive, p, &intent, water, &self.tank, &self.obstacles);
                 self.constraint_moves += moved as u64;
                 a.touch = touch;
                 a.intended_m_per_s = wish.velocity_m_per_s;
             }
             ReefBody::Point(f) => {
                 let velocity = a.intended_m_per_s;
-                let steer = steering::limit((desired - velocity) / RESPONSE_TIME_SECS, max_force);
+                let steer = steering::limit((desired - velocity) / response_time_secs, max_force);
                 let containment =
-                    steering::limit(contain(velocity) / RESPONSE_TIME_SECS, max_force);
+                    steering::limit(contain(velocity) / response_time_secs, max_force);
                 let avoidance =
-                    steering::limit(avoid_rocks(velocity) / RESPONSE_TIME_SECS, max_force);
+                    steering::limit(avoid_rocks(velocity) / response_time_secs, max_force);
                 let force = steering::limit(steer + containment + avoidance, max_force);
                 let params = SteeringParams {
                     max_speed_m_per_s: top,
