@@ -571,9 +571,9 @@ impl eframe::App for ShoalApp {
         if let Some(notice) = scene_panel.before_frame(&mut self.lab, now_secs, &self.ctx) {
             self.notice = Some(notice);
         }
-        scene_panel.bottom_ui(ui, &self.lab, &mut self.widget_rects);
-
         let mut settings = self.lab.settings().clone();
+        scene_panel.bottom_ui(ui, &self.lab, &mut settings, &mut self.widget_rects);
+
         let mut actions = keyboard_shortcuts(ui, &mut settings);
         let step_secs = self.lab.scene().dt_secs();
         let width = ui.ctx().content_rect().width();

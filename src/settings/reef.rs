@@ -72,6 +72,9 @@ pub struct ReefSettings {
     pub show_vision: bool,
     /// Colour the water by light or temperature.
     pub overlay: ReefOverlay,
+    /// Write each animal's name ("shark 10", "fish 5") over it, as the event
+    /// log and the inspector call it.
+    pub name_tags: bool,
     /// The teacher's changes to the minds of predators, prey and pacifists
     /// (`null` values keep the demo's own); they apply at once.
     pub traits: KindTraits,
@@ -89,6 +92,7 @@ impl Default for ReefSettings {
             selected: None,
             follow: false,
             show_vision: true,
+            name_tags: false,
             overlay: ReefOverlay::None,
             traits: KindTraits::default(),
         }

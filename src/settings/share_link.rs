@@ -166,6 +166,7 @@ mod tests {
             follow: rng.random_bool(0.5),
             show_vision: rng.random_bool(0.5),
             overlay: ReefOverlay::ALL[rng.random_range(0..3)],
+            name_tags: rng.random_bool(0.5),
             traits: Default::default(),
         };
         for kind in crate::sim::reef::mind::FishKind::ALL {

@@ -176,7 +176,13 @@ impl ScenePanel for BoidsPanel {
         }
     }
 
-    fn bottom_ui(&mut self, ui: &mut egui::Ui, lab: &Lab, rects: &mut WidgetRects) {
+    fn bottom_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        lab: &Lab,
+        _settings: &mut Settings,
+        rects: &mut WidgetRects,
+    ) {
         let labels: Vec<String> = lab
             .runs()
             .iter()

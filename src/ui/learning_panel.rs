@@ -447,7 +447,13 @@ impl ScenePanel for LearningPanel {
         self.asked = learning_controls_ui(ui, &mut settings.learning, rects);
     }
 
-    fn bottom_ui(&mut self, ui: &mut egui::Ui, lab: &Lab, rects: &mut WidgetRects) {
+    fn bottom_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        lab: &Lab,
+        _settings: &mut Settings,
+        rects: &mut WidgetRects,
+    ) {
         let run = &lab.runs()[0];
         let abstraction = self.abstraction.as_ref().map(|(_, a)| a);
         show_bottom_panel(

@@ -388,7 +388,13 @@ impl ScenePanel for PhysicsPanel {
         self.turn_asked = physics_controls_ui(ui, &mut settings.physics, rects);
     }
 
-    fn bottom_ui(&mut self, ui: &mut egui::Ui, lab: &Lab, rects: &mut WidgetRects) {
+    fn bottom_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        lab: &Lab,
+        _settings: &mut Settings,
+        rects: &mut WidgetRects,
+    ) {
         let run = &lab.runs()[0];
         // The plots need a selected fish; until then one line says how to get them.
         match lab.settings().physics.selected {

@@ -29,7 +29,7 @@ pub fn reef_inspector_height(selected: bool) -> f32 {
 
 /// The bottom panel of the reef scene: the inspector of the selected fish, or a
 /// hint; and the event log; in `content_height` points (a column that needs more
-/// scrolls).
+/// scrolls). Returns the animal whose event line was clicked.
 pub fn reef_inspector_ui(
     ui: &mut egui::Ui,
     run: &Run,
@@ -37,16 +37,15 @@ pub fn reef_inspector_ui(
     fish_eye: Option<FishEyeView>,
     content_height: f32,
     rects: &mut WidgetRects,
-) {
-    let Some(reef) = run.reef() else {
-        return;
-    };
+) -> Option<u32> {
+    let reef = run.reef()?;
     let animal = selected.and_then(|i| reef.animals().get(i as usize).map(|a| (i as usize, a)));
     // Every column fits `content_height`: the text columns scroll, the plot and the
     // event log take what their caption (one line) leaves.
     let line = ui.text_style_height(&egui::TextStyle::Body);
     let spacing = ui.spacing().item_spacing.y;
     let under_caption = plot_height_under_caption(content_height, line, spacing);
+    let mut clicked = None;
     ui.horizontal_top(|ui| {
         match animal {
             Some((i, a)) => {
@@ -108,9 +107,10 @@ pub fn reef_inspector_ui(
         }
         ui.separator();
         ui.vertical(|ui| {
-            event_log_ui(ui, reef, under_caption, rects);
+            clicked = event_log_ui(ui, reef, under_caption, rects);
         });
     });
+    clicked
 }
 
 fn mind_summary_ui(
@@ -272,9 +272,17 @@ fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, height: f32, rects: &mut W
     rects.insert("reef_mind_plot", r.response.rect);
 }
 
-fn event_log_ui(ui: &mut egui::Ui, reef: &ReefWorld, height: f32, rects: &mut WidgetRects) {
+/// The log, newest first; a click on a line selects and follows the animal it
+/// is about (returned).
+fn event_log_ui(
+    ui: &mut egui::Ui,
+    reef: &ReefWorld,
+    height: f32,
+    rects: &mut WidgetRects,
+) -> Option<u32> {
     ui.label(egui::RichText::new("What happened").strong())
-        .on_hover_text("Newest first: meals, chases, courtship");
+        .on_hover_text("Newest first: meals, chases, courtship. Click a line to follow who did it");
+    let mut clicked = None;
     let r = egui::ScrollArea::vertical()
         .id_salt("reef_events")
         .max_height(height)
@@ -282,11 +290,28 @@ fn event_log_ui(ui: &mut egui::Ui, reef: &ReefWorld, height: f32, rects: &mut Wi
             if reef.events().is_empty() {
                 ui.label("Nothing yet.");
             }
-            for e in reef.events().iter().rev().take(60) {
+            for (k, e) in reef.events().iter().rev().take(60).enumerate() {
                 let minutes = (e.time_secs / 60.0).floor();
                 let secs = e.time_secs - 60.0 * minutes;
-                ui.label(format!("{minutes:.0}:{secs:04.1}  {}", e.text));
+                let subject = e.kind.subject();
+                let who = reef
+                    .animals()
+                    .get(subject as usize)
+                    .map_or_else(|| format!("animal {subject}"), |a| a.name(subject as usize));
+                let line = ui
+                    .add(
+                        egui::Label::new(format!("{minutes:.0}:{secs:04.1}  {}", e.text))
+                            .sense(egui::Sense::click()),
+                    )
+                    .on_hover_text(format!("Click to select and follow {who}"));
+                if k == 0 {
+                    rects.insert("reef_event_0", line.rect);
+                }
+                if line.clicked() {
+                    clicked = Some(subject);
+                }
             }
         });
     rects.insert("reef_events", r.inner_rect);
+    clicked
 }

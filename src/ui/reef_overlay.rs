@@ -177,3 +177,44 @@ pub fn draw_water(
         }
     }
 }
+
+/// Name tags drawn at most (60, chosen: a school's worth; more would hide the
+/// fish).
+const NAME_TAGS_MAX: usize = 60;
+
+/// Each living animal's name ("shark 10", "fish 5") just above it, as the event
+/// log and the inspector name it.
+pub fn draw_name_tags(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    camera: &OrbitCamera,
+    run: &Run,
+    alpha: f32,
+) {
+    let Some(reef) = run.reef() else {
+        return;
+    };
+    let drawn = run.drawn_positions_m(alpha);
+    let aspect = rect.width() / rect.height().max(1.0);
+    for (i, a) in reef.living().take(NAME_TAGS_MAX) {
+        let Some(p) = drawn.get(i) else {
+            continue;
+        };
+        let above = *p + Vec3::Y * (0.4 * a.body.body_length_m() + 0.1);
+        let Some(uv) = camera.project(above, aspect) else {
+            continue;
+        };
+        let at = rect.min + egui::vec2(uv.x * rect.width(), uv.y * rect.height());
+        if !rect.contains(at) {
+            continue;
+        }
+        let galley = painter.layout_no_wrap(
+            a.name(i),
+            egui::FontId::proportional(12.0),
+            egui::Color32::WHITE,
+        );
+        let tag = egui::Rect::from_center_size(at, galley.size()).expand(2.0);
+        painter.rect_filled(tag, 3.0, egui::Color32::from_black_alpha(140));
+        painter.galley(tag.min + egui::vec2(2.0, 2.0), galley, egui::Color32::WHITE);
+    }
+}

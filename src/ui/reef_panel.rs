@@ -182,6 +182,11 @@ fn reef_controls_ui(
              is clear. The coloured line points at what it is thinking about",
         );
     rects.insert("reef_show_vision", r.rect);
+    let r = ui.checkbox(&mut reef.name_tags, "Name tags").on_hover_text(
+        "Write each animal's name over it, as the event log calls it (\"shark 10\", \
+             \"fish 5\"): click a line of the log to follow that fish",
+    );
+    rects.insert("reef_name_tags", r.rect);
     match reef.selected {
         Some(i) => {
             ui.horizontal(|ui| {
@@ -289,7 +294,13 @@ impl ScenePanel for ReefPanel {
         );
     }
 
-    fn bottom_ui(&mut self, ui: &mut egui::Ui, lab: &Lab, rects: &mut WidgetRects) {
+    fn bottom_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        lab: &Lab,
+        settings: &mut Settings,
+        rects: &mut WidgetRects,
+    ) {
         let selected = lab.settings().reef.selected;
         let fish_eye = self
             .fish_eye
@@ -300,19 +311,27 @@ impl ScenePanel for ReefPanel {
                 mean_brightness: f.mean_brightness,
             });
         let run = &lab.runs()[0];
-        show_bottom_panel(
+        let clicked = show_bottom_panel(
             ui,
             "reef_inspector",
             reef_inspector_height(selected.is_some()),
             rects,
             |ui, height, rects| reef_inspector_ui(ui, run, selected, fish_eye, height, rects),
         );
+        // A click on an event follows the fish it is about.
+        if let Some(subject) = clicked {
+            settings.reef.selected = Some(subject);
+            settings.reef.follow = true;
+        }
     }
 
     fn draw_overlays(&self, view: &ViewContext, settings: &Settings, rects: &mut WidgetRects) {
         let (painter, rect, camera, run, alpha) =
             (view.painter, view.rect, view.camera, view.run, view.alpha);
         reef_overlay::draw_water(painter, rect, camera, run, settings.reef.overlay);
+        if settings.reef.name_tags {
+            reef_overlay::draw_name_tags(painter, rect, camera, run, alpha);
+        }
         if let Some(selected) = settings.reef.selected {
             if settings.reef.show_vision {
                 reef_overlay::draw_vision(painter, rect, camera, run, alpha, selected);

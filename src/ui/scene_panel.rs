@@ -113,8 +113,16 @@ pub trait ScenePanel {
     fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects);
 
     /// The panel under the tank, if the scene has one (see
-    /// [`super::show_bottom_panel`]: its height comes from the window only).
-    fn bottom_ui(&mut self, _ui: &mut egui::Ui, _lab: &Lab, _rects: &mut WidgetRects) {}
+    /// [`super::show_bottom_panel`]: its height comes from the window only). It
+    /// may edit `settings` (a click on an event selects its fish).
+    fn bottom_ui(
+        &mut self,
+        _ui: &mut egui::Ui,
+        _lab: &Lab,
+        _settings: &mut Settings,
+        _rects: &mut WidgetRects,
+    ) {
+    }
 
     /// Drawings over a 3D view (skeletons, vision, selection rings…), and where
     /// pickable animals are on screen for the browser tests (`animal_0`, …).
@@ -234,7 +242,7 @@ mod tests {
             let mut output = ctx.run_ui(input, |ui| {
                 let panel = current.for_scene(scene);
                 panel.before_frame(&mut lab, f64::from(frame) / 60.0, ui.ctx());
-                panel.bottom_ui(ui, &lab, &mut rects);
+                panel.bottom_ui(ui, &lab, &mut settings, &mut rects);
                 egui::Panel::left("controls").show(ui, |ui| {
                     panel.controls_ui(ui, &mut settings, &mut rects);
                 });

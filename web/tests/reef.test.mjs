@@ -111,6 +111,15 @@ describe("reef", () => {
     assert.ok(log, "the event log is on screen");
     const stats = pixelStats(decode(await page.screenshot()), log);
     assert.ok(stats.distinctColours > 4, "the log has text");
+
+    // A click on the newest event selects and follows the fish it is about.
+    await page.evaluate(() => window.shoal.pause());
+    const newest = (await state(page)).reef.events.at(-1);
+    await clickUntil(page, "reef_event_0", () => window.shoal.state().reef.selected !== undefined);
+    const after = await state(page);
+    const subject = newest.kind.female ?? newest.kind.fish ?? newest.kind.predator;
+    assert.equal(after.reef.selected.index, subject, JSON.stringify(newest));
+    assert.equal((await page.evaluate(() => window.shoal.settings())).reef.follow, true);
   });
 
   test("the Minds section changes every fish of a kind: sexual mania, devoted, the demo's own", async () => {

@@ -60,6 +60,24 @@ pub enum ReefEventKind {
     },
 }
 
+impl ReefEventKind {
+    /// The animal the event is about, whom a click on its line selects: the
+    /// one who acted (the shark that ate or missed, the fish that fled, ate or
+    /// began mating), the female in courtship (she chooses).
+    pub fn subject(&self) -> u32 {
+        match *self {
+            Self::AtePrey { predator, .. } | Self::Missed { predator, .. } => predator,
+            Self::AteFood { fish }
+            | Self::BeganEscape { fish, .. }
+            | Self::BeganMating { fish, .. }
+            | Self::Intention { fish } => fish,
+            Self::Courtship { female, .. }
+            | Self::LeftForLarger { female, .. }
+            | Self::BrokeUp { female, .. } => female,
+        }
+    }
+}
+
 impl ReefWorld {
     pub(super) fn log_decision(&mut self, i: usize, before: Focus, after: Focus) {
         let name = self.animals[i].name(i);
