@@ -238,7 +238,8 @@ fn urges_plot_ui(
         .allow_zoom(false)
         .allow_boxed_zoom(false)
         .include_x(0.0)
-        .include_x(100.0)
+        // A little room past 100 % for the axis's last number.
+        .include_x(108.0)
         .include_y(-0.5)
         .include_y(URGE_NAMES.len() as f64 - 0.5)
         .y_axis_min_width(56.0)
