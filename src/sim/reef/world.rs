@@ -101,9 +101,9 @@ pub(super) const PLANKTON_SINK_M_PER_S: f32 = 0.01;
 /// target count drift in the water.
 pub(super) const FOOD_RELEASE_SECS: f32 = 1.5;
 /// Seconds between mind-history samples.
-pub(super) const HISTORY_EVERY_SECS: f64 = 0.5;
+pub const HISTORY_EVERY_SECS: f64 = 0.5;
 /// Mind-history samples kept per animal (2 minutes).
-pub(super) const HISTORY_LEN: usize = 240;
+pub const HISTORY_LEN: usize = 240;
 /// Radius of the muscle body's turning circle, body lengths (1.2: measured
 /// 1.03–1.14 for 90° turns from 0.4–1.0 of the top speed on the converged body,
 /// `body/physical_fish.rs` agility tests, docs/fish-body.md; a little more for margin.
@@ -119,7 +119,7 @@ pub const THREAT_MEMORY_SECS: f32 = 3.0;
 /// Seconds between two "fled" events of one fish.
 pub(super) const ESCAPE_LOG_EVERY_SECS: f64 = 15.0;
 /// Events kept in the log.
-pub(super) const EVENT_LOG_LEN: usize = 200;
+pub const EVENT_LOG_LEN: usize = 200;
 /// Two bodies whose centres are closer than this share of their mean length
 /// count as colliding (0.5: their bodies overlap).
 pub(super) const COLLISION_BODY_LENGTHS: f32 = 0.5;
@@ -270,13 +270,16 @@ impl ReefBody {
     }
 }
 
-/// One sample of an animal's mind, for the inspector's history plot.
+/// One sample of an animal's mind, for the inspector's history plot and the
+/// reef's CSV export.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct MindSample {
     pub time_secs: f32,
     pub hunger: f32,
     pub libido: f32,
     pub fear: f32,
+    /// What it meant to do at that moment.
+    pub intention: crate::sim::reef::mind::Intention,
 }
 
 /// An animal of the reef: body and mind.
@@ -717,6 +720,7 @@ impl ReefWorld {
                     hunger: a.mental.hunger,
                     libido: a.mental.libido,
                     fear: a.mental.fear,
+                    intention: a.focus.intention,
                 });
             }
         }
