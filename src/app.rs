@@ -231,6 +231,11 @@ impl ShoalApp {
         self.lab.metrics_csv()
     }
 
+    /// The scene's data file, what *Download data* saves (`shoal.export_csv()`).
+    pub fn export_csv(&self) -> crate::export::CsvExport {
+        crate::export::scene_csv(&self.lab)
+    }
+
     /// Runs an automation command and asks for a repaint so the change shows.
     pub fn run_command(&mut self, command: Command) -> Result<(), AutomationError> {
         let result = command.execute(&mut self.lab);
@@ -454,12 +459,12 @@ impl ShoalApp {
                     ));
                 }
                 PanelAction::ExportCsv => {
-                    let csv = self.lab.metrics_csv();
+                    let csv = self.export_csv();
                     self.notice = Some(
                         match crate::ui::save_text_file(
-                            "shoal-metrics.csv",
+                            &csv.name,
                             "text/csv",
-                            &csv,
+                            &csv.text,
                             Some("open it with a spreadsheet"),
                         ) {
                             Ok(message) => Notice::info(message),

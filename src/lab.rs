@@ -15,6 +15,7 @@ use crate::settings::{Scene, Settings, Side};
 use crate::sim::body::{MUSCLE_COUNT, NODE_COUNT};
 use crate::sim::learning::learning_lab::LearningLab;
 use crate::sim::learning::learning_lab::RaceNotReady;
+use crate::sim::reef::report::ReefCensus;
 use crate::sim::reef::world::ReefWorld;
 use crate::sim::scene::{SceneWorld, centre};
 use crate::sim::{HandCommand, PhysicsConfig, PhysicsWorld, World, WorldConfig};
@@ -46,6 +47,10 @@ pub struct Run {
     body_trace: VecDeque<BodySample>,
     traced: Option<u32>,
     history: MetricsHistory,
+    /// The scene's counts at each metrics sample over the last
+    /// [`crate::metrics_history::HISTORY_SECS`] (the reef; see
+    /// [`SceneWorld::census`]), oldest first.
+    census: VecDeque<ReefCensus>,
     /// Which rebuild of the lab made this world.
     generation: u64,
     /// The obstacles the settings asked for when last applied.
@@ -71,6 +76,7 @@ impl Run {
             body_trace: VecDeque::new(),
             traced: None,
             history: MetricsHistory::default(),
+            census: VecDeque::new(),
             generation,
             obstacles_from_settings: world_config(settings, side).obstacles,
             obstacle_edits: 0,
@@ -206,6 +212,12 @@ impl Run {
         &self.history
     }
 
+    /// The reef's counts over the last minutes, one per metrics sample, oldest
+    /// first (empty in the other scenes).
+    pub fn census(&self) -> &VecDeque<ReefCensus> {
+        &self.census
+    }
+
     /// The latest metrics.
     pub fn metrics(&self) -> MetricsSample {
         self.history.latest().copied().unwrap_or_default()
@@ -237,6 +249,14 @@ impl Run {
     /// Records the world's latest metrics (computed by the simulation every step).
     /// Force shares are over the last second, so a mode switch shows at once.
     fn sample_metrics(&mut self) {
+        if let Some(census) = self.scene.census() {
+            self.census.push_back(census);
+            while self.census.front().is_some_and(|first| {
+                census.time_secs - first.time_secs > crate::metrics_history::HISTORY_SECS
+            }) {
+                self.census.pop_front();
+            }
+        }
         let Some(m) = self.scene.metrics() else {
             return;
         };

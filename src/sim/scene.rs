@@ -233,6 +233,16 @@ impl SceneWorld {
         })
     }
 
+    /// The counts the lab keeps over time for the CSV export, at a metrics
+    /// sample (the reef's living animals by kind, food and counters; `None`
+    /// elsewhere: the other scenes' numbers over time are their metrics).
+    pub fn census(&self) -> Option<crate::sim::reef::report::ReefCensus> {
+        match self {
+            Self::Reef(w) => Some(w.census()),
+            Self::Boids(_) | Self::Physics(_) | Self::Learning(_) => None,
+        }
+    }
+
     /// Where every animal is now, by index (see the module doc): its centre for a
     /// point mass, its position for a muscle body. The lab keeps the previous
     /// step's copy so that drawing interpolates the same way in every scene.

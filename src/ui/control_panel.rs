@@ -137,9 +137,11 @@ pub fn control_panel_ui(
         if copy.clicked() {
             actions.push(PanelAction::CopyLink);
         }
-        let csv = ui
-            .button("Download data (CSV)")
-            .on_hover_text("Save the numbers of the last minutes as a table for a spreadsheet");
+        let csv = ui.button("Download data (CSV)").on_hover_text(
+            "Save this scene's numbers as a table for a spreadsheet, in a file named \
+                 after the scene and the simulated time; its first lines hold the seed and \
+                 the link that reopens these settings",
+        );
         rects.insert("export_csv", csv.rect);
         if csv.clicked() {
             actions.push(PanelAction::ExportCsv);

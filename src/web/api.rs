@@ -15,7 +15,7 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 16] = [
+    let methods: [(&str, Box<Method>); 17] = [
         ("state", Box::new(|app, _| to_json(&app.state_report()))),
         (
             "share_link",
@@ -25,6 +25,7 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
             "metrics_csv",
             Box::new(|app, _| Ok(serde_json::Value::String(app.metrics_csv()))),
         ),
+        ("export_csv", Box::new(|app, _| to_json(&app.export_csv()))),
         ("settings", Box::new(|app, _| to_json(app.state_settings()))),
         ("widgets", Box::new(|app, _| Ok(widgets_json(app)))),
         (

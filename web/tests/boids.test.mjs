@@ -192,19 +192,38 @@ describe("schooling lab", () => {
     await other.close();
   });
 
-  test("the CSV button downloads the metrics table", async () => {
+  test("the CSV button downloads the metrics table, named after the scene and the time, with the run's header", async () => {
     await page.evaluate(() => window.shoal.step(600));
+    const s = await state(page);
+    assert.equal(s.paused, true, "paused: the time in the name is the time now");
+    const expected = await page.evaluate(() => window.shoal.export_csv());
     const download = page.waitForEvent("download", { timeout: 60_000 });
     await clickWidget(page, "export_csv");
     const file = await download;
-    assert.equal(file.suggestedFilename(), "shoal-metrics.csv");
+    const seconds = String(Math.floor(s.time_secs)).padStart(4, "0");
+    assert.equal(file.suggestedFilename(), `shoal-boids-t${seconds}s.csv`);
+    assert.equal(file.suggestedFilename(), expected.name);
     const stream = await file.createReadStream();
     let text = "";
     for await (const chunk of stream) text += chunk;
+    assert.equal(text, expected.text, "the button saves what shoal.export_csv() gives");
     const lines = text.trim().split("\n");
-    assert.ok(lines[0].startsWith("tank,time_s,polarization,milling"), lines[0]);
-    assert.ok(lines.length > 10, `${lines.length} rows`);
-    assert.ok(lines.some((l) => l.startsWith("right,")), "both tanks are in the table");
+    const comments = lines.filter((l) => l.startsWith("# "));
+    assert.match(comments[0], /^# Shoal data: Schooling lab \(boids\)/);
+    assert.ok(comments.includes(`# seed: ${s.seed}`), comments.join("\n"));
+    assert.ok(comments.some((l) => l.startsWith(`# simulated time: ${s.time_secs.toFixed(3)} s`)), comments.join("\n"));
+    const link = comments.find((l) => l.startsWith("# settings link: #v1."));
+    assert.ok(link, comments.join("\n"));
+    const fragment = link.split(" ")[3];
+    assert.ok((await page.evaluate(() => window.shoal.share_link())).endsWith(fragment), fragment);
+    const table = lines.filter((l) => !l.startsWith("#"));
+    assert.ok(table[0].startsWith("tank,time_s,polarization,milling"), table[0]);
+    assert.ok(table.length > 10, `${table.length} rows`);
+    assert.ok(table.some((l) => l.startsWith("right,")), "both tanks are in the table");
+    // shoal.metrics_csv() still gives the bare table.
+    const metrics = await page.evaluate(() => window.shoal.metrics_csv());
+    assert.ok(metrics.startsWith("tank,time_s,polarization"), metrics.slice(0, 80));
+    assert.ok(text.endsWith(metrics));
   });
 
   test("a teacher adds and removes a rock by clicking in the tank", async () => {

@@ -122,6 +122,33 @@ describe("reef", () => {
     assert.equal((await page.evaluate(() => window.shoal.settings())).reef.follow, true);
   });
 
+  test("the reef's data file holds its counts, events and the selected fish's mind", async () => {
+    await page.evaluate(() => window.shoal.pause());
+    await page.evaluate(() => window.shoal.set({ reef: { selected: 0 } }));
+    // A whole number of samples (one every 5 steps): the last counts row is now.
+    await page.evaluate(() => window.shoal.step(100 + ((5 - (window.shoal.state().steps % 5)) % 5)));
+    const s = await state(page);
+    assert.equal(s.steps % 5, 0);
+    const file = await page.evaluate(() => window.shoal.export_csv());
+    const seconds = String(Math.floor(s.time_secs)).padStart(4, "0");
+    assert.equal(file.name, `shoal-reef-t${seconds}s.csv`);
+    const lines = file.text.trim().split("\n");
+    assert.match(lines[0], /^# Shoal data: Reef \(reef\)/);
+    assert.ok(lines.includes(`# seed: ${s.seed}`), lines.slice(0, 8).join("\n"));
+    assert.ok(lines.some((l) => l.startsWith("# settings link: #v1.")));
+    const table = lines.filter((l) => !l.startsWith("#"));
+    assert.ok(table[0].startsWith("table,time_s,predators_alive,prey_alive,pacifists_alive,food,prey_eaten"), table[0]);
+    const kinds = new Set(table.slice(1).map((l) => l.split(",")[0]));
+    assert.ok(kinds.has("counts") && kinds.has("mind"), [...kinds].join(" "));
+    assert.ok(kinds.has("event"), "the event log is in the file");
+    const counts = table.filter((l) => l.startsWith("counts,"));
+    const last = counts[counts.length - 1].split(",");
+    assert.equal(Number(last[5]), s.reef.food, "the last counts row is the reef now");
+    assert.equal(Number(last[9]), s.reef.counts.spawnings);
+    await page.evaluate(() => window.shoal.set({ reef: { selected: null } }));
+    await page.evaluate(() => window.shoal.play());
+  });
+
   test("the Minds section changes every fish of a kind: sexual mania, devoted, the demo's own", async () => {
     // The courtship demo holds only pacifists, whose libido is manic already.
     // (f32 values: compare within a part in a million.)

@@ -62,6 +62,28 @@ impl Task {
         forward_body_lengths: 4.0,
         left_body_lengths: 0.0,
     };
+
+    /// The drill in words ("swim as far as it can", "turn left at 15°/s").
+    pub fn label(&self) -> String {
+        match *self {
+            Self::ReachTarget { .. } => "swim as far as it can".to_owned(),
+            Self::HoldSpeed {
+                speed_body_lengths_per_sec,
+            } => format!("swim straight at {speed_body_lengths_per_sec} body lengths/s"),
+            Self::TurnHeading {
+                turn_rate_deg_per_sec,
+                ..
+            } => format!(
+                "turn {} at {}°/s",
+                if turn_rate_deg_per_sec >= 0.0 {
+                    "left"
+                } else {
+                    "right"
+                },
+                turn_rate_deg_per_sec.abs()
+            ),
+        }
+    }
 }
 
 /// The weights of eq. (2) and (3).

@@ -76,6 +76,21 @@ impl ReefEventKind {
             | Self::BrokeUp { female, .. } => female,
         }
     }
+
+    /// The kind's name, as `shoal.state()` spells it (`"ate_prey"`, …).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::AtePrey { .. } => "ate_prey",
+            Self::AteFood { .. } => "ate_food",
+            Self::BeganEscape { .. } => "began_escape",
+            Self::BeganMating { .. } => "began_mating",
+            Self::Courtship { .. } => "courtship",
+            Self::LeftForLarger { .. } => "left_for_larger",
+            Self::BrokeUp { .. } => "broke_up",
+            Self::Missed { .. } => "missed",
+            Self::Intention { .. } => "intention",
+        }
+    }
 }
 
 impl ReefWorld {

@@ -57,7 +57,34 @@ pub struct SelectedMindReport {
     pub muscles: Option<[f32; crate::sim::body::MUSCLE_COUNT]>,
 }
 
+/// The reef's numbers at one instant: living animals by kind, plankton in the
+/// water and the counters since the start. The lab keeps one every metrics
+/// sample for the CSV export's counts table.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ReefCensus {
+    pub time_secs: f64,
+    pub predators: usize,
+    pub prey: usize,
+    pub pacifists: usize,
+    /// Plankton particles drifting now.
+    pub food: usize,
+    pub counts: crate::sim::reef::world::ReefCounts,
+}
+
 impl ReefWorld {
+    /// Living animals by kind, food and the counters now.
+    pub fn census(&self) -> ReefCensus {
+        let alive = |kind: FishKind| self.living().filter(|(_, a)| a.habits.kind == kind).count();
+        ReefCensus {
+            time_secs: self.time_secs(),
+            predators: alive(FishKind::Predator),
+            prey: alive(FishKind::Prey),
+            pacifists: alive(FishKind::Pacifist),
+            food: self.food().len(),
+            counts: self.counts(),
+        }
+    }
+
     /// What `shoal.state().reef` reports, with `selected`'s mind in detail.
     pub fn report(&self, selected: Option<u32>) -> ReefReport {
         let reef = self;

@@ -55,13 +55,13 @@ pub const MAX_FOOD: usize = 200;
 /// bodies see the same world clock.
 pub const POINT_BODY_DT_SECS: f32 = crate::sim::common::paper_time::FISH_STEP_SECS;
 /// Seconds between mind-history samples.
-pub(super) const HISTORY_EVERY_SECS: f64 = 0.5;
+pub const HISTORY_EVERY_SECS: f64 = 0.5;
 /// Mind-history samples kept per animal (2 minutes).
-pub(super) const HISTORY_LEN: usize = 240;
+pub const HISTORY_LEN: usize = 240;
 /// Seconds between two "fled" events of one fish.
 pub(super) const ESCAPE_LOG_EVERY_SECS: f64 = 15.0;
 /// Events kept in the log.
-pub(super) const EVENT_LOG_LEN: usize = 200;
+pub const EVENT_LOG_LEN: usize = 200;
 /// Two bodies whose centres are closer than this share of their mean length
 /// count as colliding (0.5: their bodies overlap).
 pub(super) const COLLISION_BODY_LENGTHS: f32 = 0.5;
@@ -169,13 +169,16 @@ impl ReefBody {
     }
 }
 
-/// One sample of an animal's mind, for the inspector's history plot.
+/// One sample of an animal's mind, for the inspector's history plot and the
+/// reef's CSV export.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct MindSample {
     pub time_secs: f32,
     pub hunger: f32,
     pub libido: f32,
     pub fear: f32,
+    /// What it meant to do at that moment.
+    pub intention: crate::sim::reef::mind::Intention,
 }
 
 /// An animal of the reef: body and mind.
@@ -635,6 +638,7 @@ impl ReefWorld {
                     hunger: a.mental.hunger,
                     libido: a.mental.libido,
                     fear: a.mental.fear,
+                    intention: a.focus.intention,
                 });
             }
         }
