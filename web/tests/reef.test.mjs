@@ -142,9 +142,13 @@ describe("reef", () => {
     assert.ok(kinds.has("counts") && kinds.has("mind"), [...kinds].join(" "));
     assert.ok(kinds.has("event"), "the event log is in the file");
     const counts = table.filter((l) => l.startsWith("counts,"));
+    const header = table[0].split(",");
     const last = counts[counts.length - 1].split(",");
-    assert.equal(Number(last[5]), s.reef.food, "the last counts row is the reef now");
-    assert.equal(Number(last[9]), s.reef.counts.spawnings);
+    const cell = (name) => Number(last[header.indexOf(name)]);
+    assert.equal(cell("food"), s.reef.food, "the last counts row is the reef now");
+    assert.equal(cell("pacifists_alive"), s.reef.pacifists);
+    assert.equal(cell("spawnings"), s.reef.counts.spawnings);
+    assert.equal(cell("food_eaten"), s.reef.counts.food_eaten);
     await page.evaluate(() => window.shoal.set({ reef: { selected: null } }));
     await page.evaluate(() => window.shoal.play());
   });
