@@ -22,28 +22,6 @@ use crate::sim::learning::learned_set::LearnedSetError;
 use crate::sim::learning::learning_lab::{ControllerChoice, LearningLab, SetSource};
 use crate::sim::learning::{Abstraction, Task};
 
-/// A drill in words.
-pub fn drill_label(task: &Task) -> String {
-    match *task {
-        Task::ReachTarget { .. } => "swim as far as it can".to_owned(),
-        Task::HoldSpeed {
-            speed_body_lengths_per_sec,
-        } => format!("swim straight at {speed_body_lengths_per_sec} body lengths/s"),
-        Task::TurnHeading {
-            turn_rate_deg_per_sec,
-            ..
-        } => format!(
-            "turn {} at {}°/s",
-            if turn_rate_deg_per_sec >= 0.0 {
-                "left"
-            } else {
-                "right"
-            },
-            turn_rate_deg_per_sec.abs()
-        ),
-    }
-}
-
 /// The learning lab's one-off actions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum LearningAction {
@@ -218,7 +196,7 @@ fn progress_ui(ui: &mut egui::Ui, lab: &LearningLab, rects: &mut WidgetRects) {
         Some(k) => format!(
             "Drill {} of {drills}: {}",
             k + 1,
-            drill_label(&lab.drills()[k])
+            Task::label(&lab.drills()[k])
         ),
         None => format!("All {drills} drills learned"),
     };

@@ -30,7 +30,8 @@ pub enum PanelAction {
     HidePanel,
     /// Put the link to this exact setting on the clipboard.
     CopyLink,
-    /// Download the metrics of the last minutes as a CSV file.
+    /// Download the scene's own data (metrics, muscles, the reef's counts,
+    /// events and minds, the learning history) as a CSV file.
     ExportCsv,
 }
 
