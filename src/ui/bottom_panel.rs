@@ -75,6 +75,24 @@ pub fn axis_number(value: f64, step: f64) -> String {
     format!("{value:.decimals$}")
 }
 
+/// A plot over time a class reads: `height` points tall, numbered value and
+/// time axes (seconds), not dragged, zoomed or scrolled by a stray gesture.
+pub fn time_plot<'a>(
+    id: impl std::hash::Hash + std::fmt::Debug,
+    height: f32,
+) -> egui_plot::Plot<'a> {
+    egui_plot::Plot::new(id)
+        .height(height)
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_scroll(false)
+        .allow_boxed_zoom(false)
+        .y_grid_spacer(readable_marks)
+        .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
+        .x_grid_spacer(readable_marks)
+        .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value))
+}
+
 /// Shows a panel under the tank (`id`), [`bottom_panel_height`] high for a
 /// panel that would like `wanted` points. It is not resizable: its height is
 /// exact, so nothing inside it can make it grow. `add_contents` gets the height

@@ -5,7 +5,7 @@ use eframe::egui;
 use egui_plot::{Line, Plot, PlotPoints};
 
 use super::WidgetRects;
-use super::bottom_panel::{axis_number, plot_height_under_caption, readable_marks};
+use super::bottom_panel::{plot_height_under_caption, readable_marks, time_plot};
 use crate::lab::Run;
 use crate::metrics_history::MetricsSample;
 use crate::settings::Side;
@@ -127,19 +127,9 @@ pub fn metrics_panel_ui(
                                 }
                             },
                         );
-                        let mut plot = Plot::new(("metric_plot", index))
+                        let mut plot = time_plot(("metric_plot", index), plot_height)
                             .width(plot_width)
-                            .height(plot_height)
-                            .allow_scroll(false)
-                            .allow_drag(false)
-                            .allow_zoom(false)
-                            .allow_boxed_zoom(false)
-                            .show_axes([true, true])
-                            .link_axis(link, [true, false])
-                            .y_grid_spacer(readable_marks)
-                            .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
-                            .x_grid_spacer(readable_marks)
-                            .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value));
+                            .link_axis(link, [true, false]);
                         if let Some((lo, hi)) = metric.y_range {
                             plot = plot.include_y(lo).include_y(hi);
                         } else {

@@ -3,11 +3,11 @@
 //! plots: its twelve muscle contractions and its speed.
 
 use eframe::egui;
-use egui_plot::{Line, Plot, PlotPoints};
+use egui_plot::{Line, PlotPoints};
 
 use super::WidgetRects;
 use super::body_overlay::{self, muscle_color};
-use super::bottom_panel::{axis_number, readable_marks};
+use super::bottom_panel::time_plot;
 use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
 use crate::lab::{BODY_TRACE_SECS, Lab, Run};
@@ -308,19 +308,11 @@ pub fn body_plots_ui(
                      right side (two muscles each, top and bottom). Left and right take \
                      turns: that is the tail beat",
                 );
-                let plot = Plot::new(("muscles", index, k))
-                    .height(plot_height)
-                    .y_grid_spacer(readable_marks)
-                    .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
-                    .x_grid_spacer(readable_marks)
-                    .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value))
+                let plot = time_plot(("muscles", index, k), plot_height)
                     .include_y(0.0)
                     .include_y(1.0)
                     .include_x(start)
                     .include_x(now)
-                    .allow_drag(false)
-                    .allow_zoom(false)
-                    .allow_scroll(false)
                     .show(ui, |plot| {
                         for (side, side_name) in [(Side::Left, "left"), (Side::Right, "right")] {
                             for (offset, part) in [(0, "top"), (1, "bottom")] {
@@ -351,18 +343,10 @@ pub fn body_plots_ui(
                 ui.label(egui::RichText::new("Speed (m/s)").small())
                     .on_hover_text("How fast the fish's middle moves, in metres per second");
             });
-            let plot = Plot::new(("speed", index))
-                .height(plot_height)
-                .y_grid_spacer(readable_marks)
-                .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
-                .x_grid_spacer(readable_marks)
-                .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value))
+            let plot = time_plot(("speed", index), plot_height)
                 .include_y(0.0)
                 .include_x(start)
                 .include_x(now)
-                .allow_drag(false)
-                .allow_zoom(false)
-                .allow_scroll(false)
                 .show(ui, |plot| {
                     let points: PlotPoints = trace
                         .iter()

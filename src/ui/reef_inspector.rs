@@ -3,11 +3,11 @@
 //! its motor command, its fish-eye view; and the reef's event log.
 
 use eframe::egui;
-use egui_plot::{Legend, Line, Plot, PlotPoints};
+use egui_plot::{Legend, Line, PlotPoints};
 
 use super::WidgetRects;
 use super::bottom_panel::plot_height_under_caption;
-use super::bottom_panel::{axis_number, readable_marks};
+use super::bottom_panel::time_plot;
 use super::reef_panel::{
     FEAR_COLOR, HUNGER_COLOR, LIBIDO_COLOR, intention_color, intention_sentence,
 };
@@ -253,16 +253,9 @@ fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, height: f32, rects: &mut W
             .map(|s| [f64::from(s.time_secs), f64::from(f(s))])
             .collect()
     };
-    let r = Plot::new("reef_mind_history")
-        .height(height)
-        .y_grid_spacer(readable_marks)
-        .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
-        .x_grid_spacer(readable_marks)
-        .x_axis_formatter(|mark, _| format!("{:.0} s", mark.value))
+    let r = time_plot("reef_mind_history", height)
         .include_y(0.0)
         .include_y(1.0)
-        .allow_scroll(false)
-        .allow_drag(false)
         .legend(Legend::default())
         .show(ui, |plot| {
             plot.line(Line::new("hunger", series(|s| s.hunger)).color(HUNGER_COLOR));
