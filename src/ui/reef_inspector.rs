@@ -46,70 +46,77 @@ pub fn reef_inspector_ui(
     let spacing = ui.spacing().item_spacing.y;
     let under_caption = plot_height_under_caption(content_height, line, spacing);
     let mut clicked = None;
-    ui.horizontal_top(|ui| {
-        match animal {
-            Some((i, a)) => {
-                ui.vertical(|ui| {
-                    ui.set_width(300.0);
-                    egui::ScrollArea::vertical()
-                        .id_salt("reef_mind_summary")
-                        .max_height(content_height)
-                        .show(ui, |ui| mind_summary_ui(ui, reef, i, a, rects));
-                });
-                ui.separator();
-                ui.vertical(|ui| {
-                    ui.set_width((ui.available_width() - 560.0).max(220.0));
-                    history_plot_ui(ui, a, under_caption, rects);
-                });
-                ui.separator();
-                ui.vertical(|ui| {
-                    ui.set_width(180.0);
-                    ui.label(egui::RichText::new("What it sees").strong())
-                        .on_hover_text(
-                            "The world through this fish's eye: it sees almost all around, \
+    // On a narrow screen the columns keep their widths and scroll sideways.
+    egui::ScrollArea::horizontal()
+        .id_salt("reef_inspector_scroll")
+        .show(ui, |ui| {
+            ui.horizontal_top(|ui| {
+                match animal {
+                    Some((i, a)) => {
+                        ui.vertical(|ui| {
+                            ui.set_width(300.0);
+                            egui::ScrollArea::vertical()
+                                .id_salt("reef_mind_summary")
+                                .max_height(content_height)
+                                .show(ui, |ui| mind_summary_ui(ui, reef, i, a, rects));
+                        });
+                        ui.separator();
+                        ui.vertical(|ui| {
+                            ui.set_width((ui.available_width() - 560.0).max(220.0));
+                            // (In the sideways scroll the available width is the screen's.)
+                            history_plot_ui(ui, a, under_caption, rects);
+                        });
+                        ui.separator();
+                        ui.vertical(|ui| {
+                            ui.set_width(180.0);
+                            ui.label(egui::RichText::new("What it sees").strong())
+                                .on_hover_text(
+                                    "The world through this fish's eye: it sees almost all around, \
                              squeezed into a circle. Its brain only uses how bright it is",
-                        );
-                    if let Some(view) = fish_eye {
-                        // The eye and the two lines under it fit under the caption.
-                        let side = (under_caption - 2.0 * (line + spacing)).clamp(0.0, 150.0);
-                        let r = ui.add(
-                            egui::Image::new(view.texture)
-                                .fit_to_exact_size(egui::vec2(side, side)),
-                        );
-                        rects.insert("fish_eye", r.rect);
-                        ui.label(format!("Brightness {:.2}", view.mean_brightness));
+                                );
+                            if let Some(view) = fish_eye {
+                                // The eye and the two lines under it fit under the caption.
+                                let side =
+                                    (under_caption - 2.0 * (line + spacing)).clamp(0.0, 150.0);
+                                let r = ui.add(
+                                    egui::Image::new(view.texture)
+                                        .fit_to_exact_size(egui::vec2(side, side)),
+                                );
+                                rects.insert("fish_eye", r.rect);
+                                ui.label(format!("Brightness {:.2}", view.mean_brightness));
+                            }
+                            ui.label(format!("Water {:.1} °C", a.temperature_c));
+                        });
                     }
-                    ui.label(format!("Water {:.1} °C", a.temperature_c));
-                });
-            }
-            None => {
-                ui.vertical(|ui| {
-                    ui.set_width(300.0);
-                    egui::ScrollArea::vertical()
-                        .id_salt("reef_summary")
-                        .max_height(content_height)
-                        .show(ui, |ui| {
-                            let counts = reef.counts();
-                            ui.label(egui::RichText::new("Reef").strong());
-                            ui.label(format!(
+                    None => {
+                        ui.vertical(|ui| {
+                            ui.set_width(300.0);
+                            egui::ScrollArea::vertical()
+                                .id_salt("reef_summary")
+                                .max_height(content_height)
+                                .show(ui, |ui| {
+                                    let counts = reef.counts();
+                                    ui.label(egui::RichText::new("Reef").strong());
+                                    ui.label(format!(
                                 "{} animals alive · {} plankton · {} prey eaten · {} spawnings",
                                 reef.alive_count(),
                                 reef.food().len(),
                                 counts.prey_eaten,
                                 counts.spawnings
                             ));
-                            ui.label(
+                                    ui.label(
                                 "Click a fish to see its hunger, fear and plans, and what it sees.",
                             );
+                                });
                         });
+                    }
+                }
+                ui.separator();
+                ui.vertical(|ui| {
+                    clicked = event_log_ui(ui, reef, under_caption, rects);
                 });
-            }
-        }
-        ui.separator();
-        ui.vertical(|ui| {
-            clicked = event_log_ui(ui, reef, under_caption, rects);
+            });
         });
-    });
     clicked
 }
 
