@@ -197,9 +197,14 @@ describe("schooling lab", () => {
     const s = await state(page);
     assert.equal(s.paused, true, "paused: the time in the name is the time now");
     const expected = await page.evaluate(() => window.shoal.export_csv());
-    const download = page.waitForEvent("download", { timeout: 60_000 });
-    await clickWidget(page, "export_csv");
-    const file = await download;
+    // Click again if a slow frame lost the click (as clickUntil does).
+    let file = null;
+    for (let attempt = 0; attempt < 3 && !file; attempt++) {
+      const download = page.waitForEvent("download", { timeout: 20_000 }).catch(() => null);
+      await clickWidget(page, "export_csv");
+      file = await download;
+    }
+    assert.ok(file, "the button starts a download");
     const seconds = String(Math.floor(s.time_secs)).padStart(4, "0");
     assert.equal(file.suggestedFilename(), `shoal-boids-t${seconds}s.csv`);
     assert.equal(file.suggestedFilename(), expected.name);
