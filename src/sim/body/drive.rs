@@ -27,7 +27,7 @@ pub struct DriveParams {
     /// Nodes are kept this far inside the glass, metres (0.01).
     pub glass_margin_m: f32,
     /// Swimming speed of a fish whose head touched something, fraction of its top
-    /// speed: the turn-MC's minimum thrust (`motor_bridge::MIN_TURN_SPEED_FRACTION`,
+    /// speed: the turn-MC's minimum thrust (`MotorParams::min_turn_speed_fraction`,
     /// 0.5), enough to turn away, too little to crush the body.
     pub touch_speed_fraction: f32,
     /// Fastest turn of the intended velocity, radians per second (0.5): 29°/s, a little
@@ -73,7 +73,8 @@ impl DriveParams {
     pub fn physics_tank() -> Self {
         Self {
             glass_margin_m: 0.01,
-            touch_speed_fraction: crate::sim::body::motor_bridge::MIN_TURN_SPEED_FRACTION,
+            touch_speed_fraction: crate::sim::body::motor_bridge::MotorParams::default()
+                .min_turn_speed_fraction,
             max_intent_turn_rad_per_sec: 0.5,
             max_intent_lead_rad: 1.05,
             max_intent_pitch_rad: 0.44,

@@ -8,7 +8,7 @@
 //! | desired velocity d, fish heading f           | command |
 //! |----------------------------------------------|---------|
 //! | ‖d‖                                          | swim-MC speed fraction ‖d‖ / top speed |
-//! | horizontal angle Δ from f to d              | steering command clamp(Δ × [`STEER_GAIN_PER_RAD`], −1, 1), + = left (`body::turn_mc::add_steering`); none while a hand turn-MC turn runs |
+//! | horizontal angle Δ from f to d              | steering command clamp(Δ × [`MotorParams::steer_gain_per_rad`], −1, 1), + = left (`body::turn_mc::add_steering`); none while a hand turn-MC turn runs |
 //! | elevation of d minus the fish's pitch        | both fins pitched by 2 × the difference, at most ±0.5 rad (ascend, descend) |
 //! | ‖d‖ below half the current speed            | both fins across the flow (brake), no swimming |
 //!
@@ -37,23 +37,105 @@ use crate::sim::body::PectoralFins;
 /// checks it within 3 %).
 pub const TOP_SPEED_BODY_LENGTHS_PER_SEC: f32 = 0.6;
 
-/// Steering command per radian of heading error, 1/rad. 4, tuned
-/// (`physical_fish::agility`, `closed_loop_turn_times`): full steering from 14° of
-/// error. On the converged body with the braced tail fin and the averaged heading,
-/// a 90° turn from 0.7 of the top speed reaches 81° in 3.4–3.5 s at gain 4, 3.4–3.6 s
-/// at 3; 30° turns from 0.7 take 1.6–1.7 s at 4, 2.0–2.1 s at 3; gains 5 and 6 gain
-/// under 0.1 s on 90° turns. (Before the brace, gain 3: 3.0 s; on the earlier,
-/// unconverged body 3.1 s, and 3.5 s at gain 1.5.)
-pub const STEER_GAIN_PER_RAD: f32 = 4.0;
+/// The tuning of the body's controllers between the steering layer and the
+/// muscles: the motor bridge's gains ([`MotorBridge::plan`]), the held steering
+/// bend of the turn-MC's segments (`body::turn_mc::add_steering`) and the swim
+/// setting of a running turn (`PhysicalFish::step`). Held by the bridge of every
+/// [`PhysicalFish`](crate::sim::body::physical_fish::PhysicalFish) (the
+/// `Default`), read through `MotorBridge::params` and `PhysicalFish::motor_params`.
+///
+/// Left as consts: [`TOP_SPEED_BODY_LENGTHS_PER_SEC`] (a measured property of the
+/// body, read by the reef's planning and demos), the turn-MC's key table and its
+/// quick rate and beat phase (`body/turn_mc.rs`, used in `const` key tables), the
+/// key-turn measurement's lead-in, settle and averaging times (a measurement
+/// protocol, not tuning), the paper's largest single turn (paper data) and the
+/// heading window (`physical_fish::HEADING_WINDOW_STEPS`, an array length).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MotorParams {
+    /// Steering command per radian of heading error, 1/rad. 4, tuned
+    /// (`physical_fish::agility`, `closed_loop_turn_times`): full steering from 14° of
+    /// error. On the converged body with the braced tail fin and the averaged heading,
+    /// a 90° turn from 0.7 of the top speed reaches 81° in 3.4–3.5 s at gain 4, 3.4–3.6 s
+    /// at 3; 30° turns from 0.7 take 1.6–1.7 s at 4, 2.0–2.1 s at 3; gains 5 and 6 gain
+    /// under 0.1 s on 90° turns. (Before the brace, gain 3: 3.0 s; on the earlier,
+    /// unconverged body 3.1 s, and 3.5 s at gain 1.5.)
+    pub steer_gain_per_rad: f32,
+    /// Fin pitch per radian of elevation error (2, chosen: a 15° climb request tilts
+    /// the fins by the full 0.5 rad).
+    pub pitch_gain: f32,
+    /// Largest fin pitch, radians (0.5, as in the fin tests of `body/tests.rs`).
+    pub max_fin_pitch_rad: f32,
+    /// Smallest swim-MC speed while a turn runs, fraction of the top speed (0.5,
+    /// chosen): the turn comes from the tail's thrust on the bent body
+    /// (`body/turn_mc.rs`), so a turn without swimming barely turns.
+    pub min_turn_speed_fraction: f32,
+    /// swim-MC speed while a turn-MC turn runs, fraction of the top speed: 1, the
+    /// setting at which the turn-MC's key turns are measured
+    /// (`body::turn_mc::measure_heading_change_deg` swims at `SwimParams::MAX`). A
+    /// turn is made by the tail's thrust on the bent body, so at half the thrust
+    /// the 90° key turned the fish 43° (at full thrust 88°, measured in the
+    /// browser): whatever speed the fish swam at, its tail beats at this setting
+    /// until the turn is done, and its key turns keep their angles
+    /// (`physical_fish::tests::key_turns_hold_at_every_swim_speed`).
+    pub turn_swim_speed_fraction: f32,
+    /// Contraction added to the turning side of the anterior segment at full steering
+    /// (|steer| = 1), contraction factor. 0.5, measured on the default body with
+    /// `physical_fish::agility::closed_loop_turn_times` (closed-loop turns of ±90° and
+    /// ±30° through the bridge from 1.0, 0.7, 0.4 and 0.2 of the top speed, three
+    /// tail-beat phases at the start; seconds to 90 % of the turn, 15 s limit), anterior
+    /// / middle / posterior biases:
+    ///
+    /// | biases | worst time | never | shortest spine |
+    /// |---|---:|---:|---:|
+    /// | **0.5 / 0.5 / 0.25** | **5.9 s** | 0 | **0.87** |
+    /// | 0.5 / 0.5 / 0.5 | 4.8 s | 0 | 0.86 |
+    /// | 0.6 / 0.6 / 0.3 | 6.3 s | 0 | 0.85 |
+    /// | 0.6 / 0.6 / 0.45 | 5.2 s | 0 | 0.85 |
+    /// | 0.75 / 0.75 / 0.375 | 5.5 s | 0 | 0.83 |
+    ///
+    /// Kept at 0.5 / 0.5 / 0.25 because it folds the body least: the stronger bends
+    /// turn tighter circles (0.75 / 0.75 / 0.375: a 90° turn from 0.7 of the top speed
+    /// in a radius under 1 body length, against 1.09 here) but fold schooling fish
+    /// below 0.85 of their length (`physics_world` test). With the earlier spring
+    /// damping of 0.1 (`fish_body.rs`, `BodyParams::spring_damping`) every set had
+    /// turns that never finished: a slow fish with a held bend fell into a second,
+    /// almost motionless state (0.02 m/s). The bend is held as long as the command
+    /// lasts, so the tail's thrust on the bent body keeps yawing the fish (see the
+    /// module doc of `body/turn_mc.rs`).
+    pub steer_anterior_bias: f32,
+    /// The same for the middle segment, whose swim wave beats around the bent mean.
+    /// 0.5, measured with [`MotorParams::steer_anterior_bias`] (`body/turn_mc.rs`).
+    pub steer_middle_bias: f32,
+    /// The same for the posterior segment. 0.25, measured with
+    /// [`MotorParams::steer_anterior_bias`].
+    pub steer_posterior_bias: f32,
+}
 
-/// Fin pitch per radian of elevation error (2, chosen: a 15° climb request tilts
-/// the fins by the full 0.5 rad).
-const PITCH_GAIN: f32 = 2.0;
-/// Largest fin pitch, radians (0.5, as in the fin tests of `body/tests.rs`).
-const MAX_FIN_PITCH_RAD: f32 = 0.5;
-/// Smallest swim-MC speed while a turn runs: the turn comes from the tail's thrust
-/// on the bent body (`body/turn_mc.rs`), so a turn without swimming barely turns.
-pub const MIN_TURN_SPEED_FRACTION: f32 = 0.5;
+impl MotorParams {
+    /// The steering bends (anterior, middle, posterior).
+    pub fn steer_biases(&self) -> [f32; 3] {
+        [
+            self.steer_anterior_bias,
+            self.steer_middle_bias,
+            self.steer_posterior_bias,
+        ]
+    }
+}
+
+impl Default for MotorParams {
+    fn default() -> Self {
+        Self {
+            steer_gain_per_rad: 4.0,
+            pitch_gain: 2.0,
+            max_fin_pitch_rad: 0.5,
+            min_turn_speed_fraction: 0.5,
+            turn_swim_speed_fraction: 1.0,
+            steer_anterior_bias: 0.5,
+            steer_middle_bias: 0.5,
+            steer_posterior_bias: 0.25,
+        }
+    }
+}
 
 /// Tank frame (y up) → body frame (z up).
 pub fn to_body_frame(v: Vec3) -> Vec3 {
@@ -87,9 +169,12 @@ pub struct MotorIntent {
     pub fins: PectoralFins,
 }
 
-/// The bridge (stateless: the steering command follows the heading error).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct MotorBridge;
+/// The bridge (stateless but for its tuning: the steering command follows the
+/// heading error).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MotorBridge {
+    params: MotorParams,
+}
 
 /// Angle wrapped to (−π, π].
 fn wrap(a: f32) -> f32 {
@@ -98,6 +183,16 @@ fn wrap(a: f32) -> f32 {
 }
 
 impl MotorBridge {
+    /// A bridge with the tuning `params`.
+    pub fn new(params: MotorParams) -> Self {
+        Self { params }
+    }
+
+    /// The bridge's tuning.
+    pub fn params(&self) -> &MotorParams {
+        &self.params
+    }
+
     /// Plans this step's motor commands for a fish with unit `forward` (tank
     /// frame), moving at `speed_m_per_s`, whose top swimming speed is
     /// `top_speed_m_per_s`, that wants `desired_m_per_s` (tank frame). `turning`
@@ -144,13 +239,13 @@ impl MotorBridge {
         {
             let goal = horizontal.y.atan2(horizontal.x);
             let heading = f.y.atan2(f.x);
-            steer = (STEER_GAIN_PER_RAD * wrap(goal - heading)).clamp(-1.0, 1.0);
+            steer = (self.params.steer_gain_per_rad * wrap(goal - heading)).clamp(-1.0, 1.0);
         }
         // A turn comes from the tail's thrust on the bent body: swim. Steering
         // turns a circle of about 0.6 body lengths whatever the speed, so the
         // heading rate grows with the speed and a sharp turn swims at full beat.
         speed_fraction = if turning {
-            speed_fraction.max(MIN_TURN_SPEED_FRACTION)
+            speed_fraction.max(self.params.min_turn_speed_fraction)
         } else {
             speed_fraction.max(steer.abs())
         };
@@ -158,8 +253,8 @@ impl MotorBridge {
         // Pitch: climb or dive with the fins.
         let elevation = d.z.atan2(horizontal.length());
         let pitch = f.z.clamp(-1.0, 1.0).asin();
-        let fin_pitch =
-            (PITCH_GAIN * (elevation - pitch)).clamp(-MAX_FIN_PITCH_RAD, MAX_FIN_PITCH_RAD);
+        let max_pitch = self.params.max_fin_pitch_rad;
+        let fin_pitch = (self.params.pitch_gain * (elevation - pitch)).clamp(-max_pitch, max_pitch);
         MotorIntent {
             speed_fraction,
             start_turn_deg: None,
@@ -194,7 +289,7 @@ mod tests {
 
     #[test]
     fn desired_velocity_maps_to_speed_turn_and_fins() {
-        let mut bridge = MotorBridge;
+        let mut bridge = MotorBridge::default();
         // Straight ahead at half the top speed: no turn, level fins.
         let ahead = bridge.plan(Vec3::X * 0.1, Vec3::X, 0.1, 0.2, false);
         assert!((ahead.speed_fraction - 0.5).abs() < 1e-5);
@@ -208,7 +303,7 @@ mod tests {
         let right10 = Vec3::new(10f32.to_radians().cos(), 0.0, 10f32.to_radians().sin());
         let steer = bridge.plan(right10, Vec3::X, 0.1, 0.2, false).steer;
         assert!(
-            (steer + STEER_GAIN_PER_RAD * 10f32.to_radians()).abs() < 1e-4,
+            (steer + MotorParams::default().steer_gain_per_rad * 10f32.to_radians()).abs() < 1e-4,
             "{steer}"
         );
         // A running hand turn is not fought.

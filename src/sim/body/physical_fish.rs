@@ -11,7 +11,8 @@ use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
 use crate::sim::body::motor_bridge::{
-    MotorBridge, MotorIntent, TOP_SPEED_BODY_LENGTHS_PER_SEC, to_body_frame, to_tank_frame,
+    MotorBridge, MotorIntent, MotorParams, TOP_SPEED_BODY_LENGTHS_PER_SEC, to_body_frame,
+    to_tank_frame,
 };
 use crate::sim::body::{FishBody, MUSCLE_COUNT, NODE_COUNT, PectoralFins, SwimMc, TurnMc};
 use crate::sim::common::fish::Fish;
@@ -26,16 +27,6 @@ use crate::sim::common::fish::Fish;
 /// heading error at 0.4 of its top speed stalls at 0.02 m/s (measured,
 /// `agility` tests).
 pub const HEADING_WINDOW_STEPS: usize = 8;
-
-/// swim-MC speed while a turn-MC turn runs, fraction of the top speed: 1, the
-/// setting at which the turn-MC's key turns are measured
-/// (`body::turn_mc::measure_heading_change_deg` swims at `SwimParams::MAX`). A
-/// turn is made by the tail's thrust on the bent body, so at half the thrust
-/// the 90° key turned the fish 43° (at full thrust 88°, measured in the
-/// browser): whatever speed the fish swam at, its tail beats at this setting
-/// until the turn is done, and its key turns keep their angles
-/// (`tests::key_turns_hold_at_every_swim_speed`).
-pub const TURN_SWIM_SPEED_FRACTION: f32 = 1.0;
 
 /// What kind of animal a physical fish is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -123,7 +114,7 @@ impl PhysicalFish {
             body,
             swim: SwimMc::default(),
             turn: TurnMc::default(),
-            bridge: MotorBridge,
+            bridge: MotorBridge::default(),
             motor: MotorState::default(),
             heading: heading.normalize_or(Vec3::X),
             recent_forward: [heading.normalize_or(Vec3::X); HEADING_WINDOW_STEPS],
@@ -140,6 +131,11 @@ impl PhysicalFish {
 
     pub fn motor(&self) -> &MotorState {
         &self.motor
+    }
+
+    /// The tuning of the fish's motor bridge and controllers.
+    pub fn motor_params(&self) -> &MotorParams {
+        self.bridge.params()
     }
 
     pub fn body_length_m(&self) -> f32 {
@@ -238,20 +234,20 @@ impl PhysicalFish {
         // From the step in which the stroke begins, a turn-MC turn beats the tail
         // at the setting its keys were measured at.
         let speed_fraction = if turning && self.turn.wait_secs() < dt {
-            TURN_SWIM_SPEED_FRACTION
+            self.bridge.params().turn_swim_speed_fraction
         } else {
             intent.speed_fraction
         };
         let params = self.swim.params_for_speed(speed_fraction);
         // The motor controllers are sampled at every substep of the body.
-        let (swim, turn) = (&self.swim, &self.turn);
+        let (swim, turn, motor_params) = (&self.swim, &self.turn, self.bridge.params());
         self.body
             .step_with(&intent.fins, to_body_frame(water_m_per_s), |t| {
                 let mut muscles = crate::sim::body::turn_mc::combine_swim_and_turn(
                     &swim.muscles_at(&params, t),
                     &turn.muscles_at(t),
                 );
-                crate::sim::body::turn_mc::add_steering(&mut muscles, intent.steer);
+                crate::sim::body::turn_mc::add_steering(motor_params, &mut muscles, intent.steer);
                 muscles
             });
         self.swim.advance(&params, dt);
@@ -847,7 +843,7 @@ mod agility {
         (None, shortest)
     }
 
-    /// Behind the steering biases of `body::turn_mc` (`STEER_ANTERIOR_BIAS`):
+    /// Behind the steering biases of `MotorParams` (`steer_anterior_bias`, …):
     /// closed-loop turns of ±90° and ±30° from 1.0, 0.7, 0.4 and 0.2 of the top
     /// speed, each started at three tail-beat phases (3.0, 3.2, 3.4 s of lead-in);
     /// prints the seconds to 90 % of each turn ("never" = not within 15 s), the
@@ -857,9 +853,6 @@ mod agility {
     #[test]
     #[ignore]
     fn closed_loop_turn_times() {
-        use crate::sim::body::turn_mc::{
-            STEER_ANTERIOR_BIAS, STEER_MIDDLE_BIAS, STEER_POSTERIOR_BIAS,
-        };
         let list: Vec<[f32; 3]> = std::env::var("STEER_BIASES")
             .ok()
             .map(|v| {
@@ -870,9 +863,7 @@ mod agility {
                     })
                     .collect()
             })
-            .unwrap_or_else(|| {
-                vec![[STEER_ANTERIOR_BIAS, STEER_MIDDLE_BIAS, STEER_POSTERIOR_BIAS]]
-            });
+            .unwrap_or_else(|| vec![MotorParams::default().steer_biases()]);
         for biases in list {
             println!("biases {biases:?}");
             let (mut worst, mut shortest, mut never) = (0.0f32, 1.0f32, 0);

@@ -58,6 +58,7 @@ use serde::{Deserialize, Serialize};
 use std::f32::consts::{FRAC_PI_2, PI, TAU};
 
 use crate::sim::body::body_layout::{MUSCLE_COUNT, MuscleSegment, Side, muscle_index};
+use crate::sim::body::motor_bridge::MotorParams;
 use crate::sim::body::motor_controller::ControlSampling;
 
 /// Straight swimming before a measured turn, seconds. 3.0, chosen: the fish is at
@@ -617,47 +618,13 @@ pub fn find_steering_map_with(body: crate::sim::body::BodyParams) -> (SteeringMa
     (map, measured)
 }
 
-/// Contraction added to the turning side of the anterior segment at full steering
-/// (|steer| = 1), contraction factor. 0.5, measured on the default body with
-/// `physical_fish::agility::closed_loop_turn_times` (closed-loop turns of ±90° and
-/// ±30° through the bridge from 1.0, 0.7, 0.4 and 0.2 of the top speed, three
-/// tail-beat phases at the start; seconds to 90 % of the turn, 15 s limit), anterior
-/// / middle / posterior biases:
-///
-/// | biases | worst time | never | shortest spine |
-/// |---|---:|---:|---:|
-/// | **0.5 / 0.5 / 0.25** | **5.9 s** | 0 | **0.87** |
-/// | 0.5 / 0.5 / 0.5 | 4.8 s | 0 | 0.86 |
-/// | 0.6 / 0.6 / 0.3 | 6.3 s | 0 | 0.85 |
-/// | 0.6 / 0.6 / 0.45 | 5.2 s | 0 | 0.85 |
-/// | 0.75 / 0.75 / 0.375 | 5.5 s | 0 | 0.83 |
-///
-/// Kept at 0.5 / 0.5 / 0.25 because it folds the body least: the stronger bends
-/// turn tighter circles (0.75 / 0.75 / 0.375: a 90° turn from 0.7 of the top speed
-/// in a radius under 1 body length, against 1.09 here) but fold schooling fish
-/// below 0.85 of their length (`physics_world` test). With the earlier spring
-/// damping of 0.1 (`fish_body.rs`, `BodyParams::spring_damping`) every set had
-/// turns that never finished: a slow fish with a held bend fell into a second,
-/// almost motionless state (0.02 m/s). The bend is held as long as the command
-/// lasts, so the tail's thrust on the bent body keeps yawing the fish (see the
-/// module doc).
-pub const STEER_ANTERIOR_BIAS: f32 = 0.5;
-/// The same for the middle segment, whose swim wave beats around the bent mean.
-/// 0.5, measured with [`STEER_ANTERIOR_BIAS`].
-pub const STEER_MIDDLE_BIAS: f32 = 0.5;
-/// The same for the posterior segment. 0.25, measured with [`STEER_ANTERIOR_BIAS`].
-pub const STEER_POSTERIOR_BIAS: f32 = 0.25;
-
 /// Continuous steering (not in the paper, whose turns are discrete): `steer` in
-/// [−1, 1] (+ = left, NaN = 0) adds |steer| × the segment biases
-/// ([`STEER_ANTERIOR_BIAS`], …) to the contractions of the turning side and
-/// clamps them to 1, like a turn-MC bend held for as long as the command lasts.
-pub fn add_steering(u: &mut [f32; MUSCLE_COUNT], steer: f32) {
-    add_steering_with(
-        u,
-        steer,
-        [STEER_ANTERIOR_BIAS, STEER_MIDDLE_BIAS, STEER_POSTERIOR_BIAS],
-    );
+/// [−1, 1] (+ = left, NaN = 0) adds |steer| × the segment biases of `params`
+/// ([`MotorParams::steer_anterior_bias`], …) to the contractions of the turning
+/// side and clamps them to 1, like a turn-MC bend held for as long as the command
+/// lasts.
+pub fn add_steering(params: &MotorParams, u: &mut [f32; MUSCLE_COUNT], steer: f32) {
+    add_steering_with(u, steer, params.steer_biases());
 }
 
 /// [`add_steering`] with explicit segment biases (anterior, middle, posterior).

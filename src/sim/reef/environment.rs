@@ -4,12 +4,12 @@
 //! content → wander, otherwise leave).
 //!
 //! - **Light** falls off with depth (Beer–Lambert, attenuation length
-//!   [`LIGHT_ATTENUATION_M`]) and is dimmer towards the shaded −x end of the
+//!   [`EnvironmentParams::light_attenuation_m`]) and is dimmer towards the shaded −x end of the
 //!   tank, under an overhang: bright water is near the surface at +x, dark water
 //!   deep at −x.
 //! - **Temperature** is warmest near a warm vent on the floor at +x, +z and
 //!   coldest deep at the far end: normalised to [0, 1] and shown in °C
-//!   ([`COLD_C`] … [`WARM_C`]).
+//!   ([`EnvironmentParams::cold_c`] … [`EnvironmentParams::warm_c`]).
 //!
 //! Both fields are static, smooth and cheap; fish read them every step.
 
@@ -17,18 +17,37 @@ use glam::Vec3;
 
 use crate::sim::common::tank::Tank;
 
-/// Depth over which light falls to 1/e, metres (3, chosen: the floor of the
-/// 4.5 m tank gets a fifth of the surface light, like clear coastal water a few
-/// metres down).
-pub const LIGHT_ATTENUATION_M: f32 = 3.0;
-/// Share of the light that reaches the shaded end of the tank (0.35, chosen).
-pub const SHADE_FRACTION: f32 = 0.35;
-/// Temperature at normalised 0, °C.
-pub const COLD_C: f32 = 16.0;
-/// Temperature at normalised 1, °C.
-pub const WARM_C: f32 = 28.0;
-/// Radius of the warm vent's plume, metres (3, chosen: a third of the tank).
-pub const VENT_RADIUS_M: f32 = 3.0;
+/// The tuning of the reef's light and temperature fields ([`Environment`]),
+/// held by each `Environment` (the `Default`) and read through
+/// [`Environment::params`]. The shapes' own coefficients (the vent's place, the
+/// thermocline's 0.15 … 0.55, the plume's 0.6) stay in the formulas they shape.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EnvironmentParams {
+    /// Depth over which light falls to 1/e, metres (3, chosen: the floor of the
+    /// 4.5 m tank gets a fifth of the surface light, like clear coastal water a few
+    /// metres down).
+    pub light_attenuation_m: f32,
+    /// Share of the light that reaches the shaded end of the tank (0.35, chosen).
+    pub shade_fraction: f32,
+    /// Temperature at normalised 0, °C (16).
+    pub cold_c: f32,
+    /// Temperature at normalised 1, °C (28).
+    pub warm_c: f32,
+    /// Radius of the warm vent's plume, metres (3, chosen: a third of the tank).
+    pub vent_radius_m: f32,
+}
+
+impl Default for EnvironmentParams {
+    fn default() -> Self {
+        Self {
+            light_attenuation_m: 3.0,
+            shade_fraction: 0.35,
+            cold_c: 16.0,
+            warm_c: 28.0,
+            vent_radius_m: 3.0,
+        }
+    }
+}
 
 /// The light and temperature fields of one tank.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,13 +55,21 @@ pub struct Environment {
     pub tank: Tank,
     /// Where the warm water rises, metres (on the floor).
     pub warm_vent_m: Vec3,
+    params: EnvironmentParams,
 }
 
 impl Environment {
+    /// The fields of `tank` with the default tuning.
     pub fn new(tank: Tank) -> Self {
+        Self::with_params(tank, EnvironmentParams::default())
+    }
+
+    /// The fields of `tank` with the tuning `params`.
+    pub fn with_params(tank: Tank, params: EnvironmentParams) -> Self {
         let size = tank.size_m();
         Self {
             tank,
+            params,
             warm_vent_m: Vec3::new(
                 tank.min_m.x + 0.8 * size.x,
                 tank.min_m.y,
@@ -51,14 +78,20 @@ impl Environment {
         }
     }
 
+    /// The fields' tuning.
+    pub fn params(&self) -> &EnvironmentParams {
+        &self.params
+    }
+
     /// Brightness of the water at `p_m`, 0 (dark) … 1 (just under the sunlit
     /// surface).
     pub fn brightness_at(&self, p_m: Vec3) -> f32 {
         let depth = (self.tank.max_m.y - p_m.y).max(0.0);
         let size = self.tank.size_m();
         let across = ((p_m.x - self.tank.min_m.x) / size.x.max(1e-3)).clamp(0.0, 1.0);
-        let shade = SHADE_FRACTION + (1.0 - SHADE_FRACTION) * smoothstep(across);
-        let b = (-depth / LIGHT_ATTENUATION_M).exp() * shade;
+        let shade_fraction = self.params.shade_fraction;
+        let shade = shade_fraction + (1.0 - shade_fraction) * smoothstep(across);
+        let b = (-depth / self.params.light_attenuation_m).exp() * shade;
         if b.is_finite() {
             b.clamp(0.0, 1.0)
         } else {
@@ -73,7 +106,8 @@ impl Environment {
         // Background: warmer near the surface (a thermocline), 0.15 … 0.55.
         let background = 0.15 + 0.4 * height;
         let d2 = (p_m - self.warm_vent_m).length_squared();
-        let plume = (-d2 / (2.0 * VENT_RADIUS_M * VENT_RADIUS_M)).exp();
+        let vent_radius_m = self.params.vent_radius_m;
+        let plume = (-d2 / (2.0 * vent_radius_m * vent_radius_m)).exp();
         let t = background + 0.6 * plume;
         if t.is_finite() {
             t.clamp(0.0, 1.0)
@@ -84,7 +118,8 @@ impl Environment {
 
     /// Temperature at `p_m`, °C.
     pub fn temperature_c_at(&self, p_m: Vec3) -> f32 {
-        COLD_C + (WARM_C - COLD_C) * self.temperature_01_at(p_m)
+        let (cold_c, warm_c) = (self.params.cold_c, self.params.warm_c);
+        cold_c + (warm_c - cold_c) * self.temperature_01_at(p_m)
     }
 
     /// Unit direction in which `field` grows fastest at `p_m` (central

@@ -264,7 +264,7 @@ pub struct MotorChoiceParams {
     pub turn_mc_min_deg: f32,
     /// Bend per radian of heading error while keeping the course, 1/rad (3: full bend
     /// from 19° of error). The physics scene's bridge, which turns whole corners with
-    /// the held bend, uses 4 (`motor_bridge::STEER_GAIN_PER_RAD`); here, where turns
+    /// the held bend, uses 4 (`MotorParams::steer_gain_per_rad`); here, where turns
     /// of 90° and more go to the turn-MC, 4 measured worse on the reef demos (feeding
     /// seeds 3–4: 27 plankton against 32 at 3; courtship seed 2 reached only nuzzling;
     /// 25 collision starts in the muscle reef's minute on seed 2).
