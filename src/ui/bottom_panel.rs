@@ -210,6 +210,14 @@ mod tests {
         assert!(tank.iter().all(|h| *h == tank[0]), "the tank: {tank:?}");
         let last = frames.last().unwrap();
         let panel_rect = *last.get(panel).unwrap();
+        // Never wider than the window: an over-wide panel under the tank once
+        // made clicks in the side panel go astray (compare mode, long captions).
+        assert!(
+            panel_rect.width() <= window.x + 0.5,
+            "{panel} is {} wide in a {} window",
+            panel_rect.width(),
+            window.x
+        );
         for name in inside {
             let r = last.get(name).unwrap_or_else(|| panic!("{name} not drawn"));
             assert!(
