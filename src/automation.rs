@@ -45,6 +45,11 @@ pub enum Command {
     Race,
     /// Learning lab: use the learned controllers in this JSON text.
     LoadControllers(String),
+    /// The reef's demos: look ahead for the demo's moment (the frames that
+    /// follow do it; `state().skip` reports).
+    Skip,
+    /// Stop looking ahead.
+    CancelSkip,
 }
 
 /// Most annealing steps one `shoal.train(n)` call may ask for (a drill of the
@@ -160,6 +165,10 @@ impl Command {
                 .ok_or(LabError::LearningLabOnly("race"))?
                 .start_race()
                 .map_err(LabError::from)?,
+            Self::Skip => {
+                lab.skip_to_moment()?;
+            }
+            Self::CancelSkip => lab.cancel_skip(),
             Self::LoadControllers(text) => {
                 let loaded = match lab.learning_mut() {
                     Some(l) => l.load_json(&text).map_err(|e| e.to_string()),
@@ -243,9 +252,24 @@ pub struct StateReport {
     /// [`crate::sim::SceneReport`]).
     #[serde(flatten)]
     pub scene_report: crate::sim::SceneReport,
+    /// *Skip to the moment*: the search under way and how the last one ended
+    /// (the reef's demos only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub skip: Option<SkipReport>,
     /// Benchmark progress and results, in `?bench` mode only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bench: Option<crate::bench::BenchReport>,
+}
+
+/// `shoal.state().skip`.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct SkipReport {
+    /// What the scene's moment is ("the shark's next catch").
+    pub moment: &'static str,
+    /// The search under way, if any.
+    pub searching: Option<crate::lab::SkipProgress>,
+    /// How the last search ended.
+    pub last: Option<crate::lab::SkipOutcome>,
 }
 
 /// The orbit camera, as `shoal.state().camera` reports it.
@@ -282,6 +306,11 @@ impl StateReport {
             camera: None,
             ui_scale: None,
             scene_report: run.scene().report(settings.selected()),
+            skip: run.scene().moment().map(|m| SkipReport {
+                moment: m.what,
+                searching: lab.skipping(),
+                last: lab.skip_outcome().cloned(),
+            }),
             bench: None,
         }
     }

@@ -20,6 +20,9 @@ use crate::sim::reef::world::ReefWorld;
 use crate::sim::scene::{SceneWorld, centre};
 use crate::sim::{HandCommand, PhysicsConfig, PhysicsWorld, World, WorldConfig};
 
+mod skip;
+pub use skip::{SKIP_FRAME_BUDGET_SECS, SKIP_LIMIT_SECS, SkipOutcome, SkipProgress};
+
 /// Seconds of the selected fish's muscles and speed kept for the plots.
 pub const BODY_TRACE_SECS: f64 = 10.0;
 
@@ -34,7 +37,8 @@ pub struct BodySample {
 }
 
 /// One tank's run: its scene's world, what is needed to draw it smoothly, and its
-/// metrics.
+/// metrics. Cloned to go back in time (*Skip to the moment*, `lab/skip.rs`).
+#[derive(Clone)]
 pub struct Run {
     side: Side,
     scene: SceneWorld,
@@ -453,6 +457,8 @@ pub enum LabError {
     TurnOutOfRange(f32),
     #[error(transparent)]
     RaceNotReady(#[from] RaceNotReady),
+    #[error("skip(): this scene has no moment to skip to (the reef's demos have)")]
+    NoMoment,
 }
 
 /// The running experiment: one tank, or two side by side, sharing one clock.
@@ -472,6 +478,10 @@ pub struct Lab {
     parked_learning: Option<LearningLab>,
     /// Smoothed wall-clock cost of one annealing evaluation, seconds.
     evaluation_cost_secs: f64,
+    /// *Skip to the moment* under way, and how the last one ended.
+    skip: Option<skip::Skip>,
+    skip_outcome: Option<SkipOutcome>,
+    skips_finished: u64,
 }
 
 /// Share of the frame budget that training may use in the learning scene (0.5:
@@ -498,6 +508,9 @@ impl Lab {
             step_cost_secs: 0.0,
             parked_learning: None,
             evaluation_cost_secs: 0.0,
+            skip: None,
+            skip_outcome: None,
+            skips_finished: 0,
         };
         lab.rebuild();
         lab
@@ -570,6 +583,9 @@ impl Lab {
                 && before.reef.rebuild_key() != self.settings.reef.rebuild_key())
             || self.runs.len() != self.wanted_runs();
         let unpaused = before.paused && !self.settings.paused;
+        if self.skip.is_some() && (rebuild || !skip::skip_survives(&before, &self.settings)) {
+            self.skip = None;
+        }
         if rebuild {
             self.rebuild();
         } else {
@@ -587,6 +603,8 @@ impl Lab {
     }
 
     fn rebuild(&mut self) {
+        self.skip = None;
+        self.skip_outcome = None;
         let mut learning = self.parked_learning.take();
         for run in std::mem::take(&mut self.runs) {
             if let SceneWorld::Learning(l) = run.scene {
@@ -684,6 +702,15 @@ impl Lab {
             }
             _ => MAX_STEPS,
         };
+        if self.skip.is_some() {
+            // Looking ahead: as many steps as fit in the skip's budget, paused
+            // or not (the user asked for it).
+            let before = self.runs[0].scene.steps();
+            self.advance_skip(SKIP_FRAME_BUDGET_SECS);
+            let steps = self.runs[0].scene.steps().saturating_sub(before) as u32;
+            self.steps_meter.record(now_secs, u64::from(steps));
+            return steps;
+        }
         let steps = if self.settings.paused {
             0
         } else {

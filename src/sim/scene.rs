@@ -43,6 +43,26 @@ pub struct SceneMetrics {
     pub catches: u64,
 }
 
+/// The moment a scene is about (the shark's catch, the spawning), which
+/// *Skip to the moment* runs ahead to.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Moment {
+    /// What the student will see, for the button: "the shark's next catch".
+    pub what: &'static str,
+    /// Seconds of the run shown before it (the chase, the approach).
+    pub lead_secs: f64,
+}
+
+/// A scene's moment, found: when it happens, whom it is about and the log's
+/// line for it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct FoundMoment {
+    pub time_secs: f64,
+    /// The animal to select and follow.
+    pub subject: u32,
+    pub text: String,
+}
+
 /// A muscle-driven animal to draw with the skinned body.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BodyToDraw {
@@ -69,6 +89,7 @@ pub struct SceneReport {
 }
 
 /// The simulated world of one tank.
+#[derive(Clone)]
 pub enum SceneWorld {
     /// Point-mass fish, sharks and stingrays: the aquarium (wandering) and the
     /// schooling lab (the SIMBA boid layer on).
@@ -83,6 +104,35 @@ pub enum SceneWorld {
 }
 
 impl SceneWorld {
+    /// The moment this scene is about, if it has one (the reef's demos).
+    pub fn moment(&self) -> Option<Moment> {
+        match self {
+            Self::Reef(w) => Some(w.config().scene.moment()),
+            Self::Boids(_) | Self::Physics(_) | Self::Learning(_) => None,
+        }
+    }
+
+    /// Events logged since the start (0 in scenes without a log).
+    pub fn events_logged(&self) -> u64 {
+        match self {
+            Self::Reef(w) => w.events_logged(),
+            Self::Boids(_) | Self::Physics(_) | Self::Learning(_) => 0,
+        }
+    }
+
+    /// The scene's moment, if it happened after the first `logged_before`
+    /// events.
+    pub fn moment_since(&self, logged_before: u64) -> Option<FoundMoment> {
+        match self {
+            Self::Reef(w) => w.moment_since(logged_before).map(|e| FoundMoment {
+                time_secs: e.time_secs,
+                subject: e.kind.subject(),
+                text: e.text.clone(),
+            }),
+            Self::Boids(_) | Self::Physics(_) | Self::Learning(_) => None,
+        }
+    }
+
     /// Advances the world by one step of [`Self::dt_secs`].
     pub fn step(&mut self) {
         match self {

@@ -16,6 +16,7 @@ pub mod reef_inspector;
 mod reef_minds;
 pub mod reef_overlay;
 pub mod reef_panel;
+mod reef_skip;
 mod scene_panel;
 pub mod screen;
 mod status_line;

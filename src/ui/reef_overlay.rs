@@ -1,7 +1,7 @@
 //! Drawn over the reef's 3D view with egui's painter: the selected fish's view
 //! volume (300° out to the water's visibility, the blind cone behind) and a line to
-//! what its mind is focused on; and the light or temperature of the water as
-//! coloured dots.
+//! what its mind is focused on; each female's choice of partner; name tags; and
+//! the light or temperature of the water as coloured dots.
 
 use eframe::egui;
 use glam::Vec3;
@@ -10,7 +10,7 @@ use super::reef_panel::intention_color;
 use crate::lab::Run;
 use crate::render::OrbitCamera;
 use crate::settings::reef::ReefOverlay;
-use crate::sim::reef::mind::Target;
+use crate::sim::reef::mind::{Intention, Sex, Target};
 use crate::sim::reef::perception::FIELD_OF_VIEW_RAD;
 
 fn project(camera: &OrbitCamera, rect: egui::Rect, p: Vec3) -> Option<egui::Pos2> {
@@ -216,5 +216,49 @@ pub fn draw_name_tags(
         let tag = egui::Rect::from_center_size(at, galley.size()).expand(2.0);
         painter.rect_filled(tag, 3.0, egui::Color32::from_black_alpha(140));
         painter.galley(tag.min + egui::vec2(2.0, 2.0), galley, egui::Color32::WHITE);
+    }
+}
+
+/// Each female's choice of partner: a dashed line from her to the male she
+/// wants (her intention *mate*), labelled "her choice" at his end, so the
+/// *Courtship* demo shows whom she prefers, not only who follows whom.
+pub fn draw_choices(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    camera: &OrbitCamera,
+    run: &Run,
+    alpha: f32,
+) {
+    let Some(reef) = run.reef() else {
+        return;
+    };
+    let drawn = run.drawn_positions_m(alpha);
+    let color = intention_color(Intention::Mate);
+    for (i, a) in reef.living() {
+        let (Sex::Female, Intention::Mate, Some(Target::Animal(m))) =
+            (a.habits.sex, a.focus.intention, a.focus.target)
+        else {
+            continue;
+        };
+        let ends = drawn.get(i).zip(drawn.get(m as usize));
+        let Some((she, he)) =
+            ends.and_then(|(f, m)| project(camera, rect, *f).zip(project(camera, rect, *m)))
+        else {
+            continue;
+        };
+        painter.add(egui::Shape::dashed_line(
+            &[she, he],
+            egui::Stroke::new(2.0, color),
+            8.0,
+            5.0,
+        ));
+        painter.circle_stroke(he, 9.0, egui::Stroke::new(2.0, color));
+        painter.text(
+            he + egui::vec2(0.0, -14.0),
+            egui::Align2::CENTER_BOTTOM,
+            "her choice",
+            egui::FontId::proportional(13.0),
+            color,
+        );
     }
 }

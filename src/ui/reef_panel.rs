@@ -9,6 +9,7 @@ use super::WidgetRects;
 use super::bottom_panel::show_bottom_panel;
 use super::reef_inspector::{FishEyeView, reef_inspector_height, reef_inspector_ui};
 use super::reef_minds::minds_ui;
+use super::reef_skip::SkipUi;
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
 use super::{body_overlay, reef_overlay};
 use crate::lab::{Lab, Run};
@@ -50,12 +51,8 @@ pub fn intention_color(intention: Intention) -> egui::Color32 {
 }
 
 /// The reef scene's section of the control panel.
-fn reef_controls_ui(
-    ui: &mut egui::Ui,
-    reef: &mut ReefSettings,
-    selected_name: Option<&str>,
-    rects: &mut WidgetRects,
-) {
+/// The demo buttons and what the demo shows.
+fn demo_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut WidgetRects) {
     ui.separator();
     ui.label(egui::RichText::new("Reef").strong());
     ui.horizontal_wrapped(|ui| {
@@ -77,6 +74,10 @@ fn reef_controls_ui(
         }
     });
     ui.label(egui::RichText::new(reef.demo.explanation()).italics());
+}
+
+/// The reef's sliders: body, counts, water, and what is drawn over the tank.
+fn reef_sliders_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut WidgetRects) {
     egui::Grid::new("reef_grid")
         .num_columns(2)
         .spacing([8.0, 6.0])
@@ -182,6 +183,15 @@ fn reef_controls_ui(
              is clear. The coloured line points at what it is thinking about",
         );
     rects.insert("reef_show_vision", r.rect);
+}
+
+/// Name tags, and the selected fish: follow it, let it go.
+fn selection_ui(
+    ui: &mut egui::Ui,
+    reef: &mut ReefSettings,
+    selected_name: Option<&str>,
+    rects: &mut WidgetRects,
+) {
     let r = ui.checkbox(&mut reef.name_tags, "Name tags").on_hover_text(
         "Write each animal's name over it, as the event log calls it (\"shark 10\", \
              \"fish 5\"): click a line of the log to follow that fish",
@@ -246,6 +256,8 @@ pub struct ReefPanel {
     fish_eye: Option<FishEye>,
     /// The selected animal's name as the log and the inspector give it.
     selected_name: Option<String>,
+    /// *Skip to the moment*.
+    skip: SkipUi,
 }
 
 impl Default for ReefPanel {
@@ -255,6 +267,7 @@ impl Default for ReefPanel {
             demo_habits: Vec::new(),
             fish_eye: None,
             selected_name: None,
+            skip: SkipUi::default(),
         }
     }
 }
@@ -280,11 +293,14 @@ impl ScenePanel for ReefPanel {
             let reef = lab.runs()[0].reef()?;
             Some(reef.animals().get(i as usize)?.name(i as usize))
         });
-        None
+        self.skip.before_frame(lab)
     }
 
     fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
-        reef_controls_ui(ui, &mut settings.reef, self.selected_name.as_deref(), rects);
+        demo_ui(ui, &mut settings.reef, rects);
+        self.skip.controls_ui(ui, settings, rects);
+        reef_sliders_ui(ui, &mut settings.reef, rects);
+        selection_ui(ui, &mut settings.reef, self.selected_name.as_deref(), rects);
         minds_ui(
             ui,
             &mut settings.reef.traits,
@@ -301,6 +317,7 @@ impl ScenePanel for ReefPanel {
         settings: &mut Settings,
         rects: &mut WidgetRects,
     ) {
+        self.skip.take_follow(settings);
         let selected = lab.settings().reef.selected;
         let fish_eye = self
             .fish_eye
@@ -332,6 +349,7 @@ impl ScenePanel for ReefPanel {
         if settings.reef.name_tags {
             reef_overlay::draw_name_tags(painter, rect, camera, run, alpha);
         }
+        reef_overlay::draw_choices(painter, rect, camera, run, alpha);
         if let Some(selected) = settings.reef.selected {
             if settings.reef.show_vision {
                 reef_overlay::draw_vision(painter, rect, camera, run, alpha, selected);
@@ -339,6 +357,11 @@ impl ScenePanel for ReefPanel {
             body_overlay::draw_selection(painter, rect, camera, run, alpha, selected);
         }
         body_overlay::record_animal_rects(view, rects);
+        self.skip.draw_banner(painter, rect);
+    }
+
+    fn apply(&mut self, lab: &mut Lab, _ctx: &egui::Context) -> Option<Notice> {
+        self.skip.apply(lab)
     }
 
     /// A click on a fish selects it; a click on open water lets go.

@@ -100,6 +100,20 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
             }),
         ),
         (
+            "skip",
+            Box::new(|app, _| {
+                app.run_command(Command::Skip)?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "cancel_skip",
+            Box::new(|app, _| {
+                app.run_command(Command::CancelSkip)?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
             "save_controllers",
             Box::new(|app, _| {
                 let text = app

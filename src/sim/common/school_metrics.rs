@@ -545,9 +545,25 @@ fn box_gap_sq(a: IVec3, b: IVec3) -> f32 {
     gap.length_squared()
 }
 
+/// Which group each fish belongs to (the groups of [`SchoolMetrics::groups`]:
+/// fish linked by gaps of at most [`GROUP_LINK_BODY_LENGTHS`]), as the lowest
+/// index in its group. A brute-force O(N²) pass, for small schools (the
+/// reef's prey; [`SchoolMeter`] counts the groups of thousands).
+pub fn group_labels(fish: &[Fish]) -> Vec<usize> {
+    let positions_m: Vec<Vec3> = fish.iter().map(|f| f.position_m).collect();
+    let mut parent: Vec<u32> = (0..fish.len() as u32).collect();
+    for i in 0..fish.len() {
+        for j in i + 1..fish.len() {
+            if linked(fish, &positions_m, i, j) {
+                union(&mut parent, i, j);
+            }
+        }
+    }
+    (0..fish.len()).map(|i| root(&mut parent, i)).collect()
+}
+
 /// Are fish `i` and `j` within [`GROUP_LINK_BODY_LENGTHS`] of the larger one's
 /// body length?
-#[cfg(test)]
 fn linked(fish: &[Fish], positions_m: &[Vec3], i: usize, j: usize) -> bool {
     let reach_m = GROUP_LINK_BODY_LENGTHS * fish[i].body_length_m.max(fish[j].body_length_m);
     positions_m[i].distance_squared(positions_m[j]) <= reach_m * reach_m
@@ -703,7 +719,6 @@ mod tests {
             })
             .collect();
         let n = fish.len();
-        let mut parent: Vec<u32> = (0..n as u32).collect();
         let positions: Vec<Vec3> = fish.iter().map(|f| f.position_m).collect();
         let mut nnd = 0.0;
         for i in 0..n {
@@ -711,15 +726,13 @@ mod tests {
             for j in 0..n {
                 if i != j {
                     best = best.min(positions[i].distance(positions[j]));
-                    if linked(&fish, &positions, i, j) {
-                        let (a, b) = (root(&mut parent, i), root(&mut parent, j));
-                        parent[a.max(b)] = a.min(b) as u32;
-                    }
                 }
             }
             nnd += best / fish[i].body_length_m;
         }
-        let groups = (0..n).filter(|&i| root(&mut parent, i) == i).count() as u32;
+        // `group_labels` links all pairs.
+        let labels = group_labels(&fish);
+        let groups = (0..n).filter(|&i| labels[i] == i).count() as u32;
         let m = metrics(&fish);
         assert_eq!(m.groups, groups);
         assert!((m.nnd_body_lengths - nnd / n as f32).abs() < 1e-4);

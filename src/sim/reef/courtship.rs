@@ -288,6 +288,37 @@ use super::world::*;
 use crate::sim::reef::mind::{FishKind, Focus, Intention, IntentionGenerator, Sex, Target};
 
 impl ReefWorld {
+    /// Logs female `female`'s choice of `male` when she saw other males too:
+    /// "pacifist 0 chose pacifist 2 (0.61 m long) over pacifist 1 (0.46 m)".
+    /// She ranks bigger males first (`reef/perception.rs`), nearer ones next.
+    fn log_choice(&mut self, female: u32, male: u32) {
+        let length = |i: u32| self.animals[i as usize].body.body_length_m();
+        let name = |i: u32| self.animals[i as usize].name(i as usize);
+        let Some(over) = self.animals[female as usize]
+            .mates_seen
+            .iter()
+            .copied()
+            .filter(|&m| m != male)
+            .max_by(|&a, &b| length(a).total_cmp(&length(b)).then(b.cmp(&a)))
+        else {
+            return;
+        };
+        let why = if length(male) >= length(over) {
+            "she prefers bigger males"
+        } else {
+            "she weighs size against distance, and the bigger one was farther away"
+        };
+        let text = format!(
+            "{} chose {} ({:.2} m long) over {} ({:.2} m): {why}",
+            name(female),
+            name(male),
+            length(male),
+            name(over),
+            length(over)
+        );
+        self.log(ReefEventKind::Chose { female, male, over }, text);
+    }
+
     /// Forms courting pairs from mutual choices, lets a female change to a
     /// larger male during looping, advances each pair's sequence and ends it.
     pub(super) fn court(&mut self, dt: f32) {
@@ -354,6 +385,7 @@ impl ReefWorld {
             if mates_with(&self.animals[j as usize]) == Some(i as u32)
                 && self.pair_of(j as usize).is_none()
             {
+                self.log_choice(j, i as u32);
                 self.pairs.push(Pair::new(
                     &self.params.courtship,
                     i as u32,
@@ -460,6 +492,36 @@ impl ReefWorld {
 #[cfg(test)]
 mod tests {
     use crate::sim::reef::courtship::*;
+
+    #[test]
+    fn the_log_shows_the_female_choosing_the_bigger_male() {
+        // The Courtship demo on its default muscle bodies: she sees both
+        // males and the log says whom she chose over whom, and why.
+        let mut w = ReefWorld::new(ReefConfig {
+            seed: 1,
+            scene: crate::sim::reef::demos::ReefScene::Courtship,
+            ..ReefConfig::default()
+        });
+        for _ in 0..80 {
+            w.step();
+        }
+        let chose = w
+            .events()
+            .iter()
+            .find(|e| e.kind.name() == "chose")
+            .expect("no choice logged in 2 s");
+        let ReefEventKind::Chose { female, male, over } = chose.kind else {
+            unreachable!()
+        };
+        let length = |i: u32| w.animals()[i as usize].body.body_length_m();
+        assert_eq!(w.animals()[female as usize].habits.sex, Sex::Female);
+        assert!(length(male) > length(over), "{}", chose.text);
+        assert!(
+            chose.text.ends_with("she prefers bigger males"),
+            "{}",
+            chose.text
+        );
+    }
 
     fn params() -> CourtshipParams {
         CourtshipParams::default()

@@ -8,6 +8,8 @@ use glam::Vec3;
 use rand::Rng;
 use serde::{Deserialize, Serialize};
 
+use super::courtship::Phase;
+use super::events::{ReefEvent, ReefEventKind};
 use super::world::*;
 use crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
 use crate::sim::body::physical_fish::{BodySpecies, PhysicalFish};
@@ -16,6 +18,7 @@ use crate::sim::common::obstacle::Obstacle;
 use crate::sim::reef::mind::{
     FishKind, Focus, Habits, IntentionGenerator, Liking, MentalState, Sex,
 };
+use crate::sim::scene::Moment;
 
 /// The demo scenes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -100,6 +103,58 @@ impl ReefScene {
             Self::Feeding => "Hungry fish find plankton and suck it in.",
             Self::SchoolMeetsObstacle => "A school splits around a pillar and joins up again.",
         }
+    }
+}
+
+impl ReefScene {
+    /// The moment the scene is about, which *Skip to the moment* looks ahead
+    /// for.
+    pub fn moment(self) -> Moment {
+        let (what, lead_secs) = match self {
+            Self::Reef => ("the next catch or spawning", 6.0),
+            Self::PredatorAndSchool => ("the shark's next catch", 8.0),
+            Self::Courtship => ("the spawning", 12.0),
+            Self::Feeding => ("the next bite", 4.0),
+            Self::SchoolMeetsObstacle => ("what the school does next", 4.0),
+        };
+        Moment { what, lead_secs }
+    }
+
+    /// Is `kind` this scene's moment?
+    pub fn is_moment(self, kind: &ReefEventKind) -> bool {
+        let spawned = matches!(
+            kind,
+            ReefEventKind::Courtship {
+                phase: Phase::Spawned,
+                ..
+            }
+        );
+        match self {
+            Self::Reef => spawned || matches!(kind, ReefEventKind::AtePrey { .. }),
+            Self::PredatorAndSchool => matches!(kind, ReefEventKind::AtePrey { .. }),
+            Self::Courtship => spawned,
+            Self::Feeding => matches!(kind, ReefEventKind::AteFood { .. }),
+            Self::SchoolMeetsObstacle => matches!(
+                kind,
+                ReefEventKind::SchoolAtPillar { .. }
+                    | ReefEventKind::SchoolSplit { .. }
+                    | ReefEventKind::SchoolJoined { .. }
+                    | ReefEventKind::SchoolPassedWhole { .. }
+            ),
+        }
+    }
+}
+
+impl ReefWorld {
+    /// The first event of the demo's moment among those logged after the
+    /// first `logged_before` (see [`ReefWorld::events_logged`]).
+    pub fn moment_since(&self, logged_before: u64) -> Option<&ReefEvent> {
+        let new = self.events_logged.saturating_sub(logged_before) as usize;
+        let scene = self.config.scene;
+        self.events
+            .iter()
+            .skip(self.events.len().saturating_sub(new))
+            .find(|e| scene.is_moment(&e.kind))
     }
 }
 
@@ -349,6 +404,7 @@ impl ReefWorld {
             last_escape_logged_secs: None,
             wander: Fish::new(p, heading * 0.5 * top, length, hue),
             strike_recovery_secs: 0.0,
+            mates_seen: Vec::new(),
         });
     }
 

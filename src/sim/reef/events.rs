@@ -58,6 +58,33 @@ pub enum ReefEventKind {
     Intention {
         fish: u32,
     },
+    /// A female who saw more than one male chose `male` (see
+    /// [`crate::sim::reef::courtship`]: she ranks bigger males first); `over` is
+    /// the biggest of the others she saw.
+    Chose {
+        female: u32,
+        male: u32,
+        over: u32,
+    },
+    /// The prey school came apart into `groups` groups (`fish` is in the
+    /// second largest); see `reef/school_watch.rs`.
+    SchoolSplit {
+        fish: u32,
+        groups: u32,
+    },
+    /// The prey school is one group again (`fish` is in it).
+    SchoolJoined {
+        fish: u32,
+    },
+    /// The prey school came within reach of the *School meets obstacle*
+    /// demo's pillar (`fish` is the nearest).
+    SchoolAtPillar {
+        fish: u32,
+    },
+    /// The whole prey school went by the pillar without coming apart.
+    SchoolPassedWhole {
+        fish: u32,
+    },
 }
 
 impl ReefEventKind {
@@ -70,10 +97,15 @@ impl ReefEventKind {
             Self::AteFood { fish }
             | Self::BeganEscape { fish, .. }
             | Self::BeganMating { fish, .. }
-            | Self::Intention { fish } => fish,
+            | Self::Intention { fish }
+            | Self::SchoolSplit { fish, .. }
+            | Self::SchoolJoined { fish }
+            | Self::SchoolAtPillar { fish }
+            | Self::SchoolPassedWhole { fish } => fish,
             Self::Courtship { female, .. }
             | Self::LeftForLarger { female, .. }
-            | Self::BrokeUp { female, .. } => female,
+            | Self::BrokeUp { female, .. }
+            | Self::Chose { female, .. } => female,
         }
     }
 
@@ -89,6 +121,11 @@ impl ReefEventKind {
             Self::BrokeUp { .. } => "broke_up",
             Self::Missed { .. } => "missed",
             Self::Intention { .. } => "intention",
+            Self::Chose { .. } => "chose",
+            Self::SchoolSplit { .. } => "school_split",
+            Self::SchoolJoined { .. } => "school_joined",
+            Self::SchoolAtPillar { .. } => "school_at_pillar",
+            Self::SchoolPassedWhole { .. } => "school_passed_whole",
         }
     }
 }
@@ -121,6 +158,7 @@ impl ReefWorld {
     }
 
     pub(super) fn log(&mut self, kind: ReefEventKind, text: String) {
+        self.events_logged += 1;
         if self.events.len() == EVENT_LOG_LEN {
             self.events.pop_front();
         }

@@ -3,7 +3,8 @@
 //! behaviour routine turns it into a wish (`behaviour`, `courtship`), the
 //! motor choice drives the muscle body (`motor_choice`) or the point mass
 //! follows it; the world (`world`) holds the step order, feeding and
-//! predation, plankton, seaweed, the demos and the event log. Light and
+//! predation, plankton, seaweed, the demos and the event log; `school_watch`
+//! logs what the prey school does (splits, joins up, meets the pillar). Light and
 //! temperature of the water: `environment`. The reef's tuning: `params`.
 
 pub mod behaviour;
@@ -17,6 +18,7 @@ pub mod motor_choice;
 pub mod params;
 pub mod perception;
 pub mod report;
+pub mod school_watch;
 pub mod world;
 
 #[cfg(test)]

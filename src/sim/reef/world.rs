@@ -29,6 +29,7 @@ use serde::{Deserialize, Serialize};
 
 use super::demos::ReefScene;
 use super::events::ReefEvent;
+use super::school_watch::SchoolWatch;
 use crate::sim::body::body_layout::HEAD_NODE;
 use crate::sim::body::drive::{drive_physical, step_and_constrain};
 use crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
@@ -224,6 +225,9 @@ pub struct ReefAnimal {
     pub(super) wander: Fish,
     /// Seconds until a predator that missed a strike can strike again.
     pub(super) strike_recovery_secs: f32,
+    /// The partners it saw at its last decision, best first (a female's
+    /// choice, for the log).
+    pub(super) mates_seen: Vec<u32>,
 }
 
 impl ReefAnimal {
@@ -299,6 +303,11 @@ pub struct ReefWorld {
     pub(super) steps: u64,
     pub(super) next_history_secs: f64,
     pub(super) events: VecDeque<ReefEvent>,
+    /// Events logged since the start (the log keeps the last
+    /// [`EVENT_LOG_LEN`]).
+    pub(super) events_logged: u64,
+    /// What the prey school did last (split, joined, at the pillar).
+    pub(super) school_watch: SchoolWatch,
     pub(super) counts: ReefCounts,
     /// Pairs in contact last step (for counting collision starts).
     pub(super) touching: Vec<(u32, u32)>,
@@ -351,6 +360,8 @@ impl ReefWorld {
             steps: 0,
             next_history_secs: 0.0,
             events: VecDeque::new(),
+            events_logged: 0,
+            school_watch: SchoolWatch::default(),
             counts: ReefCounts::default(),
             touching: Vec::new(),
             constraint_moves: 0,
@@ -404,6 +415,10 @@ impl ReefWorld {
     }
     pub fn events(&self) -> &VecDeque<ReefEvent> {
         &self.events
+    }
+    /// Events logged since the start, including those the log has dropped.
+    pub fn events_logged(&self) -> u64 {
+        self.events_logged
     }
     /// Courting pairs.
     pub fn pairs(&self) -> &[Pair] {
@@ -612,6 +627,8 @@ impl ReefWorld {
             let a = &mut self.animals[i];
             let before = a.focus;
             a.focus = a.generator.decide(&a.habits, &a.mental, &percept, partner);
+            a.mates_seen.clear();
+            a.mates_seen.extend(percept.mates.iter().map(|m| m.0));
             let focus = a.focus;
             if focus.intention != before.intention || focus.target != before.target {
                 self.log_decision(i, before, focus);
@@ -624,6 +641,7 @@ impl ReefWorld {
         self.drift_food(dt);
         self.sway_seaweed(dt);
         self.count_contacts();
+        self.watch_school();
         self.time_secs += f64::from(dt);
         self.steps += 1;
         if self.time_secs >= self.next_history_secs {
