@@ -2,7 +2,8 @@
 //! `IntegrationParameters`): the chosen and tuned numbers of the world's step
 //! that are not a preset's (the boid weights and senses are
 //! [`super::world::BoidParams`], the steering limits
-//! [`crate::sim::common::steering::SteeringParams`]). The world holds one
+//! [`crate::sim::common::steering::SteeringParams`]), among them the shared
+//! steering recipe's ([`SteeringTuning`]). The world holds one
 //! ([`BoidWorldParams::default`]); `World::world_params` shows it.
 //!
 //! Consts stay for what is not behaviour tuning: the step and the fish limit
@@ -16,10 +17,16 @@
 //! `FISH_PER_NEIGHBOUR_CELL`, `MIN_NEIGHBOUR_CELL_M`), performance choices
 //! the benchmarks read.
 
-/// The boid world's tuning: the glass and the pond's edge for the SIMBA layer,
-/// fear of sharks, and the sharks' hunting.
+use crate::sim::common::steering_tuning::SteeringTuning;
+
+/// The boid world's tuning: the steering recipe, the glass and the pond's edge
+/// for the SIMBA layer, fear of sharks, and the sharks' hunting.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BoidWorldParams {
+    /// The shared steering layer's recipe (wander, the wall and rock
+    /// algorithms, the neighbour forces; [`SteeringTuning::default`]), for the
+    /// fish, the sharks and the stingrays alike.
+    pub steering: SteeringTuning,
     /// How far from a vertical glass wall the boid layer's wall algorithm starts
     /// to act, in metres. Default 1.5 m (tuned): with containment's Table 1 share
     /// (26 % of 25 % of the 8 m/s² maximum ≈ 0.5 m/s²) a fish at top speed turns
@@ -72,6 +79,7 @@ pub struct BoidWorldParams {
 impl Default for BoidWorldParams {
     fn default() -> Self {
         Self {
+            steering: SteeringTuning::default(),
             wall_range_m: 1.5,
             pond_comfort_margin_m: 1.0,
             fear_radius_m: 4.0,

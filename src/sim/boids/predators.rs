@@ -74,6 +74,7 @@ pub(super) fn escape_force(
         shark.body.velocity_m_per_s,
         params.max_speed_m_per_s,
         f32::INFINITY,
+        &world.steering,
     );
     Some((
         evade.normalize_or_zero() * params.max_force_m_per_s2.clamp(0.0, 1e6) * urgency,
@@ -117,11 +118,12 @@ impl World {
     /// bring one closer, it turns round instead).
     pub(super) fn step_stingrays(&mut self) {
         let params = stingray::stingray_params(&self.params);
+        let tuning = self.world_params.steering;
         let floor_y_m = self.tank.min_m.y;
         for ray in &mut self.stingrays {
             let before = *ray;
             let body = &mut ray.body;
-            let wander = steering::wander(body, &mut self.rng, &params);
+            let wander = steering::wander(body, &mut self.rng, &params, &tuning);
             let reach_m = stingray::STINGRAY_RADIUS_M + stingray::STINGRAY_GAP_M;
             let walls = steering::glass_walls(
                 body.position_m,
@@ -129,6 +131,7 @@ impl World {
                 &self.tank,
                 reach_m + 1.0,
                 params.max_force_m_per_s2,
+                &tuning,
             );
             let avoidance = steering::avoid_obstacles(
                 body.position_m,
@@ -167,12 +170,11 @@ impl World {
             vision_angle_rad: shark::SHARK_VISION_ANGLE_RAD,
             max_speed_m_per_s: shark::SHARK_ATTACK_M_PER_S,
             max_force_m_per_s2: shark::SHARK_MAX_FORCE_M_PER_S2,
-            max_neighbours: 1,
             separation_distance_m: 0.0,
             response_time_s: 1.0,
-            clear_sight_m: 0.0,
         };
         let hunt = self.world_params.shark.clone();
+        let tuning = self.world_params.steering;
         for s in 0..self.sharks.len() {
             let mut shark = self.sharks[s];
             let params = shark::shark_params(&self.params, shark.body.body_length_m);
@@ -237,8 +239,9 @@ impl World {
                     prey.velocity_m_per_s,
                     params.max_speed_m_per_s,
                     params.max_force_m_per_s2,
+                    &tuning,
                 ),
-                None => steering::wander(&mut shark.body, &mut self.rng, &params),
+                None => steering::wander(&mut shark.body, &mut self.rng, &params, &tuning),
             };
             let containment = steering::contain_in_tank(
                 before.position_m,
@@ -247,6 +250,7 @@ impl World {
                 2.5,
                 &params,
                 params.max_force_m_per_s2,
+                &tuning,
             );
             let avoidance = steering::avoid_obstacles(
                 before.position_m,
