@@ -872,9 +872,10 @@ pub(super) fn move_fish(
 /// Obstacles are at least [`WALL_CLEARANCE_M`] from the side walls, lower than
 /// the surface, and pushing out of a half-buried rock or a rooted pillar or
 /// polygon never points into the sand, so the obstacle push cannot undo the
-/// tank clamp. Stingrays keep [`stingray::STINGRAY_GAP_M`] from the glass and
-/// from every obstacle, so pushing a fish out of a stingray cannot push it into
-/// either; where stingrays overlap, a fish still inside after two rounds is
+/// tank clamp. Stingrays keep
+/// [`StingrayParams::gap_m`](super::params::StingrayParams::gap_m) from the
+/// glass and from every obstacle, so pushing a fish out of a stingray cannot
+/// push it into either; where stingrays overlap, a fish still inside after two rounds is
 /// lifted over them.
 pub(super) fn enforce_hard_constraints(
     fish: &mut Fish,
