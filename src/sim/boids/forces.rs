@@ -282,6 +282,7 @@ pub fn heeded_neighbours(
 /// the same neighbours as a search from scratch (the order of ties aside),
 /// but the known ones bound the search from the start, so it visits fewer
 /// cells and points.
+#[allow(clippy::too_many_arguments)]
 pub fn search_heeded(
     positions_m: &[Vec3],
     velocities_m_per_s: &[Vec3],
