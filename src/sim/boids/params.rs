@@ -3,11 +3,13 @@
 //! that are not a preset's (the boid weights and senses are
 //! [`super::world::BoidParams`], the steering limits
 //! [`crate::sim::common::steering::SteeringParams`]), among them the shared
-//! steering recipe's ([`SteeringTuning`]). The world holds one
-//! ([`BoidWorldParams::default`]); `World::world_params` shows it.
+//! steering recipe's ([`SteeringTuning`]) and the sharks' and stingrays' body
+//! and species numbers ([`SharkParams`], [`StingrayParams`]). The world holds
+//! one ([`BoidWorldParams::default`]); `World::world_params` shows it.
 //!
-//! Consts stay for what is not behaviour tuning: the step and the fish limit
-//! (`DT_SECS`, `MAX_FISH_COUNT`); the hard rule's margins (`TANK_MARGIN_M`,
+//! Consts stay for what is not behaviour tuning: the step and the animal limits
+//! (`DT_SECS`, `MAX_FISH_COUNT`, `MAX_SHARKS`, `MAX_STINGRAYS`: settings
+//! ranges); the shark's `MAX_CONFUSING_NEIGHBOURS` (a cost bound); the hard rule's margins (`TANK_MARGIN_M`,
 //! `OBSTACLE_MARGIN_M`, `SHARK_MARGIN_M`: half a body's width, geometry the
 //! scene building also reads before a world exists); placement and the
 //! teacher's edit check (`OBSTACLE_GAP_M`, `EDITED_OBSTACLE_GAP_M`,
@@ -20,7 +22,8 @@
 use crate::sim::common::steering_tuning::SteeringTuning;
 
 /// The boid world's tuning: the steering recipe, the glass and the pond's edge
-/// for the SIMBA layer, fear of sharks, and the sharks' hunting.
+/// for the SIMBA layer, fear of sharks, the sharks' hunting, and the sharks'
+/// and stingrays' body and species numbers.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BoidWorldParams {
     /// The shared steering layer's recipe (wander, the wall and rock

@@ -416,7 +416,7 @@ impl World {
     }
 
     /// Puts into `out` the neighbours fish `i` heeded in the last step: up to
-    /// [`Perception::max_neighbours`] neighbours that it saw, nearest first, as
+    /// [`SteeringTuning::topological_neighbours`] neighbours that it saw, nearest first, as
     /// the boid layer found them (the "show vision" links; the nearest seen
     /// when last searched, see [`NEIGHBOUR_SEARCH_EVERY_STEPS`]). Empty
     /// without the boid layer, for a fish that does not exist, and until the
