@@ -8,7 +8,8 @@
 //! papers' form, desired velocity − current velocity, reached within the
 //! response time and limited to the maximum force (docs/boids.md).
 //!
-//! **Topological interaction.** A fish heeds only the `max_neighbours` nearest
+//! **Topological interaction.** A fish heeds only the
+//! [`SteeringTuning::topological_neighbours`] nearest
 //! fish it sees, not every fish within the vision distance. Ballerini et al. 2008
 //! (PNAS 105:1232) showed that starlings in a flock each interact with their 6–7
 //! nearest neighbours whatever the flock's density; the same "topological range"
@@ -16,38 +17,17 @@
 //! constant when 20,000 fish crowd the tank (with 5 m vision each would otherwise
 //! see thousands). The neighbours are found through the spatial grid, ring by
 //! ring outward from the fish ([`SpatialGrid::k_nearest`]), never by all pairs.
+//!
+//! The recipe's numbers (the topological range, clear sight, the far field's
+//! share and arrival, swaying round fish) are the calling world's
+//! [`SteeringTuning`]; [`Perception`] holds the senses and limits the sliders set.
 
 use glam::Vec3;
 
 use crate::sim::common::fish::heading_of;
 use crate::sim::common::spatial_grid::{MAX_NEAREST, Nearest, SpatialGrid};
 use crate::sim::common::steering::limit;
-
-/// Strength of the far field's pull relative to the near neighbours' (0–1).
-/// Default 0.5 (tuned): strong enough to merge schools that see each other
-/// within a minute, weak enough that a fish in a school follows its neighbours.
-pub const FAR_FIELD_SHARE: f32 = 0.5;
-
-/// Distance within which the far field's pull fades out, metres (its
-/// arrival distance). Default 1.6 m (tuned on seeds 1–12, see
-/// `docs/boids.md`): a fish inside the school it sees feels little of it, a
-/// straggler or a second school several metres off feels it in full.
-pub const FAR_FIELD_ARRIVAL_M: f32 = 1.6;
-
-/// The boid layer's distance within which a fish reads a neighbour's heading in
-/// full ([`Perception::clear_sight_m`]), metres; beyond it the neighbour counts
-/// for `ALIGNMENT_CLEAR_SIGHT_M / distance` in
-/// alignment (the angle a neighbour's body subtends falls as 1/distance, so a
-/// far fish's heading is harder to read). Default 0.3 m (tuned on seeds 1–12,
-/// `docs/boids.md`; about one body length): a school's close neighbours are
-/// read almost in full, loners a few body lengths apart copy each other's
-/// heading only weakly.
-pub const ALIGNMENT_CLEAR_SIGHT_M: f32 = 0.3;
-
-/// Default topological range: the neighbours a fish heeds. Default 7, the upper
-/// end of the 6–7 nearest neighbours starlings interact with (Ballerini et al.
-/// 2008).
-pub const TOPOLOGICAL_NEIGHBOURS: usize = 7;
+use crate::sim::common::steering_tuning::SteeringTuning;
 
 /// What a fish perceives of its neighbours and how hard it may steer.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -60,20 +40,12 @@ pub struct Perception {
     pub max_speed_m_per_s: f32,
     /// Largest steering acceleration, m/s².
     pub max_force_m_per_s2: f32,
-    /// How many of the nearest seen neighbours a fish heeds (topological range,
-    /// at most [`crate::sim::common::spatial_grid::MAX_NEAREST`]).
-    pub max_neighbours: usize,
     /// Neighbours closer than this push the fish away (its personal space),
     /// metres; farther ones only attract and align it.
     pub separation_distance_m: f32,
     /// Time in which a steering force would reach its desired velocity, seconds:
     /// each force is `(desired − current) / response_time`, then limited.
     pub response_time_s: f32,
-    /// Distance within which a neighbour's heading is read in full, metres;
-    /// a farther one counts `clear_sight / distance` in alignment (see
-    /// [`ALIGNMENT_CLEAR_SIGHT_M`]). 0 or less: every heeded neighbour counts in
-    /// full.
-    pub clear_sight_m: f32,
 }
 
 /// The school seen from afar: fish bucketed into coarse cells (count and
@@ -245,7 +217,8 @@ pub struct NeighbourForces {
     /// school's steps and the Group weights reached polarization 0.61 instead of
     /// 0.76; `docs/boids.md`).
     pub cohesion_need: f32,
-    /// How many neighbours the fish heeded (at most `max_neighbours`).
+    /// How many neighbours the fish heeded (at most
+    /// [`SteeringTuning::topological_neighbours`]).
     pub neighbours: u32,
 }
 
@@ -279,16 +252,17 @@ pub fn steer_towards(
     )
 }
 
-/// The up-to-`max_neighbours` nearest neighbours that the fish at
-/// `positions_m[i]`, swimming with `velocities_m_per_s[i]`, sees (the
-/// neighbours it heeds), looked up in `grid` (built over `positions_m`, any
-/// cell size), nearest first.
+/// The up-to-[`SteeringTuning::topological_neighbours`] nearest neighbours
+/// that the fish at `positions_m[i]`, swimming with `velocities_m_per_s[i]`,
+/// sees (the neighbours it heeds), looked up in `grid` (built over
+/// `positions_m`, any cell size), nearest first.
 pub fn heeded_neighbours(
     positions_m: &[Vec3],
     velocities_m_per_s: &[Vec3],
     i: usize,
     grid: &SpatialGrid,
     perception: &Perception,
+    tuning: &SteeringTuning,
 ) -> Nearest {
     search_heeded(
         positions_m,
@@ -296,8 +270,9 @@ pub fn heeded_neighbours(
         i,
         grid,
         perception,
+        tuning,
         &ViewCone::new(perception),
-        Nearest::new(perception.max_neighbours),
+        Nearest::new(tuning.topological_neighbours),
     )
 }
 
@@ -307,21 +282,24 @@ pub fn heeded_neighbours(
 /// the same neighbours as a search from scratch (the order of ties aside),
 /// but the known ones bound the search from the start, so it visits fewer
 /// cells and points.
+#[allow(clippy::too_many_arguments)]
 pub fn search_heeded(
     positions_m: &[Vec3],
     velocities_m_per_s: &[Vec3],
     i: usize,
     grid: &SpatialGrid,
     perception: &Perception,
+    tuning: &SteeringTuning,
     cone: &ViewCone,
     known: Nearest,
 ) -> Nearest {
     let position_m = positions_m[i];
     let heading = heading_of(velocities_m_per_s[i]);
-    let mut nearest = if known.capacity() == perception.max_neighbours.min(MAX_NEAREST) {
+    let max_neighbours = tuning.topological_neighbours;
+    let mut nearest = if known.capacity() == max_neighbours.min(MAX_NEAREST) {
         known
     } else {
-        Nearest::new(perception.max_neighbours)
+        Nearest::new(max_neighbours)
     };
     grid.k_nearest(
         position_m,
@@ -386,8 +364,9 @@ pub fn neighbour_forces(
     grid: &SpatialGrid,
     far_field: Option<&FarField>,
     perception: &Perception,
+    tuning: &SteeringTuning,
 ) -> NeighbourForces {
-    let nearest = heeded_neighbours(positions_m, velocities_m_per_s, i, grid, perception);
+    let nearest = heeded_neighbours(positions_m, velocities_m_per_s, i, grid, perception, tuning);
     let far_centre_m = far_field.and_then(|f| {
         f.seen_centre_m(
             positions_m[i],
@@ -402,6 +381,7 @@ pub fn neighbour_forces(
         &nearest,
         far_centre_m,
         perception,
+        tuning,
     )
 }
 
@@ -414,6 +394,7 @@ pub fn forces_from_neighbours(
     nearest: &Nearest,
     far_centre_m: Option<Vec3>,
     perception: &Perception,
+    tuning: &SteeringTuning,
 ) -> NeighbourForces {
     let position_m = positions_m[i];
     let velocity_m_per_s = velocities_m_per_s[i];
@@ -436,8 +417,8 @@ pub fn forces_from_neighbours(
         }
         // A near neighbour's heading is read in full, a far one's less
         // (its silhouette shrinks with distance).
-        let clarity = if perception.clear_sight_m > 0.0 {
-            (perception.clear_sight_m / distance_m.max(1e-3)).min(1.0)
+        let clarity = if tuning.alignment_clear_sight_m > 0.0 {
+            (tuning.alignment_clear_sight_m / distance_m.max(1e-3)).min(1.0)
         } else {
             1.0
         };
@@ -464,13 +445,13 @@ pub fn forces_from_neighbours(
         1.0
     };
     // Near pull (arriving) plus the far field's pull towards the seen school's
-    // centre, at FAR_FIELD_SHARE of full strength, arriving too: both are
+    // centre, at the far-field share of full strength, arriving too: both are
     // cohesion and scale with its weight.
     let near = to_centre_m.normalize_or_zero() * arrival;
     let far = far_centre_m.map_or(Vec3::ZERO, |c| {
         let to_far_m = c - position_m;
-        let far_arrival = (to_far_m.length() / FAR_FIELD_ARRIVAL_M.max(1e-3)).min(1.0);
-        to_far_m.normalize_or_zero() * FAR_FIELD_SHARE * far_arrival
+        let far_arrival = (to_far_m.length() / tuning.far_field_arrival_m.max(1e-3)).min(1.0);
+        to_far_m.normalize_or_zero() * tuning.far_field_share * far_arrival
     });
     let pull = near + far;
     let cohesion_m_per_s2 = if pull == Vec3::ZERO {
@@ -501,27 +482,13 @@ pub fn forces_from_neighbours(
     }
 }
 
-/// How far ahead in time a fish checks its course against the neighbours it
-/// heeds, seconds. Default 1 s (chosen): about two body lengths at cruising
-/// speed, enough to sway round a fish swimming the other way.
-pub const FISH_AVOID_LOOK_AHEAD_S: f32 = 1.0;
-
-/// A neighbour whose predicted closest approach is nearer than this is on a
-/// collision course, metres. Default 0.3 m (chosen): about one body length.
-pub const FISH_AVOID_CLEARANCE_M: f32 = 0.3;
-
-/// Heeded neighbours this close to the one in the way belong to one obstacle
-/// with it, metres; three or more are avoided as one (the SIMBA paper's
-/// polygon of at least three close agents). Default 0.6 m (chosen: two body
-/// lengths).
-pub const FISH_CLUSTER_LINK_M: f32 = 0.6;
-
 /// Avoiding other fish, the SIMBA way (other agents are obstacles, avoided
 /// like rocks by swaying): among the heeded neighbours, the one the fish at
 /// `positions_m[i]` would meet soonest, judged from their relative velocity
-/// (closest approach under [`FISH_AVOID_CLEARANCE_M`] within
-/// [`FISH_AVOID_LOOK_AHEAD_S`]); if two or more other heeded neighbours are
-/// within [`FISH_CLUSTER_LINK_M`] of it, the obstacle is the centre of that
+/// (closest approach under [`SteeringTuning::fish_avoid_clearance_m`] within
+/// [`SteeringTuning::fish_avoid_look_ahead_s`]); if two or more other heeded
+/// neighbours are within [`SteeringTuning::fish_cluster_link_m`] of it, the
+/// obstacle is the centre of that
 /// cluster. The fish sways sideways, away from the obstacle's offset from
 /// its path, with a strength inversely proportional to the time left:
 ///
@@ -536,6 +503,7 @@ pub fn avoid_neighbours(
     i: usize,
     nearest: &Nearest,
     max_speed_m_per_s: f32,
+    tuning: &SteeringTuning,
 ) -> Vec3 {
     /// Shortest time to contact used in the strength, seconds.
     const MIN_TIME_S: f32 = 0.1;
@@ -554,11 +522,12 @@ pub fn avoid_neighbours(
             continue;
         }
         let t_s = offset_m.dot(closing_m_per_s) / closing_sq;
-        if !(t_s > 0.0 && t_s <= FISH_AVOID_LOOK_AHEAD_S) {
+        if !(t_s > 0.0 && t_s <= tuning.fish_avoid_look_ahead_s) {
             continue;
         }
         let miss_m = (offset_m - closing_m_per_s * t_s).length();
-        if miss_m < FISH_AVOID_CLEARANCE_M && threat.is_none_or(|(soonest, _)| t_s < soonest) {
+        if miss_m < tuning.fish_avoid_clearance_m && threat.is_none_or(|(soonest, _)| t_s < soonest)
+        {
             threat = Some((t_s, j));
         }
     }
@@ -567,8 +536,9 @@ pub fn avoid_neighbours(
     };
     let mut centre_m = positions_m[j];
     let mut members = 1.0;
+    let link_sq_m2 = tuning.fish_cluster_link_m.powi(2);
     for (k, _) in nearest.iter() {
-        if k != j && positions_m[k].distance_squared(positions_m[j]) < FISH_CLUSTER_LINK_M.powi(2) {
+        if k != j && positions_m[k].distance_squared(positions_m[j]) < link_sq_m2 {
             centre_m += positions_m[k];
             members += 1.0;
         }
@@ -581,7 +551,7 @@ pub fn avoid_neighbours(
     let to_core_m = core_m - position_m;
     let offset_m = to_core_m - heading * to_core_m.dot(heading);
     let away = (-offset_m).normalize_or(heading.cross(Vec3::Y).normalize_or(Vec3::Z));
-    let urgency = FISH_AVOID_LOOK_AHEAD_S / t_s.max(MIN_TIME_S);
+    let urgency = tuning.fish_avoid_look_ahead_s / t_s.max(MIN_TIME_S);
     let sway = away * max_speed_m_per_s * urgency;
     if sway.is_finite() { sway } else { Vec3::ZERO }
 }
@@ -596,11 +566,17 @@ mod tests {
         vision_angle_rad: 300f32.to_radians(),
         max_speed_m_per_s: 0.8,
         max_force_m_per_s2: 1.5,
-        max_neighbours: 7,
         separation_distance_m: 1.0,
         response_time_s: 1.0,
-        clear_sight_m: 0.0,
     };
+
+    /// The default tuning, every heeded neighbour's heading read in full.
+    fn tuning() -> SteeringTuning {
+        SteeringTuning {
+            alignment_clear_sight_m: 0.0,
+            ..SteeringTuning::default()
+        }
+    }
 
     fn positions(fish: &[Fish]) -> Vec<Vec3> {
         fish.iter().map(|f| f.position_m).collect()
@@ -656,6 +632,7 @@ mod tests {
             &grid_for(&fish),
             None,
             &PERCEPTION,
+            &tuning(),
         );
         assert_eq!(f.neighbours, 2);
         assert!(f.separation_m_per_s2.z < 0.0, "away from neighbours at +z");
@@ -692,8 +669,15 @@ mod tests {
         }
         let centre_distance_m = (offsets.iter().sum::<Vec3>() / 3.0).length();
         for far_centre_m in [None, Some(p + Vec3::X * 4.0)] {
-            let f =
-                forces_from_neighbours(&all, &velocities, 0, &nearest, far_centre_m, &PERCEPTION);
+            let f = forces_from_neighbours(
+                &all,
+                &velocities,
+                0,
+                &nearest,
+                far_centre_m,
+                &PERCEPTION,
+                &tuning(),
+            );
             assert!((f.separation_need - 1.0 / 3.0).abs() < 1e-5, "{f:?}");
             // The far field does not make cohesion pressing among neighbours.
             assert!((f.cohesion_need - centre_distance_m).abs() < 1e-5, "{f:?}");
@@ -706,8 +690,12 @@ mod tests {
             &Nearest::new(7),
             Some(p + Vec3::X * 4.0),
             &PERCEPTION,
+            &tuning(),
         );
-        assert!((f.cohesion_need - FAR_FIELD_SHARE).abs() < 1e-5, "{f:?}");
+        assert!(
+            (f.cohesion_need - tuning().far_field_share).abs() < 1e-5,
+            "{f:?}"
+        );
         assert_eq!(f.separation_need, 0.0);
     }
 
@@ -721,7 +709,8 @@ mod tests {
                 0,
                 &grid_for(&lone),
                 None,
-                &PERCEPTION
+                &PERCEPTION,
+                &tuning()
             ),
             NeighbourForces::default()
         );
@@ -733,6 +722,7 @@ mod tests {
             &grid_for(&twins),
             None,
             &PERCEPTION,
+            &tuning(),
         );
         assert!(f.separation_m_per_s2.is_finite() && f.cohesion_m_per_s2.is_finite());
     }
@@ -766,6 +756,7 @@ mod tests {
             &grid_for(&fish),
             None,
             &perception,
+            &tuning(),
         );
         assert_eq!(f.neighbours, 7);
     }
@@ -825,7 +816,7 @@ mod tests {
         );
         let cone = ViewCone::new(&PERCEPTION);
         for i in (0..fish.len()).step_by(13) {
-            let fresh = heeded_neighbours(&ps, &vs, i, &grid, &PERCEPTION);
+            let fresh = heeded_neighbours(&ps, &vs, i, &grid, &PERCEPTION, &tuning());
             assert_eq!(fresh.len(), 7);
             // Seeds: every other of the true neighbours, plus a farther fish
             // it sees that is not among them.
@@ -843,7 +834,8 @@ mod tests {
             seeds.offer(extra, ps[extra].distance_squared(ps[i]));
             let rechecked = recheck_heeded(&ps, &vs, i, &seeds, &cone);
             assert_eq!(rechecked.len(), seeds.len(), "all seeds are still seen");
-            let seeded = search_heeded(&ps, &vs, i, &grid, &PERCEPTION, &cone, rechecked);
+            let seeded =
+                search_heeded(&ps, &vs, i, &grid, &PERCEPTION, &tuning(), &cone, rechecked);
             let a: Vec<usize> = fresh.iter().map(|(j, _)| j).collect();
             let b: Vec<usize> = seeded.iter().map(|(j, _)| j).collect();
             assert_eq!(a, b, "fish {i}: each found once, nearest first");
@@ -862,6 +854,7 @@ mod tests {
             0,
             &grid_for(&fish),
             &PERCEPTION,
+            &tuning(),
         );
         assert_eq!(heeded.len(), 2);
         // The fish ahead is now straight behind (in the blind cone), the one
@@ -895,22 +888,36 @@ mod tests {
         // Head-on, 0.6 m ahead and slightly to the left (−z is left of +x).
         let positions = [me, me + Vec3::new(0.6, 0.0, -0.05)];
         let velocities = [Vec3::X * 0.5, -Vec3::X * 0.5];
-        let sway = avoid_neighbours(&positions, &velocities, 0, &all_heeded(&positions), 0.8);
+        let sway = avoid_neighbours(
+            &positions,
+            &velocities,
+            0,
+            &all_heeded(&positions),
+            0.8,
+            &tuning(),
+        );
         assert!(sway.z > 0.0, "away from the oncoming fish's side: {sway}");
         assert!(sway.x.abs() < 1e-4, "sideways, not braking: {sway}");
         // The same fish swimming alongside at the same velocity: nothing to avoid.
         let alongside = [Vec3::X * 0.5, Vec3::X * 0.5];
-        let calm = avoid_neighbours(&positions, &alongside, 0, &all_heeded(&positions), 0.8);
+        let calm = avoid_neighbours(
+            &positions,
+            &alongside,
+            0,
+            &all_heeded(&positions),
+            0.8,
+            &tuning(),
+        );
         assert_eq!(calm, Vec3::ZERO);
         // Farther off (contact in more than the look-ahead), nothing yet.
         let far = [me, me + Vec3::new(1.5, 0.0, -0.05)];
         assert_eq!(
-            avoid_neighbours(&far, &velocities, 0, &all_heeded(&far), 0.8),
+            avoid_neighbours(&far, &velocities, 0, &all_heeded(&far), 0.8, &tuning()),
             Vec3::ZERO
         );
         // The sooner the contact, the harder the sway.
         let near = [me, me + Vec3::new(0.3, 0.0, -0.05)];
-        let hard = avoid_neighbours(&near, &velocities, 0, &all_heeded(&near), 0.8);
+        let hard = avoid_neighbours(&near, &velocities, 0, &all_heeded(&near), 0.8, &tuning());
         assert!(hard.length() > sway.length());
     }
 
@@ -927,7 +934,14 @@ mod tests {
             ahead + Vec3::new(0.1, 0.0, 0.5),
         ];
         let velocities = [Vec3::X * 0.5, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO];
-        let sway = avoid_neighbours(&positions, &velocities, 0, &all_heeded(&positions), 0.8);
+        let sway = avoid_neighbours(
+            &positions,
+            &velocities,
+            0,
+            &all_heeded(&positions),
+            0.8,
+            &tuning(),
+        );
         assert!(sway.z < 0.0, "away from the cluster: {sway}");
         // One of the cluster on the other side of the path: the obstacle is the
         // cluster's centre (right of the path), not that fish (left of it).
@@ -937,13 +951,20 @@ mod tests {
             me + Vec3::new(0.5, 0.0, 0.45),
             me + Vec3::new(0.6, 0.0, 0.5),
         ];
-        let sway = avoid_neighbours(&mixed, &velocities, 0, &all_heeded(&mixed), 0.8);
+        let sway = avoid_neighbours(&mixed, &velocities, 0, &all_heeded(&mixed), 0.8, &tuning());
         assert!(
             sway.z < 0.0,
             "round the cluster, not the nearest fish: {sway}"
         );
         let alone = [me, me + Vec3::new(0.5, 0.0, -0.05)];
-        let sway = avoid_neighbours(&alone, &velocities[..2], 0, &all_heeded(&alone), 0.8);
+        let sway = avoid_neighbours(
+            &alone,
+            &velocities[..2],
+            0,
+            &all_heeded(&alone),
+            0.8,
+            &tuning(),
+        );
         assert!(
             sway.z > 0.0,
             "a lone fish on the left is passed on the right: {sway}"

@@ -2,11 +2,14 @@
 //! `IntegrationParameters`): the chosen and tuned numbers of the world's step
 //! that are not a preset's (the boid weights and senses are
 //! [`super::world::BoidParams`], the steering limits
-//! [`crate::sim::common::steering::SteeringParams`]). The world holds one
-//! ([`BoidWorldParams::default`]); `World::world_params` shows it.
+//! [`crate::sim::common::steering::SteeringParams`]), among them the shared
+//! steering recipe's ([`SteeringTuning`]) and the sharks' and stingrays' body
+//! and species numbers ([`SharkParams`], [`StingrayParams`]). The world holds
+//! one ([`BoidWorldParams::default`]); `World::world_params` shows it.
 //!
-//! Consts stay for what is not behaviour tuning: the step and the fish limit
-//! (`DT_SECS`, `MAX_FISH_COUNT`); the hard rule's margins (`TANK_MARGIN_M`,
+//! Consts stay for what is not behaviour tuning: the step and the animal limits
+//! (`DT_SECS`, `MAX_FISH_COUNT`, `MAX_SHARKS`, `MAX_STINGRAYS`: settings
+//! ranges); the shark's `MAX_CONFUSING_NEIGHBOURS` (a cost bound); the hard rule's margins (`TANK_MARGIN_M`,
 //! `OBSTACLE_MARGIN_M`, `SHARK_MARGIN_M`: half a body's width, geometry the
 //! scene building also reads before a world exists); placement and the
 //! teacher's edit check (`OBSTACLE_GAP_M`, `EDITED_OBSTACLE_GAP_M`,
@@ -16,10 +19,17 @@
 //! `FISH_PER_NEIGHBOUR_CELL`, `MIN_NEIGHBOUR_CELL_M`), performance choices
 //! the benchmarks read.
 
-/// The boid world's tuning: the glass and the pond's edge for the SIMBA layer,
-/// fear of sharks, and the sharks' hunting.
+use crate::sim::common::steering_tuning::SteeringTuning;
+
+/// The boid world's tuning: the steering recipe, the glass and the pond's edge
+/// for the SIMBA layer, fear of sharks, the sharks' hunting, and the sharks'
+/// and stingrays' body and species numbers.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BoidWorldParams {
+    /// The shared steering layer's recipe (wander, the wall and rock
+    /// algorithms, the neighbour forces; [`SteeringTuning::default`]), for the
+    /// fish, the sharks and the stingrays alike.
+    pub steering: SteeringTuning,
     /// How far from a vertical glass wall the boid layer's wall algorithm starts
     /// to act, in metres. Default 1.5 m (tuned): with containment's Table 1 share
     /// (26 % of 25 % of the 8 m/s² maximum ≈ 0.5 m/s²) a fish at top speed turns
@@ -67,11 +77,17 @@ pub struct BoidWorldParams {
     pub fear_separation_factor: f32,
     /// The sharks' hunting: confusion, strike and lunge.
     pub shark: SharkHuntParams,
+    /// The sharks' body and species numbers: length, speeds, force, vision.
+    pub shark_species: SharkParams,
+    /// The stingrays' body and species numbers: size, glide height, speeds,
+    /// gap, and when they are avoided as one polygon.
+    pub stingray: StingrayParams,
 }
 
 impl Default for BoidWorldParams {
     fn default() -> Self {
         Self {
+            steering: SteeringTuning::default(),
             wall_range_m: 1.5,
             pond_comfort_margin_m: 1.0,
             fear_radius_m: 4.0,
@@ -82,15 +98,17 @@ impl Default for BoidWorldParams {
             fear_cohesion_factor: 2.0,
             fear_separation_factor: 0.5,
             shark: SharkHuntParams::default(),
+            shark_species: SharkParams::default(),
+            stingray: StingrayParams::default(),
         }
     }
 }
 
 /// The boid world's sharks' hunting tuning (`boids/shark.rs`, the confusion
-/// effect and the strike). The sharks' body and species numbers (length,
-/// speeds, force, vision) stay consts in `boids/shark.rs`, as do
-/// `MAX_SHARKS`, `MAX_CONFUSING_NEIGHBOURS` (a cost bound) and
-/// `RESPAWN_DISTANCE_M` (placement).
+/// effect and the strike). The sharks' body and species numbers are
+/// [`SharkParams`]; `MAX_SHARKS` (a settings range) and
+/// `MAX_CONFUSING_NEIGHBOURS` (a cost bound: the capacity of the neighbour
+/// list counted) stay consts in `boids/shark.rs`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SharkHuntParams {
     /// Distance from the shark's mouth (half a body length ahead of its centre) to
@@ -155,6 +173,120 @@ impl Default for SharkHuntParams {
             lunge_m_per_s: 3.0,
             lunge_force_m_per_s2: 12.0,
             refocus_secs: 1.0,
+        }
+    }
+}
+
+/// The boid world's sharks' body and species numbers (`boids/shark.rs`,
+/// `boids/predators.rs`, `boids/placement.rs`): a reef shark 1.5–2 m long,
+/// slower than a fish when cruising, twice as fast attacking, turning wide.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SharkParams {
+    /// Shortest shark, nose to tail, in metres. Default 1.5 m (chosen): a reef
+    /// shark, four to six times the fish; each new shark draws its length
+    /// uniformly between this and [`SharkParams::max_length_m`].
+    pub min_length_m: f32,
+    /// Longest shark, nose to tail, in metres. Default 2.0 m (chosen).
+    pub max_length_m: f32,
+    /// Cruising speed in m/s. Default 0.5 m/s (chosen): slower than a fish's
+    /// top speed, so a resting shark does not catch anything by accident.
+    pub cruise_m_per_s: f32,
+    /// Attack speed in m/s. Default 1.5 m/s (tuned): about twice the fish's
+    /// 0.8 m/s top speed (a shark's burst is several times its cruise), so a
+    /// shark that keeps its lock catches a lone fish within seconds; fish can
+    /// only escape by turning (they may steer 8 m/s², the shark
+    /// [`SharkParams::max_force_m_per_s2`]) or by hiding in a school.
+    pub attack_m_per_s: f32,
+    /// Slowest shark speed in m/s. Default 0.3 m/s (chosen): sharks must keep
+    /// swimming to breathe (ram ventilation).
+    pub min_m_per_s: f32,
+    /// Largest steering acceleration of a shark in m/s². Default 2.5 m/s²
+    /// (chosen): a big body turns wider than a fish: at attack speed its
+    /// tightest turn has a radius of v²/a ≈ 0.9 m, a fish's about 0.1 m.
+    pub max_force_m_per_s2: f32,
+    /// How far a shark sees fish, in metres. Default 6 m (chosen): half the
+    /// tank; murky water limits vision to some metres. A lock on a fish farther
+    /// than 1.5 times this is lost.
+    pub vision_m: f32,
+    /// The shark's field of view, radians. Default 300° (as the fish's, TT §5).
+    pub vision_angle_rad: f32,
+    /// A caught fish reappears at least this far from every shark, in metres.
+    /// Default 5 m (chosen): out of reach, on the other side of the tank.
+    pub respawn_distance_m: f32,
+}
+
+impl Default for SharkParams {
+    fn default() -> Self {
+        Self {
+            min_length_m: 1.5,
+            max_length_m: 2.0,
+            cruise_m_per_s: 0.5,
+            attack_m_per_s: 1.5,
+            min_m_per_s: 0.3,
+            max_force_m_per_s2: 2.5,
+            vision_m: 6.0,
+            vision_angle_rad: 300.0 * std::f32::consts::PI / 180.0,
+            respawn_distance_m: 5.0,
+        }
+    }
+}
+
+/// The boid world's stingrays' body and species numbers (`boids/stingray.rs`,
+/// `boids/predators.rs`, `boids/placement.rs`): a flat ray 1 m across that
+/// glides slowly just above the sand. `MAX_STINGRAYS` (a settings range) stays
+/// a const in `boids/stingray.rs`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StingrayParams {
+    /// Half the stingray's wingspan, in metres. Default 0.5 m (chosen): a ray
+    /// 1 m across. The fish avoid a disc of this radius.
+    pub radius_m: f32,
+    /// Thickness of the stingray's body, in metres. Default 0.15 m (chosen).
+    pub thickness_m: f32,
+    /// Lowest glide height of the stingray's centre above the sand, in metres.
+    /// Default 0.2 m (chosen): rays skim the bottom; each one keeps its own
+    /// height, drawn between this and [`StingrayParams::max_glide_height_m`].
+    pub min_glide_height_m: f32,
+    /// Highest glide height of the stingray's centre above the sand, in metres.
+    /// Default 0.6 m (chosen).
+    pub max_glide_height_m: f32,
+    /// Cruising speed in m/s. Default 0.3 m/s (chosen): a slow glide, a third
+    /// of a fish's top speed.
+    pub cruise_m_per_s: f32,
+    /// Top speed in m/s. Default 0.4 m/s (chosen).
+    pub max_m_per_s: f32,
+    /// Lowest speed in m/s. Default 0.15 m/s (chosen).
+    pub min_m_per_s: f32,
+    /// Largest steering acceleration in m/s². Default 0.5 m/s² (chosen): wide,
+    /// calm turns.
+    pub max_force_m_per_s2: f32,
+    /// Gap a stingray keeps between its wing tips and the glass or any fixed
+    /// obstacle, in metres. Default 0.6 m (chosen): a fish always fits between
+    /// (so pushing a fish out of a stingray can never push it into a rock or
+    /// through the glass).
+    pub gap_m: f32,
+    /// Stingrays whose centres are closer than this are "close together", in
+    /// metres. Default 2.0 m (chosen): their wing tips are less than 1 m apart
+    /// (two to three fish lengths), too narrow for a school to pass between.
+    pub cluster_link_m: f32,
+    /// Fewest close stingrays the fish avoid as one polygon. Default 3 (the
+    /// SIMBA paper: "at least three particles").
+    pub cluster_min_stingrays: usize,
+}
+
+impl Default for StingrayParams {
+    fn default() -> Self {
+        Self {
+            radius_m: 0.5,
+            thickness_m: 0.15,
+            min_glide_height_m: 0.2,
+            max_glide_height_m: 0.6,
+            cruise_m_per_s: 0.3,
+            max_m_per_s: 0.4,
+            min_m_per_s: 0.15,
+            max_force_m_per_s2: 0.5,
+            gap_m: 0.6,
+            cluster_link_m: 2.0,
+            cluster_min_stingrays: 3,
         }
     }
 }

@@ -8,6 +8,7 @@ use glam::{Vec2, Vec3};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 
+use crate::sim::boids::params::{SharkParams, StingrayParams};
 use crate::sim::boids::shark::{self, MAX_SHARKS, Shark};
 use crate::sim::boids::stingray::{self, MAX_STINGRAYS, Stingray};
 use crate::sim::common::fish::Fish;
@@ -80,11 +81,16 @@ pub(super) fn footprint_gap_m(a: &Obstacle, b: &Obstacle) -> f32 {
     b.signed_distance_m(probe_m) - a.radius_m()
 }
 
-/// May a stingray's centre be at `p_m`? Its wing tips keep
-/// [`stingray::STINGRAY_GAP_M`] from the glass and from every obstacle
+/// May a stingray (`ray`) have its centre at `p_m`? Its wing tips keep
+/// [`StingrayParams::gap_m`] from the glass and from every obstacle
 /// (measured at the sand, where a half-buried rock is widest).
-pub(super) fn stingray_fits(p_m: Vec3, tank: &Tank, obstacles: &[Obstacle]) -> bool {
-    let reach_m = stingray::STINGRAY_RADIUS_M + stingray::STINGRAY_GAP_M;
+pub(super) fn stingray_fits(
+    p_m: Vec3,
+    tank: &Tank,
+    obstacles: &[Obstacle],
+    ray: &StingrayParams,
+) -> bool {
+    let reach_m = ray.radius_m + ray.gap_m;
     let (lo, hi) = (tank.min_m, tank.max_m);
     let inside = p_m.x >= lo.x + reach_m
         && p_m.x <= hi.x - reach_m
@@ -249,7 +255,12 @@ pub(super) fn random_point(tank: &Tank, rng: &mut ChaCha8Rng) -> Vec3 {
 /// A new shark, 1.5–2 m long, at a random place at least 1 m from the glass,
 /// the floor, the surface and every obstacle, cruising level in a random
 /// direction.
-pub(super) fn spawn_shark(tank: &Tank, obstacles: &ObstacleSet, rng: &mut ChaCha8Rng) -> Shark {
+pub(super) fn spawn_shark(
+    tank: &Tank,
+    obstacles: &ObstacleSet,
+    rng: &mut ChaCha8Rng,
+    species: &SharkParams,
+) -> Shark {
     const CLEARANCE_M: f32 = 1.0;
     let mut position_m = tank.center_m();
     for _ in 0..PLACEMENT_ATTEMPTS {
@@ -264,8 +275,8 @@ pub(super) fn spawn_shark(tank: &Tank, obstacles: &ObstacleSet, rng: &mut ChaCha
             break;
         }
     }
-    let length_m = uniform(rng, shark::SHARK_LENGTH_M.0, shark::SHARK_LENGTH_M.1);
-    let mut new = shark::new_shark(position_m, uniform(rng, 0.0, TAU), length_m);
+    let length_m = uniform(rng, species.min_length_m, species.max_length_m);
+    let mut new = shark::new_shark(position_m, uniform(rng, 0.0, TAU), length_m, species);
     push_clear(
         &mut new.body,
         tank,
@@ -284,23 +295,24 @@ pub(super) fn spawn_stingray(
     tank: &Tank,
     obstacles: &[Obstacle],
     rng: &mut ChaCha8Rng,
+    ray: &StingrayParams,
 ) -> Stingray {
     let floor_y_m = tank.min_m.y;
     let mut position_m = Vec3::new(
         tank.center_m().x,
-        floor_y_m + stingray::GLIDE_HEIGHT_M.0,
+        floor_y_m + ray.min_glide_height_m,
         tank.center_m().z,
     );
     for _ in 0..PLACEMENT_ATTEMPTS {
         let p = random_point(tank, rng);
-        let height_m = uniform(rng, stingray::GLIDE_HEIGHT_M.0, stingray::GLIDE_HEIGHT_M.1);
+        let height_m = uniform(rng, ray.min_glide_height_m, ray.max_glide_height_m);
         let p = Vec3::new(p.x, floor_y_m + height_m, p.z);
-        if stingray_fits(p, tank, obstacles) {
+        if stingray_fits(p, tank, obstacles, ray) {
             position_m = p;
             break;
         }
     }
-    stingray::new_stingray(position_m, uniform(rng, 0.0, TAU), floor_y_m)
+    stingray::new_stingray(position_m, uniform(rng, 0.0, TAU), floor_y_m, ray)
 }
 
 impl World {
@@ -332,12 +344,22 @@ impl World {
         let (sharks, stingrays) = (sharks.min(MAX_SHARKS), stingrays.min(MAX_STINGRAYS));
         self.stingrays.truncate(stingrays);
         while self.stingrays.len() < stingrays {
-            let ray = spawn_stingray(&self.tank, &self.obstacles, &mut self.rng);
+            let ray = spawn_stingray(
+                &self.tank,
+                &self.obstacles,
+                &mut self.rng,
+                &self.world_params.stingray,
+            );
             self.stingrays.push(ray);
         }
         self.sharks.truncate(sharks);
         while self.sharks.len() < sharks {
-            let shark = spawn_shark(&self.tank, &self.fixed_solids, &mut self.rng);
+            let shark = spawn_shark(
+                &self.tank,
+                &self.fixed_solids,
+                &mut self.rng,
+                &self.world_params.shark_species,
+            );
             self.sharks.push(shark);
         }
         self.config.sharks = sharks;
@@ -408,8 +430,14 @@ impl World {
                 self.stingrays[i].body.position_m,
                 &self.tank,
                 &self.obstacles,
+                &self.world_params.stingray,
             ) {
-                self.stingrays[i] = spawn_stingray(&self.tank, &self.obstacles, &mut self.rng);
+                self.stingrays[i] = spawn_stingray(
+                    &self.tank,
+                    &self.obstacles,
+                    &mut self.rng,
+                    &self.world_params.stingray,
+                );
             }
         }
         self.settle();
@@ -427,7 +455,7 @@ impl World {
         }
     }
 
-    /// A new fish at a free place at least [`shark::RESPAWN_DISTANCE_M`] from
+    /// A new fish at a free place at least [`SharkParams::respawn_distance_m`] from
     /// every shark (or the farthest of the places tried).
     pub(super) fn spawn_fish_far_from_sharks(&mut self) -> Fish {
         let solids = self.solids();
@@ -439,7 +467,7 @@ impl World {
                 .iter()
                 .map(|s| s.body.position_m.distance(fish.position_m))
                 .fold(f32::INFINITY, f32::min);
-            if distance_m >= shark::RESPAWN_DISTANCE_M {
+            if distance_m >= self.world_params.shark_species.respawn_distance_m {
                 return fish;
             }
             if best.is_none_or(|(d, _)| distance_m > d) {

@@ -74,6 +74,7 @@ pub(super) fn escape_force(
         shark.body.velocity_m_per_s,
         params.max_speed_m_per_s,
         f32::INFINITY,
+        &world.steering,
     );
     Some((
         evade.normalize_or_zero() * params.max_force_m_per_s2.clamp(0.0, 1e6) * urgency,
@@ -99,36 +100,41 @@ impl World {
     /// everything the fish avoid.
     pub(super) fn rebuild_stingray_obstacles(&mut self) {
         let floor_y_m = self.tank.min_m.y;
+        let ray = &self.world_params.stingray;
         let discs: Vec<Obstacle> = self
             .stingrays
             .iter()
-            .map(|s| s.obstacle(floor_y_m))
+            .map(|s| s.obstacle(floor_y_m, ray))
             .collect();
         self.stingray_solids.rebuild(&discs);
         self.stingray_avoid.clear();
-        stingray::cluster_obstacles(&self.stingrays, floor_y_m, &mut self.stingray_avoid);
+        stingray::cluster_obstacles(&self.stingrays, floor_y_m, ray, &mut self.stingray_avoid);
         self.avoid_all
             .rebuild(self.obstacles.iter().chain(&self.stingray_avoid));
     }
 
     /// Stingrays glide: level wander, the glass, the fixed obstacles, and a
     /// spring that holds their glide height; they never come closer than
-    /// [`stingray::STINGRAY_GAP_M`] to the glass or an obstacle (if a step would
-    /// bring one closer, it turns round instead).
+    /// [`StingrayParams::gap_m`](crate::sim::boids::params::StingrayParams::gap_m)
+    /// to the glass or an obstacle (if a step would bring one closer, it turns
+    /// round instead).
     pub(super) fn step_stingrays(&mut self) {
-        let params = stingray::stingray_params(&self.params);
+        let species = self.world_params.stingray.clone();
+        let params = stingray::stingray_params(&self.params, &species);
+        let tuning = self.world_params.steering;
         let floor_y_m = self.tank.min_m.y;
         for ray in &mut self.stingrays {
             let before = *ray;
             let body = &mut ray.body;
-            let wander = steering::wander(body, &mut self.rng, &params);
-            let reach_m = stingray::STINGRAY_RADIUS_M + stingray::STINGRAY_GAP_M;
+            let wander = steering::wander(body, &mut self.rng, &params, &tuning);
+            let reach_m = species.radius_m + species.gap_m;
             let walls = steering::glass_walls(
                 body.position_m,
                 body.velocity_m_per_s,
                 &self.tank,
                 reach_m + 1.0,
                 params.max_force_m_per_s2,
+                &tuning,
             );
             let avoidance = steering::avoid_obstacles(
                 body.position_m,
@@ -145,7 +151,7 @@ impl World {
             body.integrate(steering_m_per_s2, &params, DT_SECS);
             let legal = body.position_m.is_finite()
                 && body.velocity_m_per_s.is_finite()
-                && stingray_fits(body.position_m, &self.tank, &self.obstacles);
+                && stingray_fits(body.position_m, &self.tank, &self.obstacles, &species);
             if !legal {
                 *ray = before;
                 ray.body.velocity_m_per_s = -ray.body.velocity_m_per_s.normalize_or(Vec3::X)
@@ -153,8 +159,8 @@ impl World {
             }
             let p = &mut ray.body.position_m;
             p.y =
-                p.y.max(floor_y_m + stingray::GLIDE_HEIGHT_M.0)
-                    .min(floor_y_m + stingray::GLIDE_HEIGHT_M.1);
+                p.y.max(floor_y_m + species.min_glide_height_m)
+                    .min(floor_y_m + species.max_glide_height_m);
             ray.body.advance_tail_phase(DT_SECS);
         }
     }
@@ -162,20 +168,20 @@ impl World {
     /// Sharks hunt (see [`shark`]): keep or lose the lock (confusion effect),
     /// pick the nearest fish they see, pursue it, and catch it at the mouth.
     pub(super) fn step_sharks(&mut self) {
+        let species = self.world_params.shark_species.clone();
         let shark_perception = Perception {
-            vision_distance_m: shark::SHARK_VISION_M,
-            vision_angle_rad: shark::SHARK_VISION_ANGLE_RAD,
-            max_speed_m_per_s: shark::SHARK_ATTACK_M_PER_S,
-            max_force_m_per_s2: shark::SHARK_MAX_FORCE_M_PER_S2,
-            max_neighbours: 1,
+            vision_distance_m: species.vision_m,
+            vision_angle_rad: species.vision_angle_rad,
+            max_speed_m_per_s: species.attack_m_per_s,
+            max_force_m_per_s2: species.max_force_m_per_s2,
             separation_distance_m: 0.0,
             response_time_s: 1.0,
-            clear_sight_m: 0.0,
         };
         let hunt = self.world_params.shark.clone();
+        let tuning = self.world_params.steering;
         for s in 0..self.sharks.len() {
             let mut shark = self.sharks[s];
-            let params = shark::shark_params(&self.params, shark.body.body_length_m);
+            let params = shark::shark_params(&self.params, shark.body.body_length_m, &species);
             shark.satiated_secs = (shark.satiated_secs - DT_SECS).max(0.0);
             shark.refocus_secs = (shark.refocus_secs - DT_SECS).max(0.0);
             if !shark.is_hungry() {
@@ -190,7 +196,7 @@ impl World {
                         let failed = shark.lock_secs > hunt.strike_lock_secs + hunt.lunge_max_secs;
                         let far = failed
                             || prey.position_m.distance(shark.body.position_m)
-                                > shark::SHARK_VISION_M * 1.5;
+                                > species.vision_m * 1.5;
                         let confusing = self.count_near(prey.position_m, t);
                         let p_lose = shark::lose_lock_probability(&hunt, confusing, DT_SECS);
                         far || self.rng.random::<f32>() < p_lose
@@ -208,7 +214,7 @@ impl World {
                 let mut nearest = Nearest::new(1);
                 let (p, heading) = (shark.body.position_m, shark.body.heading());
                 self.grid
-                    .k_nearest(p, shark::SHARK_VISION_M, &mut nearest, |_, q, _| {
+                    .k_nearest(p, species.vision_m, &mut nearest, |_, q, _| {
                         forces::sees(p, heading, q, &shark_perception)
                     });
                 shark.target = nearest.iter().next().map(|(j, _)| j);
@@ -237,8 +243,9 @@ impl World {
                     prey.velocity_m_per_s,
                     params.max_speed_m_per_s,
                     params.max_force_m_per_s2,
+                    &tuning,
                 ),
-                None => steering::wander(&mut shark.body, &mut self.rng, &params),
+                None => steering::wander(&mut shark.body, &mut self.rng, &params, &tuning),
             };
             let containment = steering::contain_in_tank(
                 before.position_m,
@@ -247,6 +254,7 @@ impl World {
                 2.5,
                 &params,
                 params.max_force_m_per_s2,
+                &tuning,
             );
             let avoidance = steering::avoid_obstacles(
                 before.position_m,

@@ -18,7 +18,9 @@
 //! [`SharkHuntParams::catch_distance_m`] of the mouth) is counted, the fish
 //! reappears far away, and the shark cruises satiated for
 //! [`SharkHuntParams::satiated_secs`]. The hunting numbers are
-//! [`SharkHuntParams`] (`BoidWorldParams::shark`).
+//! [`SharkHuntParams`] (`BoidWorldParams::shark`), the body and species numbers
+//! (length, speeds, force, vision) [`SharkParams`]
+//! (`BoidWorldParams::shark_species`).
 //!
 //! [`pursue`]: crate::sim::common::steering::pursue
 
@@ -27,7 +29,7 @@ use std::f32::consts::TAU;
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use crate::sim::boids::params::SharkHuntParams;
+use crate::sim::boids::params::{SharkHuntParams, SharkParams};
 use crate::sim::common::fish::Fish;
 use crate::sim::common::steering::SteeringParams;
 
@@ -35,44 +37,11 @@ use crate::sim::common::steering::SteeringParams;
 /// school of 200; more turn the tank into a feeding frenzy.
 pub const MAX_SHARKS: usize = 10;
 
-/// Shortest and longest shark, nose to tail, in metres. Default 1.5–2.0 m: a
-/// reef shark, four to six times the fish.
-pub const SHARK_LENGTH_M: (f32, f32) = (1.5, 2.0);
-
-/// Cruising speed in m/s. Default 0.5 m/s: slower than a fish's top speed, so a
-/// resting shark does not catch anything by accident.
-pub const SHARK_CRUISE_M_PER_S: f32 = 0.5;
-
-/// Attack speed in m/s. Default 1.5 m/s (tuned): about twice the fish's
-/// 0.8 m/s top speed (a shark's burst is several times its cruise), so a shark
-/// that keeps its lock catches a lone fish within seconds; fish can only
-/// escape by turning (they may steer 8 m/s², the shark
-/// [`SHARK_MAX_FORCE_M_PER_S2`]) or by hiding in a school.
-pub const SHARK_ATTACK_M_PER_S: f32 = 1.5;
-
-/// Slowest shark speed in m/s. Default 0.3 m/s: sharks must keep swimming to
-/// breathe (ram ventilation).
-pub const SHARK_MIN_M_PER_S: f32 = 0.3;
-
-/// Largest steering acceleration of a shark in m/s². Default 2.5 m/s²: a big
-/// body turns wider than a fish: at attack speed its tightest turn has a
-/// radius of v²/a ≈ 0.9 m, a fish's about 0.1 m.
-pub const SHARK_MAX_FORCE_M_PER_S2: f32 = 2.5;
-
-/// How far a shark sees fish, in metres. Default 6 m: half the tank; murky
-/// water limits vision to some metres.
-pub const SHARK_VISION_M: f32 = 6.0;
-
-/// The shark's field of view, radians. Default 300° (as the fish's, TT §5).
-pub const SHARK_VISION_ANGLE_RAD: f32 = 300.0 * std::f32::consts::PI / 180.0;
-
 /// Confusing neighbours counted at most. Default 15: beyond that the shark is
-/// confused anyway; bounds the cost of counting in a dense school.
+/// confused anyway; bounds the cost of counting in a dense school (the capacity
+/// of the neighbour list counted, at most `spatial_grid::MAX_NEAREST`), so it
+/// stays a const.
 pub const MAX_CONFUSING_NEIGHBOURS: u32 = 15;
-
-/// A caught fish reappears at least this far from every shark, in metres.
-/// Default 5 m: out of reach, on the other side of the tank.
-pub const RESPAWN_DISTANCE_M: f32 = 5.0;
 
 /// A shark: its body (position, velocity, length; the renderer reads it like a
 /// fish) and its hunting state.
@@ -104,14 +73,19 @@ impl Shark {
     }
 }
 
-/// Steering limits of a shark, as [`SteeringParams`] for [`Fish::integrate`] and
-/// wander: attack top speed, cruising at [`SHARK_CRUISE_M_PER_S`].
-pub fn shark_params(fish_params: &SteeringParams, body_length_m: f32) -> SteeringParams {
+/// Steering limits of a shark of `species`, as [`SteeringParams`] for
+/// [`Fish::integrate`] and wander: attack top speed, cruising at
+/// [`SharkParams::cruise_m_per_s`].
+pub fn shark_params(
+    fish_params: &SteeringParams,
+    body_length_m: f32,
+    species: &SharkParams,
+) -> SteeringParams {
     SteeringParams {
-        max_speed_m_per_s: SHARK_ATTACK_M_PER_S,
-        min_speed_m_per_s: SHARK_MIN_M_PER_S,
-        max_force_m_per_s2: SHARK_MAX_FORCE_M_PER_S2,
-        cruise_speed_body_lengths_per_s: SHARK_CRUISE_M_PER_S / body_length_m.max(0.1),
+        max_speed_m_per_s: species.attack_m_per_s,
+        min_speed_m_per_s: species.min_m_per_s,
+        max_force_m_per_s2: species.max_force_m_per_s2,
+        cruise_speed_body_lengths_per_s: species.cruise_m_per_s / body_length_m.max(0.1),
         wander_distance_m: 2.0,
         wander_radius_m: 0.8,
         ..*fish_params
@@ -137,13 +111,18 @@ pub fn lose_lock_probability(hunt: &SharkHuntParams, neighbours: u32, dt_secs: f
     1.0 - (-hunt.confusion_rate_per_neighbour_per_s * n * dt_secs).exp()
 }
 
-/// A new shark at `position_m`, heading at `yaw_rad` at cruising speed, with
-/// length `body_length_m`.
-pub fn new_shark(position_m: Vec3, yaw_rad: f32, body_length_m: f32) -> Shark {
+/// A new shark of `species` at `position_m`, heading at `yaw_rad` at cruising
+/// speed, with length `body_length_m`.
+pub fn new_shark(
+    position_m: Vec3,
+    yaw_rad: f32,
+    body_length_m: f32,
+    species: &SharkParams,
+) -> Shark {
     let direction = Vec3::new(yaw_rad.cos(), 0.0, yaw_rad.sin());
     let mut body = Fish::new(
         position_m,
-        direction * SHARK_CRUISE_M_PER_S,
+        direction * species.cruise_m_per_s,
         body_length_m,
         0.6,
     );
@@ -177,7 +156,7 @@ mod tests {
 
     #[test]
     fn the_mouth_is_half_a_body_ahead() {
-        let shark = new_shark(Vec3::new(1.0, 2.0, 0.0), 0.0, 2.0);
+        let shark = new_shark(Vec3::new(1.0, 2.0, 0.0), 0.0, 2.0, &SharkParams::default());
         assert!((shark.mouth_m() - Vec3::new(2.0, 2.0, 0.0)).length() < 1e-5);
         assert!(shark.is_hungry());
     }

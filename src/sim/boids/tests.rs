@@ -5,6 +5,7 @@ use glam::{Vec2, Vec3};
 
 use crate::sim::boids::control_mode::{self, ControlMode};
 use crate::sim::boids::forces::{self, Perception};
+use crate::sim::boids::params::StingrayParams;
 use crate::sim::boids::placement::footprint;
 use crate::sim::boids::world::*;
 use crate::sim::boids::{shark, stingray};
@@ -41,7 +42,9 @@ fn assert_all_fish_legal(world: &World) {
             assert!(gap_m >= 0.0, "fish {i} inside {obstacle:?} at {p}");
         }
         for ray in world.stingrays() {
-            let gap_m = ray.obstacle(world.tank().min_m.y).signed_distance_m(p);
+            let gap_m = ray
+                .obstacle(world.tank().min_m.y, &world.world_params().stingray)
+                .signed_distance_m(p);
             assert!(gap_m >= 0.0, "fish {i} inside a stingray at {p}");
         }
     }
@@ -713,7 +716,12 @@ fn a_fish_that_sees_a_shark_flees() {
     w.set_species_counts(1, 0);
     // The fish swims towards a (satiated, cruising) shark 3 m ahead.
     w.fish[0] = Fish::new(Vec3::new(1.0, 2.0, 0.0), Vec3::NEG_X * 0.5, 0.4, 0.0);
-    w.sharks[0] = shark::new_shark(Vec3::new(-2.0, 2.0, 0.0), 0.0, 1.8);
+    w.sharks[0] = shark::new_shark(
+        Vec3::new(-2.0, 2.0, 0.0),
+        0.0,
+        1.8,
+        &w.world_params().shark_species,
+    );
     w.sharks[0].satiated_secs = 10.0;
     let start_m = w.fish()[0]
         .position_m
@@ -778,7 +786,12 @@ fn stingrays_glide_near_the_sand_and_close_ones_are_avoided_as_one_polygon() {
     // Three rays side by side in open water, in a clear spot.
     w.set_obstacles(Vec::new());
     for (k, ray) in w.stingrays.iter_mut().enumerate() {
-        *ray = stingray::new_stingray(Vec3::new(-1.5 + 1.5 * k as f32, 0.4, 0.0), 0.0, floor_y_m);
+        *ray = stingray::new_stingray(
+            Vec3::new(-1.5 + 1.5 * k as f32, 0.4, 0.0),
+            0.0,
+            floor_y_m,
+            &StingrayParams::default(),
+        );
     }
     w.step();
     assert_eq!(w.stingray_obstacles().len(), 1);

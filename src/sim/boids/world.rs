@@ -27,7 +27,8 @@ use crate::sim::common::fish::{Fish, heading_of};
 use crate::sim::common::obstacle::{Obstacle, ObstacleSet};
 use crate::sim::common::school_metrics::{self, SchoolMeter, SchoolMetrics};
 use crate::sim::common::spatial_grid::{Nearest, SpatialGrid};
-use crate::sim::common::steering::{self, AVOIDANCE_CLEARANCE_M, SteeringParams};
+use crate::sim::common::steering::{self, SteeringParams};
+use crate::sim::common::steering_tuning::SteeringTuning;
 use crate::sim::common::tank::Tank;
 
 /// Length of one simulation step in seconds. Default 1/60 s: one step per
@@ -187,10 +188,8 @@ impl BoidParams {
                 vision_angle_rad: 300f32.to_radians(),
                 max_speed_m_per_s: 0.8,
                 max_force_m_per_s2: 8.0,
-                max_neighbours: forces::TOPOLOGICAL_NEIGHBOURS,
                 separation_distance_m: 0.8,
                 response_time_s: 0.1,
-                clear_sight_m: forces::ALIGNMENT_CLEAR_SIGHT_M,
             },
             wander_weight: DEFAULT_WANDER,
         }
@@ -417,7 +416,7 @@ impl World {
     }
 
     /// Puts into `out` the neighbours fish `i` heeded in the last step: up to
-    /// [`Perception::max_neighbours`] neighbours that it saw, nearest first, as
+    /// [`SteeringTuning::topological_neighbours`] neighbours that it saw, nearest first, as
     /// the boid layer found them (the "show vision" links; the nearest seen
     /// when last searched, see [`NEIGHBOUR_SEARCH_EVERY_STEPS`]). Empty
     /// without the boid layer, for a fish that does not exist, and until the
@@ -488,12 +487,13 @@ impl World {
     /// Wandering fish: wander, glass and rock forces, escape.
     pub(super) fn step_wandering_fish(&mut self) {
         let params = self.params;
+        let tuning = self.world_params.steering;
         for i in 0..self.fish.len() {
             let before = self.fish[i];
             let fish = &mut self.fish[i];
-            let wander = steering::wander(fish, &mut self.rng, &params);
+            let wander = steering::wander(fish, &mut self.rng, &params, &tuning);
             let (containment, avoidance) =
-                glass_and_rock_forces(&before, &self.tank, &self.avoid_all, &params);
+                glass_and_rock_forces(&before, &self.tank, &self.avoid_all, &params, &tuning);
             let escape = escape_force(
                 &self.world_params,
                 before.position_m,
@@ -529,6 +529,7 @@ impl World {
             ..self.params
         };
         let perception = &boids.perception;
+        let tuning = self.world_params.steering;
         let max_force = params.max_force_m_per_s2;
         let n = self.fish.len();
         self.fear.resize(n, 0.0);
@@ -542,8 +543,9 @@ impl World {
             &self.positions_m,
         );
         // Obstacles can only be in a fish's path within this reach.
-        let avoid_reach_m =
-            params.avoidance_look_ahead_m + AVOIDANCE_CLEARANCE_M + self.avoid_all.max_radius_m();
+        let avoid_reach_m = params.avoidance_look_ahead_m
+            + tuning.avoidance_clearance_m
+            + self.avoid_all.max_radius_m();
         // Fish in grid order: neighbours of consecutive fish share cells, so
         // the searches stay in the cache. (The result does not depend on the
         // order: every fish sees the snapshot.)
@@ -565,7 +567,7 @@ impl World {
             let searches = everyone_searches
                 || (i as u64 + self.steps).is_multiple_of(NEIGHBOUR_SEARCH_EVERY_STEPS);
             let known = if everyone_searches {
-                Nearest::new(perception.max_neighbours)
+                Nearest::new(tuning.topological_neighbours)
             } else {
                 forces::recheck_heeded(
                     &self.positions_m,
@@ -584,6 +586,7 @@ impl World {
                         i,
                         &self.grid,
                         perception,
+                        &tuning,
                         &cone,
                         known,
                     ),
@@ -607,6 +610,7 @@ impl World {
                 &heeded.neighbours,
                 heeded.far_centre_m,
                 perception,
+                &tuning,
             );
             // Many eyes: the fright of the heeded neighbours (last step's).
             let alarm = heeded
@@ -642,12 +646,13 @@ impl World {
                     velocity_m_per_s,
                     &self.tank,
                     self.world_params.wall_range_m,
+                    &tuning,
                 ) + steering::avoid_obstacles(
                     position_m,
                     velocity_m_per_s,
                     self.avoid_all.near(position_m, avoid_reach_m),
                     params.avoidance_look_ahead_m,
-                    AVOIDANCE_CLEARANCE_M,
+                    tuning.avoidance_clearance_m,
                     params.max_speed_m_per_s,
                 ) + forces::avoid_neighbours(
                     &self.positions_m,
@@ -655,6 +660,7 @@ impl World {
                     i,
                     &heeded.neighbours,
                     params.max_speed_m_per_s,
+                    &tuning,
                 )) / perception.response_time_s.max(1e-3),
                 max_force,
             );
@@ -701,7 +707,7 @@ impl World {
             // the maximum force as a full alignment or cohesion slider.
             let wander = if boids.wander_weight > 0.0 {
                 steering::limit(
-                    steering::wander(fish, &mut self.rng, &params)
+                    steering::wander(fish, &mut self.rng, &params, &tuning)
                         / perception.response_time_s.max(1e-3),
                     max_force,
                 ) * (boids.wander_weight.min(100.0) / 100.0
@@ -804,8 +810,10 @@ pub(super) fn glass_and_rock_forces(
     tank: &Tank,
     obstacles: &ObstacleSet,
     params: &SteeringParams,
+    tuning: &SteeringTuning,
 ) -> (Vec3, Vec3) {
-    let reach_m = params.avoidance_look_ahead_m + AVOIDANCE_CLEARANCE_M + obstacles.max_radius_m();
+    let reach_m =
+        params.avoidance_look_ahead_m + tuning.avoidance_clearance_m + obstacles.max_radius_m();
     let containment = steering::containment(
         fish.position_m,
         fish.velocity_m_per_s,
@@ -819,7 +827,7 @@ pub(super) fn glass_and_rock_forces(
         fish.velocity_m_per_s,
         obstacles.near(fish.position_m, reach_m),
         params.avoidance_look_ahead_m,
-        AVOIDANCE_CLEARANCE_M,
+        tuning.avoidance_clearance_m,
         params.max_speed_m_per_s,
     );
     (containment, avoidance)
@@ -864,9 +872,10 @@ pub(super) fn move_fish(
 /// Obstacles are at least [`WALL_CLEARANCE_M`] from the side walls, lower than
 /// the surface, and pushing out of a half-buried rock or a rooted pillar or
 /// polygon never points into the sand, so the obstacle push cannot undo the
-/// tank clamp. Stingrays keep [`stingray::STINGRAY_GAP_M`] from the glass and
-/// from every obstacle, so pushing a fish out of a stingray cannot push it into
-/// either; where stingrays overlap, a fish still inside after two rounds is
+/// tank clamp. Stingrays keep
+/// [`StingrayParams::gap_m`](super::params::StingrayParams::gap_m) from the
+/// glass and from every obstacle, so pushing a fish out of a stingray cannot
+/// push it into either; where stingrays overlap, a fish still inside after two rounds is
 /// lifted over them.
 pub(super) fn enforce_hard_constraints(
     fish: &mut Fish,

@@ -9,5 +9,6 @@ pub mod paper_time;
 pub mod school_metrics;
 pub mod spatial_grid;
 pub mod steering;
+pub mod steering_tuning;
 pub mod tank;
 pub mod water_current;

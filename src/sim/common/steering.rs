@@ -7,6 +7,11 @@
 //! velocity to a speed range. Most behaviours follow Reynolds' recipe
 //! `steering = desired velocity − current velocity`, read as an acceleration
 //! that would reach the desired velocity in one second.
+//!
+//! The numbers of the recipe itself (the wander pitch's fade, the rock
+//! algorithm's clearance, the longest prediction, the wall algorithm's gains)
+//! are the calling world's [`SteeringTuning`]; [`SteeringParams`] holds the
+//! slider-facing limits and weights.
 
 use std::f32::consts::PI;
 
@@ -16,18 +21,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::sim::common::fish::Fish;
 use crate::sim::common::obstacle::Obstacle;
+use crate::sim::common::steering_tuning::SteeringTuning;
 use crate::sim::common::tank::Tank;
-
-/// Fraction of the wander pitch that fades away each step (dimensionless).
-/// Default 0.01: at 60 steps/s a tilt halves in about 1.2 s, so fish glide
-/// up or down for a moment and then level out instead of drifting to the
-/// floor or surface; with the default jitter the typical tilt is about 14°.
-pub const WANDER_PITCH_FADE_PER_STEP: f32 = 0.01;
-
-/// Extra room a fish keeps from an obstacle's surface when planning its path,
-/// in metres. Default 0.3 m: about one body length, so a fish passes a rock
-/// with a visible gap instead of scraping along it.
-pub const AVOIDANCE_CLEARANCE_M: f32 = 0.3;
 
 /// Tuning of the steering behaviours. Defaults make a calm aquarium of fish
 /// about 0.3 m long; the app may expose them as sliders.
@@ -132,12 +127,6 @@ pub fn seek(pos_m: Vec3, vel_m_per_s: Vec3, target_m: Vec3, max_speed_m_per_s: f
     desired_m_per_s - vel_m_per_s
 }
 
-/// Longest look into the future that [`pursue`] and [`evade`] use, in seconds.
-/// Default 2 s: Reynolds' prediction `T = distance / speed` grows without bound
-/// for a far target; beyond a couple of seconds a fish's path is no longer
-/// predictable from its velocity (it turns within about a second).
-pub const MAX_PREDICTION_S: f32 = 2.0;
-
 /// Flee: steer straight away from `threat_m` at `max_speed_m_per_s`
 /// (Lim & Tan's eq. 1 with the flee sign; docs/boids.md).
 ///
@@ -183,19 +172,21 @@ pub fn arrive(
 
 /// Where a target at `target_m` moving at `target_vel_m_per_s` will be when a
 /// pursuer at `pos_m` (top speed `max_speed_m_per_s`) could reach it (Reynolds
-/// 1999): `T = min(distance / max_speed, MAX_PREDICTION_S)`,
-/// `future = target + target_vel · T`.
+/// 1999): `T = min(distance / max_speed, max_prediction)`,
+/// `future = target + target_vel · T`, with `tuning`'s
+/// [`SteeringTuning::max_prediction_s`].
 pub fn predicted_position_m(
     pos_m: Vec3,
     target_m: Vec3,
     target_vel_m_per_s: Vec3,
     max_speed_m_per_s: f32,
+    tuning: &SteeringTuning,
 ) -> Vec3 {
     let distance_m = pos_m.distance(target_m);
     let t_s = if max_speed_m_per_s > 0.0 {
-        (distance_m / max_speed_m_per_s).min(MAX_PREDICTION_S)
+        (distance_m / max_speed_m_per_s).min(tuning.max_prediction_s)
     } else {
-        MAX_PREDICTION_S
+        tuning.max_prediction_s
     };
     let future_m = target_m + target_vel_m_per_s * t_s;
     if future_m.is_finite() {
@@ -215,8 +206,15 @@ pub fn pursue(
     target_vel_m_per_s: Vec3,
     max_speed_m_per_s: f32,
     max_force_m_per_s2: f32,
+    tuning: &SteeringTuning,
 ) -> Vec3 {
-    let future_m = predicted_position_m(pos_m, target_m, target_vel_m_per_s, max_speed_m_per_s);
+    let future_m = predicted_position_m(
+        pos_m,
+        target_m,
+        target_vel_m_per_s,
+        max_speed_m_per_s,
+        tuning,
+    );
     limit(
         seek(pos_m, vel_m_per_s, future_m, max_speed_m_per_s),
         max_force_m_per_s2,
@@ -234,8 +232,15 @@ pub fn evade(
     threat_vel_m_per_s: Vec3,
     max_speed_m_per_s: f32,
     max_force_m_per_s2: f32,
+    tuning: &SteeringTuning,
 ) -> Vec3 {
-    let future_m = predicted_position_m(pos_m, threat_m, threat_vel_m_per_s, max_speed_m_per_s);
+    let future_m = predicted_position_m(
+        pos_m,
+        threat_m,
+        threat_vel_m_per_s,
+        max_speed_m_per_s,
+        tuning,
+    );
     flee(
         pos_m,
         vel_m_per_s,
@@ -244,16 +249,6 @@ pub fn evade(
         max_force_m_per_s2,
     )
 }
-
-/// How strongly [`follow_wall`] turns the velocity's into-the-wall part around,
-/// dimensionless (the paper's k1). Default 0.3 (chosen): the fish ends up
-/// swimming along the wall and slightly away from it, not bouncing back.
-pub const WALL_AWAY_GAIN: f32 = 0.3;
-
-/// How much of the velocity's along-the-wall part [`follow_wall`] keeps,
-/// dimensionless (the paper's k2). Default 1 (chosen): the fish keeps swimming
-/// along the wall at its speed.
-pub const WALL_ALONG_GAIN: f32 = 1.0;
 
 /// Wall following, Lim & Tan's wall algorithm (SIMBA paper Figs 3–5;
 /// `docs/boids.md`): steer along the wall instead of reversing.
@@ -320,13 +315,16 @@ fn water_faces(pos_m: Vec3, tank: &Tank) -> [(Vec3, f32); 6] {
 }
 
 /// [`follow_wall`] summed over `faces` (normal, distance), each turn limited to
-/// `max_force_per_face_m_per_s2` and multiplied by `strength(distance)`.
+/// `max_force_per_face_m_per_s2` and multiplied by `strength(distance)`, with
+/// `tuning`'s gains k1 and k2 ([`SteeringTuning::wall_away_gain`],
+/// [`SteeringTuning::wall_along_gain`]).
 fn follow_faces(
     vel_m_per_s: Vec3,
     faces: impl IntoIterator<Item = (Vec3, f32)>,
     range_m: f32,
     tie_break: Vec3,
     max_force_per_face_m_per_s2: f32,
+    tuning: &SteeringTuning,
     strength: impl Fn(f32) -> f32,
 ) -> Vec3 {
     faces
@@ -338,8 +336,8 @@ fn follow_faces(
                 distance_m,
                 range_m,
                 tie_break,
-                WALL_AWAY_GAIN,
-                WALL_ALONG_GAIN,
+                tuning.wall_away_gain,
+                tuning.wall_along_gain,
                 max_force_per_face_m_per_s2,
             ) * strength(distance_m)
         })
@@ -357,6 +355,7 @@ pub fn glass_walls(
     tank: &Tank,
     range_m: f32,
     max_force_m_per_s2: f32,
+    tuning: &SteeringTuning,
 ) -> Vec3 {
     let to_middle = (tank.center_m() - pos_m) * Vec3::new(1.0, 0.0, 1.0);
     let glass = water_faces(pos_m, tank)
@@ -368,31 +367,36 @@ pub fn glass_walls(
         range_m,
         to_middle,
         max_force_m_per_s2,
+        tuning,
         |_| 1.0,
     );
     limit(steering, max_force_m_per_s2)
 }
 
-/// Smallest remaining range used by [`avoid_walls`]' strength, in metres.
-/// Default 0.1 m (as the rock algorithm's): keeps the push finite at the glass.
-pub const MIN_WALL_GAP_M: f32 = 0.1;
-
 /// Wall avoidance of the boid layer: Lim & Tan's wall algorithm ([`follow_wall`],
 /// SIMBA Figs 3–5) for each of the six faces of the water (four panes of glass,
 /// the sand and the surface) that the fish is within `range_m` of and heading
 /// into, each scaled like the rock algorithm by the remaining range,
-/// `range_m / max(gap, MIN_WALL_GAP_M)`, so the fish turns gently far off and
+/// `range_m / max(gap, min_wall_gap)` ([`SteeringTuning::min_wall_gap_m`]), so
+/// the fish turns gently far off and
 /// hard close in. The tie-break for a fish aimed straight at a face is the
 /// direction along it towards the middle of the tank. Returns a velocity change
 /// (m/s), unlimited: the caller turns it into a force and limits it.
-pub fn avoid_walls(pos_m: Vec3, vel_m_per_s: Vec3, tank: &Tank, range_m: f32) -> Vec3 {
+pub fn avoid_walls(
+    pos_m: Vec3,
+    vel_m_per_s: Vec3,
+    tank: &Tank,
+    range_m: f32,
+    tuning: &SteeringTuning,
+) -> Vec3 {
     let steering = follow_faces(
         vel_m_per_s,
         water_faces(pos_m, tank),
         range_m,
         tank.center_m() - pos_m,
         f32::INFINITY,
-        |distance_m| range_m / distance_m.max(MIN_WALL_GAP_M),
+        tuning,
+        |distance_m| range_m / distance_m.max(tuning.min_wall_gap_m),
     );
     if steering.is_finite() {
         steering
@@ -411,8 +415,16 @@ pub fn contain_in_tank(
     range_m: f32,
     params: &SteeringParams,
     max_force_m_per_s2: f32,
+    tuning: &SteeringTuning,
 ) -> Vec3 {
-    let walls = glass_walls(pos_m, vel_m_per_s, tank, range_m, max_force_m_per_s2);
+    let walls = glass_walls(
+        pos_m,
+        vel_m_per_s,
+        tank,
+        range_m,
+        max_force_m_per_s2,
+        tuning,
+    );
     let vertical = floor_and_surface(
         pos_m,
         vel_m_per_s,
@@ -432,16 +444,23 @@ pub fn contain_in_tank(
 /// little at random each step; the fish seeks it at its cruising speed:
 ///
 /// `angle += U(−jitter, jitter)`,
-/// `pitch = clamp((pitch + U(−pj, pj)) · (1 − WANDER_PITCH_FADE_PER_STEP), ±max)`,
+/// `pitch = clamp((pitch + U(−pj, pj)) · (1 − fade), ±max)`,
 /// `target = pos + d·(cos pitch·fwd + sin pitch·up) + r·(cos angle·fwd + sin angle·side)`,
 /// `steering = seek(pos, vel, target, cruise_speed)`.
 ///
 /// The circle is level and the pitch small and fading, so fish swim mostly
-/// level, gliding slowly up and down. Updates the fish's wander angles.
-pub fn wander(fish: &mut Fish, rng: &mut impl Rng, params: &SteeringParams) -> Vec3 {
+/// level, gliding slowly up and down (the fade is `tuning`'s
+/// [`SteeringTuning::wander_pitch_fade_per_step`]). Updates the fish's wander
+/// angles.
+pub fn wander(
+    fish: &mut Fish,
+    rng: &mut impl Rng,
+    params: &SteeringParams,
+    tuning: &SteeringTuning,
+) -> Vec3 {
     let angle_rad = fish.wander_angle_rad + signed_unit(rng) * params.wander_jitter_rad;
     let pitch_rad = (fish.wander_pitch_rad + signed_unit(rng) * params.wander_pitch_jitter_rad)
-        * (1.0 - WANDER_PITCH_FADE_PER_STEP);
+        * (1.0 - tuning.wander_pitch_fade_per_step);
     let max_pitch_rad = params.wander_max_pitch_rad.abs();
     // Angle wrapped to −π..π, pitch clamped; a NaN from a broken slider resets to 0.
     fish.wander_angle_rad = finite_or_zero((angle_rad + PI).rem_euclid(2.0 * PI) - PI);
@@ -640,6 +659,11 @@ mod tests {
     use crate::sim::boids::world::DT_SECS;
     use crate::sim::common::steering::*;
     use rand::SeedableRng;
+
+    /// The steering layer's default tuning.
+    fn tuning() -> SteeringTuning {
+        SteeringTuning::default()
+    }
     use rand_chacha::ChaCha8Rng;
 
     #[test]
@@ -668,7 +692,7 @@ mod tests {
         let mut max_climb: f32 = 0.0;
         let mut turned = false;
         for _ in 0..3_600 {
-            let steer = wander(&mut fish, &mut rng, &params);
+            let steer = wander(&mut fish, &mut rng, &params, &tuning());
             fish.integrate(steer, &params, DT_SECS);
             max_climb = max_climb.max(fish.heading().y.abs());
             turned |= fish.heading().x < 0.0;
@@ -715,7 +739,7 @@ mod tests {
             fish.velocity_m_per_s,
             obstacles,
             p.avoidance_look_ahead_m,
-            AVOIDANCE_CLEARANCE_M,
+            tuning().avoidance_clearance_m,
             p.max_speed_m_per_s,
         ) * p.avoidance_weight
     }
@@ -792,7 +816,7 @@ mod tests {
             let velocity = Vec3::new(yaw_rad.cos(), 0.0, yaw_rad.sin()) * 0.8;
             let start = Fish::new(position_m, velocity, 0.3, 0.0);
             let path = swim(start, 60.0, |f| {
-                wander(f, &mut rng, &params) * params.wander_weight + contain(f, &tank)
+                wander(f, &mut rng, &params, &tuning()) * params.wander_weight + contain(f, &tank)
             });
             for fish in &path {
                 let p = fish.position_m;
@@ -870,11 +894,12 @@ mod tests {
         // 1 m/s) predicts 2 s ahead and aims 2 m to the side.
         let (pos, target, target_vel) = (Vec3::ZERO, Vec3::X * 2.0, Vec3::Z);
         assert!(
-            (predicted_position_m(pos, target, target_vel, 1.0) - Vec3::new(2.0, 0.0, 2.0))
-                .length()
+            (predicted_position_m(pos, target, target_vel, 1.0, &tuning())
+                - Vec3::new(2.0, 0.0, 2.0))
+            .length()
                 < 1e-6
         );
-        let chase = pursue(pos, Vec3::ZERO, target, target_vel, 1.0, 10.0);
+        let chase = pursue(pos, Vec3::ZERO, target, target_vel, 1.0, 10.0, &tuning());
         assert!(chase.x > 0.0 && chase.z > 0.0, "leads the target: {chase}");
         assert!(
             (chase.x - chase.z).abs() < 1e-5,
@@ -883,13 +908,16 @@ mod tests {
         // Seeking the target itself would not lead it.
         assert!(seek(pos, Vec3::ZERO, target, 1.0).z.abs() < 1e-6);
         // Evade flees the predicted position: away in x, and away from +z.
-        let escape = evade(pos, Vec3::ZERO, target, target_vel, 1.0, 10.0);
+        let escape = evade(pos, Vec3::ZERO, target, target_vel, 1.0, 10.0, &tuning());
         assert!(escape.x < 0.0 && escape.z < 0.0, "{escape}");
         // The prediction is bounded, so a far target is not extrapolated forever.
-        let far = predicted_position_m(pos, Vec3::X * 100.0, Vec3::Z, 1.0);
-        assert!((far.z - MAX_PREDICTION_S).abs() < 1e-5);
+        let far = predicted_position_m(pos, Vec3::X * 100.0, Vec3::Z, 1.0, &tuning());
+        assert!((far.z - tuning().max_prediction_s).abs() < 1e-5);
         // Limits hold.
-        assert!(pursue(pos, Vec3::NEG_X, target, target_vel, 1.0, 0.5).length() <= 0.5 + 1e-6);
+        assert!(
+            pursue(pos, Vec3::NEG_X, target, target_vel, 1.0, 0.5, &tuning()).length()
+                <= 0.5 + 1e-6
+        );
     }
 
     #[test]
@@ -915,6 +943,7 @@ mod tests {
                 &tank,
                 1.5,
                 params.max_force_m_per_s2,
+                &tuning(),
             )
         });
         for fish in &path {

@@ -34,6 +34,7 @@ use crate::sim::common::obstacle::Obstacle;
 use crate::sim::common::school_metrics::{self, SchoolMetrics};
 use crate::sim::common::spatial_grid::SpatialGrid;
 use crate::sim::common::steering::{self, SteeringParams};
+use crate::sim::common::steering_tuning::SteeringTuning;
 use crate::sim::common::tank::Tank;
 use crate::sim::common::water_current::WaterCurrent;
 
@@ -52,6 +53,10 @@ pub struct PhysicsParams {
     /// The shared "steer a muscle fish within its body's reach" recipe, with the
     /// physics tank's containment (10 s ahead, 2 body lengths).
     pub drive: DriveParams,
+    /// The shared steering layer's recipe ([`SteeringTuning`]) with every heeded
+    /// neighbour's heading read in full (`alignment_clear_sight_m` 0: the muscle
+    /// fish are few and far apart).
+    pub steering: SteeringTuning,
     /// A fish sees a shark and flees within this many shark lengths (2, chosen: 3 m
     /// for the default shark, a few seconds of the fish's swimming).
     pub flee_shark_lengths: f32,
@@ -64,6 +69,10 @@ impl Default for PhysicsParams {
     fn default() -> Self {
         Self {
             drive: DriveParams::physics_tank(),
+            steering: SteeringTuning {
+                alignment_clear_sight_m: 0.0,
+                ..SteeringTuning::default()
+            },
             flee_shark_lengths: 2.0,
             wander_jitter_rad: 0.36,
         }
@@ -394,11 +403,8 @@ impl PhysicsWorld {
             vision_angle_rad: 300f32.to_radians(),
             max_speed_m_per_s: a.top_speed_m_per_s(),
             max_force_m_per_s2: a.top_speed_m_per_s() / response_time_secs,
-            max_neighbours: forces::TOPOLOGICAL_NEIGHBOURS,
             separation_distance_m: 1.2 * a.body_length_m(),
             response_time_s: response_time_secs,
-            // Muscle fish are few and far apart: every heeded neighbour counts.
-            clear_sight_m: 0.0,
         };
         self.grid.rebuild(
             self.tank.min_m,
@@ -503,7 +509,7 @@ impl PhysicsWorld {
                 velocity,
                 self.obstacles.iter(),
                 params.avoidance_look_ahead_m,
-                steering::AVOIDANCE_CLEARANCE_M + 0.5 * a.body_length_m(),
+                self.params.steering.avoidance_clearance_m + 0.5 * a.body_length_m(),
                 top,
             ) / self.params.drive.response_time_secs,
             max_force,
@@ -519,6 +525,7 @@ impl PhysicsWorld {
                 &self.grid,
                 None,
                 perception,
+                &self.params.steering,
             );
             self.seen_velocities_m_per_s[i] = seen_self;
             (
@@ -558,7 +565,7 @@ impl PhysicsWorld {
         let wander = if schooling {
             Vec3::ZERO
         } else {
-            steering::wander(&mut point, &mut self.rng, &params) * 0.5
+            steering::wander(&mut point, &mut self.rng, &params, &self.params.steering) * 0.5
         };
         let a = &mut self.animals[i];
         a.point.wander_angle_rad = point.wander_angle_rad;

@@ -367,7 +367,12 @@ impl ReefWorld {
                 wander_jitter_rad: 0.36,
                 ..SteeringParams::default()
             };
-            let push = steering::wander(&mut a.wander, &mut world.rng, &params);
+            let push = steering::wander(
+                &mut a.wander,
+                &mut world.rng,
+                &params,
+                &world.params.steering,
+            );
             (s.heading + push.normalize_or_zero() * 0.8).normalize_or(s.heading)
                 * bp.cruise_fraction
                 * me.top_speed_m_per_s

@@ -11,6 +11,7 @@
 //! the point body's time step (`POINT_BODY_DT_SECS`, the world clock).
 
 use crate::sim::body::drive::DriveParams;
+use crate::sim::common::steering_tuning::SteeringTuning;
 
 /// The reef's tuning.
 #[derive(Clone, Debug, PartialEq)]
@@ -19,6 +20,10 @@ pub struct ReefParams {
     /// reef's containment ([`DriveParams::reef`]: 8 s ahead, 1.5 body lengths;
     /// the response time of 0.25 s, as the physics tank's).
     pub drive: DriveParams,
+    /// The shared steering layer's recipe ([`SteeringTuning::default`]): the
+    /// wander pitch's fade and the rock algorithm's clearance (to which the reef's
+    /// fish add half their body length).
+    pub steering: SteeringTuning,
     /// The courtship routine's numbers (`reef/courtship.rs`).
     pub courtship: CourtshipParams,
     /// The behaviour routines' numbers (`reef/behaviour.rs`).
@@ -118,6 +123,7 @@ impl Default for ReefParams {
     fn default() -> Self {
         Self {
             drive: DriveParams::reef(),
+            steering: SteeringTuning::default(),
             courtship: CourtshipParams::default(),
             behaviour: BehaviourParams::default(),
             motor_choice: MotorChoiceParams::default(),

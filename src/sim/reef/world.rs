@@ -702,7 +702,7 @@ impl ReefWorld {
                 velocity,
                 self.obstacles.iter(),
                 3.0,
-                steering::AVOIDANCE_CLEARANCE_M + 0.5 * length,
+                self.params.steering.avoidance_clearance_m + 0.5 * length,
                 top,
             )
         };
