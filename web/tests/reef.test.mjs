@@ -192,6 +192,53 @@ describe("reef", () => {
     assert.match(refused, /reef\.traits\.prey\.fear_threshold/);
   });
 
+  test("Skip to the moment: the courtship on muscles runs ahead, goes back before the spawning and follows her", async () => {
+    await clickUntil(page, "reef_demo_reef", () => window.shoal.state().reef.demo === "reef");
+    await clickUntil(page, "reef_demo_courtship", () => window.shoal.state().reef.demo === "courtship");
+    await clickUntil(page, "reef_body_physical", () => window.shoal.state().reef.body === "physical");
+    await page.evaluate(() => window.shoal.play());
+    // Her choice is in the log from the start.
+    await page.waitForFunction(() => window.shoal.state().reef.events.length > 0, null, { timeout: 60_000 });
+    let s = await state(page);
+    assert.equal(s.skip.moment, "the spawning");
+    assert.equal(s.skip.last, null);
+    assert.ok(
+      s.reef.events.some((e) => e.kind.kind === "chose" && /prefers bigger males/.test(e.text)),
+      JSON.stringify(s.reef.events.map((e) => e.text)),
+    );
+    await scrollPanelTo(page, "reef_skip");
+    await clickUntil(page, "reef_skip", () => {
+      const k = window.shoal.state().skip;
+      return k.searching !== null || k.last !== null;
+    });
+    await page.waitForFunction(() => window.shoal.state().skip.last !== null, null, { timeout: 180_000 });
+    s = await state(page);
+    const last = s.skip.last;
+    assert.equal(last.outcome, "found", JSON.stringify(last));
+    assert.match(last.moment.text, /spawned/);
+    const lead = last.moment.time_secs - last.resumed_at_secs;
+    assert.ok(lead >= 12 - 1e-6 && lead <= 18.1, `resumed ${lead} s before`);
+    assert.ok(s.time_secs < last.moment.time_secs, "back before the moment");
+    assert.match(s.notice ?? "", /Skipped ahead to/);
+    await page.waitForFunction(
+      (subject) => window.shoal.state().reef.selected?.index === subject,
+      last.moment.subject,
+      { timeout: 30_000 },
+    );
+    assert.equal((await settings(page)).reef.follow, true);
+    saveArtifact("reef-skip-courtship-webgl2.png", await page.screenshot());
+    // Played on at 1×, the spawning comes, at the same simulated time.
+    await page.waitForFunction(
+      () => window.shoal.state().reef.events.some((e) => /spawned/.test(e.text)),
+      null,
+      { timeout: 120_000 },
+    );
+    s = await state(page);
+    const spawned = s.reef.events.find((e) => /spawned/.test(e.text));
+    assert.equal(spawned.time_secs, last.moment.time_secs);
+    assert.deepEqual(errors, []);
+  });
+
   test("bad values are refused with a message and change nothing", async () => {
     const before = await settings(page);
     for (const [call, pattern] of [

@@ -101,7 +101,9 @@ impl ReefScene {
             Self::PredatorAndSchool => "A hungry shark and a school of prey: who gets caught?",
             Self::Courtship => "Two males court one female; she prefers the bigger one.",
             Self::Feeding => "Hungry fish find plankton and suck it in.",
-            Self::SchoolMeetsObstacle => "A school splits around a pillar and joins up again.",
+            Self::SchoolMeetsObstacle => {
+                "A school meets a pillar: does it split around it and join up again?"
+            }
         }
     }
 }
