@@ -342,6 +342,48 @@ mod tests {
     }
 
     #[test]
+    fn on_a_phone_the_reef_inspector_shows_one_column_under_tabs() {
+        // 390 points wide, a fish selected: tabs, the mind column alone at
+        // the full width, the panel within the window and of a steady height.
+        let window = egui::vec2(390.0, 844.0);
+        let mut settings = Settings {
+            scene: Scene::Reef,
+            ..Settings::default()
+        };
+        settings.reef.selected = Some(0);
+        let reef = Lab::new(settings);
+        let wanted = reef_inspector_height(true);
+        let frames = run_frames(window, 30, |ui, rects| {
+            show_bottom_panel(ui, "reef_inspector", wanted, rects, |ui, height, rects| {
+                reef_inspector_ui(ui, &reef.runs()[0], Some(0), None, height, rects);
+            });
+        });
+        assert_steady(
+            &frames,
+            window,
+            "panel_reef_inspector",
+            wanted,
+            &["reef_inspector"],
+        );
+        let last = frames.last().unwrap();
+        for tab in ["mind", "history", "sees", "log"] {
+            let r = last.get(&format!("reef_tab_{tab}")).expect(tab);
+            assert!(r.right() <= window.x, "{tab}: {r:?}");
+        }
+        assert!(last.get("reef_events").is_none(), "one column at a time");
+        assert!(last.get("reef_mind_plot").is_none(), "one column at a time");
+        // A wide window keeps the columns side by side, without tabs.
+        let frames = run_frames(egui::vec2(1366.0, 1000.0), 3, |ui, rects| {
+            show_bottom_panel(ui, "reef_inspector", wanted, rects, |ui, height, rects| {
+                reef_inspector_ui(ui, &reef.runs()[0], Some(0), None, height, rects);
+            });
+        });
+        let last = frames.last().unwrap();
+        assert!(last.get("reef_tab_mind").is_none());
+        assert!(last.get("reef_events").is_some() && last.get("reef_mind_plot").is_some());
+    }
+
+    #[test]
     fn the_learning_plots_keep_their_height() {
         let window = egui::vec2(1366.0, 1000.0);
         let lab = Lab::new(Settings {

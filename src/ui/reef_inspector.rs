@@ -38,6 +38,7 @@ pub fn reef_inspector_ui(
     content_height: f32,
     rects: &mut WidgetRects,
 ) -> Option<u32> {
+    let fish_eye = fish_eye.as_ref();
     let reef = run.reef()?;
     let animal = selected.and_then(|i| reef.animals().get(i as usize).map(|a| (i as usize, a)));
     // Every column fits `content_height`: the text columns scroll, the plot and the
@@ -46,78 +47,202 @@ pub fn reef_inspector_ui(
     let spacing = ui.spacing().item_spacing.y;
     let under_caption = plot_height_under_caption(content_height, line, spacing);
     let mut clicked = None;
-    // On a narrow screen the columns keep their widths and scroll sideways.
+    let columns = Columns {
+        reef,
+        animal,
+        fish_eye,
+        content_height,
+        under_caption,
+        line,
+        spacing,
+    };
+    if ui.available_width() < NARROW_INSPECTOR_PT {
+        // A phone: one column at a time, at the full width, chosen by tabs.
+        let id = egui::Id::unique("reef_inspector_tab");
+        let mut tab = ui.data_mut(|d| *d.get_temp_mut_or_default::<InspectorTab>(id));
+        ui.horizontal(|ui| {
+            for t in InspectorTab::ALL {
+                if t.needs_fish() && animal.is_none() {
+                    continue;
+                }
+                let r = ui.selectable_label(tab == t, t.label());
+                rects.insert(&format!("reef_tab_{}", t.name()), r.rect);
+                if r.clicked() {
+                    tab = t;
+                }
+            }
+        });
+        if tab.needs_fish() && animal.is_none() {
+            tab = InspectorTab::Mind;
+        }
+        ui.data_mut(|d| d.insert_temp(id, tab));
+        let tabs_height = line + 2.0 * spacing + ui.spacing().button_padding.y * 2.0;
+        let columns = Columns {
+            content_height: (content_height - tabs_height).max(0.0),
+            under_caption: (under_caption - tabs_height).max(0.0),
+            ..columns
+        };
+        let width = ui.available_width();
+        ui.vertical(|ui| {
+            ui.set_width(width);
+            match tab {
+                InspectorTab::Mind => columns.mind(ui, rects),
+                InspectorTab::History => columns.history(ui, rects),
+                InspectorTab::Sees => columns.sees(ui, rects),
+                InspectorTab::Log => clicked = columns.log(ui, rects),
+            }
+        });
+        return clicked;
+    }
+    // Wider screens: the columns side by side; just too narrow, they keep
+    // their widths and scroll sideways.
     egui::ScrollArea::horizontal()
         .id_salt("reef_inspector_scroll")
         .show(ui, |ui| {
             ui.horizontal_top(|ui| {
-                match animal {
-                    Some((i, a)) => {
-                        ui.vertical(|ui| {
-                            ui.set_width(300.0);
-                            egui::ScrollArea::vertical()
-                                .id_salt("reef_mind_summary")
-                                .max_height(content_height)
-                                .show(ui, |ui| mind_summary_ui(ui, reef, i, a, rects));
-                        });
-                        ui.separator();
-                        ui.vertical(|ui| {
-                            ui.set_width((ui.available_width() - 560.0).max(220.0));
-                            // (In the sideways scroll the available width is the screen's.)
-                            history_plot_ui(ui, a, under_caption, rects);
-                        });
-                        ui.separator();
-                        ui.vertical(|ui| {
-                            ui.set_width(180.0);
-                            ui.label(egui::RichText::new("What it sees").strong())
-                                .on_hover_text(
-                                    "The world through this fish's eye: it sees almost all around, \
-                             squeezed into a circle. Its brain only uses how bright it is",
-                                );
-                            if let Some(view) = fish_eye {
-                                // The eye and the two lines under it fit under the caption.
-                                let side =
-                                    (under_caption - 2.0 * (line + spacing)).clamp(0.0, 150.0);
-                                let r = ui.add(
-                                    egui::Image::new(view.texture)
-                                        .fit_to_exact_size(egui::vec2(side, side)),
-                                );
-                                rects.insert("fish_eye", r.rect);
-                                ui.label(format!("Brightness {:.2}", view.mean_brightness));
-                            }
-                            ui.label(format!("Water {:.1} °C", a.temperature_c));
-                        });
-                    }
-                    None => {
-                        ui.vertical(|ui| {
-                            ui.set_width(300.0);
-                            egui::ScrollArea::vertical()
-                                .id_salt("reef_summary")
-                                .max_height(content_height)
-                                .show(ui, |ui| {
-                                    let counts = reef.counts();
-                                    ui.label(egui::RichText::new("Reef").strong());
-                                    ui.label(format!(
-                                "{} animals alive · {} plankton · {} prey eaten · {} spawnings",
-                                reef.alive_count(),
-                                reef.food().len(),
-                                counts.prey_eaten,
-                                counts.spawnings
-                            ));
-                                    ui.label(
-                                "Click a fish to see its hunger, fear and plans, and what it sees.",
-                            );
-                                });
-                        });
-                    }
+                ui.vertical(|ui| {
+                    ui.set_width(300.0);
+                    columns.mind(ui, rects);
+                });
+                if animal.is_some() {
+                    ui.separator();
+                    ui.vertical(|ui| {
+                        ui.set_width((ui.available_width() - 560.0).max(220.0));
+                        // (In the sideways scroll the available width is the screen's.)
+                        columns.history(ui, rects);
+                    });
+                    ui.separator();
+                    ui.vertical(|ui| {
+                        ui.set_width(180.0);
+                        columns.sees(ui, rects);
+                    });
                 }
                 ui.separator();
                 ui.vertical(|ui| {
-                    clicked = event_log_ui(ui, reef, under_caption, rects);
+                    clicked = columns.log(ui, rects);
                 });
             });
         });
     clicked
+}
+
+/// Below this width, points, the inspector shows one column at a time under
+/// tabs (760: the mind summary, the plot, the eye and the log side by side need
+/// about 300 + 220 + 180 + 260 points; a phone held upright has 390).
+pub const NARROW_INSPECTOR_PT: f32 = 760.0;
+
+/// The inspector's column shown on a narrow screen.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+enum InspectorTab {
+    #[default]
+    Mind,
+    History,
+    Sees,
+    Log,
+}
+
+impl InspectorTab {
+    const ALL: [Self; 4] = [Self::Mind, Self::History, Self::Sees, Self::Log];
+
+    fn label(self) -> &'static str {
+        match self {
+            Self::Mind => "Mind",
+            Self::History => "Last 2 min",
+            Self::Sees => "Sees",
+            Self::Log => "Events",
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            Self::Mind => "mind",
+            Self::History => "history",
+            Self::Sees => "sees",
+            Self::Log => "log",
+        }
+    }
+
+    /// Only shown with a fish selected.
+    fn needs_fish(self) -> bool {
+        matches!(self, Self::History | Self::Sees)
+    }
+}
+
+/// The inspector's columns, drawn side by side or one at a time.
+#[derive(Clone, Copy)]
+struct Columns<'a> {
+    reef: &'a ReefWorld,
+    animal: Option<(usize, &'a ReefAnimal)>,
+    fish_eye: Option<&'a FishEyeView<'a>>,
+    content_height: f32,
+    /// The height left for a plot under a one-line caption.
+    under_caption: f32,
+    line: f32,
+    spacing: f32,
+}
+
+impl Columns<'_> {
+    /// The selected fish's mind, or the reef's summary and a hint.
+    fn mind(&self, ui: &mut egui::Ui, rects: &mut WidgetRects) {
+        let reef = self.reef;
+        match self.animal {
+            Some((i, a)) => {
+                egui::ScrollArea::vertical()
+                    .id_salt("reef_mind_summary")
+                    .max_height(self.content_height)
+                    .show(ui, |ui| mind_summary_ui(ui, reef, i, a, rects));
+            }
+            None => {
+                egui::ScrollArea::vertical()
+                    .id_salt("reef_summary")
+                    .max_height(self.content_height)
+                    .show(ui, |ui| {
+                        let counts = reef.counts();
+                        ui.label(egui::RichText::new("Reef").strong());
+                        ui.label(format!(
+                            "{} animals alive · {} plankton · {} prey eaten · {} spawnings",
+                            reef.alive_count(),
+                            reef.food().len(),
+                            counts.prey_eaten,
+                            counts.spawnings
+                        ));
+                        ui.label(
+                            "Click a fish to see its hunger, fear and plans, and what it sees.",
+                        );
+                    });
+            }
+        }
+    }
+
+    fn history(&self, ui: &mut egui::Ui, rects: &mut WidgetRects) {
+        if let Some((_, a)) = self.animal {
+            history_plot_ui(ui, a, self.under_caption, rects);
+        }
+    }
+
+    fn sees(&self, ui: &mut egui::Ui, rects: &mut WidgetRects) {
+        let Some((_, a)) = self.animal else {
+            return;
+        };
+        ui.label(egui::RichText::new("What it sees").strong())
+            .on_hover_text(
+                "The world through this fish's eye: it sees almost all around, squeezed into \
+                 a circle. Its brain only uses how bright it is",
+            );
+        if let Some(view) = self.fish_eye {
+            // The eye and the two lines under it fit under the caption.
+            let side = (self.under_caption - 2.0 * (self.line + self.spacing)).clamp(0.0, 150.0);
+            let r =
+                ui.add(egui::Image::new(view.texture).fit_to_exact_size(egui::vec2(side, side)));
+            rects.insert("fish_eye", r.rect);
+            ui.label(format!("Brightness {:.2}", view.mean_brightness));
+        }
+        ui.label(format!("Water {:.1} °C", a.temperature_c));
+    }
+
+    fn log(&self, ui: &mut egui::Ui, rects: &mut WidgetRects) -> Option<u32> {
+        event_log_ui(ui, self.reef, self.under_caption, rects)
+    }
 }
 
 fn mind_summary_ui(

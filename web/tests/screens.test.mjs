@@ -72,6 +72,30 @@ describe("phone, laptop and projector (WebGL2 tier)", () => {
     }
   });
 
+  test("on a phone the reef inspector shows one column at a time, chosen by tabs, within the screen", async () => {
+    const { context, page } = await open(browser, server.url, { width: 390, height: 844, touch: true });
+    try {
+      await page.evaluate(() => window.shoal.set({ scene: "reef", reef: { selected: 3 } }));
+      await page.waitForFunction(() => window.shoal.widgets().reef_tab_mind, null, { timeout: 60_000 });
+      let w = await widgets(page);
+      for (const tab of ["mind", "history", "sees", "log"]) {
+        const r = w[`reef_tab_${tab}`];
+        assert.ok(r && r.x + r.width <= 390, `tab ${tab} fits: ${JSON.stringify(r)}`);
+      }
+      assert.ok(w.reef_bar_hunger && w.reef_bar_hunger.x + w.reef_bar_hunger.width <= 390, "the mind fits");
+      await clickUntil(page, "reef_tab_log", () => !!window.shoal.widgets().reef_events);
+      w = await widgets(page);
+      assert.equal(w.reef_bar_hunger, undefined, "one column at a time");
+      assert.ok(w.reef_events.x >= 0 && w.reef_events.x + w.reef_events.width <= 390, JSON.stringify(w.reef_events));
+      assert.ok(w.reef_events.width > 300, `the log takes the width: ${w.reef_events.width}`);
+      saveArtifact("screen-phone-reef-log.png", await page.screenshot());
+      await clickUntil(page, "reef_tab_sees", () => !!window.shoal.widgets().fish_eye);
+      saveArtifact("screen-phone-reef-eye.png", await page.screenshot());
+    } finally {
+      await context.close();
+    }
+  });
+
   for (const [name, width, height, minScale, minPlot] of [
     ["laptop", 1280, 800, 1.0, 150],
     ["projector", 1920, 1080, 1.25, 200],
