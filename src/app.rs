@@ -494,12 +494,15 @@ impl ShoalApp {
             return;
         };
         let rect = ui.max_rect();
+        // Centred, at most 520 points wide, and within a phone's screen.
+        let width = (rect.width() - 40.0).clamp(120.0, 520.0);
+        let left = (rect.center().x - 0.5 * width - 10.0).max(rect.left() + 8.0);
         egui::Area::new(egui::Id::unique("notice"))
-            .fixed_pos(rect.center_top() + egui::vec2(-260.0, 10.0))
+            .fixed_pos(egui::pos2(left, rect.top() + 10.0))
             .order(egui::Order::Foreground)
             .show(ui.ctx(), |ui| {
                 egui::Frame::popup(ui.style()).show(ui, |ui| {
-                    ui.set_max_width(520.0);
+                    ui.set_max_width(width);
                     ui.horizontal(|ui| {
                         let color = if notice.is_error {
                             ui.visuals().warn_fg_color
@@ -627,6 +630,7 @@ impl eframe::App for ShoalApp {
                 }
                 self.notice_ui(ui);
             });
+        crate::ui::about_window(ui.ctx(), settings.scene, &mut self.widget_rects);
         if &settings != self.lab.settings() {
             self.lab.apply_settings(settings);
         }

@@ -52,6 +52,7 @@ pub fn control_panel_ui(
         }
     });
     ui.label(egui::RichText::new(settings.scene.description()).weak());
+    super::about::about_button(ui, rects);
     ui.separator();
 
     ui.label(egui::RichText::new("Simulation").strong());

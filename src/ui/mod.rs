@@ -4,6 +4,8 @@
 //! edit `Settings` and report one-off actions; the only simulation calls they
 //! make are a scene's own actions, in [`ScenePanel::apply`].
 
+mod about;
+mod about_text;
 pub mod body_overlay;
 mod boids_panel;
 pub mod bottom_panel;
@@ -22,6 +24,7 @@ pub mod screen;
 mod status_line;
 mod tank_panel;
 
+pub use about::about_window;
 pub use bottom_panel::show_bottom_panel;
 pub use control_panel::{ViewOptions, control_panel_ui};
 pub use files::{FileError, save_text_file};

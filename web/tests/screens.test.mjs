@@ -96,6 +96,23 @@ describe("phone, laptop and projector (WebGL2 tier)", () => {
     }
   });
 
+  test("About this scene opens from the side panel and fits a phone; the equations open one click deeper", async () => {
+    const { context, page } = await open(browser, server.url, { width: 390, height: 844, touch: true });
+    try {
+      await clickUntil(page, "show_panel", () => window.shoal.widgets().hide_panel);
+      await clickUntil(page, "about", () => !!window.shoal.widgets().about_window);
+      let w = await widgets(page);
+      assert.ok(w.about_window.x >= 0 && w.about_window.x + w.about_window.width <= 390, JSON.stringify(w.about_window));
+      const closed = w.about_window.height;
+      await clickUntil(page, "about_equations", (h) => window.shoal.widgets().about_window.height > h, closed);
+      saveArtifact("screen-phone-about.png", await page.screenshot());
+      w = await widgets(page);
+      assert.ok(w.about_window.y + w.about_window.height <= 844, "the window scrolls within the screen");
+    } finally {
+      await context.close();
+    }
+  });
+
   for (const [name, width, height, minScale, minPlot] of [
     ["laptop", 1280, 800, 1.0, 150],
     ["projector", 1920, 1080, 1.25, 200],

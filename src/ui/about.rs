@@ -1,0 +1,165 @@
+//! *About this scene*: a window with what the scene is, how it works, things
+//! to notice and to try, and the references; the equations one click deeper
+//! (the words are in `about_text.rs`). The side panel's button opens it; it
+//! stays open over the tank while the fish swim, and fits a phone's screen.
+
+use eframe::egui;
+
+use super::WidgetRects;
+use super::about_text::about;
+use crate::settings::Scene;
+
+/// Whether the window is open, kept in egui's memory (it belongs to this
+/// screen, not to the run a link shares).
+fn open_id() -> egui::Id {
+    egui::Id::unique("about_open")
+}
+
+/// The side panel's *About this scene* button.
+pub fn about_button(ui: &mut egui::Ui, rects: &mut WidgetRects) {
+    let r = ui
+        .button("ℹ About this scene")
+        .on_hover_text("What this scene shows, how it works, what to notice and what to try");
+    rects.insert("about", r.rect);
+    if r.clicked() {
+        let id = open_id();
+        ui.data_mut(|d| {
+            let open = d.get_temp_mut_or_default::<bool>(id);
+            *open = !*open;
+        });
+    }
+}
+
+/// The window, when open, for `scene`.
+pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) {
+    let id = open_id();
+    let mut open = ctx.data(|d| d.get_temp::<bool>(id).unwrap_or(false));
+    if !open {
+        return;
+    }
+    let screen = ctx.content_rect();
+    let width = (screen.width() - 24.0).clamp(200.0, 560.0);
+    let page = about(scene);
+    let shown = egui::Window::new(format!("About: {}", scene.label()))
+        .id(egui::Id::unique(("about_window", scene.name())))
+        .open(&mut open)
+        .collapsible(false)
+        .resizable(true)
+        .default_width(width)
+        .max_width(width)
+        .max_height((screen.height() - 80.0).max(200.0))
+        .default_pos(screen.right_top() + egui::vec2(-width - 12.0, 48.0))
+        .constrain(true)
+        .show(ctx, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| {
+                ui.label(page.what);
+                section(ui, "How it works");
+                ui.label(page.how);
+                section(ui, "Things to notice");
+                bullets(ui, page.notice);
+                section(ui, "Things to try");
+                bullets(ui, page.try_this);
+                let r = egui::CollapsingHeader::new("The equations")
+                    .id_salt("about_equations")
+                    .show(ui, |ui| {
+                        for group in page.equations {
+                            for (name, formula) in *group {
+                                ui.label(egui::RichText::new(*name).strong());
+                                ui.label(*formula);
+                                ui.add_space(4.0);
+                            }
+                        }
+                        ui.label(
+                            egui::RichText::new(
+                                "Every constant, its source and where Shoal departs from the \
+                                 papers: the docs/ folder of the project.",
+                            )
+                            .italics(),
+                        );
+                    });
+                rects.insert("about_equations", r.header_response.rect);
+                section(ui, "References");
+                for reference in page.references {
+                    ui.label(egui::RichText::new(*reference).small());
+                }
+            });
+        });
+    if let Some(shown) = shown {
+        rects.insert("about_window", shown.response.rect);
+    }
+    ctx.data_mut(|d| d.insert_temp(id, open));
+}
+
+fn section(ui: &mut egui::Ui, title: &str) {
+    ui.add_space(6.0);
+    ui.label(egui::RichText::new(title).strong());
+}
+
+fn bullets(ui: &mut egui::Ui, items: &[&str]) {
+    for item in items {
+        ui.horizontal_wrapped(|ui| {
+            ui.label("•");
+            ui.label(*item);
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_scene_has_a_whole_page() {
+        for scene in Scene::ALL {
+            let page = about(scene);
+            assert!(page.what.len() > 80 && page.how.len() > 150, "{scene:?}");
+            assert!(
+                page.notice.len() >= 2 && page.try_this.len() >= 2,
+                "{scene:?}"
+            );
+            assert!(!page.references.is_empty(), "{scene:?}");
+            assert!(
+                page.equations.iter().flat_map(|g| g.iter()).count() >= 4,
+                "{scene:?}"
+            );
+            // The repository explains itself: no pointer outside it.
+            for text in [page.what, page.how] {
+                assert!(
+                    !text.contains("shared") && !text.contains("NOTES"),
+                    "{scene:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn the_window_opens_from_its_button_and_fits_a_phone() {
+        let ctx = egui::Context::default();
+        let size = egui::vec2(390.0, 844.0);
+        let mut rects = WidgetRects::new();
+        for frame in 0..4 {
+            let input = egui::RawInput {
+                screen_rect: Some(egui::Rect::from_min_size(egui::Pos2::ZERO, size)),
+                time: Some(f64::from(frame) / 60.0),
+                ..Default::default()
+            };
+            rects.clear();
+            let mut output = ctx.run_ui(input, |ui| {
+                egui::CentralPanel::default().show(ui, |ui| about_button(ui, &mut rects));
+                // Open it on the first frame, as its button does.
+                if frame == 0 {
+                    ui.ctx().data_mut(|d| d.insert_temp(open_id(), true));
+                }
+                about_window(ui.ctx(), Scene::Reef, &mut rects);
+            });
+            output.textures_delta.clear();
+        }
+        let window = rects.get("about_window").expect("the window is open");
+        assert!(
+            window.left() >= 0.0 && window.right() <= size.x,
+            "{window:?}"
+        );
+        assert!(rects.get("about_equations").is_some());
+        assert!(rects.get("about").is_some());
+    }
+}
