@@ -62,12 +62,15 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
                 let r = egui::CollapsingHeader::new("The equations")
                     .id_salt("about_equations")
                     .show(ui, |ui| {
-                        for group in page.equations {
-                            for (name, formula) in *group {
-                                ui.label(egui::RichText::new(*name).strong());
-                                ui.label(*formula);
-                                ui.add_space(4.0);
+                        for (k, (name, formula)) in
+                            page.equations.iter().flat_map(|g| g.iter()).enumerate()
+                        {
+                            let r = ui.label(egui::RichText::new(*name).strong());
+                            if k == 0 {
+                                rects.insert("about_equation_0", r.rect);
                             }
+                            ui.label(*formula);
+                            ui.add_space(4.0);
                         }
                         ui.label(
                             egui::RichText::new(
