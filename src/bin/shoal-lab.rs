@@ -246,7 +246,7 @@ mod native {
         let threads = args.threads.unwrap_or_else(cores);
         let estimate = plan.estimate();
         eprintln!(
-            "{}: {} of {} runs, {} steps each, on {threads} thread(s); about {:.0} s on one core",
+            "{}: {} of {} runs, {} steps each, on {threads} thread(s); about {:.1} s on one core",
             plan.design.name,
             specs.len(),
             plan.run_count(),

@@ -674,11 +674,11 @@ pub fn sample_every_steps(scene: Scene) -> u64 {
 /// `shoal-lab bench` on the development machine (docs/benchmarks.md).
 fn secs_per_animal_step(scene: Scene) -> f64 {
     match scene {
-        Scene::Aquarium => 0.35e-6,
-        Scene::Boids => 2.2e-6,
-        Scene::Physics => 40e-6,
-        Scene::Reef => 60e-6,
-        Scene::Learning => 40e-6,
+        Scene::Aquarium => 0.5e-6,
+        Scene::Boids => 0.9e-6,
+        Scene::Physics => 90e-6,
+        Scene::Reef => 75e-6,
+        Scene::Learning => 90e-6,
     }
 }
 
