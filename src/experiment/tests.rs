@@ -220,6 +220,27 @@ fn runs_come_in_a_fixed_order_and_shards_hold_each_run_once() {
         }
         assert!(seen.iter().all(|&n| n == 1), "{shards} shards: {seen:?}");
     }
+    // An on/off factor, and base settings from a share link under a patch.
+    let mut linked = Settings {
+        scene: Scene::Physics,
+        ..Settings::default()
+    };
+    linked.physics.fish_count = 3;
+    let mut physics = tiny();
+    physics["link"] = json!(format!(
+        "https://example.org/shoal/#{}",
+        crate::settings::share_link::encode(&linked)
+    ));
+    physics["settings"] = json!({"physics": {"sharks": 0}});
+    physics["factors"] = json!([{"key": "physics.hand_control", "levels": [false, true]}]);
+    physics["measures"] = json!([{"measure": "mean_speed_m_per_s"}]);
+    let plan_b = plan_of(&physics).unwrap();
+    assert_eq!(plan_b.factors[0].levels, vec![json!(false), json!(true)]);
+    assert_eq!(
+        (plan_b.base.scene, plan_b.base.physics.fish_count),
+        (Scene::Physics, 3)
+    );
+    assert!(plan_b.settings_for(&plan_b.runs()[2]).physics.hand_control);
     // The run's settings: the base, the levels, the seed.
     let s = plan.settings_for(&runs[7]);
     assert_eq!((s.left.alignment, s.left.sharks, s.seed), (50.0, 2, 4));
