@@ -125,7 +125,6 @@ mod native {
                     parsed.runs = Some(n);
                 }
                 "--bench" => parsed.bench = true,
-                "--help" | "-h" => return Err(bad(USAGE)),
                 other if other.starts_with('-') => {
                     return Err(bad(format!("unknown option '{other}'\n{USAGE}")));
                 }
@@ -136,6 +135,10 @@ mod native {
     }
 
     fn run(args: &[String]) -> Result<(), Failure> {
+        if args.iter().any(|a| a == "--help" || a == "-h") {
+            println!("{USAGE}\n\nThe experiment file and the CSV: docs/experiments.md");
+            return Ok(());
+        }
         match args.first().map(String::as_str) {
             None => Err(bad(USAGE)),
             Some("merge") => merge(&parse(&args[1..])?),
