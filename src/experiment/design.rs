@@ -27,7 +27,7 @@ pub const MAX_SECS: f64 = 36_000.0;
 
 /// Why a design was refused: the field (`factors[0].levels[2]`,
 /// `replicates.count`, `measures[1].measure`) and a sentence a student reads.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq, Serialize, thiserror::Error)]
 #[error("{field}: {reason}")]
 pub struct DesignError {
     pub field: String,
@@ -114,7 +114,7 @@ fn default_summary() -> String {
 
 /// One run of an experiment: its place in the fixed order, its factor levels
 /// (in the order of the design's factors) and its seed.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct RunSpec {
     pub index: usize,
     pub levels: Vec<Value>,
@@ -123,7 +123,7 @@ pub struct RunSpec {
 
 /// A factor after validation: its key and levels, each a value the setting
 /// takes (an integer, a number or a boolean).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PlannedFactor {
     pub key: String,
     pub levels: Vec<Value>,
@@ -149,7 +149,7 @@ pub struct Plan {
 
 /// How long a plan takes, for the panel's "about 3 minutes" and the cluster's
 /// time limit.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Estimate {
     pub runs: usize,
     pub steps_per_run: u64,

@@ -4,6 +4,21 @@
 
 use crate::settings::Scene;
 
+/// Measures and summaries travel by name (`"polarization"`, `"mean"`), as in
+/// experiment files and the CSV.
+macro_rules! serialize_by_name {
+    ($t:ty) => {
+        impl serde::Serialize for $t {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                s.serialize_str(self.name())
+            }
+        }
+    };
+}
+
+serialize_by_name!(Measure);
+serialize_by_name!(Summary);
+
 /// What can be measured: the school's metrics the plots show, and the reef's
 /// census counts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -18,7 +18,7 @@ use crate::experiment::design::{Measure, Plan, RunSpec};
 use crate::lab::Lab;
 
 /// What one run measured: the samples of its measuring window.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct RunResult {
     pub index: usize,
     pub seed: u64,
@@ -48,7 +48,7 @@ impl RunResult {
 }
 
 /// How far a run is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct RunProgress {
     pub steps_done: u64,
     pub steps_total: u64,
@@ -210,7 +210,7 @@ pub fn measure_value(
 }
 
 /// How far an experiment is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct ExperimentProgress {
     pub runs_done: usize,
     pub runs_total: usize,

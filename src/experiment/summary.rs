@@ -12,8 +12,9 @@ use serde_json::Value;
 use crate::experiment::design::{Measure, Plan, Summary};
 use crate::experiment::runner::RunResult;
 
-/// One point of a dose–response curve.
-#[derive(Clone, Debug, PartialEq)]
+/// One point of a dose–response curve (serialised for `shoal.experiment()`;
+/// NaN, with one seed, becomes `null`).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct SummaryRow {
     /// The factor levels, in the design's order (empty without factors).
     pub levels: Vec<Value>,

@@ -410,6 +410,14 @@ fn the_summary_gives_the_mean_and_t_interval_over_seeds() {
     assert_eq!((rows[1].measure, rows[1].mean), (Measure::Catches, 2.0));
     assert_eq!(rows[3].n, 1);
     assert!(rows[3].sd.is_nan());
+    // For the page: names, and null for "no interval".
+    let js = serde_json::to_value(&rows[3]).unwrap();
+    assert_eq!(js["measure"], "polarization");
+    assert_eq!(js["summary"], "mean");
+    assert_eq!(
+        (js["levels"].clone(), js["sd"].clone()),
+        (json!([60.0]), Value::Null)
+    );
 }
 
 #[test]
