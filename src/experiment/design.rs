@@ -167,7 +167,18 @@ impl Design {
     /// Reads an experiment file. A JSON error names the line and column (and the
     /// field, for an unknown or missing one).
     pub fn from_json(text: &str) -> Result<Self, DesignError> {
-        serde_json::from_str(text).map_err(|err| DesignError::new("(file)", err.to_string()))
+        serde_json::from_str(text).map_err(|err| {
+            let message = err.to_string();
+            // serde names an unknown or missing field between backquotes.
+            let field = ["unknown field `", "missing field `"]
+                .iter()
+                .find_map(|start| message.strip_prefix(start)?.split('`').next())
+                .map_or_else(
+                    || format!("(file, line {}, column {})", err.line(), err.column()),
+                    str::to_owned,
+                );
+            DesignError::new(field, message)
+        })
     }
 
     /// The JSON of the design on one line, as the CSV's `# design:` line holds it.

@@ -178,7 +178,12 @@ fn every_refusal_names_its_field() {
     let mut typo = tiny();
     typo["warmup_sec"] = json!(1);
     let err = refused(&typo);
-    assert!(err.reason.contains("warmup_sec"), "{err}");
+    assert_eq!(err.field, "warmup_sec", "{err}");
+    let mut missing = tiny();
+    missing.as_object_mut().unwrap().remove("replicates");
+    assert_eq!(refused(&missing).field, "replicates");
+    let err = Design::from_json("{\"name\": 3}").unwrap_err();
+    assert_eq!(err.field, "(file, line 1, column 10)", "{err}");
 }
 
 #[test]
