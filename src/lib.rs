@@ -11,6 +11,7 @@ pub mod app;
 pub mod automation;
 pub mod bench;
 pub mod clock;
+pub mod experiment;
 pub mod export;
 pub mod lab;
 pub mod metrics_history;

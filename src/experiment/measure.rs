@@ -1,0 +1,135 @@
+//! What an experiment measures ([`Measure`]: the school's metrics the plots
+//! show, the reef's census) and how a run's samples become numbers
+//! ([`Summary`]).
+
+use crate::settings::Scene;
+
+/// Measures and summaries travel by name (`"polarization"`, `"mean"`), as in
+/// experiment files and the CSV.
+macro_rules! serialize_by_name {
+    ($t:ty) => {
+        impl serde::Serialize for $t {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                s.serialize_str(self.name())
+            }
+        }
+    };
+}
+
+serialize_by_name!(Measure);
+serialize_by_name!(Summary);
+
+/// What can be measured: the school's metrics the plots show, and the reef's
+/// census counts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Measure {
+    Polarization,
+    Milling,
+    NndBodyLengths,
+    Groups,
+    MeanSpeed,
+    /// Prey caught by sharks (schooling lab) or predators (reef).
+    Catches,
+    FoodEaten,
+    Spawnings,
+    MissedStrikes,
+    FishCollisions,
+    PreyAlive,
+}
+
+impl Measure {
+    pub const ALL: [Self; 11] = [
+        Self::Polarization,
+        Self::Milling,
+        Self::NndBodyLengths,
+        Self::Groups,
+        Self::MeanSpeed,
+        Self::Catches,
+        Self::FoodEaten,
+        Self::Spawnings,
+        Self::MissedStrikes,
+        Self::FishCollisions,
+        Self::PreyAlive,
+    ];
+
+    /// The name in experiment files and the CSV (the metrics CSV's column name).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Polarization => "polarization",
+            Self::Milling => "milling",
+            Self::NndBodyLengths => "nnd_body_lengths",
+            Self::Groups => "groups",
+            Self::MeanSpeed => "mean_speed_m_per_s",
+            Self::Catches => "catches",
+            Self::FoodEaten => "food_eaten",
+            Self::Spawnings => "spawnings",
+            Self::MissedStrikes => "missed_strikes",
+            Self::FishCollisions => "fish_collisions",
+            Self::PreyAlive => "prey_alive",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|m| m.name() == name)
+    }
+
+    /// Counters of events: their values count from the start of the measuring
+    /// window, so the warm-up's events are not measured.
+    pub fn is_counter(self) -> bool {
+        matches!(
+            self,
+            Self::Catches
+                | Self::FoodEaten
+                | Self::Spawnings
+                | Self::MissedStrikes
+                | Self::FishCollisions
+        )
+    }
+
+    /// Does `scene` measure it? The school's metrics: every scene with a school
+    /// (not the learning lab); catches: the schooling lab (sharks) and the reef;
+    /// the census: the reef.
+    pub fn available_in(self, scene: Scene) -> bool {
+        match self {
+            Self::Polarization
+            | Self::Milling
+            | Self::NndBodyLengths
+            | Self::Groups
+            | Self::MeanSpeed => scene != Scene::Learning,
+            Self::Catches => matches!(scene, Scene::Boids | Scene::Reef),
+            Self::FoodEaten
+            | Self::Spawnings
+            | Self::MissedStrikes
+            | Self::FishCollisions
+            | Self::PreyAlive => scene == Scene::Reef,
+        }
+    }
+}
+
+/// How a run's samples over the measuring window become the CSV's values.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Summary {
+    /// The mean of the samples in the window.
+    #[default]
+    Mean,
+    /// The last sample (for a counter: the events in the window).
+    Final,
+    /// Every sample, one row each, with its time.
+    Series,
+}
+
+impl Summary {
+    pub const ALL: [Self; 3] = [Self::Mean, Self::Final, Self::Series];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Mean => "mean",
+            Self::Final => "final",
+            Self::Series => "series",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|s| s.name() == name)
+    }
+}
