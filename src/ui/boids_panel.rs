@@ -434,7 +434,7 @@ fn draw_vision(view: &ViewContext) {
             let dir = forward * angle.cos() + side * angle.sin();
             let reach = perception
                 .vision_distance_m
-                .min(distance_to_glass(tank, centre, dir));
+                .min(tank.distance_to_glass(centre, dir));
             if let Some(p) = to_screen(centre + dir * reach) {
                 points.push(p);
             }
@@ -456,24 +456,6 @@ fn draw_vision(view: &ViewContext) {
     }
 }
 
-/// How far from `p` (inside the tank) along the unit `direction` the glass, sand
-/// or surface is, metres: a fish sees no farther than its tank.
-fn distance_to_glass(tank: crate::sim::Tank, p: Vec3, direction: Vec3) -> f32 {
-    let mut nearest = f32::INFINITY;
-    for axis in 0..3 {
-        let d = direction[axis];
-        if d.abs() > 1e-6 {
-            let wall = if d > 0.0 {
-                tank.max_m[axis]
-            } else {
-                tank.min_m[axis]
-            };
-            nearest = nearest.min(((wall - p[axis]) / d).max(0.0));
-        }
-    }
-    nearest
-}
-
 /// Where `p` is drawn in `rect`, if in front of the camera.
 fn screen_point(camera: &OrbitCamera, rect: egui::Rect, p: Vec3) -> Option<egui::Pos2> {
     let aspect = rect.width() / rect.height().max(1.0);
@@ -487,16 +469,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_fish_sees_no_farther_than_its_glass() {
-        let tank = crate::sim::Tank {
-            min_m: Vec3::ZERO,
-            max_m: Vec3::new(10.0, 4.0, 6.0),
-        };
-        let p = Vec3::new(8.0, 2.0, 3.0);
-        assert!((distance_to_glass(tank, p, Vec3::X) - 2.0).abs() < 1e-6);
-        assert!((distance_to_glass(tank, p, -Vec3::X) - 8.0).abs() < 1e-6);
-        let diagonal = Vec3::new(1.0, 1.0, 0.0).normalize_or_zero();
-        assert!((distance_to_glass(tank, p, diagonal) - 2.0f32.sqrt() * 2.0).abs() < 1e-5);
+    fn stacked_tanks_are_named_top_and_bottom() {
         assert_eq!(tank_name(Side::Right, true), "Bottom tank");
     }
 }

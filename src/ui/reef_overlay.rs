@@ -45,7 +45,10 @@ pub fn draw_vision(
     };
     let heading = a.body.heading();
     let eye = centre + heading * 0.5 * a.body.body_length_m();
-    let radius = reef.config().visibility_m;
+    let visibility = reef.config().visibility_m;
+    let tank = *reef.tank();
+    // As far as the water is clear, and no farther than the glass.
+    let reach = |direction: Vec3| visibility.min(tank.distance_to_glass(eye, direction));
     let flat = (heading * Vec3::new(1.0, 0.0, 1.0)).normalize_or(Vec3::X);
     let yaw = flat.z.atan2(flat.x);
     let half = 0.5 * FIELD_OF_VIEW_RAD;
@@ -55,22 +58,16 @@ pub fn draw_vision(
     let rim: Vec<egui::Pos2> = (0..=steps)
         .filter_map(|k| {
             let angle = yaw - half + FIELD_OF_VIEW_RAD * k as f32 / steps as f32;
-            project(
-                camera,
-                rect,
-                eye + Vec3::new(angle.cos(), 0.0, angle.sin()) * radius,
-            )
+            let direction = Vec3::new(angle.cos(), 0.0, angle.sin());
+            project(camera, rect, eye + direction * reach(direction))
         })
         .collect();
     painter.add(egui::Shape::line(rim, egui::Stroke::new(1.5, fan)));
     if let Some(e) = project(camera, rect, eye) {
         for k in 0..=10 {
             let angle = yaw - half + FIELD_OF_VIEW_RAD * k as f32 / 10.0;
-            if let Some(p) = project(
-                camera,
-                rect,
-                eye + Vec3::new(angle.cos(), 0.0, angle.sin()) * radius,
-            ) {
+            let direction = Vec3::new(angle.cos(), 0.0, angle.sin());
+            if let Some(p) = project(camera, rect, eye + direction * reach(direction)) {
                 let edge = k == 0 || k == 10;
                 let stroke = egui::Stroke::new(
                     if edge { 1.5 } else { 0.7 },

@@ -78,7 +78,7 @@ impl SkipUi {
         };
         match self.progress {
             None => {
-                let r = ui.button(format!("⏩ Skip to {what}")).on_hover_text(
+                let r = ui.button(format!("Skip to {what} »")).on_hover_text(
                     "Run ahead as fast as this computer can until it happens, then go \
                          back a few seconds so you can watch it. The run is the same one: \
                          skipping only changes when you see it",

@@ -48,6 +48,24 @@ impl Tank {
     /// The point of the tank shrunk by `margin_m` that is closest to `p_m`
     /// (each coordinate clamped separately). If the margin is larger than half
     /// the tank the result is the centre on that axis. Never panics.
+    /// How far from `p` (inside the tank) along the unit `direction` the glass,
+    /// sand or surface is, metres: a fish sees no farther than its tank.
+    pub fn distance_to_glass(&self, p: Vec3, direction: Vec3) -> f32 {
+        let mut nearest = f32::INFINITY;
+        for axis in 0..3 {
+            let d = direction[axis];
+            if d.abs() > 1e-6 {
+                let wall = if d > 0.0 {
+                    self.max_m[axis]
+                } else {
+                    self.min_m[axis]
+                };
+                nearest = nearest.min(((wall - p[axis]) / d).max(0.0));
+            }
+        }
+        nearest
+    }
+
     pub fn clamp_inside(&self, p_m: Vec3, margin_m: f32) -> Vec3 {
         let (lo, hi) = self.shrunk_m(margin_m);
         // `max` then `min` (not `clamp`) so that lo > hi or NaN cannot panic.
@@ -66,6 +84,19 @@ impl Tank {
 #[cfg(test)]
 mod tests {
     use crate::sim::common::tank::*;
+
+    #[test]
+    fn a_fish_sees_no_farther_than_its_glass() {
+        let tank = Tank {
+            min_m: Vec3::ZERO,
+            max_m: Vec3::new(10.0, 4.0, 6.0),
+        };
+        let p = Vec3::new(8.0, 2.0, 3.0);
+        assert!((tank.distance_to_glass(p, Vec3::X) - 2.0).abs() < 1e-6);
+        assert!((tank.distance_to_glass(p, -Vec3::X) - 8.0).abs() < 1e-6);
+        let diagonal = Vec3::new(1.0, 1.0, 0.0).normalize_or_zero();
+        assert!((tank.distance_to_glass(p, diagonal) - 2.0f32.sqrt() * 2.0).abs() < 1e-5);
+    }
 
     #[test]
     fn default_tank_is_12_by_4_5_by_8_metres_with_floor_at_zero() {
