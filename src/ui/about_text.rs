@@ -47,6 +47,19 @@ const STEERING_EQUATIONS: &[(&str, &str)] = &[
          default); v is the fish's velocity. Speeds are capped at the top speed.",
     ),
     (
+        "Wander",
+        "wish = towards a point on a circle ahead of the fish; the point's angle on the \
+         circle drifts a little at random each step, so the path meanders.",
+    ),
+    (
+        "Containment and avoidance",
+        "look ahead along the path; if it would come within 1 m of the glass, sand or \
+         surface, or hit a rock, steer along the obstacle instead of into it.",
+    ),
+];
+
+const URGE_EQUATIONS: &[(&str, &str)] = &[
+    (
         "Alignment",
         "wish = the mean heading of the (up to 7) nearest neighbours it sees, nearer ones \
          counting more, times the top speed.",
@@ -59,11 +72,6 @@ const STEERING_EQUATIONS: &[(&str, &str)] = &[
         "Separation",
         "wish = away from each neighbour closer than the personal space (0.8 m), stronger \
          the closer it is.",
-    ),
-    (
-        "Containment and avoidance",
-        "look ahead along the path; if it would come within 1 m of the glass, sand or \
-         surface, or hit a rock, steer along the obstacle instead of into it.",
     ),
     (
         "Weights",
@@ -247,7 +255,7 @@ pub fn about(scene: Scene) -> About {
                 "Switch the control mode to Monte Carlo and read the urge bars.",
                 "Add a rock in the school's path and watch it split and join.",
             ],
-            equations: &[STEERING_EQUATIONS, BOIDS_EQUATIONS],
+            equations: &[STEERING_EQUATIONS, URGE_EQUATIONS, BOIDS_EQUATIONS],
             references: &[LIM_TAN, REYNOLDS, COUZIN, BALLERINI, PITCHER, LANDEAU],
         },
         Scene::Physics => About {

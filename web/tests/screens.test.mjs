@@ -104,6 +104,8 @@ describe("phone, laptop and projector (WebGL2 tier)", () => {
       let w = await widgets(page);
       assert.ok(w.about_window.x >= 0 && w.about_window.x + w.about_window.width <= 390, JSON.stringify(w.about_window));
       assert.equal(w.about_equation_0, undefined, "the equations start closed");
+      const bottom = w.about_window.y + w.about_window.height;
+      assert.ok(w.about_equations.y + w.about_equations.height <= bottom, "the equations' header is in sight");
       await clickUntil(page, "about_equations", () => !!window.shoal.widgets().about_equation_0);
       saveArtifact("screen-phone-about.png", await page.screenshot());
       w = await widgets(page);
