@@ -123,7 +123,7 @@ mod tests {
             );
             assert!(!page.references.is_empty(), "{scene:?}");
             assert!(
-                page.equations.iter().flat_map(|g| g.iter()).count() >= 4,
+                page.equations.iter().flat_map(|g| g.iter()).count() >= 3,
                 "{scene:?}"
             );
             // The repository explains itself: no pointer outside it.
