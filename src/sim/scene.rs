@@ -51,6 +51,9 @@ pub struct Moment {
     pub what: &'static str,
     /// Seconds of the run shown before it (the chase, the approach).
     pub lead_secs: f64,
+    /// Follow the animal it is about (a catch, a bite), or keep the demo's
+    /// own view (the whole school at the pillar, seen from above).
+    pub follow: bool,
 }
 
 /// A scene's moment, found: when it happens, whom it is about and the log's
@@ -58,8 +61,10 @@ pub struct Moment {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct FoundMoment {
     pub time_secs: f64,
-    /// The animal to select and follow.
+    /// The animal it is about.
     pub subject: u32,
+    /// Select and follow it (see [`Moment::follow`]).
+    pub follow: bool,
     pub text: String,
 }
 
@@ -127,6 +132,7 @@ impl SceneWorld {
             Self::Reef(w) => w.moment_since(logged_before).map(|e| FoundMoment {
                 time_secs: e.time_secs,
                 subject: e.kind.subject(),
+                follow: w.config().scene.moment().follow,
                 text: e.text.clone(),
             }),
             Self::Boids(_) | Self::Physics(_) | Self::Learning(_) => None,

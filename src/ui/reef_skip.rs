@@ -44,7 +44,7 @@ impl SkipUi {
                 moment,
                 resumed_at_secs,
             } => {
-                self.follow = Some(moment.subject);
+                self.follow = moment.follow.then_some(moment.subject);
                 let wait = (moment.time_secs - resumed_at_secs).round();
                 Notice::info(format!(
                     "Skipped ahead to {}. Watch: in about {wait:.0} s the log will say \

@@ -119,7 +119,13 @@ impl ReefScene {
             Self::Feeding => ("the next bite", 4.0),
             Self::SchoolMeetsObstacle => ("what the school does next", 4.0),
         };
-        Moment { what, lead_secs }
+        Moment {
+            what,
+            lead_secs,
+            // The school is the subject at the pillar: the demo's view from
+            // above shows it whole, a camera on one fish would not.
+            follow: self != Self::SchoolMeetsObstacle,
+        }
     }
 
     /// Is `kind` this scene's moment?
