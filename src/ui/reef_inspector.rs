@@ -332,14 +332,15 @@ fn mind_summary_ui(
         None => ui.label("Remembers: nothing"),
     };
     if let Some(pair) = reef.pair_of(i) {
+        let partner = if pair.male as usize == i {
+            pair.female
+        } else {
+            pair.male
+        };
         ui.label(format!(
-            "Courting: {} with animal {} ({})",
+            "Courting: {} with {} ({})",
             pair.phase.label(),
-            if pair.male as usize == i {
-                pair.female
-            } else {
-                pair.male
-            },
+            target_text(reef, Some(Target::Animal(partner))),
             pair.count
         ));
     }

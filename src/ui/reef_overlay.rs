@@ -218,20 +218,22 @@ pub fn draw_name_tags(
 
 /// Each female's choice of partner: a dashed line from her to the male she
 /// wants (her intention *mate*), labelled "her choice" at his end, so the
-/// *Courtship* demo shows whom she prefers, not only who follows whom.
+/// *Courtship* demo shows whom she prefers, not only who follows whom. Not
+/// for `except` (the selected fish whose focus line already shows it).
 pub fn draw_choices(
     painter: &egui::Painter,
     rect: egui::Rect,
     camera: &OrbitCamera,
     run: &Run,
     alpha: f32,
+    except: Option<u32>,
 ) {
     let Some(reef) = run.reef() else {
         return;
     };
     let drawn = run.drawn_positions_m(alpha);
     let color = intention_color(Intention::Mate);
-    for (i, a) in reef.living() {
+    for (i, a) in reef.living().filter(|(i, _)| Some(*i as u32) != except) {
         let (Sex::Female, Intention::Mate, Some(Target::Animal(m))) =
             (a.habits.sex, a.focus.intention, a.focus.target)
         else {

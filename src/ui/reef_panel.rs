@@ -349,7 +349,9 @@ impl ScenePanel for ReefPanel {
         if settings.reef.name_tags {
             reef_overlay::draw_name_tags(painter, rect, camera, run, alpha);
         }
-        reef_overlay::draw_choices(painter, rect, camera, run, alpha);
+        // The selected fish's focus line already shows whom she wants.
+        let focus_drawn = settings.reef.selected.filter(|_| settings.reef.show_vision);
+        reef_overlay::draw_choices(painter, rect, camera, run, alpha, focus_drawn);
         if let Some(selected) = settings.reef.selected {
             if settings.reef.show_vision {
                 reef_overlay::draw_vision(painter, rect, camera, run, alpha, selected);
