@@ -84,7 +84,7 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
                 rects.insert("about_equations", r.header_response.rect);
                 section(ui, "References");
                 for reference in page.references {
-                    ui.label(egui::RichText::new(*reference).small());
+                    ui.label(egui::RichText::new(*reference).weak());
                 }
             });
         });
