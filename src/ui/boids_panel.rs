@@ -146,6 +146,10 @@ impl ScenePanel for BoidsPanel {
                         .selectable_value(&mut self.edit_side, side, label)
                         .on_hover_text("Choose which tank the controls below change");
                     rects.insert(&format!("edit_{}", side.name()), response.rect);
+                    if self.edit_side == side {
+                        // Which tank the controls change, for the browser tests.
+                        rects.insert(&format!("editing_{}", side.name()), response.rect);
+                    }
                 }
             });
         }

@@ -119,10 +119,13 @@ describe("schooling lab", () => {
     });
     // A frame after choosing the tank, so a slow software GPU does not fold the
     // two clicks into one frame (egui takes one click per widget per frame).
-    await clickUntil(page, "edit_left", () => window.shoal.widgets().preset_individual);
+    // Each click is checked by its effect (`editing_*` marks the tank the
+    // controls change): a click lost on a loaded machine once sent the Group
+    // preset to the left tank.
+    await clickUntil(page, "edit_left", () => !!window.shoal.widgets().editing_left);
     await waitFrames(page, 2);
     await clickUntil(page, "preset_individual", () => window.shoal.settings().left.preset === "individual");
-    await clickUntil(page, "edit_right", () => window.shoal.widgets().preset_group);
+    await clickUntil(page, "edit_right", () => !!window.shoal.widgets().editing_right);
     await waitFrames(page, 2);
     await clickUntil(page, "preset_group", () => window.shoal.settings().right.preset === "group");
     const chosen = await settings(page);
