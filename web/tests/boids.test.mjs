@@ -113,7 +113,7 @@ describe("schooling lab", () => {
     await page.reload();
     await page.waitForFunction(() => window.shoal && window.shoal.state().tier, null, { timeout: 90_000 });
     await clickUntil(page, "scene_boids", () => window.shoal.state().scene === "boids");
-    await clickWidget(page, "compare");
+    await clickUntil(page, "compare", () => window.shoal.state().compare);
     await page.waitForFunction(() => window.shoal.state().compare && window.shoal.widgets().edit_left, null, {
       timeout: 30_000,
     });
