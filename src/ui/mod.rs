@@ -5,6 +5,7 @@
 //! make are a scene's own actions, in [`ScenePanel::apply`].
 
 pub mod body_overlay;
+mod boids_attention;
 mod boids_panel;
 pub mod bottom_panel;
 mod control_panel;
