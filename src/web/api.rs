@@ -15,7 +15,7 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 17] = [
+    let methods: [(&str, Box<Method>); 19] = [
         ("state", Box::new(|app, _| to_json(&app.state_report()))),
         (
             "share_link",
