@@ -19,15 +19,15 @@ use crate::sim::World;
 use crate::sim::boids::attention::Attention;
 use crate::sim::boids::control_mode::ControlMode;
 
-/// Shortest urge arrow on screen, points. 14, chosen: a weak urge still shows
-/// its direction beside a fish about 20 points long.
-const MIN_ARROW_PT: f32 = 14.0;
+/// Shortest urge arrow on screen, points. 22, chosen: a weak urge still shows
+/// its direction clear of the fish's ring (13 points).
+const MIN_ARROW_PT: f32 = 22.0;
 
 /// How much longer an urge at the full maximum force is than the shortest
-/// arrow, points. 120, chosen: avoidance at full force is about six fish long,
-/// and the arrows grow with the square root of the strength, so an urge a
-/// twentieth as strong is still a quarter as long.
-const ARROW_RANGE_PT: f32 = 120.0;
+/// arrow, points. 200, chosen: avoidance at full force crosses a good part of
+/// the view, and the arrows grow with the square root of the strength, so an
+/// urge a twentieth as strong (a school's alignment) is still about 70 points.
+const ARROW_RANGE_PT: f32 = 200.0;
 
 /// The urges' names in sentences and the table.
 const URGE_WORDS: [&str; 5] = [
@@ -109,7 +109,7 @@ pub fn draw_attention(view: &ViewContext, world: &World, selected: u32, attentio
         let d = tip - c;
         (d.length() > 0.5).then(|| d.normalized())
     };
-    let font = egui::FontId::proportional(12.0);
+    let font = egui::FontId::proportional(13.0);
     for k in 0..5 {
         let v = attention.urges_m_per_s2[k];
         let strength = v.length();
@@ -132,30 +132,40 @@ pub fn draw_attention(view: &ViewContext, world: &World, selected: u32, attentio
                 4.0,
             ));
         }
-        painter.text(
-            tip + dir * 8.0,
-            egui::Align2::CENTER_CENTER,
+        label(
+            painter,
+            tip + dir * 10.0,
             URGE_NAMES[k],
             font.clone(),
-            if attention.applied[k] {
-                color
-            } else {
-                color.gamma_multiply(0.7)
-            },
+            color,
         );
     }
     let result = attention.steering_m_per_s2;
     if let Some(dir) = screen_dir(result) {
         let tip = c + dir * arrow_length_pt(result.length(), max_force);
         painter.arrow(c, tip - c, egui::Stroke::new(3.5, egui::Color32::WHITE));
-        painter.text(
-            tip + dir * 10.0,
-            egui::Align2::CENTER_CENTER,
+        label(
+            painter,
+            tip + dir * 12.0,
             "result",
             egui::FontId::proportional(13.0),
             egui::Color32::WHITE,
         );
     }
+}
+
+/// `text` centred at `at` on a dark box, readable over water and fish.
+fn label(
+    painter: &egui::Painter,
+    at: egui::Pos2,
+    text: &str,
+    font: egui::FontId,
+    color: egui::Color32,
+) {
+    let galley = painter.layout_no_wrap(text.to_owned(), font, color);
+    let rect = egui::Rect::from_center_size(at, galley.size());
+    painter.rect_filled(rect.expand(2.0), 3.0, egui::Color32::from_black_alpha(160));
+    painter.galley(rect.min, galley, color);
 }
 
 /// The control mode's rule in one sentence, with what it chose this step.
@@ -324,6 +334,7 @@ mod tests {
     #[test]
     fn arrows_grow_with_strength_and_never_vanish() {
         assert_eq!(arrow_length_pt(0.0, 8.0), MIN_ARROW_PT);
+        assert!(arrow_length_pt(0.4, 8.0) > 60.0, "a school's urges read");
         assert!((arrow_length_pt(8.0, 8.0) - (MIN_ARROW_PT + ARROW_RANGE_PT)).abs() < 1e-4);
         assert!(arrow_length_pt(2.0, 8.0) > arrow_length_pt(0.5, 8.0));
         assert_eq!(arrow_length_pt(f32::NAN, 8.0), MIN_ARROW_PT);
