@@ -162,16 +162,6 @@ impl ScenePanel for BoidsPanel {
         } else {
             &[Side::Left]
         };
-        if sides
-            .iter()
-            .all(|&side| settings.selected_in(side).is_none())
-        {
-            ui.label(
-                egui::RichText::new("Click a fish to see what it pays attention to.")
-                    .small()
-                    .weak(),
-            );
-        }
         for &side in sides {
             let name = settings
                 .compare
