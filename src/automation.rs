@@ -25,6 +25,7 @@ use serde_json::Value;
 use crate::lab::{Lab, LabError};
 use crate::metrics_history::MetricsSample;
 use crate::settings::{SEED_MAX, SettingsError, Side};
+use crate::sim::boids::attention::AttentionReport;
 
 /// Most steps one `shoal.step(n)` call may ask for (about 28 simulated minutes),
 /// so a typo cannot freeze the tab for minutes.
@@ -237,11 +238,12 @@ pub struct StateReport {
     /// screen (app only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ui_scale: Option<f32>,
-    /// The (left) tank's school metrics, see [`MetricsSample`].
-    pub metrics: MetricsSample,
+    /// The (left) tank's school metrics, see [`MetricsSample`], and in the
+    /// schooling lab what its selected fish pays attention to.
+    pub metrics: TankReport,
     /// The right tank's metrics while comparing.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub metrics_right: Option<MetricsSample>,
+    pub metrics_right: Option<TankReport>,
     /// Whether two tanks are shown.
     pub compare: bool,
     /// The message shown at the top of the view, if any (e.g. a share link that
@@ -272,6 +274,32 @@ pub struct SkipReport {
     pub last: Option<crate::lab::SkipOutcome>,
 }
 
+/// `shoal.state().metrics` (and `metrics_right`): the tank's school metrics
+/// (the fields of [`MetricsSample`]) and, in the schooling lab with a fish
+/// selected (`left.selected`, `right.selected`), `attention`: what that fish
+/// paid attention to in the last step ([`crate::sim::World::attention`]).
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct TankReport {
+    #[serde(flatten)]
+    pub sample: MetricsSample,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub attention: Option<AttentionReport>,
+}
+
+impl TankReport {
+    fn new(run: &crate::lab::Run, settings: &crate::settings::Settings) -> Self {
+        let attention = settings
+            .selected_in(run.side())
+            .zip(run.scene().boids())
+            .and_then(|(i, world)| world.attention(i as usize))
+            .map(|a| AttentionReport::from(&a));
+        Self {
+            sample: run.metrics(),
+            attention,
+        }
+    }
+}
+
 /// The orbit camera, as `shoal.state().camera` reports it.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct CameraReport {
@@ -299,8 +327,10 @@ impl StateReport {
             speed: settings.speed,
             fell_behind: lab.fell_behind(),
             slowed_down: lab.slowed_down(),
-            metrics: lab.runs()[0].metrics(),
-            metrics_right: lab.run(Side::Right).map(|run| run.metrics()),
+            metrics: TankReport::new(run, settings),
+            metrics_right: lab
+                .run(Side::Right)
+                .map(|run| TankReport::new(run, settings)),
             compare: lab.comparing(),
             notice: None,
             camera: None,
@@ -458,5 +488,52 @@ mod tests {
         assert_eq!(selected["turning"], true);
         assert_eq!(selected["muscles"].as_array().unwrap().len(), 12);
         assert!((state["time_secs"].as_f64().unwrap() - 5.0 * 0.055).abs() < 1e-4);
+    }
+
+    #[test]
+    fn the_schooling_labs_selected_fish_reports_its_attention_and_is_let_go_with_its_fish() {
+        let mut lab = Lab::new(Settings {
+            scene: crate::settings::Scene::Boids,
+            ..Settings::default()
+        });
+        Command::Set(json!({"left": {"preset": "group", "selected": 7, "fish_count": 40}}))
+            .execute(&mut lab)
+            .unwrap();
+        assert_eq!(lab.settings().selected(), Some(7));
+        let state = serde_json::to_value(StateReport::new(&lab, "webgpu", 0.0)).unwrap();
+        assert!(
+            state["metrics"].get("attention").is_none(),
+            "no step since the settings changed: nothing to report yet"
+        );
+        lab.step(3);
+        let state = serde_json::to_value(StateReport::new(&lab, "webgpu", 0.0)).unwrap();
+        let attention = &state["metrics"]["attention"];
+        assert_eq!(attention["fish"], 7, "the selection survives steps");
+        assert_eq!(attention["mode"], "blended");
+        assert_eq!(attention["urges"].as_array().unwrap().len(), 5);
+        assert_eq!(attention["urges"][2]["urge"], "cohesion");
+        assert!(attention["urges"][2]["strength_m_per_s2"].is_number());
+        assert!(attention["neighbours"].as_array().unwrap().len() <= 7);
+        assert!(
+            state["metrics"]["polarization"].is_number(),
+            "metrics as before"
+        );
+        // A selection past the fish is refused; a smaller school lets it go.
+        assert!(
+            Command::Set(json!({"left": {"selected": 40}}))
+                .execute(&mut lab)
+                .is_err()
+        );
+        Command::Set(json!({"left": {"fish_count": 5}}))
+            .execute(&mut lab)
+            .unwrap();
+        assert_eq!(lab.settings().left.selected, None);
+        let state = serde_json::to_value(StateReport::new(&lab, "webgpu", 0.0)).unwrap();
+        assert!(state["metrics"].get("attention").is_none());
+        // Only the schooling lab selects boid fish.
+        Command::Set(json!({"left": {"selected": 2}, "scene": "aquarium"}))
+            .execute(&mut lab)
+            .unwrap();
+        assert_eq!(lab.settings().selected(), None);
     }
 }

@@ -204,12 +204,23 @@ impl Settings {
     }
 
     /// The animal selected in the scene on show (by index), if the scene
-    /// lets one pick an animal.
+    /// lets one pick an animal. In the schooling lab, the (left) tank's fish;
+    /// [`Self::selected_in`] gives each tank's.
     pub fn selected(&self) -> Option<u32> {
+        self.selected_in(Side::Left)
+    }
+
+    /// The animal selected in the tank of `side` (only the schooling lab's
+    /// right tank, when comparing, differs from [`Self::selected`]).
+    pub fn selected_in(&self, side: Side) -> Option<u32> {
         match self.scene {
             Scene::Physics => self.physics.selected,
             Scene::Reef => self.reef.selected,
-            Scene::Aquarium | Scene::Boids | Scene::Learning => None,
+            Scene::Boids => match side {
+                Side::Left => self.left.selected,
+                Side::Right => self.compare.then_some(self.right.selected).flatten(),
+            },
+            Scene::Aquarium | Scene::Learning => None,
         }
     }
 
@@ -295,6 +306,18 @@ impl Settings {
             key: "?".to_owned(),
             reason: err.to_string(),
         })?;
+        // A selected fish that a smaller count leaves out is let go, unless
+        // the patch names it.
+        for side in Side::BOTH {
+            if patch
+                .get(side.name())
+                .and_then(|tank| tank.get("selected"))
+                .is_none()
+            {
+                let tank = candidate.tank_mut(side);
+                tank.selected = tank.selected.filter(|&i| i < tank.fish_count);
+            }
+        }
         candidate.validate()?;
         candidate.settle(&base);
         *self = candidate;

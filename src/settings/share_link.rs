@@ -111,6 +111,8 @@ mod tests {
         tank.fish_count = rng.random_range(0..=20_000);
         tank.sharks = rng.random_range(0..=crate::settings::tank::SHARKS_MAX);
         tank.stingrays = rng.random_range(0..=crate::settings::tank::STINGRAYS_MAX);
+        tank.selected = (tank.fish_count > 0 && rng.random_bool(0.5))
+            .then(|| rng.random_range(0..tank.fish_count));
         tank
     }
 

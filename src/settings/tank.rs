@@ -123,6 +123,11 @@ pub struct TankSettings {
     /// `None`: the rocks, pillars and ledges the seed places; a list: exactly these
     /// (after a teacher added, moved or removed one).
     pub obstacles: Option<Vec<crate::sim::Obstacle>>,
+    /// The fish whose attention the schooling lab shows (its index, below
+    /// `fish_count`), if any. Each tank has its own. Links made before it
+    /// existed lack it.
+    #[serde(default)]
+    pub selected: Option<u32>,
 }
 
 impl TankSettings {
@@ -150,6 +155,7 @@ impl TankSettings {
             sharks: 0,
             stingrays: 0,
             obstacles: None,
+            selected: None,
         };
         tank.load_preset(preset);
         tank
@@ -295,6 +301,18 @@ impl TankSettings {
         Self::FISH_COUNT.check(prefix, self.fish_count)?;
         Self::SHARKS.check(prefix, self.sharks)?;
         Self::STINGRAYS.check(prefix, self.stingrays)?;
+        if let Some(selected) = self.selected
+            && selected >= self.fish_count
+        {
+            return Err(SettingError {
+                key: format!("{prefix}selected"),
+                reason: format!(
+                    "{selected} is out of range: there are {} fish (0 to {}), or null for none",
+                    self.fish_count,
+                    i64::from(self.fish_count) - 1
+                ),
+            });
+        }
         if let Some(obstacles) = &self.obstacles {
             if obstacles.len() > MAX_OBSTACLES {
                 return Err(SettingError {
@@ -330,6 +348,8 @@ impl TankSettings {
         self.fish_count = Self::FISH_COUNT.clamp(self.fish_count);
         self.sharks = Self::SHARKS.clamp(self.sharks);
         self.stingrays = Self::STINGRAYS.clamp(self.stingrays);
+        // Fewer fish than the selected one's number: let it go.
+        self.selected = self.selected.filter(|&i| i < self.fish_count);
         if let Some(obstacles) = &mut self.obstacles {
             obstacles.retain(|o| o.validate(tank).is_ok());
             obstacles.truncate(MAX_OBSTACLES);

@@ -397,7 +397,14 @@ impl SceneWorld {
                 .living()
                 .map(|(i, a)| (i, a.body.body_length_m()))
                 .collect(),
-            Self::Boids(_) | Self::Learning(_) => Vec::new(),
+            // The schooling lab's fish (clicked to see what they pay attention to).
+            Self::Boids(w) => w
+                .fish()
+                .iter()
+                .enumerate()
+                .map(|(i, f)| (i, f.body_length_m))
+                .collect(),
+            Self::Learning(_) => Vec::new(),
         }
     }
 

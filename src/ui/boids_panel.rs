@@ -6,6 +6,8 @@ use eframe::egui;
 use glam::{Vec2, Vec3};
 
 use super::WidgetRects;
+use super::body_overlay;
+use super::boids_attention::{attention_section_ui, draw_attention, selected_attention};
 use super::metrics_panel::{METRICS_PANEL_HEIGHT, metrics_panel_ui, side_color};
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
 use super::show_bottom_panel;
@@ -15,6 +17,8 @@ use crate::render::OrbitCamera;
 use crate::settings::tank::TankSettings;
 use crate::settings::{Settings, Side};
 use crate::sim::Obstacle;
+use crate::sim::boids::attention::Attention;
+use crate::sim::boids::forces::Perception;
 
 /// Radius of a rock a teacher adds by clicking, metres. Default 0.6 m: clearly
 /// visible, two fish lengths across, small enough to place between others.
@@ -114,9 +118,27 @@ pub struct BoidsPanel {
     tool: EditTool,
     /// The obstacle being dragged with the Move tool: tank and index.
     dragging: Option<(Side, usize)>,
+    /// What each tank's selected fish paid attention to in the last step.
+    attention: [Option<Attention>; 2],
 }
 
 impl ScenePanel for BoidsPanel {
+    fn before_frame(
+        &mut self,
+        lab: &mut Lab,
+        _now_secs: f64,
+        _ctx: &egui::Context,
+    ) -> Option<Notice> {
+        self.attention = [None, None];
+        for run in lab.runs() {
+            if let Some(world) = run.scene().boids() {
+                self.attention[run.side().index()] =
+                    selected_attention(world, lab.settings(), run.side());
+            }
+        }
+        None
+    }
+
     fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
         ui.separator();
         ui.horizontal_wrapped(|ui| {
@@ -135,6 +157,24 @@ impl ScenePanel for BoidsPanel {
                 );
             rects.insert("show_vision", vision.rect);
         });
+        let sides: &[Side] = if settings.compare {
+            &Side::BOTH
+        } else {
+            &[Side::Left]
+        };
+        for &side in sides {
+            let name = settings
+                .compare
+                .then(|| tank_name(side, self.stacked.get()));
+            attention_section_ui(
+                ui,
+                settings,
+                side,
+                name,
+                self.attention[side.index()].as_ref(),
+                rects,
+            );
+        }
         if !settings.compare {
             self.edit_side = Side::Left;
         } else {
@@ -212,17 +252,41 @@ impl ScenePanel for BoidsPanel {
         );
     }
 
-    fn draw_overlays(&self, view: &ViewContext, settings: &Settings, _rects: &mut WidgetRects) {
+    fn draw_overlays(&self, view: &ViewContext, settings: &Settings, rects: &mut WidgetRects) {
         self.stacked.set(view.stacked);
         if settings.show_vision {
             draw_vision(view);
         }
+        if let (Some(selected), Some(attention), Some(world)) = (
+            settings.selected_in(view.side),
+            self.attention[view.side.index()].as_ref(),
+            view.run.scene().boids(),
+        ) {
+            draw_attention(view, world, selected, attention);
+        } else if let Some(selected) = settings.selected_in(view.side) {
+            body_overlay::draw_selection(
+                view.painter,
+                view.rect,
+                view.camera,
+                view.run,
+                view.alpha,
+                selected,
+            );
+        }
+        body_overlay::record_animal_rects(view, rects);
         if view.comparing {
             draw_tank_label(view, settings);
         }
     }
 
     fn view_input(&mut self, input: &ViewInput, settings: &mut Settings) -> Option<Notice> {
+        if self.tool == EditTool::Look {
+            // A click on a fish selects it; on open water, lets it go.
+            if let Some(picked) = body_overlay::clicked_animal(input) {
+                settings.tank_mut(input.side).selected = picked;
+            }
+            return None;
+        }
         self.rock_tool_input(input, settings)
     }
 
@@ -423,45 +487,58 @@ fn draw_vision(view: &ViewContext) {
         }
     }
     // Fans: the field of view in the plane of the heading and the horizontal side.
-    let half = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
     for (i, me) in fish.iter().enumerate().take(VISION_FANS) {
-        let centre = drawn[i];
-        let forward = me.heading();
-        let side = forward.cross(Vec3::Y).normalize_or(Vec3::Z);
-        let mut points = Vec::new();
-        if let Some(c) = to_screen(centre) {
-            points.push(c);
+        draw_view_fan(view, tank, &perception, drawn[i], me.heading(), 110);
+    }
+}
+
+/// The field of view of a fish at `centre` heading along `forward`, drawn as a
+/// fan in the plane of its heading and its horizontal side, out to its vision
+/// distance or the glass; `alpha` is the outline's opacity (0–255).
+pub(super) fn draw_view_fan(
+    view: &ViewContext,
+    tank: crate::sim::Tank,
+    perception: &Perception,
+    centre: Vec3,
+    forward: Vec3,
+    alpha: u8,
+) {
+    let to_screen = |p: Vec3| screen_point(view.camera, view.rect, p);
+    let half = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
+    let side = forward.cross(Vec3::Y).normalize_or(Vec3::Z);
+    let mut points = Vec::new();
+    if let Some(c) = to_screen(centre) {
+        points.push(c);
+    }
+    let segments = 32;
+    for k in 0..=segments {
+        let angle = -half + 2.0 * half * k as f32 / segments as f32;
+        let dir = forward * angle.cos() + side * angle.sin();
+        let reach = perception
+            .vision_distance_m
+            .min(tank.distance_to_glass(centre, dir));
+        if let Some(p) = to_screen(centre + dir * reach) {
+            points.push(p);
         }
-        let segments = 32;
-        for k in 0..=segments {
-            let angle = -half + 2.0 * half * k as f32 / segments as f32;
-            let dir = forward * angle.cos() + side * angle.sin();
-            let reach = perception
-                .vision_distance_m
-                .min(tank.distance_to_glass(centre, dir));
-            if let Some(p) = to_screen(centre + dir * reach) {
-                points.push(p);
-            }
-        }
-        if points.len() > 3 {
-            painter.add(egui::Shape::line(
-                points.clone(),
-                egui::Stroke::new(
-                    1.5,
-                    egui::Color32::from_rgba_unmultiplied(120, 255, 200, 110),
-                ),
-            ));
-            painter.add(egui::Shape::convex_polygon(
-                points,
-                egui::Color32::from_rgba_unmultiplied(120, 255, 200, 18),
-                egui::Stroke::NONE,
-            ));
-        }
+    }
+    if points.len() > 3 {
+        view.painter.add(egui::Shape::line(
+            points.clone(),
+            egui::Stroke::new(
+                1.5,
+                egui::Color32::from_rgba_unmultiplied(120, 255, 200, alpha),
+            ),
+        ));
+        view.painter.add(egui::Shape::convex_polygon(
+            points,
+            egui::Color32::from_rgba_unmultiplied(120, 255, 200, alpha / 6),
+            egui::Stroke::NONE,
+        ));
     }
 }
 
 /// Where `p` is drawn in `rect`, if in front of the camera.
-fn screen_point(camera: &OrbitCamera, rect: egui::Rect, p: Vec3) -> Option<egui::Pos2> {
+pub(super) fn screen_point(camera: &OrbitCamera, rect: egui::Rect, p: Vec3) -> Option<egui::Pos2> {
     let aspect = rect.width() / rect.height().max(1.0);
     camera
         .project(p, aspect)

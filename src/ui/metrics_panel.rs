@@ -72,7 +72,19 @@ const METRICS: [Metric; 5] = [
 pub const METRICS_PANEL_HEIGHT: f32 = 260.0;
 
 /// The urges by their short names, in `Force::ALL` order (the bar chart's axis).
-const URGE_NAMES: [&str; 5] = ["contain", "align", "cohere", "separate", "avoid"];
+pub const URGE_NAMES: [&str; 5] = ["contain", "align", "cohere", "separate", "avoid"];
+
+/// Each urge's colour wherever an urge is drawn on its own (the selected
+/// fish's arrows and table), in [`URGE_NAMES`] order: containment grey-blue,
+/// alignment green, cohesion violet, separation red, avoidance teal (none is a
+/// tank's orange or blue, the selection's yellow or the result's white).
+pub const URGE_COLORS: [egui::Color32; 5] = [
+    egui::Color32::from_rgb(170, 175, 215),
+    egui::Color32::from_rgb(110, 230, 120),
+    egui::Color32::from_rgb(205, 140, 255),
+    egui::Color32::from_rgb(255, 100, 100),
+    egui::Color32::from_rgb(60, 220, 200),
+];
 
 /// Draws the six plots for `runs` (one or two tanks; `labels` names each): the
 /// five school metrics over time and the urges used, each under a caption with

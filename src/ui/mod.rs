@@ -7,6 +7,7 @@
 mod about;
 mod about_text;
 pub mod body_overlay;
+mod boids_attention;
 mod boids_panel;
 pub mod bottom_panel;
 mod control_panel;

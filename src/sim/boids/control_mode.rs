@@ -150,8 +150,6 @@ pub fn combine(
     rng: &mut impl Rng,
 ) -> Combined {
     let w: [f32; 5] = std::array::from_fn(|i| sanitize_weight(weights[i]) / 100.0);
-    let scaled: [Vec3; 5] =
-        std::array::from_fn(|i| forces[i] * (w[i] * FORCE_SHARE_AT_FULL_WEIGHT[i]));
     let mut applied = [false; 5];
     match mode {
         ControlMode::Blended => {
@@ -187,22 +185,42 @@ pub fn combine(
             }
         }
     }
-    // Blended: each force at its weighted share. The one-action modes: the
-    // weight decided how often (or whether) a force is chosen; the chosen force
-    // acts at its full share, so its average effect grows with the weight, not
-    // with the weight squared.
-    let sum: Vec3 = (0..5)
-        .filter(|&i| applied[i])
-        .map(|i| match mode {
-            ControlMode::Blended => scaled[i],
-            _ => forces[i] * FORCE_SHARE_AT_FULL_WEIGHT[i],
-        })
-        .sum();
-    let force = limit_finite(sum, max_force_m_per_s2);
     Combined {
-        force_m_per_s2: force,
+        force_m_per_s2: applied_sum(
+            &contributions(mode, forces, weights),
+            &applied,
+            max_force_m_per_s2,
+        ),
         applied,
     }
+}
+
+/// What each force adds to the steering under `mode` when it is applied (m/s²):
+/// in Blended mode each force at its weighted share (weight/100 × share); in the
+/// one-action modes the weight decided how often (or whether) a force is chosen,
+/// and the chosen force acts at its full share, so its average effect grows with
+/// the weight, not with the weight squared.
+pub fn contributions(mode: ControlMode, forces: &[Vec3; 5], weights: &[f32; 5]) -> [Vec3; 5] {
+    std::array::from_fn(|i| match mode {
+        ControlMode::Blended => {
+            forces[i] * (sanitize_weight(weights[i]) / 100.0 * FORCE_SHARE_AT_FULL_WEIGHT[i])
+        }
+        _ => forces[i] * FORCE_SHARE_AT_FULL_WEIGHT[i],
+    })
+}
+
+/// The steering of the applied `contributions` ([`contributions`]): their sum,
+/// limited to `max_force_m_per_s2`.
+pub fn applied_sum(
+    contributions: &[Vec3; 5],
+    applied: &[bool; 5],
+    max_force_m_per_s2: f32,
+) -> Vec3 {
+    let sum: Vec3 = (0..5)
+        .filter(|&i| applied[i])
+        .map(|i| contributions[i])
+        .sum();
+    limit_finite(sum, max_force_m_per_s2)
 }
 
 /// Draws ρ ∈ [0, Σw) and returns the force whose cumulative interval holds it;

@@ -4,6 +4,7 @@
 //! them; the presets of Table 1 (`world::BoidParams`); the metrics the world
 //! measures every step. `docs/boids.md` explains the model.
 
+pub mod attention;
 pub mod control_mode;
 pub mod forces;
 pub mod metrics;

@@ -334,6 +334,7 @@ impl World {
         }
         self.config.fish_count = fish_count;
         self.snapshot_is_last_boid_step = false;
+        self.attention_ready = false;
     }
 
     /// Keep the first `sharks` sharks and `stingrays` stingrays, or add new ones
@@ -447,6 +448,9 @@ impl World {
     /// of everything at once, so no animal is ever inside an obstacle.
     pub(super) fn settle(&mut self) {
         self.rebuild_stingray_obstacles();
+        // The urges read the obstacles and stingrays: the last step's can no
+        // longer be replayed.
+        self.attention_ready = false;
         for fish in &mut self.fish {
             enforce_hard_constraints(fish, &self.tank, &self.fixed_solids, &self.stingray_solids);
         }

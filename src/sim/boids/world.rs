@@ -15,6 +15,7 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
+use super::attention::StepRecord;
 use super::params::BoidWorldParams;
 use super::placement::{place_obstacles, valid_obstacles};
 use super::predators::escape_force;
@@ -263,6 +264,12 @@ pub struct World {
     /// urgency, 0 = calm), for the alarm that spreads through a school.
     pub(super) fear: Vec<f32>,
     pub(super) next_fear: Vec<f32>,
+    /// What each fish did in the last boid step that cannot be worked out
+    /// again afterwards (the dice, wander, fleeing), for [`World::attention`].
+    pub(super) last_steps: Vec<StepRecord>,
+    /// Can [`World::attention`] replay the last boid step (nothing the urges
+    /// read has changed since)?
+    pub(super) attention_ready: bool,
 }
 
 impl World {
@@ -315,6 +322,8 @@ impl World {
             heeded: Vec::new(),
             fear: Vec::new(),
             next_fear: Vec::new(),
+            last_steps: Vec::new(),
+            attention_ready: false,
         };
         world.fixed_solids.rebuild(&world.obstacles);
         world.set_species_counts(config.sharks, config.stingrays);
@@ -413,6 +422,7 @@ impl World {
     pub fn set_boids(&mut self, boids: Option<BoidParams>) {
         self.boids = boids;
         self.snapshot_is_last_boid_step = false;
+        self.attention_ready = false;
     }
 
     /// Puts into `out` the neighbours fish `i` heeded in the last step: up to
@@ -477,6 +487,7 @@ impl World {
             None => self.step_wandering_fish(),
         }
         self.snapshot_is_last_boid_step = self.boids.is_some();
+        self.attention_ready = self.boids.is_some();
         self.step_stingrays();
         self.step_sharks();
         self.steps += 1;
@@ -523,11 +534,7 @@ impl World {
     /// One step of the boid layer. All fish perceive the same snapshot of the
     /// school (synchronous update), so the result does not depend on fish order.
     pub(super) fn step_boid_fish(&mut self, boids: &BoidParams) {
-        let params = SteeringParams {
-            max_speed_m_per_s: boids.perception.max_speed_m_per_s,
-            max_force_m_per_s2: boids.perception.max_force_m_per_s2,
-            ..self.params
-        };
+        let params = self.boid_steering_params(boids);
         let perception = &boids.perception;
         let tuning = self.world_params.steering;
         let max_force = params.max_force_m_per_s2;
@@ -535,6 +542,7 @@ impl World {
         self.fear.resize(n, 0.0);
         self.next_fear.clear();
         self.next_fear.resize(n, 0.0);
+        self.last_steps.resize(n, StepRecord::default());
         let mut applied_counts = [0u32; 5];
         self.far_field.rebuild(
             self.tank.min_m,
@@ -542,10 +550,7 @@ impl World {
             perception.vision_distance_m * FAR_FIELD_CELL_SHARE,
             &self.positions_m,
         );
-        // Obstacles can only be in a fish's path within this reach.
-        let avoid_reach_m = params.avoidance_look_ahead_m
-            + tuning.avoidance_clearance_m
-            + self.avoid_all.max_radius_m();
+        let avoid_reach_m = self.avoid_reach_m(&params, &tuning);
         // Fish in grid order: neighbours of consecutive fish share cells, so
         // the searches stay in the cache. (The result does not depend on the
         // order: every fish sees the snapshot.)
@@ -603,15 +608,7 @@ impl World {
                 }
             };
             self.heeded[i] = heeded;
-            let neighbours = forces::forces_from_neighbours(
-                &self.positions_m,
-                &self.velocities_m_per_s,
-                i,
-                &heeded.neighbours,
-                heeded.far_centre_m,
-                perception,
-                &tuning,
-            );
+            let urges = self.urges_of(i, &heeded, perception, &params, &tuning, avoid_reach_m);
             // Many eyes: the fright of the heeded neighbours (last step's).
             let alarm = heeded
                 .neighbours
@@ -622,55 +619,6 @@ impl World {
                 .map(|(j, _)| self.fear[j])
                 .fold(0.0, f32::max)
                 * self.world_params.alarm_share;
-            // Containment: stay in the pond, away from its edges (turn back
-            // towards open water when the path leaves the comfortable middle).
-            let containment = forces::steer_towards(
-                velocity_m_per_s
-                    + steering::containment(
-                        position_m,
-                        velocity_m_per_s,
-                        &self.tank,
-                        params.containment_look_ahead_s,
-                        self.world_params.pond_comfort_margin_m,
-                        params.max_speed_m_per_s,
-                    ),
-                velocity_m_per_s,
-                perception,
-            );
-            // Avoidance: the glass, sand and surface (wall algorithm), the
-            // rocks, pillars, ledges and stingrays (rock algorithm) and fish on
-            // a collision course (swaying, clusters as one obstacle).
-            let avoidance = steering::limit(
-                (steering::avoid_walls(
-                    position_m,
-                    velocity_m_per_s,
-                    &self.tank,
-                    self.world_params.wall_range_m,
-                    &tuning,
-                ) + steering::avoid_obstacles(
-                    position_m,
-                    velocity_m_per_s,
-                    self.avoid_all.near(position_m, avoid_reach_m),
-                    params.avoidance_look_ahead_m,
-                    tuning.avoidance_clearance_m,
-                    params.max_speed_m_per_s,
-                ) + forces::avoid_neighbours(
-                    &self.positions_m,
-                    &self.velocities_m_per_s,
-                    i,
-                    &heeded.neighbours,
-                    params.max_speed_m_per_s,
-                    &tuning,
-                )) / perception.response_time_s.max(1e-3),
-                max_force,
-            );
-            let forces = [
-                containment,
-                neighbours.alignment_m_per_s2,
-                neighbours.cohesion_m_per_s2,
-                neighbours.separation_m_per_s2,
-                avoidance,
-            ];
             let escape = escape_force(
                 &self.world_params,
                 position_m,
@@ -681,20 +629,12 @@ impl World {
             );
             self.next_fear[i] = escape.map_or(0.0, |(_, urgency)| urgency);
             let escape = escape.map(|(force, _)| force);
-            let mut weights = boids.weights;
-            if escape.is_some() {
-                weights[2] = (weights[2] * self.world_params.fear_cohesion_factor).min(100.0);
-                weights[3] *= self.world_params.fear_separation_factor;
-            }
-            let mut needs = control_mode::needs_from_forces(&forces, max_force);
-            // Classic ranks the neighbour urges by how much each is needed
-            // (0–1), not by their forces, which saturate inside a school.
-            needs[2] = neighbours.cohesion_need;
-            needs[3] = neighbours.separation_need;
+            let fleeing = escape.is_some();
+            let weights = self.urge_weights(boids, fleeing);
             let combined = control_mode::combine(
                 boids.mode,
-                &forces,
-                &needs,
+                &urges.forces,
+                &urges.needs,
                 &weights,
                 max_force,
                 &mut self.rng,
@@ -715,7 +655,14 @@ impl World {
             } else {
                 Vec3::ZERO
             };
-            let steering_m_per_s2 = combined.force_m_per_s2 + wander + escape.unwrap_or(Vec3::ZERO);
+            let escape = escape.unwrap_or(Vec3::ZERO);
+            let steering_m_per_s2 = combined.force_m_per_s2 + wander + escape;
+            self.last_steps[i] = StepRecord {
+                applied: combined.applied,
+                fleeing,
+                wander_m_per_s2: wander,
+                escape_m_per_s2: escape,
+            };
             self.non_finite_repairs += move_fish(
                 fish,
                 position_m,
