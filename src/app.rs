@@ -251,6 +251,7 @@ impl ShoalApp {
         crate::ui::LabCost {
             secs_per_step: self.lab.step_cost_secs(),
             animals: self.lab.runs().iter().map(|r| r.animal_count()).sum(),
+            fps: self.fps_meter.rate_per_sec(),
         }
     }
 

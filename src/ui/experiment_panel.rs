@@ -50,7 +50,7 @@ fn set_open(ctx: &egui::Context, open: bool) {
 
 /// The side panel's *Experiment…* button: opens (or closes) the window.
 pub fn experiment_button(ui: &mut egui::Ui, rects: &mut WidgetRects) {
-    let r = ui.button("🔬 Experiment…").on_hover_text(
+    let r = ui.button("Experiment…").on_hover_text(
         "Run the tank many times: vary a setting over levels and seeds, measure the school, \
          and plot the answer",
     );
@@ -203,6 +203,8 @@ impl DesignForm {
 pub struct LabCost {
     pub secs_per_step: f64,
     pub animals: usize,
+    /// Frames drawn per second lately (0: not known).
+    pub fps: f64,
 }
 
 /// A design checked: its plan's size and how long it should take here.
@@ -219,6 +221,7 @@ struct Sizing {
     measure_steps: u64,
     /// Wall seconds of computing per step of a run, on this machine.
     secs_per_step: f64,
+    fps: f64,
 }
 
 impl Sizing {
@@ -235,6 +238,7 @@ impl Sizing {
             warmup_steps: plan.warmup_steps,
             measure_steps: plan.measure_steps,
             secs_per_step: here / e.total_steps.max(1) as f64,
+            fps: cost.fps,
         }
     }
 
@@ -242,9 +246,15 @@ impl Sizing {
         self.secs_per_step * (self.runs as u64 * (self.warmup_steps + self.measure_steps)) as f64
     }
 
-    /// Wall seconds with [`FRAME_BUDGET_SECS`] of each frame at [`ASSUMED_FPS`].
+    /// Wall seconds with [`FRAME_BUDGET_SECS`] of each frame at `fps` (the
+    /// frames drawn per second now, or [`ASSUMED_FPS`] when not known).
     fn wall_secs(&self) -> f64 {
-        self.compute_secs() / (FRAME_BUDGET_SECS * ASSUMED_FPS).min(1.0)
+        let fps = if self.fps > 0.0 {
+            self.fps
+        } else {
+            ASSUMED_FPS
+        };
+        self.compute_secs() / (FRAME_BUDGET_SECS * fps).min(1.0)
     }
 }
 
@@ -356,16 +366,21 @@ impl ExperimentPanel {
             .id(egui::Id::unique("experiment_window"))
             .open(&mut open)
             .collapsible(true)
-            .resizable(true)
+            .resizable(false)
             .default_width(width)
             .max_width(width)
             .max_height((screen.height() - 60.0).max(200.0))
             .default_pos(screen.right_top() + egui::vec2(-width - 12.0, 40.0))
             .constrain(true)
             .show(ctx, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    self.contents_ui(ui, settings, &keys, cost, rects, &mut out);
-                });
+                // As tall as the screen allows once the results are longer.
+                let tall = (screen.height() - 120.0).max(160.0);
+                egui::ScrollArea::vertical()
+                    .max_height(tall)
+                    .min_scrolled_height(tall.min(720.0))
+                    .show(ui, |ui| {
+                        self.contents_ui(ui, settings, &keys, cost, rects, &mut out);
+                    });
             });
         if let Some(shown) = shown {
             rects.insert("experiment_window", shown.response.rect);
@@ -394,6 +409,22 @@ impl ExperimentPanel {
             )
             .weak(),
         );
+        if let Some(session) = &self.session {
+            // The design is put away while it runs and while its results show.
+            let plan = session.plan();
+            let r = ui.label(
+                egui::RichText::new(format!(
+                    "{}: {} runs of {:.0} s",
+                    plan.design.name,
+                    plan.run_count(),
+                    plan.steps_per_run() as f64 * plan.dt_secs
+                ))
+                .strong(),
+            );
+            rects.insert("experiment_running_design", r.rect);
+            self.session_ui(ui, rects, out);
+            return;
+        }
         let Some((_, form)) = self.form.as_mut() else {
             return;
         };
@@ -415,7 +446,7 @@ impl ExperimentPanel {
             Some(Err(err)) => {
                 let r = ui.colored_label(
                     ui.visuals().warn_fg_color,
-                    format!("⚠ {}: {}", err.field, err.reason),
+                    format!("Cannot start: {}: {}", err.field, err.reason),
                 );
                 rects.insert("experiment_error", r.rect);
                 false
@@ -424,7 +455,7 @@ impl ExperimentPanel {
         };
         ui.horizontal_wrapped(|ui| {
             let start = ui
-                .add_enabled(valid && !running, egui::Button::new("▶ Start"))
+                .add_enabled(valid && !running, egui::Button::new("Start"))
                 .on_hover_text("Run every level with every seed, a little each frame");
             rects.insert("experiment_start", start.rect);
             if start.clicked()
@@ -446,7 +477,6 @@ impl ExperimentPanel {
                 ));
             }
         });
-        self.session_ui(ui, rects, out);
     }
 
     /// Progress while running; then the results.
@@ -478,11 +508,7 @@ impl ExperimentPanel {
             );
             rects.insert("experiment_progress", bar.rect);
             ui.horizontal(|ui| {
-                let label = if session.paused() {
-                    "▶ Resume"
-                } else {
-                    "⏸ Pause"
-                };
+                let label = if session.paused() { "Resume" } else { "Pause" };
                 let pause = ui.button(label).on_hover_text("Stop the runs for now");
                 rects.insert("experiment_pause", pause.rect);
                 if pause.clicked() {
@@ -490,7 +516,7 @@ impl ExperimentPanel {
                     session.set_paused(!paused);
                 }
                 let cancel = ui
-                    .button("✖ Cancel")
+                    .button("Cancel")
                     .on_hover_text("Stop for good; the runs already finished are kept");
                 rects.insert("experiment_cancel", cancel.rect);
                 if cancel.clicked() {
@@ -547,7 +573,7 @@ impl ExperimentPanel {
             }
             let clear_button = ui
                 .button("New experiment")
-                .on_hover_text("Put these results away and design another");
+                .on_hover_text("Put these results away and design another (download them first)");
             rects.insert("experiment_clear", clear_button.rect);
             clear = clear_button.clicked();
         });
