@@ -69,6 +69,8 @@ pub struct ShoalApp {
     viewed: Option<(Scene, &'static str)>,
     /// The scene's own controls, panel under the tank, overlays and picking.
     scene_panel: CurrentPanel,
+    /// The *Experiment…* window and the experiment under way, if any.
+    experiment: crate::ui::ExperimentPanel,
     ctx: egui::Context,
 }
 
@@ -114,6 +116,7 @@ impl ShoalApp {
             following: false,
             viewed: None,
             scene_panel: CurrentPanel::new(lab_scene),
+            experiment: crate::ui::ExperimentPanel::default(),
             ctx: cc.egui_ctx.clone(),
         })
     }
@@ -241,6 +244,38 @@ impl ShoalApp {
         let result = command.execute(&mut self.lab);
         self.ctx.request_repaint();
         result
+    }
+
+    /// What the lab measured of its own steps, to scale an experiment's estimate.
+    fn lab_cost(&self) -> crate::ui::LabCost {
+        crate::ui::LabCost {
+            secs_per_step: self.lab.step_cost_secs(),
+            animals: self.lab.runs().iter().map(|r| r.animal_count()).sum(),
+            fps: self.fps_meter.rate_per_sec(),
+        }
+    }
+
+    /// Starts an experiment from a design (`shoal.experiment()`), with the
+    /// current settings under any the design leaves out.
+    pub fn start_experiment(
+        &mut self,
+        design: &serde_json::Value,
+    ) -> Result<(), crate::experiment::DesignError> {
+        let design = crate::experiment::Design::from_json(&design.to_string())?;
+        let cost = self.lab_cost();
+        self.experiment.start(&self.ctx, &design, cost)
+    }
+
+    /// Cancels the experiment under way (`shoal.cancel_experiment()`), keeping
+    /// its completed runs; false if none was running.
+    pub fn cancel_experiment(&mut self) -> bool {
+        self.ctx.request_repaint();
+        self.experiment.cancel()
+    }
+
+    /// `shoal.state().experiment`.
+    pub fn experiment_report(&self) -> Option<crate::experiment::ExperimentReport> {
+        self.experiment.report()
     }
 
     /// Frames what the scene is about (the whole tank unless its panel says
@@ -563,6 +598,7 @@ impl eframe::App for ShoalApp {
             .map_or(0.0, |last| now_secs - last);
         self.last_frame_time_secs = Some(now_secs);
         self.lab.advance_frame(frame_secs, now_secs);
+        let experimenting = self.experiment.frame(now_secs);
         self.fps_meter.record(now_secs, 1);
         self.frames_drawn += 1;
 
@@ -631,8 +667,26 @@ impl eframe::App for ShoalApp {
                 self.notice_ui(ui);
             });
         crate::ui::about_window(ui.ctx(), settings.scene, &mut self.widget_rects);
+        let cost = self.lab_cost();
+        let mut watch = false;
+        for outcome in self
+            .experiment
+            .window_ui(ui.ctx(), &settings, cost, &mut self.widget_rects)
+        {
+            match outcome {
+                crate::ui::ExperimentOutcome::Watch(run) => {
+                    settings = *run;
+                    watch = true;
+                }
+                crate::ui::ExperimentOutcome::Notice(notice) => self.notice = Some(notice),
+            }
+        }
         if &settings != self.lab.settings() {
             self.lab.apply_settings(settings);
+        }
+        if watch {
+            // The run from its start, as the experiment ran it.
+            self.lab.reset(None);
         }
         self.apply(actions);
         // A new scene or demo opens framed on what it is about, wherever the
@@ -653,7 +707,7 @@ impl eframe::App for ShoalApp {
 
         // Keep animating while the simulation runs. While paused the picture is
         // still, so egui repaints only on input: a paused class saves battery.
-        if !self.lab.settings().paused {
+        if !self.lab.settings().paused || experimenting {
             ui.ctx().request_repaint();
         }
     }

@@ -259,6 +259,12 @@ impl Lab {
         self.rebuild();
     }
 
+    /// Wall seconds one step of every tank took lately (0 before any was
+    /// measured): the experiment panel scales its time estimate by it.
+    pub fn step_cost_secs(&self) -> f64 {
+        self.step_cost_secs
+    }
+
     /// Limits the simulation's wall-clock time per frame (the app sets
     /// [`INTERACTIVE_FRAME_BUDGET_SECS`]); steps per frame then adapt to the measured
     /// cost of a step. Results stay deterministic: only how many fixed steps run per

@@ -783,3 +783,54 @@ impl Plan {
         }
     }
 }
+
+/// The settings of `base`'s scene a factor may vary, as `factors[].key` names
+/// them (`left.alignment`, `left.shark`): every number or on/off setting that
+/// acts in the scene and that [`Design::validate`] accepts at its current
+/// value. The experiment panel's list of factors comes from here, so it never
+/// offers what the engine would refuse.
+pub fn factor_keys(base: &Settings) -> Vec<String> {
+    fn leaves(prefix: &str, value: &Value, out: &mut Vec<(String, Value)>) {
+        match value {
+            Value::Object(map) => {
+                for (k, v) in map {
+                    let key = if prefix.is_empty() {
+                        k.clone()
+                    } else {
+                        format!("{prefix}.{k}")
+                    };
+                    leaves(&key, v, out);
+                }
+            }
+            Value::Bool(_) | Value::Number(_) | Value::Null => {
+                out.push((prefix.to_owned(), value.clone()));
+            }
+            _ => {}
+        }
+    }
+    let base_value = settings_value(base);
+    let mut all = Vec::new();
+    leaves("", &base_value, &mut all);
+    all.into_iter()
+        .filter(|(key, _)| inert_reason(key, base.scene).is_none())
+        .filter(|(key, current)| {
+            // An unset optional setting (null) is offered if it takes a count.
+            let level = if current.is_null() {
+                Value::from(1)
+            } else {
+                current.clone()
+            };
+            let factor = Factor {
+                key: key.clone(),
+                levels: Value::Array(vec![level]),
+            };
+            plan_factor(0, &factor, base, &base_value).is_ok()
+        })
+        .map(|(key, _)| key)
+        .collect()
+}
+
+/// Is `key` an on/off setting in `base` (its levels are then `false` and `true`)?
+pub fn is_switch(base: &Settings, key: &str) -> bool {
+    value_at(&settings_value(base), key).is_some_and(Value::is_boolean)
+}

@@ -13,6 +13,8 @@
 //!   [`crate::lab::Lab::step`], measured from the same metrics samples and reef
 //!   census the plots read), advanced in slices so that the browser can
 //!   time-slice it; [`Experiment`] runs a plan's runs one after another.
+//! - [`session`]: an experiment inside the app, a slice of wall time per
+//!   frame, with pause, cancel and `shoal.state().experiment`.
 //! - [`csv`]: the tidy CSV (one row per run × measure, × sample for series), its
 //!   `#` lines carrying the design, and the merge of shard files.
 //! - [`summary`]: mean and 95 % confidence interval over seeds per level, for the
@@ -26,12 +28,16 @@ pub mod csv;
 pub mod design;
 pub mod measure;
 pub mod runner;
+pub mod session;
 pub mod summary;
 
 pub use self::csv::{MergeError, experiment_csv, merge_csv};
 pub use self::design::{Design, DesignError, Estimate, Measure, Plan, RunSpec, Summary};
 pub use self::runner::{Experiment, ExperimentProgress, ExperimentRun, RunProgress, RunResult};
+pub use self::session::{ExperimentReport, ExperimentSession};
 pub use self::summary::{SummaryRow, summarise, summary_table};
 
+#[cfg(test)]
+mod session_tests;
 #[cfg(test)]
 mod tests;

@@ -218,6 +218,8 @@ impl ScenePanel for BoidsPanel {
         if restore.clicked() {
             settings.tank_mut(self.edit_side).obstacles = None;
         }
+        ui.add_space(4.0);
+        super::experiment_panel::experiment_button(ui, rects);
     }
 
     fn bottom_ui(

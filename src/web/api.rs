@@ -15,8 +15,37 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 19] = [
-        ("state", Box::new(|app, _| to_json(&app.state_report()))),
+    let methods: [(&str, Box<Method>); 21] = [
+        (
+            "state",
+            Box::new(|app, _| {
+                let mut state = to_json(&app.state_report())?;
+                if let (Some(report), Some(object)) =
+                    (app.experiment_report(), state.as_object_mut())
+                {
+                    object.insert("experiment".into(), to_json(&report)?);
+                }
+                Ok(state)
+            }),
+        ),
+        (
+            "experiment",
+            Box::new(|app, arg| {
+                let design = arg.ok_or_else(|| {
+                    AutomationError::BadArgument(
+                        "shoal.experiment(design): give a design object, as in experiments/*.json"
+                            .into(),
+                    )
+                })?;
+                app.start_experiment(&design)
+                    .map_err(|err| AutomationError::BadArgument(err.to_string()))?;
+                Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "cancel_experiment",
+            Box::new(|app, _| Ok(serde_json::Value::Bool(app.cancel_experiment()))),
+        ),
         (
             "share_link",
             Box::new(|app, _| Ok(serde_json::Value::String(app.share_link()))),
@@ -138,9 +167,30 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
         Reflect::set(&api, &name.into(), closure.as_ref())?;
         closure.forget(); // Lives as long as the page.
     }
+    Reflect::set(&api, &"run_experiment".into(), &run_experiment_js())?;
     let window = web_sys::window().ok_or_else(|| js_error("no window"))?;
     Reflect::set(&window, &"shoal".into(), &api)?;
     Ok(())
+}
+
+/// `shoal.run_experiment(design)`: starts the experiment and returns a Promise
+/// that resolves with `{summary, csv}` when it is done (polling `state()` every
+/// 200 ms), or rejects if the design is refused or the experiment cancelled.
+fn run_experiment_js() -> js_sys::Function {
+    js_sys::Function::new_with_args(
+        "design",
+        "return new Promise((resolve, reject) => {
+            try { window.shoal.experiment(design); } catch (err) { reject(err); return; }
+            const poll = () => {
+                let e;
+                try { e = window.shoal.state().experiment; } catch (err) { reject(err); return; }
+                if (e && e.running) { setTimeout(poll, 200); return; }
+                if (e && !e.cancelled && e.summary) { resolve({summary: e.summary, csv: e.csv}); return; }
+                reject(new Error('the experiment was cancelled'));
+            };
+            poll();
+        });",
+    )
 }
 
 /// `{name: {x, y, width, height}}` in CSS pixels.

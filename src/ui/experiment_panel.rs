@@ -1,0 +1,942 @@
+//! The *Experiment…* window (issue 16): a student chooses a setting to vary
+//! (and optionally a second), its levels, the seeds, the warm-up and measuring
+//! times and the measures; sees how many runs that is and about how long; and
+//! starts it. The runs go on a slice per frame (see
+//! [`crate::experiment::session`]) while the tank keeps swimming; a progress
+//! bar, *Pause* and *Cancel*; then the dose–response plots and table
+//! (`experiment_plot.rs`), *Download CSV* and *Save design* (the file
+//! `shoal-lab` runs headless).
+//!
+//! Nothing here knows a scene: the settings a factor may vary come from the
+//! engine ([`factor_keys`]), the measures from [`Measure::available_in`], and
+//! the base settings are the current ones. The schooling lab's side panel has
+//! the button ([`experiment_button`]).
+
+use eframe::egui;
+use serde_json::{Value, json};
+
+use super::WidgetRects;
+use super::experiment_plot::{WatchRequest, level_text, results_ui};
+use super::scene_panel::Notice;
+use crate::experiment::design::{
+    Factor, MeasureChoice, Replicates, acting_section, factor_keys, is_switch, settings_value,
+};
+use crate::experiment::session::FRAME_BUDGET_SECS;
+use crate::experiment::{
+    Design, DesignError, ExperimentReport, ExperimentSession, Measure, Plan, RunSpec, Summary,
+};
+use crate::settings::{Scene, Settings};
+
+/// A browser is slower than the native core the engine's estimate is for:
+/// about 2.5× (docs/benchmarks.md), used until the lab's own cost is measured.
+const BROWSER_SLOWDOWN: f64 = if cfg!(target_arch = "wasm32") {
+    2.5
+} else {
+    1.0
+};
+
+/// Frames a second assumed for the estimate's wall time (the experiment gets
+/// [`FRAME_BUDGET_SECS`] of each). Default 40: between the 60 of an idle page
+/// and the 30 the budget aims to keep.
+const ASSUMED_FPS: f64 = 40.0;
+
+fn open_id() -> egui::Id {
+    egui::Id::unique("experiment_open")
+}
+
+fn set_open(ctx: &egui::Context, open: bool) {
+    ctx.data_mut(|d| d.insert_temp(open_id(), open));
+}
+
+/// The side panel's *Experiment…* button: opens (or closes) the window.
+pub fn experiment_button(ui: &mut egui::Ui, rects: &mut WidgetRects) {
+    let r = ui.button("Experiment…").on_hover_text(
+        "Run the tank many times: vary a setting over levels and seeds, measure the school, \
+         and plot the answer",
+    );
+    rects.insert("experiment", r.rect);
+    if r.clicked() {
+        let open = ui.data(|d| d.get_temp::<bool>(open_id()).unwrap_or(false));
+        set_open(ui.ctx(), !open);
+    }
+}
+
+/// One factor as the form holds it: a setting and a range of levels (an on/off
+/// setting's levels are off and on).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FactorForm {
+    pub key: String,
+    pub from: f64,
+    pub to: f64,
+    pub steps: u32,
+}
+
+impl FactorForm {
+    /// `key` from 0 to about twice its current value, in 3 levels.
+    fn new(base: &Settings, key: &str) -> Self {
+        let current = crate::experiment::design::value_at(&settings_value(base), key)
+            .and_then(Value::as_f64)
+            .unwrap_or(1.0);
+        Self {
+            key: key.to_owned(),
+            from: 0.0,
+            to: if current > 0.0 { 2.0 * current } else { 1.0 },
+            steps: 3,
+        }
+    }
+
+    fn factor(&self, base: &Settings) -> Factor {
+        Factor {
+            key: self.key.clone(),
+            levels: if is_switch(base, &self.key) {
+                json!([false, true])
+            } else {
+                json!({"from": self.from, "to": self.to, "steps": self.steps})
+            },
+        }
+    }
+}
+
+/// One measure's row of the form.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeasureForm {
+    pub measure: Measure,
+    pub on: bool,
+    /// The last sample instead of the mean over the window.
+    pub last: bool,
+}
+
+/// The window's form: everything a [`Design`] needs but the base settings
+/// (the current ones, given when the design is made).
+#[derive(Clone, Debug, PartialEq)]
+pub struct DesignForm {
+    pub name: String,
+    pub factor: FactorForm,
+    pub second: Option<FactorForm>,
+    pub seeds: u32,
+    pub first_seed: u64,
+    pub warmup_secs: f64,
+    pub measure_secs: f64,
+    pub measures: Vec<MeasureForm>,
+}
+
+impl DesignForm {
+    /// A first sweep for `base`'s scene: its first settable factor (alignment
+    /// in the schooling lab), 3 seeds, 10 s warm-up, 20 s measured, the first
+    /// measure on.
+    pub fn new(base: &Settings, keys: &[String]) -> Self {
+        let key = keys
+            .iter()
+            .find(|k| k.ends_with(".alignment"))
+            .or_else(|| keys.first())
+            .cloned()
+            .unwrap_or_default();
+        let measures: Vec<MeasureForm> = Measure::ALL
+            .into_iter()
+            .filter(|m| m.available_in(base.scene))
+            .enumerate()
+            .map(|(k, measure)| MeasureForm {
+                measure,
+                on: k == 0,
+                last: measure.is_counter(),
+            })
+            .collect();
+        Self {
+            name: format!("{}-sweep", key.rsplit('.').next().unwrap_or("my")),
+            factor: FactorForm::new(base, &key),
+            second: None,
+            seeds: 3,
+            first_seed: 1,
+            warmup_secs: 10.0,
+            measure_secs: 20.0,
+            measures,
+        }
+    }
+
+    /// The design: the scene and its own settings as they are now, then the form.
+    pub fn design(&self, base: &Settings) -> Design {
+        let section = acting_section(base.scene);
+        let all = settings_value(base);
+        let mut settings = serde_json::Map::new();
+        settings.insert("scene".into(), Value::from(base.scene.name()));
+        if let Some(v) = all.get(section) {
+            settings.insert(section.into(), v.clone());
+        }
+        Design {
+            name: self.name.clone(),
+            description: String::new(),
+            link: None,
+            settings: Some(Value::Object(settings)),
+            factors: std::iter::once(&self.factor)
+                .chain(&self.second)
+                .map(|f| f.factor(base))
+                .collect(),
+            replicates: Replicates {
+                count: Some(self.seeds),
+                first_seed: Some(self.first_seed),
+                seeds: None,
+            },
+            warmup_secs: self.warmup_secs,
+            measure_secs: self.measure_secs,
+            measures: self
+                .measures
+                .iter()
+                .filter(|m| m.on)
+                .map(|m| MeasureChoice {
+                    measure: m.measure.name().to_owned(),
+                    summary: if m.last {
+                        Summary::Final
+                    } else {
+                        Summary::Mean
+                    }
+                    .name()
+                    .to_owned(),
+                })
+                .collect(),
+        }
+    }
+}
+
+/// What the lab measured of its own steps: wall seconds per step of all its
+/// animals (0: not yet), to scale the engine's estimate to this machine.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LabCost {
+    pub secs_per_step: f64,
+    pub animals: usize,
+    /// Frames drawn per second lately (0: not known).
+    pub fps: f64,
+}
+
+/// A design checked: its plan's size and how long it should take here.
+#[derive(Clone, Debug)]
+struct Checked {
+    design: Design,
+    result: Result<Sizing, DesignError>,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Sizing {
+    runs: usize,
+    warmup_steps: u64,
+    measure_steps: u64,
+    /// Wall seconds of computing per step of a run, on this machine.
+    secs_per_step: f64,
+    fps: f64,
+}
+
+impl Sizing {
+    fn of(plan: &Plan, cost: LabCost) -> Self {
+        let e = plan.estimate();
+        let engine = e.secs_one_core * BROWSER_SLOWDOWN;
+        let here = if cost.secs_per_step > 0.0 && cost.animals > 0 {
+            e.animal_steps * cost.secs_per_step / cost.animals as f64
+        } else {
+            engine
+        };
+        Self {
+            runs: e.runs,
+            warmup_steps: plan.warmup_steps,
+            measure_steps: plan.measure_steps,
+            secs_per_step: here / e.total_steps.max(1) as f64,
+            fps: cost.fps,
+        }
+    }
+
+    fn compute_secs(&self) -> f64 {
+        self.secs_per_step * (self.runs as u64 * (self.warmup_steps + self.measure_steps)) as f64
+    }
+
+    /// Wall seconds with [`FRAME_BUDGET_SECS`] of each frame at `fps` (the
+    /// frames drawn per second now, or [`ASSUMED_FPS`] when not known).
+    fn wall_secs(&self) -> f64 {
+        let fps = if self.fps > 0.0 {
+            self.fps
+        } else {
+            ASSUMED_FPS
+        };
+        self.compute_secs() / (FRAME_BUDGET_SECS * fps).min(1.0)
+    }
+}
+
+/// What the window asks of the app.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExperimentOutcome {
+    /// Set the tank to these settings and restart it (watch one run).
+    Watch(Box<Settings>),
+    Notice(Notice),
+}
+
+/// The window, the form and the experiment under way (or finished).
+#[derive(Default)]
+pub struct ExperimentPanel {
+    form: Option<(Scene, DesignForm)>,
+    keys: Option<(Scene, Vec<String>)>,
+    checked: Option<Checked>,
+    session: Option<ExperimentSession>,
+}
+
+/// "about 3 min", "about 40 s".
+pub fn duration_text(secs: f64) -> String {
+    if !secs.is_finite() {
+        "–".into()
+    } else if secs < 1.0 {
+        "under a second".into()
+    } else if secs < 90.0 {
+        format!("about {:.0} s", secs)
+    } else if secs < 90.0 * 60.0 {
+        format!("about {:.0} min", secs / 60.0)
+    } else {
+        format!("about {:.1} h", secs / 3600.0)
+    }
+}
+
+impl ExperimentPanel {
+    /// Runs this frame's slice. True while runs remain (keep repainting).
+    pub fn frame(&mut self, now_secs: f64) -> bool {
+        let Some(session) = &mut self.session else {
+            return false;
+        };
+        session.slice(FRAME_BUDGET_SECS, now_secs);
+        session.running()
+    }
+
+    /// Starts `design` (a running experiment is dropped) and opens the window.
+    pub fn start(
+        &mut self,
+        ctx: &egui::Context,
+        design: &Design,
+        cost: LabCost,
+    ) -> Result<(), DesignError> {
+        let plan = design.validate()?;
+        let sizing = Sizing::of(&plan, cost);
+        self.session = Some(ExperimentSession::new(plan, sizing.secs_per_step));
+        set_open(ctx, true);
+        ctx.request_repaint();
+        Ok(())
+    }
+
+    /// Cancels the experiment under way, keeping its completed runs. False if
+    /// none was running.
+    pub fn cancel(&mut self) -> bool {
+        match &mut self.session {
+            Some(s) if s.running() => {
+                s.cancel();
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// `shoal.state().experiment`.
+    pub fn report(&self) -> Option<ExperimentReport> {
+        self.session.as_ref().map(ExperimentSession::report)
+    }
+
+    fn keys_for(&mut self, settings: &Settings) -> Vec<String> {
+        match &self.keys {
+            Some((scene, keys)) if *scene == settings.scene => keys.clone(),
+            _ => {
+                let keys = factor_keys(settings);
+                self.keys = Some((settings.scene, keys.clone()));
+                keys
+            }
+        }
+    }
+
+    /// The window, if open. `settings` are the current ones (the base).
+    pub fn window_ui(
+        &mut self,
+        ctx: &egui::Context,
+        settings: &Settings,
+        cost: LabCost,
+        rects: &mut WidgetRects,
+    ) -> Vec<ExperimentOutcome> {
+        let mut out = Vec::new();
+        let mut open = ctx.data(|d| d.get_temp::<bool>(open_id()).unwrap_or(false));
+        if !open {
+            return out;
+        }
+        let keys = self.keys_for(settings);
+        if self.form.as_ref().is_none_or(|(s, _)| *s != settings.scene) {
+            self.form = Some((settings.scene, DesignForm::new(settings, &keys)));
+        }
+        let screen = ctx.content_rect();
+        let width = (screen.width() - 24.0).clamp(200.0, 560.0);
+        let shown = egui::Window::new("Experiment")
+            .id(egui::Id::unique("experiment_window"))
+            .open(&mut open)
+            .collapsible(true)
+            .resizable(false)
+            .default_width(width)
+            .max_width(width)
+            .max_height((screen.height() - 60.0).max(200.0))
+            .default_pos(screen.right_top() + egui::vec2(-width - 12.0, 40.0))
+            .constrain(true)
+            .show(ctx, |ui| {
+                // As tall as the screen allows once the results are longer.
+                let tall = (screen.height() - 120.0).max(160.0);
+                egui::ScrollArea::vertical()
+                    .max_height(tall)
+                    .min_scrolled_height(tall.min(720.0))
+                    .show(ui, |ui| {
+                        self.contents_ui(ui, settings, &keys, cost, rects, &mut out);
+                    });
+            });
+        if let Some(shown) = shown {
+            rects.insert("experiment_window", shown.response.rect);
+        }
+        set_open(ctx, open);
+        out
+    }
+
+    fn contents_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        settings: &Settings,
+        keys: &[String],
+        cost: LabCost,
+        rects: &mut WidgetRects,
+        out: &mut Vec<ExperimentOutcome>,
+    ) {
+        let running = self
+            .session
+            .as_ref()
+            .is_some_and(ExperimentSession::running);
+        ui.label(
+            egui::RichText::new(
+                "Run this tank many times: vary a setting, repeat each level with other \
+                 seeds, and measure the school. The tank on screen keeps swimming.",
+            )
+            .weak(),
+        );
+        if let Some(session) = &self.session {
+            // The design is put away while it runs and while its results show.
+            let plan = session.plan();
+            let r = ui.label(
+                egui::RichText::new(format!(
+                    "{}: {} runs of {:.0} s",
+                    plan.design.name,
+                    plan.run_count(),
+                    plan.steps_per_run() as f64 * plan.dt_secs
+                ))
+                .strong(),
+            );
+            rects.insert("experiment_running_design", r.rect);
+            self.session_ui(ui, rects, out);
+            return;
+        }
+        let Some((_, form)) = self.form.as_mut() else {
+            return;
+        };
+        ui.add_enabled_ui(!running, |ui| form_ui(ui, form, settings, keys, rects));
+        let design = form.design(settings);
+        if self.checked.as_ref().is_none_or(|c| c.design != design) {
+            let result = design.validate().map(|plan| Sizing::of(&plan, cost));
+            self.checked = Some(Checked {
+                design: design.clone(),
+                result,
+            });
+        }
+        ui.separator();
+        let valid = match self.checked.as_ref().map(|c| &c.result) {
+            Some(Ok(sizing)) => {
+                sizing_ui(ui, form, settings, sizing, rects);
+                true
+            }
+            Some(Err(err)) => {
+                let r = ui.colored_label(
+                    ui.visuals().warn_fg_color,
+                    format!("Cannot start: {}: {}", err.field, err.reason),
+                );
+                rects.insert("experiment_error", r.rect);
+                false
+            }
+            None => false,
+        };
+        ui.horizontal_wrapped(|ui| {
+            let start = ui
+                .add_enabled(valid && !running, egui::Button::new("Start"))
+                .on_hover_text("Run every level with every seed, a little each frame");
+            rects.insert("experiment_start", start.rect);
+            if start.clicked()
+                && let Err(err) = self.start(ui.ctx(), &design, cost)
+            {
+                out.push(ExperimentOutcome::Notice(Notice::error(err.to_string())));
+            }
+            let save = ui
+                .button("Save design")
+                .on_hover_text("Download this design as a file: shoal-lab runs it on many cores");
+            rects.insert("experiment_save_design", save.rect);
+            if save.clicked() {
+                let text = serde_json::to_string_pretty(&design).unwrap_or_default();
+                out.push(save_file(
+                    &format!("shoal-experiment-{}.json", file_stem(&design.name)),
+                    "application/json",
+                    &text,
+                    "run it with shoal-lab run, or keep it for next time",
+                ));
+            }
+        });
+    }
+
+    /// Progress while running; then the results.
+    fn session_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        rects: &mut WidgetRects,
+        out: &mut Vec<ExperimentOutcome>,
+    ) {
+        let Some(session) = &mut self.session else {
+            return;
+        };
+        ui.separator();
+        let p = session.progress();
+        if session.running() {
+            let left = session
+                .secs_left()
+                .map_or_else(|| "measuring the pace…".to_owned(), duration_text);
+            let text = format!(
+                "{} of {} runs · {}{}",
+                p.runs_done,
+                p.runs_total,
+                if session.paused() { "paused · " } else { "" },
+                if session.paused() { "" } else { &left },
+            );
+            let bar = ui.add(
+                egui::ProgressBar::new(p.steps_done as f32 / p.steps_total.max(1) as f32)
+                    .text(text),
+            );
+            rects.insert("experiment_progress", bar.rect);
+            ui.horizontal(|ui| {
+                let label = if session.paused() { "Resume" } else { "Pause" };
+                let pause = ui.button(label).on_hover_text("Stop the runs for now");
+                rects.insert("experiment_pause", pause.rect);
+                if pause.clicked() {
+                    let paused = session.paused();
+                    session.set_paused(!paused);
+                }
+                let cancel = ui
+                    .button("Cancel")
+                    .on_hover_text("Stop for good; the runs already finished are kept");
+                rects.insert("experiment_cancel", cancel.rect);
+                if cancel.clicked() {
+                    session.cancel();
+                }
+            });
+            return;
+        }
+        let plan = session.plan().clone();
+        let heading = if session.cancelled() {
+            format!(
+                "Cancelled: the {} completed runs of {} are kept below.",
+                p.runs_done, p.runs_total
+            )
+        } else {
+            format!("Done: {} runs.", p.runs_done)
+        };
+        let r = ui.label(egui::RichText::new(heading).strong());
+        rects.insert("experiment_results", r.rect);
+        let rows = session.experiment().summary();
+        if let Some(WatchRequest { levels, seed }) = results_ui(ui, &plan, &rows, rects) {
+            let spec = RunSpec {
+                index: 0,
+                levels: levels.clone(),
+                seed,
+            };
+            let mut watched = plan.settings_for(&spec);
+            watched.paused = false;
+            out.push(ExperimentOutcome::Watch(Box::new(watched)));
+            let what: Vec<String> = plan
+                .factors
+                .iter()
+                .zip(&levels)
+                .map(|(f, l)| format!("{} = {}", f.key, level_text(l)))
+                .collect();
+            out.push(ExperimentOutcome::Notice(Notice::info(format!(
+                "Watching the run with {}, seed {seed}, from its start.",
+                what.join(", ")
+            ))));
+        }
+        let mut clear = false;
+        ui.horizontal_wrapped(|ui| {
+            let csv = ui
+                .button("Download CSV")
+                .on_hover_text("Every run's numbers, one row per run and measure");
+            rects.insert("experiment_csv", csv.rect);
+            if csv.clicked() {
+                out.push(save_file(
+                    &format!("shoal-experiment-{}.csv", file_stem(&plan.design.name)),
+                    "text/csv",
+                    &session.experiment().csv(),
+                    "open it with a spreadsheet",
+                ));
+            }
+            let clear_button = ui
+                .button("New experiment")
+                .on_hover_text("Put these results away and design another (download them first)");
+            rects.insert("experiment_clear", clear_button.rect);
+            clear = clear_button.clicked();
+        });
+        if clear {
+            self.session = None;
+        }
+    }
+}
+
+/// The form's widgets.
+fn form_ui(
+    ui: &mut egui::Ui,
+    form: &mut DesignForm,
+    settings: &Settings,
+    keys: &[String],
+    rects: &mut WidgetRects,
+) {
+    egui::Grid::new("experiment_form")
+        .num_columns(2)
+        .spacing([8.0, 6.0])
+        .show(ui, |ui| {
+            ui.label("Name");
+            let r = ui.add(egui::TextEdit::singleline(&mut form.name).desired_width(160.0));
+            rects.insert("experiment_name", r.rect);
+            ui.end_row();
+            factor_ui(
+                ui,
+                "Vary",
+                "experiment_factor",
+                &mut form.factor,
+                settings,
+                keys,
+                rects,
+            );
+            ui.label("");
+            let mut two = form.second.is_some();
+            let r = ui
+                .checkbox(&mut two, "and a second setting")
+                .on_hover_text("One curve per level of a second setting");
+            rects.insert("experiment_second_on", r.rect);
+            ui.end_row();
+            if two && form.second.is_none() {
+                let key = keys
+                    .iter()
+                    .find(|k| **k != form.factor.key)
+                    .cloned()
+                    .unwrap_or_default();
+                let mut second = FactorForm::new(settings, &key);
+                second.steps = 2;
+                form.second = Some(second);
+            } else if !two {
+                form.second = None;
+            }
+            if let Some(second) = &mut form.second {
+                factor_ui(
+                    ui,
+                    "Then",
+                    "experiment_factor2",
+                    second,
+                    settings,
+                    keys,
+                    rects,
+                );
+            }
+            ui.label("Seeds")
+                .on_hover_text("Each level is run once per seed: the same fish, a different start");
+            ui.horizontal(|ui| {
+                let r = ui.add(egui::DragValue::new(&mut form.seeds).range(1..=1000));
+                rects.insert("experiment_seeds", r.rect);
+                ui.label("from seed");
+                let r = ui.add(
+                    egui::DragValue::new(&mut form.first_seed).range(0..=crate::settings::SEED_MAX),
+                );
+                rects.insert("experiment_first_seed", r.rect);
+            });
+            ui.end_row();
+            ui.label("Warm-up")
+                .on_hover_text("Seconds of each run before measuring: the school forms");
+            let r = ui.add(
+                egui::DragValue::new(&mut form.warmup_secs)
+                    .range(0.0..=3600.0)
+                    .speed(0.5)
+                    .suffix(" s"),
+            );
+            rects.insert("experiment_warmup", r.rect);
+            ui.end_row();
+            ui.label("Measure for")
+                .on_hover_text("Seconds of each run measured after the warm-up");
+            let r = ui.add(
+                egui::DragValue::new(&mut form.measure_secs)
+                    .range(0.0..=3600.0)
+                    .speed(0.5)
+                    .suffix(" s"),
+            );
+            rects.insert("experiment_measure", r.rect);
+            ui.end_row();
+        });
+    ui.label(egui::RichText::new("Measures").strong());
+    egui::Grid::new("experiment_measures")
+        .num_columns(2)
+        .spacing([8.0, 2.0])
+        .show(ui, |ui| {
+            for m in &mut form.measures {
+                let r = ui.checkbox(&mut m.on, m.measure.name());
+                rects.insert(&format!("experiment_measure_{}", m.measure.name()), r.rect);
+                ui.horizontal(|ui| {
+                    ui.selectable_value(&mut m.last, false, "mean")
+                        .on_hover_text("The mean over the measuring time");
+                    ui.selectable_value(&mut m.last, true, "final")
+                        .on_hover_text("The value at the end of the run");
+                });
+                ui.end_row();
+            }
+        });
+}
+
+/// A factor's setting and levels.
+fn factor_ui(
+    ui: &mut egui::Ui,
+    label: &str,
+    id: &str,
+    factor: &mut FactorForm,
+    settings: &Settings,
+    keys: &[String],
+    rects: &mut WidgetRects,
+) {
+    ui.label(label)
+        .on_hover_text("The setting that changes from run to run");
+    let before = factor.key.clone();
+    let r = egui::ComboBox::from_id_salt(id)
+        .selected_text(&factor.key)
+        .height(320.0)
+        .show_ui(ui, |ui| {
+            for key in keys {
+                let r = ui.selectable_value(&mut factor.key, key.clone(), key);
+                rects.insert(&format!("{id}_{key}"), r.rect);
+            }
+        });
+    rects.insert(id, r.response.rect);
+    if factor.key != before {
+        *factor = FactorForm::new(settings, &factor.key.clone());
+    }
+    ui.end_row();
+    ui.label("");
+    if is_switch(settings, &factor.key) {
+        ui.label("off and on");
+    } else {
+        ui.horizontal_wrapped(|ui| {
+            ui.label("from");
+            let r = ui.add(egui::DragValue::new(&mut factor.from).speed(0.5));
+            rects.insert(&format!("{id}_from"), r.rect);
+            ui.label("to");
+            let r = ui.add(egui::DragValue::new(&mut factor.to).speed(0.5));
+            rects.insert(&format!("{id}_to"), r.rect);
+            ui.label("in");
+            let r = ui.add(egui::DragValue::new(&mut factor.steps).range(1..=1000));
+            rects.insert(&format!("{id}_steps"), r.rect);
+            ui.label("levels");
+        });
+    }
+    ui.end_row();
+}
+
+/// The design's size and time, before it starts.
+fn sizing_ui(
+    ui: &mut egui::Ui,
+    form: &DesignForm,
+    settings: &Settings,
+    sizing: &Sizing,
+    rects: &mut WidgetRects,
+) {
+    let dt = crate::experiment::design::scene_dt_secs(settings.scene);
+    let levels = sizing.runs / form.seeds.max(1) as usize;
+    let grid = egui::Grid::new("experiment_sizing")
+        .num_columns(2)
+        .striped(true)
+        .show(ui, |ui| {
+            ui.label("Runs");
+            ui.label(format!(
+                "{levels} levels × {} seeds = {}",
+                form.seeds, sizing.runs
+            ));
+            ui.end_row();
+            ui.label("Steps per run");
+            ui.label(format!(
+                "{} warm-up + {} measured ({:.3} s each)",
+                sizing.warmup_steps, sizing.measure_steps, dt
+            ));
+            ui.end_row();
+            ui.label("Time");
+            ui.label(duration_text(sizing.wall_secs()))
+                .on_hover_text(format!(
+                    "{} of computing, done {:.0} ms a frame while the tank keeps swimming",
+                    duration_text(sizing.compute_secs()),
+                    FRAME_BUDGET_SECS * 1000.0
+                ));
+            ui.end_row();
+        });
+    rects.insert("experiment_sizing", grid.response.rect);
+}
+
+/// A name safe in a file name.
+fn file_stem(name: &str) -> String {
+    let stem: String = name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+                c
+            } else {
+                '-'
+            }
+        })
+        .collect();
+    if stem.is_empty() {
+        "experiment".into()
+    } else {
+        stem
+    }
+}
+
+fn save_file(name: &str, mime: &str, text: &str, next: &str) -> ExperimentOutcome {
+    ExperimentOutcome::Notice(match super::save_text_file(name, mime, text, Some(next)) {
+        Ok(message) => Notice::info(message),
+        Err(err) => Notice::error(err.to_string()),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn boids() -> Settings {
+        Settings {
+            scene: Scene::Boids,
+            ..Settings::default()
+        }
+    }
+
+    #[test]
+    fn the_form_makes_the_plan_it_shows() {
+        let mut base = boids();
+        base.left.fish_count = 30;
+        let keys = factor_keys(&base);
+        let mut form = DesignForm::new(&base, &keys);
+        assert_eq!(form.factor.key, "left.alignment");
+        form.factor.from = 10.0;
+        form.factor.to = 50.0;
+        form.factor.steps = 3;
+        form.seeds = 2;
+        form.first_seed = 7;
+        form.warmup_secs = 1.0;
+        form.measure_secs = 2.0;
+        let design = form.design(&base);
+        let plan = design.validate().expect("valid");
+        assert_eq!(plan.run_count(), 6);
+        assert_eq!(plan.seeds, vec![7, 8]);
+        assert_eq!(
+            plan.factors[0].levels,
+            vec![json!(10.0), json!(30.0), json!(50.0)]
+        );
+        assert_eq!(
+            plan.base.left.fish_count, 30,
+            "the current settings are the base"
+        );
+        assert_eq!(plan.warmup_steps, 60);
+        assert_eq!(plan.measures, vec![(Measure::Polarization, Summary::Mean)]);
+        // The saved design reads back as the same plan (the shoal-lab file).
+        let text = serde_json::to_string_pretty(&design).expect("json");
+        let again = Design::from_json(&text).and_then(|d| d.validate());
+        assert_eq!(again.expect("valid again"), plan);
+        // A second factor, a switch measured at its end.
+        let switch = keys.iter().find(|k| is_switch(&base, k)).cloned();
+        let mut second = FactorForm::new(&base, "left.fish_count");
+        second.from = 10.0;
+        second.to = 20.0;
+        second.steps = 2;
+        form.second = Some(second);
+        form.measures[1].on = true;
+        form.measures[1].last = true;
+        let plan = form.design(&base).validate().expect("valid");
+        assert_eq!(plan.run_count(), 12);
+        assert_eq!(plan.factors[1].levels, vec![json!(10), json!(20)]);
+        assert_eq!(plan.measures[1].1, Summary::Final);
+        if let Some(key) = switch {
+            form.second = Some(FactorForm::new(&base, &key));
+            let plan = form.design(&base).validate().expect("valid");
+            assert_eq!(plan.factors[1].levels, vec![json!(false), json!(true)]);
+        }
+    }
+
+    #[test]
+    fn an_invalid_form_is_refused_naming_the_field() {
+        let base = boids();
+        let keys = factor_keys(&base);
+        let mut form = DesignForm::new(&base, &keys);
+        form.factor.to = 500.0;
+        let err = form.design(&base).validate().expect_err("out of range");
+        assert_eq!(err.field, "factors[0].levels", "{err}");
+        form.factor.to = 50.0;
+        for m in &mut form.measures {
+            m.on = false;
+        }
+        let err = form.design(&base).validate().expect_err("no measure");
+        assert_eq!(err.field, "measures");
+        form.measures[0].on = true;
+        form.measure_secs = 0.0;
+        assert_eq!(
+            form.design(&base).validate().expect_err("0 s").field,
+            "measure_secs"
+        );
+    }
+
+    #[test]
+    fn the_form_offers_the_engines_factors_and_the_scenes_measures() {
+        let base = boids();
+        let keys = factor_keys(&base);
+        let form = DesignForm::new(&base, &keys);
+        let names: Vec<&str> = form.measures.iter().map(|m| m.measure.name()).collect();
+        assert_eq!(
+            names,
+            [
+                "polarization",
+                "milling",
+                "nnd_body_lengths",
+                "groups",
+                "mean_speed_m_per_s",
+                "catches"
+            ]
+        );
+        for key in &keys {
+            let f = FactorForm::new(&base, key);
+            let design = Design {
+                factors: vec![f.factor(&base)],
+                ..form.design(&base)
+            };
+            // Every offered setting is accepted at some levels (its own range
+            // may refuse the form's default "0 to twice").
+            let one = Design {
+                factors: vec![Factor {
+                    key: key.clone(),
+                    levels: if is_switch(&base, key) {
+                        json!([false, true])
+                    } else {
+                        json!([
+                            crate::experiment::design::value_at(&settings_value(&base), key)
+                                .cloned()
+                                .filter(|v| !v.is_null())
+                                .unwrap_or(json!(1))
+                        ])
+                    },
+                }],
+                ..design
+            };
+            assert!(one.validate().is_ok(), "{key}: {:?}", one.validate().err());
+        }
+    }
+
+    #[test]
+    fn durations_read_as_a_person_says_them() {
+        assert_eq!(duration_text(0.2), "under a second");
+        assert_eq!(duration_text(40.0), "about 40 s");
+        assert_eq!(duration_text(600.0), "about 10 min");
+        assert_eq!(duration_text(7200.0), "about 2.0 h");
+        assert_eq!(file_stem("my sweep/1"), "my-sweep-1");
+    }
+}

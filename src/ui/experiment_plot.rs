@@ -1,0 +1,244 @@
+//! An experiment's results in the window: a dose–response plot per measure
+//! (the mean over seeds with its 95 % interval against the factor's level; with
+//! two factors one line per level of the second) and a table whose buttons set
+//! the tank to one run, to watch it. A click near a point of a plot does the
+//! same for that level's first seed.
+
+use eframe::egui;
+use egui_plot::{Legend, Line, MarkerShape, Plot, PlotPoints, Points};
+use serde_json::Value;
+
+use super::WidgetRects;
+use crate::experiment::{Plan, SummaryRow};
+
+/// Height of one dose–response plot, points. Default 150: two plots and the
+/// table fit a laptop's window; a phone scrolls.
+const PLOT_HEIGHT: f32 = 150.0;
+
+/// The run a student asked to watch: its levels and seed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WatchRequest {
+    pub levels: Vec<Value>,
+    pub seed: u64,
+}
+
+/// A level on a plot's x axis: a number as it is, off and on as 0 and 1.
+fn level_x(level: &Value) -> f64 {
+    match level {
+        Value::Bool(b) => f64::from(u8::from(*b)),
+        other => other.as_f64().unwrap_or(f64::NAN),
+    }
+}
+
+/// A level as a person reads it (`80`, not `80.0`; `on`, `off`).
+pub fn level_text(level: &Value) -> String {
+    match level {
+        Value::Bool(true) => "on".into(),
+        Value::Bool(false) => "off".into(),
+        Value::Number(n) => n
+            .as_f64()
+            .map_or_else(|| n.to_string(), |x| format!("{}", (x * 1e6).round() / 1e6)),
+        other => other.to_string(),
+    }
+}
+
+/// Three significant digits.
+fn short(x: f64) -> String {
+    if !x.is_finite() {
+        return "–".into();
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let digits = (2 - x.abs().log10().floor() as i32).clamp(0, 6) as usize;
+    format!("{x:.digits$}")
+}
+
+/// Line colours for the second factor's levels (the first is the school's
+/// usual orange).
+fn series_color(k: usize) -> egui::Color32 {
+    const COLORS: [egui::Color32; 6] = [
+        egui::Color32::from_rgb(255, 170, 60),
+        egui::Color32::from_rgb(90, 170, 255),
+        egui::Color32::from_rgb(120, 220, 120),
+        egui::Color32::from_rgb(230, 110, 200),
+        egui::Color32::from_rgb(240, 230, 110),
+        egui::Color32::from_rgb(170, 170, 170),
+    ];
+    COLORS[k % COLORS.len()]
+}
+
+/// The plots and the table of `rows` (the summary of `plan`'s completed runs).
+/// Returns the run to watch, if one was asked for.
+pub fn results_ui(
+    ui: &mut egui::Ui,
+    plan: &Plan,
+    rows: &[SummaryRow],
+    rects: &mut WidgetRects,
+) -> Option<WatchRequest> {
+    let mut watch = None;
+    if rows.is_empty() {
+        ui.label("No run has finished yet.");
+        return None;
+    }
+    for (m, &(measure, summary)) in plan.measures.iter().enumerate() {
+        let summary_name = if summary == crate::experiment::Summary::Final {
+            "final"
+        } else {
+            "mean"
+        };
+        ui.label(egui::RichText::new(format!("{} ({summary_name})", measure.name())).strong());
+        let mine: Vec<&SummaryRow> = rows.iter().filter(|r| r.measure == measure).collect();
+        if let Some(w) = dose_response_plot(ui, plan, m, &mine, rects) {
+            watch = Some(w);
+        }
+    }
+    ui.add_space(4.0);
+    ui.label(egui::RichText::new("Mean over seeds [95 % interval]").strong());
+    egui::ScrollArea::horizontal()
+        .id_salt("experiment_table_scroll")
+        .show(ui, |ui| {
+            let grid = egui::Grid::new("experiment_table")
+                .striped(true)
+                .show(ui, |ui| {
+                    for factor in &plan.factors {
+                        ui.strong(&factor.key);
+                    }
+                    ui.strong("n");
+                    for &(measure, _) in &plan.measures {
+                        ui.strong(measure.name());
+                    }
+                    ui.strong("watch a run");
+                    ui.end_row();
+                    for (r, chunk) in rows.chunks(plan.measures.len().max(1)).enumerate() {
+                        let Some(first) = chunk.first() else {
+                            continue;
+                        };
+                        for level in &first.levels {
+                            ui.label(level_text(level));
+                        }
+                        ui.label(first.n.to_string());
+                        for row in chunk {
+                            ui.label(if row.ci95_low.is_finite() {
+                                format!(
+                                    "{} [{}, {}]",
+                                    short(row.mean),
+                                    short(row.ci95_low),
+                                    short(row.ci95_high)
+                                )
+                            } else {
+                                short(row.mean)
+                            });
+                        }
+                        ui.horizontal(|ui| {
+                            for (k, &seed) in plan.seeds.iter().take(first.n).enumerate() {
+                                let b = ui.small_button(format!("seed {seed}")).on_hover_text(
+                                    "Set the tank to this level and seed, from the start: \
+                                     watch this very run",
+                                );
+                                rects.insert(&format!("experiment_watch_{r}_{k}"), b.rect);
+                                if b.clicked() {
+                                    watch = Some(WatchRequest {
+                                        levels: first.levels.clone(),
+                                        seed,
+                                    });
+                                }
+                            }
+                        });
+                        ui.end_row();
+                    }
+                });
+            rects.insert("experiment_table", grid.response.rect);
+        });
+    watch
+}
+
+/// One measure's plot: x the first factor's level, one line per level of the
+/// second factor, error bars the 95 % interval.
+fn dose_response_plot(
+    ui: &mut egui::Ui,
+    plan: &Plan,
+    m: usize,
+    rows: &[&SummaryRow],
+    rects: &mut WidgetRects,
+) -> Option<WatchRequest> {
+    let (measure, _) = plan.measures[m];
+    // The lines: one per level of the second factor (or one).
+    let second_levels: Vec<Option<&Value>> = match plan.factors.get(1) {
+        Some(f) => f.levels.iter().map(Some).collect(),
+        None => vec![None],
+    };
+    let x_name = plan
+        .factors
+        .first()
+        .map_or_else(|| "(no factor)".to_owned(), |f| f.key.clone());
+    let mut points_all: Vec<([f64; 2], Vec<Value>)> = Vec::new();
+    let response = Plot::new(("experiment_plot", m))
+        .height(PLOT_HEIGHT)
+        .allow_scroll(false)
+        .allow_drag(false)
+        .allow_zoom(false)
+        .legend(Legend::default())
+        .x_axis_label(x_name)
+        .show(ui, |plot| {
+            for (k, second) in second_levels.iter().enumerate() {
+                let name = match (plan.factors.get(1), second) {
+                    (Some(f), Some(level)) => format!("{} = {}", f.key, level_text(level)),
+                    _ => measure.name().to_owned(),
+                };
+                let color = series_color(k);
+                let line: Vec<&&SummaryRow> = rows
+                    .iter()
+                    .filter(|r| second.is_none_or(|s| r.levels.get(1) == Some(s)))
+                    .collect();
+                let xy: Vec<[f64; 2]> = line
+                    .iter()
+                    .map(|r| [r.levels.first().map_or(0.0, level_x), r.mean])
+                    .collect();
+                for (r, p) in line.iter().zip(&xy) {
+                    points_all.push((*p, r.levels.clone()));
+                    if r.ci95_low.is_finite() {
+                        plot.line(
+                            Line::new(
+                                name.clone(),
+                                PlotPoints::from(vec![[p[0], r.ci95_low], [p[0], r.ci95_high]]),
+                            )
+                            .color(color)
+                            .width(1.5),
+                        );
+                    }
+                }
+                plot.line(Line::new(name.clone(), PlotPoints::from(xy.clone())).color(color));
+                plot.points(
+                    Points::new(name, PlotPoints::from(xy))
+                        .color(color)
+                        .shape(MarkerShape::Circle)
+                        .radius(3.5),
+                );
+            }
+            // A click near a point: watch that level's first seed.
+            if plot.response().clicked() {
+                let bounds = plot.plot_bounds();
+                let (w, h) = (bounds.width().max(1e-9), bounds.height().max(1e-9));
+                plot.pointer_coordinate().and_then(|at| {
+                    points_all
+                        .iter()
+                        .map(|(p, levels)| {
+                            let d = ((p[0] - at.x) / w).powi(2) + ((p[1] - at.y) / h).powi(2);
+                            (d, levels)
+                        })
+                        .filter(|(d, _)| *d < 0.05 * 0.05)
+                        .min_by(|a, b| a.0.total_cmp(&b.0))
+                        .map(|(_, levels)| levels.clone())
+                })
+            } else {
+                None
+            }
+        });
+    rects.insert(&format!("experiment_plot_{m}"), response.response.rect);
+    let levels = response.inner?;
+    Some(WatchRequest {
+        levels,
+        seed: *plan.seeds.first()?,
+    })
+}
