@@ -465,6 +465,11 @@ fn inert_reason(key: &str, scene: Scene) -> Option<String> {
                 "'{key}' changes how a run is shown, not what happens in it"
             ));
         }
+        _ if key.ends_with(".selected") || key.ends_with(".follow") => {
+            return Some(format!(
+                "'{key}' chooses the fish shown in detail, not what happens in a run"
+            ));
+        }
         _ => {}
     }
     let acts = if scene == Scene::Aquarium {

@@ -93,6 +93,11 @@ fn every_refusal_names_its_field() {
             "replicates",
         ),
         (
+            json!({"factors": [{"key": "left.selected", "levels": [1, 2]}]}),
+            "factors[0].key",
+            "chooses the fish shown",
+        ),
+        (
             json!({"factors": [{"key": "left.mode", "levels": [1]}]}),
             "factors[0].key",
             "not a number",
