@@ -146,8 +146,9 @@ pub fn summary_table(plan: &Plan, rows: &[SummaryRow]) -> String {
     out
 }
 
-/// Three significant digits, for a table a person reads.
-fn significant(x: f64) -> String {
+/// Three significant digits, for a table a person reads ("–" when not a
+/// number).
+pub fn significant(x: f64) -> String {
     if !x.is_finite() {
         return "–".into();
     }

@@ -9,6 +9,7 @@ use egui_plot::{Legend, Line, MarkerShape, Plot, PlotPoints, Points};
 use serde_json::Value;
 
 use super::WidgetRects;
+use crate::experiment::summary::significant;
 use crate::experiment::{Plan, SummaryRow};
 
 /// Height of one dose–response plot, points. Default 150: two plots and the
@@ -40,18 +41,6 @@ pub fn level_text(level: &Value) -> String {
             .map_or_else(|| n.to_string(), |x| format!("{}", (x * 1e6).round() / 1e6)),
         other => other.to_string(),
     }
-}
-
-/// Three significant digits.
-fn short(x: f64) -> String {
-    if !x.is_finite() {
-        return "–".into();
-    }
-    if x == 0.0 {
-        return "0".into();
-    }
-    let digits = (2 - x.abs().log10().floor() as i32).clamp(0, 6) as usize;
-    format!("{x:.digits$}")
 }
 
 /// Line colours for the second factor's levels (the first is the school's
@@ -122,12 +111,12 @@ pub fn results_ui(
                             ui.label(if row.ci95_low.is_finite() {
                                 format!(
                                     "{} [{}, {}]",
-                                    short(row.mean),
-                                    short(row.ci95_low),
-                                    short(row.ci95_high)
+                                    significant(row.mean),
+                                    significant(row.ci95_low),
+                                    significant(row.ci95_high)
                                 )
                             } else {
-                                short(row.mean)
+                                significant(row.mean)
                             });
                         }
                         ui.horizontal(|ui| {
