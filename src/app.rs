@@ -615,6 +615,14 @@ impl eframe::App for ShoalApp {
         if let Some(notice) = scene_panel.before_frame(&mut self.lab, now_secs, &self.ctx) {
             self.notice = Some(notice);
         }
+        if self
+            .notice
+            .as_ref()
+            .and_then(|n| n.about_world)
+            .is_some_and(|g| g != self.lab.world_generation())
+        {
+            self.notice = None;
+        }
         let mut settings = self.lab.settings().clone();
         scene_panel.bottom_ui(ui, &self.lab, &mut settings, &mut self.widget_rects);
 

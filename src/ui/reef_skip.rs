@@ -39,7 +39,7 @@ impl SkipUi {
             return None;
         }
         self.seen_finished = lab.skips_finished();
-        Some(match lab.skip_outcome()? {
+        let notice = match lab.skip_outcome()? {
             SkipOutcome::Found {
                 moment,
                 resumed_at_secs,
@@ -61,7 +61,9 @@ impl SkipUi {
                  there. Try another seed.",
                 clock(*searched_secs)
             )),
-        })
+        };
+        // It speaks of this run's moment: another demo or seed makes it wrong.
+        Some(notice.about_world(lab.world_generation()))
     }
 
     /// The button, or the search's progress and *Cancel*. Also selects and

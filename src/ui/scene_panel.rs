@@ -40,6 +40,10 @@ pub enum PanelAction {
 pub struct Notice {
     pub text: String,
     pub is_error: bool,
+    /// The world (`Lab::world_generation`) the notice speaks of: it goes when
+    /// that world is rebuilt (a new scene, demo or seed). `None`: it stays until
+    /// closed.
+    pub about_world: Option<u64>,
 }
 
 impl Notice {
@@ -48,6 +52,7 @@ impl Notice {
         Self {
             text: text.into(),
             is_error: false,
+            about_world: None,
         }
     }
 
@@ -56,6 +61,15 @@ impl Notice {
         Self {
             text: text.into(),
             is_error: true,
+            about_world: None,
+        }
+    }
+
+    /// The same notice, gone once world `generation` is rebuilt.
+    pub fn about_world(self, generation: u64) -> Self {
+        Self {
+            about_world: Some(generation),
+            ..self
         }
     }
 }

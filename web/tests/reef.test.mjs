@@ -236,6 +236,12 @@ describe("reef", () => {
     s = await state(page);
     const spawned = s.reef.events.find((e) => /spawned/.test(e.text));
     assert.equal(spawned.time_secs, last.moment.time_secs);
+    // The notice spoke of this run's spawning: another demo takes it away.
+    assert.match((await state(page)).notice ?? "", /Skipped ahead to/);
+    await clickUntil(page, "reef_demo_feeding", () => window.shoal.state().reef.demo === "feeding");
+    await page.waitForFunction(() => !/Skipped ahead/.test(window.shoal.state().notice ?? ""), null, {
+      timeout: 10_000,
+    });
     assert.deepEqual(errors, []);
   });
 

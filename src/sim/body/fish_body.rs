@@ -152,6 +152,8 @@
 //! added straight into the band, and the solve multiplies by stored reciprocal
 //! pivots. Still deterministic: no threads, no clocks, no allocation.
 
+use std::f32::consts::FRAC_PI_2;
+
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
@@ -236,14 +238,36 @@ pub struct BodyParams {
     /// Strength of the righting couple per ring, paper force units per unit of
     /// sin(tilt). Default 20.0, chosen (not tuned): keeps the fish level and upright
     /// in every test run; without it the body pitches nose-down by about 24° while
-    /// swimming. Restores both roll and pitch, so climbing comes from fin lift with
-    /// the body level. Stands for the swim bladder above the centre of mass
+    /// swimming. Restores roll, and pitch towards the fin trim (`fin_trim_gain`):
+    /// level for flat fins. Stands for the swim bladder above the centre of mass
     /// (neutral buoyancy: no net force, no gravity).
     pub righting_force: f32,
     /// Area of one pectoral fin, paper units². Default 6.0, chosen (about a quarter
     /// of the flank area of one body ring); a ±0.5 rad fin pitch changes the depth by
     /// more than 0.5 % of a body length in 30 s at top swim speed (test).
     pub pectoral_fin_area: f32,
+    /// Fin trim: body pitch per radian of the two fins' mean pitch, dimensionless,
+    /// for fins that trim ([`PectoralFins::climb`], the reef's minds climbing or
+    /// diving). Default 1.0, chosen. The righting couple holds the body at this
+    /// pitch (nose up for fins pitched up) instead of level. Stands for the fins'
+    /// own pitching moment, which in a real fish tilts the body: in this body the
+    /// fins act too close to the centre of mass to tilt it against the righting
+    /// couple (under 1° at 0.5 rad; `docs/fish-body.md`), and lift alone climbs
+    /// about 1 cm/s, so a muscle fish circled food half a metre above or below
+    /// it. 0 restores the level body.
+    #[serde(default = "default_fin_trim_gain")]
+    pub fin_trim_gain: f32,
+    /// Largest trim, radians. Default 0.5 (29°), chosen: the reef's steepest climb.
+    #[serde(default = "default_max_trim_rad")]
+    pub max_trim_rad: f32,
+}
+
+fn default_fin_trim_gain() -> f32 {
+    1.0
+}
+
+fn default_max_trim_rad() -> f32 {
+    0.5
 }
 
 impl Default for BodyParams {
@@ -260,6 +284,8 @@ impl Default for BodyParams {
             integrator: Integrator::Bdf2,
             righting_force: 20.0,
             pectoral_fin_area: 6.0,
+            fin_trim_gain: default_fin_trim_gain(),
+            max_trim_rad: default_max_trim_rad(),
         }
     }
 }
@@ -768,10 +794,17 @@ impl FishBody {
             }
         }
 
-        // Righting couple (explicit): pull each ring's dorsal pair towards the world
-        // vertical and its ventral pair the other way. Zero net force, zero when
-        // level and upright; restores roll and pitch.
-        let vertical = Vec3::Z;
+        // Righting couple (explicit): pull each ring's dorsal pair towards the
+        // trimmed vertical (the world vertical tilted back by the fin trim, so
+        // the body pitches nose up for fins pitched up) and its ventral pair the
+        // other way. Zero net force, zero when upright at the trim; restores roll
+        // and pitch.
+        let vertical = trimmed_vertical(
+            forward,
+            fins,
+            self.params.fin_trim_gain,
+            self.params.max_trim_rad,
+        );
         let righting = self.params.righting_force * force_scale;
         for k in 0..RING_COUNT {
             let [dl, dr, vr, vl] = ring_nodes(k);
@@ -815,6 +848,21 @@ impl FishBody {
             }
         }
     }
+}
+
+/// The direction the righting couple pulls the back towards, body frame (z up):
+/// the world vertical, tilted back by the fin trim (the fins' mean pitch ×
+/// `gain`, at most `max_rad`) in the vertical plane of the heading, so that a
+/// body at rest in it pitches nose up by the trim. Level for fins that do not
+/// trim, a vertical heading or non-finite input.
+fn trimmed_vertical(forward: Vec3, fins: &PectoralFins, gain: f32, max_rad: f32) -> Vec3 {
+    let fin_pitch = 0.5 * (fins.left_angle_rad + fins.right_angle_rad) - FRAC_PI_2;
+    let level = Vec3::new(forward.x, forward.y, 0.0).normalize_or_zero();
+    let trim = (gain * fin_pitch).clamp(-max_rad.abs(), max_rad.abs());
+    if !fins.trim || !trim.is_finite() || level == Vec3::ZERO {
+        return Vec3::Z;
+    }
+    trim.cos() * Vec3::Z - trim.sin() * level
 }
 
 /// Per-spring results of [`spring_terms`], one array entry per spring of

@@ -30,6 +30,12 @@ pub struct PectoralFins {
     pub left_angle_rad: f32,
     /// Right fin θ in [π/4, π]; π/2 neutral.
     pub right_angle_rad: f32,
+    /// Do the fins trim the body (hold it pitched by their mean pitch, see
+    /// `BodyParams::fin_trim_gain`)? Set by the reef's minds when they climb or
+    /// dive ([`PectoralFins::climb`]); the physics scene's bridge, bobbing and
+    /// braking leave the body level.
+    #[serde(default)]
+    pub trim: bool,
 }
 
 impl Default for PectoralFins {
@@ -43,12 +49,14 @@ impl PectoralFins {
     pub const NEUTRAL: Self = Self {
         left_angle_rad: FRAC_PI_2,
         right_angle_rad: FRAC_PI_2,
+        trim: false,
     };
 
     /// Both fins across the flow (θ = π): brake.
     pub const BRAKE: Self = Self {
         left_angle_rad: PI,
         right_angle_rad: PI,
+        trim: false,
     };
 
     /// Both fins tilted by `pitch_rad` from flat: positive raises the leading edge and
@@ -58,6 +66,17 @@ impl PectoralFins {
         Self {
             left_angle_rad: theta,
             right_angle_rad: theta,
+            trim: false,
+        }
+    }
+
+    /// Both fins tilted by `pitch_rad` as in [`PectoralFins::pitch`], trimming
+    /// the body: it pitches nose up (or down) with them and swims up (or down)
+    /// its own axis.
+    pub fn climb(pitch_rad: f32) -> Self {
+        Self {
+            trim: true,
+            ..Self::pitch(pitch_rad)
         }
     }
 

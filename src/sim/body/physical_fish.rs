@@ -593,10 +593,12 @@ mod tests {
         let (left_drag, _) = swim(PectoralFins {
             left_angle_rad: PI,
             right_angle_rad: FRAC_PI_2,
+            ..PectoralFins::NEUTRAL
         });
         let (right_drag, _) = swim(PectoralFins {
             left_angle_rad: FRAC_PI_2,
             right_angle_rad: PI,
+            ..PectoralFins::NEUTRAL
         });
         assert!(
             left_drag > straight + 3.0,
@@ -612,10 +614,12 @@ mod tests {
         let (_, to_right) = swim(PectoralFins {
             left_angle_rad: FRAC_PI_2 + 0.5,
             right_angle_rad: FRAC_PI_2 - 0.5,
+            ..PectoralFins::NEUTRAL
         });
         let (_, to_left) = swim(PectoralFins {
             left_angle_rad: FRAC_PI_2 - 0.5,
             right_angle_rad: FRAC_PI_2 + 0.5,
+            ..PectoralFins::NEUTRAL
         });
         assert!(
             to_right > level + 0.1 && to_left < level - 0.1,

@@ -6,7 +6,7 @@
 //! |----------------------------------------|-------------------|
 //! | to swim on (heading error under [`MotorChoiceParams::turn_mc_min_deg`]) | swim-MC at the wished speed; course kept by a bend of the turning segments proportional to the error ([`MotorChoiceParams::course_gain_per_rad`], `body::turn_mc::add_steering`) |
 //! | to swim somewhere [`MotorChoiceParams::turn_mc_min_deg`] or more off its heading | turn-MC(angle), at most 90° at a time; the routine asks again when the turn is done (not while pursuing a moving target, [`Gait::Pursue`]: it keeps re-aiming with the held bend) |
-//! | to climb or dive                       | both pectoral fins pitched (twice the elevation error, at most ±0.5 rad) |
+//! | to climb or dive                       | both pectoral fins pitched (twice the elevation error, at most ±0.5 rad), trimming the body: it pitches with them and swims up or down its own axis (`BodyParams::fin_trim_gain`) |
 //! | to go much slower than it swims, towards a goal less than [`MotorChoiceParams::turn_mc_min_deg`] off its heading | fins across the flow (brake), no tail beat (a goal further round is turned to first: the turn needs the tail's thrust) |
 //! | to hover ([`Gait::Hover`])             | no tail beat, fins across the flow: the fish stops within a body length and stays |
 //! | to hover and bob ([`Gait::Bob`])       | a slow tail beat ([`MotorChoiceParams::bob_swim_fraction`]) against fins that brake and tilt up and down together at [`MotorChoiceParams::bob_hz`]: the fish holds its place and rises and sinks |
@@ -189,7 +189,7 @@ pub fn choose(params: &MotorChoiceParams, wish: &Wish, body: &Body, time_secs: f
     let elevation = d.y.atan2(level);
     let pitch = body.heading.y.clamp(-1.0, 1.0).asin();
     let fins = if wanted > 0.0 {
-        PectoralFins::pitch(
+        PectoralFins::climb(
             (params.pitch_gain * (elevation - pitch))
                 .clamp(-params.max_fin_pitch_rad, params.max_fin_pitch_rad),
         )
@@ -362,6 +362,9 @@ mod tests {
             0.0,
         );
         assert!(up.fins.left_angle_rad > std::f32::consts::FRAC_PI_2);
+        assert!(up.fins.trim, "climbing fins trim the body");
+        let bob = choose(&MotorChoiceParams::default(), &Wish::bob(), &body(0.0, false), 0.0);
+        assert!(!bob.fins.trim, "bobbing leaves the body level");
         let nan = choose(
             &MotorChoiceParams::default(),
             &Wish::swim(Vec3::NAN),

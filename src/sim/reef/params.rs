@@ -47,15 +47,12 @@ pub struct ReefParams {
     pub suck_range_body_lengths: f32,
     /// How many metres of level swimming a metre of climbing or diving costs a
     /// muscle fish choosing its food (its perceptual focusser weighs the food's
-    /// distance so, §6.3). 10, chosen (`docs/fish-mind.md`: with 1, 4, 10 and 20
-    /// the six fish of the *Feeding* demo ate 24, 128, 173 and 145 plankton in
-    /// 4 × 132 s, steering by the held bend only): the righting couple
-    /// holds the muscle body level and only the fins' lift raises it, about 1 cm/s
-    /// at cruising speed against 0.2 m/s of level swimming (measured), so a
-    /// particle a metre overhead took minutes to reach while level ones went
-    /// uneaten. The point-mass body climbs as fast as it swims (1). On the converged
-    /// body (seeds 1–8, 60 s, `feeding_census`): 124 plankton with 10, 111 with 20,
-    /// 101 with 40.
+    /// distance so, §6.3). 4, chosen: the fins trim the muscle body to climb at
+    /// most 29° (`BodyParams::fin_trim_gain`) and it turns in a circle of 1.2
+    /// body lengths, so food overhead is reached by a long spiral. *Feeding*,
+    /// seeds 1–8, 60 s (`feeding_census`): 45 plankton with 1, 116 with 2, 149
+    /// with 4, 134 with 10 (point masses 342; `docs/departures.md`, climb
+    /// effort). The point-mass body climbs as fast as it swims (1).
     pub climb_effort_muscle_body: f32,
     /// The vacuum acts in the half-space ahead of the mouth (cos 90° = 0).
     pub suck_cone_cos: f32,
@@ -131,7 +128,7 @@ impl Default for ReefParams {
             start_fed_for_max_secs: 30.0,
             courtship_digestion_fraction: 0.1,
             suck_range_body_lengths: 1.0,
-            climb_effort_muscle_body: 10.0,
+            climb_effort_muscle_body: 4.0,
             suck_cone_cos: 0.0,
             predator_suck_range_body_lengths: 0.6,
             swallow_body_lengths: 0.3,

@@ -219,9 +219,10 @@ fn feeding_census() {
 fn muscle_fish_eat_at_least_two_fifths_as_fast_as_point_mass_fish() {
     // Same seeds, same 60 s: the muscle body hovers at its food (swim-MC
     // off, fins braking) while the vacuum sucks it in. Not yet as fast as
-    // the point mass: its fins lift it about 1 cm/s, so plankton half a
-    // metre above or below its mouth is circled, not reached (seeds 1–8:
-    // muscle 124, point mass 342; `feeding_census`, docs/departures.md).
+    // the point mass: it climbs at most 29° (the fin trim) and turns in a
+    // circle of 1.2 body lengths, so it swims past plankton a point mass turns
+    // onto (seeds 1–8: muscle 149, point mass 342; `feeding_census`,
+    // docs/departures.md).
     let (mut muscle, mut point) = (0, 0);
     for seed in [3, 4] {
         muscle += feeding_rate(ReefBodyKind::Physical, seed, 60.0);
