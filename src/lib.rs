@@ -7,6 +7,9 @@
 //! `app` ties them together; `automation` is the `window.shoal` API; `web` is the
 //! browser glue.
 
+// Drawing only: the platform's sin, cos… are fine here (clippy.toml forbids them
+// everywhere a run's numbers are computed; see sim::common::fmath).
+#[allow(clippy::disallowed_methods)]
 pub mod app;
 pub mod automation;
 pub mod bench;
@@ -15,9 +18,11 @@ pub mod experiment;
 pub mod export;
 pub mod lab;
 pub mod metrics_history;
+#[allow(clippy::disallowed_methods)] // drawing only (see `app`)
 pub mod render;
 pub mod settings;
 pub mod sim;
+#[allow(clippy::disallowed_methods)] // drawing only (see `app`)
 pub mod ui;
 
 #[cfg(target_arch = "wasm32")]

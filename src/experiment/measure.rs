@@ -3,6 +3,8 @@
 //! ([`Summary`]).
 
 use crate::settings::Scene;
+use crate::sim::SceneWorld;
+use crate::sim::reef::mind::habits::FishKind;
 
 /// Measures and summaries travel by name (`"polarization"`, `"mean"`), as in
 /// experiment files and the CSV.
@@ -28,6 +30,10 @@ pub enum Measure {
     NndBodyLengths,
     Groups,
     MeanSpeed,
+    /// How far the average fish of the school swam in the measuring window
+    /// (metres): the fish's mean speed added up step by step (see
+    /// [`school_mean_speed_m_per_s`]).
+    DistanceSwum,
     /// Prey caught by sharks (schooling lab) or predators (reef).
     Catches,
     FoodEaten,
@@ -38,12 +44,13 @@ pub enum Measure {
 }
 
 impl Measure {
-    pub const ALL: [Self; 11] = [
+    pub const ALL: [Self; 12] = [
         Self::Polarization,
         Self::Milling,
         Self::NndBodyLengths,
         Self::Groups,
         Self::MeanSpeed,
+        Self::DistanceSwum,
         Self::Catches,
         Self::FoodEaten,
         Self::Spawnings,
@@ -60,6 +67,7 @@ impl Measure {
             Self::NndBodyLengths => "nnd_body_lengths",
             Self::Groups => "groups",
             Self::MeanSpeed => "mean_speed_m_per_s",
+            Self::DistanceSwum => "distance_swum_m",
             Self::Catches => "catches",
             Self::FoodEaten => "food_eaten",
             Self::Spawnings => "spawnings",
@@ -73,12 +81,13 @@ impl Measure {
         Self::ALL.into_iter().find(|m| m.name() == name)
     }
 
-    /// Counters of events: their values count from the start of the measuring
-    /// window, so the warm-up's events are not measured.
+    /// Counters of events (and the distance swum): their values count from the
+    /// start of the measuring window, so the warm-up is not measured.
     pub fn is_counter(self) -> bool {
         matches!(
             self,
-            Self::Catches
+            Self::DistanceSwum
+                | Self::Catches
                 | Self::FoodEaten
                 | Self::Spawnings
                 | Self::MissedStrikes
@@ -95,7 +104,8 @@ impl Measure {
             | Self::Milling
             | Self::NndBodyLengths
             | Self::Groups
-            | Self::MeanSpeed => scene != Scene::Learning,
+            | Self::MeanSpeed
+            | Self::DistanceSwum => scene != Scene::Learning,
             Self::Catches => matches!(scene, Scene::Boids | Scene::Reef),
             Self::FoodEaten
             | Self::Spawnings
@@ -104,6 +114,33 @@ impl Measure {
             | Self::PreyAlive => scene == Scene::Reef,
         }
     }
+}
+
+/// The mean speed now (m/s) of the fish the school's metrics measure: the
+/// schooling lab's and the aquarium's fish (not sharks or stingrays), the
+/// physics tank's fish (not sharks), the reef's living prey. `None` in the
+/// learning lab, which has no school. Speeds are over the ground, as the
+/// metrics' mean speed (a fish drifting with the current travels too).
+pub fn school_mean_speed_m_per_s(scene: &SceneWorld) -> Option<f64> {
+    let (sum, n) = match scene {
+        SceneWorld::Boids(w) => w.fish().iter().fold((0.0, 0usize), |(s, n), f| {
+            (s + f64::from(f.velocity_m_per_s.length()), n + 1)
+        }),
+        SceneWorld::Physics(w) => w.animals()[..w.fish_count()]
+            .iter()
+            .fold((0.0, 0usize), |(s, n), a| {
+                (s + f64::from(a.point.velocity_m_per_s.length()), n + 1)
+            }),
+        SceneWorld::Reef(w) => w
+            .animals()
+            .iter()
+            .filter(|a| a.alive && a.habits.kind == FishKind::Prey)
+            .fold((0.0, 0usize), |(s, n), a| {
+                (s + f64::from(a.body.velocity_m_per_s().length()), n + 1)
+            }),
+        SceneWorld::Learning(_) => return None,
+    };
+    Some(if n == 0 { 0.0 } else { sum / n as f64 })
 }
 
 /// How a run's samples over the measuring window become the CSV's values.

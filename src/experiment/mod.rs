@@ -38,6 +38,8 @@ pub use self::session::{ExperimentReport, ExperimentSession};
 pub use self::summary::{SummaryRow, summarise, summary_table};
 
 #[cfg(test)]
+mod scene_tests;
+#[cfg(test)]
 mod session_tests;
 #[cfg(test)]
 mod tests;

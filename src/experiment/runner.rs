@@ -65,6 +65,11 @@ pub struct ExperimentRun {
     sample_every_steps: u64,
     /// The counters at the end of the warm-up (see [`Measure::is_counter`]).
     baseline: Vec<f64>,
+    /// Does the plan measure the distance swum? Then the measuring window is
+    /// stepped one step at a time, adding up the fish's mean speed.
+    tracks_distance: bool,
+    /// The distance the average fish swam since the window began (metres).
+    distance_swum_m: f64,
     times_secs: Vec<f64>,
     values: Vec<Vec<f64>>,
 }
@@ -75,6 +80,8 @@ impl ExperimentRun {
         let measures: Vec<Measure> = plan.measures.iter().map(|&(m, _)| m).collect();
         let lab = Lab::new(plan.settings_for(spec));
         let mut run = Self {
+            tracks_distance: measures.contains(&Measure::DistanceSwum),
+            distance_swum_m: 0.0,
             spec: spec.clone(),
             values: vec![Vec::new(); measures.len()],
             measures,
@@ -120,10 +127,19 @@ impl ExperimentRun {
             if steps < self.warmup_steps {
                 stop = stop.min(self.warmup_steps);
             }
-            let n = (stop - steps).min(budget);
+            let mut n = (stop - steps).min(budget);
+            let measuring = steps >= self.warmup_steps;
+            if self.tracks_distance && measuring {
+                n = 1;
+            }
             self.lab.step(n as u32);
             budget -= n;
             steps = self.lab.runs()[0].steps();
+            if self.tracks_distance && measuring {
+                let scene = self.lab.runs()[0].scene();
+                let speed = crate::experiment::measure::school_mean_speed_m_per_s(scene);
+                self.distance_swum_m += speed.unwrap_or(0.0) * scene.dt_secs();
+            }
             if steps == self.warmup_steps {
                 self.baseline = self.read_now();
             }
@@ -159,10 +175,12 @@ impl ExperimentRun {
         let census = run.census().back().copied();
         self.times_secs.push(sample.time_secs);
         for (k, &measure) in self.measures.iter().enumerate() {
-            let mut value = measure_value(measure, &sample, census.as_ref());
-            if measure.is_counter() {
-                value -= self.baseline.get(k).copied().unwrap_or(0.0);
-            }
+            let value = match measure_value(measure, &sample, census.as_ref()) {
+                Some(v) if measure.is_counter() => v - self.baseline.get(k).copied().unwrap_or(0.0),
+                Some(v) => v,
+                // Added up step by step since the window began.
+                None => self.distance_swum_m,
+            };
             self.values[k].push(value);
         }
     }
@@ -182,19 +200,21 @@ impl ExperimentRun {
         let census = scene.census();
         self.measures
             .iter()
-            .map(|&m| measure_value(m, &sample, census.as_ref()))
+            .map(|&m| measure_value(m, &sample, census.as_ref()).unwrap_or(0.0))
             .collect()
     }
 }
 
-/// One measure of a metrics sample and the reef's census at the same step.
+/// One measure of a metrics sample and the reef's census at the same step;
+/// `None` for [`Measure::DistanceSwum`], which is not in a sample (a run adds
+/// it up step by step).
 pub fn measure_value(
     measure: Measure,
     sample: &crate::metrics_history::MetricsSample,
     census: Option<&crate::sim::reef::report::ReefCensus>,
-) -> f64 {
+) -> Option<f64> {
     let counts = census.map(|c| c.counts).unwrap_or_default();
-    match measure {
+    Some(match measure {
         Measure::Polarization => f64::from(sample.polarization),
         Measure::Milling => f64::from(sample.milling),
         Measure::NndBodyLengths => f64::from(sample.nnd_body_lengths),
@@ -206,7 +226,8 @@ pub fn measure_value(
         Measure::MissedStrikes => f64::from(counts.missed_strikes),
         Measure::FishCollisions => f64::from(counts.fish_collisions),
         Measure::PreyAlive => census.map_or(0.0, |c| c.prey as f64),
-    }
+        Measure::DistanceSwum => return None,
+    })
 }
 
 /// How far an experiment is.

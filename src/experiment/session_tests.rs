@@ -9,10 +9,6 @@ const TINY_PATH: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/web/tests/fixtures/experiment-tiny.json"
 );
-const TINY_CSV_PATH: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/web/tests/fixtures/experiment-tiny.csv"
-);
 
 fn tiny_plan() -> Plan {
     let text = std::fs::read_to_string(TINY_PATH).expect("the fixture design");
@@ -118,20 +114,40 @@ fn the_schooling_lab_offers_its_urges_and_not_what_the_engine_refuses() {
     );
 }
 
-/// `web/tests/fixtures/experiment-tiny.csv` is what the engine writes for the
-/// browser test's design; the browser test compares its CSV with the same file.
+/// The browser test's fixture `name` (`web/tests/fixtures/experiment-{name}.json`)
+/// run in one go gives the committed `experiment-{name}.csv`; the browser test
+/// compares its own CSV with the same file, byte for byte.
 /// `SHOAL_WRITE_FIXTURES=1` rewrites it (after a deliberate change of the runs).
-#[test]
-fn the_browser_tests_experiment_gives_the_committed_csv() {
-    let csv = run_in_one_go(tiny_plan());
+fn check_fixture(name: &str) {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/web/tests/fixtures");
+    let design = std::fs::read_to_string(format!("{dir}/experiment-{name}.json"))
+        .expect("the fixture design");
+    let plan = Design::from_json(&design)
+        .and_then(|d| d.validate())
+        .expect("the fixture design is valid");
+    let csv = run_in_one_go(plan);
+    let csv_path = format!("{dir}/experiment-{name}.csv");
     if std::env::var("SHOAL_WRITE_FIXTURES").is_ok_and(|v| v == "1") {
-        std::fs::write(TINY_CSV_PATH, &csv).expect("write the fixture");
+        std::fs::write(&csv_path, &csv).expect("write the fixture");
         return;
     }
-    let committed = std::fs::read_to_string(TINY_CSV_PATH)
+    let committed = std::fs::read_to_string(&csv_path)
         .expect("the committed CSV (SHOAL_WRITE_FIXTURES=1 writes it)");
     assert_eq!(
         csv, committed,
         "the runs changed: if on purpose, rewrite with SHOAL_WRITE_FIXTURES=1"
     );
+}
+
+/// The schooling lab's tiny design (`experiment-tiny`).
+#[test]
+fn the_browser_tests_experiment_gives_the_committed_csv() {
+    check_fixture("tiny");
+}
+
+/// The physics tank's design (`experiment-physics`): muscle bodies, the
+/// current, glam's rotations, the distance swum, the same bytes in the browser.
+#[test]
+fn the_browser_tests_physics_experiment_gives_the_committed_csv() {
+    check_fixture("physics");
 }

@@ -5,6 +5,7 @@
 //! standard deviation over the n seeds: the seeds are independent replicates,
 //! and n is small (3 to 10), so the t distribution, not the normal one.
 
+use crate::sim::common::fmath;
 use std::fmt::Write as _;
 
 use serde_json::Value;
@@ -47,10 +48,14 @@ pub fn t_975(df: usize) -> f64 {
         _ => {
             let z: f64 = 1.959_963_985;
             let v = df as f64;
-            z + (z.powi(3) + z) / (4.0 * v)
-                + (5.0 * z.powi(5) + 16.0 * z.powi(3) + 3.0 * z) / (96.0 * v * v)
-                + (3.0 * z.powi(7) + 19.0 * z.powi(5) + 17.0 * z.powi(3) - 15.0 * z)
-                    / (384.0 * v.powi(3))
+            z + (fmath::powi_f64(z, 3) + z) / (4.0 * v)
+                + (5.0 * fmath::powi_f64(z, 5) + 16.0 * fmath::powi_f64(z, 3) + 3.0 * z)
+                    / (96.0 * v * v)
+                + (3.0 * fmath::powi_f64(z, 7)
+                    + 19.0 * fmath::powi_f64(z, 5)
+                    + 17.0 * fmath::powi_f64(z, 3)
+                    - 15.0 * z)
+                    / (384.0 * fmath::powi_f64(v, 3))
         }
     }
 }
@@ -80,7 +85,12 @@ pub fn summarise(plan: &Plan, results: &[RunResult]) -> Vec<SummaryRow> {
             let n = values.len();
             let mean = values.iter().sum::<f64>() / n as f64;
             let sd = if n > 1 {
-                (values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1) as f64).sqrt()
+                (values
+                    .iter()
+                    .map(|v| fmath::powi_f64(v - mean, 2))
+                    .sum::<f64>()
+                    / (n - 1) as f64)
+                    .sqrt()
             } else {
                 f64::NAN
             };
@@ -155,7 +165,7 @@ pub fn significant(x: f64) -> String {
     if x == 0.0 {
         return "0".into();
     }
-    let digits = (2 - x.abs().log10().floor() as i32).clamp(0, 6) as usize;
+    let digits = (2 - fmath::log10_f64(x.abs()).floor() as i32).clamp(0, 6) as usize;
     format!("{x:.digits$}")
 }
 

@@ -900,6 +900,7 @@ mod tests {
                 "nnd_body_lengths",
                 "groups",
                 "mean_speed_m_per_s",
+                "distance_swum_m",
                 "catches"
             ]
         );

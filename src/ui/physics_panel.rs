@@ -118,6 +118,8 @@ fn physics_controls_ui(
              Blue: the current",
         );
     rects.insert("show_forces", forces.rect);
+    ui.add_space(4.0);
+    super::experiment_panel::experiment_button(ui, rects);
 
     ui.separator();
     match physics.selected {

@@ -2,9 +2,10 @@
 // through real clicks (open, start, the page keeps drawing, cancel keeps the
 // finished runs), the automation API (shoal.experiment, state().experiment,
 // shoal.run_experiment), the results (plot, table, watching one run), and the
-// browser's CSV against the native engine's for the same design
-// (web/tests/fixtures/experiment-tiny.csv, written and checked by the native
-// test experiment::session_tests). WebGL2 (SwiftShader), then WebGPU.
+// browser's CSV against the native engine's for the same design, byte for byte
+// (web/tests/fixtures/experiment-tiny.csv and experiment-physics.csv, written
+// and checked by the native tests experiment::session_tests); the physics
+// tank's Experiment button. WebGL2 (SwiftShader), then WebGPU.
 import { test, describe, before, after } from "node:test";
 import assert from "node:assert/strict";
 import fs from "node:fs";
@@ -26,6 +27,8 @@ import {
 const fixtures = path.join(repoRoot, "web", "tests", "fixtures");
 const tinyDesign = JSON.parse(fs.readFileSync(path.join(fixtures, "experiment-tiny.json"), "utf8"));
 const nativeCsv = fs.readFileSync(path.join(fixtures, "experiment-tiny.csv"), "utf8");
+const physicsDesign = JSON.parse(fs.readFileSync(path.join(fixtures, "experiment-physics.json"), "utf8"));
+const nativePhysicsCsv = fs.readFileSync(path.join(fixtures, "experiment-physics.csv"), "utf8");
 
 const state = (page) => page.evaluate(() => window.shoal.state());
 const experiment = (page) => page.evaluate(() => window.shoal.state().experiment);
@@ -174,30 +177,10 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       }
       saveArtifact(`experiment-tiny-${tier}.csv`, Buffer.from(result.csv));
       // The browser's CSV against the native engine's (docs/experiments.md,
-      // "Browser and native"): the same lines, the same design, runs, seeds,
-      // levels and settings; the alignment-0 runs to the last digit; the
-      // alignment-80 runs drift apart in the sixth digit from about a second
-      // in (wasm and native floating point), so their numbers agree to 2 %.
+      // "Browser and native give the same CSV"): the same bytes, every number.
       const diff = firstDifference(result.csv, nativeCsv);
-      if (diff) console.log(`${tier}: browser and native CSVs first differ at line ${diff.line}:\n  browser ${diff.browser}\n  native  ${diff.native}`);
-      const lines = (text) => text.trimEnd().split("\n");
-      const [b, n] = [lines(result.csv), lines(nativeCsv)];
-      assert.equal(b.length, n.length, "as many lines");
-      for (let i = 0; i < n.length; i++) {
-        if (n[i].startsWith("#") || n[i].startsWith("run,")) {
-          assert.equal(b[i], n[i], `line ${i + 1}`);
-          continue;
-        }
-        const [bc, nc] = [b[i].split(","), n[i].split(",")];
-        const value = 6; // run,seed,left.alignment,measure,summary,time_s,value,…settings
-        assert.deepEqual([...bc.slice(0, value), ...bc.slice(value + 1)], [...nc.slice(0, value), ...nc.slice(value + 1)], `line ${i + 1}: all but the value`);
-        if (nc[2] === "0.0") {
-          assert.equal(bc[value], nc[value], `line ${i + 1}: alignment 0, to the last digit`);
-        } else {
-          const [x, y] = [Number(bc[value]), Number(nc[value])];
-          assert.ok(Math.abs(x - y) <= 0.02 * Math.abs(y), `line ${i + 1}: ${x} vs native ${y}`);
-        }
-      }
+      assert.equal(diff, null, diff && `line ${diff.line}:\n  browser ${diff.browser}\n  native  ${diff.native}`);
+      assert.equal(result.csv, nativeCsv);
       const e = await experiment(page);
       assert.equal(e.running, false);
       assert.equal(e.cancelled, false);
@@ -245,5 +228,43 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
         saveArtifact("experiment-results-docs.png", await page.screenshot());
       });
     }
+  });
+}
+
+for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
+  describe(`experiments in the physics tank (${tier})`, () => {
+    let server, browser, page, errors;
+
+    before(async () => {
+      server = await serveDist();
+      browser = await launch(tier);
+      ({ page, errors } = await openShoal(browser, server.url, { width: 1280, height: 900 }));
+      await clickUntil(page, "scene_physics", () => window.shoal.state().scene === "physics");
+    });
+
+    after(async () => {
+      await browser?.close();
+      await server?.close();
+    });
+
+    test("the physics tank's Experiment button opens the window with its own factors", async () => {
+      await scrollPanelTo(page, "experiment");
+      await clickUntil(page, "experiment", () => !!window.shoal.widgets().experiment_sizing);
+      const w = await page.evaluate(() => window.shoal.widgets());
+      assert.ok(w.experiment_start && w.experiment_factor, "start and the factor's list");
+      await waitFrames(page, 2);
+      if (tier === "webgl2") saveArtifact("experiment-physics-design.png", await page.screenshot());
+    });
+
+    test("muscle fish in a current: the browser's CSV is the native engine's", async () => {
+      const result = await page.evaluate((d) => window.shoal.run_experiment(d), physicsDesign);
+      saveArtifact(`experiment-physics-${tier}.csv`, Buffer.from(result.csv));
+      const distance = result.summary.filter((r) => r.measure === "distance_swum_m");
+      assert.equal(distance.length, 2, "one distance per current");
+      assert.ok(distance.every((r) => r.mean > 0), JSON.stringify(distance));
+      const diff = firstDifference(result.csv, nativePhysicsCsv);
+      assert.equal(diff, null, diff && `line ${diff.line}:\n  browser ${diff.browser}\n  native  ${diff.native}`);
+      assert.deepEqual(errors, []);
+    });
   });
 }

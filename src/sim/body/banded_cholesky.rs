@@ -342,6 +342,7 @@ fn transpose(m: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
 #[cfg(test)]
 mod tests {
     use crate::sim::body::banded_cholesky::*;
+    use crate::sim::common::fmath;
 
     #[test]
     fn solves_a_banded_spd_system_exactly() {
@@ -372,7 +373,9 @@ mod tests {
                 }
             }
         }
-        let x_true: Vec<f64> = (0..SYSTEM_SIZE).map(|i| (i as f64 * 0.37).sin()).collect();
+        let x_true: Vec<f64> = (0..SYSTEM_SIZE)
+            .map(|i| fmath::sin_f64(i as f64 * 0.37))
+            .collect();
         let mut rhs = [0.0; SYSTEM_SIZE];
         for i in 0..SYSTEM_SIZE {
             rhs[i] = (0..SYSTEM_SIZE).map(|j| dense[i][j] * x_true[j]).sum();
@@ -431,7 +434,9 @@ mod tests {
                     .collect()
             })
             .collect();
-        let x_true: Vec<f64> = (0..SYSTEM_SIZE).map(|i| (i as f64 * 0.61).cos()).collect();
+        let x_true: Vec<f64> = (0..SYSTEM_SIZE)
+            .map(|i| fmath::cos_f64(i as f64 * 0.61))
+            .collect();
         let mut rhs = [0.0; SYSTEM_SIZE];
         for i in 0..SYSTEM_SIZE {
             rhs[i] = (0..SYSTEM_SIZE).map(|j| dense[i][j] * x_true[j]).sum();

@@ -4,6 +4,7 @@
 //! shape it, the motor bridge plans the muscles; after the body step the hard
 //! rule keeps every node in the tank and out of the rocks.
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 
 use crate::sim::body::motor_bridge::MotorIntent;
@@ -124,7 +125,7 @@ pub(crate) fn within_reach(
         if from == Vec3::ZERO || to == Vec3::ZERO {
             return to;
         }
-        let angle = from.dot(to).clamp(-1.0, 1.0).acos();
+        let angle = fmath::acos(from.dot(to).clamp(-1.0, 1.0));
         if angle <= max {
             return to;
         }

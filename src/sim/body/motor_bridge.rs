@@ -24,6 +24,7 @@
 //! frame (z up, `body/fish_body.rs`). [`to_body_frame`] and [`to_tank_frame`]
 //! convert between them (a rotation of 90° about x).
 
+use crate::sim::common::fmath;
 use std::f32::consts::PI;
 
 use glam::Vec3;
@@ -153,7 +154,7 @@ pub fn to_tank_frame(v: Vec3) -> Vec3 {
 pub fn level_turn_deg(from: Vec3, to: Vec3) -> f32 {
     let level = |v: Vec3| Vec3::new(v.x, 0.0, v.z).normalize_or_zero();
     let (a, b) = (level(from), level(to));
-    Vec3::Y.cross(a).dot(b).atan2(a.dot(b)).to_degrees()
+    fmath::atan2(Vec3::Y.cross(a).dot(b), a.dot(b)).to_degrees()
 }
 
 /// What the bridge asks of the motor controllers this step.
@@ -237,8 +238,8 @@ impl MotorBridge {
             && horizontal.length() > 1e-3 * top_speed_m_per_s
             && f.truncate().length() > 1e-3
         {
-            let goal = horizontal.y.atan2(horizontal.x);
-            let heading = f.y.atan2(f.x);
+            let goal = fmath::atan2(horizontal.y, horizontal.x);
+            let heading = fmath::atan2(f.y, f.x);
             steer = (self.params.steer_gain_per_rad * wrap(goal - heading)).clamp(-1.0, 1.0);
         }
         // A turn comes from the tail's thrust on the bent body: swim. Steering
@@ -251,8 +252,8 @@ impl MotorBridge {
         };
 
         // Pitch: climb or dive with the fins.
-        let elevation = d.z.atan2(horizontal.length());
-        let pitch = f.z.clamp(-1.0, 1.0).asin();
+        let elevation = fmath::atan2(d.z, horizontal.length());
+        let pitch = fmath::asin(f.z.clamp(-1.0, 1.0));
         let max_pitch = self.params.max_fin_pitch_rad;
         let fin_pitch = (self.params.pitch_gain * (elevation - pitch)).clamp(-max_pitch, max_pitch);
         MotorIntent {
@@ -300,7 +301,11 @@ mod tests {
         let left = Vec3::new(0.5, 0.0, -(3f32.sqrt()) / 2.0) * 0.2;
         assert_eq!(bridge.plan(left, Vec3::X, 0.1, 0.2, false).steer, 1.0);
         // 10° to the right: proportional right steering.
-        let right10 = Vec3::new(10f32.to_radians().cos(), 0.0, 10f32.to_radians().sin());
+        let right10 = Vec3::new(
+            fmath::cos(10f32.to_radians()),
+            0.0,
+            fmath::sin(10f32.to_radians()),
+        );
         let steer = bridge.plan(right10, Vec3::X, 0.1, 0.2, false).steer;
         assert!(
             (steer + MotorParams::default().steer_gain_per_rad * 10f32.to_radians()).abs() < 1e-4,

@@ -33,6 +33,7 @@
 //! slowly and held-bend steering was weak on the earlier body (`fish_body.rs`,
 //! "Convergence"). The turn-MCs are in `turn_mc.rs`.
 
+use crate::sim::common::fmath;
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{FRAC_PI_6, TAU};
 
@@ -137,18 +138,18 @@ impl SwimMc {
     /// `FishBody::step_with`).
     pub fn muscles_at(&self, params: &SwimParams, t_secs: f32) -> [f32; MUSCLE_COUNT] {
         let mut u = [0.0; MUSCLE_COUNT];
-        let a = phase_after(
+        let a = fmath::sin(phase_after(
             self.anterior_phase_rad,
             params.anterior_frequency_hz,
             t_secs,
-        )
-        .sin();
-        let p = (phase_after(
-            self.posterior_phase_rad,
-            params.posterior_frequency_hz,
-            t_secs,
-        ) - self.posterior_lag_rad)
-            .sin();
+        ));
+        let p = fmath::sin(
+            phase_after(
+                self.posterior_phase_rad,
+                params.posterior_frequency_hz,
+                t_secs,
+            ) - self.posterior_lag_rad,
+        );
         set_side_pair(&mut u, MuscleSegment::Middle, params.anterior_amplitude, a);
         set_side_pair(
             &mut u,

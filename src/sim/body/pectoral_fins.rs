@@ -17,6 +17,7 @@
 //! The body is neutrally buoyant: no gravity and no buoyancy force at all, and a
 //! righting couple (see `FishBody`, `BodyParams::righting_force`) keeps it upright.
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{FRAC_PI_2, FRAC_PI_4, PI};
@@ -113,7 +114,7 @@ impl PectoralFins {
     ) -> [Vec3; 2] {
         [self.left_angle_rad, self.right_angle_rad].map(|theta| {
             let theta = Self::clamped(theta);
-            let n = (theta.cos() * forward + theta.sin() * up).normalize_or_zero();
+            let n = (fmath::cos(theta) * forward + fmath::sin(theta) * up).normalize_or_zero();
             -fin_area * n.dot(velocity_rel_water) * n
         })
     }

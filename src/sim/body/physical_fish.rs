@@ -326,6 +326,7 @@ mod tests {
     use crate::sim::body::SwimParams;
     use crate::sim::body::motor_bridge::level_turn_deg;
     use crate::sim::body::physical_fish::*;
+    use crate::sim::common::fmath;
     use std::f32::consts::{FRAC_PI_2, PI};
 
     #[test]
@@ -584,7 +585,7 @@ mod tests {
             for _ in 0..100 {
                 fish.step(&MotorIntent { fins, ..cruise }, Vec3::ZERO);
                 let right = fish.heading().cross(Vec3::Y).normalize_or_zero();
-                roll_sum += fish.up().dot(right).asin().to_degrees();
+                roll_sum += fmath::asin(fish.up().dot(right)).to_degrees();
             }
             (level_turn_deg(heading, fish.heading()), roll_sum / 100.0)
         };

@@ -4,6 +4,7 @@
 //! turns it by the angle asked for, to either side.
 //! All runs are deterministic (fixed seeds, fixed step).
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 
 use crate::sim::body::body_layout::{REST_POSITIONS, TRIANGLES};
@@ -98,8 +99,8 @@ fn fit_line(points: &[(f32, f32)]) -> (f32, f32) {
     let mx = points.iter().map(|p| p.0).sum::<f32>() / n;
     let my = points.iter().map(|p| p.1).sum::<f32>() / n;
     let sxy: f32 = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f32 = points.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    let syy: f32 = points.iter().map(|p| (p.1 - my).powi(2)).sum();
+    let sxx: f32 = points.iter().map(|p| fmath::powi(p.0 - mx, 2)).sum();
+    let syy: f32 = points.iter().map(|p| fmath::powi(p.1 - my, 2)).sum();
     let slope = if sxx > 0.0 { sxy / sxx } else { 0.0 };
     let r2 = if sxx > 0.0 && syy > 0.0 {
         sxy * sxy / (sxx * syy)
@@ -127,7 +128,7 @@ fn swim_mc_swims_forward_roughly_straight() {
         speed_bl_per_s > 0.5,
         "top speed too low: {speed_bl_per_s} BL/s"
     );
-    let heading_deg = d.y.atan2(d.x).to_degrees();
+    let heading_deg = fmath::atan2(d.y, d.x).to_degrees();
     assert!(heading_deg.abs() < 10.0, "veers {heading_deg}°");
     assert!(d.z.abs() < 0.1 * d.x, "climbs or sinks: {d}");
     assert!(fish.up().z > 0.95, "not upright: {}", fish.up());
@@ -227,7 +228,7 @@ fn long_random_run_stays_finite_and_intact() {
             strains.iter().all(|s| (0.3..2.0).contains(s)),
             "step {k}: {strains:?}"
         );
-        let volume = enclosed_volume(fish.positions_m()) / (LENGTH_M / 26.0).powi(3);
+        let volume = enclosed_volume(fish.positions_m()) / fmath::powi(LENGTH_M / 26.0, 3);
         assert!(
             volume > 0.5 * rest_volume,
             "collapsed: {volume} at step {k}"
@@ -509,16 +510,16 @@ fn wave_table() {
                     - centre;
                 let fin = (p[TAIL_FIN_NODES[0]].y + p[TAIL_FIN_NODES[1]].y) / 2.0 - centre;
                 let phase = std::f32::consts::TAU * f * (k + 1) as f32 * dt;
-                ring.0 += last * phase.cos();
-                ring.1 += last * phase.sin();
-                tail.0 += fin * phase.cos();
-                tail.1 += fin * phase.sin();
+                ring.0 += last * fmath::cos(phase);
+                ring.1 += last * fmath::sin(phase);
+                tail.0 += fin * fmath::cos(phase);
+                tail.1 += fin * fmath::sin(phase);
                 samples += 1;
             }
         }
         let n = samples as f32 / 2.0;
         let amplitude = |c: (f32, f32)| (c.0 * c.0 + c.1 * c.1).sqrt() / n / LENGTH_M;
-        let angle = |c: (f32, f32)| c.1.atan2(c.0);
+        let angle = |c: (f32, f32)| fmath::atan2(c.1, c.0);
         let lag = (angle(tail) - angle(ring)).to_degrees();
         let lag = (lag + 540.0).rem_euclid(360.0) - 180.0;
         let v = (fish.centre_of_mass_m() - half).x / 20.0 / LENGTH_M;

@@ -54,6 +54,7 @@
 //! "Convergence"). On the earlier, unconverged body (backward Euler, controllers
 //! sampled once per step) the same keys turn about 28 % less.
 
+use crate::sim::common::fmath;
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{FRAC_PI_2, PI, TAU};
 
@@ -512,7 +513,7 @@ pub fn measure_heading_change_deg_with(
     let mut fish = FishBody::with_params(length_m, Vec3::ZERO, Vec3::X, body);
     let mut swim = SwimMc::default();
     let dt = fish.dt_secs();
-    let heading = |f: &FishBody| f.forward().y.atan2(f.forward().x);
+    let heading = |f: &FishBody| fmath::atan2(f.forward().y, f.forward().x);
     let mut previous = heading(&fish);
     let mut unwrapped_rad = previous;
     let average_steps = ((HEADING_AVERAGE_SECS / dt).round() as usize).max(1);

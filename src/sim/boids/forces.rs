@@ -22,6 +22,7 @@
 //! share and arrival, swaying round fish) are the calling world's
 //! [`SteeringTuning`]; [`Perception`] holds the senses and limits the sliders set.
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 
 use crate::sim::common::fish::heading_of;
@@ -169,7 +170,7 @@ impl ViewCone {
     /// not once per fish).
     pub fn new(perception: &Perception) -> Self {
         let half_angle = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
-        let cos_half = half_angle.cos() - 1e-6;
+        let cos_half = fmath::cos(half_angle) - 1e-6;
         Self {
             vision_sq_m2: perception.vision_distance_m * perception.vision_distance_m,
             cos_half,
@@ -230,7 +231,7 @@ pub fn sees(position_m: Vec3, heading: Vec3, other_m: Vec3, perception: &Percept
         return false;
     }
     let half_angle = (perception.vision_angle_rad * 0.5).clamp(0.0, std::f32::consts::PI);
-    heading.dot(offset / distance) >= half_angle.cos() - 1e-6
+    heading.dot(offset / distance) >= fmath::cos(half_angle) - 1e-6
 }
 
 /// A steering force from a desired velocity: `limit((desired − current) /
@@ -536,7 +537,7 @@ pub fn avoid_neighbours(
     };
     let mut centre_m = positions_m[j];
     let mut members = 1.0;
-    let link_sq_m2 = tuning.fish_cluster_link_m.powi(2);
+    let link_sq_m2 = fmath::powi(tuning.fish_cluster_link_m, 2);
     for (k, _) in nearest.iter() {
         if k != j && positions_m[k].distance_squared(positions_m[j]) < link_sq_m2 {
             centre_m += positions_m[k];
@@ -607,8 +608,11 @@ mod tests {
             !sees(p, Vec3::X, p - Vec3::X, &PERCEPTION),
             "straight behind"
         );
-        let behind_25_deg =
-            p + Vec3::new(-(25f32.to_radians().cos()), 0.0, 25f32.to_radians().sin());
+        let behind_25_deg = p + Vec3::new(
+            -fmath::cos(25f32.to_radians()),
+            0.0,
+            fmath::sin(25f32.to_radians()),
+        );
         assert!(
             !sees(p, Vec3::X, behind_25_deg, &PERCEPTION),
             "inside the 60° blind cone"

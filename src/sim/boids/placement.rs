@@ -2,6 +2,7 @@
 //! teacher's edits to them (checked for gaps), and spawning fish, sharks and
 //! stingrays clear of the rocks and of each other.
 
+use crate::sim::common::fmath;
 use std::f32::consts::TAU;
 
 use glam::{Vec2, Vec3};
@@ -180,11 +181,11 @@ pub(super) fn reef_ledge(
     let corners = rng.random_range(5..=7);
     let minor = uniform(rng, 0.4, 0.7);
     let turn_rad = uniform(rng, 0.0, TAU);
-    let (sin_t, cos_t) = turn_rad.sin_cos();
+    let (sin_t, cos_t) = fmath::sin_cos(turn_rad);
     let footprint_m = (0..corners)
         .map(|k| {
             let a = k as f32 * TAU / corners as f32;
-            let local = Vec2::new(a.cos() * radius_m, a.sin() * radius_m * minor);
+            let local = Vec2::new(fmath::cos(a) * radius_m, fmath::sin(a) * radius_m * minor);
             center_m
                 + Vec2::new(
                     local.x * cos_t - local.y * sin_t,
@@ -232,9 +233,9 @@ pub(super) fn spawn_fish(
     let yaw_rad = uniform(rng, 0.0, TAU);
     let pitch_rad = uniform(rng, -0.2, 0.2);
     let direction = Vec3::new(
-        yaw_rad.cos() * pitch_rad.cos(),
-        pitch_rad.sin(),
-        yaw_rad.sin() * pitch_rad.cos(),
+        fmath::cos(yaw_rad) * fmath::cos(pitch_rad),
+        fmath::sin(pitch_rad),
+        fmath::sin(yaw_rad) * fmath::cos(pitch_rad),
     );
     let body_length_m = uniform(rng, 0.3, 0.5);
     let cruise_m_per_s = params.cruise_speed_body_lengths_per_s * body_length_m;

@@ -2,6 +2,7 @@
 //! hunts (with the confusion effect), stingrays glide over the sand and become
 //! obstacles, and fish that see or sense a shark flee (escape force, alarm).
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 use rand::Rng;
 
@@ -38,7 +39,7 @@ pub(super) fn escape_force(
     alarm: f32,
 ) -> Option<(Vec3, f32)> {
     let heading = heading_of(velocity_m_per_s);
-    let cos_half_view = (150f32.to_radians()).cos();
+    let cos_half_view = fmath::cos(150f32.to_radians());
     let mut noticed: Option<(f32, &Shark)> = None;
     let mut nearest: Option<(f32, &Shark)> = None;
     for shark in sharks {

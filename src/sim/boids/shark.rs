@@ -24,6 +24,7 @@
 //!
 //! [`pursue`]: crate::sim::common::steering::pursue
 
+use crate::sim::common::fmath;
 use std::f32::consts::TAU;
 
 use glam::Vec3;
@@ -108,7 +109,7 @@ pub fn lunge_params(hunt: &SharkHuntParams, params: &SteeringParams) -> Steering
 /// target: `1 − exp(−rate · n · dt)`, n capped at [`MAX_CONFUSING_NEIGHBOURS`].
 pub fn lose_lock_probability(hunt: &SharkHuntParams, neighbours: u32, dt_secs: f32) -> f32 {
     let n = neighbours.min(MAX_CONFUSING_NEIGHBOURS) as f32;
-    1.0 - (-hunt.confusion_rate_per_neighbour_per_s * n * dt_secs).exp()
+    1.0 - fmath::exp(-hunt.confusion_rate_per_neighbour_per_s * n * dt_secs)
 }
 
 /// A new shark of `species` at `position_m`, heading at `yaw_rad` at cruising
@@ -119,7 +120,7 @@ pub fn new_shark(
     body_length_m: f32,
     species: &SharkParams,
 ) -> Shark {
-    let direction = Vec3::new(yaw_rad.cos(), 0.0, yaw_rad.sin());
+    let direction = Vec3::new(fmath::cos(yaw_rad), 0.0, fmath::sin(yaw_rad));
     let mut body = Fish::new(
         position_m,
         direction * species.cruise_m_per_s,
@@ -149,7 +150,7 @@ mod tests {
         );
         // Within one second, with 7 close neighbours: practically always lost.
         let per_step = lose_lock_probability(&SharkHuntParams::default(), 7, 1.0 / 60.0);
-        let kept_for_a_second = (1.0 - per_step).powi(60);
+        let kept_for_a_second = fmath::powi(1.0 - per_step, 60);
         assert!(kept_for_a_second < 0.1, "{kept_for_a_second}");
         assert!(lose_lock_probability(&SharkHuntParams::default(), 100, 1.0) <= 1.0);
     }

@@ -7,6 +7,7 @@
 //! polygon"), see [`cluster_obstacles`]. Its size, glide height, speeds and
 //! gaps are [`StingrayParams`] (`BoidWorldParams::stingray`).
 
+use crate::sim::common::fmath;
 use std::f32::consts::{PI, TAU};
 
 use glam::{Vec2, Vec3};
@@ -69,7 +70,7 @@ pub fn new_stingray(
     floor_y_m: f32,
     ray: &StingrayParams,
 ) -> Stingray {
-    let direction = Vec3::new(yaw_rad.cos(), 0.0, yaw_rad.sin());
+    let direction = Vec3::new(fmath::cos(yaw_rad), 0.0, fmath::sin(yaw_rad));
     let mut body = Fish::new(
         position_m,
         direction * ray.cruise_m_per_s,
@@ -115,7 +116,7 @@ pub fn cluster_obstacles(
         }
     }
     // The octagon around a disc: corners at radius R / cos(π/8) contain the disc.
-    let corner_m = ray.radius_m / (PI / 8.0).cos();
+    let corner_m = ray.radius_m / fmath::cos(PI / 8.0);
     for label in 0..n {
         let members: Vec<&Stingray> = (0..n)
             .filter(|&i| cluster[i] == label)
@@ -129,8 +130,8 @@ pub fn cluster_obstacles(
                 for k in 0..8 {
                     let a = k as f32 * TAU / 8.0;
                     corners.push(Vec2::new(
-                        p.x + corner_m * a.cos(),
-                        p.z + corner_m * a.sin(),
+                        p.x + corner_m * fmath::cos(a),
+                        p.z + corner_m * fmath::sin(a),
                     ));
                 }
                 top_m = top_m.max(p.y + ray.thickness_m * 0.5);
@@ -184,7 +185,7 @@ mod tests {
             let p = r.body.position_m;
             for k in 0..16 {
                 let a = k as f32 * TAU / 16.0;
-                let rim = p + Vec3::new(a.cos(), 0.0, a.sin())
+                let rim = p + Vec3::new(fmath::cos(a), 0.0, fmath::sin(a))
                     * StingrayParams::default().radius_m
                     * 0.99;
                 assert!(polygon.signed_distance_m(rim) <= 0.0);

@@ -10,6 +10,7 @@
 //! boid layer) and flees sharks it notices; the stingrays glide; the sharks hunt
 //! and may catch a fish; finally the school's [`WorldMetrics`] are measured.
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -685,10 +686,10 @@ impl World {
     pub(super) fn rebuild_neighbour_grid(&mut self, vision_m: f32) {
         let n = self.positions_m.len().max(1) as f32;
         let volume_m3 = self.tank.size_m().element_product().max(1e-3);
-        let uniform_cell_m = (volume_m3 * FISH_PER_NEIGHBOUR_CELL / n).cbrt();
+        let uniform_cell_m = fmath::cbrt(volume_m3 * FISH_PER_NEIGHBOUR_CELL / n);
         let crowding = self.grid.crowding();
         let cell_m = if self.grid_cell_m > 0.0 && crowding > 0.0 {
-            self.grid_cell_m * (FISH_PER_NEIGHBOUR_CELL / crowding).cbrt()
+            self.grid_cell_m * fmath::cbrt(FISH_PER_NEIGHBOUR_CELL / crowding)
         } else {
             uniform_cell_m
         };

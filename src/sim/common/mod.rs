@@ -4,6 +4,7 @@
 //! parameters and the fish world's one clock.
 
 pub mod fish;
+pub mod fmath;
 pub mod obstacle;
 pub mod paper_time;
 pub mod school_metrics;

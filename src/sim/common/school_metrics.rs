@@ -15,6 +15,7 @@
 //!   fish keep about one body length).
 //! - groups: clusters of fish linked by gaps of at most two body lengths.
 
+use crate::sim::common::fmath;
 use glam::{IVec3, Vec3};
 use serde::Serialize;
 
@@ -275,7 +276,7 @@ impl SchoolMeter {
         // Cells sized so that about FISH_PER_NND_CELL fish share one, judged
         // from the group grid's crowding.
         let crowding = self.grid.crowding().max(1.0);
-        let cell_m = self.grid.cell_m() * (FISH_PER_NND_CELL / crowding).cbrt();
+        let cell_m = self.grid.cell_m() * fmath::cbrt(FISH_PER_NND_CELL / crowding);
         self.nnd_grid
             .rebuild(tank_min_m, tank_max_m, cell_m, &self.positions_m);
         let grid = &self.nnd_grid;
@@ -457,7 +458,7 @@ impl SchoolMeter {
             let first_b = if bp == bq { ia + 1 } else { cells_q.start };
             for ib in first_b..cells_q.end {
                 let (a, b) = (self.block_cells[ia], self.block_cells[ib]);
-                if box_gap_sq(a, b) * self.grid.cell_m().powi(2) > max_link_sq_m2 {
+                if box_gap_sq(a, b) * fmath::powi(self.grid.cell_m(), 2) > max_link_sq_m2 {
                     continue;
                 }
                 let (sa, sb) = (self.grid.cell_slots(a), self.grid.cell_slots(b));
@@ -486,7 +487,7 @@ impl SchoolMeter {
             let first_b = if bp == bq { ia + 1 } else { cells_q.start };
             for ib in first_b..cells_q.end {
                 let (a, b) = (self.block_cells[ia], self.block_cells[ib]);
-                if box_gap_sq(a, b) * self.grid.cell_m().powi(2) > max_link_sq_m2 {
+                if box_gap_sq(a, b) * fmath::powi(self.grid.cell_m(), 2) > max_link_sq_m2 {
                     continue;
                 }
                 for i in self.grid.cell_slots(a) {
@@ -631,7 +632,7 @@ mod tests {
         let mill: Vec<Fish> = (0..36)
             .map(|i| {
                 let a = i as f32 / 36.0 * std::f32::consts::TAU;
-                let radial = Vec3::new(a.cos(), 0.0, a.sin());
+                let radial = Vec3::new(fmath::cos(a), 0.0, fmath::sin(a));
                 fish_at(
                     Vec3::new(0.0, 2.0, 0.0) + radial * 1.5,
                     Vec3::Y.cross(radial) * 0.5,
@@ -651,7 +652,7 @@ mod tests {
             (0..12)
                 .map(|i| {
                     let a = i as f32 / 12.0 * std::f32::consts::TAU;
-                    let radial = Vec3::new(a.cos(), 0.0, a.sin());
+                    let radial = Vec3::new(fmath::cos(a), 0.0, fmath::sin(a));
                     fish_at(centre + radial * 0.5, Vec3::Y.cross(radial) * 0.5 * sense)
                 })
                 .collect()

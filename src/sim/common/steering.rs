@@ -13,6 +13,7 @@
 //! are the calling world's [`SteeringTuning`]; [`SteeringParams`] holds the
 //! slider-facing limits and weights.
 
+use crate::sim::common::fmath;
 use std::f32::consts::PI;
 
 use glam::Vec3;
@@ -468,8 +469,8 @@ pub fn wander(
 
     let forward = (fish.heading() * Vec3::new(1.0, 0.0, 1.0)).normalize_or(Vec3::X);
     let side = forward.cross(Vec3::Y);
-    let (sin_pitch, cos_pitch) = fish.wander_pitch_rad.sin_cos();
-    let (sin_angle, cos_angle) = fish.wander_angle_rad.sin_cos();
+    let (sin_pitch, cos_pitch) = fmath::sin_cos(fish.wander_pitch_rad);
+    let (sin_angle, cos_angle) = fmath::sin_cos(fish.wander_angle_rad);
     let circle_center_m =
         fish.position_m + (cos_pitch * forward + sin_pitch * Vec3::Y) * params.wander_distance_m;
     let target_m =
@@ -813,7 +814,7 @@ mod tests {
             let u = Vec3::new(rng.random(), rng.random(), rng.random());
             let position_m = tank.min_m + Vec3::splat(0.6) + u * (tank.size_m() - 1.2);
             let yaw_rad = rng.random::<f32>() * 2.0 * PI;
-            let velocity = Vec3::new(yaw_rad.cos(), 0.0, yaw_rad.sin()) * 0.8;
+            let velocity = Vec3::new(fmath::cos(yaw_rad), 0.0, fmath::sin(yaw_rad)) * 0.8;
             let start = Fish::new(position_m, velocity, 0.3, 0.0);
             let path = swim(start, 60.0, |f| {
                 wander(f, &mut rng, &params, &tuning()) * params.wander_weight + contain(f, &tank)

@@ -18,6 +18,7 @@
 //! lesson). Amplitudes are normalised so that the strongest water in the tank
 //! moves at about `strength_m_per_s`.
 
+use crate::sim::common::fmath;
 use std::f32::consts::{PI, TAU};
 
 use glam::Vec3;
@@ -67,13 +68,13 @@ impl WaterCurrent {
         }
         // Time in f64 until the phase is reduced, so the flow stays smooth after hours.
         let phase = |period: f32| ((time_secs / f64::from(period)).fract() as f32) * TAU;
-        let a1 = 0.8 + 0.2 * phase(MAIN_PERIOD_SECS).sin();
-        let a2 = SECOND_MODE_SHARE * phase(SECOND_PERIOD_SECS).sin();
+        let a1 = 0.8 + 0.2 * fmath::sin(phase(MAIN_PERIOD_SECS));
+        let a2 = SECOND_MODE_SHARE * fmath::sin(phase(SECOND_PERIOD_SECS));
         // ψ = Σ a_k sin(k π X) sin(π Z); the peak of |∇ψ| of the first mode is
         // π·max(1/W, 1/D), which the normalisation divides out.
-        let (sx1, cx1) = (PI * x).sin_cos();
-        let (sx2, cx2) = (2.0 * PI * x).sin_cos();
-        let (sz, cz) = (PI * z).sin_cos();
+        let (sx1, cx1) = fmath::sin_cos(PI * x);
+        let (sx2, cx2) = fmath::sin_cos(2.0 * PI * x);
+        let (sz, cz) = fmath::sin_cos(PI * z);
         let dpsi_dz = (a1 * sx1 + a2 * sx2) * PI * cz / size.z;
         let dpsi_dx = (a1 * PI * cx1 + a2 * 2.0 * PI * cx2) * sz / size.x;
         let norm = PI * (1.0 / size.x).max(1.0 / size.z);

@@ -24,6 +24,7 @@
 //! paper's sum from i = 0); [`AbstractedController::ac_energy_fraction`] is the
 //! same with the means removed (how well the modes capture the oscillation alone).
 
+use crate::sim::common::fmath;
 use rustfft::FftPlanner;
 use rustfft::num_complex::Complex;
 use serde::{Deserialize, Serialize};
@@ -83,7 +84,7 @@ impl FourierMode {
     /// This mode's contribution at `t_secs` (unclamped; the centre row of Fig. 8).
     pub fn value_at(&self, t_secs: f32) -> [f32; MUSCLE_COUNT] {
         let theta = TAU * self.frequency_hz * t_secs;
-        std::array::from_fn(|m| self.amplitudes[m] * (theta + self.phases_rad[m]).cos())
+        std::array::from_fn(|m| self.amplitudes[m] * fmath::cos(theta + self.phases_rad[m]))
     }
 
     /// Is everything finite and the amplitudes non-negative?
@@ -260,8 +261,8 @@ pub fn abstract_controls(controls: &MuscleSpline, settings: &AbstractionSettings
         let mut b = vec![1.0f64];
         for f in &frequencies {
             let th = f64::from(TAU * f * t);
-            b.push(th.cos());
-            b.push(th.sin());
+            b.push(fmath::cos_f64(th));
+            b.push(fmath::sin_f64(th));
         }
         b
     };
@@ -295,8 +296,8 @@ pub fn abstract_controls(controls: &MuscleSpline, settings: &AbstractionSettings
             for (j, mode) in modes.iter_mut().enumerate() {
                 let (a, b) = (x[1 + 2 * j], x[2 + 2 * j]);
                 // a cos θ + b sin θ = A cos(θ + φ) with A = √(a² + b²), φ = atan2(−b, a).
-                mode.amplitudes[m] = a.hypot(b) as f32;
-                mode.phases_rad[m] = (-b).atan2(a) as f32;
+                mode.amplitudes[m] = fmath::hypot_f64(a, b) as f32;
+                mode.phases_rad[m] = fmath::atan2_f64(-b, a) as f32;
             }
         }
     }
@@ -315,9 +316,9 @@ pub fn abstract_controls(controls: &MuscleSpline, settings: &AbstractionSettings
             }
         }
         for m in 0..MUSCLE_COUNT {
-            total += f64::from(u[m]).powi(2);
-            ac_total += f64::from(u[m] - means[m]).powi(2);
-            residual += f64::from(u[m] - fit[m]).powi(2);
+            total += fmath::powi_f64(f64::from(u[m]), 2);
+            ac_total += fmath::powi_f64(f64::from(u[m] - means[m]), 2);
+            residual += fmath::powi_f64(f64::from(u[m] - fit[m]), 2);
         }
     }
     let fraction = |whole: f64| {
@@ -350,7 +351,7 @@ mod tests {
         let samples = (0..n)
             .map(|i| {
                 let t = 2.5 * i as f32 / (n - 1) as f32;
-                let w = (TAU * 1.2 * t).sin();
+                let w = fmath::sin(TAU * 1.2 * t);
                 let mut u = [0.0; MUSCLE_COUNT];
                 for m in 8..10 {
                     u[m] = 0.5 + 0.4 * w;

@@ -25,6 +25,7 @@
 //! sharks of the race (Fig. 7) at 90, 1440, …, 6840 steps.
 //! Deterministic for a seed: ChaCha8, as elsewhere in the crate.
 
+use crate::sim::common::fmath;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
@@ -88,7 +89,7 @@ impl AnnealingSchedule {
 
     fn geometric(from: f32, to: f32, t: f32) -> f32 {
         let (a, b) = (from.max(1e-9), to.max(1e-9));
-        let v = a * (b / a).powf(t);
+        let v = a * fmath::powf(b / a, t);
         if v.is_finite() { v } else { b }
     }
 
@@ -149,7 +150,7 @@ pub struct Trainer {
 fn gaussian(rng: &mut ChaCha8Rng) -> f32 {
     let u1 = rng.random::<f32>().max(1e-7);
     let u2 = rng.random::<f32>();
-    (-2.0 * u1.ln()).sqrt() * (std::f32::consts::TAU * u2).cos()
+    (-2.0 * fmath::ln(u1)).sqrt() * fmath::cos(std::f32::consts::TAU * u2)
 }
 
 impl Trainer {
@@ -264,7 +265,8 @@ impl Trainer {
         }
         let evaluation = evaluate(&self.setup, &candidate);
         let delta_e = evaluation.objective - self.current_objective;
-        let accept = delta_e <= 0.0 || self.rng.random::<f32>() < (-delta_e / temperature).exp();
+        let accept =
+            delta_e <= 0.0 || self.rng.random::<f32>() < fmath::exp(-delta_e / temperature);
         self.evaluations += 1;
         if accept {
             self.accepted += 1;

@@ -32,6 +32,7 @@
 //! frequency changes) and returns the 12 contractions
 //! u_m = ū_m + Σⱼ A_mj cos(θⱼ + φ_mj), clamped to [0, 1].
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{PI, TAU};
@@ -247,10 +248,10 @@ fn normalise_phases(mut c: AbstractedController) -> AbstractedController {
         let (mut re, mut im) = (0.0f32, 0.0f32);
         for m in 0..MUSCLE_COUNT {
             let a = mode.amplitudes[m] * side_sign(m);
-            re += a * mode.phases_rad[m].cos();
-            im += a * mode.phases_rad[m].sin();
+            re += a * fmath::cos(mode.phases_rad[m]);
+            im += a * fmath::sin(mode.phases_rad[m]);
         }
-        let shift = im.atan2(re);
+        let shift = fmath::atan2(im, re);
         for p in &mut mode.phases_rad {
             *p = (*p - shift + PI).rem_euclid(TAU) - PI;
         }
@@ -491,7 +492,7 @@ impl LearnedMotor {
         for (mode, phase) in c.modes.iter().zip(&self.phases_rad) {
             let phase = phase + TAU * mode.frequency_hz * t;
             for ((x, a), p) in u.iter_mut().zip(mode.amplitudes).zip(mode.phases_rad) {
-                *x += a * (phase + p).cos();
+                *x += a * fmath::cos(phase + p);
             }
         }
         u.map(|x| {
@@ -575,7 +576,7 @@ mod tests {
                 0 => (f32::NAN, 0.3),
                 1 => (2.0, f32::INFINITY),
                 2 => (0.5, -7.0),
-                _ => (1.0, (k as f32 * 0.01).sin()),
+                _ => (1.0, fmath::sin(k as f32 * 0.01)),
             };
             let u = motor.step(speed, turn, 0.055);
             assert!(u.iter().all(|x| (0.0..=1.0).contains(x)), "{u:?}");

@@ -21,6 +21,7 @@
 //! The second half only: the fish starts at rest and needs about a second to reach
 //! its speed. A radian of heading error counts like a body length of distance.
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 use std::f32::consts::{PI, TAU};
@@ -209,7 +210,7 @@ fn finite_or(x: f32, fallback: f32) -> f32 {
 /// Horizontal heading of a body's fore body, radians.
 pub(crate) fn heading_rad(body: &FishBody) -> f32 {
     let f = body.forward();
-    f.y.atan2(f.x)
+    fmath::atan2(f.y, f.x)
 }
 
 /// Adds the wrapped change from `previous` to `now` to `unwrapped`.

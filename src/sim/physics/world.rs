@@ -19,6 +19,7 @@
 //!
 //! Deterministic for a seed: one ChaCha8 generator, fish in index order.
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -374,7 +375,7 @@ impl PhysicsWorld {
             }
         }
         let angle = self.rng.random_range(0.0..std::f32::consts::TAU);
-        let heading = Vec3::new(angle.cos(), 0.0, angle.sin());
+        let heading = Vec3::new(fmath::cos(angle), 0.0, fmath::sin(angle));
         let hue = match species {
             BodySpecies::Fish => self.rng.random_range(0.0..1.0),
             BodySpecies::Shark => 0.58,

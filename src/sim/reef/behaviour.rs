@@ -22,6 +22,7 @@
 //! *chasing-target* underlies eating, mating and (for predators) hunting. The
 //! routines' numbers are [`BehaviourParams`] (`ReefParams::behaviour`).
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 
 use crate::sim::reef::params::BehaviourParams;
@@ -74,14 +75,12 @@ pub fn chase(
         };
         // Climb or dive no steeper than the body can: a target overhead is
         // reached by spiralling up.
-        let pitch = offset
-            .y
-            .atan2(level.length())
+        let pitch = fmath::atan2(offset.y, level.length())
             .clamp(-params.max_chase_pitch_rad, params.max_chase_pitch_rad);
         // Slow down for a sharp turn: the circle shrinks with the speed.
         let bearing_cos = horizontal.dot(forward).max(0.0);
         let speed = speed * (0.5 + 0.5 * bearing_cos);
-        return (horizontal * pitch.cos() + Vec3::Y * pitch.sin()) * speed;
+        return (horizontal * fmath::cos(pitch) + Vec3::Y * fmath::sin(pitch)) * speed;
     }
     offset.normalize_or(me.heading) * speed
 }

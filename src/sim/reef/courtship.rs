@@ -16,6 +16,7 @@
 //! This module holds the pair's state machine and where each partner wants to
 //! go; the reef world (`reef/world.rs`) forms pairs and moves the bodies.
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
@@ -106,7 +107,7 @@ impl Pair {
 
     /// The looping point: in front of her head, swinging up and down.
     pub fn loop_point_m(&self, params: &CourtshipParams, female: &Partner, time_secs: f32) -> Vec3 {
-        let swing = (std::f32::consts::TAU * params.loop_hz * time_secs).sin();
+        let swing = fmath::sin(std::f32::consts::TAU * params.loop_hz * time_secs);
         female.head_m
             + female.heading * 0.8 * female.body_length_m
             + Vec3::Y * (0.3 + 0.5 * swing) * female.body_length_m
@@ -136,7 +137,7 @@ impl Pair {
             speed_fraction,
             gait: Gait::Pursue,
         };
-        let bob = 0.3 * (std::f32::consts::TAU * 0.5 * time_secs).sin();
+        let bob = 0.3 * fmath::sin(std::f32::consts::TAU * 0.5 * time_secs);
         match self.phase {
             Phase::Looping => (
                 swim(
@@ -220,12 +221,12 @@ impl Pair {
     ) -> Option<Phase> {
         self.phase_secs += dt_secs;
         self.since_count_secs += dt_secs;
-        let turn = self
-            .last_heading
-            .normalize_or_zero()
-            .dot(female.heading)
-            .clamp(-1.0, 1.0)
-            .acos();
+        let turn = fmath::acos(
+            self.last_heading
+                .normalize_or_zero()
+                .dot(female.heading)
+                .clamp(-1.0, 1.0),
+        );
         self.last_heading = female.heading;
         let next = match self.phase {
             Phase::Looping => {
@@ -562,7 +563,7 @@ mod tests {
             angle += 20f32.to_radians();
             let f = partner(
                 Vec3::new(0.0, 2.0, 0.0),
-                Vec3::new(angle.cos(), 0.0, angle.sin()),
+                Vec3::new(fmath::cos(angle), 0.0, fmath::sin(angle)),
             );
             if let Some(p) = pair.advance(&params(), &male, &f, t, 4.5, dt) {
                 seen.push(p);

@@ -13,6 +13,7 @@
 //!
 //! Both fields are static, smooth and cheap; fish read them every step.
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 
 use crate::sim::common::tank::Tank;
@@ -91,7 +92,7 @@ impl Environment {
         let across = ((p_m.x - self.tank.min_m.x) / size.x.max(1e-3)).clamp(0.0, 1.0);
         let shade_fraction = self.params.shade_fraction;
         let shade = shade_fraction + (1.0 - shade_fraction) * smoothstep(across);
-        let b = (-depth / self.params.light_attenuation_m).exp() * shade;
+        let b = fmath::exp(-depth / self.params.light_attenuation_m) * shade;
         if b.is_finite() {
             b.clamp(0.0, 1.0)
         } else {
@@ -107,7 +108,7 @@ impl Environment {
         let background = 0.15 + 0.4 * height;
         let d2 = (p_m - self.warm_vent_m).length_squared();
         let vent_radius_m = self.params.vent_radius_m;
-        let plume = (-d2 / (2.0 * vent_radius_m * vent_radius_m)).exp();
+        let plume = fmath::exp(-d2 / (2.0 * vent_radius_m * vent_radius_m));
         let t = background + 0.6 * plume;
         if t.is_finite() {
             t.clamp(0.0, 1.0)

@@ -29,6 +29,7 @@
 //! The point-mass body has no motor controllers: it follows the wish's velocity
 //! through the boid layer.
 
+use crate::sim::common::fmath;
 use std::f32::consts::TAU;
 
 use glam::Vec3;
@@ -140,7 +141,7 @@ pub fn choose(params: &MotorChoiceParams, wish: &Wish, body: &Body, time_secs: f
             };
         }
         Gait::Bob => {
-            let rising = (TAU * params.bob_hz * time_secs).sin() >= 0.0;
+            let rising = fmath::sin(TAU * params.bob_hz * time_secs) >= 0.0;
             let pitch = if rising {
                 params.bob_lift_pitch_rad
             } else {
@@ -186,8 +187,8 @@ pub fn choose(params: &MotorChoiceParams, wish: &Wish, body: &Body, time_secs: f
     }
     let mut speed_fraction = (wanted / top).clamp(0.0, 1.0);
     // Climb or dive with the fins.
-    let elevation = d.y.atan2(level);
-    let pitch = body.heading.y.clamp(-1.0, 1.0).asin();
+    let elevation = fmath::atan2(d.y, level);
+    let pitch = fmath::asin(body.heading.y.clamp(-1.0, 1.0));
     let fins = if wanted > 0.0 {
         PectoralFins::climb(
             (params.pitch_gain * (elevation - pitch))
@@ -234,7 +235,7 @@ mod tests {
         let level = |deg: f32| {
             // + = left; left of +x is −z with y up.
             let r = deg.to_radians();
-            Vec3::new(r.cos(), 0.0, -r.sin()) * 0.2
+            Vec3::new(fmath::cos(r), 0.0, -fmath::sin(r)) * 0.2
         };
         // 120° to the left: one 90° turn-MC turn now, the rest when it is done.
         let m = choose(

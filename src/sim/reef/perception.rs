@@ -17,6 +17,7 @@
 //! the overall brightness of its environment by computing the mean intensity of
 //! the retinal image").
 
+use crate::sim::common::fmath;
 use glam::Vec3;
 
 use crate::sim::common::obstacle::Obstacle;
@@ -76,8 +77,8 @@ impl Eye {
         if d <= object.radius_m {
             return true;
         }
-        let angle = self.forward.dot(to / d).clamp(-1.0, 1.0).acos();
-        let angular_radius = (object.radius_m / d).clamp(-1.0, 1.0).asin();
+        let angle = fmath::acos(self.forward.dot(to / d).clamp(-1.0, 1.0));
+        let angular_radius = fmath::asin((object.radius_m / d).clamp(-1.0, 1.0));
         angle - angular_radius <= 0.5 * self.field_of_view_rad
     }
 
@@ -101,7 +102,7 @@ impl Eye {
             return true;
         }
         d <= self.radius_m
-            && self.forward.dot(to / d) >= (0.5 * self.field_of_view_rad).cos() - 1e-6
+            && self.forward.dot(to / d) >= fmath::cos(0.5 * self.field_of_view_rad) - 1e-6
     }
 }
 
@@ -250,7 +251,7 @@ impl Retina {
                     continue;
                 }
                 let theta = r * half_fov;
-                let (sin_t, cos_t) = theta.sin_cos();
+                let (sin_t, cos_t) = fmath::sin_cos(theta);
                 let (cx, cy) = if r > 1e-6 { (x / r, y / r) } else { (0.0, 0.0) };
                 let dir = (forward * cos_t + (right * cx + up * cy) * sin_t).normalize_or(forward);
                 let c = shade_ray(eye, dir, scene, env);
@@ -279,7 +280,7 @@ impl Retina {
         let mut out = Vec::with_capacity(self.pixels.len() * 4);
         for p in &self.pixels {
             for c in p {
-                out.push((c.clamp(0.0, 1.0).powf(1.0 / 2.2) * 255.0).round() as u8);
+                out.push((fmath::powf(c.clamp(0.0, 1.0), 1.0 / 2.2) * 255.0).round() as u8);
             }
             out.push(255);
         }
@@ -350,7 +351,7 @@ fn shade_ray(eye: &Eye, dir: Vec3, scene: &RetinaScene, env: &Environment) -> [f
         0.25 + 0.75 * env.brightness_at(hit)
     };
     // Fog towards the water colour with distance (visibility V_r).
-    let fog = (best_t / far.max(1e-3)).clamp(0.0, 1.0).powf(0.8);
+    let fog = fmath::powf((best_t / far.max(1e-3)).clamp(0.0, 1.0), 0.8);
     let water = env.brightness_at(o) * 0.8 + 0.2;
     let mut out = [0.0; 3];
     for k in 0..3 {
@@ -405,7 +406,7 @@ pub(super) fn in_a_school(params: &PerceptionParams, seen: &[Seen], i: usize) ->
         return false;
     }
     let radius = params.schoolmate_radius_body_lengths * me.length_m;
-    let min_cos = params.schoolmate_max_angle_rad.cos();
+    let min_cos = fmath::cos(params.schoolmate_max_angle_rad);
     seen.iter()
         .enumerate()
         .filter(|&(j, o)| {
@@ -559,7 +560,7 @@ impl ReefWorld {
                 .filter(|(j, _)| seen[*j].kind == FishKind::Prey)
                 .map(|&(j, d)| {
                     let to = (seen[j].position_m - me.head_m).normalize_or(me.heading);
-                    let turn = me.heading.dot(to).clamp(-1.0, 1.0).acos();
+                    let turn = fmath::acos(me.heading.dot(to).clamp(-1.0, 1.0));
                     let schooling = if seen[j].schooling { 1.0 } else { 0.0 };
                     (
                         j,
@@ -591,7 +592,7 @@ impl ReefWorld {
             };
             let effort = |p: Vec3| {
                 let o = p - me.head_m;
-                Vec3::new(o.x, 0.0, o.z).length().hypot(climb_effort * o.y)
+                fmath::hypot(Vec3::new(o.x, 0.0, o.z).length(), climb_effort * o.y)
             };
             let mut food: Vec<(u32, f32, f32)> = self
                 .food
@@ -787,7 +788,7 @@ mod tests {
             (180.0, false),
         ] {
             let a = deg.to_radians();
-            let target = ball(3.0 * a.cos(), 3.0 * a.sin());
+            let target = ball(3.0 * fmath::cos(a), 3.0 * fmath::sin(a));
             assert_eq!(e.sees(target, &[], &[]), seen, "{deg}°");
         }
     }

@@ -20,6 +20,7 @@
 //! fish 3"). Deterministic for a seed: one ChaCha8 generator, animals in
 //! index order.
 
+use crate::sim::common::fmath;
 use std::collections::VecDeque;
 
 use glam::Vec3;
@@ -796,9 +797,9 @@ impl ReefWorld {
                 let water = self.current.velocity_m_per_s(p, f64::from(t));
                 let along = n as f32 / (SEAWEED_NODES - 1) as f32;
                 let sway = Vec3::new(
-                    (0.7 * t + w.phase_rad + 0.6 * along).sin(),
+                    fmath::sin(0.7 * t + w.phase_rad + 0.6 * along),
                     0.0,
-                    (0.45 * t + 1.3 * w.phase_rad).cos(),
+                    fmath::cos(0.45 * t + 1.3 * w.phase_rad),
                 ) * 0.06;
                 let lift = Vec3::Y * 0.15;
                 w.nodes_m[n] = p + (water * 3.0 + sway + lift) * dt * along;
