@@ -164,6 +164,7 @@ use crate::sim::body::body_layout::{
 };
 use crate::sim::body::hydrodynamics::add_water_forces;
 use crate::sim::body::pectoral_fins::PectoralFins;
+use crate::sim::common::fmath;
 use crate::sim::common::paper_time::{FISH_STEP_SECS, PAPER_TIME_UNITS_PER_SEC};
 
 /// Largest accepted [`BodyParams::substeps`] (1024: enough for convergence checks
@@ -862,7 +863,7 @@ fn trimmed_vertical(forward: Vec3, fins: &PectoralFins, gain: f32, max_rad: f32)
     if !fins.trim || !trim.is_finite() || level == Vec3::ZERO {
         return Vec3::Z;
     }
-    trim.cos() * Vec3::Z - trim.sin() * level
+    fmath::cos(trim) * Vec3::Z - fmath::sin(trim) * level
 }
 
 /// Per-spring results of [`spring_terms`], one array entry per spring of
