@@ -144,8 +144,14 @@ impl Command {
     pub fn execute(self, lab: &mut Lab) -> Result<(), AutomationError> {
         match self {
             Self::Set(patch) => {
-                let mut settings = lab.settings().clone();
+                let before = lab.settings();
+                let mut settings = before.clone();
                 settings.apply_patch(&patch)?;
+                // A student view refuses what the teacher's studio keeps.
+                before
+                    .studio
+                    .check_unchanged(before, &settings)
+                    .map_err(SettingsError::from)?;
                 lab.apply_settings(settings);
             }
             Self::Step(n) => lab.step(n),
@@ -246,6 +252,9 @@ pub struct StateReport {
     pub metrics_right: Option<TankReport>,
     /// Whether two tanks are shown.
     pub compare: bool,
+    /// Is this page the student view of a teacher's studio link (the studio's
+    /// rules apply, mystery values are masked)?
+    pub student_view: bool,
     /// The message shown at the top of the view, if any (e.g. a share link that
     /// could not be opened).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -332,6 +341,7 @@ impl StateReport {
                 .run(Side::Right)
                 .map(|run| TankReport::new(run, settings)),
             compare: lab.comparing(),
+            student_view: settings.studio.student_view,
             notice: None,
             camera: None,
             ui_scale: None,
