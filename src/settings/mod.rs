@@ -168,8 +168,9 @@ pub struct Settings {
     pub learning: LearningSettings,
     /// The teacher's studio: which controls students see, may change and may
     /// read, and the teacher's question (`studio.rs`). Links made before it
-    /// existed lack it.
-    #[serde(default)]
+    /// existed lack it, and a setting without rules, question or student view
+    /// leaves it out (its links are those of before the studio).
+    #[serde(default, skip_serializing_if = "Studio::is_empty")]
     pub studio: Studio,
 }
 

@@ -94,6 +94,11 @@ pub struct Studio {
 }
 
 impl Studio {
+    /// No rules, no question, the teacher's view: nothing to carry.
+    pub fn is_empty(&self) -> bool {
+        *self == Self::default()
+    }
+
     /// The rule written for `key` (none if not written).
     pub fn rule(&self, key: &str) -> ControlRule {
         self.rules.get(key).copied().unwrap_or_default()
@@ -187,15 +192,11 @@ impl Studio {
                 changed = true;
             }
         }
-        // The studio itself stays as the link made it.
-        if let Some(slot) = new.get_mut("studio") {
-            *slot = old["studio"].clone();
-        }
-        if (changed || after.studio != before.studio)
-            && let Ok(kept) = serde_json::from_value::<Settings>(new)
-        {
+        if changed && let Ok(kept) = serde_json::from_value::<Settings>(new) {
             *after = kept;
         }
+        // The studio itself stays as the link made it.
+        after.studio.clone_from(&before.studio);
     }
 
     /// In the student view, refuses `after` (a `shoal.set` result) if it
