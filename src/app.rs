@@ -727,7 +727,9 @@ impl eframe::App for ShoalApp {
         }
         // The student view keeps what the teacher's rules keep.
         let current = self.lab.settings();
-        current.studio.enforce(current, &mut settings);
+        if &settings != current {
+            current.studio.enforce(current, &mut settings);
+        }
         if &settings != self.lab.settings() {
             self.lab.apply_settings(settings);
         }

@@ -148,13 +148,14 @@ impl Studio {
         self.student_view && self.rules.values().any(|r| r.mystery)
     }
 
-    /// Every key whose value a student cannot change, with the linked ones
-    /// ([`Self::effective`]).
+    /// Every key whose value a student cannot change: the rules' keys, and a
+    /// mystery preset's five weights. (A preset that is a mystery only because
+    /// a weight is follows the weights: its label changes with them.)
     fn kept_keys(&self) -> Vec<String> {
         let mut keys: Vec<String> = self.rules.keys().cloned().collect();
         for side in Side::BOTH {
-            for name in WEIGHT_KEYS.iter().chain(&["preset"]) {
-                keys.push(format!("{}.{name}", side.name()));
+            if self.rule(&format!("{}.preset", side.name())).mystery {
+                keys.extend(WEIGHT_KEYS.iter().map(|w| format!("{}.{w}", side.name())));
             }
         }
         keys.sort();
@@ -163,12 +164,15 @@ impl Studio {
         keys
     }
 
-    /// Every key whose value a student does not see.
+    /// Every key whose value a student does not see (a preset included when
+    /// one of its weights is a mystery).
     fn mystery_keys(&self) -> Vec<String> {
-        self.kept_keys()
-            .into_iter()
-            .filter(|k| self.effective(k).mystery)
-            .collect()
+        let mut keys = self.kept_keys();
+        keys.extend(Side::BOTH.map(|side| format!("{}.preset", side.name())));
+        keys.sort();
+        keys.dedup();
+        keys.retain(|k| self.effective(k).mystery);
+        keys
     }
 
     /// In the student view, puts back into `after` every value the rules keep

@@ -99,7 +99,25 @@ fn the_student_view_keeps_ruled_values_whatever_the_panel_did() {
         .load_preset(crate::settings::tank::Preset::Group);
     before.studio.enforce(&before, &mut preset);
     assert_eq!(preset.left.alignment, 37.0);
-    assert_eq!(preset.left.preset, before.left.preset);
+    // A free weight moved from a preset's mix: the label follows it (it is
+    // a mystery, not kept).
+    let mut group = student(lesson());
+    group
+        .apply_patch(&json!({"left": {"preset": "group"}}))
+        .unwrap();
+    group.studio.set_rule(
+        "left.alignment",
+        ControlRule {
+            mystery: true,
+            ..Default::default()
+        },
+    );
+    let mut moved = group.clone();
+    moved
+        .apply_patch(&json!({"left": {"cohesion": 5}}))
+        .unwrap();
+    assert_eq!(moved.left.preset, crate::settings::tank::Preset::Custom);
+    assert_eq!(group.studio.check_unchanged(&group, &moved), Ok(()));
     // The teacher's own page changes freely.
     let teacher = lesson();
     let mut moved = teacher.clone();
