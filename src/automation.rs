@@ -10,6 +10,7 @@
 //! | `shoal.reset(seed?)` | rebuilds the world, from `seed` when given |
 //! | `shoal.turn(deg)` | physics scene: the selected fish starts a turn of `deg` degrees (+ left, −180 to 180) |
 //! | `shoal.share_link()` | the link that reopens exactly the current settings |
+//! | `shoal.student_link()` | the teacher's studio's *Share with class* link: the same settings in the student view (`settings/studio.rs`) |
 //! | `shoal.metrics_csv()` | the school metrics of the last minutes as CSV text (the aquarium's and schooling lab's table, in every scene) |
 //! | `shoal.export_csv()` | `{name, text}`: the scene's data file *Download data* saves (see `export.rs`), e.g. `shoal-reef-t0125s.csv` |
 //! | `shoal.widgets()` | where the main widgets are on the page, `{name: {x, y, width, height}}` in CSS pixels (for tests that click real widgets) |

@@ -56,7 +56,10 @@ pub fn control_panel_ui(
         });
     });
     ui.label(egui::RichText::new(settings.scene.description()).weak());
-    super::about::about_button(ui, rects);
+    ui.horizontal_wrapped(|ui| {
+        super::about::about_button(ui, rects);
+        super::studio_panel::studio_button(ui, &settings.studio, rects);
+    });
     ui.separator();
 
     ui.label(egui::RichText::new("Simulation").strong());
@@ -173,7 +176,6 @@ pub fn control_panel_ui(
             actions.push(PanelAction::ExportCsv);
         }
     });
-    super::studio_panel::studio_button(ui, &settings.studio, rects);
 
     ui.separator();
     ui.label(egui::RichText::new("View").strong());

@@ -201,6 +201,11 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       await scrollPanelTo(pupil, "mystery_left.alignment");
       await waitFrames(pupil, 2);
       saveArtifact(`studio-student-${tier}.png`, await pupil.screenshot());
+      // The question card at the top of the side panel.
+      const card = await scrollPanelTo(pupil, "studio_question_card");
+      assert.ok(card.height > 30, "the card holds the question");
+      await waitFrames(pupil, 2);
+      saveArtifact(`studio-student-question-${tier}.png`, await pupil.screenshot());
       assert.deepEqual(pupilErrors, []);
       await context.close();
     });
