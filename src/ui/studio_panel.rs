@@ -437,3 +437,123 @@ impl StudioPanel {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::settings::Side;
+    use serde_json::json;
+
+    /// Draws the schooling lab's tank controls once under `studio`, with the
+    /// studio window open or not, and returns the widgets drawn.
+    fn draw_tank(studio: &Studio, open: bool) -> (WidgetRects, Option<Studio>) {
+        let ctx = egui::Context::default();
+        ctx.data_mut(|d| d.insert_temp(open_id(), open));
+        let mut settings = Settings::default();
+        let mut rects = WidgetRects::new();
+        for frame in 0..2 {
+            rects.clear();
+            let input = egui::RawInput {
+                screen_rect: Some(egui::Rect::from_min_size(
+                    egui::Pos2::ZERO,
+                    egui::vec2(1280.0, 2000.0),
+                )),
+                time: Some(f64::from(frame) / 60.0),
+                ..Default::default()
+            };
+            let mut output = ctx.run_ui(input, |ui| {
+                begin_frame(ui.ctx(), studio);
+                egui::Panel::left("controls").show(ui, |ui| {
+                    super::super::tank_panel::tank_ui(
+                        ui,
+                        &mut settings.left,
+                        Side::Left,
+                        &mut rects,
+                    );
+                });
+            });
+            output.textures_delta.clear();
+        }
+        (rects, end_frame(&ctx))
+    }
+
+    fn lesson(student_view: bool) -> Studio {
+        let mut settings = Settings::default();
+        settings
+            .apply_patch(&json!({"studio": {
+                "student_view": student_view,
+                "rules": {
+                    "left.alignment": {"mystery": true},
+                    "left.stingrays": {"hidden": true},
+                    "left.wander": {"locked": true}
+                }
+            }}))
+            .unwrap();
+        settings.studio
+    }
+
+    #[test]
+    fn a_student_sees_no_hidden_control_no_mystery_number_and_greyed_locks() {
+        let (rects, _) = draw_tank(&lesson(true), false);
+        assert!(rects.get("stingrays_count").is_none(), "hidden");
+        assert!(
+            rects.get("sharks_count").is_some(),
+            "a free control is drawn"
+        );
+        assert!(rects.get("weight_alignment").is_none(), "no mystery slider");
+        assert!(rects.get("mystery_left.alignment").is_some());
+        assert!(
+            rects.get("mystery_left.preset").is_some(),
+            "the preset with it"
+        );
+        assert!(rects.get("preset_group").is_none());
+        assert!(rects.get("wander").is_some(), "a locked control is drawn…");
+        assert!(rects.get("locked_left.wander").is_some(), "…greyed");
+        assert!(
+            rects.iter().all(|(name, _)| !name.starts_with("studio_")),
+            "no toggles for a student"
+        );
+    }
+
+    #[test]
+    fn the_teacher_sees_everything_and_the_toggles_while_the_studio_is_open() {
+        let (closed, _) = draw_tank(&lesson(false), false);
+        assert!(closed.get("weight_alignment").is_some());
+        assert!(closed.get("stingrays_count").is_some());
+        assert!(closed.get("studio_hide_left_stingrays").is_none());
+        let (open, studio) = draw_tank(&lesson(false), true);
+        for name in [
+            "studio_hide_left_stingrays",
+            "studio_lock_left_wander",
+            "studio_mystery_left_alignment",
+            "studio_hide_left_mode",
+            "studio_lock_left_preset",
+        ] {
+            assert!(open.get(name).is_some(), "{name}");
+        }
+        assert!(
+            open.get("weight_alignment").is_some(),
+            "the teacher sets it"
+        );
+        assert_eq!(studio, Some(lesson(false)), "no click, no change");
+        // A student's page never shows the toggles, even with the flag set.
+        let (student, _) = draw_tank(&lesson(true), true);
+        assert!(student.get("studio_hide_left_stingrays").is_none());
+    }
+
+    #[test]
+    fn the_student_link_opens_the_student_view_with_the_same_settings() {
+        let mut settings = Settings::default();
+        settings.studio = lesson(false);
+        settings.left.alignment = 37.0;
+        let link = student_link(&settings, "https://example.org/shoal/");
+        let fragment = link.split_once('#').unwrap().1;
+        let opened = crate::settings::share_link::decode(fragment)
+            .unwrap()
+            .unwrap();
+        assert!(opened.studio.student_view);
+        assert_eq!(opened.studio.rules, settings.studio.rules);
+        assert_eq!(opened.left.alignment, 37.0);
+        assert!(!settings.studio.student_view, "the teacher's page stays");
+    }
+}
