@@ -543,8 +543,10 @@ mod tests {
 
     #[test]
     fn the_student_link_opens_the_student_view_with_the_same_settings() {
-        let mut settings = Settings::default();
-        settings.studio = lesson(false);
+        let mut settings = Settings {
+            studio: lesson(false),
+            ..Settings::default()
+        };
         settings.left.alignment = 37.0;
         let link = student_link(&settings, "https://example.org/shoal/");
         let fragment = link.split_once('#').unwrap().1;
