@@ -71,6 +71,8 @@ pub struct ShoalApp {
     scene_panel: CurrentPanel,
     /// The *Experiment…* window and the experiment under way, if any.
     experiment: crate::ui::ExperimentPanel,
+    /// The teacher's studio's windows (*Share with class* and its QR code).
+    studio: crate::ui::StudioPanel,
     ctx: egui::Context,
 }
 
@@ -117,6 +119,7 @@ impl ShoalApp {
             viewed: None,
             scene_panel: CurrentPanel::new(lab_scene),
             experiment: crate::ui::ExperimentPanel::default(),
+            studio: crate::ui::StudioPanel::default(),
             ctx: cc.egui_ctx.clone(),
         })
     }
@@ -218,6 +221,36 @@ impl ShoalApp {
     /// The current settings (`shoal.settings()`), by the names `shoal.set` takes.
     pub fn state_settings(&self) -> &Settings {
         self.lab.settings()
+    }
+
+    /// `shoal.settings()`: the current settings as JSON, with the mystery
+    /// values masked in the student view.
+    pub fn settings_json(&self) -> serde_json::Value {
+        let settings = self.lab.settings();
+        let mut json = serde_json::to_value(settings).unwrap_or_default();
+        settings.studio.mask_settings_json(&mut json);
+        // The studio, even when empty (links leave an empty one out).
+        if let (Some(object), Ok(studio)) =
+            (json.as_object_mut(), serde_json::to_value(&settings.studio))
+        {
+            object.insert("studio".to_owned(), studio);
+        }
+        json
+    }
+
+    /// Masks in `state()`'s JSON what would give a mystery value away
+    /// (student view only).
+    pub fn mask_state_json(&self, state: &mut serde_json::Value) {
+        self.lab.settings().studio.mask_state_json(state);
+    }
+
+    /// The link *Share with class* gives (`shoal.student_link()`): these
+    /// settings in the student view.
+    pub fn student_link(&self) -> String {
+        crate::ui::studio_panel::student_link(
+            self.lab.settings(),
+            self.page_url.as_deref().unwrap_or_default(),
+        )
     }
 
     /// The link that reopens the current settings (`shoal.share_link()`).
@@ -624,6 +657,7 @@ impl eframe::App for ShoalApp {
             self.notice = None;
         }
         let mut settings = self.lab.settings().clone();
+        crate::ui::studio_panel::begin_frame(&self.ctx, &settings.studio);
         scene_panel.bottom_ui(ui, &self.lab, &mut settings, &mut self.widget_rects);
 
         let mut actions = keyboard_shortcuts(ui, &mut settings);
@@ -653,6 +687,9 @@ impl eframe::App for ShoalApp {
                 });
             });
         self.interface_scale = view.interface_scale;
+        if let Some(studio) = crate::ui::studio_panel::end_frame(&self.ctx) {
+            settings.studio = studio;
+        }
 
         egui::CentralPanel::default()
             .frame(egui::Frame::NONE)
@@ -688,6 +725,18 @@ impl eframe::App for ShoalApp {
                 }
                 crate::ui::ExperimentOutcome::Notice(notice) => self.notice = Some(notice),
             }
+        }
+        let page_url = self.page_url.clone().unwrap_or_default();
+        if let Some(notice) =
+            self.studio
+                .windows_ui(ui.ctx(), &mut settings, &page_url, &mut self.widget_rects)
+        {
+            self.notice = Some(notice);
+        }
+        // The student view keeps what the teacher's rules keep.
+        let current = self.lab.settings();
+        if &settings != current {
+            current.studio.enforce(current, &mut settings);
         }
         if &settings != self.lab.settings() {
             self.lab.apply_settings(settings);

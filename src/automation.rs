@@ -10,6 +10,7 @@
 //! | `shoal.reset(seed?)` | rebuilds the world, from `seed` when given |
 //! | `shoal.turn(deg)` | physics scene: the selected fish starts a turn of `deg` degrees (+ left, −180 to 180) |
 //! | `shoal.share_link()` | the link that reopens exactly the current settings |
+//! | `shoal.student_link()` | the teacher's studio's *Share with class* link: the same settings in the student view (`settings/studio.rs`) |
 //! | `shoal.metrics_csv()` | the school metrics of the last minutes as CSV text (the aquarium's and schooling lab's table, in every scene) |
 //! | `shoal.export_csv()` | `{name, text}`: the scene's data file *Download data* saves (see `export.rs`), e.g. `shoal-reef-t0125s.csv` |
 //! | `shoal.widgets()` | where the main widgets are on the page, `{name: {x, y, width, height}}` in CSS pixels (for tests that click real widgets) |
@@ -144,8 +145,14 @@ impl Command {
     pub fn execute(self, lab: &mut Lab) -> Result<(), AutomationError> {
         match self {
             Self::Set(patch) => {
-                let mut settings = lab.settings().clone();
+                let before = lab.settings();
+                let mut settings = before.clone();
                 settings.apply_patch(&patch)?;
+                // A student view refuses what the teacher's studio keeps.
+                before
+                    .studio
+                    .check_unchanged(before, &settings)
+                    .map_err(SettingsError::from)?;
                 lab.apply_settings(settings);
             }
             Self::Step(n) => lab.step(n),
@@ -246,6 +253,9 @@ pub struct StateReport {
     pub metrics_right: Option<TankReport>,
     /// Whether two tanks are shown.
     pub compare: bool,
+    /// Is this page the student view of a teacher's studio link (the studio's
+    /// rules apply, mystery values are masked)?
+    pub student_view: bool,
     /// The message shown at the top of the view, if any (e.g. a share link that
     /// could not be opened).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -332,6 +342,7 @@ impl StateReport {
                 .run(Side::Right)
                 .map(|run| TankReport::new(run, settings)),
             compare: lab.comparing(),
+            student_view: settings.studio.student_view,
             notice: None,
             camera: None,
             ui_scale: None,

@@ -117,11 +117,19 @@ fn header(settings: &Settings, run: &Run) -> String {
         run.steps()
     );
     let _ = writeln!(out, "# seed: {}", settings.seed);
-    let _ = writeln!(
-        out,
-        "# settings link: #{} (put it after Shoal's address to reopen these settings)",
-        crate::settings::share_link::encode(settings)
-    );
+    if settings.studio.has_mystery_for_student() {
+        // The link holds the values the teacher made a mystery.
+        let _ = writeln!(
+            out,
+            "# settings link: withheld (this page has mystery values for the class to infer)"
+        );
+    } else {
+        let _ = writeln!(
+            out,
+            "# settings link: #{} (put it after Shoal's address to reopen these settings)",
+            crate::settings::share_link::encode(settings)
+        );
+    }
     out
 }
 

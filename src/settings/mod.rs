@@ -10,6 +10,7 @@ pub mod physics;
 pub mod range;
 pub mod reef;
 pub mod share_link;
+pub mod studio;
 pub mod tank;
 
 use serde::{Deserialize, Serialize};
@@ -18,6 +19,7 @@ pub use self::range::{Range, SettingError};
 use crate::settings::learning::LearningSettings;
 use crate::settings::physics::PhysicsSettings;
 use crate::settings::reef::ReefSettings;
+use crate::settings::studio::Studio;
 use crate::settings::tank::{Preset, TankSettings};
 use crate::sim::Tank;
 
@@ -164,6 +166,12 @@ pub struct Settings {
     /// The learning lab. Links made before it existed lack it.
     #[serde(default)]
     pub learning: LearningSettings,
+    /// The teacher's studio: which controls students see, may change and may
+    /// read, and the teacher's question (`studio.rs`). Links made before it
+    /// existed lack it, and a setting without rules, question or student view
+    /// leaves it out (its links are those of before the studio).
+    #[serde(default, skip_serializing_if = "Studio::is_empty")]
+    pub studio: Studio,
 }
 
 impl Default for Settings {
@@ -182,6 +190,7 @@ impl Default for Settings {
             physics: PhysicsSettings::default(),
             reef: ReefSettings::default(),
             learning: LearningSettings::default(),
+            studio: Studio::default(),
         }
     }
 }
@@ -256,6 +265,7 @@ impl Settings {
         self.physics.validate("physics.")?;
         self.reef.validate("reef.")?;
         self.learning.validate("learning.")?;
+        self.studio.validate()?;
         Ok(())
     }
 
@@ -285,6 +295,11 @@ impl Settings {
         let serde_json::Value::Object(patch) = patch else {
             return Err(SettingsError::NotAnObject(patch.to_string()));
         };
+        // The studio's rules are keyed by control, not fixed names: its part
+        // is checked by its own rules (`Studio::apply_patch`).
+        let mut patch = patch.clone();
+        let studio_patch = patch.remove("studio");
+        let patch = &patch;
         // A preset named in the patch is applied first, then the patch's values on
         // top of it: `{"left": {"preset": "group", "alignment": 40}}` gives the
         // group's weights with alignment 40 (and the label Custom), never a
@@ -317,6 +332,9 @@ impl Settings {
                 let tank = candidate.tank_mut(side);
                 tank.selected = tank.selected.filter(|&i| i < tank.fish_count);
             }
+        }
+        if let Some(studio) = &studio_patch {
+            candidate.studio.apply_patch(studio)?;
         }
         candidate.validate()?;
         candidate.settle(&base);

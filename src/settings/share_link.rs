@@ -142,6 +142,7 @@ mod tests {
                     crate::sim::learning::learning_lab::ControllerChoice::HandTuned
                 },
             },
+            studio: Default::default(),
         }
     }
 

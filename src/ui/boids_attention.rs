@@ -277,7 +277,14 @@ pub fn attention_section_ui(
             for k in 0..5 {
                 ui.label(egui::RichText::new(format!("■ {}", URGE_SHORT[k])).color(URGE_COLORS[k]))
                     .on_hover_text(URGE_WORDS[k]);
-                ui.label(format!("{:.2} m/s²", a.urges_m_per_s2[k].length()));
+                // A mystery weight's strength would give it away.
+                let key = format!("{}.{}", side.name(), URGE_SHORT[k].to_lowercase());
+                if super::studio_panel::is_mystery(ui, &key) {
+                    ui.label("?")
+                        .on_hover_text("A mystery value: your teacher hid it");
+                } else {
+                    ui.label(format!("{:.2} m/s²", a.urges_m_per_s2[k].length()));
+                }
                 ui.label(if a.applied[k] { "yes" } else { "–" });
                 ui.end_row();
             }

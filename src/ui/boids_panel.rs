@@ -11,6 +11,7 @@ use super::boids_attention::{attention_section_ui, draw_attention, selected_atte
 use super::metrics_panel::{METRICS_PANEL_HEIGHT, metrics_panel_ui, side_color};
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
 use super::show_bottom_panel;
+use super::studio_panel::{control, control_block, control_row, is_hidden, is_mystery};
 use super::tank_panel::{mode_label, tank_ui};
 use crate::lab::Lab;
 use crate::render::OrbitCamera;
@@ -45,20 +46,28 @@ impl ScenePanel for AquariumPanel {
             .num_columns(2)
             .spacing([8.0, 6.0])
             .show(ui, |ui| {
-                ui.label("Fish")
-                    .on_hover_text("How many fish are in the tank");
-                let fish = ui
-                    .add(
-                        egui::Slider::new(
-                            &mut settings.left.fish_count,
-                            TankSettings::FISH_COUNT.bounds(),
-                        )
-                        .logarithmic(true)
-                        .smallest_positive(1.0),
-                    )
-                    .on_hover_text("How many fish are in the tank");
-                rects.insert("fish_count", fish.rect);
-                ui.end_row();
+                control_row(
+                    ui,
+                    rects,
+                    "left.fish_count",
+                    |ui| {
+                        ui.label("Fish")
+                            .on_hover_text("How many fish are in the tank");
+                    },
+                    |ui, rects| {
+                        let fish = ui
+                            .add(
+                                egui::Slider::new(
+                                    &mut settings.left.fish_count,
+                                    TankSettings::FISH_COUNT.bounds(),
+                                )
+                                .logarithmic(true)
+                                .smallest_positive(1.0),
+                            )
+                            .on_hover_text("How many fish are in the tank");
+                        rects.insert("fish_count", fish.rect);
+                    },
+                );
             });
     }
 }
@@ -142,20 +151,24 @@ impl ScenePanel for BoidsPanel {
     fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
         ui.separator();
         ui.horizontal_wrapped(|ui| {
-            let compare = ui
-                .checkbox(&mut settings.compare, "Compare two tanks")
-                .on_hover_text(
-                    "Show two tanks side by side with the same fish at the same start. \
-                     Give them different urges and see how differently they behave.",
-                );
-            rects.insert("compare", compare.rect);
-            let vision = ui
-                .checkbox(&mut settings.show_vision, "Show vision")
-                .on_hover_text(
-                    "Draw what each fish can see: its field of view and lines to the \
-                     neighbours it notices",
-                );
-            rects.insert("show_vision", vision.rect);
+            control(ui, rects, "compare", |ui, rects| {
+                let compare = ui
+                    .checkbox(&mut settings.compare, "Compare two tanks")
+                    .on_hover_text(
+                        "Show two tanks side by side with the same fish at the same start. \
+                         Give them different urges and see how differently they behave.",
+                    );
+                rects.insert("compare", compare.rect);
+            });
+            control(ui, rects, "show_vision", |ui, rects| {
+                let vision = ui
+                    .checkbox(&mut settings.show_vision, "Show vision")
+                    .on_hover_text(
+                        "Draw what each fish can see: its field of view and lines to the \
+                         neighbours it notices",
+                    );
+                rects.insert("show_vision", vision.rect);
+            });
         });
         let sides: &[Side] = if settings.compare {
             &Side::BOTH
@@ -194,29 +207,40 @@ impl ScenePanel for BoidsPanel {
             });
         }
         ui.add_space(4.0);
-        tank_ui(ui, settings.tank_mut(self.edit_side), rects);
+        tank_ui(ui, settings.tank_mut(self.edit_side), self.edit_side, rects);
 
         ui.add_space(4.0);
-        ui.label(egui::RichText::new("Rocks").strong())
-            .on_hover_text("Change the rocks in the tank with the mouse");
-        ui.horizontal_wrapped(|ui| {
-            for tool in EditTool::ALL {
-                let response = ui
-                    .selectable_value(&mut self.tool, tool, tool.label())
-                    .on_hover_text(tool.help());
-                rects.insert(tool.name(), response.rect);
+        let rocks = format!("{}.obstacles", self.edit_side.name());
+        if !is_hidden(ui, &rocks) {
+            ui.label(egui::RichText::new("Rocks").strong())
+                .on_hover_text("Change the rocks in the tank with the mouse");
+        }
+        let edit_side = self.edit_side;
+        let tool = &mut self.tool;
+        let drawn = control_block(ui, rects, &rocks, "rock tools", |ui, rects| {
+            ui.horizontal_wrapped(|ui| {
+                for t in EditTool::ALL {
+                    let response = ui
+                        .selectable_value(tool, t, t.label())
+                        .on_hover_text(t.help());
+                    rects.insert(t.name(), response.rect);
+                }
+            });
+            ui.label(egui::RichText::new(tool.help()).small().weak());
+            let restore = ui
+                .add_enabled(
+                    settings.tank(edit_side).obstacles.is_some(),
+                    egui::Button::new("Restore the seed's rocks"),
+                )
+                .on_hover_text("Undo all rock changes in this tank");
+            rects.insert("restore_rocks", restore.rect);
+            if restore.clicked() {
+                settings.tank_mut(edit_side).obstacles = None;
             }
         });
-        ui.label(egui::RichText::new(self.tool.help()).small().weak());
-        let restore = ui
-            .add_enabled(
-                settings.tank(self.edit_side).obstacles.is_some(),
-                egui::Button::new("Restore the seed's rocks"),
-            )
-            .on_hover_text("Undo all rock changes in this tank");
-        rects.insert("restore_rocks", restore.rect);
-        if restore.clicked() {
-            settings.tank_mut(self.edit_side).obstacles = None;
+        if drawn.is_none() {
+            // Locked or hidden rocks: the mouse only looks.
+            self.tool = EditTool::Look;
         }
         ui.add_space(4.0);
         super::experiment_panel::experiment_button(ui, rects);
@@ -234,14 +258,16 @@ impl ScenePanel for BoidsPanel {
             .iter()
             .map(|run| {
                 let tank = lab.settings().tank(run.side());
-                if lab.comparing() {
-                    format!(
-                        "{} ({})",
-                        tank_name(run.side(), self.stacked.get()),
-                        tank.preset.label()
-                    )
+                // A mystery mix keeps its preset's name to itself.
+                let preset = if is_mystery(ui, &format!("{}.preset", run.side().name())) {
+                    "? (mystery)"
                 } else {
-                    tank.preset.label().to_owned()
+                    tank.preset.label()
+                };
+                if lab.comparing() {
+                    format!("{} ({preset})", tank_name(run.side(), self.stacked.get()),)
+                } else {
+                    preset.to_owned()
                 }
             })
             .collect();
@@ -429,11 +455,26 @@ fn tank_name(side: Side, stacked: bool) -> &'static str {
 /// In compare mode, each tank's name, preset and control mode at its top left.
 fn draw_tank_label(view: &ViewContext, settings: &Settings) {
     let tank = settings.tank(view.side);
+    // The studio's mystery values stay a mystery over the tank too.
+    let hidden = |name: &str| {
+        let rule = settings
+            .studio
+            .for_student(&format!("{}.{name}", view.side.name()));
+        rule.mystery || rule.hidden
+    };
     let label = format!(
         "{} · {} · {}",
         tank_name(view.side, view.stacked),
-        tank.preset.label(),
-        mode_label(tank.mode)
+        if hidden("preset") {
+            "?"
+        } else {
+            tank.preset.label()
+        },
+        if hidden("mode") {
+            "?"
+        } else {
+            mode_label(tank.mode)
+        }
     );
     // Below the *Controls* button when the panel is hidden.
     let top = if view.side == Side::Left && view.panel_hidden {

@@ -6,6 +6,7 @@ use eframe::egui;
 
 use super::WidgetRects;
 use super::scene_panel::{CurrentPanel, PanelAction};
+use super::studio_panel::{control, control_row};
 use crate::settings::{SEED_MAX, Scene, Settings};
 
 /// The view options the side panel edits that are not settings (they belong
@@ -43,16 +44,22 @@ pub fn control_panel_ui(
             }
         });
     });
-    ui.horizontal_wrapped(|ui| {
-        for scene in Scene::ALL {
-            let response = ui
-                .selectable_value(&mut settings.scene, scene, scene.label())
-                .on_hover_text(scene.description());
-            rects.insert(&format!("scene_{}", scene.name()), response.rect);
-        }
+    super::studio_panel::question_card(ui, &settings.studio, rects);
+    control(ui, rects, "scene", |ui, rects| {
+        ui.horizontal_wrapped(|ui| {
+            for scene in Scene::ALL {
+                let response = ui
+                    .selectable_value(&mut settings.scene, scene, scene.label())
+                    .on_hover_text(scene.description());
+                rects.insert(&format!("scene_{}", scene.name()), response.rect);
+            }
+        });
     });
     ui.label(egui::RichText::new(settings.scene.description()).weak());
-    super::about::about_button(ui, rects);
+    ui.horizontal_wrapped(|ui| {
+        super::about::about_button(ui, rects);
+        super::studio_panel::studio_button(ui, &settings.studio, rects);
+    });
     ui.separator();
 
     ui.label(egui::RichText::new("Simulation").strong());
@@ -62,13 +69,15 @@ pub fn control_panel_ui(
         } else {
             ("Pause", "Freeze the fish so you can look closely (Space)")
         };
-        let play_pause = ui
-            .add(egui::Button::new(icon).min_size(egui::vec2(64.0, 0.0)))
-            .on_hover_text(help);
-        rects.insert("play_pause", play_pause.rect);
-        if play_pause.clicked() {
-            settings.paused = !settings.paused;
-        }
+        control(ui, rects, "paused", |ui, rects| {
+            let play_pause = ui
+                .add(egui::Button::new(icon).min_size(egui::vec2(64.0, 0.0)))
+                .on_hover_text(help);
+            rects.insert("play_pause", play_pause.rect);
+            if play_pause.clicked() {
+                settings.paused = !settings.paused;
+            }
+        });
         let step = ui.button("Step").on_hover_text(step_help(step_secs));
         rects.insert("step", step.rect);
         if step.clicked() {
@@ -88,37 +97,56 @@ pub fn control_panel_ui(
         .num_columns(2)
         .spacing([8.0, 6.0])
         .show(ui, |ui| {
-            ui.label("Speed")
-                .on_hover_text("How fast time runs: 1× is real time, 2× is twice as fast");
-            let speed = ui
-                .add(
-                    egui::Slider::new(&mut settings.speed, Settings::SPEED.bounds())
-                        .logarithmic(true)
-                        .suffix("×")
-                        .max_decimals(2),
-                )
-                .on_hover_text("How fast time runs: 1× is real time, 2× is twice as fast");
-            rects.insert("speed", speed.rect);
-            ui.end_row();
-
-            ui.label("Seed").on_hover_text(
-                "The number that decides where everything starts. \
-                 The same seed always gives the same run, so a class can share it",
+            let speed_help = "How fast time runs: 1× is real time, 2× is twice as fast";
+            control_row(
+                ui,
+                rects,
+                "speed",
+                |ui| {
+                    ui.label("Speed").on_hover_text(speed_help);
+                },
+                |ui, rects| {
+                    let speed = ui
+                        .add(
+                            egui::Slider::new(&mut settings.speed, Settings::SPEED.bounds())
+                                .logarithmic(true)
+                                .suffix("×")
+                                .max_decimals(2),
+                        )
+                        .on_hover_text(speed_help);
+                    rects.insert("speed", speed.rect);
+                },
             );
-            ui.horizontal(|ui| {
-                let seed = ui
-                    .add(egui::DragValue::new(&mut settings.seed).range(Settings::SEED.bounds()))
-                    .on_hover_text("Type a number to start a new run from it");
-                rects.insert("seed", seed.rect);
-                let dice = ui
-                    .button("New")
-                    .on_hover_text("Pick a new random seed: a different tank and different fish");
-                rects.insert("new_seed", dice.rect);
-                if dice.clicked() {
-                    settings.seed = next_seed(settings.seed);
-                }
-            });
-            ui.end_row();
+
+            control_row(
+                ui,
+                rects,
+                "seed",
+                |ui| {
+                    ui.label("Seed").on_hover_text(
+                        "The number that decides where everything starts. \
+                         The same seed always gives the same run, so a class can share it",
+                    );
+                },
+                |ui, rects| {
+                    ui.horizontal(|ui| {
+                        let seed = ui
+                            .add(
+                                egui::DragValue::new(&mut settings.seed)
+                                    .range(Settings::SEED.bounds()),
+                            )
+                            .on_hover_text("Type a number to start a new run from it");
+                        rects.insert("seed", seed.rect);
+                        let dice = ui.button("New").on_hover_text(
+                            "Pick a new random seed: a different tank and different fish",
+                        );
+                        rects.insert("new_seed", dice.rect);
+                        if dice.clicked() {
+                            settings.seed = next_seed(settings.seed);
+                        }
+                    });
+                },
+            );
         });
 
     // The scene's own controls: those of the scene just chosen, if a tab was

@@ -48,8 +48,13 @@ fn set_open(ctx: &egui::Context, open: bool) {
     ctx.data_mut(|d| d.insert_temp(open_id(), open));
 }
 
-/// The side panel's *Experiment…* button: opens (or closes) the window.
+/// The side panel's *Experiment…* button: opens (or closes) the window. Not
+/// in a student view with mystery values: the experiment's table prints every
+/// setting.
 pub fn experiment_button(ui: &mut egui::Ui, rects: &mut WidgetRects) {
+    if super::studio_panel::has_mystery(ui) {
+        return;
+    }
     let r = ui.button("Experiment…").on_hover_text(
         "Run the tank many times: vary a setting over levels and seeds, measure the school, \
          and plot the answer",

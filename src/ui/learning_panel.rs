@@ -11,6 +11,7 @@ use super::body_overlay::muscle_color;
 use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
 use super::files::{FileError, PendingFile, open_text_file, save_text_file};
 use super::scene_panel::{Notice, ScenePanel};
+use super::studio_panel::{control, control_row};
 use crate::lab::{Lab, LabError, Run};
 use crate::render::Framing;
 use crate::settings::Settings;
@@ -49,33 +50,50 @@ fn learning_controls_ui(
         .spacing([8.0, 6.0])
         .show(ui, |ui| {
             let help = "Who learns. A shark is the same body, twice as long";
-            ui.label("Learner").on_hover_text(help);
-            ui.horizontal(|ui| {
-                for (species, label, name) in [
-                    (BodySpecies::Fish, "Fish", "learning_fish"),
-                    (BodySpecies::Shark, "Shark", "learning_shark"),
-                ] {
-                    let r = ui
-                        .radio_value(&mut learning.species, species, label)
-                        .on_hover_text(help);
-                    rects.insert(name, r.rect);
-                }
-            });
-            ui.end_row();
+            control_row(
+                ui,
+                rects,
+                "learning.species",
+                |ui| {
+                    ui.label("Learner").on_hover_text(help);
+                },
+                |ui, rects| {
+                    ui.horizontal(|ui| {
+                        for (species, label, name) in [
+                            (BodySpecies::Fish, "Fish", "learning_fish"),
+                            (BodySpecies::Shark, "Shark", "learning_shark"),
+                        ] {
+                            let r = ui
+                                .radio_value(&mut learning.species, species, label)
+                                .on_hover_text(help);
+                            rects.insert(name, r.rect);
+                        }
+                    });
+                },
+            );
+
             let help = "How many tries the fish gets for each drill. More tries, better \
                         swimming (the paper's best shark had 6840). Changing it starts again";
-            ui.label("Tries per drill").on_hover_text(help);
-            let r = ui
-                .add(
-                    egui::Slider::new(
-                        &mut learning.annealing_steps,
-                        LearningSettings::ANNEALING_STEPS.bounds(),
-                    )
-                    .logarithmic(true),
-                )
-                .on_hover_text(help);
-            rects.insert("learning_steps", r.rect);
-            ui.end_row();
+            control_row(
+                ui,
+                rects,
+                "learning.annealing_steps",
+                |ui| {
+                    ui.label("Tries per drill").on_hover_text(help);
+                },
+                |ui, rects| {
+                    let r = ui
+                        .add(
+                            egui::Slider::new(
+                                &mut learning.annealing_steps,
+                                LearningSettings::ANNEALING_STEPS.bounds(),
+                            )
+                            .logarithmic(true),
+                        )
+                        .on_hover_text(help);
+                    rects.insert("learning_steps", r.rect);
+                },
+            );
         });
     ui.horizontal(|ui| {
         let label = if learning.training {
@@ -83,14 +101,17 @@ fn learning_controls_ui(
         } else {
             "Start training"
         };
-        let r = ui.button(label).on_hover_text(
-            "The fish practises a little every frame: it changes its muscle timing at random, \
-             keeps changes that take it farther, and sometimes keeps a worse one to explore",
-        );
-        rects.insert("learning_train", r.rect);
-        if r.clicked() {
-            learning.training = !learning.training;
-        }
+        control(ui, rects, "learning.training", |ui, rects| {
+            let r = ui.button(label).on_hover_text(
+                "The fish practises a little every frame: it changes its muscle timing at \
+                 random, keeps changes that take it farther, and sometimes keeps a worse one \
+                 to explore",
+            );
+            rects.insert("learning_train", r.rect);
+            if r.clicked() {
+                learning.training = !learning.training;
+            }
+        });
         let r = ui
             .button("Reset training")
             .on_hover_text("Forget everything: the fish is brain-dead again");
@@ -104,20 +125,22 @@ fn learning_controls_ui(
                 ones its designers wrote, or the ones it learned by itself";
     ui.label("The swimmer between the buoys uses")
         .on_hover_text(help);
-    ui.horizontal(|ui| {
-        for (choice, label, name) in [
-            (ControllerChoice::Learned, "Learned", "learning_learned"),
-            (
-                ControllerChoice::HandTuned,
-                "Hand-tuned",
-                "learning_hand_tuned",
-            ),
-        ] {
-            let r = ui
-                .radio_value(&mut learning.controller, choice, label)
-                .on_hover_text(help);
-            rects.insert(name, r.rect);
-        }
+    control(ui, rects, "learning.controller", |ui, rects| {
+        ui.horizontal(|ui| {
+            for (choice, label, name) in [
+                (ControllerChoice::Learned, "Learned", "learning_learned"),
+                (
+                    ControllerChoice::HandTuned,
+                    "Hand-tuned",
+                    "learning_hand_tuned",
+                ),
+            ] {
+                let r = ui
+                    .radio_value(&mut learning.controller, choice, label)
+                    .on_hover_text(help);
+                rects.insert(name, r.rect);
+            }
+        })
     });
     ui.horizontal(|ui| {
         let r = ui.button("Run the race").on_hover_text(

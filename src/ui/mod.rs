@@ -17,6 +17,7 @@ mod files;
 pub mod learning_panel;
 mod metrics_panel;
 mod physics_panel;
+mod qr;
 pub mod reef_inspector;
 mod reef_minds;
 pub mod reef_overlay;
@@ -25,6 +26,7 @@ mod reef_skip;
 mod scene_panel;
 pub mod screen;
 mod status_line;
+pub mod studio_panel;
 mod tank_panel;
 
 pub use about::about_window;
@@ -39,6 +41,7 @@ pub use scene_panel::{
     CurrentPanel, Notice, PanelAction, ScenePanel, ViewContext, ViewInput, scene_panel,
 };
 pub use status_line::status_line_ui;
+pub use studio_panel::StudioPanel;
 pub use tank_panel::mode_label;
 
 /// Where the named widgets were drawn this frame, in egui points (CSS pixels in the

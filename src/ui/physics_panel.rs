@@ -10,6 +10,7 @@ use super::body_overlay::{self, muscle_color};
 use super::bottom_panel::time_plot;
 use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
+use super::studio_panel::{control, control_block, control_row, is_hidden};
 use crate::lab::{BODY_TRACE_SECS, Lab, Run};
 use crate::settings::Settings;
 use crate::settings::physics::PhysicsSettings;
@@ -33,91 +34,129 @@ fn physics_controls_ui(
         .show(ui, |ui| {
             let help = "How many muscle-driven fish swim in the tank. Each one is 23 masses \
                         joined by 91 springs";
-            ui.label("Fish").on_hover_text(help);
-            let fish = ui
-                .add(
-                    egui::Slider::new(
-                        &mut physics.fish_count,
-                        PhysicsSettings::FISH_COUNT.bounds(),
-                    )
-                    .logarithmic(true),
-                )
-                .on_hover_text(help);
-            rects.insert("physics_fish", fish.rect);
-            ui.end_row();
+            control_row(
+                ui,
+                rects,
+                "physics.fish_count",
+                |ui| {
+                    ui.label("Fish").on_hover_text(help);
+                },
+                |ui, rects| {
+                    let fish = ui
+                        .add(
+                            egui::Slider::new(
+                                &mut physics.fish_count,
+                                PhysicsSettings::FISH_COUNT.bounds(),
+                            )
+                            .logarithmic(true),
+                        )
+                        .on_hover_text(help);
+                    rects.insert("physics_fish", fish.rect);
+                },
+            );
 
             let help = "Sharks are built like the fish, only twice as long and four times heavier";
-            ui.label("Sharks").on_hover_text(help);
-            ui.horizontal(|ui| {
-                let minus = ui
-                    .add_enabled(
-                        physics.sharks > PhysicsSettings::SHARKS.min,
-                        egui::Button::new("−"),
-                    )
-                    .on_hover_text("One shark fewer");
-                rects.insert("physics_sharks_minus", minus.rect);
-                if minus.clicked() {
-                    physics.sharks -= 1;
-                }
-                ui.label(physics.sharks.to_string()).on_hover_text(help);
-                let plus = ui
-                    .add_enabled(
-                        physics.sharks < PhysicsSettings::SHARKS.max,
-                        egui::Button::new("+"),
-                    )
-                    .on_hover_text("One more shark");
-                rects.insert("physics_sharks_plus", plus.rect);
-                if plus.clicked() {
-                    physics.sharks += 1;
-                }
-            });
-            ui.end_row();
+            control_row(
+                ui,
+                rects,
+                "physics.sharks",
+                |ui| {
+                    ui.label("Sharks").on_hover_text(help);
+                },
+                |ui, rects| {
+                    ui.horizontal(|ui| {
+                        let minus = ui
+                            .add_enabled(
+                                physics.sharks > PhysicsSettings::SHARKS.min,
+                                egui::Button::new("−"),
+                            )
+                            .on_hover_text("One shark fewer");
+                        rects.insert("physics_sharks_minus", minus.rect);
+                        if minus.clicked() {
+                            physics.sharks -= 1;
+                        }
+                        ui.label(physics.sharks.to_string()).on_hover_text(help);
+                        let plus = ui
+                            .add_enabled(
+                                physics.sharks < PhysicsSettings::SHARKS.max,
+                                egui::Button::new("+"),
+                            )
+                            .on_hover_text("One more shark");
+                        rects.insert("physics_sharks_plus", plus.rect);
+                        if plus.clicked() {
+                            physics.sharks += 1;
+                        }
+                    });
+                },
+            );
 
             let help = "How fast the water flows round the tank. A fish that stops \
                         swimming drifts with it; to stay put it must swim against it";
-            ui.label("Current").on_hover_text(help);
-            let current = ui
-                .add(
-                    egui::Slider::new(
-                        &mut physics.current_m_per_s,
-                        PhysicsSettings::CURRENT_M_PER_S.bounds(),
-                    )
-                    .suffix(" m/s")
-                    .max_decimals(2),
-                )
-                .on_hover_text(help);
-            rects.insert("physics_current", current.rect);
-            ui.end_row();
+            control_row(
+                ui,
+                rects,
+                "physics.current_m_per_s",
+                |ui| {
+                    ui.label("Current").on_hover_text(help);
+                },
+                |ui, rects| {
+                    let current = ui
+                        .add(
+                            egui::Slider::new(
+                                &mut physics.current_m_per_s,
+                                PhysicsSettings::CURRENT_M_PER_S.bounds(),
+                            )
+                            .suffix(" m/s")
+                            .max_decimals(2),
+                        )
+                        .on_hover_text(help);
+                    rects.insert("physics_current", current.rect);
+                },
+            );
         });
 
-    ui.label("The fish…");
-    for behaviour in PhysicsBehaviour::ALL {
-        let radio = ui
-            .radio_value(&mut physics.behaviour, behaviour, behaviour.label())
-            .on_hover_text(behaviour.explanation());
-        rects.insert(
-            &format!("physics_{}", behaviour.label().to_lowercase()),
-            radio.rect,
-        );
+    if !is_hidden(ui, "physics.behaviour") {
+        ui.label("The fish…");
     }
-    ui.label(egui::RichText::new(physics.behaviour.explanation()).weak());
+    control_block(
+        ui,
+        rects,
+        "physics.behaviour",
+        "how they swim",
+        |ui, rects| {
+            for behaviour in PhysicsBehaviour::ALL {
+                let radio = ui
+                    .radio_value(&mut physics.behaviour, behaviour, behaviour.label())
+                    .on_hover_text(behaviour.explanation());
+                rects.insert(
+                    &format!("physics_{}", behaviour.label().to_lowercase()),
+                    radio.rect,
+                );
+            }
+            ui.label(egui::RichText::new(physics.behaviour.explanation()).weak());
+        },
+    );
 
     ui.add_space(4.0);
-    let body = ui
-        .checkbox(&mut physics.show_body, "Show masses and springs")
-        .on_hover_text(
-            "Draw each fish's skeleton: white dots are the 23 masses, lines the springs. \
-             The 12 muscles glow red when they pull and pale blue when they rest",
-        );
-    rects.insert("show_body", body.rect);
-    let forces = ui
-        .checkbox(&mut physics.show_forces, "Show forces")
-        .on_hover_text(
-            "Yellow: the water pushing on the body (the push on the beating tail drives the \
-             fish forward). Green: where the fish wants to go. White: where it goes. \
-             Blue: the current",
-        );
-    rects.insert("show_forces", forces.rect);
+    control(ui, rects, "physics.show_body", |ui, rects| {
+        let body = ui
+            .checkbox(&mut physics.show_body, "Show masses and springs")
+            .on_hover_text(
+                "Draw each fish's skeleton: white dots are the 23 masses, lines the springs. \
+                 The 12 muscles glow red when they pull and pale blue when they rest",
+            );
+        rects.insert("show_body", body.rect);
+    });
+    control(ui, rects, "physics.show_forces", |ui, rects| {
+        let forces = ui
+            .checkbox(&mut physics.show_forces, "Show forces")
+            .on_hover_text(
+                "Yellow: the water pushing on the body (the push on the beating tail drives \
+                 the fish forward). Green: where the fish wants to go. White: where it goes. \
+                 Blue: the current",
+            );
+        rects.insert("show_forces", forces.rect);
+    });
     ui.add_space(4.0);
     super::experiment_panel::experiment_button(ui, rects);
 

@@ -186,8 +186,9 @@ const MIND_ROWS: [MindRow; 9] = [
     },
 ];
 
-/// One row of the *Minds* grid: the label, a slider over the trait's range
-/// and its named values as buttons; what the teacher picks goes into `traits`.
+/// The control of one row of the *Minds* grid (its label is the caller's): a
+/// slider over the trait's range and its named values as buttons; what the
+/// teacher picks goes into `traits`.
 fn mind_row_ui(
     ui: &mut egui::Ui,
     row: &MindRow,
@@ -198,7 +199,6 @@ fn mind_row_ui(
     let Some(spec) = MindTraits::ALL.iter().find(|t| t.name == row.name) else {
         return;
     };
-    ui.label(row.label).on_hover_text(row.help);
     ui.vertical(|ui| {
         let value = (spec.current)(now);
         if let Some(logarithmic) = row.slider {
@@ -230,7 +230,6 @@ fn mind_row_ui(
             });
         }
     });
-    ui.end_row();
 }
 
 /// The reef's *Minds* section: the constants of hunger, libido and fear and
@@ -292,8 +291,22 @@ pub fn minds_ui(
                 .num_columns(2)
                 .spacing([8.0, 6.0])
                 .show(ui, |ui| {
+                    let kind_name = serde_json::to_value(*kind)
+                        .ok()
+                        .and_then(|v| v.as_str().map(str::to_owned))
+                        .unwrap_or_default();
                     for row in MIND_ROWS.iter().filter(|r| r.kinds.contains(kind)) {
-                        mind_row_ui(ui, row, t, &now, rects);
+                        // The studio's rules name it `reef.traits.prey.fear_threshold`.
+                        let key = format!("reef.traits.{kind_name}.{}", row.name);
+                        super::studio_panel::control_row(
+                            ui,
+                            rects,
+                            &key,
+                            |ui| {
+                                ui.label(row.label).on_hover_text(row.help);
+                            },
+                            |ui, rects| mind_row_ui(ui, row, t, &now, rects),
+                        );
                     }
                 });
             let changed = *t != MindTraits::default();

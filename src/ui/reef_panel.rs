@@ -11,6 +11,7 @@ use super::reef_inspector::{FishEyeView, reef_inspector_height, reef_inspector_u
 use super::reef_minds::minds_ui;
 use super::reef_skip::SkipUi;
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
+use super::studio_panel::{control, control_row};
 use super::{body_overlay, reef_overlay};
 use crate::lab::{Lab, Run};
 use crate::render::Framing;
@@ -55,23 +56,25 @@ pub fn intention_color(intention: Intention) -> egui::Color32 {
 fn demo_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut WidgetRects) {
     ui.separator();
     ui.label(egui::RichText::new("Reef").strong());
-    ui.horizontal_wrapped(|ui| {
-        for demo in ReefScene::ALL {
-            let button = ui
-                .selectable_label(reef.demo == demo, demo.label())
-                .on_hover_text(demo.explanation());
-            rects.insert(&format!("reef_demo_{}", demo_name(demo)), button.rect);
-            if button.clicked() && reef.demo != demo {
-                reef.demo = demo;
-                reef.prey_count = None;
-                reef.food_count = None;
-                // The feeding demo is about bites, too small to see from across
-                // the tank: it opens following its first fish.
-                let feeding = demo == ReefScene::Feeding;
-                reef.selected = feeding.then_some(0);
-                reef.follow = feeding;
+    control(ui, rects, "reef.demo", |ui, rects| {
+        ui.horizontal_wrapped(|ui| {
+            for demo in ReefScene::ALL {
+                let button = ui
+                    .selectable_label(reef.demo == demo, demo.label())
+                    .on_hover_text(demo.explanation());
+                rects.insert(&format!("reef_demo_{}", demo_name(demo)), button.rect);
+                if button.clicked() && reef.demo != demo {
+                    reef.demo = demo;
+                    reef.prey_count = None;
+                    reef.food_count = None;
+                    // The feeding demo is about bites, too small to see from across
+                    // the tank: it opens following its first fish.
+                    let feeding = demo == ReefScene::Feeding;
+                    reef.selected = feeding.then_some(0);
+                    reef.follow = feeding;
+                }
             }
-        }
+        })
     });
     ui.label(egui::RichText::new(reef.demo.explanation()).italics());
 }
@@ -85,104 +88,157 @@ fn reef_sliders_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut Widge
             let help = "Muscles: each fish is a body of springs that swims by bending (slower to \
                         compute, true to the paper). Points: each fish is a dot that steers \
                         directly (fast, for big scenes). The mind is the same.";
-            ui.label("Body").on_hover_text(help);
-            ui.horizontal(|ui| {
-                for (kind, label, name) in [
-                    (ReefBodyKind::Physical, "Muscles", "reef_body_physical"),
-                    (ReefBodyKind::PointMass, "Points", "reef_body_point"),
-                ] {
-                    let r = ui
-                        .radio_value(&mut reef.body, kind, label)
-                        .on_hover_text(help);
-                    rects.insert(name, r.rect);
-                }
-            });
-            ui.end_row();
+            control_row(
+                ui,
+                rects,
+                "reef.body",
+                |ui| {
+                    ui.label("Body").on_hover_text(help);
+                },
+                |ui, rects| {
+                    ui.horizontal(|ui| {
+                        for (kind, label, name) in [
+                            (ReefBodyKind::Physical, "Muscles", "reef_body_physical"),
+                            (ReefBodyKind::PointMass, "Points", "reef_body_point"),
+                        ] {
+                            let r = ui
+                                .radio_value(&mut reef.body, kind, label)
+                                .on_hover_text(help);
+                            rects.insert(name, r.rect);
+                        }
+                    });
+                },
+            );
 
             let demo_prey = reef.demo.default_prey_count() as u32;
             let help =
                 "How many small prey fish live in this reef (they school and flee the shark)";
-            ui.label("Prey fish").on_hover_text(help);
-            let mut prey = reef.prey_count.unwrap_or(demo_prey);
-            let r = ui
-                .add(egui::Slider::new(
-                    &mut prey,
-                    ReefSettings::PREY_COUNT.bounds(),
-                ))
-                .on_hover_text(help);
-            rects.insert("reef_prey", r.rect);
-            if r.changed() {
-                reef.prey_count = Some(prey);
-                reef.selected = None;
-            }
-            ui.end_row();
+            control_row(
+                ui,
+                rects,
+                "reef.prey_count",
+                |ui| {
+                    ui.label("Prey fish").on_hover_text(help);
+                },
+                |ui, rects| {
+                    let mut prey = reef.prey_count.unwrap_or(demo_prey);
+                    let r = ui
+                        .add(egui::Slider::new(
+                            &mut prey,
+                            ReefSettings::PREY_COUNT.bounds(),
+                        ))
+                        .on_hover_text(help);
+                    rects.insert("reef_prey", r.rect);
+                    if r.changed() {
+                        reef.prey_count = Some(prey);
+                        reef.selected = None;
+                    }
+                },
+            );
 
             let help = "How much plankton drifts in the water; eaten plankton is replaced";
-            ui.label("Plankton").on_hover_text(help);
-            let mut food = reef
-                .food_count
-                .unwrap_or(reef.demo.default_food_count() as u32);
-            let r = ui
-                .add(egui::Slider::new(
-                    &mut food,
-                    ReefSettings::FOOD_COUNT.bounds(),
-                ))
-                .on_hover_text(help);
-            rects.insert("reef_food", r.rect);
-            if r.changed() {
-                reef.food_count = Some(food);
-            }
-            ui.end_row();
+            control_row(
+                ui,
+                rects,
+                "reef.food_count",
+                |ui| {
+                    ui.label("Plankton").on_hover_text(help);
+                },
+                |ui, rects| {
+                    let mut food = reef
+                        .food_count
+                        .unwrap_or(reef.demo.default_food_count() as u32);
+                    let r = ui
+                        .add(egui::Slider::new(
+                            &mut food,
+                            ReefSettings::FOOD_COUNT.bounds(),
+                        ))
+                        .on_hover_text(help);
+                    rects.insert("reef_food", r.rect);
+                    if r.changed() {
+                        reef.food_count = Some(food);
+                    }
+                },
+            );
 
             let help = "How far a fish can see in this water, metres. Murky water: fish see \
                         less, find less food and notice the shark later";
-            ui.label("Visibility").on_hover_text(help);
-            let r = ui
-                .add(
-                    egui::Slider::new(&mut reef.visibility_m, ReefSettings::VISIBILITY_M.bounds())
-                        .suffix(" m"),
-                )
-                .on_hover_text(help);
-            rects.insert("reef_visibility", r.rect);
-            ui.end_row();
+            control_row(
+                ui,
+                rects,
+                "reef.visibility_m",
+                |ui| {
+                    ui.label("Visibility").on_hover_text(help);
+                },
+                |ui, rects| {
+                    let r = ui
+                        .add(
+                            egui::Slider::new(
+                                &mut reef.visibility_m,
+                                ReefSettings::VISIBILITY_M.bounds(),
+                            )
+                            .suffix(" m"),
+                        )
+                        .on_hover_text(help);
+                    rects.insert("reef_visibility", r.rect);
+                },
+            );
 
             let help = "How fast the water flows; it carries plankton and sways the seaweed";
-            ui.label("Current").on_hover_text(help);
-            let r = ui
-                .add(
-                    egui::Slider::new(
-                        &mut reef.current_m_per_s,
-                        ReefSettings::CURRENT_M_PER_S.bounds(),
-                    )
-                    .suffix(" m/s"),
-                )
-                .on_hover_text(help);
-            rects.insert("reef_current", r.rect);
-            ui.end_row();
+            control_row(
+                ui,
+                rects,
+                "reef.current_m_per_s",
+                |ui| {
+                    ui.label("Current").on_hover_text(help);
+                },
+                |ui, rects| {
+                    let r = ui
+                        .add(
+                            egui::Slider::new(
+                                &mut reef.current_m_per_s,
+                                ReefSettings::CURRENT_M_PER_S.bounds(),
+                            )
+                            .suffix(" m/s"),
+                        )
+                        .on_hover_text(help);
+                    rects.insert("reef_current", r.rect);
+                },
+            );
 
             let help = "Colour the water by how bright or how warm it is. Some fish like light \
                         or warmth and leave water they do not like";
-            ui.label("Show water").on_hover_text(help);
-            ui.horizontal(|ui| {
-                for overlay in ReefOverlay::ALL {
-                    let r = ui
-                        .radio_value(&mut reef.overlay, overlay, overlay.label())
-                        .on_hover_text(help);
-                    rects.insert(
-                        &format!("reef_overlay_{}", overlay.label().to_lowercase()),
-                        r.rect,
-                    );
-                }
-            });
-            ui.end_row();
+            control_row(
+                ui,
+                rects,
+                "reef.overlay",
+                |ui| {
+                    ui.label("Show water").on_hover_text(help);
+                },
+                |ui, rects| {
+                    ui.horizontal(|ui| {
+                        for overlay in ReefOverlay::ALL {
+                            let r = ui
+                                .radio_value(&mut reef.overlay, overlay, overlay.label())
+                                .on_hover_text(help);
+                            rects.insert(
+                                &format!("reef_overlay_{}", overlay.label().to_lowercase()),
+                                r.rect,
+                            );
+                        }
+                    });
+                },
+            );
         });
-    let r = ui
-        .checkbox(&mut reef.show_vision, "Show what the selected fish sees")
-        .on_hover_text(
-            "A fish sees all around except a narrow blind cone behind, as far as the water \
-             is clear. The coloured line points at what it is thinking about",
-        );
-    rects.insert("reef_show_vision", r.rect);
+    control(ui, rects, "reef.show_vision", |ui, rects| {
+        let r = ui
+            .checkbox(&mut reef.show_vision, "Show what the selected fish sees")
+            .on_hover_text(
+                "A fish sees all around except a narrow blind cone behind, as far as the \
+                 water is clear. The coloured line points at what it is thinking about",
+            );
+        rects.insert("reef_show_vision", r.rect);
+    });
 }
 
 /// Name tags, and the selected fish: follow it, let it go.

@@ -5,6 +5,8 @@
 use eframe::egui;
 
 use super::WidgetRects;
+use super::studio_panel::{control, control_block, control_row, is_hidden};
+use crate::settings::Side;
 use crate::settings::range::Range;
 use crate::settings::tank::{Preset, TankSettings};
 use crate::sim::boids::control_mode::ControlMode;
@@ -64,30 +66,38 @@ const FORCE_HELP: [(&str, &str); 5] = [
     ),
 ];
 
-/// Draws the controls of `tank`. Widget names get no prefix: only one tank's
-/// controls are on screen at a time.
-pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRects) {
+/// Draws the controls of `tank`, the tank of `side`. Widget names get no
+/// prefix: only one tank's controls are on screen at a time; the studio's
+/// rules are keyed by the full setting (`left.alignment`).
+pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, side: Side, rects: &mut WidgetRects) {
+    let key = |name: &str| format!("{}.{name}", side.name());
     ui.label(egui::RichText::new("Preset").strong())
         .on_hover_text("Ready-made mixes of the five urges, from the paper's Table 1");
-    ui.horizontal_wrapped(|ui| {
-        for preset in Preset::ALL {
-            let response = ui
-                .selectable_value(&mut tank.preset, preset, preset.label())
-                .on_hover_text(preset.help());
-            rects.insert(&format!("preset_{}", preset_name(preset)), response.rect);
-        }
+    control(ui, rects, &key("preset"), |ui, rects| {
+        ui.horizontal_wrapped(|ui| {
+            for preset in Preset::ALL {
+                let response = ui
+                    .selectable_value(&mut tank.preset, preset, preset.label())
+                    .on_hover_text(preset.help());
+                rects.insert(&format!("preset_{}", preset_name(preset)), response.rect);
+            }
+        });
     });
 
     ui.add_space(4.0);
-    ui.label(egui::RichText::new("How the urges combine").strong())
-        .on_hover_text("The control mode: how a fish turns five urges into one move");
-    for mode in ControlMode::ALL {
-        let response = ui
-            .radio_value(&mut tank.mode, mode, mode_label(mode))
-            .on_hover_text(mode.explanation());
-        rects.insert(&format!("mode_{}", mode_name(mode)), response.rect);
+    if !is_hidden(ui, &key("mode")) {
+        ui.label(egui::RichText::new("How the urges combine").strong())
+            .on_hover_text("The control mode: how a fish turns five urges into one move");
     }
-    ui.label(egui::RichText::new(tank.mode.explanation()).small().weak());
+    control_block(ui, rects, &key("mode"), "control mode", |ui, rects| {
+        for mode in ControlMode::ALL {
+            let response = ui
+                .radio_value(&mut tank.mode, mode, mode_label(mode))
+                .on_hover_text(mode.explanation());
+            rects.insert(&format!("mode_{}", mode_name(mode)), response.rect);
+        }
+        ui.label(egui::RichText::new(tank.mode.explanation()).small().weak());
+    });
     ui.label(
         egui::RichText::new(
             "Wander and fleeing from sharks are not urges of the mode: \
@@ -105,12 +115,20 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
         .spacing([8.0, 4.0])
         .show(ui, |ui| {
             for ((range, weight), (label, help)) in tank.weights_mut().into_iter().zip(FORCE_HELP) {
-                ui.label(label).on_hover_text(help);
-                let response = ui
-                    .add(egui::Slider::new(weight, range.bounds()).max_decimals(0))
-                    .on_hover_text(help);
-                rects.insert(&format!("weight_{}", range.key), response.rect);
-                ui.end_row();
+                control_row(
+                    ui,
+                    rects,
+                    &key(range.key),
+                    |ui| {
+                        ui.label(label).on_hover_text(help);
+                    },
+                    |ui, rects| {
+                        let response = ui
+                            .add(egui::Slider::new(weight, range.bounds()).max_decimals(0))
+                            .on_hover_text(help);
+                        rects.insert(&format!("weight_{}", range.key), response.rect);
+                    },
+                );
             }
         });
 
@@ -130,16 +148,24 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
                               range: Range<f32>,
                               suffix: &str,
                               help: &str| {
-                ui.label(label).on_hover_text(help);
-                let response = ui
-                    .add(
-                        egui::Slider::new(value, range.bounds())
-                            .suffix(suffix)
-                            .max_decimals(1),
-                    )
-                    .on_hover_text(help);
-                rects.insert(range.key, response.rect);
-                ui.end_row();
+                control_row(
+                    ui,
+                    rects,
+                    &key(range.key),
+                    |ui| {
+                        ui.label(label).on_hover_text(help);
+                    },
+                    |ui, rects| {
+                        let response = ui
+                            .add(
+                                egui::Slider::new(value, range.bounds())
+                                    .suffix(suffix)
+                                    .max_decimals(1),
+                            )
+                            .on_hover_text(help);
+                        rects.insert(range.key, response.rect);
+                    },
+                );
             };
             slider(
                 ui,
@@ -205,6 +231,7 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
             count_row(
                 ui,
                 rects,
+                side,
                 "Fish",
                 "fish",
                 &mut tank.fish_count,
@@ -215,6 +242,7 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
             count_row(
                 ui,
                 rects,
+                side,
                 "Sharks",
                 "sharks",
                 &mut tank.sharks,
@@ -225,6 +253,7 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
             count_row(
                 ui,
                 rects,
+                side,
                 "Stingrays",
                 "stingrays",
                 &mut tank.stingrays,
@@ -240,6 +269,7 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, rects: &mut WidgetRec
 fn count_row(
     ui: &mut egui::Ui,
     rects: &mut WidgetRects,
+    side: Side,
     label: &str,
     name: &str,
     count: &mut u32,
@@ -247,30 +277,39 @@ fn count_row(
     step: u32,
     help: &str,
 ) {
-    ui.label(label).on_hover_text(help);
-    ui.horizontal(|ui| {
-        let minus = ui
-            .add_enabled(*count > range.min, egui::Button::new(" − "))
-            .on_hover_text(format!("Take {step} away"));
-        rects.insert(&format!("{name}_minus"), minus.rect);
-        if minus.clicked() {
-            *count = range.clamp(count.saturating_sub(step));
-        }
-        let value = ui
-            .add(
-                egui::DragValue::new(count)
-                    .range(range.bounds())
-                    .speed(f64::from(step).max(1.0) * 0.2),
-            )
-            .on_hover_text(help);
-        rects.insert(&format!("{name}_count"), value.rect);
-        let plus = ui
-            .add_enabled(*count < range.max, egui::Button::new(" + "))
-            .on_hover_text(format!("Add {step}"));
-        rects.insert(&format!("{name}_plus"), plus.rect);
-        if plus.clicked() {
-            *count = range.clamp(*count + step);
-        }
-    });
-    ui.end_row();
+    let key = format!("{}.{}", side.name(), range.key);
+    control_row(
+        ui,
+        rects,
+        &key,
+        |ui| {
+            ui.label(label).on_hover_text(help);
+        },
+        |ui, rects| {
+            ui.horizontal(|ui| {
+                let minus = ui
+                    .add_enabled(*count > range.min, egui::Button::new(" − "))
+                    .on_hover_text(format!("Take {step} away"));
+                rects.insert(&format!("{name}_minus"), minus.rect);
+                if minus.clicked() {
+                    *count = range.clamp(count.saturating_sub(step));
+                }
+                let value = ui
+                    .add(
+                        egui::DragValue::new(count)
+                            .range(range.bounds())
+                            .speed(f64::from(step).max(1.0) * 0.2),
+                    )
+                    .on_hover_text(help);
+                rects.insert(&format!("{name}_count"), value.rect);
+                let plus = ui
+                    .add_enabled(*count < range.max, egui::Button::new(" + "))
+                    .on_hover_text(format!("Add {step}"));
+                rects.insert(&format!("{name}_plus"), plus.rect);
+                if plus.clicked() {
+                    *count = range.clamp(*count + step);
+                }
+            });
+        },
+    );
 }

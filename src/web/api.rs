@@ -15,11 +15,12 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 21] = [
+    let methods: [(&str, Box<Method>); 22] = [
         (
             "state",
             Box::new(|app, _| {
                 let mut state = to_json(&app.state_report())?;
+                app.mask_state_json(&mut state);
                 if let (Some(report), Some(object)) =
                     (app.experiment_report(), state.as_object_mut())
                 {
@@ -55,7 +56,11 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
             Box::new(|app, _| Ok(serde_json::Value::String(app.metrics_csv()))),
         ),
         ("export_csv", Box::new(|app, _| to_json(&app.export_csv()))),
-        ("settings", Box::new(|app, _| to_json(app.state_settings()))),
+        ("settings", Box::new(|app, _| Ok(app.settings_json()))),
+        (
+            "student_link",
+            Box::new(|app, _| Ok(serde_json::Value::String(app.student_link()))),
+        ),
         ("widgets", Box::new(|app, _| Ok(widgets_json(app)))),
         (
             "crash_test",

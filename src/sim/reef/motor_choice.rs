@@ -364,7 +364,12 @@ mod tests {
         );
         assert!(up.fins.left_angle_rad > std::f32::consts::FRAC_PI_2);
         assert!(up.fins.trim, "climbing fins trim the body");
-        let bob = choose(&MotorChoiceParams::default(), &Wish::bob(), &body(0.0, false), 0.0);
+        let bob = choose(
+            &MotorChoiceParams::default(),
+            &Wish::bob(),
+            &body(0.0, false),
+            0.0,
+        );
         assert!(!bob.fins.trim, "bobbing leaves the body level");
         let nan = choose(
             &MotorChoiceParams::default(),

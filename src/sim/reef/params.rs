@@ -50,7 +50,7 @@ pub struct ReefParams {
     /// distance so, §6.3). 4, chosen: the fins trim the muscle body to climb at
     /// most 29° (`BodyParams::fin_trim_gain`) and it turns in a circle of 1.2
     /// body lengths, so food overhead is reached by a long spiral. *Feeding*,
-    /// seeds 1–8, 60 s (`feeding_census`): 45 plankton with 1, 116 with 2, 149
+    /// seeds 1–8, 60 s (`feeding_census`, before the libm change; 142 with 4 after it): 45 plankton with 1, 116 with 2, 149
     /// with 4, 134 with 10 (point masses 342; `docs/departures.md`, climb
     /// effort). The point-mass body climbs as fast as it swims (1).
     pub climb_effort_muscle_body: f32,

@@ -1,0 +1,213 @@
+// The teacher's studio (issue 15, item 3), on both tiers, through real clicks: the
+// teacher opens the studio, hides one control (the stingrays), locks another (the
+// speed), makes a third a mystery (alignment, set to 37), writes a question and
+// presses Share with class (a QR code of the students' link). The link opens in a
+// new page as a student: the hidden control is gone, the locked one does not move
+// when dragged, the mystery number is shown nowhere (the panel, widgets(),
+// settings(), state()), and the question is shown.
+import { test, describe, before, after } from "node:test";
+import assert from "node:assert/strict";
+import zlib from "node:zlib";
+import {
+  serveDist,
+  launch,
+  openShoal,
+  saveArtifact,
+  clickUntil,
+  clickWidget,
+  scrollPanelTo,
+  waitForWidget,
+  waitFrames,
+  decode,
+  pixelStats,
+} from "./harness.mjs";
+
+const QUESTION = "How strongly do these fish copy their neighbours? Guess the number.";
+const MYSTERY = 37;
+
+const settings = (page) => page.evaluate(() => window.shoal.settings());
+const widgets = (page) => page.evaluate(() => window.shoal.widgets());
+
+/** The settings a share link carries: `#v1.` + base64url of raw DEFLATE JSON. */
+function linkSettings(link) {
+  const fragment = link.split("#")[1];
+  assert.ok(fragment.startsWith("v1."), fragment);
+  const packed = Buffer.from(fragment.slice(3), "base64url");
+  return JSON.parse(zlib.inflateRawSync(packed).toString("utf8"));
+}
+
+/** A number that is the mystery value, anywhere in a JSON text. */
+const holdsMystery = (text) => new RegExp(`(^|[^0-9.])${MYSTERY}(\\.0+)?([^0-9]|$)`).test(text);
+
+for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
+  describe(`teacher's studio (${tier})`, () => {
+    let server, browser, page, errors, link;
+
+    before(async () => {
+      server = await serveDist();
+      browser = await launch(tier);
+      ({ page, errors } = await openShoal(browser, server.url, { width: 1366, height: 900 }));
+      await clickUntil(page, "scene_boids", () => window.shoal.state().scene === "boids");
+      // The starting state the students get: a school of 60, alignment 37.
+      await page.evaluate(
+        (a) => window.shoal.set({ left: { fish_count: 60, sharks: 1, alignment: a } }),
+        MYSTERY,
+      );
+    });
+
+    after(async () => {
+      await browser?.close();
+      await server?.close();
+    });
+
+    test("the teacher hides, locks, makes a mystery, asks a question and shares a QR code", async () => {
+      await clickUntil(page, "studio_open", () => !!window.shoal.widgets().studio_window);
+      // The toggles beside the controls.
+      await scrollPanelTo(page, "studio_hide_left_stingrays");
+      await clickUntil(
+        page,
+        "studio_hide_left_stingrays",
+        () => window.shoal.settings().studio.rules["left.stingrays"]?.hidden === true,
+      );
+      await scrollPanelTo(page, "studio_mystery_left_alignment");
+      await clickUntil(
+        page,
+        "studio_mystery_left_alignment",
+        () => window.shoal.settings().studio.rules["left.alignment"]?.mystery === true,
+      );
+      await scrollPanelTo(page, "studio_lock_speed");
+      await clickUntil(
+        page,
+        "studio_lock_speed",
+        () => window.shoal.settings().studio.rules.speed?.locked === true,
+      );
+      // The question, typed into the studio window.
+      await clickWidget(page, "studio_question");
+      await page.keyboard.type(QUESTION, { delay: 5 });
+      await page.waitForFunction(
+        (q) => window.shoal.settings().studio.question === q,
+        QUESTION,
+        { timeout: 60_000 },
+      );
+      const s = await settings(page);
+      assert.deepEqual(s.studio.rules, {
+        "left.alignment": { mystery: true },
+        "left.stingrays": { hidden: true },
+        speed: { locked: true },
+      });
+      assert.equal(s.studio.student_view, false, "the teacher's page is not the student view");
+      assert.equal(s.left.alignment, MYSTERY, "the teacher sees the value");
+      await waitForWidget(page, "studio_question_card");
+      await waitFrames(page, 2);
+      saveArtifact(`studio-${tier}.png`, await page.screenshot());
+
+      // Share with class: the QR code, big enough to project.
+      await clickUntil(page, "studio_share", () => !!window.shoal.widgets().studio_qr);
+      await waitFrames(page, 2);
+      const w = await widgets(page);
+      const qr = w.studio_qr;
+      assert.ok(qr.width >= 160, `QR code ${qr.width} px wide`);
+      assert.ok(Math.abs(qr.width - qr.height) < 1, "square");
+      assert.ok(w.studio_copy_link, "a Copy link button");
+      const shot = await page.screenshot();
+      saveArtifact(`studio-share-${tier}.png`, shot);
+      // Black modules on white: high contrast inside the code's square.
+      const stats = pixelStats(decode(shot), qr);
+      assert.ok(stats.std > 80, `QR contrast ${stats.std}`);
+      assert.ok(stats.mean > 60 && stats.mean < 230, `QR mean ${stats.mean}`);
+
+      link = await page.evaluate(() => window.shoal.student_link());
+      const carried = linkSettings(link);
+      assert.equal(carried.studio.student_view, true);
+      assert.equal(carried.studio.question, QUESTION);
+      assert.deepEqual(carried.studio.rules, s.studio.rules);
+      assert.equal(carried.left.alignment, MYSTERY, "the fish use the value");
+      assert.equal(carried.scene, "boids");
+      assert.deepEqual(errors, []);
+    });
+
+    test("the link opens the student view with the rules in force", async () => {
+      assert.ok(link, "the first test made the link");
+      const context = await browser.newContext({ viewport: { width: 1366, height: 900 } });
+      const { page: pupil, errors: pupilErrors } = await openShoal(context, link, {
+        width: 1366,
+        height: 900,
+      });
+      const state = await pupil.evaluate(() => window.shoal.state());
+      assert.equal(state.student_view, true);
+      assert.equal(state.scene, "boids");
+      assert.equal(state.notice, undefined, "the link opened without complaint");
+      // The question, and no studio.
+      await waitForWidget(pupil, "studio_question_card");
+      let w = await pupil.evaluate(() => window.shoal.widgets());
+      assert.equal(w.studio_open, undefined, "no Teacher's studio button for students");
+      assert.equal(w.studio_hide_speed, undefined, "no toggles");
+      // Hidden: the stingrays' count is gone, the sharks' (free) is there.
+      assert.ok(w.sharks_count, "the free count is drawn");
+      assert.equal(w.stingrays_count, undefined, "the hidden count is not");
+      // Mystery: alignment's slider is replaced, so is the preset that would name it.
+      assert.ok(w["mystery_left.alignment"], "the mystery label");
+      assert.ok(w["mystery_left.preset"], "the preset is a mystery with it");
+      assert.equal(w.weight_alignment, undefined, "no alignment slider");
+      assert.ok(w.weight_cohesion, "the free sliders are there");
+      const pupilSettings = await pupil.evaluate(() => window.shoal.settings());
+      assert.equal(pupilSettings.left.alignment, "mystery");
+      assert.ok(!holdsMystery(JSON.stringify(pupilSettings)), "settings() never holds 37");
+      assert.ok(!holdsMystery(JSON.stringify(w)), "widgets() never names 37");
+      // Selected fish: its attention gives no weight away.
+      await pupil.evaluate(() => {
+        window.shoal.set({ left: { selected: 4 } });
+        window.shoal.step(3);
+      });
+      const attention = (await pupil.evaluate(() => window.shoal.state())).metrics.attention;
+      assert.equal(attention.urges[1].urge, "alignment");
+      assert.equal(attention.urges[1].weight, "mystery");
+      assert.ok(Number.isFinite(attention.urges[2].weight), "a free urge's weight shows");
+      const csv = await pupil.evaluate(() => window.shoal.export_csv().text);
+      assert.ok(csv.includes("# settings link: withheld"), "the CSV withholds the link");
+      assert.ok(!csv.includes("#v1."));
+      // set() refuses what the teacher keeps.
+      const refused = await pupil.evaluate(() => {
+        try {
+          window.shoal.set({ left: { alignment: 80 } });
+          return null;
+        } catch (err) {
+          return err.message;
+        }
+      });
+      assert.ok(refused && refused.includes("left.alignment"), refused);
+
+      // Locked: the speed slider is drawn greyed and a real drag does not move it.
+      await scrollPanelTo(pupil, "speed");
+      w = await pupil.evaluate(() => window.shoal.widgets());
+      assert.ok(w.locked_speed, "marked locked");
+      const r = w.speed;
+      await pupil.mouse.move(r.x + 10, r.y + r.height / 2);
+      await pupil.mouse.down();
+      await pupil.mouse.move(r.x + r.width - 5, r.y + r.height / 2, { steps: 8 });
+      await pupil.mouse.up();
+      await pupil.mouse.click(r.x + r.width - 5, r.y + r.height / 2);
+      await waitFrames(pupil, 3);
+      assert.equal((await pupil.evaluate(() => window.shoal.settings())).speed, 1);
+      // A free slider still moves: the drag itself works.
+      const c = (await scrollPanelTo(pupil, "weight_cohesion"));
+      const before = (await pupil.evaluate(() => window.shoal.settings())).left.cohesion;
+      await pupil.mouse.click(c.x + c.width * 0.1, c.y + c.height / 2);
+      await pupil.waitForFunction(
+        (b) => window.shoal.settings().left.cohesion !== b,
+        before,
+        { timeout: 30_000 },
+      );
+      await scrollPanelTo(pupil, "mystery_left.alignment");
+      await waitFrames(pupil, 2);
+      saveArtifact(`studio-student-${tier}.png`, await pupil.screenshot());
+      // The question card at the top of the side panel.
+      const card = await scrollPanelTo(pupil, "studio_question_card");
+      assert.ok(card.height > 30, "the card holds the question");
+      await waitFrames(pupil, 2);
+      saveArtifact(`studio-student-question-${tier}.png`, await pupil.screenshot());
+      assert.deepEqual(pupilErrors, []);
+      await context.close();
+    });
+  });
+}
