@@ -13,6 +13,7 @@ pub mod bench;
 pub mod clock;
 pub mod experiment;
 pub mod export;
+pub mod investigation;
 pub mod lab;
 pub mod metrics_history;
 pub mod render;
