@@ -151,8 +151,9 @@ pub const INVESTIGATIONS: [Investigation; 5] = [
                  never lost and a fish in a tight school almost at once. Schools also see a \
                  shark sooner (many eyes) and dilute the risk; our model has the confusion and \
                  fleeing, not the many eyes. One run is one chance: over seeds 1 to 6 of this \
-                 setting the loners lost 54 fish and the schools 31, but in one run of the six \
-                 the school lost more. Press New next to Seed and run again to see.",
+                 setting the loners lost 54 fish and the schools 31, but one of the six was a \
+                 tie, and with seed 7 the school lost more (7 against 5). Press New next to \
+                 Seed and run again to see.",
         reference: "Landeau & Terborgh 1986, Anim. Behav. 34:1372; Lim & Tan, SIMBA (predator \
                     species); Shoal's shark: docs/boids.md",
     },

@@ -213,12 +213,15 @@ impl Progress {
         InvestigationReport {
             id: self.investigation.id,
             step: self.step,
+            chosen: self.pending,
             prediction: self.prediction.map(|p| PredictionReport {
                 choice: p.choice,
                 text: self.answer_text(p.choice),
             }),
             running: self.run_started && self.outcome.is_none(),
             result: self.outcome.clone(),
+            prompt: (self.step == Step::Explain).then_some(self.prompt),
+            explanations: self.explanations.clone(),
         }
     }
 }
@@ -228,10 +231,17 @@ impl Progress {
 pub struct InvestigationReport {
     pub id: &'static str,
     pub step: Step,
+    /// The answer picked, committed or not.
+    pub chosen: Option<usize>,
+    /// The committed prediction (locked).
     pub prediction: Option<PredictionReport>,
     /// The run is under way.
     pub running: bool,
     pub result: Option<Outcome>,
+    /// The prompt on show (0-based), in the explain step.
+    pub prompt: Option<usize>,
+    /// The student's answers, one per prompt.
+    pub explanations: Vec<String>,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -327,3 +327,39 @@ fn catches_over_seeds() {
     }
     println!("total: loners {loners}, school {school}");
 }
+
+#[test]
+fn learning_races_the_copies_saved_while_practising() {
+    let inv = find("learning").unwrap();
+    let mut p = Progress::new(inv);
+    p.choose(0).unwrap();
+    p.commit().unwrap();
+    p.start_run().unwrap();
+    let mut settings = setup_settings(inv).unwrap();
+    // A short drill, so the test is quick: the copies are saved at the paper's
+    // share of it.
+    settings
+        .apply_patch(&json!({"learning": {"annealing_steps": 90}}))
+        .unwrap();
+    let mut lab = Lab::new(settings);
+    let mut m = Measurement::start(inv, &mut lab).unwrap();
+    assert!(lab.settings().learning.training, "the run trains");
+    assert!(
+        m.advance(&p, &mut lab, 0.01, 0.0).is_none(),
+        "no race before practice"
+    );
+    lab.train(90).unwrap();
+    let o = loop {
+        if let Some(o) = m.advance(&p, &mut lab, 0.01, 0.0) {
+            break o;
+        }
+        lab.step(10);
+    };
+    assert_eq!(o.rows.len(), 6, "{:?}", o.rows);
+    assert!(o.rows[0].label.contains("after 1 tries"), "{:?}", o.rows[0]);
+    assert!(o.rows[5].label.contains("after 90 tries"));
+    // The measured distances, and the verdict quotes them.
+    let last = o.rows[5].value;
+    assert!(last > o.rows[0].value, "{:?}", o.rows);
+    assert!(o.summary.contains(&format!("{last:.2} m")), "{}", o.summary);
+}

@@ -214,6 +214,12 @@ impl InvestigationPanel {
         }
         let screen = ctx.content_rect();
         let mut chosen = None;
+        let mut resume = false;
+        let paused_title = self
+            .current
+            .as_ref()
+            .filter(|_| !self.window_open)
+            .map(|p| p.investigation.title);
         let shown = egui::Window::new("Investigations")
             .id(egui::Id::unique("investigations_list"))
             .open(&mut open)
@@ -231,6 +237,13 @@ impl InvestigationPanel {
                     )
                     .weak(),
                 );
+                if let Some(title) = paused_title {
+                    let r = ui
+                        .button(format!("▶ Continue: {title}"))
+                        .on_hover_text("Back to the investigation you were doing");
+                    rects.insert("investigation_continue", r.rect);
+                    resume = r.clicked();
+                }
                 egui::ScrollArea::vertical()
                     .max_height((screen.height() - 140.0).max(150.0))
                     .show(ui, |ui| {
@@ -258,6 +271,10 @@ impl InvestigationPanel {
             });
         if let Some(shown) = shown {
             rects.insert("investigations_list", shown.response.rect);
+        }
+        if resume {
+            self.window_open = true;
+            open = false;
         }
         ctx.data_mut(|d| d.insert_temp(list_id(), open));
         if let Some(inv) = chosen {
@@ -426,12 +443,21 @@ impl InvestigationPanel {
                 alignment_controls(ui, run, settings, rects, actions);
             }
         }
-        let Some(outcome) = &p.outcome else {
-            return;
-        };
         let sketch = match (inv.prediction, p.prediction) {
             (PredictionKind::Curve { shapes, .. }, Some(pred)) => shapes.get(pred.choice),
             _ => None,
+        };
+        let Some(outcome) = &p.outcome else {
+            if let (
+                Some(shape),
+                PredictionKind::Curve {
+                    x_label, y_label, ..
+                },
+            ) = (sketch, inv.prediction)
+            {
+                sketch_ui(ui, shape, x_label, y_label);
+            }
+            return;
         };
         let r = ui.label(&outcome.summary);
         rects.insert("investigation_result", r.rect);
