@@ -39,8 +39,10 @@ fn list_id() -> egui::Id {
 pub fn investigations_button(ui: &mut egui::Ui, rects: &mut WidgetRects) {
     let r = ui
         .add(
-            egui::Button::new(egui::RichText::new("🔎 Investigations").strong())
-                .min_size(egui::vec2(ui.available_width(), 30.0)),
+            egui::Button::new(
+                egui::RichText::new("Investigations: predict, run, explain").strong(),
+            )
+            .min_size(egui::vec2(ui.available_width(), 30.0)),
         )
         .on_hover_text(
             "Guided lessons: predict what will happen, run it, explain what you saw, and find \
@@ -177,7 +179,7 @@ impl InvestigationPanel {
         }
         let mut open = self.window_open;
         let title = self.current.as_ref().map_or("", |p| p.investigation.title);
-        let shown = egui::Window::new(format!("🔎 {title}"))
+        let shown = egui::Window::new(format!("Investigation: {title}"))
             .id(egui::Id::unique("investigation_window"))
             .open(&mut open)
             .collapsible(true)
@@ -188,8 +190,10 @@ impl InvestigationPanel {
             .default_pos(screen.right_top() + egui::vec2(-width - 16.0, 44.0))
             .constrain(true)
             .show(ctx, |ui| {
+                let tall = (screen.height() - 110.0).max(150.0);
                 egui::ScrollArea::vertical()
-                    .max_height((screen.height() - 110.0).max(150.0))
+                    .max_height(tall)
+                    .min_scrolled_height(tall.min(700.0))
                     .show(ui, |ui| {
                         self.contents_ui(ui, lab, settings, rects, &mut actions);
                     });
@@ -239,13 +243,15 @@ impl InvestigationPanel {
                 );
                 if let Some(title) = paused_title {
                     let r = ui
-                        .button(format!("▶ Continue: {title}"))
+                        .button(format!("Continue: {title} »"))
                         .on_hover_text("Back to the investigation you were doing");
                     rects.insert("investigation_continue", r.rect);
                     resume = r.clicked();
                 }
+                let tall = (screen.height() - 140.0).max(150.0);
                 egui::ScrollArea::vertical()
-                    .max_height((screen.height() - 140.0).max(150.0))
+                    .max_height(tall)
+                    .min_scrolled_height(tall.min(620.0))
                     .show(ui, |ui| {
                         for inv in &INVESTIGATIONS {
                             ui.separator();
@@ -345,7 +351,7 @@ impl InvestigationPanel {
             Step::Intro => {
                 let inv = p.investigation;
                 ui.label(inv.intro);
-                let r = ui.button("Next: predict ▶");
+                let r = ui.button("Next: predict »");
                 rects.insert("investigation_next", r.rect);
                 if r.clicked()
                     && let Some(p) = &mut self.current
@@ -390,7 +396,7 @@ impl InvestigationPanel {
             let commit = ui
                 .add_enabled(
                     p.pending.is_some(),
-                    egui::Button::new("🔒 Commit my prediction"),
+                    egui::Button::new("Commit my prediction (it locks)"),
                 )
                 .on_hover_text("Once committed, your prediction is locked: it cannot change")
                 .on_disabled_hover_text("Choose an answer first");
@@ -399,7 +405,7 @@ impl InvestigationPanel {
                 let _ = p.commit();
             }
             let run = ui
-                .add_enabled(false, egui::Button::new("▶ Run"))
+                .add_enabled(false, egui::Button::new("Run »"))
                 .on_disabled_hover_text("Commit a prediction first");
             rects.insert("investigation_run", run.rect);
         });
@@ -420,7 +426,7 @@ impl InvestigationPanel {
         ui.label(egui::RichText::new(inv.question).strong());
         if let Some(pred) = p.prediction {
             let r = ui.label(format!(
-                "🔒 Your prediction: {}",
+                "Your prediction (locked): {}",
                 p.answer_text(pred.choice)
             ));
             rects.insert("investigation_prediction", r.rect);
@@ -428,7 +434,7 @@ impl InvestigationPanel {
         ui.label(egui::RichText::new(inv.run_hint).weak());
         if !p.run_started {
             let r = ui
-                .add_enabled(p.can_run(), egui::Button::new("▶ Run"))
+                .add_enabled(p.can_run(), egui::Button::new("Run »"))
                 .on_hover_text("Start the run: the measurement begins now");
             rects.insert("investigation_run", r.rect);
             if r.clicked() {
@@ -463,7 +469,7 @@ impl InvestigationPanel {
         rects.insert("investigation_result", r.rect);
         outcome_ui(ui, outcome, sketch);
         ui.label(egui::RichText::new(&outcome.verdict).strong());
-        let next = ui.button("Next: explain ▶");
+        let next = ui.button("Next: explain »");
         rects.insert("investigation_next", next.rect);
         if next.clicked()
             && let Some(p) = &mut self.current
@@ -495,9 +501,9 @@ impl InvestigationPanel {
         rects.insert("investigation_answer", answer.rect);
         let last = p.prompt + 1 == inv.prompts.len();
         let next = ui.button(if last {
-            "What did scientists find? ▶"
+            "What did scientists find? »"
         } else {
-            "Next question ▶"
+            "Next question »"
         });
         rects.insert("investigation_next", next.rect);
         if next.clicked() {

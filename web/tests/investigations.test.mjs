@@ -24,9 +24,47 @@ import {
 const inv = (page) => page.evaluate(() => window.shoal.state().investigation);
 const settings = (page) => page.evaluate(() => window.shoal.settings());
 
+/** A paused app draws only when something asks: a small mouse move asks. */
+let nudges = 0;
 async function shot(page, tier, name) {
-  await waitFrames(page, 2);
+  nudges += 1;
+  const start = await page.evaluate(() => window.shoal.state().frames);
+  await page.mouse.move(4 + (nudges % 2) * 3, 700);
+  await page.waitForFunction((s) => window.shoal.state().frames > s + 1, start, { timeout: 60_000 });
   saveArtifact(`investigation-${tier}-${name}.png`, await page.screenshot());
+}
+
+/** Scrolls the investigation window until widget `name` lies inside it, and
+ * returns its rectangle. */
+async function scrollWindowTo(page, name) {
+  for (let attempt = 0; attempt < 40; attempt++) {
+    const w = await page.evaluate(() => window.shoal.widgets());
+    const r = w[name];
+    const win = w.investigation_window;
+    if (r && win && r.y >= win.y + 20 && r.y + r.height <= win.y + win.height - 2) return r;
+    if (!win) {
+      await waitFrames(page, 1);
+      continue;
+    }
+    await page.mouse.move(win.x + win.width / 2, win.y + win.height / 2);
+    await page.mouse.wheel(0, r && r.y < win.y + 20 ? -120 : 120);
+    await waitFrames(page, 2);
+  }
+  throw new Error(`${name} cannot be scrolled into the window`);
+}
+
+/** Clicks widget `name` of the investigation window until `predicate` holds. */
+async function clickInWindow(page, name, predicate, arg) {
+  for (let attempt = 0; attempt < 4; attempt++) {
+    await scrollWindowTo(page, name);
+    try {
+      await clickUntil(page, name, predicate, arg);
+      return;
+    } catch {
+      // Moved while scrolling: scroll again.
+    }
+  }
+  throw new Error(`clicking ${name} in the window had no effect`);
 }
 
 for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
@@ -70,17 +108,18 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       assert.equal(s.right.sharks, 1);
       await shot(page, tier, "2-intro");
 
-      await clickUntil(page, "investigation_next", () => window.shoal.state().investigation.step === "predict");
+      await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "predict");
       // Run is there but refuses before a prediction.
+      await scrollWindowTo(page, "investigation_run");
       await clickWidget(page, "investigation_run");
       await waitFrames(page, 3);
       let i = await inv(page);
       assert.equal(i.step, "predict");
       assert.equal(i.prediction, null);
       assert.equal(i.running, false);
-      await clickUntil(page, "investigation_choice_1", () => window.shoal.state().investigation.chosen === 1);
+      await clickInWindow(page, "investigation_choice_1", () => window.shoal.state().investigation.chosen === 1);
       await shot(page, tier, "3-predict");
-      await clickUntil(page, "investigation_commit", () => window.shoal.state().investigation.step === "run");
+      await clickInWindow(page, "investigation_commit", () => window.shoal.state().investigation.step === "run");
       i = await inv(page);
       assert.equal(i.prediction.choice, 1);
       assert.equal(i.prediction.text, "The school (right)");
@@ -97,7 +136,7 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       const fast = (await settings(page)).speed;
       assert.ok(fast >= 6, `speed raised with the slider (${fast}×)`);
 
-      await clickUntil(page, "investigation_run", () => window.shoal.state().investigation.running);
+      await clickInWindow(page, "investigation_run", () => window.shoal.state().investigation.running);
       assert.equal((await settings(page)).paused, false, "the run plays the tanks");
       const started = Date.now();
       await sleep(5000);
@@ -118,13 +157,16 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       assert.ok(Number.isInteger(school) && school <= st.metrics_right.catches);
       assert.ok(i.result.summary.includes(`${loners} loners`) && i.result.summary.includes(`${school} fish`));
       assert.ok(i.result.verdict.includes("The school (right)"), "the prediction beside the result");
+      // The investigation's seed shows what it is about (docs/investigations.md).
+      assert.ok(school < loners, `the school lost fewer: ${school} against ${loners}`);
       await waitForWidget(page, "investigation_result");
       await shot(page, tier, "5-result");
 
       // Explain: three prompts, one at a time, answers typed in.
-      await clickUntil(page, "investigation_next", () => window.shoal.state().investigation.step === "explain");
+      await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "explain");
       const answers = ["Steadily on the left", "The shark <switched> fish", "Too many targets"];
       for (const [k, answer] of answers.entries()) {
+        await scrollWindowTo(page, "investigation_answer");
         await clickWidget(page, "investigation_answer");
         await page.keyboard.type(answer, { delay: 10 });
         await waitFrames(page, 2);
@@ -150,6 +192,7 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
 
       // The record: one self-contained HTML file and the CSV.
       const download = page.waitForEvent("download", { timeout: 30_000 });
+      await scrollWindowTo(page, "investigation_record");
       await clickWidget(page, "investigation_record");
       const file = await download;
       assert.equal(file.suggestedFilename(), "shoal-my-investigations.html");
@@ -178,14 +221,15 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
         });
         await page.waitForFunction((x) => window.shoal.state().investigation?.id === x, id);
         assert.equal((await settings(page)).scene, scene);
-        await clickUntil(page, "investigation_next", () => window.shoal.state().investigation.step === "predict");
+        await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "predict");
+        await scrollWindowTo(page, "investigation_run");
         await clickWidget(page, "investigation_run");
         await waitFrames(page, 3);
         const i = await inv(page);
         assert.equal(i.step, "predict");
         assert.equal(i.prediction, null);
         assert.equal(i.running, false);
-        await clickUntil(page, "investigation_choice_0", () => window.shoal.state().investigation.chosen === 0);
+        await clickInWindow(page, "investigation_choice_0", () => window.shoal.state().investigation.chosen === 0);
         await shot(page, tier, `link-${id}`);
         assert.ok((await page.evaluate(() => window.shoal.share_link())).includes(`?investigation=${id}#v1.`));
         assert.deepEqual(errors, []);
@@ -218,7 +262,7 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
         width: 390,
         height: 844,
       });
-      await clickUntil(page, "investigation_next", () => window.shoal.state().investigation.step === "predict");
+      await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "predict");
       const w = await waitForWidget(page, "investigation_window");
       assert.ok(w.x >= 0 && w.x + w.width <= 390, `x ${w.x} width ${w.width}`);
       assert.ok(w.y >= 0 && w.y + w.height <= 844, `y ${w.y} height ${w.height}`);
