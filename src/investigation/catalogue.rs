@@ -136,11 +136,12 @@ pub const INVESTIGATIONS: [Investigation; 5] = [
                              "stingrays": 0, "selected": null}}"#,
         run_hint: "Run starts both tanks again from the same start and counts for 3 simulated \
                    minutes. Watch each shark: does it chase one fish to the end, or switch? \
-                   Raise the Speed slider to get there sooner. The catches plot under the \
-                   tanks counts.",
+                   Raise the Speed slider to get there sooner. The plot in this window counts \
+                   each tank's catches.",
         measurement: MeasurementKind::CatchesInBothTanks { secs: 180.0 },
         prompts: &[
-            "Look at the catches plot. When did each shark catch its fish: steadily, or in bursts?",
+            "Look at the catches plot in this window. When did each shark catch its fish: \
+             steadily, or in bursts?",
             "Watch the right shark near the school. What happens to the fish it was chasing?",
             "Why might it be harder to catch a fish in a crowd?",
         ],

@@ -15,7 +15,7 @@
 use glam::Vec3;
 
 use super::catalogue::{MeasurementKind, PredictionKind};
-use super::outcome::{Chart, CurvePoint, Outcome, Row, curve_verdict};
+use super::outcome::{Chart, CurvePoint, Outcome, Row, Timeline, curve_verdict};
 use super::{Investigation, Progress};
 use crate::experiment::{Design, ExperimentSession};
 use crate::lab::Lab;
@@ -190,6 +190,14 @@ impl Measurement {
         }
     }
 
+    /// The simulated seconds of a run on the lab's own tanks (for the live plot).
+    pub fn catches_secs(&self) -> Option<f64> {
+        match self {
+            Self::Catches { secs } => Some(*secs),
+            _ => None,
+        }
+    }
+
     /// *Is there a leader?*'s run, to show what it has seen so far.
     pub fn alignment(&self) -> Option<&AlignmentRun> {
         match self {
@@ -228,6 +236,25 @@ fn catches_at(run: &crate::lab::Run, secs: f64) -> Option<u64> {
         .map(|s| s.catches)
 }
 
+/// Each tank's catches over the run's first `secs` simulated seconds, from its
+/// metrics samples (what the window plots while the run goes on).
+pub fn catches_timelines(lab: &Lab, secs: f64) -> Vec<Timeline> {
+    let names = ["loners (left)", "school (right)"];
+    lab.runs()
+        .iter()
+        .zip(names)
+        .map(|(run, name)| Timeline {
+            label: name.to_owned(),
+            points: run
+                .history()
+                .samples()
+                .filter(|s| s.time_secs <= secs + 1e-6)
+                .map(|s| [s.time_secs, s.catches as f64])
+                .collect(),
+        })
+        .collect()
+}
+
 fn catches_outcome(lab: &Lab, secs: f64, progress: &Progress, choice: usize) -> Option<Outcome> {
     let runs = lab.runs();
     if runs[0].time_secs() < secs {
@@ -264,6 +291,7 @@ fn catches_outcome(lab: &Lab, secs: f64, progress: &Progress, choice: usize) -> 
         chart: Chart::Bars {
             unit: "fish caught",
         },
+        timelines: catches_timelines(lab, secs),
     })
 }
 
@@ -387,6 +415,7 @@ impl AlignmentRun {
             chart: Chart::Bars {
                 unit: "polarization (0-1)",
             },
+            timelines: Vec::new(),
         })
     }
 }
@@ -459,6 +488,7 @@ fn curve_outcome(
             points,
             y_max,
         },
+        timelines: Vec::new(),
     }
 }
 
@@ -625,5 +655,6 @@ fn learning_advance(
         chart: Chart::Bars {
             unit: "metres swum",
         },
+        timelines: Vec::new(),
     })
 }

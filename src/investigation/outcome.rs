@@ -41,6 +41,14 @@ pub enum Chart {
     },
 }
 
+/// A measured count or value over simulated time (the catches of a tank).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Timeline {
+    pub label: String,
+    /// (simulated seconds since the run began, value)
+    pub points: Vec<[f64; 2]>,
+}
+
 /// The measured result of a run.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Outcome {
@@ -50,6 +58,8 @@ pub struct Outcome {
     pub verdict: String,
     pub rows: Vec<Row>,
     pub chart: Chart,
+    /// How the measured counts grew during the run (may be empty).
+    pub timelines: Vec<Timeline>,
 }
 
 impl Outcome {

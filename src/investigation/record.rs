@@ -79,6 +79,10 @@ fn section(out: &mut String, p: &Progress) {
             let _ = writeln!(out, "<p>{}</p>", escape(&outcome.summary));
             table(out, outcome);
             out.push_str(&svg(p, outcome));
+            if !outcome.timelines.is_empty() {
+                out.push('\n');
+                out.push_str(&timelines_svg(outcome));
+            }
             let _ = writeln!(out, "\n<p>{}</p>", escape(&outcome.verdict));
         }
         None => out.push_str("<p>The run has not finished.</p>\n"),
@@ -306,6 +310,47 @@ fn curve(
         W - RIGHT,
         TOP + 14.0
     );
+}
+
+/// The counts over the run (the catches plot) as an inline SVG picture.
+pub fn timelines_svg(outcome: &Outcome) -> String {
+    const COLORS: [&str; 2] = ["#e07a1f", "#2a8fc7"];
+    let mut s = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {W} {H}\" width=\"{W}\" \
+         height=\"{H}\" role=\"img\" font-family=\"sans-serif\" font-size=\"11\">\
+         <rect width=\"{W}\" height=\"{H}\" fill=\"#fff\"/>"
+    );
+    let all = outcome.timelines.iter().flat_map(|t| t.points.iter());
+    let x_max = all.clone().map(|p| p[0]).fold(1.0, f64::max);
+    let y_top = all.map(|p| p[1]).fold(0.0, f64::max).max(1.0) * 1.15;
+    axes(&mut s, y_top, "fish caught");
+    let px = |x: f64| LEFT + (W - LEFT - RIGHT) * x / x_max;
+    let py = |y: f64| H - BOTTOM - (H - BOTTOM - TOP) * y / y_top;
+    for (k, t) in outcome.timelines.iter().enumerate() {
+        let color = COLORS[k % COLORS.len()];
+        let path: Vec<String> = t
+            .points
+            .iter()
+            .map(|p| format!("{:.1},{:.1}", px(p[0]), py(p[1])))
+            .collect();
+        let _ = write!(
+            s,
+            "<polyline points=\"{}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"/>\
+             <text x=\"{:.1}\" y=\"{:.1}\" fill=\"{color}\">{}</text>",
+            path.join(" "),
+            LEFT + 8.0,
+            TOP + 12.0 + 14.0 * k as f64,
+            escape(&t.label)
+        );
+    }
+    let _ = write!(
+        s,
+        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">simulated seconds (0 to \
+         {x_max:.0})</text></svg>",
+        (LEFT + W - RIGHT) / 2.0,
+        H - 6.0
+    );
+    s
 }
 
 /// The CSV of every measured number of `done`: one row per number.

@@ -32,6 +32,10 @@ fn outcome() -> Outcome {
             },
         ],
         chart: Chart::Bars { unit: "fish" },
+        timelines: vec![super::outcome::Timeline {
+            label: "a".into(),
+            points: vec![[0.0, 0.0], [90.0, 2.0], [180.0, 3.0]],
+        }],
     }
 }
 
@@ -223,6 +227,12 @@ fn why_school_measures_catches_in_both_tanks_and_they_follow_the_settings() {
             "paused at the end for the class to look"
         );
         assert!(o.summary.contains("180"), "{}", o.summary);
+        // The catches plot: each tank's count grows to what was measured.
+        assert_eq!(o.timelines.len(), 2);
+        for (t, row) in o.timelines.iter().zip(&o.rows) {
+            assert_eq!(t.points.last().unwrap()[1], row.value);
+            assert!(t.points.windows(2).all(|w| w[1][1] >= w[0][1]));
+        }
         catches.push((o.rows[0].value, o.rows[1].value));
     }
     let (group, alone) = (catches[0], catches[1]);
@@ -362,4 +372,47 @@ fn learning_races_the_copies_saved_while_practising() {
     let last = o.rows[5].value;
     assert!(last > o.rows[0].value, "{:?}", o.rows);
     assert!(o.summary.contains(&format!("{last:.2} m")), "{}", o.summary);
+}
+
+#[test]
+fn leader_measures_polarization_with_alignment_on_and_off_and_the_fish_inspected() {
+    let inv = find("leader").unwrap();
+    let mut p = Progress::new(inv);
+    p.choose(1).unwrap();
+    p.commit().unwrap();
+    p.start_run().unwrap();
+    let mut lab = Lab::new(setup_settings(inv).unwrap());
+    let mut m = Measurement::start(inv, &mut lab).unwrap();
+    // Let the school form, then the student clicks fish 5.
+    lab.step(600);
+    let mut s = lab.settings().clone();
+    s.left.selected = Some(5);
+    lab.apply_settings(s);
+    lab.step(1);
+    let mut alignment_off = false;
+    let o = loop {
+        if let Some(o) = m.advance(&p, &mut lab, 0.01, 0.0) {
+            break o;
+        }
+        let (on, _) = m.alignment().unwrap().means();
+        if !alignment_off && on.is_some() && lab.runs()[0].time_secs() > 30.0 {
+            // Enough measured with alignment on: the student turns it off.
+            let mut s = lab.settings().clone();
+            s.left.alignment = 0.0;
+            lab.apply_settings(s);
+            alignment_off = true;
+        }
+        assert!(lab.runs()[0].time_secs() < 120.0, "the run did not end");
+        lab.step(15);
+    };
+    assert!(alignment_off);
+    let on = o.rows[0].value;
+    let off = o.rows[1].value;
+    assert!(
+        on > off + 0.2,
+        "alignment orders the school: on {on}, off {off}"
+    );
+    assert_eq!(o.rows[2].label, "neighbours fish 5 heeded");
+    assert!((1.0..=7.0).contains(&o.rows[2].value), "{:?}", o.rows[2]);
+    assert!(o.verdict.contains("agrees"), "{}", o.verdict);
 }

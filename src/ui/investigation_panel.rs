@@ -14,7 +14,7 @@
 use eframe::egui;
 
 use super::WidgetRects;
-use super::investigation_plot::{outcome_ui, sketch_ui};
+use super::investigation_plot::{outcome_ui, sketch_ui, timelines_ui};
 use super::scene_panel::Notice;
 use crate::investigation::{
     INVESTIGATIONS, Investigation, InvestigationReport, Measurement, PredictionKind, Progress,
@@ -448,6 +448,10 @@ impl InvestigationPanel {
             if let Some(run) = m.alignment() {
                 alignment_controls(ui, run, settings, rects, actions);
             }
+            if let Some(secs) = m.catches_secs() {
+                let live = crate::investigation::measure::catches_timelines(lab, secs);
+                timelines_ui(ui, &live, secs);
+            }
         }
         let sketch = match (inv.prediction, p.prediction) {
             (PredictionKind::Curve { shapes, .. }, Some(pred)) => shapes.get(pred.choice),
@@ -468,6 +472,9 @@ impl InvestigationPanel {
         let r = ui.label(&outcome.summary);
         rects.insert("investigation_result", r.rect);
         outcome_ui(ui, outcome, sketch);
+        if let Some(last) = outcome.timelines.first().and_then(|t| t.points.last()) {
+            timelines_ui(ui, &outcome.timelines, last[0]);
+        }
         ui.label(egui::RichText::new(&outcome.verdict).strong());
         let next = ui.button("Next: explain »");
         rects.insert("investigation_next", next.rect);

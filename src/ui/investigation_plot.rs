@@ -5,8 +5,9 @@
 use eframe::egui;
 use egui_plot::{Bar, BarChart, Legend, Line, LineStyle, Plot, PlotPoints, Points};
 
-use crate::investigation::outcome::x_span;
+use crate::investigation::outcome::{Timeline, x_span};
 use crate::investigation::{Chart, Outcome, Shape};
+use crate::settings::Side;
 
 /// Height of the window's plot, points. Default 150: the window still fits a
 /// phone's screen with the text around it.
@@ -135,4 +136,34 @@ fn short_label(label: &str) -> String {
         .rsplit_once(", ")
         .map_or(label, |(_, tail)| tail)
         .to_owned()
+}
+
+/// Counts over the run (each tank's catches), in the tanks' colours, over the
+/// run's `secs` simulated seconds.
+pub fn timelines_ui(ui: &mut egui::Ui, timelines: &[Timeline], secs: f64) {
+    if timelines.is_empty() {
+        return;
+    }
+    Plot::new("investigation_timelines")
+        .height(PLOT_HEIGHT * 0.8)
+        .x_axis_label("simulated seconds")
+        .y_axis_label("fish caught")
+        .include_x(0.0)
+        .include_x(secs)
+        .include_y(0.0)
+        .include_y(4.0)
+        .legend(Legend::default())
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_scroll(false)
+        .show(ui, |plot| {
+            for (k, t) in timelines.iter().enumerate() {
+                let side = if k == 0 { Side::Left } else { Side::Right };
+                plot.line(
+                    Line::new(t.label.clone(), t.points.clone())
+                        .color(super::side_color(side))
+                        .width(2.0),
+                );
+            }
+        });
 }
