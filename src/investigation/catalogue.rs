@@ -252,9 +252,9 @@ pub const INVESTIGATIONS: [Investigation; 5] = [
         minutes: 10,
         intro: "A physics fish: 23 masses, 91 springs, 12 of them muscles. The muscles bend \
                 the body from side to side; the water pushes back on the tail and the fish \
-                moves forward. The experiment drives one body at full strength at six tail-beat \
+                moves forward. The experiment drives one body at full strength at seven tail-beat \
                 frequencies and measures its speed.",
-        question: "How does the fish's top speed change as its tail beats faster (1 to 4 beats \
+        question: "How does the fish's top speed change as its tail beats faster (1 to 5 beats \
                    a second)? Choose the shape.",
         prediction: PredictionKind::Curve {
             x_label: "tail beats per second (Hz)",
@@ -268,7 +268,7 @@ pub const INVESTIGATIONS: [Investigation; 5] = [
         run_hint: "The measurement swims a separate body at each beat, a little every frame. \
                    Meanwhile watch the selected fish's muscles glow red as they pull.",
         measurement: MeasurementKind::TailBeat {
-            frequencies_hz: &[1.0, 1.5, 2.0, 2.5, 3.0, 4.0],
+            frequencies_hz: &[1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0],
             secs: 30.0,
         },
         prompts: &[
@@ -282,9 +282,10 @@ pub const INVESTIGATIONS: [Investigation; 5] = [
                  limit because muscles contract only so fast. Tu and Terzopoulos' fish swims \
                  the same way, through its springs and a simple water force. Ours: speed grows \
                  about linearly up to 3 beats a second, each beat gaining only about 0.25 body \
-                 lengths (our water has no added mass and the tail fin is small), and above 3 \
-                 beats a second the swimming becomes erratic: the tail cannot follow the beat, \
-                 a limit of our spring model, not the muscle limit of real fish.",
+                 lengths (our water has no added mass and the tail fin is small); above 3 beats \
+                 a second each extra beat gains less, and at 5 the fish swims slower than at 4: \
+                 the passive tail can no longer follow the beat, a limit of our spring model, \
+                 not the muscle limit of real fish.",
         reference: "Bainbridge 1958, J. Exp. Biol. 35:109; Webb 1975, Hydrodynamics and energetics \
                     of fish propulsion; Tu & Terzopoulos 1994 §3; Shoal: docs/fish-body.md",
     },

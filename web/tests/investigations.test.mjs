@@ -82,7 +82,7 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
     });
 
     test("Why do fish school? from the first screen to the reveal, with real clicks", async () => {
-      const { page, errors } = await openShoal(browser, server.url, { width: 1366, height: 900 });
+      const { page, errors } = await openShoal(browser, server.url, { width: 1280, height: 800 });
       assert.equal(await inv(page), null, "no investigation at first");
       const list = await page.evaluate(() => window.shoal.investigations());
       assert.deepEqual(
