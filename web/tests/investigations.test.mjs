@@ -123,7 +123,8 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       i = await inv(page);
       assert.equal(i.prediction.choice, 1);
       assert.equal(i.prediction.text, "The school (right)");
-      // Locked: the choices are gone, and set() cannot change it either.
+      // Locked: the choices are gone (once the next frame is drawn).
+      await waitFrames(page, 2);
       assert.equal((await page.evaluate(() => window.shoal.widgets())).investigation_choice_0, undefined);
 
       // The Speed slider, dragged to its top end, makes the 3 minutes short.
