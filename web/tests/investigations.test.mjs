@@ -198,6 +198,7 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       const file = await download;
       assert.equal(file.suggestedFilename(), "shoal-my-investigations.html");
       const html = fs.readFileSync(await file.path(), "utf8");
+      saveArtifact(`investigation-${tier}-record.html`, html);
       assert.ok(html.includes("The school (right) (locked before the run)"));
       assert.ok(html.includes(`<td class="n">${loners}</td>`) && html.includes(`<td class="n">${school}</td>`));
       assert.ok(html.includes("The shark &lt;switched&gt; fish"), "student text escaped");
