@@ -73,6 +73,8 @@ pub struct ShoalApp {
     experiment: crate::ui::ExperimentPanel,
     /// The teacher's studio's windows (*Share with class* and its QR code).
     studio: crate::ui::StudioPanel,
+    /// The guided investigation under way and the session's record.
+    investigations: crate::ui::InvestigationPanel,
     ctx: egui::Context,
 }
 
@@ -120,13 +122,82 @@ impl ShoalApp {
             scene_panel: CurrentPanel::new(lab_scene),
             experiment: crate::ui::ExperimentPanel::default(),
             studio: crate::ui::StudioPanel::default(),
+            investigations: crate::ui::InvestigationPanel::default(),
             ctx: cc.egui_ctx.clone(),
         })
     }
 
-    /// Tells the app its page address (for share links).
+    /// Tells the app its page address (for share links). An
+    /// `?investigation=<id>` in it opens that investigation; an unknown id is
+    /// explained in a notice naming the known ones, and the rest of the link
+    /// stays as it was opened.
     pub fn set_page_url(&mut self, url: String) {
-        self.page_url = Some(url);
+        let asked = crate::investigation::link::from_url(&url);
+        self.page_url = Some(crate::investigation::link::without_investigation(&url));
+        match asked {
+            Some(Ok(investigation)) => {
+                if let Err(err) = self.open_investigation(investigation, None) {
+                    self.notice = Some(Notice::error(err.to_string()));
+                }
+            }
+            Some(Err(err)) => {
+                self.notice = Some(Notice::error(format!(
+                    "This link could not open its investigation: {err}. The rest of the link \
+                     was opened."
+                )));
+            }
+            None => {}
+        }
+    }
+
+    /// Opens `investigation` (its scene set up through the settings), then
+    /// applies `patch` over its settings. All or nothing.
+    fn open_investigation(
+        &mut self,
+        investigation: &'static crate::investigation::Investigation,
+        patch: Option<&serde_json::Value>,
+    ) -> Result<(), AutomationError> {
+        let mut settings = crate::investigation::setup_settings(investigation)?;
+        if let Some(patch) = patch {
+            settings.apply_patch(patch)?;
+        }
+        self.investigations
+            .open(&self.ctx, investigation)
+            .map_err(AutomationError::BadArgument)?;
+        self.lab.apply_settings(settings);
+        self.ctx.request_repaint();
+        Ok(())
+    }
+
+    /// `shoal.set(patch)`, where the patch may name an `investigation` to open
+    /// (or `null` to close it). All or nothing: an unknown id or a bad setting
+    /// changes nothing.
+    pub fn set_with_investigation(
+        &mut self,
+        patch: serde_json::Value,
+    ) -> Result<(), AutomationError> {
+        use crate::investigation::link::{Request, split_patch};
+        let (request, rest) =
+            split_patch(&patch).map_err(|err| AutomationError::BadArgument(err.to_string()))?;
+        match request {
+            Request::None => self.run_command(Command::Set(rest)),
+            Request::Open(investigation) => self.open_investigation(investigation, Some(&rest)),
+            Request::Close => {
+                self.run_command(Command::Set(rest))?;
+                self.investigations.close();
+                Ok(())
+            }
+        }
+    }
+
+    /// `shoal.state().investigation`: the one open, if any.
+    pub fn investigation_report(&self) -> Option<crate::investigation::InvestigationReport> {
+        self.investigations.report()
+    }
+
+    /// The student's record as `(html, csv)` (`shoal.investigation_record()`).
+    pub fn investigation_record(&self) -> (String, String) {
+        self.investigations.record_files()
     }
 
     /// Shows an explanation at the top of the view (e.g. a share link that could not
@@ -255,9 +326,14 @@ impl ShoalApp {
 
     /// The link that reopens the current settings (`shoal.share_link()`).
     pub fn share_link(&self) -> String {
+        let page = self.page_url.clone().unwrap_or_default();
+        let page = match self.investigations.open_id() {
+            Some(id) => crate::investigation::link::with_investigation(&page, id),
+            None => page,
+        };
         format!(
             "{}#{}",
-            self.page_url.as_deref().unwrap_or_default(),
+            page,
             crate::settings::share_link::encode(self.lab.settings())
         )
     }
@@ -632,6 +708,7 @@ impl eframe::App for ShoalApp {
         self.last_frame_time_secs = Some(now_secs);
         self.lab.advance_frame(frame_secs, now_secs);
         let experimenting = self.experiment.frame(now_secs);
+        let investigating = self.investigations.frame(&mut self.lab, now_secs);
         self.fps_meter.record(now_secs, 1);
         self.frames_drawn += 1;
 
@@ -676,6 +753,8 @@ impl eframe::App for ShoalApp {
             .resizable(true)
             .show_collapsible(ui, &mut self.panel_open, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| {
+                    ui.add_space(6.0);
+                    crate::ui::investigations_button(ui, &mut self.widget_rects);
                     actions.extend(control_panel_ui(
                         ui,
                         &mut settings,
@@ -733,6 +812,17 @@ impl eframe::App for ShoalApp {
         {
             self.notice = Some(notice);
         }
+        let mut run_investigation = false;
+        for action in
+            self.investigations
+                .windows_ui(ui.ctx(), &self.lab, &settings, &mut self.widget_rects)
+        {
+            match action {
+                crate::ui::InvestigationAction::Settings(s) => settings = *s,
+                crate::ui::InvestigationAction::Run => run_investigation = true,
+                crate::ui::InvestigationAction::Notice(n) => self.notice = Some(n),
+            }
+        }
         // The student view keeps what the teacher's rules keep.
         let current = self.lab.settings();
         if &settings != current {
@@ -740,6 +830,9 @@ impl eframe::App for ShoalApp {
         }
         if &settings != self.lab.settings() {
             self.lab.apply_settings(settings);
+        }
+        if run_investigation && let Err(err) = self.investigations.start_run(&mut self.lab) {
+            self.notice = Some(Notice::error(err));
         }
         if watch {
             // The run from its start, as the experiment ran it.
@@ -764,7 +857,7 @@ impl eframe::App for ShoalApp {
 
         // Keep animating while the simulation runs. While paused the picture is
         // still, so egui repaints only on input: a paused class saves battery.
-        if !self.lab.settings().paused || experimenting {
+        if !self.lab.settings().paused || experimenting || investigating {
             ui.ctx().request_repaint();
         }
     }

@@ -16,6 +16,7 @@ pub mod bench;
 pub mod clock;
 pub mod experiment;
 pub mod export;
+pub mod investigation;
 pub mod lab;
 pub mod metrics_history;
 #[allow(clippy::disallowed_methods)] // drawing only (see `app`)

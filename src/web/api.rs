@@ -15,7 +15,7 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 22] = [
+    let methods: [(&str, Box<Method>); 24] = [
         (
             "state",
             Box::new(|app, _| {
@@ -25,6 +25,12 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
                     (app.experiment_report(), state.as_object_mut())
                 {
                     object.insert("experiment".into(), to_json(&report)?);
+                }
+                if let Some(object) = state.as_object_mut() {
+                    object.insert(
+                        "investigation".into(),
+                        to_json(&app.investigation_report())?,
+                    );
                 }
                 Ok(state)
             }),
@@ -41,6 +47,17 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
                 app.start_experiment(&design)
                     .map_err(|err| AutomationError::BadArgument(err.to_string()))?;
                 Ok(serde_json::Value::Null)
+            }),
+        ),
+        (
+            "investigations",
+            Box::new(|_, _| to_json(&crate::investigation::list())),
+        ),
+        (
+            "investigation_record",
+            Box::new(|app, _| {
+                let (html, csv) = app.investigation_record();
+                Ok(serde_json::json!({"html": html, "csv": csv}))
             }),
         ),
         (
@@ -73,7 +90,7 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
             "set",
             Box::new(|app, arg| {
                 let patch = arg.unwrap_or(serde_json::Value::Null);
-                app.run_command(Command::Set(patch))?;
+                app.set_with_investigation(patch)?;
                 Ok(serde_json::Value::Null)
             }),
         ),

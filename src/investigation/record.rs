@@ -1,0 +1,377 @@
+//! The student's record: every investigation done this session (question,
+//! prediction, measured result, explanations, the reveal) as one self-contained
+//! HTML file a teacher opens without Shoal (inline CSS, the plots as inline SVG,
+//! no scripts), and the runs' measured numbers as CSV.
+
+use std::fmt::Write as _;
+
+use super::Progress;
+use super::catalogue::PredictionKind;
+use super::outcome::{Chart, CurvePoint, Outcome, x_span};
+
+/// Text made safe inside HTML (element content and attribute values).
+pub fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+const STYLE: &str = "body{font-family:system-ui,sans-serif;max-width:46em;margin:2em auto;\
+padding:0 1em;color:#1d2733;line-height:1.45}h1{font-size:1.6em}section{border-top:2px solid \
+#2a6f97;margin-top:2em;padding-top:.5em}h3{margin-bottom:.2em;color:#2a6f97}.q{font-size:1.15em;\
+font-weight:600}.locked{background:#eef5fa;padding:.3em .6em;border-left:4px solid #2a6f97}\
+table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:.2em .6em;text-align:left}\
+td.n{text-align:right}.ref{font-size:.9em;color:#555}svg{max-width:100%;height:auto}\
+.answer{white-space:pre-wrap;background:#fafafa;padding:.3em .6em;border:1px solid #ddd}";
+
+/// The HTML file of `done` (the investigations with a committed prediction).
+pub fn html(done: &[Progress]) -> String {
+    let mut out = String::new();
+    let _ = write!(
+        out,
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
+         <title>My Shoal investigations</title><style>{STYLE}</style></head><body>\n\
+         <h1>My Shoal investigations</h1>\n<p>Predict, observe, explain: each prediction was \
+         locked before its run started. Every number below was measured by Shoal's \
+         simulation during the run.</p>\n"
+    );
+    if done.is_empty() {
+        out.push_str("<p>No investigation has been done yet.</p>\n");
+    }
+    for p in done {
+        section(&mut out, p);
+    }
+    out.push_str("</body></html>\n");
+    out
+}
+
+fn section(out: &mut String, p: &Progress) {
+    let inv = p.investigation;
+    let _ = write!(
+        out,
+        "<section>\n<h2>{}</h2>\n<p>{}</p>\n<p class=\"q\">{}</p>\n<h3>My prediction</h3>\n",
+        escape(inv.title),
+        escape(inv.intro),
+        escape(inv.question)
+    );
+    match p.prediction {
+        Some(pred) => {
+            let _ = writeln!(
+                out,
+                "<p class=\"locked\">{} (locked before the run)</p>",
+                escape(p.answer_text(pred.choice))
+            );
+        }
+        None => out.push_str("<p>No prediction yet.</p>\n"),
+    }
+    out.push_str("<h3>What was measured</h3>\n");
+    match &p.outcome {
+        Some(outcome) => {
+            let _ = writeln!(out, "<p>{}</p>", escape(&outcome.summary));
+            table(out, outcome);
+            out.push_str(&svg(p, outcome));
+            if !outcome.timelines.is_empty() {
+                out.push('\n');
+                out.push_str(&timelines_svg(outcome));
+            }
+            let _ = writeln!(out, "\n<p>{}</p>", escape(&outcome.verdict));
+        }
+        None => out.push_str("<p>The run has not finished.</p>\n"),
+    }
+    if p.explanations.iter().any(|e| !e.trim().is_empty()) {
+        out.push_str("<h3>My explanations</h3>\n");
+        for (prompt, answer) in inv.prompts.iter().zip(&p.explanations) {
+            let _ = writeln!(
+                out,
+                "<p><b>{}</b></p><p class=\"answer\">{}</p>",
+                escape(prompt),
+                if answer.trim().is_empty() {
+                    "(no answer)".to_owned()
+                } else {
+                    escape(answer)
+                }
+            );
+        }
+    }
+    if p.step == super::Step::Reveal {
+        let _ = writeln!(
+            out,
+            "<h3>What scientists found</h3>\n<p>{}</p>\n<p class=\"ref\">{}</p>",
+            escape(inv.reveal),
+            escape(inv.reference)
+        );
+    }
+    out.push_str("</section>\n");
+}
+
+fn table(out: &mut String, outcome: &Outcome) {
+    out.push_str("<table><tr><th>measured</th><th>value</th><th>unit</th></tr>\n");
+    for row in &outcome.rows {
+        let _ = writeln!(
+            out,
+            "<tr><td>{}</td><td class=\"n\">{}</td><td>{}</td></tr>",
+            escape(&row.label),
+            number(row.value),
+            escape(row.unit)
+        );
+    }
+    out.push_str("</table>\n");
+}
+
+/// A number as the record prints it: whole numbers bare, others to 3 decimals.
+pub fn number(v: f64) -> String {
+    if v.fract() == 0.0 && v.abs() < 1e12 {
+        format!("{v:.0}")
+    } else {
+        format!("{v:.3}")
+    }
+}
+
+const W: f64 = 520.0;
+const H: f64 = 240.0;
+const LEFT: f64 = 60.0;
+const BOTTOM: f64 = 40.0;
+const TOP: f64 = 14.0;
+const RIGHT: f64 = 16.0;
+
+/// The result's chart as an inline SVG picture.
+pub fn svg(p: &Progress, outcome: &Outcome) -> String {
+    let mut s = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {W} {H}\" width=\"{W}\" \
+         height=\"{H}\" role=\"img\" font-family=\"sans-serif\" font-size=\"11\">\
+         <rect width=\"{W}\" height=\"{H}\" fill=\"#fff\"/>"
+    );
+    match &outcome.chart {
+        Chart::Bars { unit } => bars(&mut s, outcome, unit),
+        Chart::Curve {
+            x_label,
+            y_label,
+            points,
+            y_max,
+        } => curve(&mut s, p, points, *y_max, x_label, y_label),
+    }
+    s.push_str("</svg>");
+    s
+}
+
+fn axes(s: &mut String, y_max: f64, y_label: &str) {
+    let (x0, y0, y1) = (LEFT, H - BOTTOM, TOP);
+    let _ = write!(
+        s,
+        "<line x1=\"{x0}\" y1=\"{y0}\" x2=\"{}\" y2=\"{y0}\" stroke=\"#333\"/>\
+         <line x1=\"{x0}\" y1=\"{y0}\" x2=\"{x0}\" y2=\"{y1}\" stroke=\"#333\"/>",
+        W - RIGHT
+    );
+    for k in 0..=4 {
+        let v = y_max * f64::from(k) / 4.0;
+        let y = y0 - (y0 - y1) * f64::from(k) / 4.0;
+        let _ = write!(
+            s,
+            "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>",
+            x0 - 4.0,
+            y + 4.0,
+            tick(v)
+        );
+    }
+    let _ = write!(
+        s,
+        "<text x=\"12\" y=\"{:.1}\" transform=\"rotate(-90 12 {:.1})\" \
+         text-anchor=\"middle\">{}</text>",
+        (y0 + y1) / 2.0,
+        (y0 + y1) / 2.0,
+        escape(y_label)
+    );
+}
+
+fn tick(v: f64) -> String {
+    if v >= 10.0 || v == 0.0 {
+        format!("{v:.0}")
+    } else {
+        format!("{v:.2}")
+    }
+}
+
+fn bars(s: &mut String, outcome: &Outcome, unit: &str) {
+    let top = outcome.rows.iter().map(|r| r.value).fold(0.0, f64::max);
+    let y_max = if top > 0.0 { top * 1.15 } else { 1.0 };
+    axes(s, y_max, unit);
+    let n = outcome.rows.len().max(1) as f64;
+    let slot = (W - LEFT - RIGHT) / n;
+    let plot_h = H - BOTTOM - TOP;
+    for (k, row) in outcome.rows.iter().enumerate() {
+        let h = plot_h * (row.value.max(0.0) / y_max);
+        let x = LEFT + slot * k as f64 + slot * 0.2;
+        let _ = write!(
+            s,
+            "<rect x=\"{x:.1}\" y=\"{:.1}\" width=\"{:.1}\" height=\"{h:.1}\" fill=\"#2a6f97\"/>\
+             <text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>\
+             <text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\" font-size=\"9\">{}</text>",
+            H - BOTTOM - h,
+            slot * 0.6,
+            x + slot * 0.3,
+            H - BOTTOM - h - 3.0,
+            number(row.value),
+            x + slot * 0.3,
+            H - BOTTOM + 14.0,
+            escape(&short(&row.label))
+        );
+    }
+}
+
+/// A label short enough to sit under a bar.
+fn short(label: &str) -> String {
+    let chars: Vec<char> = label.chars().collect();
+    if chars.len() > 28 {
+        chars[chars.len() - 28..].iter().collect::<String>()
+    } else {
+        label.to_owned()
+    }
+}
+
+fn curve(
+    s: &mut String,
+    p: &Progress,
+    points: &[CurvePoint],
+    y_max: f64,
+    x_label: &str,
+    y_label: &str,
+) {
+    let top = points.iter().map(|q| q.high).fold(y_max, f64::max);
+    axes(s, top, y_label);
+    let (x0, x1) = x_span(points);
+    let span = if x1 > x0 { x1 - x0 } else { 1.0 };
+    let px = |x: f64| LEFT + (W - LEFT - RIGHT) * (x - x0) / span;
+    let py = |y: f64| H - BOTTOM - (H - BOTTOM - TOP) * (y / top).clamp(-0.05, 1.05);
+    for q in points {
+        let _ = write!(
+            s,
+            "<line x1=\"{0:.1}\" y1=\"{1:.1}\" x2=\"{0:.1}\" y2=\"{2:.1}\" stroke=\"#e07a1f\" \
+             stroke-width=\"2\"/><text x=\"{0:.1}\" y=\"{3:.1}\" text-anchor=\"middle\">{4}</text>",
+            px(q.x),
+            py(q.low),
+            py(q.high),
+            H - BOTTOM + 14.0,
+            tick(q.x)
+        );
+    }
+    let path: Vec<String> = points
+        .iter()
+        .map(|q| format!("{:.1},{:.1}", px(q.x), py(q.mean)))
+        .collect();
+    let _ = write!(
+        s,
+        "<polyline points=\"{}\" fill=\"none\" stroke=\"#e07a1f\" stroke-width=\"2.5\"/>",
+        path.join(" ")
+    );
+    for q in points {
+        let _ = write!(
+            s,
+            "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"3.5\" fill=\"#e07a1f\"/>",
+            px(q.x),
+            py(q.mean)
+        );
+    }
+    if let (Some(pred), PredictionKind::Curve { shapes, .. }) =
+        (p.prediction, p.investigation.prediction)
+        && let Some(shape) = shapes.get(pred.choice)
+    {
+        let sketch: Vec<String> = (0..=40)
+            .map(|k| {
+                let u = f64::from(k) / 40.0;
+                format!("{:.1},{:.1}", px(x0 + u * span), py(shape.at(u) * y_max))
+            })
+            .collect();
+        let _ = write!(
+            s,
+            "<polyline points=\"{}\" fill=\"none\" stroke=\"#2a6f97\" stroke-width=\"2\" \
+             stroke-dasharray=\"6 4\"/>",
+            sketch.join(" ")
+        );
+    }
+    let _ = write!(
+        s,
+        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>\
+         <text x=\"{:.1}\" y=\"{TOP}\" text-anchor=\"end\" fill=\"#e07a1f\">measured \
+         (bars: 95 % interval)</text><text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\" \
+         fill=\"#2a6f97\">my prediction (dashed)</text>",
+        (LEFT + W - RIGHT) / 2.0,
+        H - 6.0,
+        escape(x_label),
+        W - RIGHT,
+        W - RIGHT,
+        TOP + 14.0
+    );
+}
+
+/// The counts over the run (the catches plot) as an inline SVG picture.
+pub fn timelines_svg(outcome: &Outcome) -> String {
+    const COLORS: [&str; 2] = ["#e07a1f", "#2a8fc7"];
+    let mut s = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {W} {H}\" width=\"{W}\" \
+         height=\"{H}\" role=\"img\" font-family=\"sans-serif\" font-size=\"11\">\
+         <rect width=\"{W}\" height=\"{H}\" fill=\"#fff\"/>"
+    );
+    let all = outcome.timelines.iter().flat_map(|t| t.points.iter());
+    let x_max = all.clone().map(|p| p[0]).fold(1.0, f64::max);
+    let y_top = all.map(|p| p[1]).fold(0.0, f64::max).max(1.0) * 1.15;
+    axes(&mut s, y_top, "fish caught");
+    let px = |x: f64| LEFT + (W - LEFT - RIGHT) * x / x_max;
+    let py = |y: f64| H - BOTTOM - (H - BOTTOM - TOP) * y / y_top;
+    for (k, t) in outcome.timelines.iter().enumerate() {
+        let color = COLORS[k % COLORS.len()];
+        let path: Vec<String> = t
+            .points
+            .iter()
+            .map(|p| format!("{:.1},{:.1}", px(p[0]), py(p[1])))
+            .collect();
+        let _ = write!(
+            s,
+            "<polyline points=\"{}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"/>\
+             <text x=\"{:.1}\" y=\"{:.1}\" fill=\"{color}\">{}</text>",
+            path.join(" "),
+            LEFT + 8.0,
+            TOP + 12.0 + 14.0 * k as f64,
+            escape(&t.label)
+        );
+    }
+    let _ = write!(
+        s,
+        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">simulated seconds (0 to \
+         {x_max:.0})</text></svg>",
+        (LEFT + W - RIGHT) / 2.0,
+        H - 6.0
+    );
+    s
+}
+
+/// The CSV of every measured number of `done`: one row per number.
+pub fn csv(done: &[Progress]) -> String {
+    let mut out =
+        String::from("# Shoal: the measured numbers of my investigations (one row per number)\n");
+    for p in done {
+        if let Some(pred) = p.prediction {
+            let _ = writeln!(
+                out,
+                "# {}: predicted \"{}\"",
+                p.investigation.id,
+                p.answer_text(pred.choice).replace('\n', " ")
+            );
+        }
+    }
+    out.push_str("investigation,label,value,unit\n");
+    for p in done {
+        if let Some(outcome) = &p.outcome {
+            outcome.csv_lines(p.investigation.id, &mut out);
+        }
+    }
+    out
+}

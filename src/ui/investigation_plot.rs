@@ -1,0 +1,169 @@
+//! The investigation window's pictures: a sketch of the chosen curve before the
+//! run, and after it the measured result (bars, or the measured curve with its
+//! 95 % intervals and the student's sketch dashed over it).
+
+use eframe::egui;
+use egui_plot::{Bar, BarChart, Legend, Line, LineStyle, Plot, PlotPoints, Points};
+
+use crate::investigation::outcome::{Timeline, x_span};
+use crate::investigation::{Chart, Outcome, Shape};
+use crate::settings::Side;
+
+/// Height of the window's plot, points. Default 150: the window still fits a
+/// phone's screen with the text around it.
+const PLOT_HEIGHT: f32 = 150.0;
+
+const MEASURED: egui::Color32 = egui::Color32::from_rgb(255, 170, 60);
+const PREDICTED: egui::Color32 = egui::Color32::from_rgb(110, 180, 255);
+
+fn sketch_points(shape: &Shape, x0: f64, x1: f64, y_max: f64) -> PlotPoints<'static> {
+    (0..=40)
+        .map(|k| {
+            let u = f64::from(k) / 40.0;
+            [x0 + u * (x1 - x0), shape.at(u) * y_max]
+        })
+        .collect()
+}
+
+/// The chosen sketch alone, before the run: its shape over the axes' names.
+pub fn sketch_ui(ui: &mut egui::Ui, shape: &Shape, x_label: &str, y_label: &str) {
+    Plot::new("investigation_sketch")
+        .height(PLOT_HEIGHT * 0.7)
+        .x_axis_label(x_label)
+        .y_axis_label(y_label)
+        .x_axis_formatter(|_, _| String::new())
+        .y_axis_formatter(|_, _| String::new())
+        .include_y(0.0)
+        .include_y(1.0)
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_scroll(false)
+        .show(ui, |plot| {
+            plot.line(
+                Line::new("your sketch", sketch_points(shape, 0.0, 1.0, 1.0))
+                    .color(PREDICTED)
+                    .width(2.5),
+            );
+        });
+}
+
+/// The measured result, with the sketch over a curve.
+pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) {
+    match &outcome.chart {
+        Chart::Bars { unit } => {
+            let bars: Vec<Bar> = outcome
+                .rows
+                .iter()
+                .enumerate()
+                .filter(|(_, r)| r.unit == outcome.rows[0].unit)
+                .map(|(k, r)| {
+                    Bar::new(k as f64, r.value)
+                        .name(&r.label)
+                        .width(0.6)
+                        .fill(MEASURED)
+                })
+                .collect();
+            let labels: Vec<String> = outcome.rows.iter().map(|r| r.label.clone()).collect();
+            Plot::new("investigation_bars")
+                .height(PLOT_HEIGHT)
+                .y_axis_label(*unit)
+                .include_y(0.0)
+                .allow_drag(false)
+                .allow_zoom(false)
+                .allow_scroll(false)
+                .x_axis_formatter(move |mark, _| {
+                    let k = mark.value.round();
+                    if (mark.value - k).abs() < 1e-6 && k >= 0.0 {
+                        labels
+                            .get(k as usize)
+                            .map(|l| short_label(l))
+                            .unwrap_or_default()
+                    } else {
+                        String::new()
+                    }
+                })
+                .show(ui, |plot| {
+                    plot.bar_chart(BarChart::new("measured", bars));
+                });
+        }
+        Chart::Curve {
+            x_label,
+            y_label,
+            points,
+            y_max,
+        } => {
+            let (x0, x1) = x_span(points);
+            Plot::new("investigation_curve")
+                .height(PLOT_HEIGHT)
+                .x_axis_label(*x_label)
+                .y_axis_label(*y_label)
+                .include_y(0.0)
+                .legend(Legend::default())
+                .allow_drag(false)
+                .allow_zoom(false)
+                .allow_scroll(false)
+                .show(ui, |plot| {
+                    for p in points {
+                        plot.line(
+                            Line::new("95 % interval", vec![[p.x, p.low], [p.x, p.high]])
+                                .color(MEASURED)
+                                .width(1.5),
+                        );
+                    }
+                    let mean: Vec<[f64; 2]> = points.iter().map(|p| [p.x, p.mean]).collect();
+                    plot.line(
+                        Line::new("measured", mean.clone())
+                            .color(MEASURED)
+                            .width(2.5),
+                    );
+                    plot.points(Points::new("measured", mean).color(MEASURED).radius(3.5));
+                    if let Some(shape) = sketch {
+                        plot.line(
+                            Line::new("your prediction", sketch_points(shape, x0, x1, *y_max))
+                                .color(PREDICTED)
+                                .style(LineStyle::dashed_loose())
+                                .width(2.0),
+                        );
+                    }
+                });
+        }
+    }
+}
+
+/// The end of a long label, to sit under a bar.
+fn short_label(label: &str) -> String {
+    label
+        .rsplit_once(", ")
+        .map_or(label, |(_, tail)| tail)
+        .to_owned()
+}
+
+/// Counts over the run (each tank's catches), in the tanks' colours, over the
+/// run's `secs` simulated seconds.
+pub fn timelines_ui(ui: &mut egui::Ui, timelines: &[Timeline], secs: f64) {
+    if timelines.is_empty() {
+        return;
+    }
+    Plot::new("investigation_timelines")
+        .height(PLOT_HEIGHT * 0.8)
+        .x_axis_label("simulated seconds")
+        .y_axis_label("fish caught")
+        .include_x(0.0)
+        .include_x(secs)
+        .include_y(0.0)
+        .include_y(4.0)
+        .legend(Legend::default())
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_scroll(false)
+        .show(ui, |plot| {
+            for (k, t) in timelines.iter().enumerate() {
+                let side = if k == 0 { Side::Left } else { Side::Right };
+                plot.line(
+                    Line::new(t.label.clone(), t.points.clone())
+                        .color(super::side_color(side))
+                        .width(2.0),
+                );
+            }
+        });
+}

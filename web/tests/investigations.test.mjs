@@ -1,0 +1,275 @@
+// Guided investigations (issue 15, items 1, 5, 6, 7): "Why do fish school?" end
+// to end with real clicks (the side panel's Investigations button, the list, the
+// intro, a prediction that must be committed before Run works and is then
+// locked, the run made short with the Speed slider, the measured catches beside
+// the prediction, three explanations typed in, the reveal, the sandbox open
+// afterwards, the record downloaded); the other four opened by link, each
+// setting up its scene and refusing Run before a prediction; an unknown id in a
+// link; the window on a phone. WebGL2 (SwiftShader), then WebGPU.
+import { test, describe, before, after } from "node:test";
+import assert from "node:assert/strict";
+import fs from "node:fs";
+import {
+  serveDist,
+  launch,
+  openShoal,
+  saveArtifact,
+  clickWidget,
+  clickUntil,
+  waitForWidget,
+  waitFrames,
+  sleep,
+} from "./harness.mjs";
+
+const inv = (page) => page.evaluate(() => window.shoal.state().investigation);
+const settings = (page) => page.evaluate(() => window.shoal.settings());
+
+/** A paused app draws only when something asks: a small mouse move asks. */
+let nudges = 0;
+async function shot(page, tier, name) {
+  nudges += 1;
+  const start = await page.evaluate(() => window.shoal.state().frames);
+  await page.mouse.move(4 + (nudges % 2) * 3, 700);
+  await page.waitForFunction((s) => window.shoal.state().frames > s + 1, start, { timeout: 60_000 });
+  saveArtifact(`investigation-${tier}-${name}.png`, await page.screenshot());
+}
+
+/** Scrolls the investigation window until widget `name` lies inside it, and
+ * returns its rectangle. */
+async function scrollWindowTo(page, name) {
+  for (let attempt = 0; attempt < 40; attempt++) {
+    const w = await page.evaluate(() => window.shoal.widgets());
+    const r = w[name];
+    const win = w.investigation_window;
+    if (r && win && r.y >= win.y + 20 && r.y + r.height <= win.y + win.height - 2) return r;
+    if (!win) {
+      await waitFrames(page, 1);
+      continue;
+    }
+    await page.mouse.move(win.x + win.width / 2, win.y + win.height / 2);
+    await page.mouse.wheel(0, r && r.y < win.y + 20 ? -120 : 120);
+    await waitFrames(page, 2);
+  }
+  throw new Error(`${name} cannot be scrolled into the window`);
+}
+
+/** Clicks widget `name` of the investigation window until `predicate` holds. */
+async function clickInWindow(page, name, predicate, arg) {
+  for (let attempt = 0; attempt < 4; attempt++) {
+    await scrollWindowTo(page, name);
+    try {
+      await clickUntil(page, name, predicate, arg);
+      return;
+    } catch {
+      // Moved while scrolling: scroll again.
+    }
+  }
+  throw new Error(`clicking ${name} in the window had no effect`);
+}
+
+for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
+  describe(`investigations (${tier})`, () => {
+    let server, browser;
+
+    before(async () => {
+      server = await serveDist();
+      browser = await launch(tier);
+    });
+
+    after(async () => {
+      await browser?.close();
+      await server?.close();
+    });
+
+    test("Why do fish school? from the first screen to the reveal, with real clicks", async () => {
+      const { page, errors } = await openShoal(browser, server.url, { width: 1280, height: 800 });
+      assert.equal(await inv(page), null, "no investigation at first");
+      const list = await page.evaluate(() => window.shoal.investigations());
+      assert.deepEqual(
+        list.map((i) => i.id),
+        ["why-school", "leader", "which-urge", "how-swim", "learning"],
+      );
+      assert.ok(list.every((i) => i.title && i.minutes >= 5 && i.minutes <= 15));
+
+      // The button is on the first screen, at the top of the side panel.
+      const button = await waitForWidget(page, "investigations");
+      assert.ok(button.y < 120, `the Investigations button is at the top (y ${button.y})`);
+      await clickUntil(page, "investigations", () => !!window.shoal.widgets()["investigation_why-school"]);
+      await shot(page, tier, "1-list");
+
+      await clickUntil(page, "investigation_why-school", () => window.shoal.state().investigation?.id === "why-school");
+      const s = await settings(page);
+      assert.equal(s.scene, "boids");
+      assert.ok(s.compare, "two tanks");
+      assert.equal(s.left.preset, "individual");
+      assert.equal(s.right.preset, "group");
+      assert.equal(s.left.fish_count, s.right.fish_count);
+      assert.equal(s.left.sharks, 1);
+      assert.equal(s.right.sharks, 1);
+      await shot(page, tier, "2-intro");
+
+      await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "predict");
+      // Run is there but refuses before a prediction.
+      await scrollWindowTo(page, "investigation_run");
+      await clickWidget(page, "investigation_run");
+      await waitFrames(page, 3);
+      let i = await inv(page);
+      assert.equal(i.step, "predict");
+      assert.equal(i.prediction, null);
+      assert.equal(i.running, false);
+      await clickInWindow(page, "investigation_choice_1", () => window.shoal.state().investigation.chosen === 1);
+      await shot(page, tier, "3-predict");
+      await clickInWindow(page, "investigation_commit", () => window.shoal.state().investigation.step === "run");
+      i = await inv(page);
+      assert.equal(i.prediction.choice, 1);
+      assert.equal(i.prediction.text, "The school (right)");
+      // Locked: the choices are gone (once the next frame is drawn).
+      await waitFrames(page, 2);
+      assert.equal((await page.evaluate(() => window.shoal.widgets())).investigation_choice_0, undefined);
+
+      // The Speed slider, dragged to its top end, makes the 3 minutes short.
+      const speed = await waitForWidget(page, "speed");
+      await page.mouse.move(speed.x + 20, speed.y + speed.height / 2);
+      await page.mouse.down();
+      await page.mouse.move(speed.x + 130, speed.y + speed.height / 2, { steps: 6 });
+      await page.mouse.up();
+      await waitFrames(page, 2);
+      const fast = (await settings(page)).speed;
+      assert.ok(fast >= 6, `speed raised with the slider (${fast}×)`);
+
+      await clickInWindow(page, "investigation_run", () => window.shoal.state().investigation.running);
+      assert.equal((await settings(page)).paused, false, "the run plays the tanks");
+      const started = Date.now();
+      await sleep(5000);
+      await shot(page, tier, "4-running");
+      await page.waitForFunction(() => window.shoal.state().investigation.result, null, {
+        timeout: 600_000,
+        polling: 1000,
+      });
+      const secs = (Date.now() - started) / 1000;
+      const st = await page.evaluate(() => window.shoal.state());
+      i = st.investigation;
+      console.log(`why-school (${tier}): 180 simulated seconds in ${secs.toFixed(0)} s: ${i.result.summary}`);
+      assert.ok(st.time_secs >= 180, `the run lasted 3 simulated minutes (${st.time_secs})`);
+      assert.ok(st.paused, "paused at the end");
+      const [loners, school] = i.result.rows.map((r) => r.value);
+      // Measured from the run: at most what the tanks' counters hold now.
+      assert.ok(Number.isInteger(loners) && loners <= st.metrics.catches, `${loners} vs ${st.metrics.catches}`);
+      assert.ok(Number.isInteger(school) && school <= st.metrics_right.catches);
+      assert.ok(i.result.summary.includes(`${loners} loners`) && i.result.summary.includes(`${school} fish`));
+      assert.ok(i.result.verdict.includes("The school (right)"), "the prediction beside the result");
+      // The investigation's seed shows what it is about (docs/investigations.md).
+      assert.ok(school < loners, `the school lost fewer: ${school} against ${loners}`);
+      await waitForWidget(page, "investigation_result");
+      await shot(page, tier, "5-result");
+
+      // Explain: three prompts, one at a time, answers typed in.
+      await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "explain");
+      const answers = ["Steadily on the left", "The shark <switched> fish", "Too many targets"];
+      for (const [k, answer] of answers.entries()) {
+        await scrollWindowTo(page, "investigation_answer");
+        await clickWidget(page, "investigation_answer");
+        await page.keyboard.type(answer, { delay: 10 });
+        await waitFrames(page, 2);
+        if (k === 1) await shot(page, tier, "6-explain");
+        await page.waitForFunction((a) => window.shoal.state().investigation.explanations.includes(a), answer);
+        await clickUntil(
+          page,
+          "investigation_next",
+          (n) => {
+            const now = window.shoal.state().investigation;
+            return now.step === "reveal" || now.prompt === n;
+          },
+          k + 1,
+        );
+      }
+      await page.waitForFunction(() => window.shoal.state().investigation.step === "reveal");
+      await waitForWidget(page, "investigation_reveal");
+      await shot(page, tier, "7-reveal");
+
+      // The sandbox stays open: the controls work.
+      await clickUntil(page, "play_pause", () => !window.shoal.settings().paused);
+      assert.equal((await inv(page)).prediction.choice, 1, "still locked");
+
+      // The record: one self-contained HTML file and the CSV.
+      const download = page.waitForEvent("download", { timeout: 30_000 });
+      await scrollWindowTo(page, "investigation_record");
+      await clickWidget(page, "investigation_record");
+      const file = await download;
+      assert.equal(file.suggestedFilename(), "shoal-my-investigations.html");
+      const html = fs.readFileSync(await file.path(), "utf8");
+      saveArtifact(`investigation-${tier}-record.html`, html);
+      assert.ok(html.includes("The school (right) (locked before the run)"));
+      assert.ok(html.includes(`<td class="n">${loners}</td>`) && html.includes(`<td class="n">${school}</td>`));
+      assert.ok(html.includes("The shark &lt;switched&gt; fish"), "student text escaped");
+      assert.ok(html.includes("<svg") && !html.includes("<script"), "inline plot, no script");
+      assert.ok(html.includes("What scientists found"));
+      const record = await page.evaluate(() => window.shoal.investigation_record());
+      assert.ok(record.csv.includes(`why-school,"fish caught, loners (left)",${loners},fish`), record.csv);
+      assert.deepEqual(errors, []);
+      await page.close();
+    });
+
+    for (const [id, scene] of [
+      ["leader", "boids"],
+      ["which-urge", "boids"],
+      ["how-swim", "physics"],
+      ["learning", "learning"],
+    ]) {
+      test(`?investigation=${id} sets up the ${scene} scene and refuses Run before a prediction`, async () => {
+        const { page, errors } = await openShoal(browser, `${server.url}?investigation=${id}`, {
+          width: 1366,
+          height: 900,
+        });
+        await page.waitForFunction((x) => window.shoal.state().investigation?.id === x, id);
+        assert.equal((await settings(page)).scene, scene);
+        await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "predict");
+        await scrollWindowTo(page, "investigation_run");
+        await clickWidget(page, "investigation_run");
+        await waitFrames(page, 3);
+        const i = await inv(page);
+        assert.equal(i.step, "predict");
+        assert.equal(i.prediction, null);
+        assert.equal(i.running, false);
+        await clickInWindow(page, "investigation_choice_0", () => window.shoal.state().investigation.chosen === 0);
+        await shot(page, tier, `link-${id}`);
+        assert.ok((await page.evaluate(() => window.shoal.share_link())).includes(`?investigation=${id}#v1.`));
+        assert.deepEqual(errors, []);
+        await page.close();
+      });
+    }
+
+    test("a link with an unknown investigation names the known ones and opens the rest", async () => {
+      const { page } = await openShoal(browser, `${server.url}?investigation=nope`);
+      const s = await page.evaluate(() => window.shoal.state());
+      assert.equal(s.investigation, null);
+      assert.ok(s.notice.includes("'nope'") && s.notice.includes("why-school, leader"), s.notice);
+      const refused = await page.evaluate(() => {
+        try {
+          window.shoal.set({ investigation: "nope", speed: 2 });
+          return null;
+        } catch (err) {
+          return err.message;
+        }
+      });
+      assert.ok(refused.includes("which-urge"), refused);
+      assert.equal((await settings(page)).speed, 1, "nothing changed");
+      await page.evaluate(() => window.shoal.set({ investigation: "how-swim" }));
+      assert.equal((await inv(page)).step, "intro");
+      await page.close();
+    });
+
+    test("on a phone the investigation window fits the screen", async () => {
+      const { page } = await openShoal(browser, `${server.url}?investigation=why-school`, {
+        width: 390,
+        height: 844,
+      });
+      await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "predict");
+      const w = await waitForWidget(page, "investigation_window");
+      assert.ok(w.x >= 0 && w.x + w.width <= 390, `x ${w.x} width ${w.width}`);
+      assert.ok(w.y >= 0 && w.y + w.height <= 844, `y ${w.y} height ${w.height}`);
+      await shot(page, tier, "phone");
+      await page.close();
+    });
+  });
+}
