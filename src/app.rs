@@ -50,6 +50,9 @@ pub struct ShoalApp {
     layout_chosen: bool,
     fps_meter: RateMeter,
     last_frame_time_secs: Option<f64>,
+    /// Wall seconds the last frame spent on background runs (an experiment, an
+    /// investigation's measurement), to tell the page's own frame time.
+    background_secs: f64,
     /// Frames drawn since start (`state().frames`).
     frames_drawn: u64,
     /// Are the two compared tanks one above the other (a tall window)?
@@ -110,6 +113,7 @@ impl ShoalApp {
             layout_chosen: false,
             fps_meter: RateMeter::default(),
             last_frame_time_secs: None,
+            background_secs: 0.0,
             frames_drawn: 0,
             views_stacked: false,
             widget_rects: WidgetRects::new(),
@@ -128,13 +132,19 @@ impl ShoalApp {
     }
 
     /// Tells the app its page address (for share links). An
-    /// `?investigation=<id>` in it opens that investigation; an unknown id is
-    /// explained in a notice naming the known ones, and the rest of the link
-    /// stays as it was opened.
+    /// `?investigation=<id>` in it opens that investigation, an
+    /// `?experiment=…` reopens that experiment (its scene set up, its runs
+    /// started); a link that cannot be opened is explained in a notice, and
+    /// the rest of the link stays as it was opened.
     pub fn set_page_url(&mut self, url: String) {
-        let asked = crate::investigation::link::from_url(&url);
-        self.page_url = Some(crate::investigation::link::without_investigation(&url));
-        match asked {
+        use crate::experiment::link as experiment_link;
+        use crate::investigation::link as investigation_link;
+        let investigation = investigation_link::from_url(&url);
+        let experiment = experiment_link::from_url(&url);
+        self.page_url = Some(experiment_link::without_experiment(
+            &investigation_link::without_investigation(&url),
+        ));
+        match investigation {
             Some(Ok(investigation)) => {
                 if let Err(err) = self.open_investigation(investigation, None) {
                     self.notice = Some(Notice::error(err.to_string()));
@@ -148,6 +158,42 @@ impl ShoalApp {
             }
             None => {}
         }
+        match experiment {
+            Some(Ok(plan)) => self.reopen_experiment(plan),
+            Some(Err(err)) => {
+                self.notice = Some(Notice::error(format!(
+                    "This link could not open its experiment: {err}. The rest of the link \
+                     was opened."
+                )));
+            }
+            None => {}
+        }
+    }
+
+    /// An experiment link's plan: the tank shows the experiment's scene and
+    /// base settings, and its runs start.
+    fn reopen_experiment(&mut self, plan: crate::experiment::Plan) {
+        let mut settings = plan.base.clone();
+        settings.paused = false;
+        settings.speed = self.lab.settings().speed;
+        self.lab.apply_settings(settings);
+        let cost = self.lab_cost();
+        self.experiment.start_plan(&self.ctx, plan, cost);
+        self.notice = Some(Notice::info(format!(
+            "This link reopened the experiment '{}': its runs start now, the same runs and \
+             numbers as when the link was made.",
+            self.experiment.design().map_or("", |d| d.name.as_str())
+        )));
+    }
+
+    /// The link that reopens the experiment in the *Experiment* window and runs
+    /// it again (`shoal.experiment_link()`); `None` if the window was never
+    /// opened.
+    pub fn experiment_link(&self) -> Option<String> {
+        let page = self.page_url.clone().unwrap_or_default();
+        self.experiment
+            .design()
+            .map(|design| crate::experiment::link::link(&page, design))
     }
 
     /// Opens `investigation` (its scene set up through the settings), then
@@ -275,6 +321,15 @@ impl ShoalApp {
                         ui.end_row();
                     }
                 });
+                if let Some(rate) = report.annealing_evaluations_per_sec {
+                    ui.label(format!("Learning lab: {rate:.1} annealing evaluations/s"));
+                }
+                if let Some(e) = &report.experiment {
+                    ui.label(format!(
+                        "Experiment {}: {:.3} runs/s ({} runs of {} steps, one thread)",
+                        e.name, e.runs_per_sec, e.runs, e.steps_per_run
+                    ));
+                }
             });
     }
 
@@ -707,15 +762,23 @@ impl eframe::App for ShoalApp {
             .map_or(0.0, |last| now_secs - last);
         self.last_frame_time_secs = Some(now_secs);
         self.lab.advance_frame(frame_secs, now_secs);
-        let experimenting = self.experiment.frame(now_secs);
-        let investigating = self.investigations.frame(&mut self.lab, now_secs);
+        // The runs in the background get their share of this frame: 15 ms, or
+        // half of the page's own work when that is slow anyway.
+        let budget =
+            crate::experiment::session::frame_budget_secs(frame_secs - self.background_secs);
+        let started = web_time::Instant::now();
+        let experimenting = self.experiment.frame(now_secs, budget);
+        let investigating = self.investigations.frame(&mut self.lab, now_secs, budget);
+        self.background_secs = started.elapsed().as_secs_f64();
         self.fps_meter.record(now_secs, 1);
         self.frames_drawn += 1;
 
         self.choose_screen_layout();
         let status = self.state_report();
         egui::Panel::bottom("status").show(ui, |ui| {
-            status_line_ui(ui, &status, self.caps);
+            let settings = self.lab.settings();
+            let hidden_count = settings.studio.count_is_mystery_for_student(settings.scene);
+            status_line_ui(ui, &status, self.caps, hidden_count);
         });
 
         // The scene's panel: refreshed from the simulation, then the panel under
@@ -803,6 +866,16 @@ impl eframe::App for ShoalApp {
                     watch = true;
                 }
                 crate::ui::ExperimentOutcome::Notice(notice) => self.notice = Some(notice),
+                crate::ui::ExperimentOutcome::CopyLink(design) => {
+                    let page = self.page_url.clone().unwrap_or_default();
+                    self.ctx
+                        .copy_text(crate::experiment::link::link(&page, &design));
+                    self.notice = Some(Notice::info(
+                        "Link copied: it opens Shoal on this experiment and runs it again, \
+                         with the same numbers."
+                            .to_owned(),
+                    ));
+                }
             }
         }
         let page_url = self.page_url.clone().unwrap_or_default();

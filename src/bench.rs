@@ -59,7 +59,28 @@ pub struct BenchReport {
     /// Learning lab: annealing evaluations (forward simulations of a 2.5 s
     /// swim, 45 body steps) per second, measured once all rows are done.
     pub annealing_evaluations_per_sec: Option<f64>,
+    /// Experiments: the first runs of `experiments/alignment-sweep.json`, one
+    /// after another on this thread, as fast as they go (no frame budget),
+    /// measured once all rows are done.
+    pub experiment: Option<ExperimentBench>,
 }
+
+/// Runs per second of an experiment on one thread, as `shoal-lab bench`
+/// measures them natively.
+#[derive(Clone, Debug, Serialize)]
+pub struct ExperimentBench {
+    pub name: String,
+    pub runs: usize,
+    pub steps_per_run: u64,
+    pub runs_per_sec: f64,
+    pub steps_per_sec: f64,
+}
+
+/// The experiment the benchmark times, and how many of its runs. Default: the
+/// alignment sweep's first 3 runs (200 fish, 3,600 steps each; about half a
+/// second each natively), enough to average over the start-up of a run.
+const EXPERIMENT_DESIGN: &str = include_str!("../experiments/alignment-sweep.json");
+const EXPERIMENT_RUNS: usize = 3;
 
 /// Drives the benchmark one frame at a time.
 pub struct Benchmark {
@@ -70,6 +91,9 @@ pub struct Benchmark {
     sim_steps_per_sec: f64,
     rows: Vec<BenchRow>,
     annealing_evaluations_per_sec: Option<f64>,
+    experiment: Option<ExperimentBench>,
+    /// Runs of the experiment to time ([`EXPERIMENT_RUNS`]; fewer in tests).
+    experiment_runs: usize,
 }
 
 impl Default for Benchmark {
@@ -88,6 +112,8 @@ impl Benchmark {
             sim_steps_per_sec: 0.0,
             rows: Vec::new(),
             annealing_evaluations_per_sec: None,
+            experiment: None,
+            experiment_runs: EXPERIMENT_RUNS,
         }
     }
 
@@ -100,6 +126,7 @@ impl Benchmark {
             done: self.is_done(),
             rows: self.rows.clone(),
             annealing_evaluations_per_sec: self.annealing_evaluations_per_sec,
+            experiment: self.experiment.clone(),
         }
     }
 
@@ -164,6 +191,17 @@ impl Benchmark {
                 let rate = measure_annealing_per_sec();
                 log::info!("bench: learning lab | {rate:>6.1} annealing evaluations/s");
                 self.annealing_evaluations_per_sec = Some(rate);
+                self.experiment = measure_experiment_runs_per_sec(self.experiment_runs);
+                if let Some(e) = &self.experiment {
+                    log::info!(
+                        "bench: experiment {} | {} runs of {} steps | {:>6.3} runs/s | {:>9.0} steps/s",
+                        e.name,
+                        e.runs,
+                        e.steps_per_run,
+                        e.runs_per_sec,
+                        e.steps_per_sec
+                    );
+                }
                 lab.apply_settings(Settings::default());
             }
         }
@@ -195,6 +233,30 @@ fn measure_annealing_per_sec() -> f64 {
     f64::from(n) / start.elapsed().as_secs_f64()
 }
 
+/// The first `runs` runs of the benchmark's experiment, one after another on
+/// this thread (`None` if its design were refused: a bug the tests catch).
+pub fn measure_experiment_runs_per_sec(runs: usize) -> Option<ExperimentBench> {
+    use crate::experiment::{Design, ExperimentRun};
+    let plan = Design::from_json(EXPERIMENT_DESIGN)
+        .and_then(|d| d.validate())
+        .map_err(|err| log::error!("bench experiment: {err}"))
+        .ok()?;
+    let mut specs = plan.runs();
+    specs.truncate(runs);
+    let start = Instant::now();
+    for spec in &specs {
+        ExperimentRun::new(&plan, spec).run_to_end();
+    }
+    let secs = start.elapsed().as_secs_f64().max(1e-9);
+    Some(ExperimentBench {
+        name: plan.design.name.clone(),
+        runs: specs.len(),
+        steps_per_run: plan.steps_per_run(),
+        runs_per_sec: specs.len() as f64 / secs,
+        steps_per_sec: (plan.steps_per_run() * specs.len() as u64) as f64 / secs,
+    })
+}
+
 /// Steps the lab as fast as it goes for about `SIM_PHASE_SECS`.
 fn measure_steps_per_sec(lab: &mut Lab) -> f64 {
     let start = Instant::now();
@@ -213,7 +275,10 @@ mod tests {
     #[test]
     fn visits_every_fish_count_and_restores_the_default() {
         let mut lab = Lab::new(Settings::default());
-        let mut bench = Benchmark::new();
+        let mut bench = Benchmark {
+            experiment_runs: 1,
+            ..Benchmark::new()
+        };
         let mut now = 0.0;
         while !bench.is_done() && now < 100.0 {
             bench.frame(&mut lab, now, Some(0.001));
@@ -236,5 +301,8 @@ mod tests {
                 .all(|r| r.sim_steps_per_sec > 0.0 && r.frame_ms > 0.0)
         );
         assert_eq!(lab.boids().unwrap().fish().len(), 200);
+        let e = report.experiment.expect("the experiment is timed");
+        assert_eq!((e.name.as_str(), e.runs), ("alignment-sweep", 1));
+        assert!(e.runs_per_sec > 0.0 && e.steps_per_sec > e.runs_per_sec);
     }
 }

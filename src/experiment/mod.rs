@@ -26,6 +26,7 @@
 
 pub mod csv;
 pub mod design;
+pub mod link;
 pub mod measure;
 pub mod runner;
 pub mod session;

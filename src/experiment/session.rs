@@ -17,6 +17,31 @@ use crate::experiment::{Experiment, ExperimentProgress, Plan, SummaryRow};
 /// a second) on a laptop.
 pub const FRAME_BUDGET_SECS: f64 = 0.015;
 
+/// Share of the page's own frame time (drawing, the tank, the UI) given to the
+/// runs when that is slower than [`FRAME_BUDGET_SECS`] / this share. Default
+/// 0.5: on a slow computer (or a software renderer) whose page already draws
+/// under 30 frames a second, the runs take half as long again as a frame
+/// (the page then draws at two thirds of its rate) instead of a sliver of it,
+/// so a class's experiment does not crawl; on a laptop with a GPU the runs
+/// keep their 15 ms.
+pub const SLOW_FRAME_SHARE: f64 = 0.5;
+
+/// Most wall seconds of a frame given to the runs, however slow the page.
+/// Default 0.25 s: the page still answers within a quarter of a second more.
+pub const MAX_FRAME_BUDGET_SECS: f64 = 0.25;
+
+/// This frame's slice for background runs, from the page's own time in the
+/// last frame (its interval less the runs' slice): [`FRAME_BUDGET_SECS`], or
+/// [`SLOW_FRAME_SHARE`] of a slow page's own time, at most
+/// [`MAX_FRAME_BUDGET_SECS`].
+pub fn frame_budget_secs(own_frame_secs: f64) -> f64 {
+    if own_frame_secs.is_finite() {
+        (own_frame_secs * SLOW_FRAME_SHARE).clamp(FRAME_BUDGET_SECS, MAX_FRAME_BUDGET_SECS)
+    } else {
+        FRAME_BUDGET_SECS
+    }
+}
+
 /// Most steps in one slice, whatever the measured cost (a guard against a cost
 /// measured as zero on a coarse clock).
 const MAX_STEPS_PER_SLICE: u64 = 100_000;

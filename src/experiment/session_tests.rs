@@ -151,3 +151,18 @@ fn the_browser_tests_experiment_gives_the_committed_csv() {
 fn the_browser_tests_physics_experiment_gives_the_committed_csv() {
     check_fixture("physics");
 }
+
+#[test]
+fn a_slow_page_gives_the_runs_half_its_own_frame_time_and_a_fast_one_15_ms() {
+    use crate::experiment::session::{FRAME_BUDGET_SECS, MAX_FRAME_BUDGET_SECS, frame_budget_secs};
+    // A laptop with a GPU (60 and 30 frames a second): the 15 ms slice.
+    assert_eq!(frame_budget_secs(1.0 / 60.0), FRAME_BUDGET_SECS);
+    assert_eq!(frame_budget_secs(0.0), FRAME_BUDGET_SECS);
+    assert!((frame_budget_secs(1.0 / 30.0) - 1.0 / 60.0).abs() < 1e-12);
+    // A software renderer at 4 frames a second: half its 250 ms.
+    assert!((frame_budget_secs(0.25) - 0.125).abs() < 1e-12);
+    // Never more than a quarter of a second, and nothing odd from a clock.
+    assert_eq!(frame_budget_secs(5.0), MAX_FRAME_BUDGET_SECS);
+    assert_eq!(frame_budget_secs(f64::NAN), FRAME_BUDGET_SECS);
+    assert_eq!(frame_budget_secs(-1.0), FRAME_BUDGET_SECS);
+}

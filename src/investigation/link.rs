@@ -6,6 +6,7 @@
 use serde_json::Value;
 
 use super::catalogue::{Investigation, find, known_ids};
+use crate::settings::share_link::{query_value, with_query, without_query};
 
 /// The query parameter (and `set()` key) that opens an investigation.
 pub const KEY: &str = "investigation";
@@ -29,37 +30,18 @@ fn lookup(id: &str) -> Result<&'static Investigation, LinkError> {
 /// The investigation a page address asks for (`?investigation=<id>`, before
 /// any `#`), if it asks for one.
 pub fn from_url(url: &str) -> Option<Result<&'static Investigation, LinkError>> {
-    let before_fragment = url.split('#').next().unwrap_or_default();
-    let (_, query) = before_fragment.split_once('?')?;
-    query.split('&').find_map(|part| {
-        let (key, value) = part.split_once('=').unwrap_or((part, ""));
-        (key == KEY).then(|| lookup(value.trim()))
-    })
+    query_value(url, KEY).map(lookup)
 }
 
 /// The address without its `investigation` parameter (and without a `?` left
 /// empty), so a share link names the investigation only when one is open.
 pub fn without_investigation(url: &str) -> String {
-    let (address, query) = match url.split_once('?') {
-        Some((a, q)) => (a, q),
-        None => return url.to_owned(),
-    };
-    let kept: Vec<&str> = query
-        .split('&')
-        .filter(|part| !part.is_empty() && part.split('=').next() != Some(KEY))
-        .collect();
-    if kept.is_empty() {
-        address.to_owned()
-    } else {
-        format!("{address}?{}", kept.join("&"))
-    }
+    without_query(url, KEY)
 }
 
 /// `url` with `?investigation=<id>` (replacing any it had).
 pub fn with_investigation(url: &str, id: &str) -> String {
-    let base = without_investigation(url);
-    let sep = if base.contains('?') { '&' } else { '?' };
-    format!("{base}{sep}{KEY}={id}")
+    with_query(url, KEY, id)
 }
 
 /// What a `set()` patch asks of the investigations.

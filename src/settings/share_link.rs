@@ -52,22 +52,28 @@ pub enum ShareLinkError {
 pub fn encode(settings: &Settings) -> String {
     // Serialising plain data to a String cannot fail; an empty object is a safe
     // fallback that decodes to the defaults.
-    let json = serde_json::to_string(settings).unwrap_or_else(|_| "{}".to_owned());
+    pack_json(&serde_json::to_string(settings).unwrap_or_else(|_| "{}".to_owned()))
+}
+
+/// `json` packed as a link's text: the version tag, then URL-safe base64 of its
+/// DEFLATE-compressed bytes (share links and experiment links).
+pub fn pack_json(json: &str) -> String {
     let packed = miniz_oxide::deflate::compress_to_vec(json.as_bytes(), COMPRESSION_LEVEL);
     format!("{PREFIX}{}", URL_SAFE_NO_PAD.encode(packed))
 }
 
-/// The settings a fragment (with or without the leading `#`) describes. An empty
-/// fragment gives `Ok(None)`: no link, use the defaults.
-pub fn decode(fragment: &str) -> Result<Option<Settings>, ShareLinkError> {
-    let fragment = fragment.trim().trim_start_matches('#');
-    if fragment.is_empty() {
+/// The JSON a link's text (with or without a leading `#`) packs, checked for
+/// size at every stage; `Ok(None)` for an empty text. Only unpacked: what the
+/// JSON asks for is the caller's to validate.
+pub fn unpack_json(text: &str) -> Result<Option<serde_json::Value>, ShareLinkError> {
+    let text = text.trim().trim_start_matches('#');
+    if text.is_empty() {
         return Ok(None);
     }
-    if fragment.len() > MAX_LINK_CHARS {
-        return Err(ShareLinkError::TooLong(fragment.len()));
+    if text.len() > MAX_LINK_CHARS {
+        return Err(ShareLinkError::TooLong(text.len()));
     }
-    let body = fragment
+    let body = text
         .strip_prefix(PREFIX)
         .ok_or(ShareLinkError::UnknownVersion)?;
     let packed = URL_SAFE_NO_PAD
@@ -75,11 +81,56 @@ pub fn decode(fragment: &str) -> Result<Option<Settings>, ShareLinkError> {
         .map_err(|_| ShareLinkError::NotBase64)?;
     let json = miniz_oxide::inflate::decompress_to_vec_with_limit(&packed, MAX_JSON_BYTES)
         .map_err(|_| ShareLinkError::NotDeflate)?;
-    let value: serde_json::Value =
-        serde_json::from_slice(&json).map_err(|_| ShareLinkError::NotJson)?;
+    serde_json::from_slice(&json)
+        .map(Some)
+        .map_err(|_| ShareLinkError::NotJson)
+}
+
+/// The settings a fragment (with or without the leading `#`) describes. An empty
+/// fragment gives `Ok(None)`: no link, use the defaults.
+pub fn decode(fragment: &str) -> Result<Option<Settings>, ShareLinkError> {
+    let Some(value) = unpack_json(fragment)? else {
+        return Ok(None);
+    };
     let mut settings = Settings::default();
     settings.apply_patch(&value)?;
     Ok(Some(settings))
+}
+
+/// The value of the query parameter `key` in a page address (`?key=value`,
+/// before any `#`), if it has one.
+pub fn query_value<'a>(url: &'a str, key: &str) -> Option<&'a str> {
+    let before_fragment = url.split('#').next().unwrap_or_default();
+    let (_, query) = before_fragment.split_once('?')?;
+    query.split('&').find_map(|part| {
+        let (k, value) = part.split_once('=').unwrap_or((part, ""));
+        (k == key).then(|| value.trim())
+    })
+}
+
+/// The address without its `key` parameter (and without a `?` left empty).
+pub fn without_query(url: &str, key: &str) -> String {
+    let (address, query) = match url.split_once('?') {
+        Some((a, q)) => (a, q),
+        None => return url.to_owned(),
+    };
+    let kept: Vec<&str> = query
+        .split('&')
+        .filter(|part| !part.is_empty() && part.split('=').next() != Some(key))
+        .collect();
+    if kept.is_empty() {
+        address.to_owned()
+    } else {
+        format!("{address}?{}", kept.join("&"))
+    }
+}
+
+/// `url` with `?key=value` (replacing any `key` it had). `value` must already be
+/// safe in a URL (an id, or packed link text).
+pub fn with_query(url: &str, key: &str, value: &str) -> String {
+    let base = without_query(url, key);
+    let sep = if base.contains('?') { '&' } else { '?' };
+    format!("{base}{sep}{key}={value}")
 }
 
 #[cfg(test)]

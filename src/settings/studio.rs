@@ -26,7 +26,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use super::range::SettingError;
-use super::{Settings, Side};
+use super::{Scene, Settings, Side};
 
 /// Longest question, in characters (default 1,000: a paragraph or two; the
 /// link, and the QR code drawn from it, stay small enough to scan).
@@ -283,11 +283,28 @@ impl Studio {
                 }
             }
         }
-        if mystery("left.fish_count".to_owned())
+        let scene = state
+            .get("scene")
+            .and_then(Value::as_str)
+            .and_then(|name| Scene::ALL.into_iter().find(|s| s.name() == name));
+        if scene.is_some_and(|scene| self.count_is_mystery_for_student(scene))
             && let Some(slot) = state.get_mut("fish_count")
         {
             *slot = masked();
         }
+    }
+
+    /// Would the number of fish in `scene` (the status line's "40 fish",
+    /// `state().fish_count`) give a mystery value away to a student: the count
+    /// of either tank, the physics tank's fish or sharks, the reef's prey?
+    pub fn count_is_mystery_for_student(&self, scene: Scene) -> bool {
+        let keys: &[&str] = match scene {
+            Scene::Aquarium | Scene::Boids => &["left.fish_count", "right.fish_count"],
+            Scene::Physics => &["physics.fish_count", "physics.sharks"],
+            Scene::Reef => &["reef.prey_count"],
+            Scene::Learning => &[],
+        };
+        keys.iter().any(|key| self.for_student(key).mystery)
     }
 
     /// Checks the question and every rule's key (the rest is checked by type).

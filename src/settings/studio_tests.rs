@@ -320,3 +320,41 @@ fn rules_merge_by_control_and_null_removes_one() {
         assert!(settings.studio.rule(key).locked);
     }
 }
+
+#[test]
+fn a_mystery_count_is_masked_in_its_own_scene_only() {
+    let lab_state = |settings: &Settings| {
+        let lab = crate::lab::Lab::new(settings.clone());
+        serde_json::to_value(crate::automation::StateReport::new(&lab, "webgl2", 0.0)).unwrap()
+    };
+    for (scene, key) in [
+        ("boids", "left.fish_count"),
+        ("aquarium", "left.fish_count"),
+        ("physics", "physics.fish_count"),
+        ("reef", "reef.prey_count"),
+    ] {
+        let mut teacher = Settings::default();
+        teacher
+            .apply_patch(&json!({"scene": scene, "studio": {"rules": {key: {"mystery": true}}}}))
+            .unwrap();
+        let pupil = student(teacher.clone());
+        let scene = pupil.scene;
+        assert!(pupil.studio.count_is_mystery_for_student(scene), "{key}");
+        assert!(
+            !teacher.studio.count_is_mystery_for_student(scene),
+            "the teacher sees the count"
+        );
+        let mut state = lab_state(&pupil);
+        assert!(state["fish_count"].is_number());
+        pupil.studio.mask_state_json(&mut state);
+        assert_eq!(state["fish_count"], MYSTERY, "{key}");
+        let mut shown = lab_state(&teacher);
+        teacher.studio.mask_state_json(&mut shown);
+        assert!(shown["fish_count"].is_number());
+    }
+    // The learning lab's swimmer count hides nothing; a mystery weight is not
+    // a count.
+    let pupil = student(lesson());
+    assert!(!pupil.studio.count_is_mystery_for_student(Scene::Boids));
+    assert!(!pupil.studio.count_is_mystery_for_student(Scene::Learning));
+}

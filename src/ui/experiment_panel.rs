@@ -21,7 +21,7 @@ use super::scene_panel::Notice;
 use crate::experiment::design::{
     Factor, MeasureChoice, Replicates, acting_section, factor_keys, is_switch, settings_value,
 };
-use crate::experiment::session::FRAME_BUDGET_SECS;
+use crate::experiment::session::{FRAME_BUDGET_SECS, frame_budget_secs};
 use crate::experiment::{
     Design, DesignError, ExperimentReport, ExperimentSession, Measure, Plan, RunSpec, Summary,
 };
@@ -36,7 +36,7 @@ const BROWSER_SLOWDOWN: f64 = if cfg!(target_arch = "wasm32") {
 };
 
 /// Frames a second assumed for the estimate's wall time (the experiment gets
-/// [`FRAME_BUDGET_SECS`] of each). Default 40: between the 60 of an idle page
+/// [`frame_budget_secs`] of each). Default 40: between the 60 of an idle page
 /// and the 30 the budget aims to keep.
 const ASSUMED_FPS: f64 = 40.0;
 
@@ -251,15 +251,16 @@ impl Sizing {
         self.secs_per_step * (self.runs as u64 * (self.warmup_steps + self.measure_steps)) as f64
     }
 
-    /// Wall seconds with [`FRAME_BUDGET_SECS`] of each frame at `fps` (the
-    /// frames drawn per second now, or [`ASSUMED_FPS`] when not known).
+    /// Wall seconds with the slice a frame at `fps` gets (the frames drawn
+    /// per second now, or [`ASSUMED_FPS`] when not known; see
+    /// [`frame_budget_secs`]).
     fn wall_secs(&self) -> f64 {
         let fps = if self.fps > 0.0 {
             self.fps
         } else {
             ASSUMED_FPS
         };
-        self.compute_secs() / (FRAME_BUDGET_SECS * fps).min(1.0)
+        self.compute_secs() / (frame_budget_secs(1.0 / fps) * fps).min(1.0)
     }
 }
 
@@ -269,6 +270,8 @@ pub enum ExperimentOutcome {
     /// Set the tank to these settings and restart it (watch one run).
     Watch(Box<Settings>),
     Notice(Notice),
+    /// Copy the link that reopens this design (*Copy link*).
+    CopyLink(Box<Design>),
 }
 
 /// The window, the form and the experiment under way (or finished).
@@ -296,12 +299,14 @@ pub fn duration_text(secs: f64) -> String {
 }
 
 impl ExperimentPanel {
-    /// Runs this frame's slice. True while runs remain (keep repainting).
-    pub fn frame(&mut self, now_secs: f64) -> bool {
+    /// Runs this frame's slice, about `budget_secs` of wall time
+    /// ([`crate::experiment::session::frame_budget_secs`]). True while runs
+    /// remain (keep repainting).
+    pub fn frame(&mut self, now_secs: f64, budget_secs: f64) -> bool {
         let Some(session) = &mut self.session else {
             return false;
         };
-        session.slice(FRAME_BUDGET_SECS, now_secs);
+        session.slice(budget_secs, now_secs);
         session.running()
     }
 
@@ -312,12 +317,25 @@ impl ExperimentPanel {
         design: &Design,
         cost: LabCost,
     ) -> Result<(), DesignError> {
-        let plan = design.validate()?;
+        self.start_plan(ctx, design.validate()?, cost);
+        Ok(())
+    }
+
+    /// Starts a validated `plan` (an experiment link's) and opens the window.
+    pub fn start_plan(&mut self, ctx: &egui::Context, plan: Plan, cost: LabCost) {
         let sizing = Sizing::of(&plan, cost);
         self.session = Some(ExperimentSession::new(plan, sizing.secs_per_step));
         set_open(ctx, true);
         ctx.request_repaint();
-        Ok(())
+    }
+
+    /// The design in the window: the experiment under way or shown, else the
+    /// form's as last checked (`None` before the window was opened).
+    pub fn design(&self) -> Option<&Design> {
+        match &self.session {
+            Some(session) => Some(&session.plan().design),
+            None => self.checked.as_ref().map(|c| &c.design),
+        }
     }
 
     /// Cancels the experiment under way, keeping its completed runs. False if
@@ -481,6 +499,7 @@ impl ExperimentPanel {
                     "run it with shoal-lab run, or keep it for next time",
                 ));
             }
+            copy_link_button(ui, &design, rects, out);
         });
     }
 
@@ -581,10 +600,28 @@ impl ExperimentPanel {
                 .on_hover_text("Put these results away and design another (download them first)");
             rects.insert("experiment_clear", clear_button.rect);
             clear = clear_button.clicked();
+            copy_link_button(ui, &plan.design, rects, out);
         });
         if clear {
             self.session = None;
         }
+    }
+}
+
+/// *Copy link*: the link that reopens `design` and runs it again.
+fn copy_link_button(
+    ui: &mut egui::Ui,
+    design: &Design,
+    rects: &mut WidgetRects,
+    out: &mut Vec<ExperimentOutcome>,
+) {
+    let r = ui.button("Copy link").on_hover_text(
+        "Copy a link that opens Shoal on this experiment and runs it again: the same runs, \
+         the same numbers",
+    );
+    rects.insert("experiment_link", r.rect);
+    if r.clicked() {
+        out.push(ExperimentOutcome::CopyLink(Box::new(design.clone())));
     }
 }
 
@@ -771,7 +808,8 @@ fn sizing_ui(
             ui.label("Time");
             ui.label(duration_text(sizing.wall_secs()))
                 .on_hover_text(format!(
-                    "{} of computing, done {:.0} ms a frame while the tank keeps swimming",
+                    "{} of computing, done {:.0} ms a frame while the tank keeps swimming \
+                     (more on a computer that draws under 30 frames a second)",
                     duration_text(sizing.compute_secs()),
                     FRAME_BUDGET_SECS * 1000.0
                 ));

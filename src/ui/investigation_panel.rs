@@ -23,10 +23,6 @@ use crate::investigation::{
 use crate::lab::Lab;
 use crate::settings::Settings;
 
-/// Wall seconds of a frame a measurement with its own work may take (the
-/// experiment engine's budget: the page keeps about 30 frames a second).
-const FRAME_BUDGET_SECS: f64 = crate::experiment::session::FRAME_BUDGET_SECS;
-
 /// Widest the window gets, points. Default 380: beside the tank on a laptop,
 /// and on a phone it is the screen's width less a margin.
 const WINDOW_WIDTH: f32 = 380.0;
@@ -149,12 +145,13 @@ impl InvestigationPanel {
         Ok(())
     }
 
-    /// This frame's part of the run. True while it goes on (keep repainting).
-    pub fn frame(&mut self, lab: &mut Lab, now_secs: f64) -> bool {
+    /// This frame's part of the run, about `budget_secs` of wall time where
+    /// the run computes on its own. True while it goes on (keep repainting).
+    pub fn frame(&mut self, lab: &mut Lab, now_secs: f64, budget_secs: f64) -> bool {
         let (Some(p), Some(m)) = (&mut self.current, &mut self.measurement) else {
             return false;
         };
-        if let Some(outcome) = m.advance(p, lab, FRAME_BUDGET_SECS, now_secs) {
+        if let Some(outcome) = m.advance(p, lab, budget_secs, now_secs) {
             p.finish_run(outcome);
             self.measurement = None;
             return false;

@@ -209,78 +209,106 @@ fn selected_fish_ui(
     rects: &mut WidgetRects,
     turn_asked: &mut Option<f32>,
 ) {
-    let follow = ui
-        .checkbox(&mut physics.follow, "Camera follows it")
-        .on_hover_text("Keep this fish in the middle of the view as it swims");
-    rects.insert("follow", follow.rect);
-    let hand = ui
-        .checkbox(&mut physics.hand_control, "Steer it by hand")
-        .on_hover_text(
-            "You give the orders: how fast its tail beats and when it turns. \
-             The other fish keep steering themselves",
-        );
-    rects.insert("hand_control", hand.rect);
+    control(ui, rects, "physics.follow", |ui, rects| {
+        let follow = ui
+            .checkbox(&mut physics.follow, "Camera follows it")
+            .on_hover_text("Keep this fish in the middle of the view as it swims");
+        rects.insert("follow", follow.rect);
+    });
+    control(ui, rects, "physics.hand_control", |ui, rects| {
+        let hand = ui
+            .checkbox(&mut physics.hand_control, "Steer it by hand")
+            .on_hover_text(
+                "You give the orders: how fast its tail beats and when it turns. \
+                 The other fish keep steering themselves",
+            );
+        rects.insert("hand_control", hand.rect);
+    });
     ui.add_enabled_ui(physics.hand_control, |ui| {
         egui::Grid::new("hand_grid")
             .num_columns(2)
             .spacing([8.0, 6.0])
             .show(ui, |ui| {
                 let help = "How hard the tail muscles beat: 0 rests, 1 is the fastest swimming";
-                ui.label("Swim").on_hover_text(help);
-                let speed = ui
-                    .add(
-                        egui::Slider::new(
-                            &mut physics.hand_speed,
-                            PhysicsSettings::HAND_SPEED.bounds(),
-                        )
-                        .max_decimals(2),
-                    )
-                    .on_hover_text(help);
-                rects.insert("hand_speed", speed.rect);
-                ui.end_row();
+                control_row(
+                    ui,
+                    rects,
+                    "physics.hand_speed",
+                    |ui| {
+                        ui.label("Swim").on_hover_text(help);
+                    },
+                    |ui, rects| {
+                        let speed = ui
+                            .add(
+                                egui::Slider::new(
+                                    &mut physics.hand_speed,
+                                    PhysicsSettings::HAND_SPEED.bounds(),
+                                )
+                                .max_decimals(2),
+                            )
+                            .on_hover_text(help);
+                        rects.insert("hand_speed", speed.rect);
+                    },
+                );
 
                 let help = "Tilt the side fins: up makes the fish climb, down makes it dive \
                             (only while it swims)";
-                ui.label("Fins").on_hover_text(help);
-                let pitch = ui
-                    .add(
-                        egui::Slider::new(
-                            &mut physics.hand_pitch_deg,
-                            PhysicsSettings::HAND_PITCH_DEG.bounds(),
-                        )
-                        .suffix("°")
-                        .max_decimals(0),
-                    )
-                    .on_hover_text(help);
-                rects.insert("hand_pitch", pitch.rect);
-                ui.end_row();
+                control_row(
+                    ui,
+                    rects,
+                    "physics.hand_pitch_deg",
+                    |ui| {
+                        ui.label("Fins").on_hover_text(help);
+                    },
+                    |ui, rects| {
+                        let pitch = ui
+                            .add(
+                                egui::Slider::new(
+                                    &mut physics.hand_pitch_deg,
+                                    PhysicsSettings::HAND_PITCH_DEG.bounds(),
+                                )
+                                .suffix("°")
+                                .max_decimals(0),
+                            )
+                            .on_hover_text(help);
+                        rects.insert("hand_pitch", pitch.rect);
+                    },
+                );
 
                 let help = "The turn the button asks for: positive to the fish's left, \
                             negative to its right. Turns above 90° are made of smaller ones";
-                ui.label("Turn").on_hover_text(help);
-                ui.horizontal(|ui| {
-                    let angle = ui
-                        .add(
-                            egui::DragValue::new(&mut physics.turn_angle_deg)
-                                .range(PhysicsSettings::TURN_ANGLE_DEG.bounds())
-                                .suffix("°")
-                                .speed(1.0),
-                        )
-                        .on_hover_text(help);
-                    rects.insert("turn_angle", angle.rect);
-                    let left = physics.turn_angle_deg >= 0.0;
-                    let turn = ui
-                        .button(if left { "Turn left" } else { "Turn right" })
-                        .on_hover_text(
-                            "Contract the muscles on one side quickly, then let them go \
-                             slowly: the fish bends and swims round",
-                        );
-                    rects.insert("turn", turn.rect);
-                    if turn.clicked() {
-                        *turn_asked = Some(physics.turn_angle_deg);
-                    }
-                });
-                ui.end_row();
+                control_row(
+                    ui,
+                    rects,
+                    "physics.turn_angle_deg",
+                    |ui| {
+                        ui.label("Turn").on_hover_text(help);
+                    },
+                    |ui, rects| {
+                        ui.horizontal(|ui| {
+                            let angle = ui
+                                .add(
+                                    egui::DragValue::new(&mut physics.turn_angle_deg)
+                                        .range(PhysicsSettings::TURN_ANGLE_DEG.bounds())
+                                        .suffix("°")
+                                        .speed(1.0),
+                                )
+                                .on_hover_text(help);
+                            rects.insert("turn_angle", angle.rect);
+                            let left = physics.turn_angle_deg >= 0.0;
+                            let turn = ui
+                                .button(if left { "Turn left" } else { "Turn right" })
+                                .on_hover_text(
+                                    "Contract the muscles on one side quickly, then let them \
+                                     go slowly: the fish bends and swims round",
+                                );
+                            rects.insert("turn", turn.rect);
+                            if turn.clicked() {
+                                *turn_asked = Some(physics.turn_angle_deg);
+                            }
+                        });
+                    },
+                );
             });
     });
 }
@@ -492,5 +520,70 @@ impl ScenePanel for PhysicsPanel {
             .physics
             .selected
             .filter(|_| settings.physics.follow)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::settings::studio::Studio;
+    use serde_json::json;
+
+    /// Draws the physics controls, fish 2 selected and steered by hand, under
+    /// `studio`, and returns the widgets drawn.
+    fn draw(studio: &Studio) -> WidgetRects {
+        let ctx = egui::Context::default();
+        let mut physics = PhysicsSettings {
+            selected: Some(2),
+            hand_control: true,
+            ..PhysicsSettings::default()
+        };
+        let mut rects = WidgetRects::new();
+        for frame in 0..2 {
+            rects.clear();
+            let input = egui::RawInput {
+                screen_rect: Some(egui::Rect::from_min_size(
+                    egui::Pos2::ZERO,
+                    egui::vec2(1280.0, 2000.0),
+                )),
+                time: Some(f64::from(frame) / 60.0),
+                ..Default::default()
+            };
+            let mut output = ctx.run_ui(input, |ui| {
+                super::super::studio_panel::begin_frame(ui.ctx(), studio);
+                egui::Panel::left("controls").show(ui, |ui| {
+                    physics_controls_ui(ui, &mut physics, &mut rects);
+                });
+            });
+            output.textures_delta.clear();
+        }
+        rects
+    }
+
+    #[test]
+    fn the_selected_fish_controls_follow_the_studio_rules() {
+        let free = draw(&Studio::default());
+        for name in ["follow", "hand_control", "hand_speed", "hand_pitch", "turn"] {
+            assert!(free.get(name).is_some(), "{name} drawn without rules");
+        }
+        let mut settings = Settings::default();
+        settings
+            .apply_patch(&json!({"studio": {"student_view": true, "rules": {
+                "physics.hand_pitch_deg": {"hidden": true},
+                "physics.hand_speed": {"mystery": true},
+                "physics.follow": {"locked": true},
+                "physics.turn_angle_deg": {"hidden": true}
+            }}}))
+            .unwrap();
+        let student = draw(&settings.studio);
+        assert!(student.get("hand_pitch").is_none(), "hidden");
+        assert!(student.get("turn").is_none(), "hidden with its row");
+        assert!(
+            student.get("hand_speed").is_none(),
+            "a mystery shows no slider"
+        );
+        assert!(student.get("mystery_physics.hand_speed").is_some());
+        assert!(student.get("locked_physics.follow").is_some(), "greyed");
+        assert!(student.get("hand_control").is_some(), "a free control");
     }
 }

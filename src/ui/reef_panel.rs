@@ -256,10 +256,12 @@ fn selection_ui(
     match reef.selected {
         Some(i) => {
             ui.horizontal(|ui| {
-                let r = ui
-                    .checkbox(&mut reef.follow, "Camera follows it")
-                    .on_hover_text("Keep the selected fish in the middle of the view");
-                rects.insert("reef_follow", r.rect);
+                control(ui, rects, "reef.follow", |ui, rects| {
+                    let r = ui
+                        .checkbox(&mut reef.follow, "Camera follows it")
+                        .on_hover_text("Keep the selected fish in the middle of the view");
+                    rects.insert("reef_follow", r.rect);
+                });
                 let r = ui.button("Deselect").on_hover_text("Let go of the fish");
                 rects.insert("reef_deselect", r.rect);
                 if r.clicked() {

@@ -5,8 +5,14 @@ use eframe::egui;
 use crate::automation::StateReport;
 use crate::render::RenderCaps;
 
-/// Draws the status line.
-pub fn status_line_ui(ui: &mut egui::Ui, state: &StateReport, caps: RenderCaps) {
+/// Draws the status line. `count_is_mystery`: a student must not read the
+/// number of fish (the teacher made it a mystery value).
+pub fn status_line_ui(
+    ui: &mut egui::Ui,
+    state: &StateReport,
+    caps: RenderCaps,
+    count_is_mystery: bool,
+) {
     ui.horizontal(|ui| {
         ui.label(format!("{:.0} FPS", state.fps))
             .on_hover_text("Pictures drawn per second");
@@ -28,7 +34,14 @@ pub fn status_line_ui(ui: &mut egui::Ui, state: &StateReport, caps: RenderCaps) 
         ui.label(format!("t = {:.1} s", state.time_secs))
             .on_hover_text("Simulated time since the start");
         ui.separator();
-        ui.label(format!("{} fish", state.fish_count));
+        if count_is_mystery {
+            ui.label("? fish").on_hover_text(
+                "Your teacher hid the number of fish: count them, or work it out from what \
+                 they do",
+            );
+        } else {
+            ui.label(format!("{} fish", state.fish_count));
+        }
         if state.paused {
             ui.separator();
             ui.label(egui::RichText::new("paused").strong());

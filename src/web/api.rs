@@ -15,7 +15,7 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 24] = [
+    let methods: [(&str, Box<Method>); 25] = [
         (
             "state",
             Box::new(|app, _| {
@@ -63,6 +63,10 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
         (
             "cancel_experiment",
             Box::new(|app, _| Ok(serde_json::Value::Bool(app.cancel_experiment()))),
+        ),
+        (
+            "experiment_link",
+            Box::new(|app, _| to_json(&app.experiment_link())),
         ),
         (
             "share_link",

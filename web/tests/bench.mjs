@@ -32,6 +32,10 @@ try {
       if (bench.annealing_evaluations_per_sec != null) {
         console.log(`  learning lab: ${bench.annealing_evaluations_per_sec.toFixed(1)} annealing evaluations/s`);
       }
+      if (bench.experiment) {
+        const e = bench.experiment;
+        console.log(`  experiment ${e.name}: ${e.runs} runs of ${e.steps_per_run} steps on one thread: ${e.runs_per_sec.toFixed(3)} runs/s, ${e.steps_per_sec.toFixed(0)} steps/s`);
+      }
     } finally {
       await browser.close();
     }

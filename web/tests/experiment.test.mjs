@@ -5,7 +5,8 @@
 // browser's CSV against the native engine's for the same design, byte for byte
 // (web/tests/fixtures/experiment-tiny.csv and experiment-physics.csv, written
 // and checked by the native tests experiment::session_tests); the physics
-// tank's Experiment button. WebGL2 (SwiftShader), then WebGPU.
+// tank's Experiment button; Copy link, whose link runs the experiment again
+// in a new page (and a damaged one, refused with a notice). WebGL2 (SwiftShader), then WebGPU.
 import { test, describe, before, after } from "node:test";
 import assert from "node:assert/strict";
 import fs from "node:fs";
@@ -187,6 +188,35 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       assert.equal(e.runs_done, 4);
       assert.equal(e.steps_done, e.steps_total);
       assert.equal(e.csv, result.csv);
+    });
+
+    test("Copy link: the experiment's link opens a page that runs it again, to the same CSV", async () => {
+      await clickInWindow(page, "experiment_link", () => (window.shoal.state().notice || "").includes("Link copied"));
+      const link = await page.evaluate(() => window.shoal.experiment_link());
+      assert.ok(link.startsWith(`${server.url}?experiment=v1.`), link);
+      const opened = await openShoal(browser, link, { width: 1280, height: 900 });
+      const other = opened.page;
+      await other.waitForFunction(() => window.shoal.state().experiment && !window.shoal.state().experiment.running, null, {
+        timeout: 300_000,
+        polling: 500,
+      });
+      const s = await other.evaluate(() => window.shoal.state());
+      assert.equal(s.scene, "boids", "the experiment's scene");
+      assert.ok(s.notice.includes("reopened the experiment 'tiny'"), s.notice);
+      assert.equal(s.experiment.csv, nativeCsv, "the same runs, the same numbers");
+      await waitForWidget(other, "experiment_results");
+      if (tier === "webgl2") saveArtifact("experiment-link.png", await other.screenshot());
+      assert.deepEqual(opened.errors, []);
+      await other.close();
+
+      // Cut off when copied: a notice says so, and the rest of the page works.
+      const cut = link.slice(0, Math.floor(link.length * 0.6));
+      const damaged = await openShoal(browser, cut, { width: 1280, height: 900 });
+      const d = await damaged.page.evaluate(() => window.shoal.state());
+      assert.ok(d.notice && d.notice.includes("could not open its experiment") && d.notice.includes("damaged"), d.notice);
+      assert.equal(d.experiment, undefined, "nothing runs");
+      await damaged.page.evaluate(() => window.shoal.step(5));
+      await damaged.page.close();
     });
 
     test("the results: a plot per measure, the table, and watching one run", async () => {

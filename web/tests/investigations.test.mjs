@@ -3,9 +3,10 @@
 // intro, a prediction that must be committed before Run works and is then
 // locked, the run made short with the Speed slider, the measured catches beside
 // the prediction, three explanations typed in, the reveal, the sandbox open
-// afterwards, the record downloaded); the other four opened by link, each
-// setting up its scene and refusing Run before a prediction; an unknown id in a
-// link; the window on a phone. WebGL2 (SwiftShader), then WebGPU.
+// afterwards, the record downloaded); the other four from their links to the
+// reveal, each setting up its scene, refusing Run before a prediction, running
+// its measurement and showing what it measured; an unknown id in a link; the
+// window on a phone. WebGL2 (SwiftShader), then WebGPU.
 import { test, describe, before, after } from "node:test";
 import assert from "node:assert/strict";
 import fs from "node:fs";
@@ -65,6 +66,50 @@ async function clickInWindow(page, name, predicate, arg) {
     }
   }
   throw new Error(`clicking ${name} in the window had no effect`);
+}
+
+/** What each investigation's result must show, from its own measurement. */
+async function checkResult(id, result) {
+  const values = result.rows.map((r) => r.value);
+  if (id === "leader") {
+    const [on, off] = values;
+    assert.ok(on > off, `alignment on orders the school more: ${on} vs ${off}`);
+    assert.ok(result.rows.slice(2).every((r) => r.unit === "fish" && r.value <= 7), "each clicked fish heeded a few");
+  } else if (id === "which-urge") {
+    assert.ok(values.every((v) => v >= 0 && v <= 1), "polarizations");
+    assert.ok(values.at(-1) > values[0] + 0.2, `order rises with alignment: ${values}`);
+  } else if (id === "how-swim") {
+    assert.equal(values.length, 7, "seven tail beats");
+    assert.ok(values[4] > values[0] * 2, `faster beats swim faster: ${values}`);
+  } else if (id === "learning") {
+    assert.equal(values.length, 6, "six copies raced");
+    assert.ok(values.at(-1) > values[0], `the 6840-try copy beats the 90-try one: ${values}`);
+  }
+}
+
+/** *Is there a leader?*: click a fish to see what it heeds, let the school
+ * swim with alignment on, then turn it off with the window's button. */
+async function leaderRun(page, tier) {
+  await waitForWidget(page, "animal_5");
+  await clickUntil(page, "animal_5", () => window.shoal.settings().left.selected != null);
+  await shot(page, tier, "leader-attention");
+  const start = await page.evaluate(() => window.shoal.state().time_secs);
+  await page.waitForFunction((t) => window.shoal.state().time_secs > t + 16, start, { timeout: 300_000, polling: 500 });
+  await clickInWindow(page, "investigation_alignment_off", () => window.shoal.settings().left.alignment === 0);
+}
+
+/** *Learning to swim*: Run starts the practice, a little every frame; the
+ * test lets it practise, then fast-forwards the rest of the 6,840 tries with
+ * shoal.train (the same annealing steps the frames would run, each from the
+ * same state), so the race starts. */
+async function learningRun(page) {
+  await page.waitForFunction(() => window.shoal.state().learning.evaluations > 0, null, { timeout: 120_000 });
+  for (let k = 0; k < 10; k++) {
+    const l = await page.evaluate(() => window.shoal.state().learning);
+    if (l.drill !== 0) break;
+    await page.evaluate(() => window.shoal.train(1000));
+  }
+  assert.notEqual((await page.evaluate(() => window.shoal.state().learning)).drill, 0, "the first drill learned");
 }
 
 for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
@@ -210,30 +255,76 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       await page.close();
     });
 
-    for (const [id, scene] of [
-      ["leader", "boids"],
-      ["which-urge", "boids"],
-      ["how-swim", "physics"],
-      ["learning", "learning"],
-    ]) {
-      test(`?investigation=${id} sets up the ${scene} scene and refuses Run before a prediction`, async () => {
-        const { page, errors } = await openShoal(browser, `${server.url}?investigation=${id}`, {
+    // The other four, each from its link to the reveal with real clicks: the
+    // prediction committed (Run refused before), the run, what the student does
+    // during it (click fish and turn alignment off; watch; practise), the
+    // result beside the prediction, the explanations typed, the reveal.
+    const walks = [
+      { id: "leader", scene: "boids", choice: 1, prompts: 3, during: leaderRun },
+      { id: "which-urge", scene: "boids", choice: 0, prompts: 3 },
+      { id: "how-swim", scene: "physics", choice: 0, prompts: 3 },
+      { id: "learning", scene: "learning", choice: 0, prompts: 2, during: learningRun },
+    ];
+    for (const walk of walks) {
+      test(`?investigation=${walk.id}: from the link to the reveal with real clicks`, async () => {
+        const { page, errors } = await openShoal(browser, `${server.url}?investigation=${walk.id}`, {
           width: 1366,
           height: 900,
         });
-        await page.waitForFunction((x) => window.shoal.state().investigation?.id === x, id);
-        assert.equal((await settings(page)).scene, scene);
+        await page.waitForFunction((x) => window.shoal.state().investigation?.id === x, walk.id);
+        assert.equal((await settings(page)).scene, walk.scene);
         await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "predict");
+        // Run refuses before a prediction.
         await scrollWindowTo(page, "investigation_run");
         await clickWidget(page, "investigation_run");
         await waitFrames(page, 3);
-        const i = await inv(page);
+        let i = await inv(page);
         assert.equal(i.step, "predict");
         assert.equal(i.prediction, null);
         assert.equal(i.running, false);
-        await clickInWindow(page, "investigation_choice_0", () => window.shoal.state().investigation.chosen === 0);
-        await shot(page, tier, `link-${id}`);
-        assert.ok((await page.evaluate(() => window.shoal.share_link())).includes(`?investigation=${id}#v1.`));
+        await clickInWindow(page, `investigation_choice_${walk.choice}`, (k) => window.shoal.state().investigation.chosen === k, walk.choice);
+        await shot(page, tier, `${walk.id}-1-predict`);
+        assert.ok((await page.evaluate(() => window.shoal.share_link())).includes(`?investigation=${walk.id}#v1.`));
+        await clickInWindow(page, "investigation_commit", () => window.shoal.state().investigation.step === "run");
+        await clickInWindow(page, "investigation_run", () => window.shoal.state().investigation.running);
+        const started = Date.now();
+        if (walk.during) await walk.during(page, tier);
+        await page.waitForFunction(() => window.shoal.state().investigation.result, null, {
+          timeout: 900_000,
+          polling: 1000,
+        });
+        i = await inv(page);
+        console.log(`${walk.id} (${tier}): run in ${((Date.now() - started) / 1000).toFixed(0)} s: ${i.result.summary}`);
+        assert.equal(i.prediction.choice, walk.choice, "the prediction stays locked");
+        assert.ok(i.result.rows.length >= 2 && i.result.rows.every((r) => Number.isFinite(r.value)), JSON.stringify(i.result.rows));
+        assert.ok(i.result.verdict.length > 0);
+        await checkResult(walk.id, i.result);
+        await waitForWidget(page, "investigation_result");
+        await shot(page, tier, `${walk.id}-2-result`);
+
+        await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "explain");
+        for (let k = 0; k < walk.prompts; k++) {
+          const answer = `Answer ${k + 1} for ${walk.id}`;
+          await scrollWindowTo(page, "investigation_answer");
+          await clickWidget(page, "investigation_answer");
+          await page.keyboard.type(answer, { delay: 10 });
+          await page.waitForFunction((a) => window.shoal.state().investigation.explanations.includes(a), answer);
+          await clickUntil(
+            page,
+            "investigation_next",
+            (n) => {
+              const now = window.shoal.state().investigation;
+              return now.step === "reveal" || now.prompt === n;
+            },
+            k + 1,
+          );
+        }
+        await page.waitForFunction(() => window.shoal.state().investigation.step === "reveal");
+        await waitForWidget(page, "investigation_reveal");
+        await shot(page, tier, `${walk.id}-3-reveal`);
+        const record = await page.evaluate(() => window.shoal.investigation_record());
+        assert.ok(record.html.includes(`Answer ${walk.prompts} for ${walk.id}`), "the answers in the record");
+        assert.ok(record.csv.split("\n").some((line) => line.startsWith(`${walk.id},`)), record.csv);
         assert.deepEqual(errors, []);
         await page.close();
       });
