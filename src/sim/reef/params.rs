@@ -66,8 +66,8 @@ pub struct ReefParams {
     /// behind it is further in time than food two metres ahead. *Feeding*, six
     /// ravenous fish, seeds 1–8, 60 s: 142 plankton with 0, 145 with 0.3, 165
     /// with 0.5, 174 with 1 (point masses 342); ranking by distance, the fish
-    /// spent a third of their chases with the food 90° or more off their heading
-    /// (`feeding_time_budget`). With 1, a school of muscle prey in the default
+    /// spent a third of their chases with the food 90° or more off their heading,
+    /// with 0.5 a fifth, with 1 a twentieth (`feeding_time_budget`). With 1, a school of muscle prey in the default
     /// reef lined up on the one particle ahead of them all and jammed there
     /// (seeds 1–8, 1 minute: 136 collision starts, 107 with 0, 118 with 0.5).
     /// The point-mass body turns on the spot and ranks by distance.
