@@ -911,3 +911,144 @@ mod agility {
         }
     }
 }
+
+/// How the held bend's turning circle depends on the tail beat and the fins,
+/// for issue 13 (can a fish that slows down or brakes turn tighter?): a
+/// 0.5 m fish swims straight at 0.7 of its top speed for 4 s, then holds the
+/// full bend (steer 1) with a swim-MC setting and fins for 8 s. Prints its
+/// speed, heading rate and path radius over the last 6 s. `cargo test
+/// --release --lib held_bend_radius_census -- --ignored --nocapture`.
+#[cfg(test)]
+mod bend_census {
+    use crate::sim::body::motor_bridge::level_turn_deg;
+    use crate::sim::body::physical_fish::*;
+    use std::f32::consts::PI;
+
+    fn held_bend(speed_fraction: f32, fins: PectoralFins) -> (f32, f32, f32) {
+        let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+        let dt = fish.body().dt_secs();
+        let cruise = MotorIntent {
+            speed_fraction: 0.7,
+            start_turn_deg: None,
+            steer: 0.0,
+            fins: PectoralFins::NEUTRAL,
+        };
+        for _ in 0..(4.0 / dt) as usize {
+            fish.step(&cruise, Vec3::ZERO);
+        }
+        let bend = MotorIntent {
+            speed_fraction,
+            steer: 1.0,
+            fins,
+            ..cruise
+        };
+        for _ in 0..(2.0 / dt) as usize {
+            fish.step(&bend, Vec3::ZERO);
+        }
+        let (mut path, mut turned, mut prev) = (0.0f32, 0.0f32, fish.heading());
+        let steps = (6.0 / dt) as usize;
+        for _ in 0..steps {
+            let last = fish.point.position_m;
+            fish.step(&bend, Vec3::ZERO);
+            path += fish.point.position_m.distance(last);
+            turned += level_turn_deg(prev, fish.heading());
+            prev = fish.heading();
+        }
+        let secs = steps as f32 * dt;
+        (
+            path / secs,
+            turned / secs,
+            path / turned.to_radians().abs().max(1e-3) / 0.5,
+        )
+    }
+
+    /// From a lead-in at `lead_fraction` of the top speed, a full bend with the
+    /// swim-MC at `speed_fraction` and `fins`: seconds to turn 90° and 180°, and
+    /// how far from where the bend began the fish is when it has turned 180°
+    /// (the loop's width), body lengths.
+    fn about_turn(lead_fraction: f32, speed_fraction: f32, fins: PectoralFins) -> (f32, f32, f32) {
+        let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+        let dt = fish.body().dt_secs();
+        let lead = MotorIntent {
+            speed_fraction: lead_fraction,
+            start_turn_deg: None,
+            steer: 0.0,
+            fins: PectoralFins::NEUTRAL,
+        };
+        for _ in 0..(6.0 / dt) as usize {
+            fish.step(&lead, Vec3::ZERO);
+        }
+        let bend = MotorIntent {
+            speed_fraction,
+            steer: 1.0,
+            fins,
+            ..lead
+        };
+        let (start, from) = (fish.heading(), fish.point.position_m);
+        let (mut turned, mut prev, mut t90) = (0.0f32, start, None);
+        for step in 0..(30.0 / dt) as usize {
+            fish.step(&bend, Vec3::ZERO);
+            turned += level_turn_deg(prev, fish.heading());
+            prev = fish.heading();
+            if t90.is_none() && turned.abs() >= 90.0 {
+                t90 = Some((step + 1) as f32 * dt);
+            }
+            if turned.abs() >= 180.0 {
+                return (
+                    t90.unwrap_or(0.0),
+                    (step + 1) as f32 * dt,
+                    fish.point.position_m.distance(from) / 0.5,
+                );
+            }
+        }
+        (t90.unwrap_or(f32::NAN), f32::NAN, f32::NAN)
+    }
+
+    #[test]
+    #[ignore]
+    fn about_turn_census() {
+        let inner_brake = PectoralFins {
+            left_angle_rad: PI,
+            ..PectoralFins::NEUTRAL
+        };
+        for (name, fins) in [
+            ("neutral", PectoralFins::NEUTRAL),
+            ("inner brake", inner_brake),
+        ] {
+            for lead in [0.7, 0.4, 0.2, 0.0] {
+                for speed in [1.0, 0.7, 0.4] {
+                    let (t90, t180, width) = about_turn(lead, speed, fins);
+                    println!(
+                        "{name:12} from {lead:3.1}, swim {speed:3.1}: 90° in {t90:4.1} s, 180° in {t180:4.1} s, loop {width:4.2} BL"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    #[ignore]
+    fn held_bend_radius_census() {
+        let inner_brake = PectoralFins {
+            left_angle_rad: PI,
+            ..PectoralFins::NEUTRAL
+        };
+        let outer_brake = PectoralFins {
+            right_angle_rad: PI,
+            ..PectoralFins::NEUTRAL
+        };
+        for (name, fins) in [
+            ("neutral", PectoralFins::NEUTRAL),
+            ("both brake", PectoralFins::BRAKE),
+            ("inner brake", inner_brake),
+            ("outer brake", outer_brake),
+        ] {
+            for speed in [1.0, 0.7, 0.5, 0.3, 0.15, 0.0] {
+                let (v, rate, radius) = held_bend(speed, fins);
+                println!(
+                    "{name:12} swim {speed:4.2}: speed {v:5.3} m/s, {rate:6.1}°/s, radius {radius:5.2} BL"
+                );
+            }
+        }
+    }
+}

@@ -85,6 +85,39 @@ pub fn chase(
     offset.normalize_or(me.heading) * speed
 }
 
+/// Length of the shortest level path to `offset_m` (the target's offset from
+/// the mouth, tank frame; its height is ignored) for a body heading along
+/// `heading` that turns in circles of radius `turn_radius_m`: an arc of one of
+/// its two turning circles, then the tangent straight to the target (Dubins
+/// 1957, for a point goal). A target inside the circle on its side is reached
+/// by the circle on the other side (an upper bound of the shortest path).
+/// With no turning circle, the straight distance.
+pub fn level_reach_m(heading: Vec3, offset_m: Vec3, turn_radius_m: f32) -> f32 {
+    let level = Vec3::new(offset_m.x, 0.0, offset_m.z);
+    let forward = Vec3::new(heading.x, 0.0, heading.z).normalize_or_zero();
+    if turn_radius_m <= 0.0 || forward == Vec3::ZERO {
+        return level.length();
+    }
+    let r = turn_radius_m;
+    let x = level.dot(forward);
+    let y = level.dot(Vec3::Y.cross(forward));
+    // Turning left (to the side of a target at `lateral` > 0; the right turn is
+    // the mirror image): the circle's centre is at (0, r) in the fish's level
+    // frame (x forward, y left). The tangent point is where the heading, turned
+    // by `arc`, points along the straight to the target.
+    let path = |lateral: f32| {
+        let (dx, dy) = (x, lateral - r);
+        let dc2 = dx * dx + dy * dy;
+        if dc2 < r * r {
+            return f32::INFINITY;
+        }
+        let t = (dc2 - r * r).sqrt();
+        let arc = (fmath::atan2(dy, dx) + fmath::atan2(r, t)).rem_euclid(std::f32::consts::TAU);
+        r * arc + t
+    };
+    path(y).min(path(-y))
+}
+
 /// avoiding-static-obstacle / avoiding-fish: turn away from `obstacle_m`
 /// (the nearest point of the obstacle), towards the side it is not on. A calm
 /// fish slows down to turn tightly; a frightened one (`fear` in [0, 1]) keeps
@@ -621,6 +654,52 @@ mod tests {
         );
         assert!(turn.normalize_or_zero().dot(-Vec3::Z) > 0.9, "{turn}");
         assert!(slow.length() < 0.2);
+    }
+
+    #[test]
+    fn the_reach_path_goes_round_the_turning_circle() {
+        let r = 0.6;
+        // Straight ahead: the distance.
+        assert!((level_reach_m(Vec3::X, Vec3::new(2.0, 0.3, 0.0), r) - 2.0).abs() < 1e-4);
+        // No turning circle: the level distance, wherever the target is.
+        assert!((level_reach_m(Vec3::X, Vec3::new(-1.0, 5.0, 0.0), 0.0) - 1.0).abs() < 1e-5);
+        // A quarter circle to the left (−z with y up) ends at (r, r): the arc.
+        let quarter = level_reach_m(Vec3::X, Vec3::new(r, 0.0, -r), r);
+        assert!(
+            (quarter - r * std::f32::consts::FRAC_PI_2).abs() < 1e-3,
+            "{quarter}"
+        );
+        // Left and right alike.
+        let right = level_reach_m(Vec3::X, Vec3::new(r, 0.0, r), r);
+        assert!((quarter - right).abs() < 1e-4);
+        // One metre behind is further than two metres ahead: more than half
+        // a circle, then the metre back.
+        let behind = level_reach_m(Vec3::X, Vec3::new(-1.0, 0.0, 0.0), r);
+        assert!(
+            behind > r * std::f32::consts::PI + 1.0 && behind > 2.0,
+            "{behind}"
+        );
+        // Beside the mouth, inside the left circle: round the right one, further
+        // than the same point outside the circle a body length on.
+        let inside = level_reach_m(Vec3::X, Vec3::new(0.1, 0.0, -0.4), r);
+        assert!(
+            inside > level_reach_m(Vec3::X, Vec3::new(0.1, 0.0, -1.4), r),
+            "{inside}"
+        );
+        // Never less than the straight distance, never NaN.
+        for (x, z) in [
+            (0.3, 0.2),
+            (-0.2, -0.7),
+            (1.5, -1.5),
+            (-3.0, 0.01),
+            (0.0, 0.0),
+        ] {
+            let p = level_reach_m(Vec3::X, Vec3::new(x, 0.0, z), r);
+            assert!(
+                p.is_finite() && p >= Vec3::new(x, 0.0, z).length() - 1e-4,
+                "{x} {z}: {p}"
+            );
+        }
     }
 
     #[test]

@@ -584,15 +584,24 @@ impl ReefWorld {
             }
         }
         // Food (prey and pacifists): the nearest few seen particles, by the
-        // effort of reaching them (see `ReefParams::climb_effort_muscle_body`).
+        // effort of reaching them (see `ReefParams::climb_effort_muscle_body`
+        // and `ReefParams::turning_path_weight`).
         if habits.kind != FishKind::Predator {
             let climb_effort = match self.animals[i].body {
                 ReefBody::Physical(_) => self.params.climb_effort_muscle_body,
                 ReefBody::Point(_) => 1.0,
             };
+            // The muscle body's level path goes round its turning circle.
+            let turn_radius_m = match self.animals[i].body {
+                ReefBody::Physical(_) => self.params.body_turn_radius_body_lengths * me.length_m,
+                ReefBody::Point(_) => 0.0,
+            };
+            let path_weight = self.params.turning_path_weight;
             let effort = |p: Vec3| {
                 let o = p - me.head_m;
-                fmath::hypot(Vec3::new(o.x, 0.0, o.z).length(), climb_effort * o.y)
+                let d = Vec3::new(o.x, 0.0, o.z).length();
+                let path = crate::sim::reef::behaviour::level_reach_m(me.heading, o, turn_radius_m);
+                fmath::hypot(d + path_weight * (path - d), climb_effort * o.y)
             };
             let mut food: Vec<(u32, f32, f32)> = self
                 .food
