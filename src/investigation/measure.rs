@@ -25,11 +25,20 @@ use crate::sim::body::{FishBody, PectoralFins};
 
 /// A run under way.
 pub enum Measurement {
-    Catches { secs: f64 },
+    Catches {
+        secs: f64,
+    },
     Alignment(Box<AlignmentRun>),
     Sweep(Box<ExperimentSession>),
     TailBeat(Box<TailBeatRun>),
-    Learning { secs: f64, raced: bool },
+    Learning {
+        secs: f64,
+        raced: bool,
+        /// The race's time and distances, measured on a copy of it run from its
+        /// start to `secs` (to the nearest step): the same numbers however
+        /// many steps the frames give the race the student watches.
+        measured: Option<(f32, Vec<f32>)>,
+    },
 }
 
 /// *Is there a leader?*: polarization with alignment on and off, and the fish
@@ -103,7 +112,11 @@ impl Measurement {
                 s.paused = false;
                 s.learning.training = true;
                 lab.apply_settings(s);
-                Self::Learning { secs, raced: false }
+                Self::Learning {
+                    secs,
+                    raced: false,
+                    measured: None,
+                }
             }
         })
     }
@@ -126,7 +139,11 @@ impl Measurement {
                 (!session.running()).then(|| sweep_outcome(session, progress, choice))
             }
             Self::TailBeat(run) => run.advance(budget_secs, progress, choice),
-            Self::Learning { secs, raced } => learning_advance(lab, *secs, raced, progress, choice),
+            Self::Learning {
+                secs,
+                raced,
+                measured,
+            } => learning_advance(lab, *secs, raced, measured, progress, choice),
         };
         if outcome.is_some() && matches!(self, Self::Catches { .. }) {
             let mut s = lab.settings().clone();
@@ -168,7 +185,7 @@ impl Measurement {
                     ),
                 )
             }
-            Self::Learning { secs, raced } => {
+            Self::Learning { secs, raced, .. } => {
                 let Some(l) = lab.runs()[0].learning() else {
                     return (0.0, "open the learning lab".into());
                 };
@@ -305,15 +322,12 @@ impl AlignmentRun {
         let n = self.needed();
         let on = self.on.len().min(n);
         let off = self.off.len().min(n);
-        let fish = if self.inspected.is_empty() {
-            "no fish clicked yet".to_owned()
-        } else {
-            format!("{} fish clicked", self.inspected.len())
-        };
+        // Short enough for the progress bar of a narrow window; the fish
+        // clicked are named on the line under it.
         (
             (on + off) as f32 / (2 * n) as f32,
             format!(
-                "measured with alignment on {:.0} of {:.0} s, off {:.0} of {:.0} s; {fish}",
+                "alignment on {:.0}/{:.0} s, off {:.0}/{:.0} s",
                 on as f64 / 4.0,
                 self.secs,
                 off as f64 / 4.0,
@@ -603,6 +617,7 @@ fn learning_advance(
     lab: &mut Lab,
     secs: f64,
     raced: &mut bool,
+    measured: &mut Option<(f32, Vec<f32>)>,
     progress: &Progress,
     choice: usize,
 ) -> Option<Outcome> {
@@ -613,13 +628,18 @@ fn learning_advance(
         }
         l.start_race().ok()?;
         *raced = true;
+        let mut copy = lab.runs()[0].learning()?.race()?.clone();
+        copy.run(secs as f32);
+        *measured = Some((copy.time_secs(), copy.distances_m()));
         return None;
     }
+    // The student watches the race reach the measured time.
     let race = lab.runs()[0].learning()?.race()?;
     if f64::from(race.time_secs()) + 1e-6 < secs {
         return None;
     }
-    let distances: Vec<f64> = race.distances_m().into_iter().map(f64::from).collect();
+    let (time_secs, distances) = measured.as_ref()?;
+    let distances: Vec<f64> = distances.iter().copied().map(f64::from).collect();
     let steps: Vec<u64> = race.entrants().map(|e| e.annealing_steps).collect();
     let (&last, others) = distances.split_last()?;
     let best_other = others.iter().copied().fold(f64::NEG_INFINITY, f64::max);
@@ -634,7 +654,7 @@ fn learning_advance(
     let numbers = format!(
         "After {:.1} s the copy that practised {} tries swam {last:.2} m; the best of the \
          others {best_other:.2} m ({:+.1} %). The copy with {} tries swam {:.2} m.",
-        race.time_secs(),
+        time_secs,
         steps.last().copied().unwrap_or(0),
         100.0 * margin,
         steps.first().copied().unwrap_or(0),

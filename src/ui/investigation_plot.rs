@@ -71,6 +71,16 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
                 .allow_drag(false)
                 .allow_zoom(false)
                 .allow_scroll(false)
+                // A mark under every bar, so each one is named.
+                .x_grid_spacer(|input| {
+                    let (low, high) = input.bounds;
+                    (low.ceil().max(0.0) as usize..=high.floor().max(0.0) as usize)
+                        .map(|k| egui_plot::GridMark {
+                            value: k as f64,
+                            step_size: 1.0,
+                        })
+                        .collect()
+                })
                 .x_axis_formatter(move |mark, _| {
                     let k = mark.value.round();
                     if (mark.value - k).abs() < 1e-6 && k >= 0.0 {
@@ -132,9 +142,10 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
 
 /// The end of a long label, to sit under a bar.
 fn short_label(label: &str) -> String {
-    label
-        .rsplit_once(", ")
-        .map_or(label, |(_, tail)| tail)
+    let tail = label.rsplit_once(", ").map_or(label, |(_, tail)| tail);
+    // "distance after 6840 tries": the number is what tells the bars apart.
+    tail.strip_prefix("distance after ")
+        .unwrap_or(tail)
         .to_owned()
 }
 

@@ -122,6 +122,9 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
     });
 
     test("Start runs the window's design while the tank keeps drawing; Cancel keeps the finished runs", async () => {
+      // A school big enough that the nine runs last a while on a slow page too
+      // (where they get half of each slow frame): there is something to cancel.
+      await page.evaluate(() => window.shoal.set({ left: { fish_count: 400 } }));
       await clickInWindow(page, "experiment_start", () => !!window.shoal.state().experiment);
       const samples = [];
       const started = Date.now();
@@ -155,6 +158,7 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       assert.ok(e.csv.includes(`# completed: ${e.runs_done} of ${e.runs_total} runs`), "the CSV says it is partial");
       assert.ok(e.summary.length >= 1, "the completed runs are summarised");
       await waitForWidget(page, "experiment_results");
+      await page.evaluate(() => window.shoal.set({ left: { fish_count: 40 } }));
     });
 
     test("shoal.run_experiment gives the summary and the native engine's CSV", async () => {
