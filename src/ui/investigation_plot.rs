@@ -64,6 +64,23 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
                 })
                 .collect();
             let labels: Vec<String> = outcome.rows.iter().map(|r| r.label.clone()).collect();
+            // The race's bars are named by their tries alone (see `short_label`).
+            let x_title = if labels.iter().all(|l| l.starts_with("distance after ")) {
+                "tries practised"
+            } else {
+                ""
+            };
+            let names = move |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
+                let k = mark.value.round();
+                if (mark.value - k).abs() < 1e-6 && k >= 0.0 {
+                    labels
+                        .get(k as usize)
+                        .map(|l| short_label(l))
+                        .unwrap_or_default()
+                } else {
+                    String::new()
+                }
+            };
             Plot::new("investigation_bars")
                 .height(PLOT_HEIGHT)
                 .y_axis_label(*unit)
@@ -71,7 +88,9 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
                 .allow_drag(false)
                 .allow_zoom(false)
                 .allow_scroll(false)
-                // A mark under every bar, so each one is named.
+                // A mark under every bar, so each one is named, and the names
+                // shown from 24 points apart (six bars in the window's width;
+                // egui_plot's default hides x labels closer than 60).
                 .x_grid_spacer(|input| {
                     let (low, high) = input.bounds;
                     (low.ceil().max(0.0) as usize..=high.floor().max(0.0) as usize)
@@ -81,17 +100,12 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
                         })
                         .collect()
                 })
-                .x_axis_formatter(move |mark, _| {
-                    let k = mark.value.round();
-                    if (mark.value - k).abs() < 1e-6 && k >= 0.0 {
-                        labels
-                            .get(k as usize)
-                            .map(|l| short_label(l))
-                            .unwrap_or_default()
-                    } else {
-                        String::new()
-                    }
-                })
+                .custom_x_axes(vec![
+                    egui_plot::AxisHints::new_x()
+                        .label(x_title)
+                        .formatter(names)
+                        .label_spacing(24.0..=32.0),
+                ])
                 .show(ui, |plot| {
                     plot.bar_chart(BarChart::new("measured", bars));
                 });
@@ -143,9 +157,10 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
 /// The end of a long label, to sit under a bar.
 fn short_label(label: &str) -> String {
     let tail = label.rsplit_once(", ").map_or(label, |(_, tail)| tail);
-    // "distance after 6840 tries": the number is what tells the bars apart.
+    // "distance after 6840 tries": the number of tries is what tells the bars
+    // apart, and six longer names overlap (the plot then shows none).
     tail.strip_prefix("distance after ")
-        .unwrap_or(tail)
+        .map_or(tail, |t| t.trim_end_matches(" tries"))
         .to_owned()
 }
 
