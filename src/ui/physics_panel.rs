@@ -532,32 +532,15 @@ mod tests {
     /// Draws the physics controls, fish 2 selected and steered by hand, under
     /// `studio`, and returns the widgets drawn.
     fn draw(studio: &Studio) -> WidgetRects {
-        let ctx = egui::Context::default();
         let mut physics = PhysicsSettings {
             selected: Some(2),
             hand_control: true,
             ..PhysicsSettings::default()
         };
-        let mut rects = WidgetRects::new();
-        for frame in 0..2 {
-            rects.clear();
-            let input = egui::RawInput {
-                screen_rect: Some(egui::Rect::from_min_size(
-                    egui::Pos2::ZERO,
-                    egui::vec2(1280.0, 2000.0),
-                )),
-                time: Some(f64::from(frame) / 60.0),
-                ..Default::default()
-            };
-            let mut output = ctx.run_ui(input, |ui| {
-                super::super::studio_panel::begin_frame(ui.ctx(), studio);
-                egui::Panel::left("controls").show(ui, |ui| {
-                    physics_controls_ui(ui, &mut physics, &mut rects);
-                });
-            });
-            output.textures_delta.clear();
-        }
-        rects
+        super::super::studio_panel::draw_controls_for_test(studio, false, |ui, rects| {
+            physics_controls_ui(ui, &mut physics, rects);
+        })
+        .0
     }
 
     #[test]

@@ -438,6 +438,37 @@ impl StudioPanel {
     }
 }
 
+/// Draws `controls` in a side panel under `studio` (the studio window open
+/// or not) for two frames, as the app does, and returns the widgets drawn and
+/// the studio the frame ended with (tests of the panels' controls).
+#[cfg(test)]
+pub fn draw_controls_for_test(
+    studio: &Studio,
+    open: bool,
+    mut controls: impl FnMut(&mut egui::Ui, &mut WidgetRects),
+) -> (WidgetRects, Option<Studio>) {
+    let ctx = egui::Context::default();
+    ctx.data_mut(|d| d.insert_temp(open_id(), open));
+    let mut rects = WidgetRects::new();
+    for frame in 0..2 {
+        rects.clear();
+        let input = egui::RawInput {
+            screen_rect: Some(egui::Rect::from_min_size(
+                egui::Pos2::ZERO,
+                egui::vec2(1280.0, 2000.0),
+            )),
+            time: Some(f64::from(frame) / 60.0),
+            ..Default::default()
+        };
+        let mut output = ctx.run_ui(input, |ui| {
+            begin_frame(ui.ctx(), studio);
+            egui::Panel::left("controls").show(ui, |ui| controls(ui, &mut rects));
+        });
+        output.textures_delta.clear();
+    }
+    (rects, end_frame(&ctx))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -447,34 +478,10 @@ mod tests {
     /// Draws the schooling lab's tank controls once under `studio`, with the
     /// studio window open or not, and returns the widgets drawn.
     fn draw_tank(studio: &Studio, open: bool) -> (WidgetRects, Option<Studio>) {
-        let ctx = egui::Context::default();
-        ctx.data_mut(|d| d.insert_temp(open_id(), open));
         let mut settings = Settings::default();
-        let mut rects = WidgetRects::new();
-        for frame in 0..2 {
-            rects.clear();
-            let input = egui::RawInput {
-                screen_rect: Some(egui::Rect::from_min_size(
-                    egui::Pos2::ZERO,
-                    egui::vec2(1280.0, 2000.0),
-                )),
-                time: Some(f64::from(frame) / 60.0),
-                ..Default::default()
-            };
-            let mut output = ctx.run_ui(input, |ui| {
-                begin_frame(ui.ctx(), studio);
-                egui::Panel::left("controls").show(ui, |ui| {
-                    super::super::tank_panel::tank_ui(
-                        ui,
-                        &mut settings.left,
-                        Side::Left,
-                        &mut rects,
-                    );
-                });
-            });
-            output.textures_delta.clear();
-        }
-        (rects, end_frame(&ctx))
+        draw_controls_for_test(studio, open, |ui, rects| {
+            super::super::tank_panel::tank_ui(ui, &mut settings.left, Side::Left, rects);
+        })
     }
 
     fn lesson(student_view: bool) -> Studio {
