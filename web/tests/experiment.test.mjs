@@ -23,6 +23,8 @@ import {
   waitForWidget,
   waitFrames,
   sleep,
+  TIERS,
+  walkOnly,
 } from "./harness.mjs";
 
 const fixtures = path.join(repoRoot, "web", "tests", "fixtures");
@@ -73,7 +75,7 @@ function firstDifference(a, b) {
   return null;
 }
 
-for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
+for (const tier of TIERS) {
   describe(`experiments (${tier})`, () => {
     let server, browser, page, errors;
 
@@ -194,7 +196,7 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       assert.equal(e.csv, result.csv);
     });
 
-    test("Copy link: the experiment's link opens a page that runs it again, to the same CSV", async () => {
+    test("Copy link: the experiment's link opens a page that runs it again, to the same CSV", walkOnly(tier), async () => {
       await clickInWindow(page, "experiment_link", () => (window.shoal.state().notice || "").includes("Link copied"));
       const link = await page.evaluate(() => window.shoal.experiment_link());
       assert.ok(link.startsWith(`${server.url}?experiment=v1.`), link);
@@ -265,7 +267,7 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
   });
 }
 
-for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
+for (const tier of TIERS) {
   describe(`experiments in the physics tank (${tier})`, () => {
     let server, browser, page, errors;
 
@@ -290,7 +292,7 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       if (tier === "webgl2") saveArtifact("experiment-physics-design.png", await page.screenshot());
     });
 
-    test("muscle fish in a current: the browser's CSV is the native engine's", async () => {
+    test("muscle fish in a current: the browser's CSV is the native engine's", walkOnly(tier), async () => {
       const result = await page.evaluate((d) => window.shoal.run_experiment(d), physicsDesign);
       saveArtifact(`experiment-physics-${tier}.csv`, Buffer.from(result.csv));
       const distance = result.summary.filter((r) => r.measure === "distance_swum_m");

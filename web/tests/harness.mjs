@@ -70,6 +70,24 @@ export const TIER_FLAGS = {
   none: [...BASE_FLAGS, "--disable-gpu", "--disable-3d-apis", "--disable-webgl"],
 };
 
+/** The tiers a file's tests run on: SHOAL_TIERS (comma-separated), both by default. */
+export const TIERS = (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",");
+
+/** The tiers that run the long walks (SHOAL_WALK_TIERS, WebGL2 by default). A
+ * walk's numbers and its windows' logic are the same wasm on every tier; what a
+ * tier changes is the drawing. So the other tiers run each window's drawing and
+ * one short walk, and the long walks, which cost minutes a tier on a software GPU,
+ * run once. */
+export const WALK_TIERS = (process.env.SHOAL_WALK_TIERS || "webgl2").split(",");
+
+/** node:test options for a long walk on `tier`: skipped, with the reason, on a tier
+ * that does not walk. */
+export function walkOnly(tier) {
+  return WALK_TIERS.includes(tier)
+    ? {}
+    : { skip: `a long walk: runs on ${WALK_TIERS.join(", ")} (the same wasm computes it on every tier)` };
+}
+
 /** Launches headless Chromium for `tier` with a fresh profile. */
 export async function launch(tier, extraArgs = []) {
   return chromium.launch({

@@ -20,6 +20,8 @@ import {
   waitForWidget,
   waitFrames,
   sleep,
+  TIERS,
+  walkOnly,
 } from "./harness.mjs";
 
 const inv = (page) => page.evaluate(() => window.shoal.state().investigation);
@@ -30,7 +32,7 @@ let nudges = 0;
 async function shot(page, tier, name) {
   nudges += 1;
   const start = await page.evaluate(() => window.shoal.state().frames);
-  await page.mouse.move(4 + (nudges % 2) * 3, 700);
+  await page.mouse.move(page.viewportSize().width * 0.45 + (nudges % 2) * 3, 40);
   await page.waitForFunction((s) => window.shoal.state().frames > s + 1, start, { timeout: 60_000 });
   saveArtifact(`investigation-${tier}-${name}.png`, await page.screenshot());
 }
@@ -66,6 +68,29 @@ async function clickInWindow(page, name, predicate, arg) {
     }
   }
   throw new Error(`clicking ${name} in the window had no effect`);
+}
+
+/** The explain step: types each answer into its prompt, one at a time, as a
+ * student would (a click in the box, the keys, Next), until the reveal. `onSecond`
+ * runs while the second answer shows (a screenshot). */
+async function explain(page, answers, onSecond = null) {
+  for (const [k, answer] of answers.entries()) {
+    await scrollWindowTo(page, "investigation_answer");
+    await clickWidget(page, "investigation_answer");
+    await page.keyboard.type(answer, { delay: 10 });
+    await page.waitForFunction((a) => window.shoal.state().investigation.explanations.includes(a), answer);
+    if (k === 1 && onSecond) await onSecond();
+    await clickUntil(
+      page,
+      "investigation_next",
+      (n) => {
+        const now = window.shoal.state().investigation;
+        return now.step === "reveal" || now.prompt === n;
+      },
+      k + 1,
+    );
+  }
+  await page.waitForFunction(() => window.shoal.state().investigation.step === "reveal");
 }
 
 /** Drags the Speed slider to its top end, as a teacher short of time would. */
@@ -125,7 +150,7 @@ async function learningRun(page) {
   assert.notEqual((await page.evaluate(() => window.shoal.state().learning)).drill, 0, "the first drill learned");
 }
 
-for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
+for (const tier of TIERS) {
   describe(`investigations (${tier})`, () => {
     let server, browser;
 
@@ -139,8 +164,8 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
       await server?.close();
     });
 
-    test("Why do fish school? from the first screen to the reveal, with real clicks", async () => {
-      const { page, errors } = await openShoal(browser, server.url, { width: 1280, height: 800 });
+    test("Why do fish school? from the first screen to the reveal, with real clicks", walkOnly(tier), async () => {
+      const { page, errors } = await openShoal(browser, server.url, { width: 1024, height: 700 });
       assert.equal(await inv(page), null, "no investigation at first");
       const list = await page.evaluate(() => window.shoal.investigations());
       assert.deepEqual(
@@ -216,25 +241,9 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
 
       // Explain: three prompts, one at a time, answers typed in.
       await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "explain");
-      const answers = ["Steadily on the left", "The shark <switched> fish", "Too many targets"];
-      for (const [k, answer] of answers.entries()) {
-        await scrollWindowTo(page, "investigation_answer");
-        await clickWidget(page, "investigation_answer");
-        await page.keyboard.type(answer, { delay: 10 });
-        await waitFrames(page, 2);
-        if (k === 1) await shot(page, tier, "6-explain");
-        await page.waitForFunction((a) => window.shoal.state().investigation.explanations.includes(a), answer);
-        await clickUntil(
-          page,
-          "investigation_next",
-          (n) => {
-            const now = window.shoal.state().investigation;
-            return now.step === "reveal" || now.prompt === n;
-          },
-          k + 1,
-        );
-      }
-      await page.waitForFunction(() => window.shoal.state().investigation.step === "reveal");
+      await explain(page, ["Steadily on the left", "The shark <switched> fish", "Too many targets"], () =>
+        shot(page, tier, "6-explain"),
+      );
       await waitForWidget(page, "investigation_reveal");
       await shot(page, tier, "7-reveal");
 
@@ -266,16 +275,17 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
     // during it (click fish and turn alignment off; watch; practise), the
     // result beside the prediction, the explanations typed, the reveal.
     const walks = [
-      { id: "leader", scene: "boids", choice: 1, prompts: 3, during: leaderRun },
-      { id: "which-urge", scene: "boids", choice: 0, prompts: 3 },
-      { id: "how-swim", scene: "physics", choice: 0, prompts: 3 },
-      { id: "learning", scene: "learning", choice: 0, prompts: 2, during: learningRun },
+      { id: "leader", scene: "boids", choice: 1, prompts: 3, during: leaderRun, long: true },
+      { id: "which-urge", scene: "boids", choice: 0, prompts: 3, long: true },
+      // Its run takes seconds: every tier walks it, window, chart and reveal.
+      { id: "how-swim", scene: "physics", choice: 0, prompts: 3, long: false },
+      { id: "learning", scene: "learning", choice: 0, prompts: 2, during: learningRun, long: true },
     ];
     for (const walk of walks) {
-      test(`?investigation=${walk.id}: from the link to the reveal with real clicks`, async () => {
+      test(`?investigation=${walk.id}: from the link to the reveal with real clicks`, walk.long ? walkOnly(tier) : {}, async () => {
         const { page, errors } = await openShoal(browser, `${server.url}?investigation=${walk.id}`, {
-          width: 1180,
-          height: 780,
+          width: 960,
+          height: 660,
         });
         await page.waitForFunction((x) => window.shoal.state().investigation?.id === x, walk.id);
         assert.equal((await settings(page)).scene, walk.scene);
@@ -308,23 +318,10 @@ for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
         await shot(page, tier, `${walk.id}-1-result`);
 
         await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "explain");
-        for (let k = 0; k < walk.prompts; k++) {
-          const answer = `A${k + 1} ${walk.id}`;
-          await scrollWindowTo(page, "investigation_answer");
-          await clickWidget(page, "investigation_answer");
-          await page.keyboard.type(answer, { delay: 10 });
-          await page.waitForFunction((a) => window.shoal.state().investigation.explanations.includes(a), answer);
-          await clickUntil(
-            page,
-            "investigation_next",
-            (n) => {
-              const now = window.shoal.state().investigation;
-              return now.step === "reveal" || now.prompt === n;
-            },
-            k + 1,
-          );
-        }
-        await page.waitForFunction(() => window.shoal.state().investigation.step === "reveal");
+        await explain(
+          page,
+          Array.from({ length: walk.prompts }, (_, k) => `A${k + 1} ${walk.id}`),
+        );
         await waitForWidget(page, "investigation_reveal");
         await shot(page, tier, `${walk.id}-2-reveal`);
         const record = await page.evaluate(() => window.shoal.investigation_record());

@@ -20,6 +20,7 @@ import {
   waitFrames,
   decode,
   pixelStats,
+  TIERS,
 } from "./harness.mjs";
 
 const QUESTION = "How strongly do these fish copy their neighbours? Guess the number.";
@@ -39,7 +40,7 @@ function linkSettings(link) {
 /** A number that is the mystery value, anywhere in a JSON text. */
 const holdsMystery = (text) => new RegExp(`(^|[^0-9.])${MYSTERY}(\\.0+)?([^0-9]|$)`).test(text);
 
-for (const tier of (process.env.SHOAL_TIERS || "webgl2,webgpu").split(",")) {
+for (const tier of TIERS) {
   describe(`teacher's studio (${tier})`, () => {
     let server, browser, page, errors, link;
 
