@@ -181,11 +181,18 @@ export function saveArtifact(name, buffer) {
  * panel may not have been laid out yet (a software-rendered frame can take seconds),
  * so it waits up to 30 s for the widget to appear. */
 export async function clickWidget(page, name) {
-  const rect = await page
+  let rect = await page
     .waitForFunction((n) => window.shoal.widgets()[n], name, { timeout: 30_000 })
     .then((handle) => handle.jsonValue())
     .catch(() => null);
   if (!rect) throw new Error(`widget ${name} is not on screen`);
+  // A control of the side panel below (or above) what the panel shows: scroll to it
+  // first, as a person would.
+  const w = await page.evaluate(() => window.shoal.widgets());
+  const view = w.view_left;
+  if (view && rect.x + rect.width <= view.x + 1 && (rect.y < view.y || rect.y + rect.height > panelBottom(w))) {
+    rect = await scrollPanelTo(page, name);
+  }
   await page.mouse.click(rect.x + rect.width / 2, rect.y + rect.height / 2, { delay: 60 });
   return rect;
 }
@@ -203,6 +210,13 @@ export async function waitFrames(page, n = 1) {
   });
 }
 
+/** Where the side panel's visible part ends: the bottom of the tank views (the
+ * bottom panels begin there), or null before the first layout. */
+function panelBottom(w) {
+  const views = [w.view_left, w.view_right].filter(Boolean);
+  return views.length ? Math.max(...views.map((v) => v.y + v.height)) : null;
+}
+
 /** Scrolls the side panel with the mouse wheel, as a person would, until the named
  * widget lies within the visible part of the panel (above the bottom panels), and
  * returns its rectangle. */
@@ -210,8 +224,8 @@ export async function scrollPanelTo(page, name) {
   for (let attempt = 0; attempt < 40; attempt++) {
     const w = await page.evaluate(() => window.shoal.widgets());
     const r = w[name];
-    const view = w.view_left;
-    if (r && view && r.y >= 0 && r.y + r.height <= view.y + view.height) return r;
+    const bottom = panelBottom(w);
+    if (r && bottom !== null && r.y >= 0 && r.y + r.height <= bottom) return r;
     await page.mouse.move(120, 300);
     await page.mouse.wheel(0, r && r.y < 0 ? -100 : 100);
     await waitFrames(page, 2);
