@@ -33,7 +33,7 @@ describe("what a fish pays attention to", () => {
   before(async () => {
     server = await serveDist();
     browser = await launch("webgl2");
-    const context = await browser.newContext({ viewport: { width: 1366, height: 900 } });
+    const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
     ({ page, errors } = await openShoal(context, server.url));
   });
 

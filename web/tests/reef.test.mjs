@@ -28,7 +28,7 @@ describe("reef", () => {
   before(async () => {
     server = await serveDist();
     browser = await launch("webgl2");
-    const context = await browser.newContext({ viewport: { width: 1366, height: 1000 } });
+    const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
     ({ page, errors } = await openShoal(context, server.url));
   });
 
