@@ -315,6 +315,14 @@ impl ReefWorld {
             // schooling, and foraging with the school (see Gait::School).
             (Intention::School, _) => Gait::School,
             (Intention::Eat, None) if a.habits.schools && !neighbours.is_empty() => Gait::School,
+            // escaping with the school (see BehaviourParams::escape_in_school_gait).
+            (Intention::Escape, _)
+                if self.params.behaviour.escape_in_school_gait
+                    && a.habits.schools
+                    && !neighbours.is_empty() =>
+            {
+                Gait::School
+            }
             // mating: the courtship routine says (the female hovers).
             (Intention::Mate, Some(_)) => self.pair_of(i).map_or(Gait::Pursue, |pair| {
                 if pair.female as usize == i {

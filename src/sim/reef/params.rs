@@ -258,6 +258,17 @@ pub struct BehaviourParams {
     /// school (0–1). Default 0.6 (chosen: the school stays together but every
     /// fish still turns away from the predator).
     pub escape_share_in_school: f32,
+    /// Does a fleeing schooling fish that sees schoolmates swim in the school's
+    /// gait ([`crate::sim::reef::motor_choice::Gait::School`]: on the muscle
+    /// body, the boid layer's intended velocity through the desired-velocity
+    /// bridge, as when schooling) rather than the swim gait, whose turns of
+    /// [`MotorChoiceParams::turn_mc_min_deg`] or more are ballistic turn-MC
+    /// turns? Default true (chosen, measured: with
+    /// the swim gait each fish of a fleeing muscle school turned alone, for 4–7
+    /// s, and the school scattered where the predator struck; see
+    /// `docs/fish-mind.md`, "Lone against schooling prey"). The point-mass body
+    /// has no gaits.
+    pub escape_in_school_gait: bool,
 }
 
 impl Default for BehaviourParams {
@@ -269,6 +280,7 @@ impl Default for BehaviourParams {
             school_min_speed_fraction: 0.2,
             max_chase_pitch_rad: 0.44,
             escape_share_in_school: 0.6,
+            escape_in_school_gait: true,
         }
     }
 }
