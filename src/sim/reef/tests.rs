@@ -650,8 +650,8 @@ fn on_muscles_too_lone_prey_are_taken_more_often_than_schooling_prey() {
     // The lesson of *Predator and school* on the default muscle body: the
     // same shark and start, every prey fish schooling or every one a loner.
     // Seeds 13–16 × 2 min (kept short: CI runs the tests unoptimised):
-    // schooling 9, lone 15 (with fleeing schoolmates in the swim gait, 13
-    // against 15); seeds 9–16 × 2 min: 18 against 30; seeds 1–16 × 5 min: 84
+    // schooling 10, lone 15 (with fleeing schoolmates in the swim gait, 13
+    // against 15); seeds 1–16 × 2 min: 41 against 57; seeds 1–16 × 5 min: 79
     // against 136, loners taken more on 15 of the 16 seeds
     // (`predator_strike_census`).
     let seeds: Vec<u64> = (13..=16).collect();
@@ -659,7 +659,7 @@ fn on_muscles_too_lone_prey_are_taken_more_often_than_schooling_prey() {
     let (lone, missed_alone) = muscle_prey_eaten(false, true, 120.0, &seeds);
     assert!(schooled > 0, "the muscle shark eats schooling prey too");
     assert!(
-        lone as f32 >= 1.4 * schooled as f32,
+        lone as f32 >= 1.3 * schooled as f32,
         "lone {lone} vs schooling {schooled} prey eaten in 4 × 2 minutes"
     );
     assert!(
@@ -675,10 +675,10 @@ fn a_fleeing_muscle_school_stays_crowded_in_the_schools_gait() {
     // (`BehaviourParams::escape_in_school_gait`). In the swim gait each fish
     // turns away alone with ballistic turn-MC turns and the school scatters
     // where the shark strikes; in the school's gait (the bridge) it flees as
-    // one. Seeds 13–16 × 2 min: 3.94 other prey around the target at a
-    // strike against 1.22, 9 eaten against 13; seeds 9–16: 3.58 against 1.53,
-    // escaping prey with 5.07 neighbours within the confusion radius against
-    // 4.02, 18 eaten against 24 (`predator_strike_census`).
+    // one. Seeds 13–16 × 2 min: 3.65 other prey around the target at a
+    // strike against 1.22, 10 eaten against 13; seeds 1–16: 2.81 against 1.92,
+    // escaping prey with 4.83 neighbours within the confusion radius against
+    // 3.99, 41 eaten against 43 (`predator_strike_census`).
     let census = |in_school_gait: bool| {
         let mut c = StrikeCensus::default();
         for seed in 13..=16 {
@@ -1540,5 +1540,25 @@ fn predator_strike_census() {
             c.afraid_escaping_secs / c.afraid_secs.max(1e-3),
             c.escaping_neighbours / c.afraid_escaping_secs.max(1e-3),
         );
+    }
+}
+
+#[test]
+#[ignore]
+fn reef_collision_census() {
+    // Fish collisions on muscles with fleeing schoolmates in the school's gait
+    // or the swim gait (`BehaviourParams::escape_in_school_gait`), seeds 1–8 ×
+    // 1 min: `GAIT=1|0 cargo test --release --lib reef_collision_census --
+    // --ignored --nocapture`.
+    let gait = std::env::var("GAIT").as_deref() != Ok("0");
+    for scene in [ReefScene::Reef, ReefScene::PredatorAndSchool] {
+        let mut total = 0;
+        for seed in 1..=8 {
+            let mut w = reef(scene, ReefBodyKind::Physical, seed);
+            w.params.behaviour.escape_in_school_gait = gait;
+            run(&mut w, 60.0);
+            total += w.counts().fish_collisions;
+        }
+        println!("{scene:?} gait {gait}: {total} collisions in 8 x 60 s");
     }
 }
