@@ -179,7 +179,9 @@ pub fn escape(me: &Me, predator_m: Vec3) -> Vec3 {
 
 /// escaping, for a fish that schools and sees schoolmates: away from the
 /// predator at top speed like [`escape`], but also towards the schoolmates'
-/// heading and centre (the school routine at full fright), so that the
+/// heading and centre (the school routine at `fright`, its urgency: 1 is full
+/// fright, the tightest spacing; see
+/// [`BehaviourParams::escape_fright_in_school_gait`]), so that the
 /// school flees as a group instead of scattering one by one. Weight of the
 /// flight against the school: [`BehaviourParams::escape_share_in_school`]. Collective
 /// evasion keeps the confusion effect working on the predator (Magurran &
@@ -190,9 +192,10 @@ pub fn escape_with_school(
     me: &Me,
     neighbours: &[Neighbour],
     predator_m: Vec3,
+    fright: f32,
 ) -> Vec3 {
     let flee = escape(me, predator_m).normalize_or(me.heading);
-    let together = school(params, me, neighbours, 1.0, Some(predator_m)).normalize_or(flee);
+    let together = school(params, me, neighbours, fright, Some(predator_m)).normalize_or(flee);
     (flee * params.escape_share_in_school + together * (1.0 - params.escape_share_in_school))
         .normalize_or(flee)
         * me.top_speed_m_per_s
@@ -315,6 +318,14 @@ impl ReefWorld {
             // schooling, and foraging with the school (see Gait::School).
             (Intention::School, _) => Gait::School,
             (Intention::Eat, None) if a.habits.schools && !neighbours.is_empty() => Gait::School,
+            // escaping with the school (see BehaviourParams::escape_in_school_gait).
+            (Intention::Escape, _)
+                if self.params.behaviour.escape_in_school_gait
+                    && a.habits.schools
+                    && !neighbours.is_empty() =>
+            {
+                Gait::School
+            }
             // mating: the courtship routine says (the female hovers).
             (Intention::Mate, Some(_)) => self.pair_of(i).map_or(Gait::Pursue, |pair| {
                 if pair.female as usize == i {
@@ -439,8 +450,15 @@ impl ReefWorld {
             }
             Intention::Escape => match threat_at(focus.target) {
                 // A schooling fish flees with the schoolmates it sees.
+                // On the muscle body in the school's gait, at a lesser fright.
                 Some(p) if self.animals[i].habits.schools && !neighbours.is_empty() => {
-                    escape_with_school(&bp, &me, neighbours, p)
+                    let fright = match self.animals[i].body {
+                        ReefBody::Physical(_) if bp.escape_in_school_gait => {
+                            bp.escape_fright_in_school_gait
+                        }
+                        _ => 1.0,
+                    };
+                    escape_with_school(&bp, &me, neighbours, p, fright)
                 }
                 Some(p) => escape(&me, p),
                 None => wander(self),

@@ -258,6 +258,25 @@ pub struct BehaviourParams {
     /// school (0–1). Default 0.6 (chosen: the school stays together but every
     /// fish still turns away from the predator).
     pub escape_share_in_school: f32,
+    /// Does a fleeing schooling fish that sees schoolmates swim in the school's
+    /// gait ([`crate::sim::reef::motor_choice::Gait::School`]: on the muscle
+    /// body, the boid layer's intended velocity through the desired-velocity
+    /// bridge, as when schooling) rather than the swim gait, whose turns of
+    /// [`MotorChoiceParams::turn_mc_min_deg`] or more are ballistic turn-MC
+    /// turns? Default true (chosen, measured: with
+    /// the swim gait each fish of a fleeing muscle school turned alone, for 4–7
+    /// s, and the school scattered where the predator struck; see
+    /// `docs/fish-mind.md`, "Lone against schooling prey"). The point-mass body
+    /// has no gaits.
+    pub escape_in_school_gait: bool,
+    /// The school routine's urgency in the flight of a muscle fish fleeing in
+    /// the school's gait (0–1; the swim gait and the point-mass body use 1, full
+    /// fright, whose spacing is 0.7 of [`Self::school_spacing_body_lengths`]).
+    /// Default 0.5 (chosen, measured: spacing 0.85; with 1 the bridge held the
+    /// fleeing school so tight that fish collisions in the default reef on
+    /// muscles rose by a quarter, seeds 1–8 × 1 min: 147 against 118 in the
+    /// swim gait; with 0.5, 124).
+    pub escape_fright_in_school_gait: f32,
 }
 
 impl Default for BehaviourParams {
@@ -269,6 +288,8 @@ impl Default for BehaviourParams {
             school_min_speed_fraction: 0.2,
             max_chase_pitch_rad: 0.44,
             escape_share_in_school: 0.6,
+            escape_in_school_gait: true,
+            escape_fright_in_school_gait: 0.5,
         }
     }
 }
