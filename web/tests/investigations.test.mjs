@@ -275,7 +275,9 @@ for (const tier of TIERS) {
     // during it (click fish and turn alignment off; watch; practise), the
     // result beside the prediction, the explanations typed, the reveal.
     const walks = [
-      { id: "leader", scene: "boids", choice: 1, prompts: 3, during: leaderRun, long: true },
+      // The student clicks a fish in the tank: a window wide enough that the
+      // investigation window does not cover the school.
+      { id: "leader", scene: "boids", choice: 1, prompts: 3, during: leaderRun, long: true, size: [1180, 780] },
       { id: "which-urge", scene: "boids", choice: 0, prompts: 3, long: true },
       // Its run takes seconds: every tier walks it, window, chart and reveal.
       { id: "how-swim", scene: "physics", choice: 0, prompts: 3, long: false },
@@ -284,8 +286,8 @@ for (const tier of TIERS) {
     for (const walk of walks) {
       test(`?investigation=${walk.id}: from the link to the reveal with real clicks`, walk.long ? walkOnly(tier) : {}, async () => {
         const { page, errors } = await openShoal(browser, `${server.url}?investigation=${walk.id}`, {
-          width: 960,
-          height: 660,
+          width: walk.size?.[0] ?? 960,
+          height: walk.size?.[1] ?? 660,
         });
         await page.waitForFunction((x) => window.shoal.state().investigation?.id === x, walk.id);
         assert.equal((await settings(page)).scene, walk.scene);

@@ -21,6 +21,7 @@ import {
   decode,
   pixelStats,
   TIERS,
+  walkOnly,
 } from "./harness.mjs";
 
 const QUESTION = "How strongly do these fish copy their neighbours? Guess the number.";
@@ -127,7 +128,7 @@ for (const tier of TIERS) {
       assert.deepEqual(errors, []);
     });
 
-    test("the link opens the student view with the rules in force", async () => {
+    test("the link opens the student view with the rules in force", walkOnly(tier), async () => {
       assert.ok(link, "the first test made the link");
       // The teacher's page has handed over its link; closed, it no longer shares
       // the software GPU with the student's page (half the frames otherwise).
