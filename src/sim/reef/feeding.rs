@@ -29,6 +29,23 @@ pub(super) fn in_suck_reach(
 }
 
 impl ReefWorld {
+    /// Living prey other than `j` within the confusion radius of `j` (its
+    /// body lengths) of `at`: the crowd that can confuse a strike at `j`.
+    pub(crate) fn prey_crowding(&self, j: usize, at: Vec3) -> usize {
+        let reach_m =
+            self.params.confusion_radius_body_lengths * self.animals[j].body.body_length_m();
+        self.animals
+            .iter()
+            .enumerate()
+            .filter(|&(k, o)| {
+                k != j
+                    && o.alive
+                    && o.habits.kind == FishKind::Prey
+                    && o.body.position_m().distance(at) < reach_m
+            })
+            .count()
+    }
+
     /// The confusion effect at predator `i`'s strike on prey `j`: with `n`
     /// other prey within [`ReefParams::confusion_radius_body_lengths`] of the
     /// target, the strike succeeds with probability 1 / (1 +
@@ -38,19 +55,7 @@ impl ReefWorld {
     /// again, and the event is logged. A lone prey is never missed.
     pub(super) fn strike_confused(&mut self, i: usize, j: usize) -> bool {
         let target_m = self.animals[j].body.position_m();
-        let reach_m =
-            self.params.confusion_radius_body_lengths * self.animals[j].body.body_length_m();
-        let crowd = self
-            .animals
-            .iter()
-            .enumerate()
-            .filter(|&(k, o)| {
-                k != j
-                    && o.alive
-                    && o.habits.kind == FishKind::Prey
-                    && o.body.position_m().distance(target_m) < reach_m
-            })
-            .count();
+        let crowd = self.prey_crowding(j, target_m);
         let success = 1.0 / (1.0 + self.params.confusion_per_neighbour * crowd as f32);
         if crowd == 0 || self.rng.random::<f32>() < success {
             return false;

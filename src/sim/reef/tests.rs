@@ -554,9 +554,21 @@ fn prey_eaten_seeds(
     secs: f32,
     seeds: std::ops::RangeInclusive<u64>,
 ) -> (u32, u32) {
+    prey_eaten_with(body, schools, secs, seeds, |_| {})
+}
+
+/// [`prey_eaten_seeds`], with `setup` changing each reef before it runs.
+fn prey_eaten_with(
+    body: ReefBodyKind,
+    schools: bool,
+    secs: f32,
+    seeds: impl IntoIterator<Item = u64>,
+    setup: impl Fn(&mut ReefWorld),
+) -> (u32, u32) {
     let (mut eaten, mut missed) = (0, 0);
     for seed in seeds {
         let mut w = reef(ReefScene::PredatorAndSchool, body, seed);
+        setup(&mut w);
         for i in 0..w.animals().len() {
             if w.animals()[i].habits.kind == FishKind::Prey {
                 w.animal_mut(i).unwrap().habits.schools = schools;
@@ -623,26 +635,11 @@ fn lone_prey_are_taken_more_often_than_schooling_prey() {
 /// one a loner, with fleeing schoolmates in the school's gait or not
 /// (`BehaviourParams::escape_in_school_gait`).
 fn muscle_prey_eaten(schools: bool, in_school_gait: bool, secs: f32, seeds: &[u64]) -> (u32, u32) {
-    let (mut eaten, mut missed) = (0, 0);
-    for &seed in seeds {
-        let config = ReefConfig {
-            seed,
-            scene: ReefScene::PredatorAndSchool,
-            ..ReefConfig::default()
-        };
-        assert_eq!(config.body, ReefBodyKind::Physical, "the default body");
-        let mut w = ReefWorld::new(config);
+    let body = ReefConfig::default().body;
+    assert_eq!(body, ReefBodyKind::Physical, "the default body");
+    prey_eaten_with(body, schools, secs, seeds.iter().copied(), |w| {
         w.params.behaviour.escape_in_school_gait = in_school_gait;
-        for i in 0..w.animals().len() {
-            if w.animals()[i].habits.kind == FishKind::Prey {
-                w.animal_mut(i).unwrap().habits.schools = schools;
-            }
-        }
-        run(&mut w, secs);
-        eaten += w.counts().prey_eaten;
-        missed += w.counts().missed_strikes;
-    }
-    (eaten, missed)
+    })
 }
 
 #[test]
@@ -1477,20 +1474,7 @@ fn strike_census(
             w.animal_mut(i).unwrap().habits.schools = schools;
         }
     }
-    let radius = w.params().confusion_radius_body_lengths;
-    let crowd_around = |w: &ReefWorld, j: usize, at: Vec3| {
-        let reach = radius * w.animals()[j].body.body_length_m();
-        w.animals()
-            .iter()
-            .enumerate()
-            .filter(|&(k, o)| {
-                k != j
-                    && o.alive
-                    && o.habits.kind == FishKind::Prey
-                    && o.body.position_m().distance(at) < reach
-            })
-            .count() as u32
-    };
+    let crowd_around = |w: &ReefWorld, j: usize, at: Vec3| w.prey_crowding(j, at) as u32;
     let mut c = StrikeCensus::default();
     let dt = w.dt_secs();
     let steps = (secs / dt).round() as u32;
