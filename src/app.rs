@@ -7,11 +7,11 @@
 
 use eframe::egui;
 
-use crate::automation::{AutomationError, CameraReport, Command, StateReport};
+use crate::automation::{AutomationError, CameraReport, Command, SceneDetailReport, StateReport};
 use crate::bench::Benchmark;
 use crate::clock::RateMeter;
 use crate::lab::Lab;
-use crate::render::{FrameBuilder, OrbitCamera, RenderCaps, SceneRenderer};
+use crate::render::{FrameBuilder, OrbitCamera, RenderCaps, SceneDetail, SceneRenderer};
 use crate::settings::{Scene, Settings, Side};
 use crate::ui::{
     CurrentPanel, Notice, PanelAction, ViewContext, ViewInput, WidgetRects, control_panel_ui,
@@ -41,6 +41,9 @@ pub struct ShoalApp {
     /// One per 3D view (left, right).
     frame_builders: [FrameBuilder; 2],
     caps: RenderCaps,
+    /// How many pixels the tank is drawn with (fewer on slow graphics, see
+    /// [`crate::render::detail`]).
+    scene_detail: SceneDetail,
     panel_open: bool,
     /// The interface scale the teacher chose (`None`: automatic from the screen,
     /// see [`crate::ui::screen::auto_scale`]).
@@ -108,6 +111,7 @@ impl ShoalApp {
             lab,
             frame_builders: Default::default(),
             caps,
+            scene_detail: SceneDetail::default(),
             panel_open: true,
             interface_scale: None,
             layout_chosen: false,
@@ -269,6 +273,10 @@ impl ShoalApp {
         });
         report.notice = self.notice.as_ref().map(|n| n.text.clone());
         report.ui_scale = Some(self.ctx.zoom_factor());
+        report.scene_detail = Some(SceneDetailReport {
+            scale: self.scene_detail.scale(),
+            auto: self.scene_detail.auto,
+        });
         report
     }
 
@@ -281,6 +289,8 @@ impl ShoalApp {
 
     /// Starts the benchmark (the `?bench` page mode).
     pub fn start_benchmark(&mut self) {
+        // Frame times at every pixel, comparable between machines and runs.
+        self.scene_detail.set_auto(false);
         self.benchmark = Some(Benchmark::new());
     }
 
@@ -590,10 +600,10 @@ impl ShoalApp {
         self.camera_input(ui, &response, rect);
 
         let pixels_per_point = ui.ctx().pixels_per_point();
-        let size_px = [
-            (rect.width() * pixels_per_point).round().max(1.0) as u32,
-            (rect.height() * pixels_per_point).round().max(1.0) as u32,
-        ];
+        let size_px = self.scene_detail.image_size([
+            rect.width() * pixels_per_point,
+            rect.height() * pixels_per_point,
+        ]);
         let run = &self.lab.runs()[index];
         // The water animates with simulated time: pausing freezes the whole picture.
         let time_secs = run.time_secs() as f32;
@@ -761,6 +771,11 @@ impl eframe::App for ShoalApp {
             .last_frame_time_secs
             .map_or(0.0, |last| now_secs - last);
         self.last_frame_time_secs = Some(now_secs);
+        self.scene_detail.observe(
+            frame_secs,
+            frame.info().cpu_usage.map(f64::from),
+            !self.lab.settings().paused,
+        );
         self.lab.advance_frame(frame_secs, now_secs);
         // The runs in the background get their share of this frame: 15 ms, or
         // half of the page's own work when that is slow anyway.
@@ -806,6 +821,8 @@ impl eframe::App for ShoalApp {
         let mut view = crate::ui::ViewOptions {
             interface_scale: self.interface_scale,
             current_scale: ui.ctx().zoom_factor(),
+            detail_auto: self.scene_detail.auto,
+            detail_scale: self.scene_detail.scale(),
         };
         egui::Panel::left("controls")
             .default_size(if crate::ui::screen::is_narrow(width) {
@@ -829,6 +846,9 @@ impl eframe::App for ShoalApp {
                 });
             });
         self.interface_scale = view.interface_scale;
+        if view.detail_auto != self.scene_detail.auto {
+            self.scene_detail.set_auto(view.detail_auto);
+        }
         if let Some(studio) = crate::ui::studio_panel::end_frame(&self.ctx) {
             settings.studio = studio;
         }

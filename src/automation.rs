@@ -211,6 +211,15 @@ fn whole_number(value: &Value, min: u64, max: u64) -> Result<u64, WholeNumberErr
     }
 }
 
+/// How the tank is drawn (`state().scene_detail`).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct SceneDetailReport {
+    /// Pixels per side the tank is drawn with, as a share of the view's (1 = all).
+    pub scale: f32,
+    /// Whether the share follows the frame rate (the View section's *Auto*).
+    pub auto: bool,
+}
+
 /// What `shoal.state()` returns. Field names are stable: tests and teachers' scripts
 /// read them.
 #[derive(Clone, Debug, Serialize)]
@@ -245,6 +254,11 @@ pub struct StateReport {
     /// screen (app only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ui_scale: Option<f32>,
+    /// How the tank is drawn: the pixels per side as a share of the view's, and
+    /// whether that share follows the frame rate (app only; see
+    /// `render::detail`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scene_detail: Option<SceneDetailReport>,
     /// The (left) tank's school metrics, see [`MetricsSample`], and in the
     /// schooling lab what its selected fish pays attention to.
     pub metrics: TankReport,
@@ -346,6 +360,7 @@ impl StateReport {
             notice: None,
             camera: None,
             ui_scale: None,
+            scene_detail: None,
             scene_report: run.scene().report(settings.selected()),
             skip: run.scene().moment().map(|m| SkipReport {
                 moment: m.what,

@@ -2,6 +2,7 @@
 //! except the paint callback that puts the 3D view inside egui.
 
 pub mod body_skin;
+pub mod detail;
 pub mod fish_palette;
 pub mod frame_builder;
 pub mod mesh;
@@ -11,6 +12,7 @@ pub mod render_tier;
 pub mod scene_renderer;
 
 pub use body_skin::{BodyLook, BodyShape, BodySkin};
+pub use detail::SceneDetail;
 pub use frame_builder::FrameBuilder;
 pub use orbit_camera::{Framing, OrbitCamera};
 pub use render_tier::{RenderCaps, RenderTier};

@@ -388,6 +388,45 @@ struct ViewState {
     /// Deformed bodies; made when the view first draws some.
     bodies: Option<DynamicMesh>,
     targets: Option<Targets>,
+    /// What the offscreen image now shows: a frame with the same inputs is not
+    /// drawn again, only shown (a paused tank under a still camera costs one blit
+    /// a frame while the teacher works the panels).
+    drawn: DrawnInputs,
+}
+
+/// The inputs of the last frame a view drew, as bytes, to tell whether the next
+/// frame would draw the same picture. Exact: every field of [`SceneCallback`] that
+/// reaches the GPU is compared, byte for byte.
+#[derive(Default)]
+struct DrawnInputs {
+    last: Vec<u8>,
+    next: Vec<u8>,
+}
+
+impl DrawnInputs {
+    /// Records `frame`'s inputs and says whether they equal the last recorded.
+    fn same_as_last(&mut self, frame: &SceneCallback) -> bool {
+        let next = &mut self.next;
+        next.clear();
+        next.extend_from_slice(bytemuck::bytes_of(&frame.uniforms));
+        next.extend_from_slice(&frame.statics.generation.to_le_bytes());
+        next.extend_from_slice(&(frame.fish_detailed as u64).to_le_bytes());
+        for animals in [&frame.fish, &frame.sharks, &frame.rays] {
+            next.extend_from_slice(&(animals.len() as u64).to_le_bytes());
+            next.extend_from_slice(bytemuck::cast_slice(animals.as_slice()));
+        }
+        next.extend_from_slice(&(frame.bodies.vertices.len() as u64).to_le_bytes());
+        next.extend_from_slice(bytemuck::cast_slice(&frame.bodies.vertices));
+        next.extend_from_slice(bytemuck::cast_slice(&frame.bodies.indices));
+        let same = self.last == self.next;
+        std::mem::swap(&mut self.last, &mut self.next);
+        same
+    }
+
+    /// Forgets the last frame: the next one is drawn whatever it holds.
+    fn forget(&mut self) {
+        self.last.clear();
+    }
 }
 
 /// GPU resources of the scene renderer, kept in egui-wgpu's callback resources.
@@ -691,6 +730,7 @@ impl SceneRenderer {
             static_generation: None,
             bodies: None,
             targets: None,
+            drawn: DrawnInputs::default(),
         }
     }
 
@@ -881,9 +921,12 @@ impl CallbackTrait for SceneCallback {
         let view = views.draw(self.view_id, || renderer.new_view(device));
         if view.targets.as_ref().is_none_or(|t| t.size_px != size_px) {
             view.targets = Some(renderer.targets(device, size_px));
+            view.drawn.forget();
         }
-        SceneRenderer::upload(view, device, queue, self);
-        renderer.render_scene(view, egui_encoder);
+        if !view.drawn.same_as_last(self) {
+            SceneRenderer::upload(view, device, queue, self);
+            renderer.render_scene(view, egui_encoder);
+        }
         renderer.views = views;
         Vec::new()
     }
@@ -979,6 +1022,55 @@ mod tests {
         cache.draw(20, || 20);
         assert!(kept(&cache).len() <= 6);
         assert!(cache.get(10).is_some() && cache.get(11).is_some() && cache.get(20).is_some());
+    }
+
+    fn frame(fish_x: f32, eye_x: f32) -> SceneCallback {
+        let fish = FishInstance {
+            position_m: [fish_x, 1.0, 2.0],
+            ..FishInstance::zeroed()
+        };
+        SceneCallback {
+            view_id: 0,
+            uniforms: SceneUniforms::new(
+                Mat4::IDENTITY,
+                Vec3::new(eye_x, 1.0, 8.0),
+                Vec3::ZERO,
+                Vec3::splat(4.0),
+                3.0,
+            ),
+            fish: Arc::new(vec![fish; 3]),
+            fish_detailed: 3,
+            sharks: Arc::new(Vec::new()),
+            rays: Arc::new(Vec::new()),
+            statics: StaticScene {
+                generation: 7,
+                mesh: Arc::new(Mesh::default()),
+            },
+            bodies: Arc::new(Mesh::default()),
+            size_px: [640, 360],
+        }
+    }
+
+    #[test]
+    fn a_frame_like_the_last_is_not_drawn_again_and_any_change_is() {
+        let mut drawn = DrawnInputs::default();
+        assert!(
+            !drawn.same_as_last(&frame(1.0, 0.0)),
+            "the first frame is drawn"
+        );
+        assert!(drawn.same_as_last(&frame(1.0, 0.0)), "paused, camera still");
+        assert!(!drawn.same_as_last(&frame(1.001, 0.0)), "a fish moved");
+        assert!(drawn.same_as_last(&frame(1.001, 0.0)));
+        assert!(!drawn.same_as_last(&frame(1.001, 0.5)), "the camera moved");
+        let mut fewer = frame(1.001, 0.5);
+        Arc::make_mut(&mut fewer.fish).pop();
+        fewer.fish_detailed = 2;
+        assert!(!drawn.same_as_last(&fewer), "a fish fewer");
+        let mut rebuilt = frame(1.001, 0.5);
+        rebuilt.statics.generation = 8;
+        assert!(!drawn.same_as_last(&rebuilt), "a rock added");
+        drawn.forget();
+        assert!(!drawn.same_as_last(&rebuilt), "new targets: drawn again");
     }
 
     /// The scene shader parses and validates (naga, as wgpu does natively) and has

@@ -17,6 +17,10 @@ pub struct ViewOptions {
     pub interface_scale: Option<f32>,
     /// The scale in use now.
     pub current_scale: f32,
+    /// Whether the tank's drawing scale follows the frame rate.
+    pub detail_auto: bool,
+    /// The tank's drawing scale now (pixels per side, share of the view's).
+    pub detail_scale: f32,
 }
 
 /// Draws the control panel, editing `settings` in place, and records where the
@@ -207,6 +211,23 @@ pub fn control_panel_ui(
         if r.clicked() {
             view.interface_scale = Some((current + 0.1).min(*range.end()));
         }
+    });
+    ui.horizontal_wrapped(|ui| {
+        let help = "Auto: on a computer whose graphics cannot keep up, the tank is drawn \
+                    with fewer pixels so that it keeps moving smoothly (the panels and plots \
+                    stay sharp). Untick for the sharpest tank, however slow";
+        ui.label("Tank detail").on_hover_text(help);
+        let r = ui
+            .checkbox(&mut view.detail_auto, "Auto")
+            .on_hover_text(help);
+        rects.insert("scene_detail_auto", r.rect);
+        let pixels = view.detail_scale * view.detail_scale;
+        ui.label(if view.detail_scale < 1.0 {
+            format!("{:.0} % of the pixels", pixels * 100.0)
+        } else {
+            "every pixel".to_owned()
+        })
+        .on_hover_text("How many of the view's pixels the tank is drawn with now");
     });
     ui.label(
         egui::RichText::new(

@@ -25,10 +25,18 @@ pub fn status_line_ui(
         } else {
             String::new()
         };
-        ui.label(format!("{}{aa}", caps.tier.label()))
+        let detail = state
+            .scene_detail
+            .filter(|d| d.scale < 1.0)
+            .map_or(String::new(), |d| {
+                format!(", tank at {:.0} %", d.scale * 100.0)
+            });
+        ui.label(format!("{}{aa}{detail}", caps.tier.label()))
             .on_hover_text(
                 "The graphics system your browser gave Shoal: WebGPU is the newest, \
-             WebGL2 works everywhere else",
+             WebGL2 works everywhere else. \"tank at N %\": the graphics cannot keep up, so \
+             the tank is drawn with fewer pixels per side to stay smooth (View › Tank \
+             detail)",
             );
         ui.separator();
         ui.label(format!("t = {:.1} s", state.time_secs))

@@ -5,7 +5,7 @@ import { describe, test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import {
   serveDist, launch, openShoal, decode, pixelStats, fishPixels, symmetricDifference,
-  saveArtifact, clickUntil, sleep, waitFrames,
+  saveArtifact, clickUntil, sleep, waitFrames, sharpness, nudgeFrames,
 } from "./harness.mjs";
 
 const state = (page) => page.evaluate(() => window.shoal.state());
@@ -159,7 +159,7 @@ for (const tier of ["webgl2", "webgpu"]) {
 }
 
 describe("HiDPI and resizing (WebGL2 tier)", () => {
-  test("a 2× screen renders at full resolution and a resized window keeps drawing", async () => {
+  test("a 2× screen renders at full resolution (the tank too, with Tank detail's Auto off) and a resized window keeps drawing", async () => {
     const server = await serveDist();
     // A real 2× screen: the compositor's scale and the page's devicePixelRatio agree
     // (Playwright's deviceScaleFactor alone emulates only the latter).
@@ -179,6 +179,25 @@ describe("HiDPI and resizing (WebGL2 tier)", () => {
       const scaled = { x: rect.x * 2, y: rect.y * 2, width: rect.width * 2, height: rect.height * 2 };
       assert.ok(pixelStats(shot, scaled).std > 12, "the HiDPI aquarium is not blank");
       saveArtifact("webgl2-hidpi.png", await page.screenshot());
+
+      // Software graphics cannot draw the tank's 1800 × 1000 pixels smoothly:
+      // Tank detail's Auto draws it with fewer (render/detail.rs), and unticking
+      // it draws every pixel again: the same paused picture, sharper.
+      await page.waitForFunction(() => window.shoal.state().scene_detail.scale < 1, null, { timeout: 60_000 });
+      await page.evaluate(() => window.shoal.set({ paused: true }));
+      await nudgeFrames(page, 2);
+      const auto = (await state(page)).scene_detail;
+      assert.ok(auto.auto && auto.scale >= 0.5, JSON.stringify(auto));
+      const soft = decode(await page.screenshot());
+      await clickUntil(page, "scene_detail_auto", () => window.shoal.state().scene_detail.auto === false);
+      assert.equal((await state(page)).scene_detail.scale, 1, "every pixel");
+      await nudgeFrames(page, 2);
+      const sharp = decode(await page.screenshot());
+      saveArtifact("webgl2-hidpi-every-pixel.png", await page.screenshot());
+      const [before, after] = [sharpness(soft, scaled), sharpness(sharp, scaled)];
+      console.log(`tank detail: ${before.toFixed(2)} at ${auto.scale} per side, ${after.toFixed(2)} at every pixel`);
+      assert.ok(after > 1.15 * before, `fine detail ${after.toFixed(2)} at every pixel against ${before.toFixed(2)} at ${auto.scale}`);
+      await page.evaluate(() => window.shoal.set({ paused: false }));
 
       await page.setViewportSize({ width: 700, height: 800 });
       await page.waitForFunction(() => window.shoal.widgets().aquarium.height > 700, null, { timeout: 30_000 });

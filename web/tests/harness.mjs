@@ -162,6 +162,21 @@ export function fishPixels(png, rect) {
   return out;
 }
 
+/** Mean absolute luminance step between horizontally neighbouring pixels inside
+ * `rect` (device pixels): how much fine detail a picture holds. */
+export function sharpness(png, rect) {
+  const lum = (i) => 0.2126 * png.data[i] + 0.7152 * png.data[i + 1] + 0.0722 * png.data[i + 2];
+  let sum = 0, n = 0;
+  for (let y = Math.floor(rect.y); y < rect.y + rect.height; y++) {
+    for (let x = Math.floor(rect.x) + 1; x < rect.x + rect.width; x++) {
+      const i = (y * png.width + x) * 4;
+      sum += Math.abs(lum(i) - lum(i - 4));
+      n++;
+    }
+  }
+  return n ? sum / n : 0;
+}
+
 /** Fraction of the union of two pixel sets that is in only one of them. */
 export function symmetricDifference(a, b) {
   let only = 0;
@@ -181,14 +196,20 @@ export function saveArtifact(name, buffer) {
  * panel may not have been laid out yet (a software-rendered frame can take seconds),
  * so it waits up to 30 s for the widget to appear. */
 export async function clickWidget(page, name) {
-  let rect = await page
-    .waitForFunction((n) => window.shoal.widgets()[n], name, { timeout: 30_000 })
-    .then((handle) => handle.jsonValue())
-    .catch(() => null);
-  if (!rect) throw new Error(`widget ${name} is not on screen`);
+  // One call to the page when the widget is there already: on a software GPU each
+  // call waits for the frame being drawn.
+  let w = await page.evaluate(() => window.shoal?.widgets() ?? {});
+  let rect = w[name];
+  if (!rect) {
+    rect = await page
+      .waitForFunction((n) => window.shoal.widgets()[n], name, { timeout: 30_000 })
+      .then((handle) => handle.jsonValue())
+      .catch(() => null);
+    if (!rect) throw new Error(`widget ${name} is not on screen`);
+    w = await page.evaluate(() => window.shoal.widgets());
+  }
   // A control of the side panel below (or above) what the panel shows: scroll to it
   // first, as a person would.
-  const w = await page.evaluate(() => window.shoal.widgets());
   const view = w.view_left;
   if (view && rect.x + rect.width <= view.x + 1 && (rect.y < view.y || rect.y + rect.height > panelBottom(w))) {
     rect = await scrollPanelTo(page, name);
@@ -199,6 +220,16 @@ export async function clickWidget(page, name) {
 
 export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 
+/** Enters `text` into the focused text box as one input event, as a phone's
+ * keyboard, a paste or an input method does. Typing key by key costs two or three
+ * frames a character on a software GPU (each key event waits for a frame), so the
+ * tests type real keys in one answer (the why-school walk, with characters HTML
+ * must escape) and enter longer texts this way. */
+export async function enterText(page, text) {
+  await page.keyboard.insertText(text);
+}
+
+
 /** Waits until the app has drawn `n` more frames, so that a screenshot shows what a
  * change just did (on a software GPU a frame can take a second; a fixed sleep is a
  * guess). A paused app draws only when something asks it to, so wait for one frame
@@ -208,6 +239,18 @@ export async function waitFrames(page, n = 1) {
   await page.waitForFunction(([s, k]) => window.shoal.state().frames >= s + k, [start, n], {
     timeout: 60_000,
   });
+}
+
+/** Makes a paused app draw `n` more frames: it draws only when something asks,
+ * and a small mouse move (over the top of the window) asks. */
+let nudges = 0;
+export async function nudgeFrames(page, n = 1) {
+  nudges += 1;
+  const start = await page.evaluate(() => window.shoal.state().frames);
+  for (let k = 0; k < n; k++) {
+    await page.mouse.move(page.viewportSize().width * 0.45 + ((nudges + k) % 2) * 3, 40);
+    await page.waitForFunction((s) => window.shoal.state().frames > s, start + k, { timeout: 60_000 });
+  }
 }
 
 /** Where the side panel's visible part ends: the bottom of the tank views (the

@@ -22,18 +22,16 @@ import {
   sleep,
   TIERS,
   walkOnly,
+  enterText,
+  nudgeFrames,
 } from "./harness.mjs";
 
 const inv = (page) => page.evaluate(() => window.shoal.state().investigation);
 const settings = (page) => page.evaluate(() => window.shoal.settings());
 
-/** A paused app draws only when something asks: a small mouse move asks. */
-let nudges = 0;
+/** A screenshot of what the app shows now (a paused app draws when nudged). */
 async function shot(page, tier, name) {
-  nudges += 1;
-  const start = await page.evaluate(() => window.shoal.state().frames);
-  await page.mouse.move(page.viewportSize().width * 0.45 + (nudges % 2) * 3, 40);
-  await page.waitForFunction((s) => window.shoal.state().frames > s + 1, start, { timeout: 60_000 });
+  await nudgeFrames(page, 2);
   saveArtifact(`investigation-${tier}-${name}.png`, await page.screenshot());
 }
 
@@ -70,14 +68,17 @@ async function clickInWindow(page, name, predicate, arg) {
   throw new Error(`clicking ${name} in the window had no effect`);
 }
 
-/** The explain step: types each answer into its prompt, one at a time, as a
- * student would (a click in the box, the keys, Next), until the reveal. `onSecond`
+/** The explain step: writes each answer into its prompt, one at a time, as a
+ * student would (a click in the box, the text, Next), until the reveal. The
+ * answer numbered `typed` is typed key by key; the others are entered as one
+ * input event (`enterText`: a key costs frames on a software GPU). `onSecond`
  * runs while the second answer shows (a screenshot). */
-async function explain(page, answers, onSecond = null) {
+async function explain(page, answers, { typed = -1, onSecond = null } = {}) {
   for (const [k, answer] of answers.entries()) {
     await scrollWindowTo(page, "investigation_answer");
     await clickWidget(page, "investigation_answer");
-    await page.keyboard.type(answer, { delay: 10 });
+    if (k === typed) await page.keyboard.type(answer, { delay: 10 });
+    else await enterText(page, answer);
     await page.waitForFunction((a) => window.shoal.state().investigation.explanations.includes(a), answer);
     if (k === 1 && onSecond) await onSecond();
     await clickUntil(
@@ -241,9 +242,10 @@ for (const tier of TIERS) {
 
       // Explain: three prompts, one at a time, answers typed in.
       await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "explain");
-      await explain(page, ["Steadily on the left", "The shark <switched> fish", "Too many targets"], () =>
-        shot(page, tier, "6-explain"),
-      );
+      await explain(page, ["Steadily on the left", "It <switched>", "Too many targets"], {
+        typed: 1,
+        onSecond: () => shot(page, tier, "6-explain"),
+      });
       await waitForWidget(page, "investigation_reveal");
       await shot(page, tier, "7-reveal");
 
@@ -261,7 +263,7 @@ for (const tier of TIERS) {
       saveArtifact(`investigation-${tier}-record.html`, html);
       assert.ok(html.includes("The school (right) (locked before the run)"));
       assert.ok(html.includes(`<td class="n">${loners}</td>`) && html.includes(`<td class="n">${school}</td>`));
-      assert.ok(html.includes("The shark &lt;switched&gt; fish"), "student text escaped");
+      assert.ok(html.includes("It &lt;switched&gt;"), "student text, typed key by key, escaped");
       assert.ok(html.includes("<svg") && !html.includes("<script"), "inline plot, no script");
       assert.ok(html.includes("What scientists found"));
       const record = await page.evaluate(() => window.shoal.investigation_record());

@@ -22,6 +22,7 @@ import {
   pixelStats,
   TIERS,
   walkOnly,
+  enterText,
 } from "./harness.mjs";
 
 const QUESTION = "How strongly do these fish copy their neighbours? Guess the number.";
@@ -85,7 +86,7 @@ for (const tier of TIERS) {
       );
       // The question, typed into the studio window.
       await clickWidget(page, "studio_question");
-      await page.keyboard.type(QUESTION, { delay: 5 });
+      await enterText(page, QUESTION);
       await page.waitForFunction(
         (q) => window.shoal.settings().studio.question === q,
         QUESTION,
