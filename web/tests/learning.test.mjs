@@ -54,9 +54,19 @@ describe("learning lab", () => {
   });
 
   test("training lowers the objective and leaving the scene keeps the progress", async () => {
+    const before = (await state(page)).learning;
     await page.evaluate(() => window.shoal.train(150));
     let s = await state(page);
-    assert.ok(s.learning.best_objective < s.learning.start_objective, JSON.stringify(s.learning));
+    // The tries across frames may have brought the drill near its end, so the 150
+    // can finish it and start the next: then the finished drill's objective
+    // is the one that fell.
+    if (s.learning.drill === before.drill) {
+      assert.ok(s.learning.best_objective < s.learning.start_objective, JSON.stringify(s.learning));
+    } else {
+      assert.ok(s.learning.finished.length > before.finished.length, JSON.stringify(s.learning));
+      const [objective] = s.learning.finished[before.drill];
+      assert.ok(objective < before.start_objective, `${objective} vs ${before.start_objective}`);
+    }
     const progress = s.learning.progress;
     await clickUntil(page, "scene_reef", () => window.shoal.state().scene === "reef");
     await clickUntil(page, "scene_learning", () => window.shoal.state().scene === "learning");
