@@ -259,6 +259,9 @@ pub struct BodyParams {
     #[serde(default = "default_fin_trim_gain")]
     pub fin_trim_gain: f32,
     /// Largest trim, radians. Default 0.5 (29°), chosen: the reef's steepest climb.
+    /// Raised to 0.7–1.0 with the foraging fins
+    /// (`MotorChoiceParams::forage_max_fin_pitch_rad`) the muscle fish of the
+    /// default reef folded tail fins or blew up (issue 13, docs/fish-body.md).
     #[serde(default = "default_max_trim_rad")]
     pub max_trim_rad: f32,
 }
@@ -441,6 +444,12 @@ impl FishBody {
     /// Parameters (paper units).
     pub fn params(&self) -> &BodyParams {
         &self.params
+    }
+
+    /// Parameters, to change in tests.
+    #[cfg(test)]
+    pub(crate) fn params_mut(&mut self) -> &mut BodyParams {
+        &mut self.params
     }
 
     /// Rest length of the body (head tip to tail-fin tips), metres.

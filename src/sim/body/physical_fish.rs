@@ -129,6 +129,12 @@ impl PhysicalFish {
         &self.body
     }
 
+    /// The body, to change its parameters in tests.
+    #[cfg(test)]
+    pub(crate) fn body_mut(&mut self) -> &mut FishBody {
+        &mut self.body
+    }
+
     pub fn motor(&self) -> &MotorState {
         &self.motor
     }
@@ -1022,6 +1028,55 @@ mod bend_census {
                         "{name:12} from {lead:3.1}, swim {speed:3.1}: 90° in {t90:4.1} s, 180° in {t180:4.1} s, loop {width:4.2} BL"
                     );
                 }
+            }
+        }
+    }
+
+    /// Climb angle and speed of a fish at 0.7 of the top speed with the fins
+    /// climbing at `pitch` and the trim limited to `max_trim`, and its level
+    /// turn rate with the full bend meanwhile. `cargo test --release --lib
+    /// climb_angle_census -- --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn climb_angle_census() {
+        for (pitch, max_trim) in [(0.5, 0.5), (0.8, 0.8), (1.0, 1.0), (1.2, 1.2), (1.0, 0.5)] {
+            for steer in [0.0, 1.0] {
+                let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+                fish.body_mut().params_mut().max_trim_rad = max_trim;
+                let dt = fish.body().dt_secs();
+                let mut intent = MotorIntent {
+                    speed_fraction: 0.7,
+                    start_turn_deg: None,
+                    steer: 0.0,
+                    fins: PectoralFins::NEUTRAL,
+                };
+                for _ in 0..(4.0 / dt) as usize {
+                    fish.step(&intent, Vec3::ZERO);
+                }
+                intent.fins = PectoralFins::climb(pitch);
+                intent.steer = steer;
+                intent.speed_fraction = 0.7f32.max(steer);
+                for _ in 0..(4.0 / dt) as usize {
+                    fish.step(&intent, Vec3::ZERO);
+                }
+                let (from, h0) = (fish.point.position_m, fish.heading());
+                let (mut turned, mut prev) = (0.0f32, h0);
+                let steps = (4.0 / dt) as usize;
+                for _ in 0..steps {
+                    fish.step(&intent, Vec3::ZERO);
+                    turned += level_turn_deg(prev, fish.heading());
+                    prev = fish.heading();
+                }
+                let d = fish.point.position_m - from;
+                let secs = steps as f32 * dt;
+                let level = Vec3::new(d.x, 0.0, d.z).length();
+                println!(
+                    "fins {pitch:.1} trim<= {max_trim:.1} steer {steer}: climb {:5.1}°, rise {:5.3} m/s, level turn {:5.1}°/s, spine {:.2}",
+                    crate::sim::common::fmath::atan2(d.y, level).to_degrees(),
+                    d.y / secs,
+                    turned / secs,
+                    fish.body().spine_length_m() / 0.5
+                );
             }
         }
     }

@@ -313,7 +313,7 @@ impl ReefWorld {
                 .filter(|f| {
                     in_suck_reach(&self.params, s.head_m, s.heading, s.length_m, f.position_m)
                 })
-                .map_or(Gait::Pursue, |_| Gait::Hover),
+                .map_or(Gait::Forage, |_| Gait::Hover),
             (Intention::Eat, Some(Target::Animal(_))) => Gait::Pursue,
             // schooling, and foraging with the school (see Gait::School).
             (Intention::School, _) => Gait::School,
@@ -475,7 +475,10 @@ impl ReefWorld {
             Intention::Eat => match focus.target {
                 Some(Target::Food(id)) => match self.food.iter().find(|f| f.id == id) {
                     Some(f) => chase(
-                        &bp,
+                        &BehaviourParams {
+                            max_chase_pitch_rad: bp.max_food_chase_pitch_rad,
+                            ..bp.clone()
+                        },
                         &me,
                         f.position_m,
                         bp.cruise_fraction,

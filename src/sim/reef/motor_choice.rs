@@ -51,6 +51,10 @@ pub enum Gait {
     /// re-aiming every step with the held bend: a turn-MC turn cannot be re-aimed
     /// once started and overshoots a target a few body lengths away.
     Pursue,
+    /// Swim after food (eating-food's chase): as [`Gait::Pursue`], with the
+    /// fins pitched up to [`MotorChoiceParams::forage_max_fin_pitch_rad`]
+    /// (steeper climbs and dives; plankton barely moves).
+    Forage,
     /// Swim with the school (schooling, and foraging with the school): the
     /// muscle body is steered like the physics scene's schooling fish, by the
     /// boid layer's intended velocity through the desired-velocity bridge
@@ -153,7 +157,7 @@ pub fn choose(params: &MotorChoiceParams, wish: &Wish, body: &Body, time_secs: f
                 ..idle
             };
         }
-        Gait::Swim | Gait::Pursue | Gait::School => {}
+        Gait::Swim | Gait::Pursue | Gait::Forage | Gait::School => {}
     }
     let speed = if body.speed_m_per_s.is_finite() {
         body.speed_m_per_s.max(0.0)
@@ -189,10 +193,14 @@ pub fn choose(params: &MotorChoiceParams, wish: &Wish, body: &Body, time_secs: f
     // Climb or dive with the fins.
     let elevation = fmath::atan2(d.y, level);
     let pitch = fmath::asin(body.heading.y.clamp(-1.0, 1.0));
+    let max_fin_pitch = if wish.gait == Gait::Forage {
+        params.forage_max_fin_pitch_rad
+    } else {
+        params.max_fin_pitch_rad
+    };
     let fins = if wanted > 0.0 {
         PectoralFins::climb(
-            (params.pitch_gain * (elevation - pitch))
-                .clamp(-params.max_fin_pitch_rad, params.max_fin_pitch_rad),
+            (params.pitch_gain * (elevation - pitch)).clamp(-max_fin_pitch, max_fin_pitch),
         )
     } else {
         PectoralFins::NEUTRAL

@@ -277,6 +277,11 @@ pub struct BehaviourParams {
     /// muscles rose by a quarter, seeds 1–8 × 1 min: 147 against 118 in the
     /// swim gait; with 0.5, 124).
     pub escape_fright_in_school_gait: f32,
+    /// Steepest climb or dive of a chase for food by a body that turns in
+    /// circles, radians (0.44, as [`BehaviourParams::max_chase_pitch_rad`]; to be
+    /// raised with [`MotorChoiceParams::forage_max_fin_pitch_rad`], see there).
+    /// Other chases keep [`BehaviourParams::max_chase_pitch_rad`].
+    pub max_food_chase_pitch_rad: f32,
 }
 
 impl Default for BehaviourParams {
@@ -290,6 +295,7 @@ impl Default for BehaviourParams {
             escape_share_in_school: 0.6,
             escape_in_school_gait: true,
             escape_fright_in_school_gait: 0.5,
+            max_food_chase_pitch_rad: 0.44,
         }
     }
 }
@@ -331,6 +337,24 @@ pub struct MotorChoiceParams {
     /// leading edge well up, the fin brakes and lifts). While it sinks the fins are
     /// tilted the other way as far as they go (θ = π/4).
     pub bob_lift_pitch_rad: f32,
+    /// Largest fin pitch while chasing food
+    /// ([`crate::sim::reef::motor_choice::Gait::Forage`]), radians. 0.5, as
+    /// [`MotorChoiceParams::max_fin_pitch_rad`]. The fins trim the body
+    /// (`BodyParams::fin_trim_gain`, up to `BodyParams::max_trim_rad`): at 0.8 /
+    /// 1.0 rad (with the trim limit raised as far) a fish at 0.7 of its top
+    /// speed climbs at 50° / 62°, against 32° at 0.5
+    /// (`physical_fish::bend_census::climb_angle_census`). *Feeding* on muscles,
+    /// seeds 1–16, 60 / 132 s, with [`BehaviourParams::max_food_chase_pitch_rad`]
+    /// and the trim limit as far: 398 / 931 plankton at 0.7 with climb effort 1.5,
+    /// 376 / 924 with effort 2, against 357 / 816 as shipped (point masses
+    /// 730 / 1487; `feeding_agility_census`). Not the default: in the default
+    /// reef, bodies blew up at 0.8 and 1.0 (fish outside the tank, seeds 1–16 ×
+    /// 132 s); at 0.7 one fish folded its tail fin on seed 1 with effort 1.5, and
+    /// with effort 1.5 and 2 seeds 1–3 had more collisions than
+    /// `a_long_reef_run_stays_finite_in_the_tank_and_out_of_rocks` allows (67
+    /// in 54 animal-minutes; as shipped 52), though over seeds 1–16 no more than
+    /// as shipped (docs/fish-body.md).
+    pub forage_max_fin_pitch_rad: f32,
 }
 
 impl Default for MotorChoiceParams {
@@ -344,6 +368,7 @@ impl Default for MotorChoiceParams {
             bob_swim_fraction: 0.15,
             bob_hz: 0.5,
             bob_lift_pitch_rad: 1.1,
+            forage_max_fin_pitch_rad: 0.5,
         }
     }
 }

@@ -1221,6 +1221,9 @@ fn feeding_time_budget() {
         let mut eaten_total = 0;
         for seed in 1..=8 {
             let mut w = reef(ReefScene::Feeding, body, seed);
+            if body == ReefBodyKind::Physical {
+                agile_tweaks(&mut w, &agile_one());
+            }
             let n = w.animals().len();
             // Per fish: the food chased, since when, from how far.
             let mut chase: Vec<Option<(u32, f64, f32, usize)>> = vec![None; n];
@@ -1384,7 +1387,7 @@ fn feeding_variants_census() {
             w.params.climb_effort_muscle_body = 6.0
         }),
         ("chase pitch 0.5, effort 3", |w| {
-            w.params.behaviour.max_chase_pitch_rad = 0.5;
+            w.params.behaviour.max_food_chase_pitch_rad = 0.5;
             w.params.climb_effort_muscle_body = 3.0;
         }),
     ];
@@ -1612,4 +1615,126 @@ fn reef_collision_census() {
         }
         println!("{scene:?} gait {gait}: {total} collisions in 8 x 60 s");
     }
+}
+
+/// Issue 13, the foraging agility of the muscle body: *Feeding* on muscles
+/// (point masses with `AGILE_BODY=point`), seeds 1–`AGILE_SEEDS` (default 8),
+/// plankton eaten by 60 s and by 132 s (one run each) and the shortest spine
+/// seen, for the variants in `AGILE` ("name:key=value,key=value;name2:…"; keys
+/// in [`agile_tweaks`]). `AGILE="shipped:;steep 0.5:finpitch=0.5,trim=0.5,
+/// chasepitch=0.44,effort=4" cargo test --release --lib feeding_agility_census
+/// -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn feeding_agility_census() {
+    let spec = std::env::var("AGILE").unwrap_or_else(|_| "as shipped:".into());
+    let seeds: u64 = std::env::var("AGILE_SEEDS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(8);
+    for variant in spec.split(';').filter(|v| !v.trim().is_empty()) {
+        let (name, keys) = variant.split_once(':').unwrap_or((variant, ""));
+        let kv: Vec<(String, f32)> = keys
+            .split(',')
+            .filter_map(|p| {
+                let (k, v) = p.split_once('=')?;
+                Some((k.trim().to_string(), v.trim().parse().ok()?))
+            })
+            .collect();
+        let (mut m60, mut m132) = (0, 0);
+        let mut per_seed = String::new();
+        let mut spine = 1.0f32;
+        let (mut collisions, mut collisions60) = (0, 0);
+        let (mut folds, mut blowups) = (0u32, 0u32);
+        let started = std::time::Instant::now();
+        for seed in 1..=seeds {
+            let body = if std::env::var("AGILE_BODY").is_ok_and(|b| b == "point") {
+                ReefBodyKind::PointMass
+            } else {
+                ReefBodyKind::Physical
+            };
+            let scene = if std::env::var("AGILE_SCENE").is_ok_and(|b| b == "reef") {
+                ReefScene::Reef
+            } else {
+                ReefScene::Feeding
+            };
+            let mut w = reef(scene, body, seed);
+            agile_tweaks(&mut w, &kv);
+            let mut shortest = 1.0f32;
+            let (mut a, mut c60) = (0, 0);
+            let steps60 = (60.0 / w.dt_secs()).round() as u32;
+            for step in 0..(132.0 / w.dt_secs()).round() as u32 {
+                w.step();
+                if step + 1 == steps60 {
+                    a = w.counts().food_eaten;
+                    c60 = w.counts().fish_collisions;
+                }
+                if step % 4 == 0 {
+                    let tank = *w.tank();
+                    for i in 0..w.animals().len() {
+                        if let ReefBody::Physical(p) = &w.animals()[i].body {
+                            shortest = shortest.min(p.body().spine_length_m() / p.body_length_m());
+                            folds += p.body().tail_fin_folded() as u32;
+                            let at = w.animals()[i].body.position_m();
+                            blowups += (!at.is_finite() || !tank.contains(at, 0.0)) as u32;
+                        }
+                    }
+                }
+            }
+            let b = w.counts().food_eaten;
+            per_seed += &format!(" {a}/{b}");
+            collisions += w.counts().fish_collisions;
+            collisions60 += c60;
+            spine = spine.min(shortest);
+            m60 += a;
+            m132 += b;
+        }
+        println!(
+            "{name:28} muscle: {m60:4} in 60 s, {m132:4} in 132 s | spine >= {spine:.2} folds {folds} out {blowups} | collisions {collisions60} / {collisions} |{per_seed} ({:.0} s)",
+            started.elapsed().as_secs_f32()
+        );
+    }
+}
+
+/// Applies `feeding_agility_census`'s `key=value` tweaks to `w`: `finpitch`
+/// (`MotorChoiceParams::forage_max_fin_pitch_rad`), `trim`
+/// (`BodyParams::max_trim_rad`), `chasepitch` (`max_food_chase_pitch_rad`),
+/// `effort` (`climb_effort_muscle_body`), `radius`
+/// (`body_turn_radius_body_lengths`), `pathw` (`turning_path_weight`), `gain`
+/// (`course_gain_per_rad`), `cruise` (`cruise_fraction`).
+fn agile_tweaks(w: &mut ReefWorld, kv: &[(String, f32)]) {
+    for (k, v) in kv {
+        let v = *v;
+        match k.as_str() {
+            "finpitch" => w.params.motor_choice.forage_max_fin_pitch_rad = v,
+            "chasepitch" => w.params.behaviour.max_food_chase_pitch_rad = v,
+            "effort" => w.params.climb_effort_muscle_body = v,
+            "radius" => w.params.body_turn_radius_body_lengths = v,
+            "pathw" => w.params.turning_path_weight = v,
+            "gain" => w.params.motor_choice.course_gain_per_rad = v,
+            "cruise" => w.params.behaviour.cruise_fraction = v,
+            "trim" => {
+                for i in 0..w.animals().len() {
+                    if let Some(a) = w.animal_mut(i)
+                        && let ReefBody::Physical(p) = &mut a.body
+                    {
+                        p.body_mut().params_mut().max_trim_rad = v;
+                    }
+                }
+            }
+            other => panic!("unknown key {other}"),
+        }
+    }
+}
+
+/// `AGILE_ONE` (`key=value,…`) as tweaks.
+fn agile_one() -> Vec<(String, f32)> {
+    std::env::var("AGILE_ONE")
+        .unwrap_or_default()
+        .split(',')
+        .filter_map(|p| {
+            let (k, v) = p.split_once('=')?;
+            Some((k.trim().to_string(), v.trim().parse().ok()?))
+        })
+        .collect()
 }

@@ -726,7 +726,7 @@ impl ReefWorld {
                 let heading = p.heading();
                 let speed = p.point.velocity_m_per_s.length();
                 let mut wish = wish;
-                if matches!(wish.gait, Gait::Swim | Gait::Pursue) {
+                if matches!(wish.gait, Gait::Swim | Gait::Pursue | Gait::Forage) {
                     // The path the fish is on: its heading at the speed it swims
                     // or means to swim.
                     let wanted = desired.length();
