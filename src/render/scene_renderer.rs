@@ -394,38 +394,95 @@ struct ViewState {
     drawn: DrawnInputs,
 }
 
-/// The inputs of the last frame a view drew, as bytes, to tell whether the next
-/// frame would draw the same picture. Exact: every field of [`SceneCallback`] that
-/// reaches the GPU is compared, byte for byte.
+/// The inputs of the last frame a view drew, to tell whether the next frame would
+/// draw the same picture. Exact: every field of [`SceneCallback`] that reaches the
+/// GPU is compared, byte for byte. While the tank runs, the uniforms (simulated
+/// time, camera) change every frame, so the instances and bodies (megabytes with
+/// many muscle fish) are not copied then: they are recorded on the first frame
+/// after a still one, and compared in place from then on.
 #[derive(Default)]
 struct DrawnInputs {
-    last: Vec<u8>,
-    next: Vec<u8>,
+    uniforms: Option<SceneUniforms>,
+    /// Did the uniforms change at the last frame?
+    uniforms_moving: bool,
+    /// The rest of the inputs, when recorded (`content_valid`).
+    content: Vec<u8>,
+    content_valid: bool,
 }
 
 impl DrawnInputs {
-    /// Records `frame`'s inputs and says whether they equal the last recorded.
-    fn same_as_last(&mut self, frame: &SceneCallback) -> bool {
-        let next = &mut self.next;
-        next.clear();
-        next.extend_from_slice(bytemuck::bytes_of(&frame.uniforms));
-        next.extend_from_slice(&frame.statics.generation.to_le_bytes());
-        next.extend_from_slice(&(frame.fish_detailed as u64).to_le_bytes());
-        for animals in [&frame.fish, &frame.sharks, &frame.rays] {
-            next.extend_from_slice(&(animals.len() as u64).to_le_bytes());
-            next.extend_from_slice(bytemuck::cast_slice(animals.as_slice()));
+    /// The inputs other than the uniforms, as byte slices in a fixed order.
+    fn parts(frame: &SceneCallback) -> ([u64; 7], [&[u8]; 5]) {
+        let header = [
+            frame.statics.generation,
+            frame.fish_detailed as u64,
+            frame.fish.len() as u64,
+            frame.sharks.len() as u64,
+            frame.rays.len() as u64,
+            frame.bodies.vertices.len() as u64,
+            frame.bodies.indices.len() as u64,
+        ];
+        let slices = [
+            bytemuck::cast_slice(frame.fish.as_slice()),
+            bytemuck::cast_slice(frame.sharks.as_slice()),
+            bytemuck::cast_slice(frame.rays.as_slice()),
+            bytemuck::cast_slice(&frame.bodies.vertices),
+            bytemuck::cast_slice(&frame.bodies.indices),
+        ];
+        (header, slices)
+    }
+
+    fn record(&mut self, frame: &SceneCallback) {
+        let (header, slices) = Self::parts(frame);
+        self.content.clear();
+        self.content.extend_from_slice(bytemuck::bytes_of(&header));
+        for part in slices {
+            self.content.extend_from_slice(part);
         }
-        next.extend_from_slice(&(frame.bodies.vertices.len() as u64).to_le_bytes());
-        next.extend_from_slice(bytemuck::cast_slice(&frame.bodies.vertices));
-        next.extend_from_slice(bytemuck::cast_slice(&frame.bodies.indices));
-        let same = self.last == self.next;
-        std::mem::swap(&mut self.last, &mut self.next);
-        same
+        self.content_valid = true;
+    }
+
+    fn content_equals(&self, frame: &SceneCallback) -> bool {
+        if !self.content_valid {
+            return false;
+        }
+        let (header, slices) = Self::parts(frame);
+        let mut rest = self.content.as_slice();
+        for part in std::iter::once(bytemuck::bytes_of(&header)).chain(slices) {
+            match rest.split_at_checked(part.len()) {
+                Some((head, tail)) if head == part => rest = tail,
+                _ => return false,
+            }
+        }
+        rest.is_empty()
+    }
+
+    /// Takes `frame`'s inputs into account and says whether they equal the last
+    /// frame's.
+    fn same_as_last(&mut self, frame: &SceneCallback) -> bool {
+        let uniforms = bytemuck::bytes_of(&frame.uniforms);
+        if self.uniforms.as_ref().map(bytemuck::bytes_of) != Some(uniforms) {
+            let was_moving = self.uniforms_moving;
+            self.uniforms = Some(frame.uniforms);
+            self.uniforms_moving = true;
+            if was_moving {
+                self.content_valid = false;
+            } else {
+                self.record(frame);
+            }
+            return false;
+        }
+        self.uniforms_moving = false;
+        if self.content_equals(frame) {
+            return true;
+        }
+        self.record(frame);
+        false
     }
 
     /// Forgets the last frame: the next one is drawn whatever it holds.
     fn forget(&mut self) {
-        self.last.clear();
+        self.content_valid = false;
     }
 }
 
@@ -1071,6 +1128,31 @@ mod tests {
         assert!(!drawn.same_as_last(&rebuilt), "a rock added");
         drawn.forget();
         assert!(!drawn.same_as_last(&rebuilt), "new targets: drawn again");
+    }
+
+    #[test]
+    fn a_running_tank_is_drawn_every_frame_without_copying_its_bodies() {
+        let mut drawn = DrawnInputs::default();
+        let running = |k: u8| {
+            // Simulated time (in the uniforms) moves every frame.
+            let mut f = frame(1.0 + f32::from(k) * 0.01, 0.0);
+            f.uniforms.eye_m[3] = f32::from(k) * 0.1;
+            f
+        };
+        for k in 0..10 {
+            assert!(!drawn.same_as_last(&running(k)));
+            if k > 0 {
+                assert!(
+                    !drawn.content_valid,
+                    "frame {k}: nothing copied while running"
+                );
+            }
+        }
+        // Paused at the last frame: drawn once more, then only shown.
+        let still = running(9);
+        assert!(!drawn.same_as_last(&still));
+        assert!(drawn.same_as_last(&still));
+        assert!(drawn.same_as_last(&still));
     }
 
     /// The scene shader parses and validates (naga, as wgpu does natively) and has
