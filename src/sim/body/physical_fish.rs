@@ -930,18 +930,29 @@ mod bend_census {
     use crate::sim::body::physical_fish::*;
     use std::f32::consts::PI;
 
-    fn held_bend(speed_fraction: f32, fins: PectoralFins) -> (f32, f32, f32) {
+    /// The intent of a fish cruising straight at 0.7 of its top speed.
+    const CRUISE: MotorIntent = MotorIntent {
+        speed_fraction: 0.7,
+        start_turn_deg: None,
+        steer: 0.0,
+        fins: PectoralFins::NEUTRAL,
+    };
+
+    /// A 0.5 m fish after 4 s of [`CRUISE`] (`setup` runs first).
+    fn cruising_fish(setup: impl FnOnce(&mut PhysicalFish)) -> PhysicalFish {
         let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
+        setup(&mut fish);
         let dt = fish.body().dt_secs();
-        let cruise = MotorIntent {
-            speed_fraction: 0.7,
-            start_turn_deg: None,
-            steer: 0.0,
-            fins: PectoralFins::NEUTRAL,
-        };
         for _ in 0..(4.0 / dt) as usize {
-            fish.step(&cruise, Vec3::ZERO);
+            fish.step(&CRUISE, Vec3::ZERO);
         }
+        fish
+    }
+
+    fn held_bend(speed_fraction: f32, fins: PectoralFins) -> (f32, f32, f32) {
+        let mut fish = cruising_fish(|_| {});
+        let dt = fish.body().dt_secs();
+        let cruise = CRUISE;
         let bend = MotorIntent {
             speed_fraction,
             steer: 1.0,
@@ -1041,18 +1052,9 @@ mod bend_census {
     fn climb_angle_census() {
         for (pitch, max_trim) in [(0.5, 0.5), (0.8, 0.8), (1.0, 1.0), (1.2, 1.2), (1.0, 0.5)] {
             for steer in [0.0, 1.0] {
-                let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
-                fish.body_mut().params_mut().max_trim_rad = max_trim;
+                let mut fish = cruising_fish(|f| f.body_mut().params_mut().max_trim_rad = max_trim);
                 let dt = fish.body().dt_secs();
-                let mut intent = MotorIntent {
-                    speed_fraction: 0.7,
-                    start_turn_deg: None,
-                    steer: 0.0,
-                    fins: PectoralFins::NEUTRAL,
-                };
-                for _ in 0..(4.0 / dt) as usize {
-                    fish.step(&intent, Vec3::ZERO);
-                }
+                let mut intent = CRUISE;
                 intent.fins = PectoralFins::climb(pitch);
                 intent.steer = steer;
                 intent.speed_fraction = 0.7f32.max(steer);

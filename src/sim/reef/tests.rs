@@ -1531,26 +1531,20 @@ fn strike_census_seeds(
     let in_school_gait = std::env::var("GAIT").as_deref() != Ok("0");
     let seeds: Vec<u64> = seeds.collect();
     let halves = seeds.split_at(seeds.len() / 2);
-    let (a, b) = std::thread::scope(|s| {
-        let a = s.spawn(|| {
-            let mut c = StrikeCensus::default();
-            for &seed in halves.0 {
-                let one = strike_census(body, schools, in_school_gait, secs, seed);
-                if std::env::var("PERSEED").is_ok() {
-                    println!("  seed {seed} schools={schools}: {}", one.brief());
-                }
-                c += one;
-            }
-            c
-        });
-        let mut b = StrikeCensus::default();
-        for &seed in halves.1 {
+    let sum = |seeds: &[u64]| {
+        let mut c = StrikeCensus::default();
+        for &seed in seeds {
             let one = strike_census(body, schools, in_school_gait, secs, seed);
             if std::env::var("PERSEED").is_ok() {
                 println!("  seed {seed} schools={schools}: {}", one.brief());
             }
-            b += one;
+            c += one;
         }
+        c
+    };
+    let (a, b) = std::thread::scope(|s| {
+        let a = s.spawn(|| sum(halves.0));
+        let b = sum(halves.1);
         (a.join().unwrap(), b)
     });
     let mut c = a;
