@@ -1692,7 +1692,8 @@ fn feeding_agility_census() {
 
 /// Applies `feeding_agility_census`'s `key=value` tweaks to `w`: `finpitch`
 /// (`MotorChoiceParams::forage_max_fin_pitch_rad`), `trim`
-/// (`BodyParams::max_trim_rad`), `chasepitch` (`max_food_chase_pitch_rad`),
+/// (`BodyParams::max_trim_rad`), `trimgain` (`BodyParams::fin_trim_gain`),
+/// `chasepitch` (`max_food_chase_pitch_rad`),
 /// `effort` (`climb_effort_muscle_body`), `radius`
 /// (`body_turn_radius_body_lengths`), `pathw` (`turning_path_weight`), `gain`
 /// (`course_gain_per_rad`), `cruise` (`cruise_fraction`).
@@ -1707,16 +1708,20 @@ fn agile_tweaks(w: &mut ReefWorld, kv: &[(String, f32)]) {
             "pathw" => w.params.turning_path_weight = v,
             "gain" => w.params.motor_choice.course_gain_per_rad = v,
             "cruise" => w.params.behaviour.cruise_fraction = v,
-            "trim" => {
-                for i in 0..w.animals().len() {
-                    if let Some(a) = w.animal_mut(i)
-                        && let ReefBody::Physical(p) = &mut a.body
-                    {
-                        p.body_mut().params_mut().max_trim_rad = v;
-                    }
-                }
-            }
+            "trim" => each_body(w, |b| b.max_trim_rad = v),
+            "trimgain" => each_body(w, |b| b.fin_trim_gain = v),
             other => panic!("unknown key {other}"),
+        }
+    }
+}
+
+/// Sets the body parameters of every muscle fish of `w` with `set`.
+fn each_body(w: &mut ReefWorld, set: impl Fn(&mut crate::sim::body::BodyParams)) {
+    for i in 0..w.animals().len() {
+        if let Some(a) = w.animal_mut(i)
+            && let ReefBody::Physical(p) = &mut a.body
+        {
+            set(p.body_mut().params_mut());
         }
     }
 }
