@@ -29,13 +29,14 @@ pub fn status_line_ui(
             .scene_detail
             .filter(|d| d.scale < 1.0)
             .map_or(String::new(), |d| {
-                format!(", tank at {:.0} %", d.scale * 100.0)
+                // The same measure as View › Tank detail: the share of the pixels.
+                format!(", tank at {:.0} % of the pixels", d.scale * d.scale * 100.0)
             });
         ui.label(format!("{}{aa}{detail}", caps.tier.label()))
             .on_hover_text(
                 "The graphics system your browser gave Shoal: WebGPU is the newest, \
-             WebGL2 works everywhere else. \"tank at N %\": the graphics cannot keep up, so \
-             the tank is drawn with fewer pixels per side to stay smooth (View › Tank \
+             WebGL2 works everywhere else. \"tank at N % of the pixels\": the graphics cannot keep \
+             up, so the tank is drawn with fewer pixels to stay smooth (View › Tank \
              detail)",
             );
         ui.separator();
