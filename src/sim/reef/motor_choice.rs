@@ -6,7 +6,7 @@
 //! |----------------------------------------|-------------------|
 //! | to swim on (heading error under [`MotorChoiceParams::turn_mc_min_deg`]) | swim-MC at the wished speed; course kept by a bend of the turning segments proportional to the error ([`MotorChoiceParams::course_gain_per_rad`], `body::turn_mc::add_steering`) |
 //! | to swim somewhere [`MotorChoiceParams::turn_mc_min_deg`] or more off its heading | turn-MC(angle), at most 90° at a time; the routine asks again when the turn is done (not while pursuing a moving target, [`Gait::Pursue`]: it keeps re-aiming with the held bend) |
-//! | to climb or dive                       | both pectoral fins pitched (twice the elevation error, at most ±0.5 rad), trimming the body: it pitches with them and swims up or down its own axis (`BodyParams::fin_trim_gain`) |
+//! | to climb or dive                       | both pectoral fins pitched (twice the elevation error, at most ±0.5 rad; chasing food, [`Gait::Forage`], the wished elevation itself, at most ±[`MotorChoiceParams::forage_max_fin_pitch_rad`]), trimming the body: it pitches with them and swims up or down its own axis (`BodyParams::fin_trim_gain`) |
 //! | to go much slower than it swims, towards a goal less than [`MotorChoiceParams::turn_mc_min_deg`] off its heading | fins across the flow (brake), no tail beat (a goal further round is turned to first: the turn needs the tail's thrust) |
 //! | to hover ([`Gait::Hover`])             | no tail beat, fins across the flow: the fish stops within a body length and stays |
 //! | to hover and bob ([`Gait::Bob`])       | a slow tail beat ([`MotorChoiceParams::bob_swim_fraction`]) against fins that brake and tilt up and down together at [`MotorChoiceParams::bob_hz`]: the fish holds its place and rises and sinks |
@@ -52,8 +52,11 @@ pub enum Gait {
     /// once started and overshoots a target a few body lengths away.
     Pursue,
     /// Swim after food (eating-food's chase): as [`Gait::Pursue`], with the
-    /// fins pitched up to [`MotorChoiceParams::forage_max_fin_pitch_rad`]
-    /// (steeper climbs and dives; plankton barely moves).
+    /// fins pitched to the wished climb, up to
+    /// [`MotorChoiceParams::forage_max_fin_pitch_rad`] (steeper climbs and
+    /// dives; plankton barely moves). Not twice the error from the body's own
+    /// pitch: the trimmed body's pitch follows its fins, so that loop rang
+    /// from full climb to full dive step to step at steep fins.
     Forage,
     /// Swim with the school (schooling, and foraging with the school): the
     /// muscle body is steered like the physics scene's schooling fish, by the
@@ -198,7 +201,9 @@ pub fn choose(params: &MotorChoiceParams, wish: &Wish, body: &Body, time_secs: f
     } else {
         params.max_fin_pitch_rad
     };
-    let fins = if wanted > 0.0 {
+    let fins = if wanted > 0.0 && wish.gait == Gait::Forage {
+        PectoralFins::climb(elevation.clamp(-max_fin_pitch, max_fin_pitch))
+    } else if wanted > 0.0 {
         PectoralFins::climb(
             (params.pitch_gain * (elevation - pitch)).clamp(-max_fin_pitch, max_fin_pitch),
         )
@@ -386,5 +391,44 @@ mod tests {
             0.0,
         );
         assert_eq!(nan.speed_fraction, 0.0);
+    }
+
+    #[test]
+    fn a_chase_for_food_sets_its_fins_to_the_wished_climb_whatever_the_body_pitch() {
+        // Food 0.4 rad above the heading's level: the fins pitch 0.4 rad
+        // whether the body is level or already pitched 0.3 rad nose up (the
+        // other gaits pitch them by twice the error, 0.8 and 0.2, clamped).
+        let wish = Wish {
+            velocity_m_per_s: Vec3::new(fmath::cos(0.4), fmath::sin(0.4), 0.0) * 0.2,
+            gait: Gait::Forage,
+        };
+        let p = MotorChoiceParams::default();
+        for pitch in [0.0f32, 0.3] {
+            let b = Body {
+                heading: Vec3::new(fmath::cos(pitch), fmath::sin(pitch), 0.0),
+                ..body(0.2, false)
+            };
+            let fins = choose(&p, &wish, &b, 0.0).fins;
+            assert!(fins.trim);
+            let fin_pitch = fins.left_angle_rad - std::f32::consts::FRAC_PI_2;
+            assert!(
+                (fin_pitch - 0.4).abs() < 1e-4,
+                "body {pitch}: fins {fin_pitch}"
+            );
+            let pursue = choose(&p, &Wish::pursue(wish.velocity_m_per_s), &b, 0.0).fins;
+            let expected = (2.0 * (0.4 - pitch)).min(p.max_fin_pitch_rad);
+            assert!(
+                (pursue.left_angle_rad - std::f32::consts::FRAC_PI_2 - expected).abs() < 1e-4,
+                "pursuit, body {pitch}"
+            );
+        }
+        // Steeper food: at most `forage_max_fin_pitch_rad`.
+        let steep = Wish {
+            velocity_m_per_s: Vec3::new(0.1, 1.0, 0.0),
+            gait: Gait::Forage,
+        };
+        let fins = choose(&p, &steep, &body(0.2, false), 0.0).fins;
+        let fin_pitch = fins.left_angle_rad - std::f32::consts::FRAC_PI_2;
+        assert!((fin_pitch - p.forage_max_fin_pitch_rad).abs() < 1e-4);
     }
 }

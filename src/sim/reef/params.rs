@@ -47,12 +47,15 @@ pub struct ReefParams {
     pub suck_range_body_lengths: f32,
     /// How many metres of level swimming a metre of climbing or diving costs a
     /// muscle fish choosing its food (its perceptual focusser weighs the food's
-    /// distance so, §6.3). 4, chosen: the fins trim the muscle body to climb at
-    /// most 29° (`BodyParams::fin_trim_gain`) and it turns in a circle of 1.2
-    /// body lengths, so food overhead is reached by a long spiral. *Feeding*,
-    /// seeds 1–8, 60 s (`feeding_census`, before the libm change; 142 with 4 after it): 45 plankton with 1, 116 with 2, 149
-    /// with 4, 134 with 10 (point masses 342; `docs/departures.md`, climb
-    /// effort). The point-mass body climbs as fast as it swims (1).
+    /// distance so, §6.3). 1.5, chosen: chasing food, the fins trim the muscle
+    /// body to climb at up to 44° (`MotorChoiceParams::forage_max_fin_pitch_rad`,
+    /// `BodyParams::fin_trim_gain`) and it turns in a circle of 1.2 body
+    /// lengths, so food overhead is reached by a spiral. *Feeding*, seeds 1–8,
+    /// 60 / 132 s (`feeding_agility_census`): 202 / 469 plankton with 1.5, 170 /
+    /// 407 with 4 (point masses 342 / 723). With the old 29° climbs 4 was best
+    /// (seeds 1–8, 60 s, before the libm change: 45 with 1, 116 with 2, 149
+    /// with 4, 134 with 10; `docs/departures.md`, climb effort). The
+    /// point-mass body climbs as fast as it swims (1).
     pub climb_effort_muscle_body: f32,
     /// How much of the detour round its turning circle a muscle fish counts
     /// when it ranks the food it sees: the level distance it ranks by is the
@@ -146,7 +149,7 @@ impl Default for ReefParams {
             start_fed_for_max_secs: 30.0,
             courtship_digestion_fraction: 0.1,
             suck_range_body_lengths: 1.0,
-            climb_effort_muscle_body: 4.0,
+            climb_effort_muscle_body: 1.5,
             turning_path_weight: 0.5,
             suck_cone_cos: 0.0,
             predator_suck_range_body_lengths: 0.6,
@@ -278,8 +281,10 @@ pub struct BehaviourParams {
     /// swim gait; with 0.5, 124).
     pub escape_fright_in_school_gait: f32,
     /// Steepest climb or dive of a chase for food by a body that turns in
-    /// circles, radians (0.44, as [`BehaviourParams::max_chase_pitch_rad`]; to be
-    /// raised with [`MotorChoiceParams::forage_max_fin_pitch_rad`], see there).
+    /// circles, radians (0.7, chosen with
+    /// [`MotorChoiceParams::forage_max_fin_pitch_rad`], see there; at 0.44, as
+    /// the other chases, *Feeding* seeds 1–8 gave 186 / 436 plankton in 60 /
+    /// 132 s against 190 / 450, with the fins at 0.5 both).
     /// Other chases keep [`BehaviourParams::max_chase_pitch_rad`].
     pub max_food_chase_pitch_rad: f32,
 }
@@ -295,7 +300,7 @@ impl Default for BehaviourParams {
             escape_share_in_school: 0.6,
             escape_in_school_gait: true,
             escape_fright_in_school_gait: 0.5,
-            max_food_chase_pitch_rad: 0.44,
+            max_food_chase_pitch_rad: 0.7,
         }
     }
 }
@@ -338,22 +343,21 @@ pub struct MotorChoiceParams {
     /// tilted the other way as far as they go (θ = π/4).
     pub bob_lift_pitch_rad: f32,
     /// Largest fin pitch while chasing food
-    /// ([`crate::sim::reef::motor_choice::Gait::Forage`]), radians. 0.5, as
-    /// [`MotorChoiceParams::max_fin_pitch_rad`]. The fins trim the body
-    /// (`BodyParams::fin_trim_gain`, up to `BodyParams::max_trim_rad`): at 0.8 /
-    /// 1.0 rad (with the trim limit raised as far) a fish at 0.7 of its top
-    /// speed climbs at 50° / 62°, against 32° at 0.5
-    /// (`physical_fish::bend_census::climb_angle_census`). *Feeding* on muscles,
-    /// seeds 1–16, 60 / 132 s, with [`BehaviourParams::max_food_chase_pitch_rad`]
-    /// and the trim limit as far: 398 / 931 plankton at 0.7 with climb effort 1.5,
-    /// 376 / 924 with effort 2, against 357 / 816 as shipped (point masses
-    /// 730 / 1487; `feeding_agility_census`). Not the default: in the default
-    /// reef, bodies blew up at 0.8 and 1.0 (fish outside the tank, seeds 1–16 ×
-    /// 132 s); at 0.7 one fish folded its tail fin on seed 1 with effort 1.5, and
-    /// with effort 1.5 and 2 seeds 1–3 had more collisions than
-    /// `a_long_reef_run_stays_finite_in_the_tank_and_out_of_rocks` allows (67
-    /// in 54 animal-minutes; as shipped 52), though over seeds 1–16 no more than
-    /// as shipped (docs/fish-body.md).
+    /// ([`crate::sim::reef::motor_choice::Gait::Forage`]), radians. 0.7,
+    /// chosen. A food chase sets its fins to the wished climb itself (not to
+    /// twice the error from the body's pitch, as the other gaits do), and the
+    /// fins trim the body (`BodyParams::fin_trim_gain`, up to
+    /// `BodyParams::max_trim_rad` 0.7, the part beyond 0.5 rate-limited,
+    /// `BodyParams::max_trim_rate_rad_per_s`): a fish at 0.7 of its top speed
+    /// climbs at 44° (`physical_fish::bend_census::climb_angle_census`;
+    /// 32° at 0.5). *Feeding* on muscles, 60 / 132 s (`feeding_agility_census`):
+    /// seeds 1–8, 202 / 469 plankton (190 / 450 with 0.5, 165 / 375 with the
+    /// old fin law, 0.5 rad and climb effort 4); seeds 1–16, 420 / 956 (point
+    /// masses 342 / 723 and 730 / 1487). Default reef, seeds 1–40 × 132 s: no
+    /// fold, no body out of the tank. With the old fin law (2 × the error) the
+    /// fins flipped from full climb to full dive from one step to the next and
+    /// at 0.7 folded tail fins; at 0.8 and 1.0 bodies blew up (docs/fish-body.md,
+    /// "Foraging agility").
     pub forage_max_fin_pitch_rad: f32,
 }
 
@@ -368,7 +372,7 @@ impl Default for MotorChoiceParams {
             bob_swim_fraction: 0.15,
             bob_hz: 0.5,
             bob_lift_pitch_rad: 1.1,
-            forage_max_fin_pitch_rad: 0.5,
+            forage_max_fin_pitch_rad: 0.7,
         }
     }
 }
