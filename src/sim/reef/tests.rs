@@ -244,6 +244,25 @@ fn muscle_fish_eat_at_least_55_percent_as_fast_as_point_mass_fish() {
     );
 }
 
+/// Plankton eaten in `secs` of the *Feeding* demo with the default (muscle)
+/// body, summed over `seeds`, each world changed by `tweak` first.
+fn default_feeding_eaten(seeds: &[u64], secs: f32, tweak: impl Fn(&mut ReefWorld)) -> u32 {
+    let mut total = 0;
+    for &seed in seeds {
+        let config = ReefConfig {
+            seed,
+            scene: ReefScene::Feeding,
+            ..ReefConfig::default()
+        };
+        assert_eq!(config.body, ReefBodyKind::Physical, "the default body");
+        let mut w = ReefWorld::new(config);
+        tweak(&mut w);
+        run(&mut w, secs);
+        total += w.counts().food_eaten;
+    }
+    total
+}
+
 #[test]
 fn muscle_fish_that_climb_steeply_eat_more_when_a_climb_costs_them_less() {
     // Two runs of the *Feeding* demo on the default (muscle) body that differ
@@ -255,20 +274,9 @@ fn muscle_fish_that_climb_steeply_eat_more_when_a_climb_costs_them_less() {
     // seeds 1–8: 202 against 170 (60 s), 469 against 407 (132 s;
     // `feeding_agility_census`).
     let eaten = |effort: f32| {
-        let mut total = 0;
-        for seed in [2, 3, 7, 8] {
-            let config = ReefConfig {
-                seed,
-                scene: ReefScene::Feeding,
-                ..ReefConfig::default()
-            };
-            assert_eq!(config.body, ReefBodyKind::Physical, "the default body");
-            let mut w = ReefWorld::new(config);
-            w.params.climb_effort_muscle_body = effort;
-            run(&mut w, 60.0);
-            total += w.counts().food_eaten;
-        }
-        total
+        default_feeding_eaten(&[2, 3, 7, 8], 60.0, |w| {
+            w.params.climb_effort_muscle_body = effort
+        })
     };
     assert_eq!(
         crate::sim::reef::params::ReefParams::default().climb_effort_muscle_body,
@@ -292,20 +300,9 @@ fn muscle_fish_eat_more_when_they_rank_food_by_the_path_round_their_turning_circ
     // 52 plankton against 40; seeds 1–8: 202 against 133 (60 s), 469 against
     // 284 (132 s, more on every seed; `feeding_agility_census`).
     let eaten = |path: bool| {
-        let mut total = 0;
-        for seed in [3, 7] {
-            let config = ReefConfig {
-                seed,
-                scene: ReefScene::Feeding,
-                ..ReefConfig::default()
-            };
-            assert_eq!(config.body, ReefBodyKind::Physical, "the default body");
-            let mut w = ReefWorld::new(config);
-            w.params.turning_path_weight = if path { 0.5 } else { 0.0 };
-            run(&mut w, 60.0);
-            total += w.counts().food_eaten;
-        }
-        total
+        default_feeding_eaten(&[3, 7], 60.0, |w| {
+            w.params.turning_path_weight = if path { 0.5 } else { 0.0 }
+        })
     };
     let (by_path, by_distance) = (eaten(true), eaten(false));
     assert!(
