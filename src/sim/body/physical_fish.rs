@@ -1126,7 +1126,7 @@ mod trim_rate {
     /// full speed with the full bend for 30 s while its fins ask for a trim of
     /// +1 rad and −1 rad in turn every two steps, the trim changing at most
     /// `rate` rad/s beyond the instant part (0: at once).
-    fn flipping(rate: f32) -> (u32, f32, f32) {
+    fn flipping(rate: f32) -> (u32, f32, f32, u32) {
         let mut fish = PhysicalFish::new(BodySpecies::Fish, 0.5, Vec3::ZERO, Vec3::X, 0.3);
         let p = fish.body_mut().params_mut();
         p.max_trim_rad = 1.0;
@@ -1147,11 +1147,8 @@ mod trim_rate {
             spine = spine.min(fish.body().spine_length_m() / 0.5);
         }
         let moved = fish.body().centre_of_mass_m().distance(start);
-        (
-            folds,
-            spine,
-            if moved.is_finite() { moved } else { f32::MAX },
-        )
+        let moved = if moved.is_finite() { moved } else { f32::MAX };
+        (folds, spine, moved, fish.body().mends())
     }
 
     #[test]
@@ -1159,21 +1156,25 @@ mod trim_rate {
         // The cause of the steep chases' failures (docs/fish-body.md, "Foraging
         // agility"): a trim target that switches between nose up and nose down
         // from one step to the next rocks the body until the tail fin folds;
-        // then the body stretches and blows up. Stressed here at ±1 rad every
+        // then the body stretches and tears. Stressed here at ±1 rad every
         // two steps (in the reef it took fins and trims of 0.7 rad and a fish
         // flickering between two intentions). With the trim's part beyond
         // `instant_trim_rad` limited to `max_trim_rate_rad_per_s` (the
         // default) the same fish swims on unharmed.
         let limited = crate::sim::body::BodyParams::default().max_trim_rate_rad_per_s;
         assert!(limited > 0.0);
-        let (folds, spine, moved) = flipping(limited);
+        let (folds, spine, moved, mends) = flipping(limited);
         assert_eq!(folds, 0, "limited: spine {spine}, moved {moved} m");
         assert!(spine > 0.8, "limited: spine {spine}");
         assert!(moved < 10.0, "limited: moved {moved} m in 30 s");
-        let (folds, spine, moved) = flipping(0.0);
+        assert_eq!(mends, 0, "limited: never torn");
+        // Unlimited, the tail folds and the body tears; the safety net
+        // rebuilds it each time (without it, the body blew up to 10²⁸ m).
+        let (folds, spine, moved, mends) = flipping(0.0);
         assert!(
-            folds > 50,
-            "unlimited: {folds} folds, spine {spine}, moved {moved} m"
+            folds > 0 && mends > 0,
+            "unlimited: {folds} folds, {mends} mends, spine {spine}, moved {moved} m"
         );
+        assert!(moved < 20.0, "unlimited: moved {moved} m in 30 s");
     }
 }

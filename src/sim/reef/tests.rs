@@ -1671,7 +1671,8 @@ fn feeding_agility_census() {
             .collect();
         let (mut m60, mut m132) = (0, 0);
         let mut per_seed = String::new();
-        let mut spine = 1.0f32;
+        let (mut spine, mut longest) = (1.0f32, 0.0f32);
+        let mut mends = 0;
         let (mut collisions, mut collisions60) = (0, 0);
         let (mut folds, mut blowups) = (0u32, 0u32);
         let started = std::time::Instant::now();
@@ -1701,7 +1702,9 @@ fn feeding_agility_census() {
                     let tank = *w.tank();
                     for i in 0..w.animals().len() {
                         if let ReefBody::Physical(p) = &w.animals()[i].body {
-                            shortest = shortest.min(p.body().spine_length_m() / p.body_length_m());
+                            let s = p.body().spine_length_m() / p.body_length_m();
+                            shortest = shortest.min(s);
+                            longest = longest.max(s);
                             folds += p.body().tail_fin_folded() as u32;
                             let at = w.animals()[i].body.position_m();
                             blowups += (!at.is_finite() || !tank.contains(at, 0.0)) as u32;
@@ -1710,6 +1713,11 @@ fn feeding_agility_census() {
                 }
             }
             let b = w.counts().food_eaten;
+            for animal in w.animals() {
+                if let ReefBody::Physical(p) = &animal.body {
+                    mends += p.body().mends();
+                }
+            }
             per_seed += &format!(" {a}/{b}");
             collisions += w.counts().fish_collisions;
             collisions60 += c60;
@@ -1718,7 +1726,7 @@ fn feeding_agility_census() {
             m132 += b;
         }
         println!(
-            "{name:28} muscle: {m60:4} in 60 s, {m132:4} in 132 s | spine >= {spine:.2} folds {folds} out {blowups} | collisions {collisions60} / {collisions} |{per_seed} ({:.0} s)",
+            "{name:28} muscle: {m60:4} in 60 s, {m132:4} in 132 s | spine {spine:.2}–{longest:.2} folds {folds} mends {mends} out {blowups} | collisions {collisions60} / {collisions} |{per_seed} ({:.0} s)",
             started.elapsed().as_secs_f32()
         );
     }
