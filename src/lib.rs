@@ -13,6 +13,8 @@
 pub mod app;
 pub mod automation;
 pub mod bench;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod census;
 pub mod clock;
 pub mod experiment;
 pub mod export;

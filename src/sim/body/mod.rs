@@ -9,6 +9,8 @@
 
 pub mod banded_cholesky;
 pub mod body_layout;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod census;
 pub mod drive;
 pub mod fish_body;
 pub mod hydrodynamics;

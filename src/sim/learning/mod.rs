@@ -35,6 +35,8 @@
 
 pub mod abstraction;
 pub mod annealing;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod census;
 #[cfg(test)]
 mod figures;
 pub mod learned_motor;

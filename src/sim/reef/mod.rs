@@ -8,6 +8,8 @@
 //! temperature of the water: `environment`. The reef's tuning: `params`.
 
 pub mod behaviour;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod census;
 pub mod courtship;
 pub mod demos;
 pub mod environment;

@@ -1,0 +1,65 @@
+//! Measurement scripts: the runs whose figures the docs quote (feeding rates on
+//! muscles, the strike census, the body's convergence table, the cost of a
+//! banded solve…). They are not tests: they assert nothing and take minutes, so
+//! they live here, each registered by name, and `shoal-census` runs them:
+//!
+//! ```text
+//! cargo run --release --bin shoal-census              # lists them
+//! cargo run --release --bin shoal-census -- NAME …    # runs those, in order
+//! ```
+//!
+//! Each model folder keeps its own scripts beside the code they measure (in a
+//! `census.rs` of its own, which may reach its folder's internals) and lists them
+//! in a `CENSUSES` table; [`all`] gathers the tables. Native only.
+
+/// One measurement script.
+#[derive(Clone, Copy, Debug)]
+pub struct Census {
+    /// The name `shoal-census` runs it by (kebab-case, unique).
+    pub name: &'static str,
+    /// What it measures and which document quotes it, in one line.
+    pub about: &'static str,
+    /// Runs it, printing its figures to standard output.
+    pub run: fn(),
+}
+
+/// Every registered script, in the order `shoal-census` lists them.
+pub fn all() -> Vec<&'static Census> {
+    [
+        crate::sim::body::census::CENSUSES,
+        crate::sim::reef::census::CENSUSES,
+        crate::sim::learning::census::CENSUSES,
+        APP_CENSUSES,
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}
+
+/// The scripts that measure the app around the simulation (the lab's skips,
+/// the investigations, the frame builder).
+const APP_CENSUSES: &[Census] = &[];
+
+/// The script called `name`.
+pub fn find(name: &str) -> Option<&'static Census> {
+    all().into_iter().find(|c| c.name == name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn census_names_are_unique_and_kebab_case() {
+        let names: Vec<&str> = all().iter().map(|c| c.name).collect();
+        for (i, name) in names.iter().enumerate() {
+            assert!(
+                name.chars()
+                    .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'),
+                "{name} is not kebab-case"
+            );
+            assert!(!names[..i].contains(name), "{name} is registered twice");
+        }
+        assert!(find("no-such-census").is_none());
+    }
+}
