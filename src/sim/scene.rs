@@ -18,6 +18,7 @@ use glam::Vec3;
 use serde::Serialize;
 
 use crate::sim::body::NODE_COUNT;
+pub use crate::sim::common::moment::{FoundMoment, Moment};
 use crate::sim::learning::learning_lab::LearningLab;
 use crate::sim::reef::world::{ReefBody, ReefWorld};
 use crate::sim::{BodySpecies, Obstacle, PhysicalFish, PhysicsWorld, SchoolMetrics, Tank, World};
@@ -41,31 +42,6 @@ pub struct SceneMetrics {
     pub force_frequencies: [f64; 5],
     /// Animals eaten by predators since the start.
     pub catches: u64,
-}
-
-/// The moment a scene is about (the shark's catch, the spawning), which
-/// *Skip to the moment* runs ahead to.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Moment {
-    /// What the student will see, for the button: "the shark's next catch".
-    pub what: &'static str,
-    /// Seconds of the run shown before it (the chase, the approach).
-    pub lead_secs: f64,
-    /// Follow the animal it is about (a catch, a bite), or keep the demo's
-    /// own view (the whole school at the pillar, seen from above).
-    pub follow: bool,
-}
-
-/// A scene's moment, found: when it happens, whom it is about and the log's
-/// line for it.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct FoundMoment {
-    pub time_secs: f64,
-    /// The animal it is about.
-    pub subject: u32,
-    /// Select and follow it (see [`Moment::follow`]).
-    pub follow: bool,
-    pub text: String,
 }
 
 /// A muscle-driven animal to draw with the skinned body.

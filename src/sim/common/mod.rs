@@ -5,6 +5,7 @@
 
 pub mod fish;
 pub mod fmath;
+pub mod moment;
 pub mod obstacle;
 pub mod paper_time;
 pub mod school_metrics;

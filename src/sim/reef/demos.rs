@@ -14,11 +14,11 @@ use super::world::*;
 use crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
 use crate::sim::body::physical_fish::{BodySpecies, PhysicalFish};
 use crate::sim::common::fish::Fish;
+use crate::sim::common::moment::Moment;
 use crate::sim::common::obstacle::Obstacle;
 use crate::sim::reef::mind::{
     FishKind, Focus, Habits, IntentionGenerator, Liking, MentalState, Sex,
 };
-use crate::sim::scene::Moment;
 
 /// The demo scenes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
