@@ -177,7 +177,7 @@ fn main() {
                 scene: Scene::Reef,
                 ..Settings::default()
             };
-            settings.reef = shoal::bench::reef_with_animals(animals);
+            Scene::Reef.class().set_animal_count(&mut settings, animals);
             settings.reef.body = body;
             let mut lab = Lab::new(settings);
             lab.step(20);

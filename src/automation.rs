@@ -314,8 +314,7 @@ impl TankReport {
     fn new(run: &crate::lab::Run, settings: &crate::settings::Settings) -> Self {
         let attention = settings
             .selected_in(run.side())
-            .zip(run.scene().boids())
-            .and_then(|(i, world)| world.attention(i as usize))
+            .and_then(|i| run.scene().attention(i as usize))
             .map(|a| AttentionReport::from(&a));
         Self {
             sample: run.metrics(),

@@ -10,27 +10,18 @@ use crate::settings::physics::PhysicsSettings;
 use crate::settings::reef::ReefSettings;
 use crate::settings::tank::{Preset, TankSettings};
 use crate::settings::{Scene, Settings};
-use crate::sim::reef::demos::ReefScene;
 
-/// Scenes and fish counts the benchmark visits: the wandering aquarium, the boid
-/// layer with the group preset at the 500, 5,000 and 20,000 fish, and the
-/// muscle-driven fish (schooling, no shark) at 10 (the paper's demo), 50 and 200
-/// (the goal: 200 fish at 60 steps/s), and the reef's fish with minds
-/// (muscle bodies, perception with occlusion) at 10, 50 and 200 animals.
-pub const PHASES: [(Scene, u32); 12] = [
-    (Scene::Aquarium, 200),
-    (Scene::Aquarium, 5_000),
-    (Scene::Aquarium, 20_000),
-    (Scene::Boids, 500),
-    (Scene::Boids, 5_000),
-    (Scene::Boids, 20_000),
-    (Scene::Physics, 10),
-    (Scene::Physics, 50),
-    (Scene::Physics, 200),
-    (Scene::Reef, 10),
-    (Scene::Reef, 50),
-    (Scene::Reef, 200),
-];
+/// Scenes and fish counts the benchmark visits, in order: each scene's
+/// [`crate::scenes::SceneClass::bench_counts`].
+pub fn phases() -> Vec<(Scene, u32)> {
+    Scene::ALL
+        .into_iter()
+        .flat_map(|scene| {
+            let counts = scene.class().bench_counts();
+            counts.iter().map(move |&n| (scene, n))
+        })
+        .collect()
+}
 /// Real seconds of rendered frames measured per fish count.
 const FRAMES_PHASE_SECS: f64 = 3.0;
 /// Real seconds of pure simulation stepping measured per fish count.
@@ -84,6 +75,8 @@ const EXPERIMENT_RUNS: usize = 3;
 
 /// Drives the benchmark one frame at a time.
 pub struct Benchmark {
+    /// The scenes and counts to visit ([`phases`]).
+    phases: Vec<(Scene, u32)>,
     next: usize,
     phase_start_secs: Option<f64>,
     frames: u32,
@@ -105,6 +98,7 @@ impl Default for Benchmark {
 impl Benchmark {
     pub fn new() -> Self {
         Self {
+            phases: phases(),
             next: 0,
             phase_start_secs: None,
             frames: 0,
@@ -118,7 +112,7 @@ impl Benchmark {
     }
 
     pub fn is_done(&self) -> bool {
-        self.next >= PHASES.len()
+        self.next >= self.phases.len()
     }
 
     pub fn report(&self) -> BenchReport {
@@ -133,7 +127,7 @@ impl Benchmark {
     /// Called once per frame, before the lab advances. `cpu_secs` is the previous
     /// frame's CPU time, when eframe knows it.
     pub fn frame(&mut self, lab: &mut Lab, now_secs: f64, cpu_secs: Option<f32>) {
-        let Some(&(scene, fish)) = PHASES.get(self.next) else {
+        let Some(&(scene, fish)) = self.phases.get(self.next) else {
             return;
         };
         let Some(start) = self.phase_start_secs else {
@@ -145,16 +139,12 @@ impl Benchmark {
                 show_vision: false,
                 ..lab.settings().clone()
             };
-            settings.left = TankSettings {
-                fish_count: fish,
-                ..TankSettings::with_preset(Preset::Group)
-            };
-            settings.physics = PhysicsSettings {
-                fish_count: fish,
-                sharks: 0,
-                ..PhysicsSettings::default()
-            };
-            settings.reef = reef_with_animals(fish);
+            // The boid layer with the group preset; every other setting as a
+            // teacher first finds it.
+            settings.left = TankSettings::with_preset(Preset::Group);
+            settings.physics = PhysicsSettings::default();
+            settings.reef = ReefSettings::default();
+            scene.class().set_animal_count(&mut settings, fish);
             lab.apply_settings(settings);
             self.sim_steps_per_sec = measure_steps_per_sec(lab);
             self.phase_start_secs = Some(now_secs);
@@ -205,17 +195,6 @@ impl Benchmark {
                 lab.apply_settings(Settings::default());
             }
         }
-    }
-}
-
-/// The Reef demo with `animals` animals in all (its eight non-prey animals and
-/// the rest prey), muscle bodies.
-pub fn reef_with_animals(animals: u32) -> ReefSettings {
-    let others = ReefScene::Reef.animal_count(0) as u32;
-    ReefSettings {
-        demo: ReefScene::Reef,
-        prey_count: Some(animals.saturating_sub(others)),
-        ..ReefSettings::default()
     }
 }
 
@@ -292,7 +271,10 @@ mod tests {
                 .iter()
                 .map(|r| (r.scene, r.fish))
                 .collect::<Vec<_>>(),
-            PHASES.map(|(scene, fish)| (scene.name(), fish)).to_vec()
+            phases()
+                .into_iter()
+                .map(|(scene, fish)| (scene.name(), fish))
+                .collect::<Vec<_>>()
         );
         assert!(
             report

@@ -34,9 +34,6 @@ use crate::lab::{Lab, Run};
 use crate::settings::{Scene, Settings};
 use crate::sim::body::MUSCLE_COUNT;
 use crate::sim::body::body_layout::{MUSCLES, MuscleSegment, Side};
-use crate::sim::learning::learning_lab::LearningLab;
-use crate::sim::reef::world::ReefWorld;
-use crate::sim::scene::SceneWorld;
 
 /// A CSV file to save: its name and its text (`shoal.export_csv()` returns it
 /// as `{name, text}`).
@@ -46,34 +43,13 @@ pub struct CsvExport {
     pub text: String,
 }
 
-/// The reef's one header: `table`, time, then each table's own columns.
-pub const REEF_HEADER: &str = "table,time_s,\
-predators_alive,prey_alive,pacifists_alive,food,prey_eaten,missed_strikes,\
-schooling_prey_eaten,food_eaten,spawnings,fish_collisions,\
-event_kind,event_text,\
-animal,hunger,libido,fear,intention\n";
-
-/// The learning lab's one header: `table`, the drill, then each table's own
-/// columns.
-pub const LEARNING_HEADER: &str = "table,drill,task,\
-annealing_step,current_objective,best_objective,temperature,\
-annealing_steps,objective,energy_in_two_modes\n";
-
-/// The physics fish tank's school, when no fish is selected.
-pub const PHYSICS_SCHOOL_HEADER: &str =
-    "time_s,polarization,milling,nnd_body_lengths,groups,mean_speed_m_per_s\n";
-
-/// The left (or only) tank's scene as a CSV file: one dispatch over the scenes.
+/// The left (or only) tank's scene as a CSV file: the header every file has,
+/// then the scene's own tables ([`crate::scenes::SceneClass::write_csv`]).
 pub fn scene_csv(lab: &Lab) -> CsvExport {
     let settings = lab.settings();
     let run = &lab.runs()[0];
     let mut text = header(settings, run);
-    match run.scene() {
-        SceneWorld::Boids(_) => boids_csv(lab, &mut text),
-        SceneWorld::Physics(_) => physics_csv(run, settings.physics.selected, &mut text),
-        SceneWorld::Reef(reef) => reef_csv(run, reef, settings.reef.selected, &mut text),
-        SceneWorld::Learning(learning) => learning_csv(learning, &mut text),
-    }
+    settings.scene.class().write_csv(lab, &mut text);
     CsvExport {
         name: file_name(settings.scene, run.time_secs()),
         text,
@@ -92,12 +68,12 @@ pub fn file_name(scene: Scene, time_secs: f64) -> String {
 }
 
 /// The last comment line of the files that hold several tables.
-const FILTER_NOTE: &str =
+pub(crate) const FILTER_NOTE: &str =
     "# filter on the first column: a row leaves the other tables' columns empty\n";
 
 /// How often the lab samples `run`'s metrics and for how long it keeps them.
-fn sampling(run: &Run) -> String {
-    let every = run.scene().sample_every_steps() as f64 * run.scene().dt_secs();
+pub(crate) fn sampling(run: &Run) -> String {
+    let every = run.sample_every_steps() as f64 * run.scene().dt_secs();
     format!(
         "every {every:.3} s over the last {:.0} s",
         crate::metrics_history::HISTORY_SECS
@@ -109,7 +85,12 @@ fn header(settings: &Settings, run: &Run) -> String {
     let mut out = String::new();
     let scene = settings.scene;
     // Writing to a String cannot fail.
-    let _ = writeln!(out, "# Shoal data: {} ({})", scene.label(), scene.name());
+    let _ = writeln!(
+        out,
+        "# Shoal data: {} ({})",
+        scene.class().label(),
+        scene.name()
+    );
     let _ = writeln!(
         out,
         "# simulated time: {:.3} s ({} steps)",
@@ -133,16 +114,6 @@ fn header(settings: &Settings, run: &Run) -> String {
     out
 }
 
-/// The aquarium and the schooling lab: the metrics table of every tank shown.
-pub fn boids_csv(lab: &Lab, out: &mut String) {
-    let _ = writeln!(
-        out,
-        "# the school's metrics {}, one row per tank",
-        sampling(&lab.runs()[0])
-    );
-    out.push_str(&lab.metrics_csv());
-}
-
 /// Column names of the twelve muscles, in the order of `body_layout::MUSCLES`:
 /// `front_left_top`, … (segment, side, top = dorsal or bottom = ventral).
 pub fn muscle_columns() -> [String; MUSCLE_COUNT] {
@@ -162,213 +133,15 @@ pub fn muscle_columns() -> [String; MUSCLE_COUNT] {
     })
 }
 
-/// The physics fish: the selected fish's muscles and speed at every step of the
-/// trace the lab keeps; with none selected, the school's metrics.
-pub fn physics_csv(run: &Run, selected: Option<u32>, out: &mut String) {
-    let Some(physics) = run.physics() else {
-        return;
-    };
-    let animal = selected.and_then(|i| Some((i, physics.animals().get(i as usize)?)));
-    let Some((index, fish)) = animal else {
-        out.push_str(
-            "# no fish selected: click a fish, then download again for its twelve muscles \
-             and its speed\n",
-        );
-        let _ = writeln!(out, "# the school's metrics {}", sampling(run));
-        out.push_str(PHYSICS_SCHOOL_HEADER);
-        for s in run.history().samples() {
-            let _ = writeln!(
-                out,
-                "{:.3},{:.4},{:.4},{:.3},{},{:.4}",
-                s.time_secs, s.polarization, s.milling, s.nnd_body_lengths, s.groups, s.mean_speed
-            );
-        }
-        return;
-    };
-    let _ = writeln!(
-        out,
-        "# selected: {} {index} (body length {:.2} m)",
-        fish.species.name(),
-        fish.body_length_m()
-    );
-    let _ = writeln!(
-        out,
-        "# its muscles (0 resting, 1 fully contracted) and speed at every step of the last \
-         {:.0} s since it was selected",
-        crate::lab::BODY_TRACE_SECS
-    );
-    out.push_str("time_s,speed_m_per_s");
-    for name in muscle_columns() {
-        out.push(',');
-        out.push_str(&name);
-    }
-    out.push('\n');
-    for s in run.body_trace() {
-        let _ = write!(out, "{:.3},{:.4}", s.time_secs, s.speed_m_per_s);
-        for u in s.muscles {
-            let _ = write!(out, ",{u:.4}");
-        }
-        out.push('\n');
-    }
-}
-
 /// A text cell, quoted (commas and quotes inside stay in the cell).
-fn quoted(text: &str) -> String {
+pub(crate) fn quoted(text: &str) -> String {
     format!("\"{}\"", text.replace('"', "\"\""))
-}
-
-/// The reef: counts over time, the event log and the selected fish's mind, in
-/// one table told apart by its first column.
-pub fn reef_csv(run: &Run, reef: &ReefWorld, selected: Option<u32>, out: &mut String) {
-    let _ = writeln!(
-        out,
-        "# demo: {}; body: {}",
-        reef.config().scene.label(),
-        match reef.config().body {
-            crate::sim::reef::world::ReefBodyKind::Physical => "muscles",
-            crate::sim::reef::world::ReefBodyKind::PointMass => "points",
-        }
-    );
-    let _ = writeln!(
-        out,
-        "# table counts: living animals by kind and the counters since the start, {}",
-        sampling(run)
-    );
-    let _ = writeln!(
-        out,
-        "# table event: the event log (its latest {} lines)",
-        crate::sim::reef::world::EVENT_LOG_LEN
-    );
-    let _ = writeln!(
-        out,
-        "# table mind: the selected fish's hunger, libido and fear (0 to 1) and intention, \
-         every {} s over its last {:.0} s",
-        crate::sim::reef::world::HISTORY_EVERY_SECS,
-        crate::sim::reef::world::HISTORY_EVERY_SECS * crate::sim::reef::world::HISTORY_LEN as f64
-    );
-    out.push_str(FILTER_NOTE);
-    let mind = selected.and_then(|i| Some((i as usize, reef.animals().get(i as usize)?)));
-    match mind {
-        Some((i, a)) => {
-            let _ = writeln!(out, "# selected: {}", a.name(i));
-        }
-        None => out.push_str(
-            "# no fish selected: click a fish, then download again to add its mind over time\n",
-        ),
-    }
-    out.push_str(REEF_HEADER);
-    for c in run.census() {
-        let n = c.counts;
-        let _ = writeln!(
-            out,
-            "counts,{:.3},{},{},{},{},{},{},{},{},{},{},,,,,,,",
-            c.time_secs,
-            c.predators,
-            c.prey,
-            c.pacifists,
-            c.food,
-            n.prey_eaten,
-            n.missed_strikes,
-            n.schooling_prey_eaten,
-            n.food_eaten,
-            n.spawnings,
-            n.fish_collisions,
-        );
-    }
-    for e in reef.events() {
-        let _ = writeln!(
-            out,
-            "event,{:.3},,,,,,,,,,,{},{},,,,,",
-            e.time_secs,
-            e.kind.name(),
-            quoted(&e.text)
-        );
-    }
-    if let Some((i, a)) = mind {
-        let name = a.name(i);
-        for s in &a.history {
-            let _ = writeln!(
-                out,
-                "mind,{:.3},,,,,,,,,,,,,{name},{:.4},{:.4},{:.4},{}",
-                s.time_secs,
-                s.hunger,
-                s.libido,
-                s.fear,
-                s.intention.label()
-            );
-        }
-    }
-}
-
-/// The learning lab: the current drill's objective after every annealing step
-/// and the drills learned so far.
-pub fn learning_csv(learning: &LearningLab, out: &mut String) {
-    let trainer = learning.trainer();
-    let drills = learning.drills();
-    // Once every drill is learned the trainer holds the last one's history.
-    let drill = learning
-        .current_drill()
-        .unwrap_or(drills.len().saturating_sub(1));
-    let _ = writeln!(
-        out,
-        "# learner: {}; {} tries per drill; drill {} of {} in training{}",
-        learning.species().name(),
-        learning.annealing_steps(),
-        drill + 1,
-        drills.len(),
-        if learning.current_drill().is_none() {
-            " (all learned)"
-        } else {
-            ""
-        }
-    );
-    out.push_str(
-        "# table training: after every annealing step of the drill in training, the \
-         objective E (lower is better) of the controls the annealer holds and of the best \
-         so far, and the temperature\n",
-    );
-    out.push_str(
-        "# table finished: each learned drill's objective, its annealing steps and the \
-         share of its controls' energy in the two main rhythms\n",
-    );
-    out.push_str(FILTER_NOTE);
-    out.push_str(LEARNING_HEADER);
-    let task = drills
-        .get(drill)
-        .map(|t| quoted(&t.label()))
-        .unwrap_or_default();
-    for h in trainer.history() {
-        let _ = writeln!(
-            out,
-            "training,{},{task},{},{:.6},{:.6},{:.6},,,",
-            drill + 1,
-            h.evaluation,
-            h.current_objective,
-            h.best_objective,
-            h.temperature
-        );
-    }
-    for (k, finished) in learning.finished_drills().iter().enumerate() {
-        let task = drills
-            .get(k)
-            .map(|t| quoted(&t.label()))
-            .unwrap_or_default();
-        let energy = learning.abstraction(k).map_or(String::new(), |a| {
-            format!("{:.4}", a.controller.energy_fraction)
-        });
-        let _ = writeln!(
-            out,
-            "finished,{},{task},,,,,{},{:.6},{energy}",
-            k + 1,
-            finished.annealing_steps,
-            finished.objective,
-        );
-    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scenes::{LEARNING_HEADER, PHYSICS_SCHOOL_HEADER, REEF_HEADER};
 
     /// The settings the file's link reopens.
     fn linked_settings(text: &str) -> Settings {
@@ -419,7 +192,7 @@ mod tests {
         let text = &export.text;
         assert!(text.starts_with("# Shoal data: "), "{text}");
         let scene = lab.settings().scene;
-        assert!(text.lines().next().unwrap().contains(scene.label()));
+        assert!(text.lines().next().unwrap().contains(scene.class().label()));
         let t = format!("# simulated time: {:.3} s", lab.runs()[0].time_secs());
         assert!(text.contains(&t), "{t} in {text}");
         assert!(text.contains(&format!("# seed: {}\n", lab.settings().seed)));

@@ -133,7 +133,7 @@ impl Lab {
 
     /// Does this scene show two tanks?
     pub fn comparing(&self) -> bool {
-        self.settings.scene == Scene::Boids && self.settings.compare
+        self.wanted_runs() == 2
     }
 
     /// Replaces the settings, doing what each change means: a new seed, scene or
@@ -155,8 +155,11 @@ impl Lab {
         let rebuild = before.seed != self.settings.seed
             || before.scene != self.settings.scene
             || before.learning.training_key() != self.settings.learning.training_key()
-            || (self.settings.scene == Scene::Reef
-                && before.reef.rebuild_key() != self.settings.reef.rebuild_key())
+            || self
+                .settings
+                .scene
+                .class()
+                .needs_rebuild(&before, &self.settings)
             || self.runs.len() != self.wanted_runs();
         let unpaused = before.paused && !self.settings.paused;
         if self.skip.is_some() && (rebuild || !skip::skip_survives(&before, &self.settings)) {
@@ -175,7 +178,7 @@ impl Lab {
     }
 
     fn wanted_runs(&self) -> usize {
-        if self.comparing() { 2 } else { 1 }
+        self.settings.scene.class().tanks(&self.settings)
     }
 
     fn rebuild(&mut self) {

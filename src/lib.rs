@@ -23,6 +23,7 @@ pub mod lab;
 pub mod metrics_history;
 #[allow(clippy::disallowed_methods)] // drawing only (see `app`)
 pub mod render;
+pub mod scenes;
 pub mod settings;
 pub mod sim;
 #[allow(clippy::disallowed_methods)] // drawing only (see `app`)

@@ -21,7 +21,7 @@ use std::fmt::Write as _;
 
 use serde_json::Value;
 
-use crate::experiment::design::{Plan, Summary, acting_section, settings_value};
+use crate::experiment::design::{Plan, Summary, settings_value};
 use crate::experiment::runner::RunResult;
 
 /// The first line of every experiment CSV.
@@ -89,7 +89,7 @@ fn header_lines(plan: &Plan) -> String {
         plan.warmup_steps,
         plan.measure_steps,
         plan.dt_secs,
-        scene.label(),
+        scene.class().label(),
         scene.name()
     );
     let _ = writeln!(
@@ -112,7 +112,7 @@ fn one_line(text: &str) -> String {
 /// …); not the seed (its own column) nor the factors (theirs).
 fn setting_columns(plan: &Plan) -> Vec<String> {
     let value = settings_value(&plan.base);
-    let section = acting_section(plan.base.scene);
+    let section = plan.base.scene.class().settings_section();
     let mut keys = vec!["scene".to_owned()];
     if let Some(inner) = value.get(section) {
         flatten_keys(section, inner, &mut keys);

@@ -211,10 +211,10 @@ impl Design {
         }
         let seeds = self.seeds()?;
         let measures = self.measures(scene)?;
-        let dt_secs = scene_dt_secs(scene);
+        let dt_secs = scene.class().step_secs();
         let warmup_steps = steps_of("warmup_secs", self.warmup_secs, dt_secs, true)?;
         let measure_steps = steps_of("measure_secs", self.measure_secs, dt_secs, false)?;
-        let sample_every_steps = sample_every_steps(scene);
+        let sample_every_steps = scene.class().sample_every_steps();
         let first_sample = (warmup_steps / sample_every_steps + 1) * sample_every_steps;
         if first_sample > warmup_steps + measure_steps {
             return Err(DesignError::new(
@@ -372,7 +372,7 @@ impl Design {
                     format!(
                         "'{}' is not measured in the {} ({}); there: {}",
                         measure.name(),
-                        scene.label(),
+                        scene.class().label(),
                         scene.name(),
                         if known.is_empty() {
                             "nothing".to_owned()
@@ -444,20 +444,9 @@ pub fn patch_for(key: &str, value: Value) -> Value {
     })
 }
 
-/// The part of the settings that acts in `scene`: its keys start with this and
-/// a dot (the aquarium's tank uses only its fish count).
-pub fn acting_section(scene: Scene) -> &'static str {
-    match scene {
-        Scene::Aquarium | Scene::Boids => "left",
-        Scene::Physics => "physics",
-        Scene::Reef => "reef",
-        Scene::Learning => "learning",
-    }
-}
-
 /// Why a factor on `key` would change nothing in `scene`, if it would not.
 fn inert_reason(key: &str, scene: Scene) -> Option<String> {
-    let section = acting_section(scene);
+    let section = scene.class().settings_section();
     match key {
         "seed" => return Some("seeds are the replicates: set them in replicates".into()),
         "speed" | "paused" | "show_vision" | "compare" => {
@@ -472,15 +461,10 @@ fn inert_reason(key: &str, scene: Scene) -> Option<String> {
         }
         _ => {}
     }
-    let acts = if scene == Scene::Aquarium {
-        key == "left.fish_count"
-    } else {
-        key.starts_with(&format!("{section}."))
-    };
-    (!acts).then(|| {
+    (!scene.class().acts(key)).then(|| {
         format!(
             "'{key}' does not act in the {} ({}); its settings there are under '{section}.'",
-            scene.label(),
+            scene.class().label(),
             scene.name()
         )
     })
@@ -665,39 +649,6 @@ fn steps_of(field: &str, secs: f64, dt_secs: f64, zero_ok: bool) -> Result<u64, 
     Ok((secs / dt_secs).round() as u64)
 }
 
-/// One step of `scene`, seconds (the lab's clock: 1/60 s for the boid scenes,
-/// the fish world's 0.055 s for the others).
-pub fn scene_dt_secs(scene: Scene) -> f64 {
-    match scene {
-        Scene::Aquarium | Scene::Boids => f64::from(crate::sim::World::DT_SECS),
-        Scene::Physics | Scene::Reef | Scene::Learning => {
-            f64::from(crate::sim::common::paper_time::FISH_STEP_SECS)
-        }
-    }
-}
-
-/// Steps between two metrics samples in `scene` (see [`crate::sim::scene`]).
-pub fn sample_every_steps(scene: Scene) -> u64 {
-    match scene {
-        Scene::Aquarium | Scene::Boids => crate::sim::scene::BOID_SAMPLE_EVERY_STEPS,
-        Scene::Physics | Scene::Reef | Scene::Learning => {
-            crate::sim::scene::FISH_WORLD_SAMPLE_EVERY_STEPS
-        }
-    }
-}
-
-/// Native seconds of one animal-step on one core, per scene: measured with
-/// `shoal-lab bench` on the development machine (docs/benchmarks.md).
-fn secs_per_animal_step(scene: Scene) -> f64 {
-    match scene {
-        Scene::Aquarium => 0.5e-6,
-        Scene::Boids => 0.9e-6,
-        Scene::Physics => 90e-6,
-        Scene::Reef => 75e-6,
-        Scene::Learning => 90e-6,
-    }
-}
-
 impl Plan {
     /// Runs in all: levels of each factor × seeds.
     pub fn run_count(&self) -> usize {
@@ -784,7 +735,7 @@ impl Plan {
             steps_per_run,
             total_steps: steps_per_run * runs.len() as u64,
             animal_steps,
-            secs_one_core: animal_steps * secs_per_animal_step(self.base.scene),
+            secs_one_core: animal_steps * self.base.scene.class().secs_per_animal_step(),
         }
     }
 }

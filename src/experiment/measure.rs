@@ -3,8 +3,6 @@
 //! ([`Summary`]).
 
 use crate::settings::Scene;
-use crate::sim::SceneWorld;
-use crate::sim::reef::mind::habits::FishKind;
 
 /// Measures and summaries travel by name (`"polarization"`, `"mean"`), as in
 /// experiment files and the CSV.
@@ -32,7 +30,7 @@ pub enum Measure {
     MeanSpeed,
     /// How far the average fish of the school swam in the measuring window
     /// (metres): the fish's mean speed added up step by step (see
-    /// [`school_mean_speed_m_per_s`]).
+    /// [`crate::sim::SceneWorld::school_mean_speed_m_per_s`]).
     DistanceSwum,
     /// Prey caught by sharks (schooling lab) or predators (reef).
     Catches,
@@ -95,52 +93,10 @@ impl Measure {
         )
     }
 
-    /// Does `scene` measure it? The school's metrics: every scene with a school
-    /// (not the learning lab); catches: the schooling lab (sharks) and the reef;
-    /// the census: the reef.
+    /// Does `scene` measure it ([`crate::scenes::SceneClass::measures`])?
     pub fn available_in(self, scene: Scene) -> bool {
-        match self {
-            Self::Polarization
-            | Self::Milling
-            | Self::NndBodyLengths
-            | Self::Groups
-            | Self::MeanSpeed
-            | Self::DistanceSwum => scene != Scene::Learning,
-            Self::Catches => matches!(scene, Scene::Boids | Scene::Reef),
-            Self::FoodEaten
-            | Self::Spawnings
-            | Self::MissedStrikes
-            | Self::FishCollisions
-            | Self::PreyAlive => scene == Scene::Reef,
-        }
+        scene.class().measures().contains(&self)
     }
-}
-
-/// The mean speed now (m/s) of the fish the school's metrics measure: the
-/// schooling lab's and the aquarium's fish (not sharks or stingrays), the
-/// physics tank's fish (not sharks), the reef's living prey. `None` in the
-/// learning lab, which has no school. Speeds are over the ground, as the
-/// metrics' mean speed (a fish drifting with the current travels too).
-pub fn school_mean_speed_m_per_s(scene: &SceneWorld) -> Option<f64> {
-    let (sum, n) = match scene {
-        SceneWorld::Boids(w) => w.fish().iter().fold((0.0, 0usize), |(s, n), f| {
-            (s + f64::from(f.velocity_m_per_s.length()), n + 1)
-        }),
-        SceneWorld::Physics(w) => w.animals()[..w.fish_count()]
-            .iter()
-            .fold((0.0, 0usize), |(s, n), a| {
-                (s + f64::from(a.point.velocity_m_per_s.length()), n + 1)
-            }),
-        SceneWorld::Reef(w) => w
-            .animals()
-            .iter()
-            .filter(|a| a.alive && a.habits.kind == FishKind::Prey)
-            .fold((0.0, 0usize), |(s, n), a| {
-                (s + f64::from(a.body.velocity_m_per_s().length()), n + 1)
-            }),
-        SceneWorld::Learning(_) => return None,
-    };
-    Some(if n == 0 { 0.0 } else { sum / n as f64 })
 }
 
 /// How a run's samples over the measuring window become the CSV's values.

@@ -137,7 +137,7 @@ impl ExperimentRun {
             steps = self.lab.runs()[0].steps();
             if self.tracks_distance && measuring {
                 let scene = self.lab.runs()[0].scene();
-                let speed = crate::experiment::measure::school_mean_speed_m_per_s(scene);
+                let speed = scene.school_mean_speed_m_per_s();
                 self.distance_swum_m += speed.unwrap_or(0.0) * scene.dt_secs();
             }
             if steps == self.warmup_steps {

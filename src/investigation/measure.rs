@@ -364,7 +364,7 @@ impl AlignmentRun {
         }
         if let Some(fish) = lab.settings().left.selected
             && !self.inspected.iter().any(|&(f, _)| f == fish)
-            && let Some(attention) = run.boids().and_then(|w| w.attention(fish as usize))
+            && let Some(attention) = run.scene().attention(fish as usize)
         {
             self.inspected.push((fish, attention.neighbours.len()));
         }

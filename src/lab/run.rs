@@ -7,13 +7,13 @@ use glam::Vec3;
 use std::collections::VecDeque;
 
 use crate::metrics_history::{MetricsHistory, MetricsSample};
-use crate::settings::{Scene, Settings, Side};
+use crate::settings::{Settings, Side};
 use crate::sim::body::{MUSCLE_COUNT, NODE_COUNT};
 use crate::sim::learning::learning_lab::LearningLab;
 use crate::sim::reef::report::ReefCensus;
 use crate::sim::reef::world::ReefWorld;
 use crate::sim::scene::{SceneWorld, centre};
-use crate::sim::{HandCommand, PhysicsConfig, PhysicsWorld, World, WorldConfig};
+use crate::sim::{PhysicsWorld, World};
 
 /// Seconds of the selected fish's muscles and speed kept for the plots.
 pub const BODY_TRACE_SECS: f64 = 10.0;
@@ -43,6 +43,9 @@ pub struct Run {
     body_trace: VecDeque<BodySample>,
     traced: Option<u32>,
     pub(super) history: MetricsHistory,
+    /// Steps between two metrics samples (the scene's
+    /// [`crate::scenes::SceneClass::sample_every_steps`]).
+    sample_every_steps: u64,
     /// The scene's counts at each metrics sample over the last
     /// [`crate::metrics_history::HISTORY_SECS`] (the reef; see
     /// [`SceneWorld::census`]), oldest first.
@@ -66,7 +69,7 @@ impl Run {
     ) -> Self {
         let mut run = Self {
             side,
-            scene: build_scene(settings, side, learning),
+            scene: settings.scene.class().build(settings, side, learning),
             previous_positions_m: Vec::new(),
             previous_nodes_m: Vec::new(),
             body_trace: VecDeque::new(),
@@ -74,7 +77,12 @@ impl Run {
             history: MetricsHistory::default(),
             census: VecDeque::new(),
             generation,
-            obstacles_from_settings: world_config(settings, side).obstacles,
+            sample_every_steps: settings.scene.class().sample_every_steps(),
+            obstacles_from_settings: settings
+                .scene
+                .class()
+                .boid_tank(settings, side)
+                .and_then(|tank| tank.config.obstacles),
             obstacle_edits: 0,
         };
         run.snapshot();
@@ -203,6 +211,11 @@ impl Run {
         (self.generation << 32) | (self.obstacle_edits & 0xFFFF_FFFF)
     }
 
+    /// Steps between two metrics samples.
+    pub fn sample_every_steps(&self) -> u64 {
+        self.sample_every_steps
+    }
+
     /// The metrics of the last minutes.
     pub fn history(&self) -> &MetricsHistory {
         &self.history
@@ -233,11 +246,7 @@ impl Run {
                 sample_of(fish, self.scene.time_secs()),
             );
         }
-        if self
-            .scene
-            .steps()
-            .is_multiple_of(self.scene.sample_every_steps())
-        {
+        if self.scene.steps().is_multiple_of(self.sample_every_steps) {
             self.sample_metrics();
         }
     }
@@ -270,34 +279,6 @@ impl Run {
         self.scene.nodes_m(&mut self.previous_nodes_m);
     }
 
-    /// Follows the physics scene's settings: counts, behaviour, current, the
-    /// selected fish's hand command.
-    fn follow_physics(physics: &mut PhysicsWorld, settings: &Settings) -> bool {
-        let wanted = &settings.physics;
-        let counts = (wanted.fish_count as usize, wanted.sharks as usize);
-        let recount = counts != (physics.fish_count(), physics.shark_count());
-        if recount {
-            physics.set_counts(counts.0, counts.1);
-        }
-        if physics.behaviour() != wanted.behaviour {
-            physics.set_behaviour(wanted.behaviour);
-        }
-        if physics.current().strength_m_per_s != wanted.current_m_per_s {
-            physics.set_current(wanted.current_m_per_s);
-        }
-        let hand = wanted.selected.filter(|_| wanted.hand_control).map(|i| {
-            (
-                i as usize,
-                HandCommand {
-                    speed_fraction: wanted.hand_speed,
-                    pitch_rad: wanted.hand_pitch_deg.to_radians(),
-                },
-            )
-        });
-        physics.set_hand_command(hand);
-        recount
-    }
-
     /// Starts a turn of `angle_deg` (+ left) on physical animal `index`.
     pub(super) fn turn(&mut self, index: usize, angle_deg: f32) {
         if let SceneWorld::Physics(physics) = &mut self.scene {
@@ -305,112 +286,25 @@ impl Run {
         }
     }
 
-    /// Follows the reef scene's live settings (water, minds).
-    fn follow_reef(reef: &mut ReefWorld, settings: &Settings) {
-        let wanted = &settings.reef;
-        if reef.config().visibility_m != wanted.visibility_m {
-            reef.set_visibility(wanted.visibility_m);
-        }
-        if reef.config().current_m_per_s != wanted.current_m_per_s {
-            reef.set_current(wanted.current_m_per_s);
-        }
-        if reef.config().traits != wanted.traits {
-            reef.set_traits(wanted.traits);
-        }
-    }
-
-    /// Follows the schooling lab's settings for this tank: counts, boid layer,
-    /// species and obstacles. Returns whether animals came or went.
-    fn follow_boids(&mut self, settings: &Settings) -> bool {
-        let SceneWorld::Boids(world) = &mut self.scene else {
-            return false;
-        };
-        let mut recount = false;
-        let tank = settings.tank(self.side);
-        let fish_count = tank.fish_count as usize;
-        if fish_count != world.fish().len() {
-            world.set_fish_count(fish_count);
-            recount = true;
-        }
-        let boids = boid_params(settings, self.side);
-        if world.boids() != boids.as_ref() {
-            world.set_boids(boids);
-        }
-        let config = world_config(settings, self.side);
-        if (config.sharks, config.stingrays) != (world.sharks().len(), world.stingrays().len()) {
-            world.set_species_counts(config.sharks, config.stingrays);
-            recount = true;
-        }
-        if config.obstacles.as_ref() != self.obstacles_from_settings.as_ref() {
-            world.set_obstacles(match &config.obstacles {
-                Some(obstacles) => obstacles.clone(),
-                // Back to the seed's layout.
-                None => World::seeded_obstacles(config.seed),
-            });
-            self.obstacles_from_settings = config.obstacles;
-            self.obstacle_edits += 1;
-        }
-        recount
-    }
-
     /// Follows new settings for this tank without restarting where possible.
     pub(super) fn follow(&mut self, settings: &Settings) {
-        let (recount, selected) = match &mut self.scene {
-            SceneWorld::Boids(_) => (self.follow_boids(settings), None),
-            SceneWorld::Physics(physics) => (
-                Self::follow_physics(physics, settings),
-                settings.physics.selected,
-            ),
-            SceneWorld::Reef(reef) => {
-                Self::follow_reef(reef, settings);
-                (false, settings.reef.selected)
-            }
-            // The lab applies the learning settings itself.
-            SceneWorld::Learning(_) => (false, None),
-        };
+        let class = settings.scene.class();
+        let followed = class.follow(
+            &mut self.scene,
+            settings,
+            self.side,
+            &mut self.obstacles_from_settings,
+        );
+        if followed.obstacles {
+            self.obstacle_edits += 1;
+        }
+        let (recount, selected) = (followed.recount, class.selected(settings, self.side));
         if recount {
             self.snapshot();
         }
         if self.traced != selected {
             self.traced = selected;
             self.body_trace.clear();
-        }
-    }
-}
-
-/// The world of `settings`' scene for tank `side`.
-fn build_scene(settings: &Settings, side: Side, learning: &mut Option<LearningLab>) -> SceneWorld {
-    match settings.scene {
-        Scene::Aquarium | Scene::Boids => {
-            let mut world = World::new(world_config(settings, side));
-            world.set_boids(boid_params(settings, side));
-            SceneWorld::Boids(Box::new(world))
-        }
-        Scene::Physics => SceneWorld::Physics(PhysicsWorld::new(physics_config(settings))),
-        Scene::Reef => SceneWorld::Reef(ReefWorld::new(settings.reef.config(settings.seed))),
-        Scene::Learning => {
-            let wanted = &settings.learning;
-            // The lab kept while another scene was shown, if it is the same
-            // training.
-            let kept = learning.take().filter(|l| {
-                l.species() == wanted.species
-                    && l.annealing_steps() == u64::from(wanted.annealing_steps)
-                    && l.seed() == settings.seed
-            });
-            let mut learning = kept.unwrap_or_else(|| {
-                // Open water for the learners: no rocks.
-                LearningLab::new(
-                    wanted.species,
-                    u64::from(wanted.annealing_steps),
-                    settings.seed,
-                    wanted.controller,
-                    &crate::sim::Tank::default(),
-                )
-            });
-            if learning.controller() != wanted.controller {
-                learning.set_controller(wanted.controller);
-            }
-            SceneWorld::Learning(Box::new(learning))
         }
     }
 }
@@ -433,39 +327,4 @@ fn push_trace(trace: &mut VecDeque<BodySample>, sample: BodySample) {
     {
         trace.pop_front();
     }
-}
-
-fn physics_config(settings: &Settings) -> PhysicsConfig {
-    let physics = &settings.physics;
-    PhysicsConfig {
-        seed: settings.seed,
-        fish_count: physics.fish_count as usize,
-        sharks: physics.sharks as usize,
-        behaviour: physics.behaviour,
-        current_m_per_s: physics.current_m_per_s,
-        // The seed's rocks, as the schooling lab's tank has them.
-        obstacles: World::seeded_obstacles(settings.seed),
-    }
-}
-
-fn world_config(settings: &Settings, side: Side) -> WorldConfig {
-    let tank = settings.tank(side);
-    let boids = settings.scene == Scene::Boids;
-    WorldConfig {
-        seed: settings.seed,
-        // The aquarium and the schooling lab (other scenes build no boid world).
-        fish_count: if matches!(settings.scene, Scene::Aquarium | Scene::Boids) {
-            tank.fish_count as usize
-        } else {
-            0
-        },
-        // Predators, stingrays and edited rocks belong to the schooling lab.
-        sharks: if boids { tank.sharks as usize } else { 0 },
-        stingrays: if boids { tank.stingrays as usize } else { 0 },
-        obstacles: if boids { tank.obstacles.clone() } else { None },
-    }
-}
-
-fn boid_params(settings: &Settings, side: Side) -> Option<crate::sim::BoidParams> {
-    (settings.scene == Scene::Boids).then(|| settings.tank(side).boid_params())
 }

@@ -22,9 +22,7 @@ use super::orbit_camera::OrbitCamera;
 use super::scene_renderer::{FishInstance, SceneCallback, SceneUniforms, StaticScene, ViewCache};
 use crate::lab::Run;
 use crate::sim::BodySpecies;
-use crate::sim::reef::mind::FishKind;
-use crate::sim::reef::world::{ReefBody, ReefWorld};
-use crate::sim::scene::BodyToDraw;
+use crate::sim::scene::{BodyToDraw, PointShape, Scenery};
 
 /// Fish drawn shorter than this (physical pixels, snout to tail root) use the
 /// low-poly mesh. Chosen by eye: below about 30 pixels the two meshes are hard to
@@ -83,17 +81,7 @@ fn build_bodies(
     out.vertices.clear();
     out.indices.clear();
     let scene = run.scene();
-    if let Some(learning) = scene.learning() {
-        mesh::append_particles(
-            out,
-            &learning.buoys_m(),
-            BUOY_DRAWN_RADIUS_M,
-            mesh::BUOY_RGB,
-        );
-    }
-    if let Some(reef) = scene.reef() {
-        append_reef_scenery(reef, out);
-    }
+    append_scenery(&scene.scenery(), out);
     let animals = scene.bodies_to_draw();
     if animals.is_empty() {
         return;
@@ -122,20 +110,19 @@ fn build_bodies(
     }
 }
 
-/// Plankton and seaweed of the reef, lit with their vertex colours.
-fn append_reef_scenery(reef: &ReefWorld, out: &mut Mesh) {
-    let food: Vec<Vec3> = reef.food().iter().map(|f| f.position_m).collect();
-    mesh::append_particles(out, &food, PLANKTON_DRAWN_RADIUS_M, mesh::FOOD_RGB);
-    for (k, weed) in reef.seaweed().iter().enumerate() {
+/// Plankton, buoys and seaweed, lit with their vertex colours.
+fn append_scenery(scenery: &Scenery, out: &mut Mesh) {
+    mesh::append_particles(
+        out,
+        &scenery.plankton_m,
+        PLANKTON_DRAWN_RADIUS_M,
+        mesh::FOOD_RGB,
+    );
+    mesh::append_particles(out, &scenery.buoys_m, BUOY_DRAWN_RADIUS_M, mesh::BUOY_RGB);
+    for (k, weed) in scenery.seaweed_m.iter().enumerate() {
         let angle = k as f32 * 2.4;
         let across = Vec3::new(angle.cos(), 0.0, angle.sin());
-        mesh::append_ribbon(
-            out,
-            &weed.nodes_m,
-            SEAWEED_WIDTH_M,
-            across,
-            mesh::SEAWEED_RGB,
-        );
+        mesh::append_ribbon(out, weed, SEAWEED_WIDTH_M, across, mesh::SEAWEED_RGB);
     }
 }
 
@@ -190,81 +177,57 @@ impl FrameBuilder {
 
         let eye = camera.eye_m();
         let drawn = run.drawn_positions_m(alpha);
-        let detailed = if let Some(reef) = scene.reef() {
-            let (fish, sharks) = (
-                Arc::make_mut(&mut view.fish),
-                Arc::make_mut(&mut view.sharks),
-            );
-            fish.clear();
-            sharks.clear();
-            for (i, a) in reef.animals().iter().enumerate() {
-                let ReefBody::Point(f) = &a.body else {
-                    continue;
-                };
-                if !a.alive {
-                    continue;
+        // Near fish from the front of the list, far ones from the back; sharks
+        // and stingrays each in their own list.
+        let focal_px = size_px[1] as f32 / (2.0 * (camera.fov_y_rad * 0.5).tan());
+        let lod_below = FISH_LOD_BELOW_PX / focal_px.max(1e-3);
+        let points = scene.points_to_draw();
+        let count = points
+            .iter()
+            .filter(|p| p.shape == PointShape::Fish)
+            .count();
+        let fish = Arc::make_mut(&mut view.fish);
+        fish.clear();
+        fish.resize(count, FishInstance::zeroed());
+        let sharks = Arc::make_mut(&mut view.sharks);
+        sharks.clear();
+        let rays = Arc::make_mut(&mut view.rays);
+        rays.clear();
+        let (mut near, mut far) = (0, count);
+        for point in &points {
+            let position = drawn[point.index];
+            match point.shape {
+                PointShape::Fish => {
+                    let instance = instance(point.body, position, livery(point.hue).rgba());
+                    // Drawn length ≈ focal × length / distance, compared without a root.
+                    let length = point.body.body_length_m;
+                    if length * length >= lod_below * lod_below * position.distance_squared(eye) {
+                        fish[near] = instance;
+                        near += 1;
+                    } else {
+                        far -= 1;
+                        fish[far] = instance;
+                    }
                 }
-                if a.habits.kind == FishKind::Predator {
-                    sharks.push(instance(f, drawn[i], shark_livery(a.hue).rgba()));
-                } else {
-                    fish.push(instance(f, drawn[i], livery(a.hue).rgba()));
-                }
-            }
-            Arc::make_mut(&mut view.rays).clear();
-            fish.len()
-        } else if let Some(world) = scene.boids() {
-            // Near fish from the front of the list, far ones from the back.
-            let focal_px = size_px[1] as f32 / (2.0 * (camera.fov_y_rad * 0.5).tan());
-            let lod_below = FISH_LOD_BELOW_PX / focal_px.max(1e-3);
-            let fish = Arc::make_mut(&mut view.fish);
-            let count = world.fish().len();
-            fish.clear();
-            fish.resize(count, FishInstance::zeroed());
-            let (mut near, mut far) = (0, count);
-            for (i, f) in world.fish().iter().enumerate() {
-                let position = drawn[i];
-                let instance = instance(f, position, livery(f.hue).rgba());
-                // Drawn length ≈ focal × length / distance, compared without a root.
-                let length = f.body_length_m;
-                if length * length >= lod_below * lod_below * position.distance_squared(eye) {
-                    fish[near] = instance;
-                    near += 1;
-                } else {
-                    far -= 1;
-                    fish[far] = instance;
+                PointShape::Shark => sharks.push(instance(
+                    point.body,
+                    position,
+                    shark_livery(point.hue).rgba(),
+                )),
+                PointShape::Stingray => {
+                    rays.push(instance(point.body, position, ray_livery(point.hue).rgba()));
                 }
             }
-            // Beyond the budget, only the nearest keep the full mesh.
-            let mut detailed = near;
-            if detailed > MAX_DETAILED_FISH {
-                let distance = |f: &FishInstance| Vec3::from(f.position_m).distance_squared(eye);
-                fish[..near].select_nth_unstable_by(MAX_DETAILED_FISH, |a, b| {
-                    distance(a).total_cmp(&distance(b))
-                });
-                detailed = MAX_DETAILED_FISH;
-            }
-            // Sharks and stingrays follow the fish in the scene's numbering.
-            let sharks = Arc::make_mut(&mut view.sharks);
-            sharks.clear();
-            sharks.extend(world.sharks().iter().enumerate().map(|(i, shark)| {
-                let f = &shark.body;
-                instance(f, drawn[count + i], shark_livery(f.hue).rgba())
-            }));
-            let first_ray = count + world.sharks().len();
-            let rays = Arc::make_mut(&mut view.rays);
-            rays.clear();
-            rays.extend(world.stingrays().iter().enumerate().map(|(i, ray)| {
-                let f = &ray.body;
-                instance(f, drawn[first_ray + i], ray_livery(f.hue).rgba())
-            }));
-            detailed
-        } else {
-            // Only skinned bodies (below).
-            for list in [&mut view.fish, &mut view.sharks, &mut view.rays] {
-                Arc::make_mut(list).clear();
-            }
-            0
-        };
+        }
+        // Beyond the budget, only the nearest keep the full mesh.
+        let mut detailed = near;
+        if detailed > MAX_DETAILED_FISH {
+            let distance = |f: &FishInstance| Vec3::from(f.position_m).distance_squared(eye);
+            fish[..near].select_nth_unstable_by(MAX_DETAILED_FISH, |a, b| {
+                distance(a).total_cmp(&distance(b))
+            });
+            detailed = MAX_DETAILED_FISH;
+        }
 
         build_bodies(
             &mut self.skins,
@@ -363,6 +326,40 @@ mod tests {
         let focal_px = height_px as f32 / (2.0 * (camera.fov_y_rad * 0.5).tan());
         let distance = Vec3::from(f.position_m).distance(camera.eye_m());
         f.body_length_m * focal_px / distance
+    }
+
+    #[test]
+    fn every_scene_draws_each_animal_once_as_its_world_says() {
+        use crate::settings::Scene;
+        use crate::sim::reef::world::ReefBodyKind;
+        for scene in Scene::ALL {
+            let mut settings = Settings {
+                scene,
+                ..Settings::default()
+            };
+            settings.left.sharks = 1;
+            settings.left.stingrays = 2;
+            settings.physics.sharks = 1;
+            settings.reef.body = ReefBodyKind::PointMass;
+            let lab = Lab::new(settings);
+            let tank = lab.scene().tank();
+            let camera = OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0);
+            let frame =
+                FrameBuilder::default().build(&lab.runs()[0], 1.0, &camera, [800, 450], 0.0, 0);
+            let world = lab.scene();
+            let drawn = frame.fish.len() + frame.sharks.len() + frame.rays.len();
+            let skinned = world.bodies_to_draw().len();
+            // Every animal in the tank is drawn once: as an instance or a skin.
+            assert_eq!(drawn + skinned, world.animal_count(), "{scene:?}");
+            assert!(frame.fish.len() + skinned > 0, "{scene:?} draws no fish");
+            let scenery = world.scenery();
+            let particles = scenery.plankton_m.len() + scenery.buoys_m.len();
+            assert_eq!(
+                !frame.bodies.indices.is_empty(),
+                skinned > 0 || particles > 0 || !scenery.seaweed_m.is_empty(),
+                "{scene:?}"
+            );
+        }
     }
 
     #[test]

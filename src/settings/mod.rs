@@ -63,42 +63,6 @@ impl Scene {
             Self::Learning => "learning",
         }
     }
-
-    /// The name on the scene picker.
-    pub fn label(self) -> &'static str {
-        match self {
-            Self::Aquarium => "Aquarium",
-            Self::Boids => "Schooling lab",
-            Self::Physics => "Physics fish",
-            Self::Reef => "Reef",
-            Self::Learning => "Learning lab",
-        }
-    }
-
-    /// A sentence a student understands.
-    pub fn description(self) -> &'static str {
-        match self {
-            Self::Aquarium => "Fish wander through the tank and swim around rocks and pillars.",
-            Self::Boids => {
-                "Each fish follows five urges: stay in the tank, swim like the others, \
-                 stay close, keep space and dodge rocks. Change them and watch a school form."
-            }
-            Self::Physics => {
-                "Each fish is a body of 23 masses and 91 springs. Twelve springs are muscles: \
-                 they pull the tail from side to side, the water pushes back, and the fish swims."
-            }
-            Self::Reef => {
-                "Fish that see, get hungry, get scared and fall in love. Each one decides what \
-                 to do next from what it sees and how it feels. Click a fish to look inside its head."
-            }
-            Self::Learning => {
-                "How a fish learns to swim: starting from random muscle moves, it keeps what \
-                 works and slowly learns to swim and turn, like practising a new sport. The \
-                 swimmer between the buoys uses controllers learned before until you train \
-                 your own."
-            }
-        }
-    }
 }
 
 /// Slowest simulation speed multiplier (a quarter of real time).
@@ -182,7 +146,7 @@ impl Default for Settings {
             paused: false,
             seed: 1,
             speed: 1.0,
-            scene: Scene::Aquarium,
+            scene: Scene::default(),
             compare: false,
             show_vision: false,
             left: TankSettings::with_preset(Preset::Individual),
@@ -222,15 +186,7 @@ impl Settings {
     /// The animal selected in the tank of `side` (only the schooling lab's
     /// right tank, when comparing, differs from [`Self::selected`]).
     pub fn selected_in(&self, side: Side) -> Option<u32> {
-        match self.scene {
-            Scene::Physics => self.physics.selected,
-            Scene::Reef => self.reef.selected,
-            Scene::Boids => match side {
-                Side::Left => self.left.selected,
-                Side::Right => self.compare.then_some(self.right.selected).flatten(),
-            },
-            Scene::Aquarium | Scene::Learning => None,
-        }
+        self.scene.class().selected(self, side)
     }
 
     /// The tank settings of `side`.

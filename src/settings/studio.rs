@@ -298,13 +298,11 @@ impl Studio {
     /// `state().fish_count`) give a mystery value away to a student: the count
     /// of either tank, the physics tank's fish or sharks, the reef's prey?
     pub fn count_is_mystery_for_student(&self, scene: Scene) -> bool {
-        let keys: &[&str] = match scene {
-            Scene::Aquarium | Scene::Boids => &["left.fish_count", "right.fish_count"],
-            Scene::Physics => &["physics.fish_count", "physics.sharks"],
-            Scene::Reef => &["reef.prey_count"],
-            Scene::Learning => &[],
-        };
-        keys.iter().any(|key| self.for_student(key).mystery)
+        scene
+            .class()
+            .count_keys()
+            .iter()
+            .any(|key| self.for_student(key).mystery)
     }
 
     /// Checks the question and every rule's key (the rest is checked by type).

@@ -18,13 +18,17 @@ use glam::Vec3;
 use serde::Serialize;
 
 use crate::sim::body::NODE_COUNT;
+use crate::sim::boids::attention::Attention;
 pub use crate::sim::common::moment::{FoundMoment, Moment};
 use crate::sim::learning::learning_lab::LearningLab;
+use crate::sim::reef::mind::FishKind;
 use crate::sim::reef::world::{ReefBody, ReefWorld};
-use crate::sim::{BodySpecies, Obstacle, PhysicalFish, PhysicsWorld, SchoolMetrics, Tank, World};
+use crate::sim::{
+    BodySpecies, Fish, Obstacle, PhysicalFish, PhysicsWorld, SchoolMetrics, Tank, World,
+};
 
 /// Metrics samples of the boid scenes are taken every this many steps
-/// (15 × 1/60 s = 0.25 s).
+/// (15 × 1/60 s = 0.25 s; the scenes' `sample_every_steps`, `src/scenes/`).
 pub const BOID_SAMPLE_EVERY_STEPS: u64 = 15;
 /// Metrics samples of the fish-world scenes are taken every this many steps
 /// (5 × 0.055 s = 0.275 s, about the boid scenes' quarter second).
@@ -52,6 +56,38 @@ pub struct BodyToDraw {
     pub species: BodySpecies,
     /// Livery hue, 0–1.
     pub hue: f32,
+}
+
+/// How a point-mass animal is drawn: which rigid mesh and livery.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PointShape {
+    Fish,
+    Shark,
+    Stingray,
+}
+
+/// A point-mass animal to draw with a rigid mesh.
+#[derive(Clone, Copy, Debug)]
+pub struct PointToDraw<'a> {
+    /// The animal's index in its scene (where the lab's interpolated
+    /// positions keep it).
+    pub index: usize,
+    pub shape: PointShape,
+    /// Its body: length, heading and tail phase.
+    pub body: &'a Fish,
+    /// Livery hue, 0–1.
+    pub hue: f32,
+}
+
+/// Things in the water that are drawn but are not animals.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Scenery {
+    /// The reef's plankton particles.
+    pub plankton_m: Vec<Vec3>,
+    /// The learning lab's buoys, which its swimmer tracks.
+    pub buoys_m: Vec<Vec3>,
+    /// The reef's seaweed blades, each a chain of nodes from the sand up.
+    pub seaweed_m: Vec<Vec<Vec3>>,
 }
 
 /// A scene's own part of `shoal.state()`: at most one of these is present,
@@ -226,14 +262,6 @@ impl SceneWorld {
         }
     }
 
-    /// Steps between two metrics samples.
-    pub fn sample_every_steps(&self) -> u64 {
-        match self {
-            Self::Boids(_) => BOID_SAMPLE_EVERY_STEPS,
-            Self::Physics(_) | Self::Reef(_) | Self::Learning(_) => FISH_WORLD_SAMPLE_EVERY_STEPS,
-        }
-    }
-
     /// The metrics now (`None`: the scene has no school to measure).
     pub fn metrics(&self) -> Option<SceneMetrics> {
         Some(match self {
@@ -263,6 +291,32 @@ impl SceneWorld {
             },
             Self::Learning(_) => return None,
         })
+    }
+
+    /// The mean speed now (m/s) of the fish the school's metrics measure
+    /// ([`Self::metrics`]): the boid tanks' fish (not sharks or stingrays), the
+    /// physics tank's fish (not sharks), the reef's living prey. `None` in the
+    /// learning lab, which has no school. Speeds are over the ground, as the
+    /// metrics' mean speed (a fish drifting with the current travels too).
+    pub fn school_mean_speed_m_per_s(&self) -> Option<f64> {
+        let (sum, n) = match self {
+            Self::Boids(w) => w.fish().iter().fold((0.0, 0usize), |(s, n), f| {
+                (s + f64::from(f.velocity_m_per_s.length()), n + 1)
+            }),
+            Self::Physics(w) => w.animals()[..w.fish_count()]
+                .iter()
+                .fold((0.0, 0usize), |(s, n), a| {
+                    (s + f64::from(a.point.velocity_m_per_s.length()), n + 1)
+                }),
+            Self::Reef(w) => w
+                .living()
+                .filter(|(_, a)| a.habits.kind == FishKind::Prey)
+                .fold((0.0, 0usize), |(s, n), (_, a)| {
+                    (s + f64::from(a.body.velocity_m_per_s().length()), n + 1)
+                }),
+            Self::Learning(_) => return None,
+        };
+        Some(if n == 0 { 0.0 } else { sum / n as f64 })
     }
 
     /// The counts the lab keeps over time for the CSV export, at a metrics
@@ -359,6 +413,66 @@ impl SceneWorld {
         }
     }
 
+    /// The point-mass animals to draw with rigid meshes (living ones), in index
+    /// order: the boid tanks' fish, sharks and stingrays; the reef's animals on
+    /// point-mass bodies. The muscle bodies are [`Self::bodies_to_draw`].
+    pub fn points_to_draw(&self) -> Vec<PointToDraw<'_>> {
+        match self {
+            Self::Boids(w) => {
+                let fish = w.fish().iter().map(|f| (PointShape::Fish, f));
+                let sharks = w.sharks().iter().map(|s| (PointShape::Shark, &s.body));
+                let rays = w
+                    .stingrays()
+                    .iter()
+                    .map(|r| (PointShape::Stingray, &r.body));
+                fish.chain(sharks)
+                    .chain(rays)
+                    .enumerate()
+                    .map(|(index, (shape, body))| PointToDraw {
+                        index,
+                        shape,
+                        body,
+                        hue: body.hue,
+                    })
+                    .collect()
+            }
+            Self::Reef(w) => w
+                .living()
+                .filter_map(|(index, a)| match &a.body {
+                    ReefBody::Point(body) => Some(PointToDraw {
+                        index,
+                        shape: if a.habits.kind == FishKind::Predator {
+                            PointShape::Shark
+                        } else {
+                            PointShape::Fish
+                        },
+                        body,
+                        hue: a.hue,
+                    }),
+                    ReefBody::Physical(_) => None,
+                })
+                .collect(),
+            Self::Physics(_) | Self::Learning(_) => Vec::new(),
+        }
+    }
+
+    /// What else is in the water: the reef's plankton and seaweed, the
+    /// learning lab's buoys.
+    pub fn scenery(&self) -> Scenery {
+        match self {
+            Self::Reef(w) => Scenery {
+                plankton_m: w.food().iter().map(|f| f.position_m).collect(),
+                seaweed_m: w.seaweed().iter().map(|s| s.nodes_m.clone()).collect(),
+                ..Scenery::default()
+            },
+            Self::Learning(w) => Scenery {
+                buoys_m: w.buoys_m().to_vec(),
+                ..Scenery::default()
+            },
+            Self::Boids(_) | Self::Physics(_) => Scenery::default(),
+        }
+    }
+
     /// The animals a click can select, by index, with their body lengths
     /// (the physics fish; the reef's living animals; none elsewhere).
     pub fn pickable(&self) -> Vec<(usize, f32)> {
@@ -381,6 +495,16 @@ impl SceneWorld {
                 .map(|(i, f)| (i, f.body_length_m))
                 .collect(),
             Self::Learning(_) => Vec::new(),
+        }
+    }
+
+    /// What fish `index` pays attention to, as of the last step: the boid
+    /// tanks' fish with the boid layer on (`None` elsewhere; see
+    /// [`World::attention`]).
+    pub fn attention(&self, index: usize) -> Option<Attention> {
+        match self {
+            Self::Boids(w) => w.attention(index),
+            Self::Physics(_) | Self::Reef(_) | Self::Learning(_) => None,
         }
     }
 

@@ -3,8 +3,6 @@
 //! 14-year-old; the equations one click deeper. Every number here is the
 //! model's own (see `docs/`).
 
-use crate::settings::Scene;
-
 /// One scene's page.
 pub struct About {
     pub what: &'static str,
@@ -208,125 +206,129 @@ const LEARNING_EQUATIONS: &[(&str, &str)] = &[
     ),
 ];
 
-/// The page of `scene`.
-pub fn about(scene: Scene) -> About {
-    match scene {
-        Scene::Aquarium => About {
-            what: "An aquarium of fish that wander. Each fish is a point with a speed and a \
-                   heading, drawn as a fish. Nothing tells them to school.",
-            how: "Every 1/60 of a second each fish picks a wished direction: a little wander \
-                  (a point on a circle ahead of it that drifts at random), plus turning away \
-                  from the glass, the sand and the surface, and round rocks and pillars. It \
-                  steers towards the wish as hard as its turning power allows, never faster \
-                  than its top speed.",
-            notice: &[
-                "Fish turn before they reach the glass: they look ahead along their path.",
-                "They swerve round a pillar instead of stopping at it.",
-                "Two fish meeting do not line up: they have no urge to follow each other.",
-            ],
-            try_this: &[
-                "Set Fish to 2,000 and look from above (drag the view).",
-                "Open the Schooling lab and compare: what do its fish do that these do not?",
-            ],
-            equations: &[STEERING_EQUATIONS],
-            references: &[REYNOLDS, LIM_TAN],
-        },
-        Scene::Boids => About {
-            what: "A virtual ethology lab: fish that follow five urges, as in Lim & Tan's \
-                   SIMBA. Change the urges and watch a school form, or fall apart. Compare \
-                   two tanks that differ only in the urges.",
-            how: "Each fish sees its neighbours (5 m, all round except a blind cone behind) \
-                  and heeds the 7 nearest it sees. Five urges each wish a velocity: stay in \
-                  the tank (containment), swim like the neighbours (alignment), stay close \
-                  (cohesion), keep some space (separation) and dodge rocks and other fish \
-                  (avoidance). The sliders weigh them, and the control mode says how they \
-                  combine: all together, or one at a time. There is no leader: every fish \
-                  follows the same rules and only reacts to the few neighbours it sees.",
-            notice: &[
-                "The Group preset makes a school: polarization near 0.8, one group, \
-                 neighbours about a body length apart. Individual leaves them scattered.",
-                "A school turns as one, yet no fish decides where it goes.",
-                "With a shark, fish in a school are caught less often: the shark is confused \
-                 by many fish around its target.",
-            ],
-            try_this: &[
-                "Turn alignment to 0 in the Group tank. What happens to polarization?",
-                "Compare two tanks: does the school or the loners lose fewer fish to a shark?",
-                "Switch the control mode to Monte Carlo and read the urge bars.",
-                "Add a rock in the school's path and watch it split and join.",
-            ],
-            equations: &[STEERING_EQUATIONS, URGE_EQUATIONS, BOIDS_EQUATIONS],
-            references: &[LIM_TAN, REYNOLDS, COUZIN, BALLERINI, PITCHER, LANDEAU],
-        },
-        Scene::Physics => About {
-            what: "Fish with bodies: 23 masses joined by 91 springs, 12 of them muscles, as in \
-                   Tu & Terzopoulos. Nothing pushes the fish forward but the water on its \
-                   beating tail.",
-            how: "Muscles shorten and lengthen in turn on the two sides, bending the body \
-                  left and right. Each patch of skin that moves into the water is pushed \
-                  back by it; a tail swept sideways gets a push that is partly forwards, so \
-                  the fish swims. A motor controller turns a wished speed into how far and \
-                  how fast the muscles pull, another turns a wished turn into a bend, and \
-                  the pectoral fins climb, dive and brake. The same urges as the schooling \
-                  lab give each fish its wish.",
-            notice: &[
-                "Select a fish and read its twelve muscles: the two sides pull in turn.",
-                "Show forces: the yellow push of the water is largest on the tail.",
-                "A fish cannot stop dead or turn on the spot: it has a body to move.",
-            ],
-            try_this: &[
-                "Steer a fish by hand: how does its speed change with the swim speed slider?",
-                "Turn on the current and watch a fish that stops swimming drift.",
-                "Turn left by 30° and by 90°: which takes longer?",
-            ],
-            equations: &[BODY_EQUATIONS],
-            references: &[TT_1994, VIDELER],
-        },
-        Scene::Reef => About {
-            what: "A reef of fish with minds, as in Tu & Terzopoulos: they see, get hungry, \
-                   get scared and court. Each decides what to do from what it sees and how \
-                   it feels. Click a fish to look inside its head.",
-            how: "Each fish sees all round except behind, as far as the water is clear, and \
-                  not through rocks or other fish. Hunger grows as its food digests, libido \
-                  with time since mating, fear with predators close by. An intention \
-                  generator picks one intention in a fixed order (avoid, escape or school, \
-                  eat or mate, leave, wander), remembers an interrupted one, and a \
-                  behaviour routine drives the body's motor controllers: swim, turn, fins.",
-            notice: &[
-                "A frightened school flees together; a shark striking into a crowd often \
-                 misses.",
-                "Courting females choose the bigger male (the log says so).",
-                "A fish that swerves round a rock goes back to the food it was after: it \
-                 remembers.",
-            ],
-            try_this: &[
-                "Open Predator and school and Skip to the moment: watch the shark's catch.",
-                "In Minds, make the prey timid or courageous and count the catches.",
-                "Make the water murky (Visibility): do fish find less food?",
-            ],
-            equations: &[MIND_EQUATIONS],
-            references: &[TT_1994, LANDEAU],
-        },
-        Scene::Learning => About {
-            what: "How a fish learns to swim, as in Tu & Terzopoulos: starting from random \
-                   muscle moves, it keeps what works. Then it races copies of itself that \
-                   practised less.",
-            how: "A drill sets a goal (swim far, swim at a speed, turn). The fish tries a \
-                  pattern of muscle moves, measures how well it did, changes the pattern a \
-                  little and keeps the change if it did better (and, early on, sometimes \
-                  even if it did worse, so it does not get stuck). Over thousands of tries \
-                  it finds a rhythm like a real fish's tail beat.",
-            notice: &[
-                "The objective falls quickly at first, then slowly.",
-                "The learned moves are rhythmic: two or three main rhythms explain them.",
-                "The fish that practised longest usually wins the race.",
-            ],
-            try_this: &[
-                "Train with 90 tries per drill, then with 6,840: compare the race.",
-                "Switch the swimmer between learned and hand-tuned controllers.",
-            ],
-            equations: &[LEARNING_EQUATIONS],
-            references: &[TT_1994, KIRKPATRICK],
-        },
-    }
-}
+/// The aquarium's page.
+pub const AQUARIUM: About = About {
+    what: "An aquarium of fish that wander. Each fish is a point with a speed and a \
+           heading, drawn as a fish. Nothing tells them to school.",
+    how: "Every 1/60 of a second each fish picks a wished direction: a little wander \
+          (a point on a circle ahead of it that drifts at random), plus turning away \
+          from the glass, the sand and the surface, and round rocks and pillars. It \
+          steers towards the wish as hard as its turning power allows, never faster \
+          than its top speed.",
+    notice: &[
+        "Fish turn before they reach the glass: they look ahead along their path.",
+        "They swerve round a pillar instead of stopping at it.",
+        "Two fish meeting do not line up: they have no urge to follow each other.",
+    ],
+    try_this: &[
+        "Set Fish to 2,000 and look from above (drag the view).",
+        "Open the Schooling lab and compare: what do its fish do that these do not?",
+    ],
+    equations: &[STEERING_EQUATIONS],
+    references: &[REYNOLDS, LIM_TAN],
+};
+
+/// The schooling lab's page.
+pub const SCHOOLING_LAB: About = About {
+    what: "A virtual ethology lab: fish that follow five urges, as in Lim & Tan's \
+           SIMBA. Change the urges and watch a school form, or fall apart. Compare \
+           two tanks that differ only in the urges.",
+    how: "Each fish sees its neighbours (5 m, all round except a blind cone behind) \
+          and heeds the 7 nearest it sees. Five urges each wish a velocity: stay in \
+          the tank (containment), swim like the neighbours (alignment), stay close \
+          (cohesion), keep some space (separation) and dodge rocks and other fish \
+          (avoidance). The sliders weigh them, and the control mode says how they \
+          combine: all together, or one at a time. There is no leader: every fish \
+          follows the same rules and only reacts to the few neighbours it sees.",
+    notice: &[
+        "The Group preset makes a school: polarization near 0.8, one group, \
+         neighbours about a body length apart. Individual leaves them scattered.",
+        "A school turns as one, yet no fish decides where it goes.",
+        "With a shark, fish in a school are caught less often: the shark is confused \
+         by many fish around its target.",
+    ],
+    try_this: &[
+        "Turn alignment to 0 in the Group tank. What happens to polarization?",
+        "Compare two tanks: does the school or the loners lose fewer fish to a shark?",
+        "Switch the control mode to Monte Carlo and read the urge bars.",
+        "Add a rock in the school's path and watch it split and join.",
+    ],
+    equations: &[STEERING_EQUATIONS, URGE_EQUATIONS, BOIDS_EQUATIONS],
+    references: &[LIM_TAN, REYNOLDS, COUZIN, BALLERINI, PITCHER, LANDEAU],
+};
+
+/// The physics fish tank's page.
+pub const PHYSICS_FISH: About = About {
+    what: "Fish with bodies: 23 masses joined by 91 springs, 12 of them muscles, as in \
+           Tu & Terzopoulos. Nothing pushes the fish forward but the water on its \
+           beating tail.",
+    how: "Muscles shorten and lengthen in turn on the two sides, bending the body \
+          left and right. Each patch of skin that moves into the water is pushed \
+          back by it; a tail swept sideways gets a push that is partly forwards, so \
+          the fish swims. A motor controller turns a wished speed into how far and \
+          how fast the muscles pull, another turns a wished turn into a bend, and \
+          the pectoral fins climb, dive and brake. The same urges as the schooling \
+          lab give each fish its wish.",
+    notice: &[
+        "Select a fish and read its twelve muscles: the two sides pull in turn.",
+        "Show forces: the yellow push of the water is largest on the tail.",
+        "A fish cannot stop dead or turn on the spot: it has a body to move.",
+    ],
+    try_this: &[
+        "Steer a fish by hand: how does its speed change with the swim speed slider?",
+        "Turn on the current and watch a fish that stops swimming drift.",
+        "Turn left by 30° and by 90°: which takes longer?",
+    ],
+    equations: &[BODY_EQUATIONS],
+    references: &[TT_1994, VIDELER],
+};
+
+/// The reef's page.
+pub const REEF: About = About {
+    what: "A reef of fish with minds, as in Tu & Terzopoulos: they see, get hungry, \
+           get scared and court. Each decides what to do from what it sees and how \
+           it feels. Click a fish to look inside its head.",
+    how: "Each fish sees all round except behind, as far as the water is clear, and \
+          not through rocks or other fish. Hunger grows as its food digests, libido \
+          with time since mating, fear with predators close by. An intention \
+          generator picks one intention in a fixed order (avoid, escape or school, \
+          eat or mate, leave, wander), remembers an interrupted one, and a \
+          behaviour routine drives the body's motor controllers: swim, turn, fins.",
+    notice: &[
+        "A frightened school flees together; a shark striking into a crowd often \
+         misses.",
+        "Courting females choose the bigger male (the log says so).",
+        "A fish that swerves round a rock goes back to the food it was after: it \
+         remembers.",
+    ],
+    try_this: &[
+        "Open Predator and school and Skip to the moment: watch the shark's catch.",
+        "In Minds, make the prey timid or courageous and count the catches.",
+        "Make the water murky (Visibility): do fish find less food?",
+    ],
+    equations: &[MIND_EQUATIONS],
+    references: &[TT_1994, LANDEAU],
+};
+
+/// The learning lab's page.
+pub const LEARNING_LAB: About = About {
+    what: "How a fish learns to swim, as in Tu & Terzopoulos: starting from random \
+           muscle moves, it keeps what works. Then it races copies of itself that \
+           practised less.",
+    how: "A drill sets a goal (swim far, swim at a speed, turn). The fish tries a \
+          pattern of muscle moves, measures how well it did, changes the pattern a \
+          little and keeps the change if it did better (and, early on, sometimes \
+          even if it did worse, so it does not get stuck). Over thousands of tries \
+          it finds a rhythm like a real fish's tail beat.",
+    notice: &[
+        "The objective falls quickly at first, then slowly.",
+        "The learned moves are rhythmic: two or three main rhythms explain them.",
+        "The fish that practised longest usually wins the race.",
+    ],
+    try_this: &[
+        "Train with 90 tries per drill, then with 6,840: compare the race.",
+        "Switch the swimmer between learned and hand-tuned controllers.",
+    ],
+    equations: &[LEARNING_EQUATIONS],
+    references: &[TT_1994, KIRKPATRICK],
+};

@@ -5,8 +5,9 @@
 use eframe::egui;
 
 use super::WidgetRects;
-use super::scene_panel::{CurrentPanel, PanelAction};
+use super::scene_panel::PanelAction;
 use super::studio_panel::{control, control_row};
+use crate::scenes::CurrentPanel;
 use crate::settings::{SEED_MAX, Scene, Settings};
 
 /// The view options the side panel edits that are not settings (they belong
@@ -53,13 +54,13 @@ pub fn control_panel_ui(
         ui.horizontal_wrapped(|ui| {
             for scene in Scene::ALL {
                 let response = ui
-                    .selectable_value(&mut settings.scene, scene, scene.label())
-                    .on_hover_text(scene.description());
+                    .selectable_value(&mut settings.scene, scene, scene.class().label())
+                    .on_hover_text(scene.class().description());
                 rects.insert(&format!("scene_{}", scene.name()), response.rect);
             }
         });
     });
-    ui.label(egui::RichText::new(settings.scene.description()).weak());
+    ui.label(egui::RichText::new(settings.scene.class().description()).weak());
     ui.horizontal_wrapped(|ui| {
         super::about::about_button(ui, rects);
         super::studio_panel::studio_button(ui, &settings.studio, rects);

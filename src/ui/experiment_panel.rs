@@ -19,7 +19,7 @@ use super::WidgetRects;
 use super::experiment_plot::{WatchRequest, level_text, results_ui};
 use super::scene_panel::Notice;
 use crate::experiment::design::{
-    Factor, MeasureChoice, Replicates, acting_section, factor_keys, is_switch, settings_value,
+    Factor, MeasureChoice, Replicates, factor_keys, is_switch, settings_value,
 };
 use crate::experiment::session::{FRAME_BUDGET_SECS, frame_budget_secs};
 use crate::experiment::{
@@ -160,7 +160,7 @@ impl DesignForm {
 
     /// The design: the scene and its own settings as they are now, then the form.
     pub fn design(&self, base: &Settings) -> Design {
-        let section = acting_section(base.scene);
+        let section = base.scene.class().settings_section();
         let all = settings_value(base);
         let mut settings = serde_json::Map::new();
         settings.insert("scene".into(), Value::from(base.scene.name()));
@@ -787,7 +787,7 @@ fn sizing_ui(
     sizing: &Sizing,
     rects: &mut WidgetRects,
 ) {
-    let dt = crate::experiment::design::scene_dt_secs(settings.scene);
+    let dt = settings.scene.class().step_secs();
     let levels = sizing.runs / form.seeds.max(1) as usize;
     let grid = egui::Grid::new("experiment_sizing")
         .num_columns(2)

@@ -1,14 +1,15 @@
 //! The egui panels around the aquarium. The controls every scene has are in
 //! `control_panel.rs`; each scene's own controls, panel under the tank, overlays
-//! and picking are its [`ScenePanel`] (`scene_panel.rs` registers them). Panels
+//! and picking are its [`ScenePanel`] (each scene's class in `crate::scenes`
+//! makes it). Panels
 //! edit `Settings` and report one-off actions; the only simulation calls they
 //! make are a scene's own actions, in [`ScenePanel::apply`].
 
 mod about;
-mod about_text;
+pub mod about_text;
 pub mod body_overlay;
 mod boids_attention;
-mod boids_panel;
+pub mod boids_panel;
 pub mod bottom_panel;
 mod control_panel;
 mod experiment_panel;
@@ -18,14 +19,14 @@ mod investigation_panel;
 mod investigation_plot;
 pub mod learning_panel;
 mod metrics_panel;
-mod physics_panel;
+pub mod physics_panel;
 mod qr;
 pub mod reef_inspector;
 mod reef_minds;
 pub mod reef_overlay;
 pub mod reef_panel;
 mod reef_skip;
-mod scene_panel;
+pub mod scene_panel;
 pub mod screen;
 mod status_line;
 pub mod studio_panel;
@@ -40,9 +41,7 @@ pub use investigation_panel::{InvestigationAction, InvestigationPanel, investiga
 pub use learning_panel::{SaveControllersError, controllers_json};
 pub use metrics_panel::{METRICS_PANEL_HEIGHT, metrics_panel_ui, side_color};
 pub use physics_panel::{BODY_PLOTS_PANEL_HEIGHT, body_plots_ui};
-pub use scene_panel::{
-    CurrentPanel, Notice, PanelAction, ScenePanel, ViewContext, ViewInput, scene_panel,
-};
+pub use scene_panel::{Notice, PanelAction, ScenePanel, ViewContext, ViewInput};
 pub use status_line::status_line_ui;
 pub use studio_panel::StudioPanel;
 pub use tank_panel::mode_label;

@@ -5,15 +5,15 @@
 //! and the camera) and asks the scene's [`ScenePanel`] for the rest: its own
 //! controls, the panel under the tank, the drawings over each view, what a click
 //! or drag on a view does, which animal is selected or followed, and where the
-//! default camera looks. [`scene_panel`] is the one place that knows which panel
-//! belongs to which scene; the app knows no scene by name.
+//! default camera looks. Each scene's class (`crate::scenes`) makes its panel;
+//! the app knows no scene by name.
 
 use eframe::egui;
 
 use super::WidgetRects;
 use crate::lab::{Lab, Run};
 use crate::render::{Framing, OrbitCamera};
-use crate::settings::{Scene, Settings, Side};
+use crate::settings::{Settings, Side};
 
 /// One-off things the user asked for this frame that every scene has. A scene's
 /// own one-off actions (turn the selected fish, start a race…) stay inside its
@@ -181,149 +181,5 @@ pub trait ScenePanel {
     /// the scene: a new subject is framed afresh, as a new scene is.
     fn view_subject(&self, _settings: &Settings) -> &'static str {
         ""
-    }
-}
-
-/// The panel of `scene`: the registration of every scene's panel.
-pub fn scene_panel(scene: Scene) -> Box<dyn ScenePanel> {
-    match scene {
-        Scene::Aquarium => Box::new(super::boids_panel::AquariumPanel),
-        Scene::Boids => Box::new(super::boids_panel::BoidsPanel::default()),
-        Scene::Physics => Box::new(super::physics_panel::PhysicsPanel::default()),
-        Scene::Reef => Box::new(super::reef_panel::ReefPanel::default()),
-        Scene::Learning => Box::new(super::learning_panel::LearningPanel::default()),
-    }
-}
-
-/// The panel of the scene on show, swapped for a fresh one when the scene
-/// changes (so a scene's panel state, such as the rock tool, starts afresh).
-pub struct CurrentPanel {
-    scene: Scene,
-    panel: Box<dyn ScenePanel>,
-}
-
-impl CurrentPanel {
-    pub fn new(scene: Scene) -> Self {
-        Self {
-            scene,
-            panel: scene_panel(scene),
-        }
-    }
-
-    /// The panel for `scene`: the same one while the scene stays.
-    pub fn for_scene(&mut self, scene: Scene) -> &mut dyn ScenePanel {
-        if scene != self.scene {
-            *self = Self::new(scene);
-        }
-        self.panel.as_mut()
-    }
-
-    /// The panel as it is (the scene it was last asked for).
-    pub fn get(&self) -> &dyn ScenePanel {
-        self.panel.as_ref()
-    }
-
-    pub fn get_mut(&mut self) -> &mut dyn ScenePanel {
-        self.panel.as_mut()
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Draws each scene's side-panel section and panel under the tank for a few
-    /// frames through [`scene_panel`], as the app does, and returns the widget
-    /// rectangles of the last frame.
-    fn draw_scene(scene: Scene) -> WidgetRects {
-        let mut settings = Settings {
-            scene,
-            ..Settings::default()
-        };
-        let mut lab = Lab::new(settings.clone());
-        let mut current = CurrentPanel::new(Scene::Aquarium);
-        let ctx = egui::Context::default();
-        let mut rects = WidgetRects::new();
-        for frame in 0..3 {
-            let input = egui::RawInput {
-                screen_rect: Some(egui::Rect::from_min_size(
-                    egui::Pos2::ZERO,
-                    egui::vec2(1280.0, 800.0),
-                )),
-                time: Some(f64::from(frame) / 60.0),
-                ..Default::default()
-            };
-            rects.clear();
-            let mut output = ctx.run_ui(input, |ui| {
-                let panel = current.for_scene(scene);
-                panel.before_frame(&mut lab, f64::from(frame) / 60.0, ui.ctx());
-                panel.bottom_ui(ui, &lab, &mut settings, &mut rects);
-                egui::Panel::left("controls").show(ui, |ui| {
-                    panel.controls_ui(ui, &mut settings, &mut rects);
-                });
-            });
-            output.textures_delta.clear();
-            lab.step(1);
-        }
-        rects
-    }
-
-    #[test]
-    fn every_scene_gets_its_own_controls_and_panel_under_the_tank() {
-        // (scene, a control of its own, its panel under the tank)
-        let expected = [
-            (Scene::Aquarium, "fish_count", None),
-            (Scene::Boids, "compare", Some("panel_metrics")),
-            (
-                Scene::Physics,
-                "physics_fish",
-                Some("panel_body_plots_hint"),
-            ),
-            (Scene::Reef, "reef_prey", Some("panel_reef_inspector")),
-            (
-                Scene::Learning,
-                "learning_train",
-                Some("panel_learning_plots"),
-            ),
-        ];
-        // (The schooling lab's tank controls have a fish count too.)
-        let own: Vec<&str> = expected.iter().skip(1).map(|e| e.1).collect();
-        for (scene, control, bottom) in expected {
-            let rects = draw_scene(scene);
-            assert!(rects.get(control).is_some(), "{scene:?} has no {control}");
-            // No other scene's controls.
-            for other in own.iter().filter(|o| **o != control) {
-                assert!(rects.get(other).is_none(), "{scene:?} shows {other}");
-            }
-            let panels: Vec<&String> = rects
-                .iter()
-                .map(|(name, _)| name)
-                .filter(|name| name.starts_with("panel_"))
-                .collect();
-            match bottom {
-                Some(name) => assert_eq!(panels, [name], "{scene:?}"),
-                None => assert!(panels.is_empty(), "{scene:?}: {panels:?}"),
-            }
-        }
-    }
-
-    #[test]
-    fn a_new_scene_gets_a_fresh_panel_and_the_same_scene_keeps_its_own() {
-        let mut current = CurrentPanel::new(Scene::Boids);
-        let address = |p: &mut dyn ScenePanel| (p as *mut dyn ScenePanel).cast::<()>() as usize;
-        let first = address(current.for_scene(Scene::Boids));
-        assert_eq!(address(current.for_scene(Scene::Boids)), first);
-        current.for_scene(Scene::Reef);
-        assert_eq!(current.scene, Scene::Reef);
-    }
-
-    #[test]
-    fn the_app_knows_no_scene_by_name() {
-        // The registration above is the one place that maps scenes to panels.
-        let app = include_str!("../app.rs");
-        for scene in Scene::ALL {
-            let name = format!("Scene::{scene:?}");
-            assert!(!app.contains(&name), "app.rs names {name}");
-        }
     }
 }
