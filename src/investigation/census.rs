@@ -11,7 +11,9 @@ pub(crate) fn tail_beat_speeds() {
     let MeasurementKind::TailBeat {
         frequencies_hz,
         secs,
-    } = find("how-swim").unwrap().measurement
+    } = find("how-swim")
+        .expect("a catalogued investigation")
+        .measurement
     else {
         panic!("how-swim measures tail beats");
     };

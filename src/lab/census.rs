@@ -12,11 +12,11 @@ pub(crate) fn skip_moments() {
     for d in ReefScene::ALL {
         for seed in 1..=4 {
             let mut lab = reef_demo_lab(d, seed);
-            lab.skip_to_moment().unwrap();
+            lab.skip_to_moment().expect("every reef demo has a moment");
             let outcome = lab.finish_skip_now();
             println!("{d:?} seed {seed}: {outcome:?}");
             lab.step((60.0 / lab.step_secs()) as u32);
-            for e in lab.runs()[0].reef().unwrap().events() {
+            for e in lab.runs()[0].reef().expect("a reef demo").events() {
                 if !matches!(
                     e.kind,
                     ReefEventKind::BeganEscape { .. }
