@@ -37,8 +37,25 @@ pub fn all() -> Vec<&'static Census> {
 }
 
 /// The scripts that measure the app around the simulation (the lab's skips,
-/// the investigations, the frame builder).
-const APP_CENSUSES: &[Census] = &[];
+/// the investigations, the frame builder); each lives in a `census.rs` beside
+/// the code it measures.
+const APP_CENSUSES: &[Census] = &[
+    Census {
+        name: "skip-moments",
+        about: "when each reef demo's moment comes, seeds 1-4, and the minute after (lab/skip.rs)",
+        run: crate::lab::census::skip_moments,
+    },
+    Census {
+        name: "tail-beat-speeds",
+        about: "the speeds 'How does a fish swim?' measures (docs/investigations.md)",
+        run: crate::investigation::census::tail_beat_speeds,
+    },
+    Census {
+        name: "frame-cost",
+        about: "CPU time to build and copy a frame's fish instances, 5 000 and 20 000 fish (frame_builder.rs)",
+        run: crate::render::census::frame_cost,
+    },
+];
 
 /// The script called `name`.
 pub fn find(name: &str) -> Option<&'static Census> {

@@ -14,6 +14,8 @@ use crate::sim::learning::learning_lab::LearningLab;
 use crate::sim::learning::learning_lab::RaceNotReady;
 use crate::sim::scene::SceneWorld;
 
+#[cfg(not(target_arch = "wasm32"))]
+pub(crate) mod census;
 mod run;
 mod skip;
 pub use run::{BODY_TRACE_SECS, BodySample, Run};

@@ -15,6 +15,8 @@
 //! Pure and testable natively: the egui window is `ui/investigation_panel.rs`.
 
 pub mod catalogue;
+#[cfg(not(target_arch = "wasm32"))]
+pub(crate) mod census;
 pub mod link;
 pub mod measure;
 pub mod outcome;

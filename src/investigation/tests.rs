@@ -437,23 +437,3 @@ fn leader_measures_polarization_with_alignment_on_and_off_and_the_fish_inspected
     assert!((1.0..=7.0).contains(&o.rows[2].value), "{:?}", o.rows[2]);
     assert!(o.verdict.contains("agrees"), "{}", o.verdict);
 }
-
-/// The speeds *How does a fish swim?* measures (the figures of
-/// docs/investigations.md): `cargo test --release --lib tail_beat_speeds --
-/// --ignored --nocapture`.
-#[test]
-#[ignore]
-fn tail_beat_speeds() {
-    let MeasurementKind::TailBeat {
-        frequencies_hz,
-        secs,
-    } = find("how-swim").unwrap().measurement
-    else {
-        panic!("how-swim measures tail beats");
-    };
-    let mut run = TailBeatRun::new(frequencies_hz, secs);
-    run.run_to_end();
-    for (f, v) in frequencies_hz.iter().zip(run.speeds()) {
-        println!("{f} Hz: {v:.3} body lengths/s");
-    }
-}

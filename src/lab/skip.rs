@@ -204,23 +204,26 @@ pub(super) fn skip_survives(before: &Settings, after: &Settings) -> bool {
     world_only(before) == world_only(after)
 }
 
+/// A lab on the reef's `demo` with `seed`, the rest default: the runs the
+/// skip's tests and its census script (`skip-moments`, `lab/census.rs`) skip
+/// through.
+#[cfg(not(target_arch = "wasm32"))]
+pub(crate) fn reef_demo_lab(demo: crate::sim::reef::demos::ReefScene, seed: u64) -> Lab {
+    let mut settings = Settings {
+        scene: crate::settings::Scene::Reef,
+        seed,
+        ..Settings::default()
+    };
+    settings.reef.demo = demo;
+    Lab::new(settings)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::settings::Scene;
     use crate::sim::reef::demos::ReefScene;
     use crate::sim::reef::events::ReefEventKind;
     use glam::Vec3;
-
-    fn demo(demo: ReefScene, seed: u64) -> Lab {
-        let mut settings = Settings {
-            scene: Scene::Reef,
-            seed,
-            ..Settings::default()
-        };
-        settings.reef.demo = demo;
-        Lab::new(settings)
-    }
 
     fn positions(lab: &Lab) -> Vec<Vec3> {
         let mut out = Vec::new();
@@ -228,37 +231,11 @@ mod tests {
         out
     }
 
-    /// Prints when each demo's moment comes on the default (muscle) bodies:
-    /// `cargo test --release --lib skip_moments -- --ignored --nocapture`.
-    #[test]
-    #[ignore]
-    fn skip_moments() {
-        for d in ReefScene::ALL {
-            for seed in 1..=4 {
-                let mut lab = demo(d, seed);
-                lab.skip_to_moment().unwrap();
-                let outcome = lab.finish_skip_now();
-                println!("{d:?} seed {seed}: {outcome:?}");
-                lab.step((60.0 / lab.step_secs()) as u32);
-                for e in lab.runs()[0].reef().unwrap().events() {
-                    if !matches!(
-                        e.kind,
-                        ReefEventKind::BeganEscape { .. }
-                            | ReefEventKind::AteFood { .. }
-                            | ReefEventKind::Intention { .. }
-                    ) {
-                        println!("    {:6.1} s  {}", e.time_secs, e.text);
-                    }
-                }
-            }
-        }
-    }
-
     #[test]
     fn a_skip_goes_back_to_just_before_the_catch_and_the_run_is_unchanged() {
         // The predator demo on its default muscle bodies: the skip finds the
         // shark's first catch and puts the run back before it.
-        let mut lab = demo(ReefScene::PredatorAndSchool, 1);
+        let mut lab = reef_demo_lab(ReefScene::PredatorAndSchool, 1);
         let moment = lab.skip_to_moment().unwrap();
         assert!(lab.skipping().is_some());
         let Some(SkipOutcome::Found {
@@ -290,14 +267,14 @@ mod tests {
             .expect("the catch happens again");
         assert_eq!((again.time_secs, again.text), (found.time_secs, found.text));
         // And the run is the very run played without skipping.
-        let mut plain = demo(ReefScene::PredatorAndSchool, 1);
+        let mut plain = reef_demo_lab(ReefScene::PredatorAndSchool, 1);
         plain.step(lab.runs()[0].scene().steps() as u32);
         assert_eq!(positions(&plain), positions(&lab));
     }
 
     #[test]
     fn a_change_to_the_world_cancels_a_skip_and_a_new_selection_does_not() {
-        let mut lab = demo(ReefScene::Courtship, 1);
+        let mut lab = reef_demo_lab(ReefScene::Courtship, 1);
         lab.skip_to_moment().unwrap();
         let mut s = lab.settings().clone();
         s.reef.selected = Some(0);
@@ -319,7 +296,7 @@ mod tests {
 
     #[test]
     fn a_skip_runs_while_paused_and_frames_stay_within_budget() {
-        let mut lab = demo(ReefScene::Feeding, 2);
+        let mut lab = reef_demo_lab(ReefScene::Feeding, 2);
         let mut s = lab.settings().clone();
         s.paused = true;
         lab.apply_settings(s);

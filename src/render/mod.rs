@@ -2,6 +2,8 @@
 //! except the paint callback that puts the 3D view inside egui.
 
 pub mod body_skin;
+#[cfg(not(target_arch = "wasm32"))]
+pub(crate) mod census;
 pub mod detail;
 pub mod fish_palette;
 pub mod frame_builder;

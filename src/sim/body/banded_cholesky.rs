@@ -15,8 +15,8 @@
 //! clamped stiffness, see `fish_body.rs`), and it lives in a fixed array, so a step
 //! allocates nothing. A linear-algebra crate would add a dependency for a few hundred lines.
 //!
-//! Measured (`tests::factorize_and_solve_cost`, native release, a matrix with the
-//! fish's pattern): about 3.2 µs per factorisation and 1.0 µs per solve; the layout
+//! Measured (`cargo run --release --bin shoal-census -- factorize-and-solve-cost`,
+//! native release, a matrix with the fish's pattern, [`fish_like`]): about 3.2 µs per factorisation and 1.0 µs per solve; the layout
 //! and loop structure behind those figures are described on [`BandedCholesky`].
 
 /// Number of scalar unknowns: 23 nodes × 3 components.
@@ -339,6 +339,41 @@ fn transpose(m: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
     [0, 1, 2].map(|r| [0, 1, 2].map(|c| m[c][r]))
 }
 
+/// A matrix with the fish's pattern and magnitudes: node masses + h·damping on
+/// the diagonal, an h²K-sized block of a pseudo-random direction per spring and
+/// a water-sized block per triangle. The solver's tests solve it and its cost
+/// script (`factorize-and-solve-cost`, `body/census.rs`) times it.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn fish_like(seed: u64) -> BandedCholesky {
+    use crate::sim::body::body_layout::{MASSES, SPRINGS, TRIANGLES};
+    let mut state = seed;
+    let mut random = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    };
+    let mut m = BandedCholesky::default();
+    for (i, mass) in MASSES.iter().enumerate() {
+        m.add_diagonal_block(i, &sym3_outer([0.0; 3], 0.0, f64::from(*mass) + 0.01));
+    }
+    let mut unit = || {
+        let v = [random(), random(), random()];
+        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt().max(1e-9);
+        v.map(|x| x / l)
+    };
+    for sp in SPRINGS {
+        let block = sym3_outer(unit(), 2.3, 0.4);
+        m.add_spring_block(sp.a, sp.b, &block);
+    }
+    for (k, tri) in TRIANGLES.into_iter().enumerate() {
+        if k % 2 == 0 {
+            m.add_triangle_block(tri, &sym3_outer(unit(), 0.3, 0.0));
+        }
+    }
+    m
+}
+
 #[cfg(test)]
 mod tests {
     use crate::sim::body::banded_cholesky::*;
@@ -388,39 +423,6 @@ mod tests {
         }
     }
 
-    /// A matrix with the fish's pattern and magnitudes: node masses + h·damping on
-    /// the diagonal, an h²K-sized block of a pseudo-random direction per spring and
-    /// a water-sized block per triangle.
-    fn fish_like(seed: u64) -> BandedCholesky {
-        use crate::sim::body::body_layout::{MASSES, SPRINGS, TRIANGLES};
-        let mut state = seed;
-        let mut random = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
-        let mut m = BandedCholesky::default();
-        for (i, mass) in MASSES.iter().enumerate() {
-            m.add_diagonal_block(i, &sym3_outer([0.0; 3], 0.0, f64::from(*mass) + 0.01));
-        }
-        let mut unit = || {
-            let v = [random(), random(), random()];
-            let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt().max(1e-9);
-            v.map(|x| x / l)
-        };
-        for sp in SPRINGS {
-            let block = sym3_outer(unit(), 2.3, 0.4);
-            m.add_spring_block(sp.a, sp.b, &block);
-        }
-        for (k, tri) in TRIANGLES.into_iter().enumerate() {
-            if k % 2 == 0 {
-                m.add_triangle_block(tri, &sym3_outer(unit(), 0.3, 0.0));
-            }
-        }
-        m
-    }
-
     #[test]
     fn solves_a_fish_shaped_system_like_a_dense_solver() {
         let m = fish_like(7);
@@ -448,28 +450,5 @@ mod tests {
         for i in 0..SYSTEM_SIZE {
             assert!((rhs[i] - x_true[i]).abs() < 1e-10, "{i}: {}", rhs[i]);
         }
-    }
-
-    /// `cargo test --release --lib factorize_and_solve_cost -- --ignored --nocapture`
-    #[test]
-    #[ignore]
-    fn factorize_and_solve_cost() {
-        let m = fish_like(11);
-        let n = 200_000;
-        let mut f = m.clone();
-        let t0 = std::time::Instant::now();
-        for _ in 0..n {
-            f.clone_from(std::hint::black_box(&m));
-            f.factorize();
-        }
-        let factor_us = t0.elapsed().as_secs_f64() * 1e6 / n as f64;
-        let mut rhs = [1.0; SYSTEM_SIZE];
-        let t0 = std::time::Instant::now();
-        for _ in 0..n {
-            f.solve(std::hint::black_box(&mut rhs));
-        }
-        let solve_us = t0.elapsed().as_secs_f64() * 1e6 / n as f64;
-        println!("copy + factorize {factor_us:.2} µs, solve {solve_us:.2} µs");
-        assert!(rhs.iter().all(|x| x.is_finite()));
     }
 }

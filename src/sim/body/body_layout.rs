@@ -53,7 +53,7 @@
 //! ring 4 as well leaves no such twin within reach: a fin swung forward would
 //! squeeze those springs from 6.4 to about 2 units; no fin folds in any demo
 //! since (same census), and a fin folded by hand springs back
-//! (`tests::a_tail_fin_folded_over_the_last_ring_springs_back`). The spring count
+//! (test `a_tail_fin_folded_over_the_last_ring_springs_back`). The spring count
 //! stays 91; the tail-fin tip (node 21) now couples to node 13, eight nodes away,
 //! so the solver's band is eight nodes wide (`banded_cholesky.rs`).
 //! Kinds (footnote 2): *cross* springs (all diagonals, in a ring or across a face,

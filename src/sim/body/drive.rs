@@ -33,7 +33,7 @@ pub struct DriveParams {
     pub touch_speed_fraction: f32,
     /// Fastest turn of the intended velocity, radians per second (0.5): 29°/s, a little
     /// faster than the body's measured 26–28°/s under continuous steering
-    /// (`body/motor_bridge.rs`, `physical_fish::agility`), so the body always has a turn
+    /// (`body/motor_bridge.rs`, `physical_fish::trials`), so the body always has a turn
     /// to chase but the steering layer never plans a path the body cannot swim.
     pub max_intent_turn_rad_per_sec: f32,
     /// Largest angle between the intended velocity and where the body points, radians
@@ -41,7 +41,7 @@ pub struct DriveParams {
     /// from where it really heads, not from where it wished to be.
     pub max_intent_lead_rad: f32,
     /// Steepest climb or dive a fish intends, radians (0.44, 25°, chosen: the fins lift the
-    /// body slowly, `body/tests.rs`).
+    /// body slowly, `body/tests/trim.rs`).
     pub max_intent_pitch_rad: f32,
     /// Time in which a steering force would reach its desired velocity, seconds
     /// (0.25, chosen, in both tanks; the schooling lab's *group* preset uses 0.1

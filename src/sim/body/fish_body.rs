@@ -80,8 +80,8 @@
 //! only one command per step.
 //!
 //! # Convergence
-//! `tests::convergence_table` (`cargo test --release --lib convergence_table --
-//! --ignored --nocapture`): speed at full amplitude (body lengths/s) for each
+//! `cargo run --release --bin shoal-census -- convergence-table`: speed at full
+//! amplitude (body lengths/s) for each
 //! tail-beat frequency, and the heading change of the four key turns of the
 //! steering map (`turn_mc.rs`, tuned on the default body) while swimming at the top
 //! setting (2.3 Hz), against the scheme, the
@@ -98,7 +98,7 @@
 //! - BDF2 with per-substep sampling has the speed converged from 8 substeps on
 //!   (0.581–0.587 at 2.3 Hz). From the default, 12 substeps with a matrix every 2,
 //!   a doubling (24 substeps, matrix every 4) changes the top speed by 0.5 % and the
-//!   30/45/60/90° keys by 1.0 / 0.4 / 2.2 / 1.0 %. `tests::the_default_body_is_converged`
+//!   30/45/60/90° keys by 1.0 / 0.4 / 2.2 / 1.0 %. Test `the_default_body_is_converged`
 //!   fails if a doubling changes the top speed or a key turn by 3 % or more.
 //! - Above 3 Hz the swimming is erratic and not converged (4 Hz: 0.55–0.79 across
 //!   resolutions; at 5 Hz the passive tail fails in some runs): the top setting,
@@ -110,7 +110,7 @@
 //! state (0.02 m/s instead of 0.1 m/s for a 0.5 m fish at 0.4 of the top speed) and
 //! stay there even when the command was then held constant; started from steady
 //! swimming, the same command swam on. That state belongs to the equations, not to
-//! the integrator: `physical_fish::agility::closed_loop_turn_times` (±90° and ±30°
+//! the integrator: census `closed-loop-turn-times` (±90° and ±30°
 //! turns from 1.0/0.7/0.4/0.2 of the top speed, three tail-beat phases, 15 s
 //! limit) never finished some turns with BDF2 at 16, 64 and 256 substeps and with
 //! backward Euler at 256 and 1024, the converged runs agreeing closely; only backward
@@ -128,8 +128,8 @@
 //! (top speed 0.611 → 0.607 body lengths/s; 0.608 with the mirror-symmetric skin).
 //!
 //! # Cost
-//! Measured with `tests::step_cost` (`cargo test --release --lib step_cost --
-//! --ignored --nocapture`, a fish swimming at top speed, minimum of seven batches
+//! Measured with `cargo run --release --bin shoal-census -- step-cost` (a fish
+//! swimming at top speed, minimum of seven batches
 //! of 2000 steps; set `STEP_COST=bdf2:24:4,euler:8:1` to time other settings),
 //! native release build on the development machine shared with another engineer's
 //! builds; compare the rows (measured in one run):
@@ -527,8 +527,8 @@ impl FishBody {
         &self.params
     }
 
-    /// Parameters, to change in tests.
-    #[cfg(test)]
+    /// Parameters, to change in tests and measurement scripts.
+    #[cfg(not(target_arch = "wasm32"))]
     pub(crate) fn params_mut(&mut self) -> &mut BodyParams {
         &mut self.params
     }

@@ -18,6 +18,8 @@ pub mod motor_bridge;
 pub mod motor_controller;
 pub mod pectoral_fins;
 pub mod physical_fish;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod swim_trials;
 pub mod turn_mc;
 
 #[cfg(test)]

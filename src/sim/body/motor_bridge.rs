@@ -17,8 +17,9 @@
 //! (`body/turn_mc.rs`), and one restarted every step never finishes its quick
 //! stroke. The steering command holds the turning side's bend for as long as the
 //! heading error lasts, proportionally to it, and the tail's thrust on the bent
-//! body yaws the fish at up to about 30–41°/s (measured in `body/physical_fish.rs`,
-//! `agility`). The discrete turn-MC stays for hand commands (`PhysicalFish::turn`).
+//! body yaws the fish at up to about 30–41°/s (measured by the census scripts
+//! `turn-agility` and `closed-loop-turn-times`). The discrete turn-MC stays for
+//! hand commands (`PhysicalFish::turn`).
 //!
 //! Frames: the steering layer lives in the tank frame (y up); the body in its own
 //! frame (z up, `body/fish_body.rs`). [`to_body_frame`] and [`to_tank_frame`]
@@ -33,8 +34,8 @@ use serde::{Deserialize, Serialize};
 use crate::sim::body::PectoralFins;
 
 /// Swimming speed of the default body at the swim-MC's top setting, body lengths
-/// per second. 0.6, measured (`body::tests::speed_table`: 0.585 at 2.3 Hz and full
-/// amplitude on the converged body with the braced tail fin; `body::tests::the_default_body_is_converged`
+/// per second. 0.6, measured (census `speed-table`: 0.585 at 2.3 Hz and full
+/// amplitude on the converged body with the braced tail fin; test `the_default_body_is_converged`
 /// checks it within 3 %).
 pub const TOP_SPEED_BODY_LENGTHS_PER_SEC: f32 = 0.6;
 
@@ -54,7 +55,7 @@ pub const TOP_SPEED_BODY_LENGTHS_PER_SEC: f32 = 0.6;
 #[derive(Clone, Debug, PartialEq)]
 pub struct MotorParams {
     /// Steering command per radian of heading error, 1/rad. 4, tuned
-    /// (`physical_fish::agility`, `closed_loop_turn_times`): full steering from 14° of
+    /// (census `closed-loop-turn-times`): full steering from 14° of
     /// error. On the converged body with the braced tail fin and the averaged heading,
     /// a 90° turn from 0.7 of the top speed reaches 81° in 3.4–3.5 s at gain 4, 3.4–3.6 s
     /// at 3; 30° turns from 0.7 take 1.6–1.7 s at 4, 2.0–2.1 s at 3; gains 5 and 6 gain
@@ -64,7 +65,7 @@ pub struct MotorParams {
     /// Fin pitch per radian of elevation error (2, chosen: a 15° climb request tilts
     /// the fins by the full 0.5 rad).
     pub pitch_gain: f32,
-    /// Largest fin pitch, radians (0.5, as in the fin tests of `body/tests.rs`).
+    /// Largest fin pitch, radians (0.5, as in the fin tests of `body/tests/fins.rs`).
     pub max_fin_pitch_rad: f32,
     /// Smallest swim-MC speed while a turn runs, fraction of the top speed (0.5,
     /// chosen): the turn comes from the tail's thrust on the bent body
@@ -77,11 +78,11 @@ pub struct MotorParams {
     /// the 90° key turned the fish 43° (at full thrust 88°, measured in the
     /// browser): whatever speed the fish swam at, its tail beats at this setting
     /// until the turn is done, and its key turns keep their angles
-    /// (`physical_fish::tests::key_turns_hold_at_every_swim_speed`).
+    /// (test `key_turns_hold_at_every_swim_speed`).
     pub turn_swim_speed_fraction: f32,
     /// Contraction added to the turning side of the anterior segment at full steering
     /// (|steer| = 1), contraction factor. 0.5, measured on the default body with
-    /// `physical_fish::agility::closed_loop_turn_times` (closed-loop turns of ±90° and
+    /// census `closed-loop-turn-times` (closed-loop turns of ±90° and
     /// ±30° through the bridge from 1.0, 0.7, 0.4 and 0.2 of the top speed, three
     /// tail-beat phases at the start; seconds to 90 % of the turn, 15 s limit), anterior
     /// / middle / posterior biases:

@@ -8,14 +8,14 @@
 //! The paper lags the posterior segment 180° behind the anterior one. With this body
 //! (two short, adjacent actuated segments, each 0.19 body lengths long) a 180° lag
 //! makes a standing S-wave and no thrust. Measured on the default body at the top
-//! setting, 2.3 Hz (`tests::wave_table`): lag 0° 0.578, 30° 0.585, 90° 0.416,
+//! setting, 2.3 Hz (census `wave-table`): lag 0° 0.578, 30° 0.585, 90° 0.416,
 //! 180° −0.006 body lengths/s. So the lag between the two segments does not make
 //! the travelling wave: 0° swims almost as fast as 30°. The wave comes from the
 //! passive tail, which the water drags behind the actuated body: the tail fin's
 //! sideways motion lags the last body ring's by about 40° at every frequency from 1
 //! to 4.5 Hz. Default 30°, kept (the lag is a parameter).
 //!
-//! # Speed (`tests::speed_table`; the table is in `docs/fish-body.md`, "Swimming")
+//! # Speed (census `speed-table`; the table is in `docs/fish-body.md`, "Swimming")
 //! On the default body (12 BDF2 substeps per 0.055 s step, converged, tail fin
 //! braced) full amplitude swims 0.152 / 0.468 / 0.585 / 0.826 body lengths/s at
 //! 1 / 2 / 2.3 / 3 Hz: about linearly with frequency up to 3 Hz, 0.23–0.28 body
@@ -163,7 +163,7 @@ impl SwimMc {
 
 /// Straight-swimming speed of the default body at amplitude 0, 0.05, …, 1.0 of
 /// r̂1 = r̂2 (frequencies ŝ), as a fraction of its speed at full amplitude
-/// (`physical_fish::tests::amplitude_speed_curve`: a 0.5 m fish, 40 s runs,
+/// (census `amplitude-speed-curve`: a 0.5 m fish, 40 s runs,
 /// speed over the last 20 s; 0.292 m/s = 0.584 body lengths/s at full
 /// amplitude). Speed grows faster than amplitude: half the amplitude swims at
 /// 0.38 of the speed, a fifth at 0.11. (On the earlier, unconverged body speed

@@ -13,7 +13,7 @@
 //!
 //! # Steering map (paper: "4 sets of parameters … interpolated … any angle up to 90°")
 //! Four key sets for 30°, 45°, 60° and 90° were found by [`find_steering_map`]
-//! (reproduce: `cargo test --release turn_table -- --ignored --nocapture`) and are
+//! (reproduce: `cargo run --release --bin shoal-census -- turn-table`) and are
 //! stored in [`SteeringMap::DEFAULT`]. Angles in between are linear interpolation of
 //! the parameters between neighbouring keys (and from zero below 30°); larger turns are
 //! sequences of turns of at most 90° each ([`TurnMc::start_turn`]).
@@ -34,7 +34,7 @@
 //! that time is r/s·(1 + 20).
 //!
 //! Measured on the default (converged) body with the braced tail fin,
-//! `tests::turn_table`, each turn's quick stroke timed to the beat
+//! census `turn-table`, each turn's quick stroke timed to the beat
 //! ([`KEY_BEAT_PHASE_RAD`]):
 //!
 //! | key angle | r0 = r1 | s0 = s1 (1/s) | duration (s) | measured (left) |
@@ -164,7 +164,7 @@ impl SteeringMap {
     /// The key sets found by [`find_steering_map`] (see the module doc), except
     /// the 30° key: found at full thrust (r = 0.3543) it turned 26.6° from 0.3 of
     /// the top speed, so it is bisected instead on its turn averaged over 0.3, 0.6
-    /// and 1.0 of the top speed (`physical_fish` test `keys_over_swim_speeds`:
+    /// and 1.0 of the top speed (census `keys-over-swim-speeds`:
     /// 29.6° / 30.0° / 30.4°). The other keys already hold within 2 % that way.
     pub const DEFAULT: Self = Self {
         keys: [
@@ -234,14 +234,14 @@ struct ActiveTurn {
 /// begins: π/2, where the left side's swim contraction peaks (a right turn: 3π/2,
 /// the mirror image). Chosen by measurement: how far a turn turns depends on
 /// where in the beat its stroke begins. On the physical fish
-/// (`physical_fish::tests::turn_at_speed_deg`: a turn requested after 3 s at 0.3,
+/// (`physical_fish::trials::turn_at_speed_deg`: a turn requested after 3 s at 0.3,
 /// 0.6 or 1.0 of the top speed), untimed, the 60° key turned 50.7–62.6° at 0.3 of
 /// the top speed depending on the step at which it was requested; with the stroke
 /// timed to the beat, keys ±30/60/90° at the three speeds and two request times
 /// stayed within 8.2 % of the key at π/2 (11.1–15.7 % at 345°, 0°, 15°, 30°, 45°,
 /// 60°; 23.4 % at 120°; measured with the earlier keys and skin). With the current
 /// ones the 60° key turns 54.8–56.1° at 0.3 of the top speed whatever the request
-/// step (`physical_fish::tests::key_turns_against_request_time`). [`TurnMc::wait_for_beat`] does the timing; the key
+/// step (census `key-turns-against-request-time`). [`TurnMc::wait_for_beat`] does the timing; the key
 /// measurement ([`measure_turn_deg`]) times its turns the same way.
 pub const KEY_BEAT_PHASE_RAD: f32 = FRAC_PI_2;
 

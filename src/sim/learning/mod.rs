@@ -37,8 +37,6 @@ pub mod abstraction;
 pub mod annealing;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod census;
-#[cfg(test)]
-mod figures;
 pub mod learned_motor;
 pub mod learned_set;
 pub mod learning_lab;
