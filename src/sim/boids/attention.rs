@@ -1,9 +1,9 @@
 //! What a fish pays attention to: the neighbours it heeds, its five urges, which
 //! of them the control mode applied in the last step, and what came of it.
 //!
-//! The boid step computes each fish's urges with [`World::urges_of`] from the
-//! school's snapshot (everyone's positions and velocities at the start of the
-//! step) and the neighbours it heeded; [`World::attention`] calls the same
+//! The boid step computes each fish's urges with [`UrgeInputs::urges_of`] from
+//! the school's snapshot (everyone's positions and velocities at the start of
+//! the step) and the neighbours it heeded; [`Attention::replay`] calls the same
 //! function on the same snapshot afterwards, so it reports exactly what the
 //! step computed without storing five vectors per fish. What cannot be worked
 //! out again (the control mode's dice, wander's random turn, fleeing from a
@@ -17,19 +17,8 @@ use glam::Vec3;
 use serde::Serialize;
 
 use super::control_mode::{self, ControlMode, Force};
-use super::forces::{self, Perception};
-use super::world::{BoidParams, Heeded, World};
-use crate::sim::common::steering::{self, SteeringParams};
-use crate::sim::common::steering_tuning::SteeringTuning;
-
-/// The five urges of one fish as the step computes them, in [`Force::ALL`]
-/// order: full-strength steering forces (m/s², each already limited to the
-/// maximum force) and how much each is needed now (0–1, what Classic ranks).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Urges {
-    pub(super) forces: [Vec3; 5],
-    pub(super) needs: [f32; 5],
-}
+use super::neighbours::Heeded;
+use super::urges::UrgeInputs;
 
 /// What one fish did in the last boid step that cannot be worked out again
 /// afterwards.
@@ -38,7 +27,7 @@ pub(super) struct StepRecord {
     /// Which urges the control mode applied.
     pub(super) applied: [bool; 5],
     /// Did it flee a shark (which also changes its cohesion and separation
-    /// weights, see [`World::urge_weights`])?
+    /// weights, see [`super::urges::urge_weights`])?
     pub(super) fleeing: bool,
     /// Wander's push, m/s² (on top of the control mode).
     pub(super) wander_m_per_s2: Vec3,
@@ -47,15 +36,15 @@ pub(super) struct StepRecord {
 }
 
 /// What fish `fish` paid attention to in the last step, and what came of it
-/// ([`World::attention`]). Vectors are in the tank's frame.
+/// ([`super::world::World::attention`]). Vectors are in the tank's frame.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Attention {
     pub fish: usize,
     /// How the urges were combined.
     pub mode: ControlMode,
     /// The neighbours it heeded, nearest first (at most
-    /// [`SteeringTuning::topological_neighbours`]): the same list the step's
-    /// search found.
+    /// [`SteeringTuning::topological_neighbours`](crate::sim::common::steering_tuning::SteeringTuning::topological_neighbours)):
+    /// the same list the step's search found.
     pub neighbours: Vec<usize>,
     /// Did it also see a distant school (the far field's pull, part of cohesion)?
     pub sees_far_school: bool,
@@ -162,47 +151,32 @@ impl From<&Attention> for AttentionReport {
     }
 }
 
-impl World {
-    /// What fish `i` paid attention to in the last step: the neighbours it
-    /// heeded, its five urges as the step computed and weighed them, which the
-    /// control mode applied, wander and fleeing, the steering and its velocity
-    /// before and after. A pure query: the step is not run again and nothing
-    /// changes.
-    ///
-    /// `None` without the boid layer, for a fish that does not exist, and until
-    /// the first step after anything the urges read changed (the boid settings,
-    /// the number of fish, the obstacles or stingrays).
-    pub fn attention(&self, i: usize) -> Option<Attention> {
-        let boids = self.boids.as_ref()?;
-        if !self.attention_ready
-            || i >= self.fish.len()
-            || i >= self.positions_m.len()
-            || i >= self.heeded.len()
-            || i >= self.last_steps.len()
-        {
-            return None;
-        }
-        let params = self.boid_steering_params(boids);
-        let tuning = self.world_params.steering;
-        let heeded = self.heeded[i];
-        let urges = self.urges_of(
-            i,
-            &heeded,
-            &boids.perception,
-            &params,
-            &tuning,
-            self.avoid_reach_m(&params, &tuning),
+impl Attention {
+    /// What fish `i` paid attention to in the last step, replayed from the
+    /// step's `inputs` (the same snapshot and settings), the neighbours it
+    /// `heeded`, the `weights` it used and the step's `record` of it, under
+    /// `mode`; `velocity_m_per_s` is how it swims after the step.
+    pub(super) fn replay(
+        i: usize,
+        mode: ControlMode,
+        inputs: &UrgeInputs,
+        heeded: &Heeded,
+        weights: [f32; 5],
+        record: &StepRecord,
+        velocity_m_per_s: Vec3,
+    ) -> Self {
+        let urges = inputs.urges_of(i, heeded);
+        let urges_m_per_s2 = control_mode::contributions(mode, &urges.forces, &weights);
+        let combined_m_per_s2 = control_mode::applied_sum(
+            &urges_m_per_s2,
+            &record.applied,
+            inputs.params().max_force_m_per_s2,
         );
-        let record = self.last_steps[i];
-        let weights = self.urge_weights(boids, record.fleeing);
-        let urges_m_per_s2 = control_mode::contributions(boids.mode, &urges.forces, &weights);
-        let combined_m_per_s2 =
-            control_mode::applied_sum(&urges_m_per_s2, &record.applied, params.max_force_m_per_s2);
-        Some(Attention {
+        Self {
             fish: i,
-            mode: boids.mode,
-            neighbours: heeded.neighbours.iter().map(|(j, _)| j).collect(),
-            sees_far_school: heeded.far_centre_m.is_some(),
+            mode,
+            neighbours: heeded.neighbours().iter().map(|(j, _)| j).collect(),
+            sees_far_school: heeded.far_centre_m().is_some(),
             urges_m_per_s2,
             needs: urges.needs,
             weights,
@@ -212,117 +186,53 @@ impl World {
             escape_m_per_s2: record.escape_m_per_s2,
             fleeing: record.fleeing,
             steering_m_per_s2: combined_m_per_s2 + record.wander_m_per_s2 + record.escape_m_per_s2,
-            position_m: self.positions_m[i],
-            velocity_before_m_per_s: self.velocities_m_per_s[i],
-            velocity_m_per_s: self.fish[i].velocity_m_per_s,
-        })
-    }
-
-    /// The steering limits of the boid layer: the world's, with the top speed
-    /// and maximum force the sliders set.
-    pub(super) fn boid_steering_params(&self, boids: &BoidParams) -> SteeringParams {
-        SteeringParams {
-            max_speed_m_per_s: boids.perception.max_speed_m_per_s,
-            max_force_m_per_s2: boids.perception.max_force_m_per_s2,
-            ..self.params
-        }
-    }
-
-    /// Obstacles can only be in a fish's path within this reach, metres.
-    pub(super) fn avoid_reach_m(&self, params: &SteeringParams, tuning: &SteeringTuning) -> f32 {
-        params.avoidance_look_ahead_m + tuning.avoidance_clearance_m + self.avoid_all.max_radius_m()
-    }
-
-    /// The weights a fish uses this step: the sliders', and a frightened
-    /// fish's closer school (cohesion up, separation down).
-    pub(super) fn urge_weights(&self, boids: &BoidParams, fleeing: bool) -> [f32; 5] {
-        let mut weights = boids.weights;
-        if fleeing {
-            weights[2] = (weights[2] * self.world_params.fear_cohesion_factor).min(100.0);
-            weights[3] *= self.world_params.fear_separation_factor;
-        }
-        weights
-    }
-
-    /// The five urges of fish `i` heeding `heeded`, from the school's snapshot
-    /// (the start of the step): what the boid step combines, and what
-    /// [`Self::attention`] reports.
-    pub(super) fn urges_of(
-        &self,
-        i: usize,
-        heeded: &Heeded,
-        perception: &Perception,
-        params: &SteeringParams,
-        tuning: &SteeringTuning,
-        avoid_reach_m: f32,
-    ) -> Urges {
-        let position_m = self.positions_m[i];
-        let velocity_m_per_s = self.velocities_m_per_s[i];
-        let max_force = params.max_force_m_per_s2;
-        let neighbours = forces::forces_from_neighbours(
-            &self.positions_m,
-            &self.velocities_m_per_s,
-            i,
-            &heeded.neighbours,
-            heeded.far_centre_m,
-            perception,
-            tuning,
-        );
-        // Containment: stay in the pond, away from its edges (turn back
-        // towards open water when the path leaves the comfortable middle).
-        let containment = forces::steer_towards(
-            velocity_m_per_s
-                + steering::containment(
-                    position_m,
-                    velocity_m_per_s,
-                    &self.tank,
-                    params.containment_look_ahead_s,
-                    self.world_params.pond_comfort_margin_m,
-                    params.max_speed_m_per_s,
-                ),
+            position_m: inputs.snapshot().positions_m()[i],
+            velocity_before_m_per_s: inputs.snapshot().velocities_m_per_s()[i],
             velocity_m_per_s,
-            perception,
-        );
-        // Avoidance: the glass, sand and surface (wall algorithm), the
-        // rocks, pillars, ledges and stingrays (rock algorithm) and fish on
-        // a collision course (swaying, clusters as one obstacle).
-        let avoidance = steering::limit(
-            (steering::avoid_walls(
-                position_m,
-                velocity_m_per_s,
-                &self.tank,
-                self.world_params.wall_range_m,
-                tuning,
-            ) + steering::avoid_obstacles(
-                position_m,
-                velocity_m_per_s,
-                self.avoid_all.near(position_m, avoid_reach_m),
-                params.avoidance_look_ahead_m,
-                tuning.avoidance_clearance_m,
-                params.max_speed_m_per_s,
-            ) + forces::avoid_neighbours(
-                &self.positions_m,
-                &self.velocities_m_per_s,
-                i,
-                &heeded.neighbours,
-                params.max_speed_m_per_s,
-                tuning,
-            )) / perception.response_time_s.max(1e-3),
-            max_force,
-        );
-        let forces = [
-            containment,
-            neighbours.alignment_m_per_s2,
-            neighbours.cohesion_m_per_s2,
-            neighbours.separation_m_per_s2,
-            avoidance,
-        ];
-        let mut needs = control_mode::needs_from_forces(&forces, max_force);
-        // Classic ranks the neighbour urges by how much each is needed
-        // (0–1), not by their forces, which saturate inside a school.
-        needs[2] = neighbours.cohesion_need;
-        needs[3] = neighbours.separation_need;
-        Urges { forces, needs }
+        }
+    }
+}
+
+/// The step's record of every fish, for the attention inspector: kept in
+/// place between steps (a step allocates nothing), and withdrawn as soon as
+/// anything the urges read changes.
+#[derive(Clone, Debug, Default)]
+pub(super) struct StepLog {
+    records: Vec<StepRecord>,
+    /// Can the last boid step be replayed (nothing the urges read has
+    /// changed since)?
+    ready: bool,
+}
+
+impl StepLog {
+    /// Gets ready for a boid step of `fish_count` fish.
+    pub(super) fn begin_step(&mut self, fish_count: usize) {
+        self.records.resize(fish_count, StepRecord::default());
+    }
+
+    /// What fish `i` did this step.
+    pub(super) fn record(&mut self, i: usize, record: StepRecord) {
+        self.records[i] = record;
+    }
+
+    /// Ends a step: it can be replayed when it was a boid step.
+    pub(super) fn end_step(&mut self, boid_step: bool) {
+        self.ready = boid_step;
+    }
+
+    /// Something the urges read changed: the last step can no longer be
+    /// replayed.
+    pub(super) fn withdraw(&mut self) {
+        self.ready = false;
+    }
+
+    /// What fish `i` did in the last boid step, while it can be replayed.
+    pub(super) fn get(&self, i: usize) -> Option<&StepRecord> {
+        if self.ready {
+            self.records.get(i)
+        } else {
+            None
+        }
     }
 }
 
@@ -331,8 +241,11 @@ mod tests {
     use glam::Vec3;
 
     use super::*;
-    use crate::sim::boids::world::{DT_SECS, WorldConfig};
+    use crate::sim::boids::forces;
+    use crate::sim::boids::urges::boid_steering_params;
+    use crate::sim::boids::world::{BoidParams, DT_SECS, World, WorldConfig};
     use crate::sim::common::spatial_grid::SpatialGrid;
+    use crate::sim::common::steering;
 
     /// A schooling tank (Table 1's group weights in `mode`), stepped `steps` times.
     fn school(mode: ControlMode, sharks: usize, steps: usize) -> World {
@@ -409,7 +322,7 @@ mod tests {
         let before = w.clone();
         w.step();
         let boids = *w.boids().unwrap();
-        let params = w.boid_steering_params(&boids);
+        let params = boid_steering_params(w.params(), &boids.perception);
         let mut checked = 0;
         for i in 0..w.fish().len() {
             let a = w.attention(i).unwrap();

@@ -5,8 +5,9 @@ use glam::{Vec2, Vec3};
 
 use crate::sim::boids::control_mode::{self, ControlMode};
 use crate::sim::boids::forces::{self, Perception};
+use crate::sim::boids::hard_rules::{OBSTACLE_MARGIN_M, TANK_MARGIN_M};
 use crate::sim::boids::params::StingrayParams;
-use crate::sim::boids::placement::footprint;
+use crate::sim::boids::placement::{OBSTACLE_GAP_M, footprint};
 use crate::sim::boids::world::*;
 use crate::sim::boids::{shark, stingray};
 use crate::sim::common::fish::Fish;
@@ -180,7 +181,7 @@ fn fish_released_at_one_end_spread_through_the_tank_within_a_minute() {
     // Twenty fish let go together near the left glass, low in the water.
     let mut w = world(5, 20);
     let release_m = Vec3::new(w.tank().min_m.x + 0.6, 1.5, w.tank().center_m().z);
-    for fish in &mut w.fish {
+    for fish in w.fish_mut() {
         fish.position_m = release_m;
     }
     // Coarse grid: 4 cells along x, 2 in height, 3 along z.
@@ -316,10 +317,10 @@ fn measure_minute(params: BoidParams, seeds: &[u64]) -> Measured {
             }
             for f in w.fish() {
                 let p = f.position_m;
-                let gap_m = (p - w.tank.min_m).min(w.tank.max_m - p).min_element();
+                let gap_m = (p - w.tank().min_m).min(w.tank().max_m - p).min_element();
                 edge += f32::from(gap_m < 0.1);
                 zone += f32::from(gap_m < 1.0);
-                rock += f32::from(w.obstacles.iter().any(|o| o.signed_distance_m(p) < 0.1));
+                rock += f32::from(w.obstacles().iter().any(|o| o.signed_distance_m(p) < 0.1));
                 fish_steps += 1.0;
             }
             if step % 15 == 0 {
@@ -718,14 +719,14 @@ fn a_fish_that_sees_a_shark_flees() {
     let mut w = boid_world(BoidParams::group(), 1);
     w.set_species_counts(1, 0);
     // The fish swims towards a (satiated, cruising) shark 3 m ahead.
-    w.fish[0] = Fish::new(Vec3::new(1.0, 2.0, 0.0), Vec3::NEG_X * 0.5, 0.4, 0.0);
-    w.sharks[0] = shark::new_shark(
+    w.fish_mut()[0] = Fish::new(Vec3::new(1.0, 2.0, 0.0), Vec3::NEG_X * 0.5, 0.4, 0.0);
+    w.sharks_mut()[0] = shark::new_shark(
         Vec3::new(-2.0, 2.0, 0.0),
         0.0,
         1.8,
         &w.world_params().shark_species,
     );
-    w.sharks[0].satiated_secs = 10.0;
+    w.sharks_mut()[0].satiated_secs = 10.0;
     let start_m = w.fish()[0]
         .position_m
         .distance(w.sharks()[0].body.position_m);
@@ -746,7 +747,7 @@ fn stingrays_glide_near_the_sand_and_close_ones_are_avoided_as_one_polygon() {
     let floor_y_m = w.tank().min_m.y;
     // Three rays side by side in open water, in a clear spot.
     w.set_obstacles(Vec::new());
-    for (k, ray) in w.stingrays.iter_mut().enumerate() {
+    for (k, ray) in w.stingrays_mut().iter_mut().enumerate() {
         *ray = stingray::new_stingray(
             Vec3::new(-1.5 + 1.5 * k as f32, 0.4, 0.0),
             0.0,
