@@ -25,14 +25,21 @@ use super::urges::UrgeInputs;
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(super) struct StepRecord {
     /// Which urges the control mode applied.
-    pub(super) applied: [bool; 5],
+    applied: [bool; 5],
     /// Did it flee a shark (which also changes its cohesion and separation
     /// weights, see [`super::urges::urge_weights`])?
-    pub(super) fleeing: bool,
+    fleeing: bool,
     /// Wander's push, m/s² (on top of the control mode).
-    pub(super) wander_m_per_s2: Vec3,
+    wander_m_per_s2: Vec3,
     /// Fleeing's push, m/s² (on top of the control mode; zero when calm).
-    pub(super) escape_m_per_s2: Vec3,
+    escape_m_per_s2: Vec3,
+}
+
+impl StepRecord {
+    /// Did the fish flee a shark?
+    pub(super) fn fleeing(&self) -> bool {
+        self.fleeing
+    }
 }
 
 /// What fish `fish` paid attention to in the last step, and what came of it
@@ -166,7 +173,7 @@ impl Attention {
         velocity_m_per_s: Vec3,
     ) -> Self {
         let urges = inputs.urges_of(i, heeded);
-        let urges_m_per_s2 = control_mode::contributions(mode, &urges.forces, &weights);
+        let urges_m_per_s2 = control_mode::contributions(mode, urges.forces(), &weights);
         let combined_m_per_s2 = control_mode::applied_sum(
             &urges_m_per_s2,
             &record.applied,
@@ -178,7 +185,7 @@ impl Attention {
             neighbours: heeded.neighbours().iter().map(|(j, _)| j).collect(),
             sees_far_school: heeded.far_centre_m().is_some(),
             urges_m_per_s2,
-            needs: urges.needs,
+            needs: *urges.needs(),
             weights,
             applied: record.applied,
             combined_m_per_s2,
@@ -210,9 +217,22 @@ impl StepLog {
         self.records.resize(fish_count, StepRecord::default());
     }
 
-    /// What fish `i` did this step.
-    pub(super) fn record(&mut self, i: usize, record: StepRecord) {
-        self.records[i] = record;
+    /// What fish `i` did this step: the urges the control mode `applied`,
+    /// whether it was `fleeing`, and its wander and escape pushes (m/s²).
+    pub(super) fn record(
+        &mut self,
+        i: usize,
+        applied: [bool; 5],
+        fleeing: bool,
+        wander_m_per_s2: Vec3,
+        escape_m_per_s2: Vec3,
+    ) {
+        self.records[i] = StepRecord {
+            applied,
+            fleeing,
+            wander_m_per_s2,
+            escape_m_per_s2,
+        };
     }
 
     /// Ends a step: it can be replayed when it was a boid step.

@@ -28,8 +28,20 @@ use crate::sim::common::tank::Tank;
 /// (0–1, what Classic ranks).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct Urges {
-    pub(super) forces: [Vec3; 5],
-    pub(super) needs: [f32; 5],
+    forces: [Vec3; 5],
+    needs: [f32; 5],
+}
+
+impl Urges {
+    /// The five urges' full-strength steering forces, m/s².
+    pub(super) fn forces(&self) -> &[Vec3; 5] {
+        &self.forces
+    }
+
+    /// How much each urge is needed now, 0–1.
+    pub(super) fn needs(&self) -> &[f32; 5] {
+        &self.needs
+    }
 }
 
 /// What the urges of every fish read in one boid step, the same for all fish:

@@ -30,7 +30,7 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
-use super::attention::{Attention, StepLog, StepRecord};
+use super::attention::{Attention, StepLog};
 use super::control_mode::{self, ControlMode, ControlStage};
 use super::forces::Perception;
 use super::hard_rules::{enforce_hard_constraints, move_fish};
@@ -381,7 +381,7 @@ impl World {
             &params,
             &self.world_params,
         );
-        let weights = urges::urge_weights(boids.weights, record.fleeing, &self.world_params);
+        let weights = urges::urge_weights(boids.weights, record.fleeing(), &self.world_params);
         Some(Attention::replay(
             i,
             boids.mode,
@@ -532,7 +532,7 @@ impl World {
             let weights = urges::urge_weights(boids.weights, fleeing, &self.world_params);
             let combined =
                 self.control
-                    .combine(&urges.forces, &urges.needs, &weights, &mut self.rng);
+                    .combine(urges.forces(), urges.needs(), &weights, &mut self.rng);
             let fish = &mut self.fish[i];
             let wander = urges::boid_wander(
                 fish,
@@ -543,15 +543,8 @@ impl World {
                 tuning,
             );
             let escape = escape.unwrap_or(Vec3::ZERO);
-            self.step_log.record(
-                i,
-                StepRecord {
-                    applied: combined.applied,
-                    fleeing,
-                    wander_m_per_s2: wander,
-                    escape_m_per_s2: escape,
-                },
-            );
+            self.step_log
+                .record(i, combined.applied, fleeing, wander, escape);
             self.non_finite_repairs += move_fish(
                 fish,
                 position_m,
