@@ -1,6 +1,8 @@
 //! Where things go in the boid tank: the seed's rocks, pillars and ledges, a
 //! teacher's edits to them (checked for gaps), and spawning fish, sharks and
-//! stingrays clear of the rocks and of each other.
+//! stingrays clear of the rocks and of each other. The placement stage of the
+//! world ([`Scenery`]) owns the fixed obstacles; the spawning functions take
+//! the tank, what to keep clear of and the world's generator as inputs.
 
 use crate::sim::common::fmath;
 use std::f32::consts::TAU;
