@@ -1,9 +1,9 @@
 //! What a fish pays attention to: the neighbours it heeds, its five urges, which
 //! of them the control mode applied in the last step, and what came of it.
 //!
-//! The boid step computes each fish's urges with [`World::urges_of`] from the
-//! school's snapshot (everyone's positions and velocities at the start of the
-//! step) and the neighbours it heeded; [`World::attention`] calls the same
+//! The boid step computes each fish's urges with [`UrgeInputs::urges_of`] from
+//! the school's snapshot (everyone's positions and velocities at the start of
+//! the step) and the neighbours it heeded; [`Attention::replay`] calls the same
 //! function on the same snapshot afterwards, so it reports exactly what the
 //! step computed without storing five vectors per fish. What cannot be worked
 //! out again (the control mode's dice, wander's random turn, fleeing from a
@@ -17,45 +17,41 @@ use glam::Vec3;
 use serde::Serialize;
 
 use super::control_mode::{self, ControlMode, Force};
-use super::forces::{self, Perception};
-use super::world::{BoidParams, Heeded, World};
-use crate::sim::common::steering::{self, SteeringParams};
-use crate::sim::common::steering_tuning::SteeringTuning;
-
-/// The five urges of one fish as the step computes them, in [`Force::ALL`]
-/// order: full-strength steering forces (m/s², each already limited to the
-/// maximum force) and how much each is needed now (0–1, what Classic ranks).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Urges {
-    pub(super) forces: [Vec3; 5],
-    pub(super) needs: [f32; 5],
-}
+use super::neighbours::Heeded;
+use super::urges::UrgeInputs;
 
 /// What one fish did in the last boid step that cannot be worked out again
 /// afterwards.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(super) struct StepRecord {
     /// Which urges the control mode applied.
-    pub(super) applied: [bool; 5],
+    applied: [bool; 5],
     /// Did it flee a shark (which also changes its cohesion and separation
-    /// weights, see [`World::urge_weights`])?
-    pub(super) fleeing: bool,
+    /// weights, see [`super::urges::urge_weights`])?
+    fleeing: bool,
     /// Wander's push, m/s² (on top of the control mode).
-    pub(super) wander_m_per_s2: Vec3,
+    wander_m_per_s2: Vec3,
     /// Fleeing's push, m/s² (on top of the control mode; zero when calm).
-    pub(super) escape_m_per_s2: Vec3,
+    escape_m_per_s2: Vec3,
+}
+
+impl StepRecord {
+    /// Did the fish flee a shark?
+    pub(super) fn fleeing(&self) -> bool {
+        self.fleeing
+    }
 }
 
 /// What fish `fish` paid attention to in the last step, and what came of it
-/// ([`World::attention`]). Vectors are in the tank's frame.
+/// ([`super::world::World::attention`]). Vectors are in the tank's frame.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Attention {
     pub fish: usize,
     /// How the urges were combined.
     pub mode: ControlMode,
     /// The neighbours it heeded, nearest first (at most
-    /// [`SteeringTuning::topological_neighbours`]): the same list the step's
-    /// search found.
+    /// [`SteeringTuning::topological_neighbours`](crate::sim::common::steering_tuning::SteeringTuning::topological_neighbours)):
+    /// the same list the step's search found.
     pub neighbours: Vec<usize>,
     /// Did it also see a distant school (the far field's pull, part of cohesion)?
     pub sees_far_school: bool,
@@ -162,49 +158,34 @@ impl From<&Attention> for AttentionReport {
     }
 }
 
-impl World {
-    /// What fish `i` paid attention to in the last step: the neighbours it
-    /// heeded, its five urges as the step computed and weighed them, which the
-    /// control mode applied, wander and fleeing, the steering and its velocity
-    /// before and after. A pure query: the step is not run again and nothing
-    /// changes.
-    ///
-    /// `None` without the boid layer, for a fish that does not exist, and until
-    /// the first step after anything the urges read changed (the boid settings,
-    /// the number of fish, the obstacles or stingrays).
-    pub fn attention(&self, i: usize) -> Option<Attention> {
-        let boids = self.boids.as_ref()?;
-        if !self.attention_ready
-            || i >= self.fish.len()
-            || i >= self.positions_m.len()
-            || i >= self.heeded.len()
-            || i >= self.last_steps.len()
-        {
-            return None;
-        }
-        let params = self.boid_steering_params(boids);
-        let tuning = self.world_params.steering;
-        let heeded = self.heeded[i];
-        let urges = self.urges_of(
-            i,
-            &heeded,
-            &boids.perception,
-            &params,
-            &tuning,
-            self.avoid_reach_m(&params, &tuning),
+impl Attention {
+    /// What fish `i` paid attention to in the last step, replayed from the
+    /// step's `inputs` (the same snapshot and settings), the neighbours it
+    /// `heeded`, the `weights` it used and the step's `record` of it, under
+    /// `mode`; `velocity_m_per_s` is how it swims after the step.
+    pub(super) fn replay(
+        i: usize,
+        mode: ControlMode,
+        inputs: &UrgeInputs,
+        heeded: &Heeded,
+        weights: [f32; 5],
+        record: &StepRecord,
+        velocity_m_per_s: Vec3,
+    ) -> Self {
+        let urges = inputs.urges_of(i, heeded);
+        let urges_m_per_s2 = control_mode::contributions(mode, urges.forces(), &weights);
+        let combined_m_per_s2 = control_mode::applied_sum(
+            &urges_m_per_s2,
+            &record.applied,
+            inputs.params().max_force_m_per_s2,
         );
-        let record = self.last_steps[i];
-        let weights = self.urge_weights(boids, record.fleeing);
-        let urges_m_per_s2 = control_mode::contributions(boids.mode, &urges.forces, &weights);
-        let combined_m_per_s2 =
-            control_mode::applied_sum(&urges_m_per_s2, &record.applied, params.max_force_m_per_s2);
-        Some(Attention {
+        Self {
             fish: i,
-            mode: boids.mode,
-            neighbours: heeded.neighbours.iter().map(|(j, _)| j).collect(),
-            sees_far_school: heeded.far_centre_m.is_some(),
+            mode,
+            neighbours: heeded.neighbours().iter().map(|(j, _)| j).collect(),
+            sees_far_school: heeded.far_centre_m().is_some(),
             urges_m_per_s2,
-            needs: urges.needs,
+            needs: *urges.needs(),
             weights,
             applied: record.applied,
             combined_m_per_s2,
@@ -212,308 +193,65 @@ impl World {
             escape_m_per_s2: record.escape_m_per_s2,
             fleeing: record.fleeing,
             steering_m_per_s2: combined_m_per_s2 + record.wander_m_per_s2 + record.escape_m_per_s2,
-            position_m: self.positions_m[i],
-            velocity_before_m_per_s: self.velocities_m_per_s[i],
-            velocity_m_per_s: self.fish[i].velocity_m_per_s,
-        })
-    }
-
-    /// The steering limits of the boid layer: the world's, with the top speed
-    /// and maximum force the sliders set.
-    pub(super) fn boid_steering_params(&self, boids: &BoidParams) -> SteeringParams {
-        SteeringParams {
-            max_speed_m_per_s: boids.perception.max_speed_m_per_s,
-            max_force_m_per_s2: boids.perception.max_force_m_per_s2,
-            ..self.params
-        }
-    }
-
-    /// Obstacles can only be in a fish's path within this reach, metres.
-    pub(super) fn avoid_reach_m(&self, params: &SteeringParams, tuning: &SteeringTuning) -> f32 {
-        params.avoidance_look_ahead_m + tuning.avoidance_clearance_m + self.avoid_all.max_radius_m()
-    }
-
-    /// The weights a fish uses this step: the sliders', and a frightened
-    /// fish's closer school (cohesion up, separation down).
-    pub(super) fn urge_weights(&self, boids: &BoidParams, fleeing: bool) -> [f32; 5] {
-        let mut weights = boids.weights;
-        if fleeing {
-            weights[2] = (weights[2] * self.world_params.fear_cohesion_factor).min(100.0);
-            weights[3] *= self.world_params.fear_separation_factor;
-        }
-        weights
-    }
-
-    /// The five urges of fish `i` heeding `heeded`, from the school's snapshot
-    /// (the start of the step): what the boid step combines, and what
-    /// [`Self::attention`] reports.
-    pub(super) fn urges_of(
-        &self,
-        i: usize,
-        heeded: &Heeded,
-        perception: &Perception,
-        params: &SteeringParams,
-        tuning: &SteeringTuning,
-        avoid_reach_m: f32,
-    ) -> Urges {
-        let position_m = self.positions_m[i];
-        let velocity_m_per_s = self.velocities_m_per_s[i];
-        let max_force = params.max_force_m_per_s2;
-        let neighbours = forces::forces_from_neighbours(
-            &self.positions_m,
-            &self.velocities_m_per_s,
-            i,
-            &heeded.neighbours,
-            heeded.far_centre_m,
-            perception,
-            tuning,
-        );
-        // Containment: stay in the pond, away from its edges (turn back
-        // towards open water when the path leaves the comfortable middle).
-        let containment = forces::steer_towards(
-            velocity_m_per_s
-                + steering::containment(
-                    position_m,
-                    velocity_m_per_s,
-                    &self.tank,
-                    params.containment_look_ahead_s,
-                    self.world_params.pond_comfort_margin_m,
-                    params.max_speed_m_per_s,
-                ),
+            position_m: inputs.snapshot().positions_m()[i],
+            velocity_before_m_per_s: inputs.snapshot().velocities_m_per_s()[i],
             velocity_m_per_s,
-            perception,
-        );
-        // Avoidance: the glass, sand and surface (wall algorithm), the
-        // rocks, pillars, ledges and stingrays (rock algorithm) and fish on
-        // a collision course (swaying, clusters as one obstacle).
-        let avoidance = steering::limit(
-            (steering::avoid_walls(
-                position_m,
-                velocity_m_per_s,
-                &self.tank,
-                self.world_params.wall_range_m,
-                tuning,
-            ) + steering::avoid_obstacles(
-                position_m,
-                velocity_m_per_s,
-                self.avoid_all.near(position_m, avoid_reach_m),
-                params.avoidance_look_ahead_m,
-                tuning.avoidance_clearance_m,
-                params.max_speed_m_per_s,
-            ) + forces::avoid_neighbours(
-                &self.positions_m,
-                &self.velocities_m_per_s,
-                i,
-                &heeded.neighbours,
-                params.max_speed_m_per_s,
-                tuning,
-            )) / perception.response_time_s.max(1e-3),
-            max_force,
-        );
-        let forces = [
-            containment,
-            neighbours.alignment_m_per_s2,
-            neighbours.cohesion_m_per_s2,
-            neighbours.separation_m_per_s2,
-            avoidance,
-        ];
-        let mut needs = control_mode::needs_from_forces(&forces, max_force);
-        // Classic ranks the neighbour urges by how much each is needed
-        // (0–1), not by their forces, which saturate inside a school.
-        needs[2] = neighbours.cohesion_need;
-        needs[3] = neighbours.separation_need;
-        Urges { forces, needs }
+        }
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use glam::Vec3;
+/// The step's record of every fish, for the attention inspector: kept in
+/// place between steps (a step allocates nothing), and withdrawn as soon as
+/// anything the urges read changes.
+#[derive(Clone, Debug, Default)]
+pub(super) struct StepLog {
+    records: Vec<StepRecord>,
+    /// Can the last boid step be replayed (nothing the urges read has
+    /// changed since)?
+    ready: bool,
+}
 
-    use super::*;
-    use crate::sim::boids::world::{DT_SECS, WorldConfig};
-    use crate::sim::common::spatial_grid::SpatialGrid;
-
-    /// A schooling tank (Table 1's group weights in `mode`), stepped `steps` times.
-    fn school(mode: ControlMode, sharks: usize, steps: usize) -> World {
-        let mut w = World::new(WorldConfig {
-            seed: 5,
-            fish_count: 120,
-            sharks,
-            ..WorldConfig::default()
-        });
-        w.set_boids(Some(BoidParams {
-            mode,
-            ..BoidParams::group()
-        }));
-        for _ in 0..steps {
-            w.step();
-        }
-        w
+impl StepLog {
+    /// Gets ready for a boid step of `fish_count` fish.
+    pub(super) fn begin_step(&mut self, fish_count: usize) {
+        self.records.resize(fish_count, StepRecord::default());
     }
 
-    #[test]
-    fn the_heeded_neighbours_are_the_steps_search() {
-        let mut w = school(ControlMode::Blended, 0, 0);
-        assert_eq!(w.attention(0), None, "no step yet: nothing to report");
-        let before = w.clone();
-        // The first boid step searches every fish's neighbours from scratch.
-        w.step();
-        let positions: Vec<Vec3> = before.fish().iter().map(|f| f.position_m).collect();
-        let velocities: Vec<Vec3> = before.fish().iter().map(|f| f.velocity_m_per_s).collect();
-        let mut grid = SpatialGrid::default();
-        let tank = before.tank();
-        grid.rebuild(tank.min_m, tank.max_m, 0.5, &positions);
-        let boids = *w.boids().unwrap();
-        let tuning = w.world_params().steering;
-        let mut links = Vec::new();
-        let mut heeding = 0;
-        for i in 0..w.fish().len() {
-            let attention = w.attention(i).unwrap();
-            let mut searched: Vec<usize> = forces::heeded_neighbours(
-                &positions,
-                &velocities,
-                i,
-                &grid,
-                &boids.perception,
-                &tuning,
-            )
-            .iter()
-            .map(|(j, _)| j)
-            .collect();
-            let mut heeded = attention.neighbours.clone();
-            w.interaction_neighbours(i, &mut links);
-            assert_eq!(heeded, links, "fish {i}: the vision links' list");
-            assert!(heeded.len() <= tuning.topological_neighbours);
-            searched.sort_unstable();
-            heeded.sort_unstable();
-            assert_eq!(heeded, searched, "fish {i}");
-            heeding += usize::from(!heeded.is_empty());
-        }
-        assert!(heeding > 100, "most fish heed someone: {heeding}");
-        // Later steps recheck the lists in between searches; still the step's own.
-        for _ in 0..7 {
-            w.step();
-        }
-        for i in 0..w.fish().len() {
-            w.interaction_neighbours(i, &mut links);
-            assert_eq!(w.attention(i).unwrap().neighbours, links);
-        }
+    /// What fish `i` did this step: the urges the control mode `applied`,
+    /// whether it was `fleeing`, and its wander and escape pushes (m/s²).
+    pub(super) fn record(
+        &mut self,
+        i: usize,
+        applied: [bool; 5],
+        fleeing: bool,
+        wander_m_per_s2: Vec3,
+        escape_m_per_s2: Vec3,
+    ) {
+        self.records[i] = StepRecord {
+            applied,
+            fleeing,
+            wander_m_per_s2,
+            escape_m_per_s2,
+        };
     }
 
-    /// Replays the last step's integration of every fish from the reported
-    /// steering and compares with where the step left it: the reported urges,
-    /// combined by the mode's rule, are the steering the fish felt.
-    fn assert_urges_explain_the_velocity_change(mode: ControlMode, sharks: usize) {
-        let mut w = school(mode, sharks, 30);
-        let before = w.clone();
-        w.step();
-        let boids = *w.boids().unwrap();
-        let params = w.boid_steering_params(&boids);
-        let mut checked = 0;
-        for i in 0..w.fish().len() {
-            let a = w.attention(i).unwrap();
-            assert_eq!(a.velocity_before_m_per_s, before.fish()[i].velocity_m_per_s);
-            // The mode's rule: the applied urges' sum, limited.
-            let sum: Vec3 = (0..5)
-                .filter(|&k| a.applied[k])
-                .map(|k| a.urges_m_per_s2[k])
-                .sum();
-            let combined = steering::limit(sum, boids.perception.max_force_m_per_s2);
-            assert_eq!(a.combined_m_per_s2, combined);
-            assert_eq!(
-                a.steering_m_per_s2,
-                combined + a.wander_m_per_s2 + a.escape_m_per_s2
-            );
-            let mut replay = before.fish()[i];
-            replay.integrate(a.steering_m_per_s2, &params, DT_SECS);
-            let after = w.fish()[i];
-            // Skip fish the hard rules touched (at the glass or a rock).
-            if replay.position_m.distance(after.position_m) > 1e-6 {
-                continue;
-            }
-            assert!(
-                replay.velocity_m_per_s.distance(a.velocity_m_per_s) < 1e-6,
-                "{mode:?} fish {i}: replayed {} against {}",
-                replay.velocity_m_per_s,
-                a.velocity_m_per_s
-            );
-            checked += 1;
-        }
-        assert!(checked > 100, "{mode:?}: only {checked} fish checked");
+    /// Ends a step: it can be replayed when it was a boid step.
+    pub(super) fn end_step(&mut self, boid_step: bool) {
+        self.ready = boid_step;
     }
 
-    #[test]
-    fn the_reported_urges_are_the_steering_of_the_step_in_every_mode() {
-        for mode in ControlMode::ALL {
-            assert_urges_explain_the_velocity_change(mode, 0);
-        }
-        assert_urges_explain_the_velocity_change(ControlMode::Blended, 2);
+    /// Something the urges read changed: the last step can no longer be
+    /// replayed.
+    pub(super) fn withdraw(&mut self) {
+        self.ready = false;
     }
 
-    #[test]
-    fn each_mode_marks_the_urges_its_rule_applies() {
-        for mode in ControlMode::ALL {
-            let w = school(mode, 0, 20);
-            let mut counts = [0usize; 6];
-            for i in 0..w.fish().len() {
-                let a = w.attention(i).unwrap();
-                let applied = a.applied.iter().filter(|&&x| x).count();
-                counts[applied] += 1;
-                match mode {
-                    // Every urge with a weight, every step.
-                    ControlMode::Blended => assert_eq!(a.applied, [true; 5]),
-                    // The most pressing urge alone (none when nothing pulls).
-                    ControlMode::Classic => {
-                        assert!(applied <= 1);
-                        let pulls = a.urges_m_per_s2.iter().any(|u| *u != Vec3::ZERO);
-                        assert_eq!(applied == 1, pulls, "fish {i}");
-                    }
-                    // One ticket drawn.
-                    ControlMode::MonteCarlo => assert_eq!(applied, 1),
-                    // Each urge whose weight beat the one dice roll: a lighter
-                    // urge is applied only with every heavier one.
-                    ControlMode::DirectAlternate => {
-                        for k in 0..5 {
-                            for m in 0..5 {
-                                if a.applied[k] && a.weights[m] > a.weights[k] {
-                                    assert!(a.applied[m], "fish {i}: {k} without {m}");
-                                }
-                            }
-                        }
-                    }
-                }
-            }
-            assert!(counts.iter().sum::<usize>() == w.fish().len(), "{counts:?}");
+    /// What fish `i` did in the last boid step, while it can be replayed.
+    pub(super) fn get(&self, i: usize) -> Option<&StepRecord> {
+        if self.ready {
+            self.records.get(i)
+        } else {
+            None
         }
-    }
-
-    #[test]
-    fn asking_changes_nothing_and_a_change_of_the_school_withdraws_the_report() {
-        let mut asked = school(ControlMode::MonteCarlo, 1, 10);
-        let mut plain = asked.clone();
-        for _ in 0..20 {
-            for i in 0..asked.fish().len() {
-                assert!(asked.attention(i).is_some());
-            }
-            asked.step();
-            plain.step();
-        }
-        for (a, b) in asked.fish().iter().zip(plain.fish()) {
-            assert_eq!(a.position_m, b.position_m);
-            assert_eq!(a.velocity_m_per_s, b.velocity_m_per_s);
-        }
-        assert!(asked.attention(119).is_some());
-        assert_eq!(asked.attention(120), None, "no such fish");
-        asked.set_fish_count(50);
-        assert_eq!(asked.attention(10), None, "until the next step");
-        asked.step();
-        assert!(asked.attention(10).is_some());
-        assert_eq!(asked.attention(60), None);
-        asked.set_obstacles(Vec::new());
-        assert_eq!(asked.attention(10), None, "the rocks changed");
-        asked.set_boids(None);
-        asked.step();
-        assert_eq!(asked.attention(10), None, "wandering fish have no urges");
     }
 }

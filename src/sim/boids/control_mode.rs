@@ -29,6 +29,8 @@ use glam::Vec3;
 use rand::Rng;
 use serde::{Deserialize, Serialize};
 
+use super::metrics::ForceWindow;
+
 /// The five forces, in this order everywhere.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -240,6 +242,64 @@ pub fn monte_carlo_pick(weights: &[f32; 5], rng: &mut impl Rng) -> Option<usize>
     }
     // ρ rounded up to the total: the last force with a weight.
     weights.iter().rposition(|&w| sanitize_weight(w) > 0.0)
+}
+
+/// The control-mode stage of the boid step: combines each fish's urges under
+/// the mode (the random modes draw from the world's generator, fish by fish in
+/// the step's order) and counts how often each urge was applied, for the force
+/// frequencies of the metrics.
+#[derive(Clone, Debug, Default)]
+pub(super) struct ControlStage {
+    /// This step's way of combining.
+    mode: ControlMode,
+    /// This step's maximum steering force, m/s².
+    max_force_m_per_s2: f32,
+    /// How many fish applied each urge so far in this step.
+    applied_counts: [u32; 5],
+    window: ForceWindow,
+}
+
+impl ControlStage {
+    /// Starts a step that combines under `mode`, limited to
+    /// `max_force_m_per_s2`.
+    pub(super) fn begin_step(&mut self, mode: ControlMode, max_force_m_per_s2: f32) {
+        self.mode = mode;
+        self.max_force_m_per_s2 = max_force_m_per_s2;
+        self.applied_counts = [0; 5];
+    }
+
+    /// One fish's steering from its urges' `forces` and `needs` under its
+    /// `weights` ([`combine`]), counted.
+    pub(super) fn combine(
+        &mut self,
+        forces: &[Vec3; 5],
+        needs: &[f32; 5],
+        weights: &[f32; 5],
+        rng: &mut impl Rng,
+    ) -> Combined {
+        let combined = combine(
+            self.mode,
+            forces,
+            needs,
+            weights,
+            self.max_force_m_per_s2,
+            rng,
+        );
+        for (count, applied) in self.applied_counts.iter_mut().zip(combined.applied) {
+            *count += u32::from(applied);
+        }
+        combined
+    }
+
+    /// Ends a step of `fish_steps` fish: its counts join the window.
+    pub(super) fn end_step(&mut self, fish_steps: u32) {
+        self.window.push(self.applied_counts, fish_steps);
+    }
+
+    /// How often each urge was applied, recently and since the start.
+    pub(super) fn window(&self) -> &ForceWindow {
+        &self.window
+    }
 }
 
 fn sanitize_weight(w: f32) -> f32 {

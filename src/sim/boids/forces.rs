@@ -158,7 +158,7 @@ impl FarField {
 /// The field of view as a test without square roots: within the vision
 /// distance and inside the cone of half-angle `vision_angle_rad / 2` around the
 /// heading.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub struct ViewCone {
     vision_sq_m2: f32,
     cos_half: f32,
@@ -322,7 +322,7 @@ pub fn search_heeded(
 /// the others (and any index that is no longer a fish) are dropped. Costs a
 /// few multiplications per neighbour instead of a search: the boid layer
 /// searches each fish's neighbours every few steps and rechecks them in
-/// between (see `world::NEIGHBOUR_SEARCH_EVERY_STEPS`).
+/// between (see `neighbours::NEIGHBOUR_SEARCH_EVERY_STEPS`).
 pub fn recheck_heeded(
     positions_m: &[Vec3],
     velocities_m_per_s: &[Vec3],

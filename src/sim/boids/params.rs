@@ -21,6 +21,12 @@
 
 use crate::sim::common::steering_tuning::SteeringTuning;
 
+/// Length of one simulation step in seconds. Default 1/60 s: one step per
+/// frame on a 60 Hz display. The step is fixed (the app runs as many steps as
+/// real time requires) so that results do not depend on the frame rate and a
+/// seed always replays the same way.
+pub const DT_SECS: f32 = 1.0 / 60.0;
+
 /// The boid world's tuning: the steering recipe, the glass and the pond's edge
 /// for the SIMBA layer, fear of sharks, the sharks' hunting, and the sharks'
 /// and stingrays' body and species numbers.

@@ -1,6 +1,8 @@
 //! Where things go in the boid tank: the seed's rocks, pillars and ledges, a
 //! teacher's edits to them (checked for gaps), and spawning fish, sharks and
-//! stingrays clear of the rocks and of each other.
+//! stingrays clear of the rocks and of each other. The placement stage of the
+//! world ([`Scenery`]) owns the fixed obstacles; the spawning functions take
+//! the tank, what to keep clear of and the world's generator as inputs.
 
 use crate::sim::common::fmath;
 use std::f32::consts::TAU;
@@ -9,16 +11,34 @@ use glam::{Vec2, Vec3};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 
-use crate::sim::boids::params::{SharkParams, StingrayParams};
-use crate::sim::boids::shark::{self, MAX_SHARKS, Shark};
-use crate::sim::boids::stingray::{self, MAX_STINGRAYS, Stingray};
+use super::hard_rules::push_shark_clear;
+use super::params::{SharkParams, StingrayParams};
+use super::shark::{self, Shark};
+use super::stingray::{self, Stingray};
 use crate::sim::common::fish::Fish;
 use crate::sim::common::obstacle::{Obstacle, ObstacleError, ObstacleSet, WALL_CLEARANCE_M};
 use crate::sim::common::steering::SteeringParams;
 use crate::sim::common::tank::Tank;
 
-use super::predators::push_shark_clear;
-use super::world::*;
+/// Smallest gap between the footprints of two obstacles, in metres.
+/// Default 0.8 m: wide enough for fish (with their avoidance clearance) to
+/// swim between, and obstacles never overlap.
+pub(super) const OBSTACLE_GAP_M: f32 = 0.8;
+
+/// Smallest gap between a teacher's obstacle and the others, in metres.
+/// Default 0.3 m: about one fish length, so a fish pushed out of one obstacle
+/// never lands in another.
+const EDITED_OBSTACLE_GAP_M: f32 = 0.3;
+
+/// Random positions tried per obstacle or animal before giving up (obstacle)
+/// or falling back to a pushed-out position (animal). Default 200: placement
+/// practically always succeeds in the default tank, and the loop is bounded.
+const PLACEMENT_ATTEMPTS: usize = 200;
+
+/// Distance from walls and obstacle surfaces at which new fish appear, in
+/// metres. Default 0.3 m: about one body length, so no fish starts touching
+/// anything.
+const SPAWN_CLEARANCE_M: f32 = 0.3;
 
 /// Obstacles from a user's list that pass [`Obstacle::validate`] and keep the
 /// gap to the ones before them; the others are logged and left out.
@@ -278,14 +298,7 @@ pub(super) fn spawn_shark(
     }
     let length_m = uniform(rng, species.min_length_m, species.max_length_m);
     let mut new = shark::new_shark(position_m, uniform(rng, 0.0, TAU), length_m, species);
-    push_clear(
-        &mut new.body,
-        tank,
-        obstacles,
-        &ObstacleSet::EMPTY,
-        SHARK_MARGIN_M,
-        SHARK_MARGIN_M,
-    );
+    push_shark_clear(&mut new.body, tank, obstacles);
     new
 }
 
@@ -316,77 +329,90 @@ pub(super) fn spawn_stingray(
     stingray::new_stingray(position_m, uniform(rng, 0.0, TAU), floor_y_m, ray)
 }
 
-impl World {
-    /// Keep the first `fish_count` fish (at most [`MAX_FISH_COUNT`]), or add
-    /// new ones drawn from the world's random generator. Existing fish are
-    /// never changed. Sharks hunting a removed fish lose it.
-    pub fn set_fish_count(&mut self, fish_count: usize) {
-        let fish_count = fish_count.min(MAX_FISH_COUNT);
-        self.fish.truncate(fish_count);
-        self.rebuild_stingray_obstacles();
-        while self.fish.len() < fish_count {
-            let fish = spawn_fish(&self.tank, &self.solids(), &self.params, &mut self.rng);
-            self.fish.push(fish);
+/// A new fish at a free place (clear of `solids`) at least
+/// [`SharkParams::respawn_distance_m`] from every one of `sharks` (or the
+/// farthest of the places tried): the replacement of a caught fish.
+pub(super) fn spawn_fish_far_from_sharks(
+    sharks: &[Shark],
+    tank: &Tank,
+    solids: &[Obstacle],
+    params: &SteeringParams,
+    species: &SharkParams,
+    rng: &mut ChaCha8Rng,
+) -> Fish {
+    let mut best: Option<(f32, Fish)> = None;
+    for _ in 0..PLACEMENT_ATTEMPTS {
+        let fish = spawn_fish(tank, solids, params, rng);
+        let distance_m = sharks
+            .iter()
+            .map(|s| s.body.position_m.distance(fish.position_m))
+            .fold(f32::INFINITY, f32::min);
+        if distance_m >= species.respawn_distance_m {
+            return fish;
         }
-        for shark in &mut self.sharks {
-            if shark.target.is_some_and(|t| t >= fish_count) {
-                shark.target = None;
-            }
+        if best.is_none_or(|(d, _)| distance_m > d) {
+            best = Some((distance_m, fish));
         }
-        self.config.fish_count = fish_count;
-        self.snapshot_is_last_boid_step = false;
-        self.attention_ready = false;
+    }
+    match best {
+        Some((_, fish)) => fish,
+        None => spawn_fish(tank, solids, params, rng),
+    }
+}
+
+/// The fixed obstacles (rocks, pillars, ledges: the seed's or a teacher's)
+/// with their bounds for the hard rule's broad phase. Every edit is checked
+/// ([`Obstacle::validate`] and the gap to the others) before it is made.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Scenery {
+    obstacles: Vec<Obstacle>,
+    /// The same obstacles with their bounds.
+    solids: ObstacleSet,
+}
+
+impl Scenery {
+    /// Scenery of exactly `obstacles` (already checked).
+    pub(super) fn new(obstacles: Vec<Obstacle>) -> Self {
+        let mut scenery = Self {
+            obstacles,
+            solids: ObstacleSet::default(),
+        };
+        scenery.solids.rebuild(&scenery.obstacles);
+        scenery
     }
 
-    /// Keep the first `sharks` sharks and `stingrays` stingrays, or add new ones
-    /// at free places from the world's random generator (at most
-    /// [`MAX_SHARKS`] = 10 and [`MAX_STINGRAYS`] = 20). Fish under a new
-    /// stingray are pushed out at once.
-    pub fn set_species_counts(&mut self, sharks: usize, stingrays: usize) {
-        let (sharks, stingrays) = (sharks.min(MAX_SHARKS), stingrays.min(MAX_STINGRAYS));
-        self.stingrays.truncate(stingrays);
-        while self.stingrays.len() < stingrays {
-            let ray = spawn_stingray(
-                &self.tank,
-                &self.obstacles,
-                &mut self.rng,
-                &self.world_params.stingray,
-            );
-            self.stingrays.push(ray);
-        }
-        self.sharks.truncate(sharks);
-        while self.sharks.len() < sharks {
-            let shark = spawn_shark(
-                &self.tank,
-                &self.fixed_solids,
-                &mut self.rng,
-                &self.world_params.shark_species,
-            );
-            self.sharks.push(shark);
-        }
-        self.config.sharks = sharks;
-        self.config.stingrays = stingrays;
-        self.settle();
+    /// Rocks, pillars and polygons.
+    pub(super) fn obstacles(&self) -> &[Obstacle] {
+        &self.obstacles
     }
 
-    /// Add an obstacle after checking it ([`Obstacle::validate`], and at least
-    /// 0.3 m from every other obstacle); returns its index. Fish inside it are
-    /// pushed out at once; stingrays too close to it move to a free place.
-    pub fn add_obstacle(&mut self, obstacle: Obstacle) -> Result<usize, ObstacleEditError> {
-        obstacle.validate(&self.tank)?;
+    /// The obstacles with their bounds (the hard rule's broad phase).
+    pub(super) fn solids(&self) -> &ObstacleSet {
+        &self.solids
+    }
+
+    /// Adds `obstacle` after checking it ([`Obstacle::validate`], and at least
+    /// [`EDITED_OBSTACLE_GAP_M`] from every other obstacle); returns its index.
+    pub(super) fn add(
+        &mut self,
+        obstacle: Obstacle,
+        tank: &Tank,
+    ) -> Result<usize, ObstacleEditError> {
+        obstacle.validate(tank)?;
         check_gap(&obstacle, &self.obstacles, None)?;
         self.obstacles.push(obstacle);
-        self.obstacles_changed();
+        self.solids.rebuild(&self.obstacles);
         Ok(self.obstacles.len() - 1)
     }
 
-    /// Move obstacle `index` so that its footprint centre is at `new_floor_xz`
-    /// ((x, z) in metres), keeping its shape and height. Errors if there is no
-    /// such obstacle or the new place is not allowed (then nothing changes).
-    pub fn move_obstacle(
+    /// Moves obstacle `index` so that its footprint centre is at `new_floor_xz`
+    /// ((x, z) in metres), keeping its shape and height, if there is such an
+    /// obstacle and the new place is allowed (otherwise nothing changes).
+    pub(super) fn move_to(
         &mut self,
         index: usize,
         new_floor_xz: Vec2,
+        tank: &Tank,
     ) -> Result<(), ObstacleEditError> {
         let Some(old) = self.obstacles.get(index) else {
             return Err(ObstacleEditError::NoSuchObstacle {
@@ -398,90 +424,26 @@ impl World {
             return Err(ObstacleEditError::PlaceNotANumber);
         }
         let moved = old.moved_to(new_floor_xz);
-        moved.validate(&self.tank)?;
+        moved.validate(tank)?;
         check_gap(&moved, &self.obstacles, Some(index))?;
         self.obstacles[index] = moved;
-        self.obstacles_changed();
+        self.solids.rebuild(&self.obstacles);
         Ok(())
     }
 
-    /// Remove obstacle `index`; `false` if there is none.
-    pub fn remove_obstacle(&mut self, index: usize) -> bool {
+    /// Removes obstacle `index`; `false` if there is none.
+    pub(super) fn remove(&mut self, index: usize) -> bool {
         if index >= self.obstacles.len() {
             return false;
         }
         self.obstacles.remove(index);
-        self.obstacles_changed();
+        self.solids.rebuild(&self.obstacles);
         true
     }
 
-    /// Replace all obstacles (e.g. a teacher's saved layout). Obstacles that
-    /// fail [`Obstacle::validate`] are left out (and logged); overlapping ones
-    /// are kept in order as long as they keep the 0.3 m gap to those before
-    /// them. Everything inside the new obstacles is pushed out at once.
-    pub fn set_obstacles(&mut self, obstacles: Vec<Obstacle>) {
-        self.obstacles = valid_obstacles(obstacles, &self.tank);
-        self.obstacles_changed();
-    }
-
-    pub(super) fn obstacles_changed(&mut self) {
-        self.config.obstacles = Some(self.obstacles.clone());
-        self.fixed_solids.rebuild(&self.obstacles);
-        for i in 0..self.stingrays.len() {
-            if !stingray_fits(
-                self.stingrays[i].body.position_m,
-                &self.tank,
-                &self.obstacles,
-                &self.world_params.stingray,
-            ) {
-                self.stingrays[i] = spawn_stingray(
-                    &self.tank,
-                    &self.obstacles,
-                    &mut self.rng,
-                    &self.world_params.stingray,
-                );
-            }
-        }
-        self.settle();
-    }
-
-    /// After a change of obstacles or stingrays: push every fish and shark out
-    /// of everything at once, so no animal is ever inside an obstacle.
-    pub(super) fn settle(&mut self) {
-        self.rebuild_stingray_obstacles();
-        // The urges read the obstacles and stingrays: the last step's can no
-        // longer be replayed.
-        self.attention_ready = false;
-        for fish in &mut self.fish {
-            enforce_hard_constraints(fish, &self.tank, &self.fixed_solids, &self.stingray_solids);
-        }
-        for shark in &mut self.sharks {
-            push_shark_clear(&mut shark.body, &self.tank, &self.fixed_solids);
-        }
-    }
-
-    /// A new fish at a free place at least [`SharkParams::respawn_distance_m`] from
-    /// every shark (or the farthest of the places tried).
-    pub(super) fn spawn_fish_far_from_sharks(&mut self) -> Fish {
-        let solids = self.solids();
-        let mut best: Option<(f32, Fish)> = None;
-        for _ in 0..PLACEMENT_ATTEMPTS {
-            let fish = spawn_fish(&self.tank, &solids, &self.params, &mut self.rng);
-            let distance_m = self
-                .sharks
-                .iter()
-                .map(|s| s.body.position_m.distance(fish.position_m))
-                .fold(f32::INFINITY, f32::min);
-            if distance_m >= self.world_params.shark_species.respawn_distance_m {
-                return fish;
-            }
-            if best.is_none_or(|(d, _)| distance_m > d) {
-                best = Some((distance_m, fish));
-            }
-        }
-        match best {
-            Some((_, fish)) => fish,
-            None => spawn_fish(&self.tank, &solids, &self.params, &mut self.rng),
-        }
+    /// Replaces all obstacles by those of `obstacles` that pass
+    /// [`valid_obstacles`].
+    pub(super) fn replace(&mut self, obstacles: Vec<Obstacle>, tank: &Tank) {
+        *self = Self::new(valid_obstacles(obstacles, tank));
     }
 }
