@@ -1,7 +1,8 @@
 //! The lab's measurement script (see [`crate::census`]): when each reef demo's
 //! moment comes, for the skip's lead and limit (`lab/skip.rs`).
 
-use super::skip::reef_demo_lab;
+use super::Lab;
+use crate::settings::{Scene, Settings};
 use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::events::ReefEventKind;
 
@@ -28,4 +29,17 @@ pub(crate) fn skip_moments() {
             }
         }
     }
+}
+
+/// A lab on the reef's `demo` with `seed`, the rest default: the runs the
+/// skip's tests and its census script (`skip-moments`, below) skip
+/// through.
+pub(crate) fn reef_demo_lab(demo: ReefScene, seed: u64) -> Lab {
+    let mut settings = Settings {
+        scene: Scene::Reef,
+        seed,
+        ..Settings::default()
+    };
+    settings.reef.demo = demo;
+    Lab::new(settings)
 }

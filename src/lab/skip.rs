@@ -204,23 +204,10 @@ pub(super) fn skip_survives(before: &Settings, after: &Settings) -> bool {
     world_only(before) == world_only(after)
 }
 
-/// A lab on the reef's `demo` with `seed`, the rest default: the runs the
-/// skip's tests and its census script (`skip-moments`, `lab/census.rs`) skip
-/// through.
-#[cfg(not(target_arch = "wasm32"))]
-pub(crate) fn reef_demo_lab(demo: crate::sim::reef::demos::ReefScene, seed: u64) -> Lab {
-    let mut settings = Settings {
-        scene: crate::settings::Scene::Reef,
-        seed,
-        ..Settings::default()
-    };
-    settings.reef.demo = demo;
-    Lab::new(settings)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::lab::census::reef_demo_lab;
     use crate::sim::reef::demos::ReefScene;
     use crate::sim::reef::events::ReefEventKind;
     use glam::Vec3;
