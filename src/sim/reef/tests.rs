@@ -5,6 +5,7 @@
 use crate::sim::common::fmath;
 use glam::Vec3;
 
+use crate::sim::reef::animal::Seen;
 use crate::sim::reef::courtship::Phase;
 use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::events::ReefEventKind;
@@ -275,7 +276,7 @@ fn muscle_fish_that_climb_steeply_eat_more_when_a_climb_costs_them_less() {
     // `feeding_agility_census`).
     let eaten = |effort: f32| {
         default_feeding_eaten(&[2, 3, 7, 8], 60.0, |w| {
-            w.params.climb_effort_muscle_body = effort
+            w.params_mut().climb_effort_muscle_body = effort
         })
     };
     assert_eq!(
@@ -301,7 +302,7 @@ fn muscle_fish_eat_more_when_they_rank_food_by_the_path_round_their_turning_circ
     // 284 (132 s, more on every seed; `feeding_agility_census`).
     let eaten = |path: bool| {
         default_feeding_eaten(&[3, 7], 60.0, |w| {
-            w.params.turning_path_weight = if path { 0.5 } else { 0.0 }
+            w.params_mut().turning_path_weight = if path { 0.5 } else { 0.0 }
         })
     };
     let (by_path, by_distance) = (eaten(true), eaten(false));
@@ -319,8 +320,7 @@ fn an_eating_muscle_fish_hovers_with_its_mouth_at_the_food() {
     for k in 1..w.animals().len() {
         w.animal_mut(k).unwrap().alive = false;
     }
-    w.food.clear();
-    w.food_target = 0;
+    w.clear_food();
     w.place(0, c, Vec3::X);
     // Let it swim first: it must stop, not start from rest.
     let far = c + Vec3::X * 3.0;
@@ -672,7 +672,7 @@ fn muscle_prey_eaten(schools: bool, in_school_gait: bool, secs: f32, seeds: &[u6
     let body = ReefConfig::default().body;
     assert_eq!(body, ReefBodyKind::Physical, "the default body");
     prey_eaten_with(body, schools, secs, seeds.iter().copied(), |w| {
-        w.params.behaviour.escape_in_school_gait = in_school_gait;
+        w.params_mut().behaviour.escape_in_school_gait = in_school_gait;
     })
 }
 
@@ -1297,7 +1297,7 @@ fn feeding_time_budget() {
                     if let Some((id, since, from, _)) = *slot
                         && target != Some(id)
                     {
-                        let exists = w.food.iter().any(|f| f.id == id);
+                        let exists = w.food().iter().any(|f| f.id == id);
                         let mine = !exists && meals.contains(&(i, id));
                         if mine {
                             eaten += 1;
@@ -1313,7 +1313,7 @@ fn feeding_time_budget() {
                     let bin = match (a.focus.intention, a.focus.target) {
                         _ if a.mouth_open => 0,
                         (Intention::Eat, Some(Target::Food(id))) => {
-                            let Some(f) = w.food.iter().find(|f| f.id == id) else {
+                            let Some(f) = w.food().iter().find(|f| f.id == id) else {
                                 continue;
                             };
                             let o = f.position_m - head;
@@ -1403,26 +1403,26 @@ fn feeding_variants_census() {
     let variants: [(&str, Tweak); 10] = [
         ("as shipped", |_| {}),
         ("turning path weight 1", |w| {
-            w.params.turning_path_weight = 1.0
+            w.params_mut().turning_path_weight = 1.0
         }),
         ("persistence 0", |w| persistence(w, 0.0)),
         ("persistence 1", |w| persistence(w, 1.0)),
         ("persistence 5", |w| persistence(w, 5.0)),
         ("turning circle 1.0", |w| {
-            w.params.body_turn_radius_body_lengths = 1.0
+            w.params_mut().body_turn_radius_body_lengths = 1.0
         }),
         ("turning circle 1.5", |w| {
-            w.params.body_turn_radius_body_lengths = 1.5
+            w.params_mut().body_turn_radius_body_lengths = 1.5
         }),
         ("climb effort 3", |w| {
-            w.params.climb_effort_muscle_body = 3.0
+            w.params_mut().climb_effort_muscle_body = 3.0
         }),
         ("climb effort 6", |w| {
-            w.params.climb_effort_muscle_body = 6.0
+            w.params_mut().climb_effort_muscle_body = 6.0
         }),
         ("chase pitch 0.5, effort 3", |w| {
-            w.params.behaviour.max_food_chase_pitch_rad = 0.5;
-            w.params.climb_effort_muscle_body = 3.0;
+            w.params_mut().behaviour.max_food_chase_pitch_rad = 0.5;
+            w.params_mut().climb_effort_muscle_body = 3.0;
         }),
     ];
     for (name, tweak) in variants {
@@ -1438,8 +1438,9 @@ fn feeding_variants_census() {
         println!("{name:26} muscle: {m60:4} plankton in 60 s, {m132:4} in 132 s");
     }
     let w = reef(ReefScene::Feeding, ReefBodyKind::Physical, 1);
-    let offered =
-        |secs: f32| 8 * (w.food.len() as u32 + (secs / w.params.food_release_secs).floor() as u32);
+    let offered = |secs: f32| {
+        8 * (w.food().len() as u32 + (secs / w.params().food_release_secs).floor() as u32)
+    };
     println!(
         "plankton offered over seeds 1-8 at most: {} in 60 s, {} in 132 s",
         offered(60.0),
@@ -1505,13 +1506,15 @@ fn strike_census(
     seed: u64,
 ) -> StrikeCensus {
     let mut w = reef(ReefScene::PredatorAndSchool, body, seed);
-    w.params.behaviour.escape_in_school_gait = in_school_gait;
+    w.params_mut().behaviour.escape_in_school_gait = in_school_gait;
     for i in 0..w.animals().len() {
         if w.animals()[i].habits.kind == FishKind::Prey {
             w.animal_mut(i).unwrap().habits.schools = schools;
         }
     }
-    let crowd_around = |w: &ReefWorld, j: usize, at: Vec3| w.prey_crowding(j, at) as u32;
+    let crowd_around = |w: &ReefWorld, j: usize, at: Vec3| {
+        crate::sim::reef::feeding::prey_crowding(w.params(), w.animals(), j, at) as u32
+    };
     let mut c = StrikeCensus::default();
     let dt = w.dt_secs();
     let steps = (secs / dt).round() as u32;
@@ -1637,7 +1640,7 @@ fn reef_collision_census() {
         let mut total = 0;
         for seed in 1..=8 {
             let mut w = reef(scene, ReefBodyKind::Physical, seed);
-            w.params.behaviour.escape_in_school_gait = gait;
+            w.params_mut().behaviour.escape_in_school_gait = gait;
             run(&mut w, 60.0);
             total += w.counts().fish_collisions;
         }
@@ -1743,13 +1746,13 @@ fn agile_tweaks(w: &mut ReefWorld, kv: &[(String, f32)]) {
     for (k, v) in kv {
         let v = *v;
         match k.as_str() {
-            "finpitch" => w.params.motor_choice.forage_max_fin_pitch_rad = v,
-            "chasepitch" => w.params.behaviour.max_food_chase_pitch_rad = v,
-            "effort" => w.params.climb_effort_muscle_body = v,
-            "radius" => w.params.body_turn_radius_body_lengths = v,
-            "pathw" => w.params.turning_path_weight = v,
-            "gain" => w.params.motor_choice.course_gain_per_rad = v,
-            "cruise" => w.params.behaviour.cruise_fraction = v,
+            "finpitch" => w.params_mut().motor_choice.forage_max_fin_pitch_rad = v,
+            "chasepitch" => w.params_mut().behaviour.max_food_chase_pitch_rad = v,
+            "effort" => w.params_mut().climb_effort_muscle_body = v,
+            "radius" => w.params_mut().body_turn_radius_body_lengths = v,
+            "pathw" => w.params_mut().turning_path_weight = v,
+            "gain" => w.params_mut().motor_choice.course_gain_per_rad = v,
+            "cruise" => w.params_mut().behaviour.cruise_fraction = v,
             "trim" => each_body(w, |b| b.max_trim_rad = v),
             "trimgain" => each_body(w, |b| b.fin_trim_gain = v),
             "trimrate" => each_body(w, |b| b.max_trim_rate_rad_per_s = v),
