@@ -527,8 +527,8 @@ impl FishBody {
         &self.params
     }
 
-    /// Parameters, to change in tests.
-    #[cfg(test)]
+    /// Parameters, to change in tests and measurement scripts.
+    #[cfg(not(target_arch = "wasm32"))]
     pub(crate) fn params_mut(&mut self) -> &mut BodyParams {
         &mut self.params
     }

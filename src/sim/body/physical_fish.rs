@@ -129,8 +129,8 @@ impl PhysicalFish {
         &self.body
     }
 
-    /// The body, to change its parameters in tests.
-    #[cfg(test)]
+    /// The body, to change its parameters in tests and measurement scripts.
+    #[cfg(not(target_arch = "wasm32"))]
     pub(crate) fn body_mut(&mut self) -> &mut FishBody {
         &mut self.body
     }
