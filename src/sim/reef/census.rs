@@ -204,7 +204,7 @@ pub(super) fn prey_eaten_with(
         setup(&mut w);
         for i in 0..w.animals().len() {
             if w.animals()[i].habits.kind == FishKind::Prey {
-                w.animal_mut(i).unwrap().habits.schools = schools;
+                w.animal_mut(i).expect("an animal").habits.schools = schools;
             }
         }
         run(&mut w, secs);
@@ -653,7 +653,7 @@ pub(super) fn strike_census(
     w.params_mut().behaviour.escape_in_school_gait = in_school_gait;
     for i in 0..w.animals().len() {
         if w.animals()[i].habits.kind == FishKind::Prey {
-            w.animal_mut(i).unwrap().habits.schools = schools;
+            w.animal_mut(i).expect("an animal").habits.schools = schools;
         }
     }
     let crowd_around = |w: &ReefWorld, j: usize, at: Vec3| {
@@ -726,7 +726,7 @@ fn strike_census_seeds(
     let (a, b) = std::thread::scope(|s| {
         let a = s.spawn(|| sum(halves.0));
         let b = sum(halves.1);
-        (a.join().unwrap(), b)
+        (a.join().expect("the other half's seeds ran"), b)
     });
     let mut c = a;
     c += b;
@@ -745,8 +745,9 @@ fn predator_strike() {
         _ => ReefBodyKind::Physical,
     };
     let seeds = std::env::var("SEEDS").unwrap_or_else(|_| "1-8".into());
-    let (a, b) = seeds.split_once('-').unwrap();
-    let seeds = a.parse::<u64>().unwrap()..=b.parse::<u64>().unwrap();
+    let (a, b) = seeds.split_once('-').expect("SEEDS as FIRST-LAST");
+    let seeds = a.parse::<u64>().expect("SEEDS as FIRST-LAST")
+        ..=b.parse::<u64>().expect("SEEDS as FIRST-LAST");
     let secs: f32 = std::env::var("SECS")
         .ok()
         .and_then(|s| s.parse().ok())

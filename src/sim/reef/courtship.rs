@@ -28,17 +28,24 @@ pub use crate::sim::reef::pair::{Pair, Partner, Phase, Wish};
 /// How long a male left for a larger one leaves that female alone, seconds.
 const REJECTED_SECS: f32 = 30.0;
 
-/// The courtship stage's state: the courting pairs, and by animal the
-/// partners it saw at its last decision and the female it leaves alone.
+/// The courtship stage's state: the courting pairs, and by animal what the
+/// stage remembers of it as a suitor.
 #[derive(Clone, Debug, Default)]
 pub struct Courtship {
     pairs: Vec<Pair>,
-    /// By animal index: a female that left this male for another, and for
-    /// how many more seconds he leaves her alone.
-    rejected_by: Vec<Option<(u32, f32)>>,
-    /// By animal index: the partners it saw at its last decision, best first
-    /// (a female's choice, for the log).
-    mates_seen: Vec<Vec<u32>>,
+    /// By animal index.
+    suitors: Vec<Suitor>,
+}
+
+/// What the courtship stage remembers of one animal.
+#[derive(Clone, Debug, Default)]
+struct Suitor {
+    /// A female that left this male for another, and for how many more
+    /// seconds he leaves her alone.
+    rejected_by: Option<(u32, f32)>,
+    /// The partners it saw at its last decision, best first (a female's
+    /// choice, for the log).
+    mates_seen: Vec<u32>,
 }
 
 /// What the courtship stage reads besides the animals: the tuning, the
@@ -75,25 +82,31 @@ impl Courtship {
     /// The female that left male `i` for another, if he still leaves her
     /// alone.
     pub(super) fn rejected_by(&self, i: usize) -> Option<u32> {
-        self.rejected_by.get(i).copied().flatten().map(|r| r.0)
+        self.suitors.get(i)?.rejected_by.map(|r| r.0)
     }
 
     /// Male `i` leaves the female that left him alone for `dt_secs` less.
     pub(super) fn forget_rejection(&mut self, i: usize, dt_secs: f32) {
-        if let Some(slot) = self.rejected_by.get_mut(i)
-            && let Some((f, left)) = *slot
+        if let Some(suitor) = self.suitors.get_mut(i)
+            && let Some((f, left)) = suitor.rejected_by
         {
-            *slot = (left > dt_secs).then_some((f, left - dt_secs));
+            suitor.rejected_by = (left > dt_secs).then_some((f, left - dt_secs));
         }
     }
 
     /// Animal `i` saw these partners at its decision (best first).
     pub(super) fn saw_mates(&mut self, i: usize, mates: impl Iterator<Item = u32>) {
-        if self.mates_seen.len() <= i {
-            self.mates_seen.resize(i + 1, Vec::new());
+        let seen = &mut self.suitor_mut(i).mates_seen;
+        seen.clear();
+        seen.extend(mates);
+    }
+
+    /// What the stage remembers of animal `i` (a fresh memory if nothing yet).
+    fn suitor_mut(&mut self, i: usize) -> &mut Suitor {
+        if self.suitors.len() <= i {
+            self.suitors.resize(i + 1, Suitor::default());
         }
-        self.mates_seen[i].clear();
-        self.mates_seen[i].extend(mates);
+        &mut self.suitors[i]
     }
 
     /// Logs female `female`'s choice of `male` when she saw other males too:
@@ -110,10 +123,10 @@ impl Courtship {
         let length = |i: u32| animals[i as usize].body.body_length_m();
         let name = |i: u32| animals[i as usize].name(i as usize);
         let Some(over) = self
-            .mates_seen
+            .suitors
             .get(female as usize)
             .into_iter()
-            .flatten()
+            .flat_map(|s| s.mates_seen.iter())
             .copied()
             .filter(|&m| m != male)
             .max_by(|&a, &b| length(a).total_cmp(&length(b)).then(b.cmp(&a)))
@@ -180,11 +193,8 @@ impl Courtship {
                     pair.female,
                     animals[pair.female as usize].body.heading(),
                 );
-                let male = pair.male as usize;
-                if self.rejected_by.len() <= male {
-                    self.rejected_by.resize(male + 1, None);
-                }
-                self.rejected_by[male] = Some((pair.female, REJECTED_SECS));
+                self.suitor_mut(pair.male as usize).rejected_by =
+                    Some((pair.female, REJECTED_SECS));
                 let text = format!(
                     "{} left {} for the larger {}",
                     animals[pair.female as usize].name(pair.female as usize),

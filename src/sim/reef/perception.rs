@@ -446,8 +446,8 @@ pub(super) fn hue_rgb(hue: f32, kind: FishKind) -> [f32; 3] {
 }
 
 /// The perception stage's state: how every animal looks this step, read
-/// before anyone moves (kept between steps only to reuse the buffers).
-#[derive(Clone, Debug, Default)]
+/// before anyone moves.
+#[derive(Clone, Debug)]
 pub struct Perception {
     seen: Vec<Seen>,
     /// By animal: the sphere by which its body hides what lies behind it (of
@@ -483,21 +483,19 @@ pub(super) struct Sight {
 impl Perception {
     /// Takes in how every animal looks now, and which of them swim in a
     /// school (S_k of the predator's prey cost, whatever they intend).
-    pub(super) fn look(&mut self, params: &PerceptionParams, animals: &[ReefAnimal]) {
-        self.seen.clear();
-        self.seen.extend(animals.iter().map(Seen::of));
-        let schooling: Vec<bool> = (0..self.seen.len())
-            .map(|i| in_a_school(params, &self.seen, i))
+    pub(super) fn look(params: &PerceptionParams, animals: &[ReefAnimal]) -> Self {
+        let mut seen: Vec<Seen> = animals.iter().map(Seen::of).collect();
+        let schooling: Vec<bool> = (0..seen.len())
+            .map(|i| in_a_school(params, &seen, i))
             .collect();
-        for (s, schooling) in self.seen.iter_mut().zip(schooling) {
+        for (s, schooling) in seen.iter_mut().zip(schooling) {
             s.schooling = schooling;
         }
-        self.occluders.clear();
-        self.occluders.extend(
-            self.seen.iter().map(|s| {
-                fish_occluder(params, s.position_m, if s.alive { s.length_m } else { 0.0 })
-            }),
-        );
+        let occluders = seen
+            .iter()
+            .map(|s| fish_occluder(params, s.position_m, if s.alive { s.length_m } else { 0.0 }))
+            .collect();
+        Self { seen, occluders }
     }
 
     /// How every animal looked at the start of this step.

@@ -108,7 +108,6 @@ pub struct ReefWorld {
     seaweed: Vec<Seaweed>,
     /// The animals, bodies and minds: the data the stages read and write.
     animals: Vec<ReefAnimal>,
-    perception: Perception,
     plankton: Plankton,
     feeding: Feeding,
     courtship: Courtship,
@@ -155,7 +154,6 @@ impl ReefWorld {
             current: WaterCurrent::new(tank, config.current_m_per_s),
             seaweed: stocked.seaweed,
             animals: stocked.animals,
-            perception: Perception::default(),
             plankton: Plankton::default(),
             feeding: Feeding::default(),
             courtship: Courtship::default(),
@@ -354,7 +352,7 @@ impl ReefWorld {
     pub fn step(&mut self) {
         let dt = self.dt_secs();
         let time_secs = self.time_secs;
-        self.perception.look(&self.params.perception, &self.animals);
+        let view = Perception::look(&self.params.perception, &self.animals);
         let refresh_brightness = self.steps.is_multiple_of(18);
         for i in 0..self.animals.len() {
             if !self.animals[i].alive {
@@ -374,7 +372,7 @@ impl ReefWorld {
                 let b = Retina::render(&eye, Vec3::Y, 10, &scene, &self.env).mean_brightness;
                 self.animals[i].brightness = b;
             }
-            let sight = self.perception.perceive(
+            let sight = view.perceive(
                 i,
                 &self.animals[i],
                 &PerceptionInputs {
@@ -410,7 +408,7 @@ impl ReefWorld {
             let wish = behaviour::behave(
                 i,
                 &mut self.animals[i],
-                self.perception.seen(),
+                view.seen(),
                 &sight.neighbours,
                 &mut self.rng,
                 &BehaviourInputs {
