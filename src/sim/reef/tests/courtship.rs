@@ -1,4 +1,5 @@
-//! Courtship: the pacifists' sequence in order, and the Courtship demo's pairs spawning.
+//! Courtship: the pacifists' sequence in order, and the Courtship demo's pairs
+//! spawning.
 
 use super::*;
 

@@ -1,4 +1,5 @@
-//! Every demo starts sound, runs for minutes in the tank and out of the rocks, and a seed gives the same reef.
+//! Every demo starts sound, runs for minutes in the tank and out of the rocks,
+//! and a seed gives the same reef.
 
 use super::*;
 

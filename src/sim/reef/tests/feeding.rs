@@ -1,4 +1,5 @@
-//! Feeding: hungry fish find and eat plankton, and the muscle body feeds nearly as fast as the point mass.
+//! Feeding: hungry fish find and eat plankton, and the muscle body feeds nearly
+//! as fast as the point mass.
 
 use super::*;
 

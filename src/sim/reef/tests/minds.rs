@@ -1,4 +1,5 @@
-//! Minds: interrupted intentions resume, and a teacher's traits change every fish of a kind.
+//! Minds: interrupted intentions resume, and a teacher's traits change every
+//! fish of a kind.
 
 use super::*;
 

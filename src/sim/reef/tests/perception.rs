@@ -1,11 +1,13 @@
-//! Perception: which prey the shark picks, what schooling means to it, and a fish's memory of a predator it lost from view.
+//! Perception: which prey the shark picks, what schooling means to it, and a
+//! fish's memory of a predator it lost from view.
 
 use super::*;
 
-#[test]
-fn the_shark_picks_lone_prey_over_schooling_prey_at_the_same_distance() {
-    // C_k = d_k (1 + β1 S_k + β2 E_k / π): at equal distance and turn, the
-    // schooling fish costs 1.5 times more.
+/// The point-mass *Predator and school* demo (seed 1) with its shark at the
+/// tank's centre heading along +x, hungry, with a fresh mind that takes the
+/// cheapest prey at once (no earlier target to be devoted to): the reef, the
+/// shark, the centre and the prey.
+fn hungry_shark_at_the_centre() -> (ReefWorld, usize, Vec3, Vec<usize>) {
     let mut w = reef(ReefScene::PredatorAndSchool, ReefBodyKind::PointMass, 1);
     let shark = shark_of(&w);
     let c = w.tank().center_m();
@@ -13,12 +15,18 @@ fn the_shark_picks_lone_prey_over_schooling_prey_at_the_same_distance() {
     {
         let s = w.animal_mut(shark).unwrap();
         s.mental.food_eaten = 0.0;
-        // A fresh mind that takes the cheapest prey at once (no earlier
-        // target to be devoted to).
         s.generator = IntentionGenerator::default();
         s.habits.persistence_body_lengths = 0.0;
     }
     let prey: Vec<usize> = (0..w.animals().len()).filter(|&i| i != shark).collect();
+    (w, shark, c, prey)
+}
+
+#[test]
+fn the_shark_picks_lone_prey_over_schooling_prey_at_the_same_distance() {
+    // C_k = d_k (1 + β1 S_k + β2 E_k / π): at equal distance and turn, the
+    // schooling fish costs 1.5 times more.
+    let (mut w, shark, c, prey) = hungry_shark_at_the_centre();
     // A school of five to the right, one loner to the left and a little
     // farther (2.6 m against 2.2 m: without β1 the shark would take the
     // nearer schooling fish), the rest far behind.
@@ -86,17 +94,7 @@ fn the_shark_counts_prey_as_schooling_by_its_schoolmates_not_its_intention() {
     // S_k = 1 for prey swimming among schoolmates, whatever it intends: a
     // loner that intends to school is as cheap as its distance; three fish
     // swimming together, none intending to school, cost 1.5 times theirs.
-    let mut w = reef(ReefScene::PredatorAndSchool, ReefBodyKind::PointMass, 1);
-    let shark = shark_of(&w);
-    let c = w.tank().center_m();
-    w.place(shark, c, Vec3::X);
-    {
-        let s = w.animal_mut(shark).unwrap();
-        s.mental.food_eaten = 0.0;
-        s.generator = IntentionGenerator::default();
-        s.habits.persistence_body_lengths = 0.0;
-    }
-    let prey: Vec<usize> = (0..w.animals().len()).filter(|&i| i != shark).collect();
+    let (mut w, shark, c, prey) = hungry_shark_at_the_centre();
     // All swim along +x, away from the shark, which is in their blind cone
     // (they feel no fear); the loner is nearer than the group.
     for (k, &i) in prey.iter().enumerate() {

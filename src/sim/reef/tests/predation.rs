@@ -1,4 +1,5 @@
-//! Predation: the shark hunts, prey flee, and schooling prey are taken less often than loners (the confusion effect).
+//! Predation: the shark hunts, prey flee, and schooling prey are taken less
+//! often than loners (the confusion effect).
 
 use super::*;
 

@@ -1,4 +1,5 @@
-//! Schooling: the muscle school splits round the pillar and joins again (Fig. 17).
+//! Schooling: the muscle school splits round the pillar and joins again (Fig.
+//! 17).
 
 use super::*;
 
