@@ -287,335 +287,357 @@ pub fn leave(params: &BehaviourParams, me: &Me, gradient: Vec3) -> Vec3 {
     direction * params.cruise_fraction * me.top_speed_m_per_s
 }
 
-// The reef's behaviour step: each animal's routine turns its intention into a wish.
+// The reef's behaviour stage: each animal's routine turns its intention into a wish.
 
-use super::feeding::in_suck_reach;
-use super::world::*;
+use rand_chacha::ChaCha8Rng;
+
 use crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
-use crate::sim::common::steering::{self, SteeringParams};
-use crate::sim::reef::courtship::Partner;
+use crate::sim::common::obstacle::Obstacle;
+use crate::sim::common::steering::SteeringParams;
+use crate::sim::common::tank::Tank;
+use crate::sim::reef::animal::{ReefAnimal, Seen};
+use crate::sim::reef::bodies::ReefBody;
+use crate::sim::reef::courtship::{Courtship, Partner};
 use crate::sim::reef::environment::Environment;
+use crate::sim::reef::feeding::{FoodParticle, Plankton, in_suck_reach};
 use crate::sim::reef::mind::{Intention, Liking, Target};
 use crate::sim::reef::motor_choice::{Gait, Wish};
+use crate::sim::reef::params::ReefParams;
 
-impl ReefWorld {
-    /// What animal `i`'s behaviour routine asks of its body.
-    pub(super) fn behave(&mut self, i: usize, seen: &[Seen], neighbours: &[Neighbour]) -> Wish {
-        let velocity_m_per_s = self.behave_velocity(i, seen, neighbours);
-        let a = &self.animals[i];
-        let s = seen[i];
-        let gait = match (a.focus.intention, a.focus.target) {
-            // eating-food: hover while the vacuum sucks the food in.
-            (Intention::Eat, Some(Target::Food(id))) => self
-                .food
-                .iter()
-                .find(|f| f.id == id)
-                .filter(|f| {
-                    in_suck_reach(&self.params, s.head_m, s.heading, s.length_m, f.position_m)
-                })
-                .map_or(Gait::Forage, |_| Gait::Hover),
-            (Intention::Eat, Some(Target::Animal(_))) => Gait::Pursue,
-            // schooling, and foraging with the school (see Gait::School).
-            (Intention::School, _) => Gait::School,
-            (Intention::Eat, None) if a.habits.schools && !neighbours.is_empty() => Gait::School,
-            // escaping with the school (see BehaviourParams::escape_in_school_gait).
-            (Intention::Escape, _)
-                if self.params.behaviour.escape_in_school_gait
-                    && a.habits.schools
-                    && !neighbours.is_empty() =>
-            {
-                Gait::School
-            }
-            // mating: the courtship routine says (the female hovers).
-            (Intention::Mate, Some(_)) => self.pair_of(i).map_or(Gait::Pursue, |pair| {
-                if pair.female as usize == i {
-                    let partner = |k: u32| {
-                        let o = &seen[k as usize];
-                        Partner {
-                            position_m: o.position_m,
-                            head_m: o.head_m,
-                            heading: o.heading,
-                            body_length_m: o.length_m,
-                        }
-                    };
-                    let (_, wish) = pair.wishes(
-                        &self.params.courtship,
-                        &partner(pair.male),
-                        &partner(pair.female),
-                        self.time_secs as f32,
-                        self.tank.max_m.y,
-                    );
-                    wish.gait
-                } else {
-                    Gait::Pursue
-                }
-            }),
-            _ => Gait::Swim,
-        };
-        Wish {
-            velocity_m_per_s,
-            gait,
+/// What the behaviour stage reads besides the animal that behaves and what
+/// it saw: the tuning, the tank, the water's light and temperature, the
+/// rocks, the plankton, the courting pairs and the clock.
+pub(super) struct BehaviourInputs<'a> {
+    pub params: &'a ReefParams,
+    pub tank: &'a Tank,
+    pub env: &'a Environment,
+    pub obstacles: &'a [Obstacle],
+    pub plankton: &'a Plankton,
+    pub courtship: &'a Courtship,
+    pub time_secs: f32,
+}
+
+/// What animal `i`'s behaviour routine asks of its body. `seen` is how every
+/// animal looked at the start of the step, `neighbours` the schoolmates it
+/// sees; the wander routine draws from `rng`.
+pub(super) fn behave(
+    i: usize,
+    animal: &mut ReefAnimal,
+    seen: &[Seen],
+    neighbours: &[Neighbour],
+    rng: &mut ChaCha8Rng,
+    inputs: &BehaviourInputs,
+) -> Wish {
+    let velocity_m_per_s = behave_velocity(i, animal, seen, neighbours, rng, inputs);
+    let a = &*animal;
+    let s = seen[i];
+    let gait = match (a.focus.intention, a.focus.target) {
+        // eating-food: hover while the vacuum sucks the food in.
+        (Intention::Eat, Some(Target::Food(id))) => inputs
+            .plankton
+            .find(id)
+            .filter(|f| in_suck_reach(inputs.params, s.head_m, s.heading, s.length_m, f.position_m))
+            .map_or(Gait::Forage, |_| Gait::Hover),
+        (Intention::Eat, Some(Target::Animal(_))) => Gait::Pursue,
+        // schooling, and foraging with the school (see Gait::School).
+        (Intention::School, _) => Gait::School,
+        (Intention::Eat, None) if a.habits.schools && !neighbours.is_empty() => Gait::School,
+        // escaping with the school (see BehaviourParams::escape_in_school_gait).
+        (Intention::Escape, _)
+            if inputs.params.behaviour.escape_in_school_gait
+                && a.habits.schools
+                && !neighbours.is_empty() =>
+        {
+            Gait::School
         }
-    }
-
-    /// The velocity animal `i`'s behaviour routine asks for (the point-mass body
-    /// follows it; the muscle body's motor choice reads it).
-    pub(super) fn behave_velocity(
-        &mut self,
-        i: usize,
-        seen: &[Seen],
-        neighbours: &[Neighbour],
-    ) -> Vec3 {
-        let s = seen[i];
-        let me = Me {
-            position_m: s.position_m,
-            head_m: s.head_m,
-            heading: s.heading,
-            velocity_m_per_s: s.velocity_m_per_s,
-            body_length_m: s.length_m,
-            top_speed_m_per_s: TOP_SPEED_BODY_LENGTHS_PER_SEC * s.length_m,
-        };
-        let bp = self.params.behaviour.clone();
-        let focus = self.animals[i].focus;
-        // Radius of the body's turning circle at its speed now (none for the
-        // point mass, which turns as fast as its steering force allows).
-        let turn_radius = match self.animals[i].body {
-            ReefBody::Physical(_) => self.params.body_turn_radius_body_lengths * s.length_m,
-            ReefBody::Point(_) => 0.0,
-        };
-        let animal_at = |t: Option<Target>| match t {
-            Some(Target::Animal(j)) => seen
-                .get(j as usize)
-                .filter(|o| o.alive)
-                .map(|o| o.position_m),
-            _ => None,
-        };
-        // Where the predator the fish fears is: where it is now if the fish
-        // sees it; where it was last seen if the fish only remembers it (the
-        // fish must not know where an unseen predator went). The memory is
-        // refreshed with the present position whenever the predator is seen.
-        let last_threat = self.animals[i].last_threat;
-        let threat_at = |t: Option<Target>| match (t, last_threat) {
-            (Some(Target::Animal(j)), Some((k, at, _))) if j == k => animal_at(t).map(|_| at),
-            _ => animal_at(t),
-        };
-        let wander = |world: &mut Self| {
-            let a = &mut world.animals[i];
-            a.wander.position_m = s.position_m;
-            a.wander.velocity_m_per_s = a.intended_m_per_s;
-            let params = SteeringParams {
-                max_speed_m_per_s: me.top_speed_m_per_s,
-                wander_distance_m: 2.0 * s.length_m,
-                wander_radius_m: s.length_m,
-                wander_jitter_rad: 0.36,
-                ..SteeringParams::default()
-            };
-            let push = steering::wander(
-                &mut a.wander,
-                &mut world.rng,
-                &params,
-                &world.params.steering,
-            );
-            (s.heading + push.normalize_or_zero() * 0.8).normalize_or(s.heading)
-                * bp.cruise_fraction
-                * me.top_speed_m_per_s
-        };
-        match focus.intention {
-            Intention::Avoid => {
-                let point = match focus.target {
-                    Some(Target::Obstacle(k)) => self
-                        .obstacles
-                        .get(k as usize)
-                        .map(|o| o.core_point_m(s.head_m))
-                        .unwrap_or(s.head_m + s.heading),
-                    Some(Target::Animal(j)) => {
-                        // The other fish is a box moving in a direction (§6.4): one
-                        // swimming the same way ahead is avoided by falling back,
-                        // not by swerving out of the school.
-                        if let Some(o) = seen.get(j as usize).filter(|o| o.alive)
-                            && o.heading.dot(s.heading) > 0.7
-                        {
-                            return fall_back(&bp, &me, o.position_m, o.velocity_m_per_s);
-                        }
-                        animal_at(Some(Target::Animal(j))).unwrap_or(s.head_m + s.heading)
-                    }
-                    _ => {
-                        // The glass: the nearest point of it ahead.
-                        let probe = s.head_m + s.heading * s.length_m * 2.0;
-                        let inside = self.tank.clamp_inside(probe, 0.0);
-                        probe + (probe - inside)
-                    }
-                };
-                avoid(&bp, &me, point, self.animals[i].mental.fear)
-            }
-            Intention::Escape => match threat_at(focus.target) {
-                // A schooling fish flees with the schoolmates it sees.
-                // On the muscle body in the school's gait, at a lesser fright.
-                Some(p) if self.animals[i].habits.schools && !neighbours.is_empty() => {
-                    let fright = match self.animals[i].body {
-                        ReefBody::Physical(_) if bp.escape_in_school_gait => {
-                            bp.escape_fright_in_school_gait
-                        }
-                        _ => 1.0,
-                    };
-                    escape_with_school(&bp, &me, neighbours, p, fright)
-                }
-                Some(p) => escape(&me, p),
-                None => wander(self),
-            },
-            Intention::School => {
-                let urgency = self.animals[i].mental.fear;
-                let threat = threat_at(focus.target);
-                if neighbours.is_empty() && threat.is_none() {
-                    wander(self)
-                } else {
-                    school(&bp, &me, neighbours, urgency, threat)
-                }
-            }
-            Intention::Eat => match focus.target {
-                Some(Target::Food(id)) => match self.food.iter().find(|f| f.id == id) {
-                    Some(f) => chase(
-                        &BehaviourParams {
-                            max_chase_pitch_rad: bp.max_food_chase_pitch_rad,
-                            ..bp.clone()
-                        },
-                        &me,
-                        f.position_m,
-                        bp.cruise_fraction,
-                        0.8 * s.length_m,
-                        turn_radius,
-                    ),
-                    None => wander(self),
-                },
-                Some(Target::Animal(j)) => match seen.get(j as usize).filter(|o| o.alive) {
-                    Some(prey) => {
-                        // chasing-target with a short prediction of where the prey swims.
-                        let lead =
-                            (prey.position_m.distance(s.head_m) / me.top_speed_m_per_s).min(2.0);
-                        chase(
-                            &bp,
-                            &me,
-                            prey.position_m + prey.velocity_m_per_s * lead,
-                            1.0,
-                            0.0,
-                            turn_radius,
-                        )
-                    }
-                    None => wander(self),
-                },
-                // No food in view: a schooling fish forages with its school, others
-                // search alone.
-                _ if self.animals[i].habits.schools && !neighbours.is_empty() => {
-                    school(&bp, &me, neighbours, 0.0, None)
-                }
-                _ => wander(self),
-            },
-            Intention::Mate => {
-                let partner_of = |k: u32| {
-                    seen.get(k as usize).map(|o| Partner {
+        // mating: the courtship routine says (the female hovers).
+        (Intention::Mate, Some(_)) => inputs.courtship.pair_of(i).map_or(Gait::Pursue, |pair| {
+            if pair.female as usize == i {
+                let partner = |k: u32| {
+                    let o = &seen[k as usize];
+                    Partner {
                         position_m: o.position_m,
                         head_m: o.head_m,
                         heading: o.heading,
                         body_length_m: o.length_m,
-                    })
-                };
-                let t = self.time_secs as f32;
-                let surface = self.tank.max_m.y;
-                let mine = self.pair_of(i).copied();
-                let theirs = match focus.target {
-                    Some(Target::Animal(j)) => self.pair_of(j as usize).copied(),
-                    _ => None,
-                };
-                match (mine, theirs, focus.target) {
-                    // In a pair: the courtship routine.
-                    (Some(pair), _, _) => match (partner_of(pair.male), partner_of(pair.female)) {
-                        (Some(m), Some(f)) => {
-                            let (male_wish, female_wish) =
-                                pair.wishes(&self.params.courtship, &m, &f, t, surface);
-                            let wish = if pair.male as usize == i {
-                                male_wish
-                            } else {
-                                female_wish
-                            };
-                            chase(
-                                &bp,
-                                &me,
-                                wish.target_m,
-                                wish.speed_fraction,
-                                0.0,
-                                turn_radius,
-                            )
-                        }
-                        _ => wander(self),
-                    },
-                    // Her partner is another male: join the looping display
-                    // (case 2); she may prefer him.
-                    (None, Some(pair), Some(Target::Animal(j)))
-                        if pair.female == j && !pair.bonded() =>
-                    {
-                        match partner_of(j) {
-                            Some(f) => chase(
-                                &bp,
-                                &me,
-                                pair.loop_point_m(&self.params.courtship, &f, t),
-                                0.9,
-                                0.0,
-                                turn_radius,
-                            ),
-                            None => wander(self),
-                        }
                     }
-                    // Not yet a pair: follow the chosen partner around (case 1).
-                    _ => match animal_at(focus.target) {
-                        Some(p) => chase(
+                };
+                let (_, wish) = pair.wishes(
+                    &inputs.params.courtship,
+                    &partner(pair.male),
+                    &partner(pair.female),
+                    inputs.time_secs,
+                    inputs.tank.max_m.y,
+                );
+                wish.gait
+            } else {
+                Gait::Pursue
+            }
+        }),
+        _ => Gait::Swim,
+    };
+    Wish {
+        velocity_m_per_s,
+        gait,
+    }
+}
+
+/// The velocity animal `i`'s behaviour routine asks for (the point-mass body
+/// follows it; the muscle body's motor choice reads it).
+fn behave_velocity(
+    i: usize,
+    animal: &mut ReefAnimal,
+    seen: &[Seen],
+    neighbours: &[Neighbour],
+    rng: &mut ChaCha8Rng,
+    inputs: &BehaviourInputs,
+) -> Vec3 {
+    let s = seen[i];
+    let me = Me {
+        position_m: s.position_m,
+        head_m: s.head_m,
+        heading: s.heading,
+        velocity_m_per_s: s.velocity_m_per_s,
+        body_length_m: s.length_m,
+        top_speed_m_per_s: TOP_SPEED_BODY_LENGTHS_PER_SEC * s.length_m,
+    };
+    let bp = inputs.params.behaviour.clone();
+    let focus = animal.focus;
+    // Radius of the body's turning circle at its speed now (none for the
+    // point mass, which turns as fast as its steering force allows).
+    let turn_radius = match animal.body {
+        ReefBody::Physical(_) => inputs.params.body_turn_radius_body_lengths * s.length_m,
+        ReefBody::Point(_) => 0.0,
+    };
+    let animal_at = |t: Option<Target>| match t {
+        Some(Target::Animal(j)) => seen
+            .get(j as usize)
+            .filter(|o| o.alive)
+            .map(|o| o.position_m),
+        _ => None,
+    };
+    // Where the predator the fish fears is: where it is now if the fish
+    // sees it; where it was last seen if the fish only remembers it (the
+    // fish must not know where an unseen predator went). The memory is
+    // refreshed with the present position whenever the predator is seen.
+    let last_threat = animal.last_threat;
+    let threat_at = |t: Option<Target>| match (t, last_threat) {
+        (Some(Target::Animal(j)), Some((k, at, _))) if j == k => animal_at(t).map(|_| at),
+        _ => animal_at(t),
+    };
+    let tuning = &inputs.params.steering;
+    let wander = |a: &mut ReefAnimal, rng: &mut ChaCha8Rng| {
+        let params = SteeringParams {
+            max_speed_m_per_s: me.top_speed_m_per_s,
+            wander_distance_m: 2.0 * s.length_m,
+            wander_radius_m: s.length_m,
+            wander_jitter_rad: 0.36,
+            ..SteeringParams::default()
+        };
+        let push = a
+            .drive_mut()
+            .wander_push(s.position_m, rng, &params, tuning);
+        (s.heading + push.normalize_or_zero() * 0.8).normalize_or(s.heading)
+            * bp.cruise_fraction
+            * me.top_speed_m_per_s
+    };
+    match focus.intention {
+        Intention::Avoid => {
+            let point = match focus.target {
+                Some(Target::Obstacle(k)) => inputs
+                    .obstacles
+                    .get(k as usize)
+                    .map(|o| o.core_point_m(s.head_m))
+                    .unwrap_or(s.head_m + s.heading),
+                Some(Target::Animal(j)) => {
+                    // The other fish is a box moving in a direction (§6.4): one
+                    // swimming the same way ahead is avoided by falling back,
+                    // not by swerving out of the school.
+                    if let Some(o) = seen.get(j as usize).filter(|o| o.alive)
+                        && o.heading.dot(s.heading) > 0.7
+                    {
+                        return fall_back(&bp, &me, o.position_m, o.velocity_m_per_s);
+                    }
+                    animal_at(Some(Target::Animal(j))).unwrap_or(s.head_m + s.heading)
+                }
+                _ => {
+                    // The glass: the nearest point of it ahead.
+                    let probe = s.head_m + s.heading * s.length_m * 2.0;
+                    let inside = inputs.tank.clamp_inside(probe, 0.0);
+                    probe + (probe - inside)
+                }
+            };
+            avoid(&bp, &me, point, animal.mental.fear)
+        }
+        Intention::Escape => match threat_at(focus.target) {
+            // A schooling fish flees with the schoolmates it sees.
+            // On the muscle body in the school's gait, at a lesser fright.
+            Some(p) if animal.habits.schools && !neighbours.is_empty() => {
+                let fright = match animal.body {
+                    ReefBody::Physical(_) if bp.escape_in_school_gait => {
+                        bp.escape_fright_in_school_gait
+                    }
+                    _ => 1.0,
+                };
+                escape_with_school(&bp, &me, neighbours, p, fright)
+            }
+            Some(p) => escape(&me, p),
+            None => wander(animal, rng),
+        },
+        Intention::School => {
+            let urgency = animal.mental.fear;
+            let threat = threat_at(focus.target);
+            if neighbours.is_empty() && threat.is_none() {
+                wander(animal, rng)
+            } else {
+                school(&bp, &me, neighbours, urgency, threat)
+            }
+        }
+        Intention::Eat => match focus.target {
+            Some(Target::Food(id)) => match inputs.plankton.find(id) {
+                Some(f) => chase(
+                    &BehaviourParams {
+                        max_chase_pitch_rad: bp.max_food_chase_pitch_rad,
+                        ..bp.clone()
+                    },
+                    &me,
+                    f.position_m,
+                    bp.cruise_fraction,
+                    0.8 * s.length_m,
+                    turn_radius,
+                ),
+                None => wander(animal, rng),
+            },
+            Some(Target::Animal(j)) => match seen.get(j as usize).filter(|o| o.alive) {
+                Some(prey) => {
+                    // chasing-target with a short prediction of where the prey swims.
+                    let lead = (prey.position_m.distance(s.head_m) / me.top_speed_m_per_s).min(2.0);
+                    chase(
+                        &bp,
+                        &me,
+                        prey.position_m + prey.velocity_m_per_s * lead,
+                        1.0,
+                        0.0,
+                        turn_radius,
+                    )
+                }
+                None => wander(animal, rng),
+            },
+            // No food in view: a schooling fish forages with its school, others
+            // search alone.
+            _ if animal.habits.schools && !neighbours.is_empty() => {
+                school(&bp, &me, neighbours, 0.0, None)
+            }
+            _ => wander(animal, rng),
+        },
+        Intention::Mate => {
+            let partner_of = |k: u32| {
+                seen.get(k as usize).map(|o| Partner {
+                    position_m: o.position_m,
+                    head_m: o.head_m,
+                    heading: o.heading,
+                    body_length_m: o.length_m,
+                })
+            };
+            let t = inputs.time_secs;
+            let surface = inputs.tank.max_m.y;
+            let mine = inputs.courtship.pair_of(i).copied();
+            let theirs = match focus.target {
+                Some(Target::Animal(j)) => inputs.courtship.pair_of(j as usize).copied(),
+                _ => None,
+            };
+            match (mine, theirs, focus.target) {
+                // In a pair: the courtship routine.
+                (Some(pair), _, _) => match (partner_of(pair.male), partner_of(pair.female)) {
+                    (Some(m), Some(f)) => {
+                        let (male_wish, female_wish) =
+                            pair.wishes(&inputs.params.courtship, &m, &f, t, surface);
+                        let wish = if pair.male as usize == i {
+                            male_wish
+                        } else {
+                            female_wish
+                        };
+                        chase(
                             &bp,
                             &me,
-                            p,
-                            bp.cruise_fraction,
-                            1.5 * s.length_m,
+                            wish.target_m,
+                            wish.speed_fraction,
+                            0.0,
+                            turn_radius,
+                        )
+                    }
+                    _ => wander(animal, rng),
+                },
+                // Her partner is another male: join the looping display
+                // (case 2); she may prefer him.
+                (None, Some(pair), Some(Target::Animal(j)))
+                    if pair.female == j && !pair.bonded() =>
+                {
+                    match partner_of(j) {
+                        Some(f) => chase(
+                            &bp,
+                            &me,
+                            pair.loop_point_m(&inputs.params.courtship, &f, t),
+                            0.9,
+                            0.0,
                             turn_radius,
                         ),
-                        None => wander(self),
-                    },
+                        None => wander(animal, rng),
+                    }
                 }
+                // Not yet a pair: follow the chosen partner around (case 1).
+                _ => match animal_at(focus.target) {
+                    Some(p) => chase(
+                        &bp,
+                        &me,
+                        p,
+                        bp.cruise_fraction,
+                        1.5 * s.length_m,
+                        turn_radius,
+                    ),
+                    None => wander(animal, rng),
+                },
             }
-            Intention::Leave => {
-                let h = self.animals[i].habits;
-                let sign = |l: Liking| match l {
-                    Liking::High => 1.0,
-                    Liking::Low => -1.0,
-                    Liking::Indifferent => 0.0,
-                };
-                let g = self
+        }
+        Intention::Leave => {
+            let h = animal.habits;
+            let sign = |l: Liking| match l {
+                Liking::High => 1.0,
+                Liking::Low => -1.0,
+                Liking::Indifferent => 0.0,
+            };
+            let g = inputs
+                .env
+                .gradient_direction(s.position_m, Environment::brightness_at)
+                * sign(h.light)
+                + inputs
                     .env
-                    .gradient_direction(s.position_m, Environment::brightness_at)
-                    * sign(h.light)
-                    + self
-                        .env
-                        .gradient_direction(s.position_m, Environment::temperature_01_at)
-                        * sign(h.temperature);
-                leave(&bp, &me, g.normalize_or(s.heading))
-            }
-            Intention::Wander => wander(self),
+                    .gradient_direction(s.position_m, Environment::temperature_01_at)
+                    * sign(h.temperature);
+            leave(&bp, &me, g.normalize_or(s.heading))
         }
+        Intention::Wander => wander(animal, rng),
     }
+}
 
-    /// Where animal `i` is swimming to, when it is closing in on something:
-    /// the food or prey it eats or the partner it courts.
-    pub(super) fn chase_target_m(&self, i: usize) -> Option<Vec3> {
-        let focus = self.animals[i].focus;
-        if !matches!(focus.intention, Intention::Eat | Intention::Mate) {
-            return None;
-        }
-        match focus.target? {
-            Target::Animal(j) => self
-                .animals
-                .get(j as usize)
-                .filter(|a| a.alive)
-                .map(|a| a.body.position_m()),
-            Target::Food(id) => self.food.iter().find(|f| f.id == id).map(|f| f.position_m),
-            Target::Obstacle(_) | Target::Glass => None,
-        }
+/// Where animal `i` of `animals` is swimming to, when it is closing in on
+/// something: the food or prey it eats or the partner it courts.
+pub(super) fn chase_target_m(
+    animals: &[ReefAnimal],
+    food: &[FoodParticle],
+    i: usize,
+) -> Option<Vec3> {
+    let focus = animals[i].focus;
+    if !matches!(focus.intention, Intention::Eat | Intention::Mate) {
+        return None;
+    }
+    match focus.target? {
+        Target::Animal(j) => animals
+            .get(j as usize)
+            .filter(|a| a.alive)
+            .map(|a| a.body.position_m()),
+        Target::Food(id) => food.iter().find(|f| f.id == id).map(|f| f.position_m),
+        Target::Obstacle(_) | Target::Glass => None,
     }
 }
 

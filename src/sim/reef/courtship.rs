@@ -13,291 +13,120 @@
 //! more than [`CourtshipParams::phase_timeout_secs`] in one phase, breaks up.
 //! The numbers live in [`CourtshipParams`] (`ReefParams::courtship`).
 //!
-//! This module holds the pair's state machine and where each partner wants to
-//! go; the reef world (`reef/world.rs`) forms pairs and moves the bodies.
+//! The pair's state machine and where each partner wants to go are in
+//! `reef/pair.rs`; this module holds the reef's courtship stage
+//! ([`Courtship`]), which forms pairs, advances them and ends them; the
+//! bodies stage (`reef/bodies.rs`) moves the partners.
 
-use crate::sim::common::fmath;
-use glam::Vec3;
-use serde::{Deserialize, Serialize};
-
-use crate::sim::reef::motor_choice::Gait;
+use crate::sim::reef::animal::ReefAnimal;
+use crate::sim::reef::events::{EventLog, ReefCounts, ReefEventKind};
+use crate::sim::reef::mind::{FishKind, Focus, Intention, IntentionGenerator, Sex, Target};
 use crate::sim::reef::params::CourtshipParams;
 
-/// The phases in order.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Phase {
-    Looping,
-    Circling,
-    Ascending,
-    Nuzzling,
-    Spawned,
+pub use crate::sim::reef::pair::{Pair, Partner, Phase, Wish};
+
+/// How long a male left for a larger one leaves that female alone, seconds.
+const REJECTED_SECS: f32 = 30.0;
+
+/// The courtship stage's state: the courting pairs, and by animal what the
+/// stage remembers of it as a suitor.
+#[derive(Clone, Debug, Default)]
+pub struct Courtship {
+    pairs: Vec<Pair>,
+    /// By animal index.
+    suitors: Vec<Suitor>,
 }
 
-impl Phase {
-    pub fn label(self) -> &'static str {
-        match self {
-            Self::Looping => "looping",
-            Self::Circling => "circling",
-            Self::Ascending => "spawning ascent",
-            Self::Nuzzling => "nuzzling",
-            Self::Spawned => "spawned",
-        }
+/// What the courtship stage remembers of one animal.
+#[derive(Clone, Debug, Default)]
+struct Suitor {
+    /// A female that left this male for another, and for how many more
+    /// seconds he leaves her alone.
+    rejected_by: Option<(u32, f32)>,
+    /// The partners it saw at its last decision, best first (a female's
+    /// choice, for the log).
+    mates_seen: Vec<u32>,
+}
+
+/// What the courtship stage reads besides the animals: the tuning, the
+/// water's surface and visibility, and the clock.
+pub(super) struct CourtshipInputs<'a> {
+    pub params: &'a CourtshipParams,
+    pub surface_y_m: f32,
+    pub visibility_m: f32,
+    pub time_secs: f64,
+    pub dt_secs: f32,
+}
+
+impl Courtship {
+    /// The courting pairs.
+    pub fn pairs(&self) -> &[Pair] {
+        &self.pairs
     }
-}
 
-/// Where one partner is.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Partner {
-    pub position_m: Vec3,
-    pub head_m: Vec3,
-    pub heading: Vec3,
-    pub body_length_m: f32,
-}
+    /// The pair animal `i` belongs to.
+    pub fn pair_of(&self, i: usize) -> Option<&Pair> {
+        let i = i as u32;
+        self.pairs.iter().find(|p| p.male == i || p.female == i)
+    }
 
-/// What a partner wants this step: a point to chase, a speed fraction, and how
-/// (the female hovers while the male loops or nuzzles, `reef/motor_choice.rs`). A
-/// hovering point-mass body, which has no fins, swims slowly to the point.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Wish {
-    pub target_m: Vec3,
-    pub speed_fraction: f32,
-    pub gait: Gait,
-}
+    /// Animal `i`'s partner in a bonded pair (past looping), if it is in one.
+    pub(super) fn bonded_partner(&self, i: usize) -> Option<u32> {
+        let me = i as u32;
+        self.pairs
+            .iter()
+            .find(|p| p.bonded() && (p.male == me || p.female == me))
+            .map(|p| if p.male == me { p.female } else { p.male })
+    }
 
-/// A courting pair.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Pair {
-    pub male: u32,
-    pub female: u32,
-    pub phase: Phase,
-    /// Seconds in this phase.
-    pub phase_secs: f32,
-    /// Counted passes (looping) or touches (nuzzling).
-    pub count: u32,
-    /// Radians the female has turned while circling.
-    pub turned_rad: f32,
-    /// Seconds since the last counted pass or touch.
-    pub since_count_secs: f32,
-    /// Seconds either partner has been out of the other's sight.
-    pub lost_secs: f32,
-    /// The female's heading last step (for counting turns).
-    last_heading: Vec3,
-}
+    /// The female that left male `i` for another, if he still leaves her
+    /// alone.
+    pub(super) fn rejected_by(&self, i: usize) -> Option<u32> {
+        self.suitors.get(i)?.rejected_by.map(|r| r.0)
+    }
 
-impl Pair {
-    pub fn new(params: &CourtshipParams, male: u32, female: u32, female_heading: Vec3) -> Self {
-        Self {
-            male,
-            female,
-            phase: Phase::Looping,
-            phase_secs: 0.0,
-            count: 0,
-            turned_rad: 0.0,
-            since_count_secs: params.pass_interval_secs,
-            lost_secs: 0.0,
-            last_heading: female_heading,
+    /// Male `i` leaves the female that left him alone for `dt_secs` less.
+    pub(super) fn forget_rejection(&mut self, i: usize, dt_secs: f32) {
+        if let Some(suitor) = self.suitors.get_mut(i)
+            && let Some((f, left)) = suitor.rejected_by
+        {
+            suitor.rejected_by = (left > dt_secs).then_some((f, left - dt_secs));
         }
     }
 
-    /// Is the pair past the point where the female may still change males?
-    pub fn bonded(&self) -> bool {
-        self.phase != Phase::Looping
+    /// Animal `i` saw these partners at its decision (best first).
+    pub(super) fn saw_mates(&mut self, i: usize, mates: impl Iterator<Item = u32>) {
+        let seen = &mut self.suitor_mut(i).mates_seen;
+        seen.clear();
+        seen.extend(mates);
     }
 
-    /// The looping point: in front of her head, swinging up and down.
-    pub fn loop_point_m(&self, params: &CourtshipParams, female: &Partner, time_secs: f32) -> Vec3 {
-        let swing = fmath::sin(std::f32::consts::TAU * params.loop_hz * time_secs);
-        female.head_m
-            + female.heading * 0.8 * female.body_length_m
-            + Vec3::Y * (0.3 + 0.5 * swing) * female.body_length_m
-    }
-
-    /// Her abdomen: under the middle of her body.
-    pub fn abdomen_m(female: &Partner) -> Vec3 {
-        female.position_m - Vec3::Y * 0.2 * female.body_length_m
-    }
-
-    /// What each wants now: (male, female).
-    pub fn wishes(
-        &self,
-        params: &CourtshipParams,
-        male: &Partner,
-        female: &Partner,
-        time_secs: f32,
-        surface_y_m: f32,
-    ) -> (Wish, Wish) {
-        let hover = |p: &Partner, bob: f32, gait: Gait| Wish {
-            target_m: p.head_m + p.heading * p.body_length_m + Vec3::Y * bob * p.body_length_m,
-            speed_fraction: 0.25,
-            gait,
-        };
-        let swim = |target_m: Vec3, speed_fraction: f32| Wish {
-            target_m,
-            speed_fraction,
-            gait: Gait::Pursue,
-        };
-        let bob = 0.3 * fmath::sin(std::f32::consts::TAU * 0.5 * time_secs);
-        match self.phase {
-            Phase::Looping => (
-                swim(
-                    self.loop_point_m(params, female, time_secs),
-                    params.loop_speed_fraction,
-                ),
-                hover(female, bob, Gait::Bob),
-            ),
-            Phase::Circling => (
-                swim(
-                    female.position_m - female.heading * female.body_length_m,
-                    0.8,
-                ),
-                swim(male.position_m - male.heading * male.body_length_m, 0.7),
-            ),
-            Phase::Ascending => {
-                let top = surface_y_m - female.body_length_m;
-                (
-                    swim(
-                        Self::abdomen_m(female) - female.heading * 0.3 * female.body_length_m,
-                        1.0,
-                    ),
-                    swim(
-                        Vec3::new(female.head_m.x, top, female.head_m.z)
-                            + female.heading * female.body_length_m,
-                        1.0,
-                    ),
-                )
-            }
-            Phase::Nuzzling | Phase::Spawned => {
-                let backing_off = self.since_count_secs < params.back_off_secs;
-                let abdomen = Self::abdomen_m(female);
-                let male_wish = if backing_off {
-                    swim(
-                        abdomen
-                            - Vec3::Y * 1.5 * male.body_length_m
-                            - female.heading * male.body_length_m,
-                        0.5,
-                    )
-                } else {
-                    // From behind and below her (she hovers), along her axis.
-                    // A male behind her abdomen aims at a point on her axis
-                    // [`CourtshipParams::staging_body_lengths`] ahead of where he is along it (a
-                    // path follower's look-ahead point), never past her abdomen:
-                    // he turns onto her axis as he closes in, within his
-                    // turning circle. A male beside or ahead of her swims back
-                    // to a point that far behind her abdomen first. (Aiming at
-                    // the abdomen from the side made the muscle male circle
-                    // her a body length and a half away for minutes; lining up
-                    // at a fixed point behind her left him facing the wrong
-                    // way there, and his turn swung him a body length off her
-                    // axis: 4 of 16 seeds spawned, measured.)
-                    let level = Vec3::new(1.0, 0.0, 1.0);
-                    let axis = (female.heading * level).normalize_or(female.heading);
-                    let offset = male.head_m - abdomen;
-                    let along = offset.dot(axis);
-                    let look_ahead = params.staging_body_lengths * male.body_length_m;
-                    let below = 0.3 * male.body_length_m;
-                    let target = if along < 0.0 {
-                        let carrot = (along + look_ahead).min(0.0);
-                        abdomen + axis * carrot - Vec3::Y * below * (-carrot / look_ahead).min(1.0)
-                    } else {
-                        abdomen - axis * look_ahead - Vec3::Y * below
-                    };
-                    swim(target, 0.6)
-                };
-                (male_wish, hover(female, 0.0, Gait::Hover))
-            }
+    /// What the stage remembers of animal `i` (a fresh memory if nothing yet).
+    fn suitor_mut(&mut self, i: usize) -> &mut Suitor {
+        if self.suitors.len() <= i {
+            self.suitors.resize(i + 1, Suitor::default());
         }
+        &mut self.suitors[i]
     }
 
-    /// Advances the pair by `dt_secs`; returns the phase it entered, if any.
-    pub fn advance(
-        &mut self,
-        params: &CourtshipParams,
-        male: &Partner,
-        female: &Partner,
-        time_secs: f32,
-        surface_y_m: f32,
-        dt_secs: f32,
-    ) -> Option<Phase> {
-        self.phase_secs += dt_secs;
-        self.since_count_secs += dt_secs;
-        let turn = fmath::acos(
-            self.last_heading
-                .normalize_or_zero()
-                .dot(female.heading)
-                .clamp(-1.0, 1.0),
-        );
-        self.last_heading = female.heading;
-        let next = match self.phase {
-            Phase::Looping => {
-                let point = self.loop_point_m(params, female, time_secs);
-                if male.head_m.distance(point) < params.pass_body_lengths * male.body_length_m
-                    && self.since_count_secs >= params.pass_interval_secs
-                {
-                    self.count += 1;
-                    self.since_count_secs = 0.0;
-                }
-                (self.count >= params.loops_to_circle).then_some(Phase::Circling)
-            }
-            Phase::Circling => {
-                if turn.is_finite() {
-                    self.turned_rad += turn;
-                }
-                (self.turned_rad >= params.circling_turns * std::f32::consts::TAU)
-                    .then_some(Phase::Ascending)
-            }
-            Phase::Ascending => {
-                let high = female.position_m.y > surface_y_m - 1.5 * female.body_length_m;
-                (high || self.phase_secs >= params.ascent_secs).then_some(Phase::Nuzzling)
-            }
-            Phase::Nuzzling => {
-                if self.since_count_secs >= params.back_off_secs
-                    && male.head_m.distance(Self::abdomen_m(female))
-                        < params.touch_body_lengths * male.body_length_m
-                {
-                    self.count += 1;
-                    self.since_count_secs = 0.0;
-                }
-                (self.count >= params.nuzzles).then_some(Phase::Spawned)
-            }
-            Phase::Spawned => None,
-        };
-        if let Some(phase) = next {
-            self.phase = phase;
-            self.phase_secs = 0.0;
-            self.count = 0;
-            self.turned_rad = 0.0;
-            self.since_count_secs = if phase == Phase::Nuzzling {
-                params.back_off_secs
-            } else {
-                params.pass_interval_secs
-            };
-        }
-        next
-    }
-
-    /// Has the pair been stuck too long in one phase?
-    pub fn timed_out(&self, params: &CourtshipParams) -> bool {
-        self.phase_secs > params.phase_timeout_secs || self.lost_secs > params.lost_secs
-    }
-}
-
-// The reef's courtship step: pairs form, the sequence advances, pairs end.
-
-use super::events::ReefEventKind;
-use super::world::*;
-use crate::sim::reef::mind::{FishKind, Focus, Intention, IntentionGenerator, Sex, Target};
-
-impl ReefWorld {
     /// Logs female `female`'s choice of `male` when she saw other males too:
     /// "pacifist 0 chose pacifist 2 (0.61 m long) over pacifist 1 (0.46 m)".
     /// She ranks bigger males first (`reef/perception.rs`), nearer ones next.
-    fn log_choice(&mut self, female: u32, male: u32) {
-        let length = |i: u32| self.animals[i as usize].body.body_length_m();
-        let name = |i: u32| self.animals[i as usize].name(i as usize);
-        let Some(over) = self.animals[female as usize]
-            .mates_seen
-            .iter()
+    fn log_choice(
+        &self,
+        animals: &[ReefAnimal],
+        log: &mut EventLog,
+        time_secs: f64,
+        female: u32,
+        male: u32,
+    ) {
+        let length = |i: u32| animals[i as usize].body.body_length_m();
+        let name = |i: u32| animals[i as usize].name(i as usize);
+        let Some(over) = self
+            .suitors
+            .get(female as usize)
+            .into_iter()
+            .flat_map(|s| s.mates_seen.iter())
             .copied()
             .filter(|&m| m != male)
             .max_by(|&a, &b| length(a).total_cmp(&length(b)).then(b.cmp(&a)))
@@ -317,12 +146,22 @@ impl ReefWorld {
             name(over),
             length(over)
         );
-        self.log(ReefEventKind::Chose { female, male, over }, text);
+        log.push(time_secs, ReefEventKind::Chose { female, male, over }, text);
     }
 
     /// Forms courting pairs from mutual choices, lets a female change to a
     /// larger male during looping, advances each pair's sequence and ends it.
-    pub(super) fn court(&mut self, dt: f32) {
+    /// Spawned pairs are counted in `counts` and their minds reset.
+    pub(super) fn step(
+        &mut self,
+        animals: &mut [ReefAnimal],
+        log: &mut EventLog,
+        counts: &mut ReefCounts,
+        inputs: &CourtshipInputs,
+    ) {
+        let params = inputs.params;
+        let dt = inputs.dt_secs;
+        let now = inputs.time_secs;
         let mates_with = |a: &ReefAnimal| match (a.alive, a.focus) {
             (
                 true,
@@ -340,28 +179,30 @@ impl ReefWorld {
             if pair.bonded() {
                 continue;
             }
-            let chosen = mates_with(&self.animals[pair.female as usize]);
+            let chosen = mates_with(&animals[pair.female as usize]);
             if let Some(new) = chosen
                 && new != pair.male
-                && mates_with(&self.animals[new as usize]) == Some(pair.female)
+                && mates_with(&animals[new as usize]) == Some(pair.female)
                 && self.pair_of(new as usize).is_none()
-                && self.animals[new as usize].body.body_length_m()
-                    > self.animals[pair.male as usize].body.body_length_m()
+                && animals[new as usize].body.body_length_m()
+                    > animals[pair.male as usize].body.body_length_m()
             {
                 self.pairs[k] = Pair::new(
-                    &self.params.courtship,
+                    params,
                     new,
                     pair.female,
-                    self.animals[pair.female as usize].body.heading(),
+                    animals[pair.female as usize].body.heading(),
                 );
-                self.animals[pair.male as usize].rejected_by = Some((pair.female, 30.0));
+                self.suitor_mut(pair.male as usize).rejected_by =
+                    Some((pair.female, REJECTED_SECS));
                 let text = format!(
                     "{} left {} for the larger {}",
-                    self.animals[pair.female as usize].name(pair.female as usize),
-                    self.animals[pair.male as usize].name(pair.male as usize),
-                    self.animals[new as usize].name(new as usize)
+                    animals[pair.female as usize].name(pair.female as usize),
+                    animals[pair.male as usize].name(pair.male as usize),
+                    animals[new as usize].name(new as usize)
                 );
-                self.log(
+                log.push(
+                    now,
                     ReefEventKind::LeftForLarger {
                         female: pair.female,
                         old: pair.male,
@@ -372,8 +213,8 @@ impl ReefWorld {
             }
         }
         // New pairs: a male and a female who choose each other.
-        for i in 0..self.animals.len() {
-            let a = &self.animals[i];
+        for i in 0..animals.len() {
+            let a = &animals[i];
             if a.habits.kind != FishKind::Pacifist
                 || a.habits.sex != Sex::Male
                 || self.pair_of(i).is_some()
@@ -383,22 +224,23 @@ impl ReefWorld {
             let Some(j) = mates_with(a) else {
                 continue;
             };
-            if mates_with(&self.animals[j as usize]) == Some(i as u32)
+            if mates_with(&animals[j as usize]) == Some(i as u32)
                 && self.pair_of(j as usize).is_none()
             {
-                self.log_choice(j, i as u32);
+                self.log_choice(animals, log, now, j, i as u32);
                 self.pairs.push(Pair::new(
-                    &self.params.courtship,
+                    params,
                     i as u32,
                     j,
-                    self.animals[j as usize].body.heading(),
+                    animals[j as usize].body.heading(),
                 ));
                 let text = format!(
                     "{} and {} began courting: looping",
-                    self.animals[i].name(i),
-                    self.animals[j as usize].name(j as usize)
+                    animals[i].name(i),
+                    animals[j as usize].name(j as usize)
                 );
-                self.log(
+                log.push(
+                    now,
                     ReefEventKind::Courtship {
                         male: i as u32,
                         female: j,
@@ -409,14 +251,14 @@ impl ReefWorld {
             }
         }
         // Advance, finish or break up.
-        let t = self.time_secs as f32;
-        let surface = self.tank.max_m.y;
-        let visibility = self.config.visibility_m;
+        let t = now as f32;
+        let surface = inputs.surface_y_m;
+        let visibility = inputs.visibility_m;
         let mut k = 0;
         while k < self.pairs.len() {
             let pair = self.pairs[k];
             let partner = |i: u32| {
-                let a = &self.animals[i as usize];
+                let a = &animals[i as usize];
                 Partner {
                     position_m: a.body.position_m(),
                     head_m: a.body.head_m(),
@@ -426,10 +268,10 @@ impl ReefWorld {
             };
             let (m, f) = (partner(pair.male), partner(pair.female));
             let both_alive =
-                self.animals[pair.male as usize].alive && self.animals[pair.female as usize].alive;
+                animals[pair.male as usize].alive && animals[pair.female as usize].alive;
             let (mut pair, entered) = {
                 let mut p = pair;
-                let entered = p.advance(&self.params.courtship, &m, &f, t, surface, dt);
+                let entered = p.advance(params, &m, &f, t, surface, dt);
                 p.lost_secs = if m.position_m.distance(f.position_m) > visibility {
                     p.lost_secs + dt
                 } else {
@@ -438,8 +280,8 @@ impl ReefWorld {
                 (p, entered)
             };
             let names = (
-                self.animals[pair.male as usize].name(pair.male as usize),
-                self.animals[pair.female as usize].name(pair.female as usize),
+                animals[pair.male as usize].name(pair.male as usize),
+                animals[pair.female as usize].name(pair.female as usize),
             );
             if let Some(phase) = entered {
                 let text = if phase == Phase::Spawned {
@@ -447,7 +289,8 @@ impl ReefWorld {
                 } else {
                     format!("{} and {} began {}", names.0, names.1, phase.label())
                 };
-                self.log(
+                log.push(
+                    now,
                     ReefEventKind::Courtship {
                         male: pair.male,
                         female: pair.female,
@@ -457,9 +300,9 @@ impl ReefWorld {
                 );
             }
             if pair.phase == Phase::Spawned {
-                self.counts.spawnings += 1;
+                counts.spawnings += 1;
                 for id in [pair.male, pair.female] {
-                    let a = &mut self.animals[id as usize];
+                    let a = &mut animals[id as usize];
                     let constants = a.habits.mental;
                     a.mental.mated(&constants);
                     a.generator = IntentionGenerator::default();
@@ -467,15 +310,15 @@ impl ReefWorld {
                 self.pairs.remove(k);
                 continue;
             }
-            let wanted = mates_with(&self.animals[pair.male as usize]) == Some(pair.female)
-                || mates_with(&self.animals[pair.female as usize]) == Some(pair.male)
-                || self.animals[pair.male as usize].focus.intention == Intention::Avoid
-                || self.animals[pair.female as usize].focus.intention == Intention::Avoid;
-            if !both_alive || pair.timed_out(&self.params.courtship) || (!pair.bonded() && !wanted)
-            {
+            let wanted = mates_with(&animals[pair.male as usize]) == Some(pair.female)
+                || mates_with(&animals[pair.female as usize]) == Some(pair.male)
+                || animals[pair.male as usize].focus.intention == Intention::Avoid
+                || animals[pair.female as usize].focus.intention == Intention::Avoid;
+            if !both_alive || pair.timed_out(params) || (!pair.bonded() && !wanted) {
                 pair.phase_secs = 0.0;
                 self.pairs.remove(k);
-                self.log(
+                log.push(
+                    now,
                     ReefEventKind::BrokeUp {
                         male: pair.male,
                         female: pair.female,
@@ -492,7 +335,10 @@ impl ReefWorld {
 
 #[cfg(test)]
 mod tests {
+    use crate::sim::common::fmath;
     use crate::sim::reef::courtship::*;
+    use crate::sim::reef::world::{ReefConfig, ReefWorld};
+    use glam::Vec3;
 
     #[test]
     fn the_log_shows_the_female_choosing_the_bigger_male() {

@@ -2,23 +2,25 @@
 //! *Predator and school*, *Courtship*, *Feeding* and *School meets obstacle*;
 //! their animals, habits, rocks, food and seaweed.
 
-use std::collections::VecDeque;
-
 use glam::Vec3;
 use rand::Rng;
+use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
-use super::courtship::Phase;
-use super::events::{ReefEvent, ReefEventKind};
-use super::world::*;
 use crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
 use crate::sim::body::physical_fish::{BodySpecies, PhysicalFish};
 use crate::sim::common::fish::Fish;
 use crate::sim::common::moment::Moment;
 use crate::sim::common::obstacle::Obstacle;
-use crate::sim::reef::mind::{
-    FishKind, Focus, Habits, IntentionGenerator, Liking, MentalState, Sex,
-};
+use crate::sim::common::tank::Tank;
+use crate::sim::reef::animal::{MAX_REEF_ANIMALS, ReefAnimal};
+use crate::sim::reef::bodies::{ReefBody, ReefBodyKind};
+use crate::sim::reef::courtship::Phase;
+use crate::sim::reef::environment::Environment;
+use crate::sim::reef::events::ReefEventKind;
+use crate::sim::reef::mind::{FishKind, Habits, Liking, MentalState, Sex};
+use crate::sim::reef::params::ReefParams;
+use crate::sim::reef::seaweed::Seaweed;
 
 /// The demo scenes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -153,19 +155,6 @@ impl ReefScene {
     }
 }
 
-impl ReefWorld {
-    /// The first event of the demo's moment among those logged after the
-    /// first `logged_before` (see [`ReefWorld::events_logged`]).
-    pub fn moment_since(&self, logged_before: u64) -> Option<&ReefEvent> {
-        let new = self.events_logged.saturating_sub(logged_before) as usize;
-        let scene = self.config.scene;
-        self.events
-            .iter()
-            .skip(self.events.len().saturating_sub(new))
-            .find(|e| scene.is_moment(&e.kind))
-    }
-}
-
 pub(super) fn prey_habits(k: usize) -> Habits {
     let sex = if k.is_multiple_of(2) {
         Sex::Female
@@ -179,9 +168,85 @@ pub(super) fn predator_habits() -> Habits {
     Habits::new(FishKind::Predator, Sex::Male, 9)
 }
 
-impl ReefWorld {
-    pub(super) fn populate(&mut self, scene: ReefScene) {
-        let t = self.tank;
+/// What a demo put in the reef.
+pub(super) struct Stocked {
+    pub obstacles: Vec<Obstacle>,
+    pub animals: Vec<ReefAnimal>,
+    pub seaweed: Vec<Seaweed>,
+    /// Plankton particles the water is kept stocked with.
+    pub food_target: usize,
+}
+
+/// What stocking a demo reads: the tank, the water's light and temperature
+/// (a newborn's first brightness and temperature), the tuning, the body
+/// that carries the minds and the teacher's number of prey.
+pub(super) struct StockInputs<'a> {
+    pub tank: Tank,
+    pub env: &'a Environment,
+    pub params: &'a ReefParams,
+    pub body: ReefBodyKind,
+    pub prey_count: Option<usize>,
+}
+
+/// Stocks the reef for `scene`, drawing from `rng`: rocks, animals (fed and
+/// content, with random clocks), seaweed, and how much plankton to keep.
+pub(super) fn populate(scene: ReefScene, rng: &mut ChaCha8Rng, inputs: &StockInputs) -> Stocked {
+    let mut stock = Stock {
+        rng,
+        inputs,
+        obstacles: Vec::new(),
+        animals: Vec::new(),
+        seaweed: Vec::new(),
+    };
+    let food_target = stock.populate(scene);
+    Stocked {
+        obstacles: stock.obstacles,
+        animals: stock.animals,
+        seaweed: stock.seaweed,
+        food_target,
+    }
+}
+
+/// A point at least `margin` inside `tank` and `margin` clear of every rock
+/// of `obstacles` (the tank's centre if 100 draws from `rng` found none).
+pub(super) fn random_free_point(
+    rng: &mut ChaCha8Rng,
+    tank: &Tank,
+    obstacles: &[Obstacle],
+    margin: f32,
+) -> Vec3 {
+    let (lo, hi) = (
+        tank.min_m + Vec3::splat(margin),
+        tank.max_m - Vec3::splat(margin),
+    );
+    let mut p = tank.center_m();
+    for _ in 0..100 {
+        p = Vec3::new(
+            rng.random_range(lo.x..hi.x),
+            rng.random_range(lo.y..hi.y),
+            rng.random_range(lo.z..hi.z),
+        );
+        if obstacles.iter().all(|o| o.signed_distance_m(p) > margin) {
+            break;
+        }
+    }
+    p
+}
+
+/// A reef being stocked: the generator it draws from and what it holds so far.
+struct Stock<'a, 'b> {
+    rng: &'a mut ChaCha8Rng,
+    inputs: &'a StockInputs<'b>,
+    obstacles: Vec<Obstacle>,
+    animals: Vec<ReefAnimal>,
+    seaweed: Vec<Seaweed>,
+}
+
+impl Stock<'_, '_> {
+    /// Puts in `scene`'s rocks, animals and seaweed; returns the plankton
+    /// particles to keep in the water.
+    fn populate(&mut self, scene: ReefScene) -> usize {
+        let t = self.inputs.tank;
         let c = t.center_m();
         match scene {
             ReefScene::Reef => {
@@ -200,7 +265,7 @@ impl ReefWorld {
                         radius_m: 0.7,
                     },
                 ];
-                for k in 0..self.config.prey_count.unwrap_or(scene.default_prey_count()) {
+                for k in 0..self.inputs.prey_count.unwrap_or(scene.default_prey_count()) {
                     let p = Vec3::new(-3.5, 2.5, 1.5) + self.jitter(1.2);
                     self.spawn(p, Vec3::X, prey_habits(k), 0.45);
                 }
@@ -238,7 +303,7 @@ impl ReefWorld {
                     center_m: Vec3::new(0.0, 0.1, 2.0),
                     radius_m: 0.8,
                 }];
-                for k in 0..self.config.prey_count.unwrap_or(scene.default_prey_count()) {
+                for k in 0..self.inputs.prey_count.unwrap_or(scene.default_prey_count()) {
                     let p = Vec3::new(-2.5, 2.3, 0.0) + self.jitter(1.3);
                     self.spawn(p, Vec3::Z, prey_habits(k), 0.45);
                 }
@@ -260,7 +325,7 @@ impl ReefWorld {
                 // slowed to a tenth of the nominal p0 (fully hungry after 6
                 // minutes instead of 37 s), so hunger does not break the pairs up
                 // before they spawn; the *Minds* panel sets it back.
-                let digestion_fraction = self.params.courtship_digestion_fraction;
+                let digestion_fraction = self.inputs.params.courtship_digestion_fraction;
                 let courting = |sex| {
                     let mut h = Habits::new(FishKind::Pacifist, sex, 1);
                     h.mental.libido_rate_per_unit =
@@ -295,17 +360,16 @@ impl ReefWorld {
                     radius_m: 1.0,
                     height_m: t.size_m().y - crate::sim::common::obstacle::SURFACE_CLEARANCE_M,
                 }];
-                for k in 0..self.config.prey_count.unwrap_or(scene.default_prey_count()) {
+                for k in 0..self.inputs.prey_count.unwrap_or(scene.default_prey_count()) {
                     let p = Vec3::new(-4.5, 2.2, 0.0) + self.jitter(1.0);
                     self.spawn(p, Vec3::X, prey_habits(k), 0.45);
                 }
             }
         }
-        self.food_target = scene.default_food_count();
         // Everyone starts fed and content with a random clock, so the urges
         // do not all rise in step: 0.7 of its appetite eaten up to
         // `ReefParams::start_fed_for_max_secs` ago.
-        let fed_for_max_secs = self.params.start_fed_for_max_secs;
+        let fed_for_max_secs = self.inputs.params.start_fed_for_max_secs;
         let fed_for: Vec<f32> = (0..self.animals.len())
             .map(|_| self.rng.random_range(0.0..fed_for_max_secs))
             .collect();
@@ -321,9 +385,10 @@ impl ReefWorld {
             a.mental.update(&a.habits.mental, secs, std::iter::empty());
             a.mental.secs_since_mating = secs;
         }
+        scene.default_food_count()
     }
 
-    pub(super) fn jitter(&mut self, r: f32) -> Vec3 {
+    fn jitter(&mut self, r: f32) -> Vec3 {
         Vec3::new(
             self.rng.random_range(-r..r),
             self.rng.random_range(-0.5 * r..0.5 * r),
@@ -331,35 +396,16 @@ impl ReefWorld {
         )
     }
 
-    pub(super) fn random_free_point(&mut self, margin: f32) -> Vec3 {
-        let (lo, hi) = (
-            self.tank.min_m + Vec3::splat(margin),
-            self.tank.max_m - Vec3::splat(margin),
-        );
-        let mut p = self.tank.center_m();
-        for _ in 0..100 {
-            p = Vec3::new(
-                self.rng.random_range(lo.x..hi.x),
-                self.rng.random_range(lo.y..hi.y),
-                self.rng.random_range(lo.z..hi.z),
-            );
-            if self
-                .obstacles
-                .iter()
-                .all(|o| o.signed_distance_m(p) > margin)
-            {
-                break;
-            }
-        }
-        p
+    fn random_free_point(&mut self, margin: f32) -> Vec3 {
+        random_free_point(self.rng, &self.inputs.tank, &self.obstacles, margin)
     }
 
-    pub(super) fn spawn(&mut self, position_m: Vec3, heading: Vec3, habits: Habits, length_m: f32) {
+    fn spawn(&mut self, position_m: Vec3, heading: Vec3, habits: Habits, length_m: f32) {
         if self.animals.len() >= MAX_REEF_ANIMALS {
             return;
         }
         let length = length_m * self.rng.random_range(0.95..1.05);
-        let mut p = self.tank.clamp_inside(position_m, length.max(0.6));
+        let mut p = self.inputs.tank.clamp_inside(position_m, length.max(0.6));
         for o in &self.obstacles {
             if o.signed_distance_m(p) < length {
                 p = o.push_outside(p, length);
@@ -371,7 +417,7 @@ impl ReefWorld {
             FishKind::Pacifist => (0.3 + 0.17 * f32::from(habits.species)).fract(),
         };
         let heading = heading.normalize_or(Vec3::X);
-        let body = match self.config.body {
+        let body = match self.inputs.body {
             ReefBodyKind::Physical => {
                 let species = if habits.kind == FishKind::Predator {
                     BodySpecies::Shark
@@ -390,46 +436,26 @@ impl ReefWorld {
             )),
         };
         let top = TOP_SPEED_BODY_LENGTHS_PER_SEC * length;
-        let habits = habits.sanitized();
-        self.animals.push(ReefAnimal {
-            mental: MentalState::new(&habits.mental, 0.0, 0.0),
+        let env = self.inputs.env;
+        self.animals.push(ReefAnimal::new(
             habits,
-            demo_habits: habits,
-            generator: IntentionGenerator::default(),
-            focus: Focus::WANDER,
             body,
             hue,
-            alive: true,
-            mouth_open: false,
-            desired_m_per_s: heading * 0.5 * top,
-            brightness: self.env.brightness_at(p),
-            temperature_c: self.env.temperature_c_at(p),
-            history: VecDeque::new(),
-            intended_m_per_s: heading * 0.5 * top,
-            touch: None,
-            last_threat: None,
-            rejected_by: None,
-            last_escape_logged_secs: None,
-            wander: Fish::new(p, heading * 0.5 * top, length, hue),
-            strike_recovery_secs: 0.0,
-            mates_seen: Vec::new(),
-        });
+            p,
+            length,
+            heading * 0.5 * top,
+            env.brightness_at(p),
+            env.temperature_c_at(p),
+        ));
     }
 
-    pub(super) fn plant_seaweed(&mut self, strands: usize) {
+    fn plant_seaweed(&mut self, strands: usize) {
         for k in 0..strands {
             let mut root = self.random_free_point(0.5);
-            root.y = self.tank.min_m.y;
+            root.y = self.inputs.tank.min_m.y;
             let height = self.rng.random_range(1.2..2.6f32);
-            let segment = height / (SEAWEED_NODES - 1) as f32;
-            let nodes = (0..SEAWEED_NODES)
-                .map(|n| root + Vec3::Y * segment * n as f32)
-                .collect();
-            self.seaweed.push(Seaweed {
-                nodes_m: nodes,
-                segment_m: segment,
-                phase_rad: k as f32 * 1.7,
-            });
+            self.seaweed
+                .push(Seaweed::planted(root, height, k as f32 * 1.7));
         }
     }
 }

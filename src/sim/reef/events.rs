@@ -1,11 +1,14 @@
 //! The reef's event log: readable lines ("shark 12 ate fish 3") a student can
-//! follow, and the intention changes worth logging.
+//! follow, the intention changes worth logging, and the counters over the
+//! run. Every stage that logs takes the [`EventLog`] as an explicit input.
+
+use std::collections::VecDeque;
 
 use serde::{Deserialize, Serialize};
 
-use super::world::*;
-use crate::sim::reef::courtship::Phase;
+use crate::sim::reef::animal::ReefAnimal;
 use crate::sim::reef::mind::{Focus, Intention, Target};
+use crate::sim::reef::pair::Phase;
 
 /// Something a student can read.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -130,22 +133,92 @@ impl ReefEventKind {
     }
 }
 
-impl ReefWorld {
-    pub(super) fn log_decision(&mut self, i: usize, before: Focus, after: Focus) {
-        let name = self.animals[i].name(i);
+/// Seconds between two "fled" events of one fish.
+pub const ESCAPE_LOG_EVERY_SECS: f64 = 15.0;
+/// Events kept in the log.
+pub const EVENT_LOG_LEN: usize = 200;
+
+/// Counters over the run.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct ReefCounts {
+    pub prey_eaten: u32,
+    /// Strikes that failed because other prey near the target confused the
+    /// predator (see [`crate::sim::reef::params::ReefParams::confusion_per_neighbour`]).
+    pub missed_strikes: u32,
+    /// Pairs that completed the courtship sequence.
+    pub spawnings: u32,
+    /// Of those, prey whose intention was to school when caught (not the
+    /// predator's S_k, which asks whether schoolmates were around it).
+    pub schooling_prey_eaten: u32,
+    pub food_eaten: u32,
+    /// Starts of body overlaps between two fish, not counting a bonded
+    /// courting pair's (circling, ascending and nuzzling are close by design).
+    pub fish_collisions: u32,
+    /// Body-steps inside a rock (should stay 0).
+    pub inside_rock_steps: u32,
+}
+
+/// The reef's event log: the last [`EVENT_LOG_LEN`] events, how many were
+/// logged since the start, and when each fish's last escape was logged (the
+/// log says "fled" once per [`ESCAPE_LOG_EVERY_SECS`], not at every glance at
+/// the shark).
+#[derive(Clone, Debug, Default)]
+pub struct EventLog {
+    lines: VecDeque<ReefEvent>,
+    logged: u64,
+    /// By animal index: when its last escape was logged.
+    last_escape_logged_secs: Vec<Option<f64>>,
+}
+
+impl EventLog {
+    /// The events kept, oldest first.
+    pub fn lines(&self) -> &VecDeque<ReefEvent> {
+        &self.lines
+    }
+
+    /// Events logged since the start, including those the log has dropped.
+    pub fn logged(&self) -> u64 {
+        self.logged
+    }
+
+    /// Logs what happened at `time_secs`.
+    pub(super) fn push(&mut self, time_secs: f64, kind: ReefEventKind, text: String) {
+        self.logged += 1;
+        if self.lines.len() == EVENT_LOG_LEN {
+            self.lines.pop_front();
+        }
+        self.lines.push_back(ReefEvent {
+            time_secs,
+            kind,
+            text,
+        });
+    }
+
+    /// Logs animal `i`'s change of focus from `before` to `after` at
+    /// `time_secs`, if it is news: the start of an escape, at most once per
+    /// [`ESCAPE_LOG_EVERY_SECS`].
+    pub(super) fn log_decision(
+        &mut self,
+        animals: &[ReefAnimal],
+        i: usize,
+        before: Focus,
+        after: Focus,
+        time_secs: f64,
+    ) {
+        if self.last_escape_logged_secs.len() <= i {
+            self.last_escape_logged_secs.resize(i + 1, None);
+        }
+        let name = animals[i].name(i);
         match (before.intention, after.intention, after.target) {
             (b, Intention::Escape, Some(Target::Animal(p)))
                 if b != Intention::Escape
-                    && self.animals[i]
-                        .last_escape_logged_secs
-                        .is_none_or(|t| self.time_secs - t >= ESCAPE_LOG_EVERY_SECS) =>
+                    && self.last_escape_logged_secs[i]
+                        .is_none_or(|t| time_secs - t >= ESCAPE_LOG_EVERY_SECS) =>
             {
-                self.animals[i].last_escape_logged_secs = Some(self.time_secs);
-                let text = format!(
-                    "{name} fled from {}",
-                    self.animals[p as usize].name(p as usize)
-                );
-                self.log(
+                self.last_escape_logged_secs[i] = Some(time_secs);
+                let text = format!("{name} fled from {}", animals[p as usize].name(p as usize));
+                self.push(
+                    time_secs,
                     ReefEventKind::BeganEscape {
                         fish: i as u32,
                         predator: p,
@@ -155,17 +228,5 @@ impl ReefWorld {
             }
             _ => {}
         }
-    }
-
-    pub(super) fn log(&mut self, kind: ReefEventKind, text: String) {
-        self.events_logged += 1;
-        if self.events.len() == EVENT_LOG_LEN {
-            self.events.pop_front();
-        }
-        self.events.push_back(ReefEvent {
-            time_secs: self.time_secs,
-            kind,
-            text,
-        });
     }
 }

@@ -181,7 +181,7 @@ pub fn choose(params: &MotorChoiceParams, wish: &Wish, body: &Body, time_secs: f
     // nuzzling male behind the female but facing away from her braked, coasted,
     // beat again and braked, turning about 6°/s while he swam out of her sight:
     // courtship seeds 1-16 spawned 14 times within 5 minutes, now 15, and no
-    // pair stalls in nuzzling; `reef_world::tests::courtship_seeds`.)
+    // pair stalls in nuzzling; `shoal-census courtship-seeds`.)
     if wanted < 0.5 * speed
         && speed > params.brake_above_fraction * top
         && !body.turning

@@ -51,7 +51,7 @@ pub struct ReefParams {
     /// body to climb at up to 44° (`MotorChoiceParams::forage_max_fin_pitch_rad`,
     /// `BodyParams::fin_trim_gain`) and it turns in a circle of 1.2 body
     /// lengths, so food overhead is reached by a spiral. *Feeding*, seeds 1–8,
-    /// 60 / 132 s (`feeding_agility_census`): 202 / 469 plankton with 1.5, 170 /
+    /// 60 / 132 s (`shoal-census feeding-agility`): 202 / 469 plankton with 1.5, 170 /
     /// 407 with 4 (point masses 342 / 723). With the old 29° climbs 4 was best
     /// (seeds 1–8, 60 s, before the libm change: 45 with 1, 116 with 2, 149
     /// with 4, 134 with 10; `docs/departures.md`, climb effort). The
@@ -70,7 +70,7 @@ pub struct ReefParams {
     /// ravenous fish, seeds 1–8, 60 s: 142 plankton with 0, 145 with 0.3, 165
     /// with 0.5, 174 with 1 (point masses 342); ranking by distance, the fish
     /// spent a third of their chases with the food 90° or more off their heading,
-    /// with 0.5 a fifth, with 1 a twentieth (`feeding_time_budget`). With 1, a school of muscle prey in the default
+    /// with 0.5 a fifth, with 1 a twentieth (`shoal-census feeding-time-budget`). With 1, a school of muscle prey in the default
     /// reef lined up on the one particle ahead of them all and jammed there
     /// (seeds 1–8, 1 minute: 136 collision starts, 107 with 0, 118 with 0.5).
     /// The point-mass body turns on the spot and ranks by distance.
@@ -196,7 +196,7 @@ pub struct CourtshipParams {
     /// and swam wide circles back to it, passing it once in 15–40 s: with the fin
     /// brace of `body::body_layout`, 6 of 8 seeds spawned within 5 minutes at 0.9,
     /// 8 of 8 at 0.7 and at 0.5, at 0.5 sooner (104–167 s; 15 of seeds 1–16;
-    /// point-mass pairs 16 of 16 at 43–61 s). `reef_world::tests::courtship_seeds`.
+    /// point-mass pairs 16 of 16 at 43–61 s). `shoal-census courtship-seeds`.
     pub loop_speed_fraction: f32,
     /// The male's mouth within this many body lengths of the looping point counts
     /// one pass (the paper: "reaches the vicinity"; 1.0, chosen: the muscle body
@@ -210,8 +210,8 @@ pub struct CourtshipParams {
     /// body lengths (3, chosen: more than twice the muscle body's turning radius,
     /// `ReefParams::body_turn_radius_body_lengths`, so the look-ahead point is never
     /// inside his turning circle, where the chase swims straight on. Seeds 1–8 /
-    /// 1–16 spawning within 5 minutes on muscle bodies, `reef_world::tests::
-    /// courtship_seeds`: look-ahead 1.5: 5 / 10; 2.5: 6 / 14; 3: 7 / 14; the earlier
+    /// 1–16 spawning within 5 minutes on muscle bodies, `shoal-census
+    /// courtship-seeds`: look-ahead 1.5: 5 / 10; 2.5: 6 / 14; 3: 7 / 14; the earlier
     /// fixed line-up point 1.5 behind her: 1 / 4.)
     pub staging_body_lengths: f32,
     /// The male's mouth within this many body lengths of her abdomen is a touch (0.35).
@@ -350,7 +350,7 @@ pub struct MotorChoiceParams {
     /// `BodyParams::max_trim_rad` 0.7, the part beyond 0.5 rate-limited,
     /// `BodyParams::max_trim_rate_rad_per_s`): a fish at 0.7 of its top speed
     /// climbs at 44° (`physical_fish::bend_census::climb_angle_census`;
-    /// 32° at 0.5). *Feeding* on muscles, 60 / 132 s (`feeding_agility_census`):
+    /// 32° at 0.5). *Feeding* on muscles, 60 / 132 s (`shoal-census feeding-agility`):
     /// seeds 1–8, 202 / 469 plankton (190 / 450 with 0.5, 165 / 375 with the
     /// old fin law, 0.5 rad and climb effort 4); seeds 1–16, 420 / 956 (point
     /// masses 342 / 723 and 730 / 1487). Default reef, seeds 1–40 × 132 s: no

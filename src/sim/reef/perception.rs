@@ -385,11 +385,16 @@ fn ray_ellipsoid(o: Vec3, dir: Vec3, centre: Vec3, axis: Vec3, a: f32, b: f32) -
     Some(t / len)
 }
 
-// The reef's perception step: what each animal sees, its retina and its fellows.
+// The reef's perception stage: what each animal sees, its retina and its fellows.
 
-use super::world::*;
+use crate::sim::common::tank::Tank;
+use crate::sim::reef::animal::{ReefAnimal, Seen};
 use crate::sim::reef::behaviour::Neighbour;
+use crate::sim::reef::bodies::ReefBody;
+use crate::sim::reef::courtship::Courtship;
+use crate::sim::reef::feeding::FoodParticle;
 use crate::sim::reef::mind::{FishKind, Intention, Percept, Sex, Target};
+use crate::sim::reef::params::ReefParams;
 
 /// β1 of the prey cost: schooling prey are harder to take (paper: 0.5).
 pub const PREY_BETA_SCHOOL: f32 = 0.5;
@@ -440,34 +445,62 @@ pub(super) fn hue_rgb(hue: f32, kind: FishKind) -> [f32; 3] {
     [0.15 + 0.75 * r, 0.15 + 0.75 * g, 0.15 + 0.75 * b]
 }
 
-impl ReefWorld {
-    /// Renders animal `i`'s retinal image (`size` × `size`).
-    pub fn retina(&self, i: usize, size: usize) -> Option<Retina> {
-        let a = self.animals.get(i)?;
-        let eye = Eye::new(a.body.head_m(), a.body.heading(), self.config.visibility_m);
-        let scene = self.retina_scene(i);
-        Some(Retina::render(&eye, Vec3::Y, size, &scene, &self.env))
+/// The perception stage's state: how every animal looks this step, read
+/// before anyone moves.
+#[derive(Clone, Debug)]
+pub struct Perception {
+    seen: Vec<Seen>,
+    /// By animal: the sphere by which its body hides what lies behind it (of
+    /// radius 0 for the dead).
+    occluders: Vec<Sphere>,
+}
+
+/// What the perception stage reads besides the animal that looks: the
+/// tuning, the water's visibility V_r, light and temperature, the tank, the
+/// rocks, the plankton and the courting pairs.
+pub(super) struct PerceptionInputs<'a> {
+    pub params: &'a ReefParams,
+    pub visibility_m: f32,
+    pub env: &'a Environment,
+    pub tank: &'a Tank,
+    pub obstacles: &'a [Obstacle],
+    pub food: &'a [FoodParticle],
+    pub courtship: &'a Courtship,
+}
+
+/// What one animal perceived.
+pub(super) struct Sight {
+    /// The percept for its intention generator.
+    pub percept: Percept,
+    /// Its schooling neighbours.
+    pub neighbours: Vec<Neighbour>,
+    /// Its distances (in its body lengths) to the predators it fears.
+    pub predator_distances: Vec<f32>,
+    /// The most frightening predator actually in view, and where it is.
+    pub sighted: Option<(u32, Vec3)>,
+}
+
+impl Perception {
+    /// Takes in how every animal looks now, and which of them swim in a
+    /// school (S_k of the predator's prey cost, whatever they intend).
+    pub(super) fn look(params: &PerceptionParams, animals: &[ReefAnimal]) -> Self {
+        let mut seen: Vec<Seen> = animals.iter().map(Seen::of).collect();
+        let schooling: Vec<bool> = (0..seen.len())
+            .map(|i| in_a_school(params, &seen, i))
+            .collect();
+        for (s, schooling) in seen.iter_mut().zip(schooling) {
+            s.schooling = schooling;
+        }
+        let occluders = seen
+            .iter()
+            .map(|s| fish_occluder(params, s.position_m, if s.alive { s.length_m } else { 0.0 }))
+            .collect();
+        Self { seen, occluders }
     }
 
-    pub(super) fn retina_scene(&self, viewer: usize) -> RetinaScene<'_> {
-        RetinaScene {
-            fish: self
-                .animals
-                .iter()
-                .enumerate()
-                .filter(|(j, a)| *j != viewer && a.alive)
-                .map(|(_, a)| {
-                    (
-                        a.body.position_m(),
-                        a.body.heading(),
-                        a.body.body_length_m(),
-                        hue_rgb(a.hue, a.habits.kind),
-                    )
-                })
-                .collect(),
-            food_m: self.food.iter().map(|f| f.position_m).collect(),
-            obstacles: &self.obstacles,
-        }
+    /// How every animal looked at the start of this step.
+    pub(super) fn seen(&self) -> &[Seen] {
+        &self.seen
     }
 
     /// What animal `i` sees: the percept for its intention generator, its
@@ -476,12 +509,14 @@ impl ReefWorld {
     pub(super) fn perceive(
         &self,
         i: usize,
-        seen: &[Seen],
-        bodies: &[Sphere],
-    ) -> (Percept, Vec<Neighbour>, Vec<f32>, Option<u32>) {
+        animal: &ReefAnimal,
+        inputs: &PerceptionInputs,
+    ) -> Sight {
+        let seen = &self.seen[..];
+        let bodies = &self.occluders[..];
         let me = seen[i];
-        let habits = &self.animals[i].habits;
-        let eye = Eye::new(me.head_m, me.heading, self.config.visibility_m);
+        let habits = &animal.habits;
+        let eye = Eye::new(me.head_m, me.heading, inputs.visibility_m);
         let sees_animal = |j: usize| -> bool {
             let target = bodies[j];
             if !eye.in_view_volume(target) {
@@ -497,13 +532,13 @@ impl ReefWorld {
                         < target.center_m.distance(me.head_m) + target.radius_m
                 })
                 .collect();
-            eye.sees(target, &others, &self.obstacles)
+            eye.sees(target, &others, inputs.obstacles)
         };
         let mut percept = Percept {
-            content: habits.light.content_at(self.animals[i].brightness)
+            content: habits.light.content_at(animal.brightness)
                 && habits
                     .temperature
-                    .content_at(self.env.temperature_01_at(me.position_m)),
+                    .content_at(inputs.env.temperature_01_at(me.position_m)),
             ..Default::default()
         };
         // Candidates by distance, nearest first.
@@ -512,7 +547,7 @@ impl ReefWorld {
             .enumerate()
             .filter(|(j, s)| *j != i && s.alive)
             .map(|(j, s)| (j, s.position_m.distance(me.head_m)))
-            .filter(|(_, d)| *d < self.config.visibility_m + 1.0)
+            .filter(|(_, d)| *d < inputs.visibility_m + 1.0)
             .collect();
         others.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
 
@@ -540,7 +575,7 @@ impl ReefWorld {
             .max_by(|x, y| x.1.total_cmp(&y.1).then(y.0.cmp(&x.0)))
             .map(|p| p.0);
         if habits.kind != FishKind::Predator {
-            match (percept.predators.first(), self.animals[i].last_threat) {
+            match (percept.predators.first(), animal.last_threat) {
                 (None, Some((j, at, left)))
                     if left > 0.0 && seen.get(j as usize).is_some_and(|s| s.alive) =>
                 {
@@ -572,7 +607,7 @@ impl ReefWorld {
                 .collect();
             candidates.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
             // The current target is always checked, then the cheapest few.
-            let current = match self.animals[i].focus.target {
+            let current = match animal.focus.target {
                 Some(Target::Animal(id)) => candidates.iter().position(|c| c.0 == id as usize),
                 _ => None,
             };
@@ -587,30 +622,30 @@ impl ReefWorld {
         // effort of reaching them (see `ReefParams::climb_effort_muscle_body`
         // and `ReefParams::turning_path_weight`).
         if habits.kind != FishKind::Predator {
-            let climb_effort = match self.animals[i].body {
-                ReefBody::Physical(_) => self.params.climb_effort_muscle_body,
+            let climb_effort = match animal.body {
+                ReefBody::Physical(_) => inputs.params.climb_effort_muscle_body,
                 ReefBody::Point(_) => 1.0,
             };
             // The muscle body's level path goes round its turning circle.
-            let turn_radius_m = match self.animals[i].body {
-                ReefBody::Physical(_) => self.params.body_turn_radius_body_lengths * me.length_m,
+            let turn_radius_m = match animal.body {
+                ReefBody::Physical(_) => inputs.params.body_turn_radius_body_lengths * me.length_m,
                 ReefBody::Point(_) => 0.0,
             };
-            let path_weight = self.params.turning_path_weight;
+            let path_weight = inputs.params.turning_path_weight;
             let effort = |p: Vec3| {
                 let o = p - me.head_m;
                 let d = Vec3::new(o.x, 0.0, o.z).length();
                 let path = crate::sim::reef::behaviour::level_reach_m(me.heading, o, turn_radius_m);
                 fmath::hypot(d + path_weight * (path - d), climb_effort * o.y)
             };
-            let mut food: Vec<(u32, f32, f32)> = self
+            let mut food: Vec<(u32, f32, f32)> = inputs
                 .food
                 .iter()
                 .map(|f| (f.id, f.position_m.distance(me.head_m), effort(f.position_m)))
-                .filter(|(_, d, _)| *d < self.config.visibility_m)
+                .filter(|(_, d, _)| *d < inputs.visibility_m)
                 .collect();
             food.sort_by(|a, b| a.2.total_cmp(&b.2).then(a.0.cmp(&b.0)));
-            let current = match self.animals[i].focus.target {
+            let current = match animal.focus.target {
                 Some(Target::Food(id)) => Some(id),
                 _ => None,
             };
@@ -618,7 +653,7 @@ impl ReefWorld {
                 if k >= 4 && Some(id) != current {
                     continue;
                 }
-                let Some(f) = self.food.iter().find(|f| f.id == id) else {
+                let Some(f) = inputs.food.iter().find(|f| f.id == id) else {
                     continue;
                 };
                 let s = Sphere {
@@ -633,7 +668,7 @@ impl ReefWorld {
                     })
                     .map(|(_, b)| *b)
                     .collect();
-                if eye.sees(s, &blockers, &self.obstacles) {
+                if eye.sees(s, &blockers, inputs.obstacles) {
                     percept.food.push((id, effort));
                 }
             }
@@ -646,9 +681,10 @@ impl ReefWorld {
                 .filter(|(j, _)| {
                     seen[*j].kind == FishKind::Pacifist
                         && seen[*j].sex != habits.sex
-                        && self.animals[i]
-                            .rejected_by
-                            .is_none_or(|r| r.0 as usize != *j)
+                        && inputs
+                            .courtship
+                            .rejected_by(i)
+                            .is_none_or(|f| f as usize != *j)
                 })
                 .map(|&(j, d)| {
                     let other_species = if seen[j].species == habits.species {
@@ -690,82 +726,114 @@ impl ReefWorld {
             }
             percept.schoolmates_seen = neighbours.len();
         }
-        percept.collision = self.collision_check(i, seen, &neighbours);
-        (percept, neighbours, predator_distances, sighted)
+        percept.collision = collision_check(i, animal, seen, &neighbours, inputs);
+        Sight {
+            percept,
+            neighbours,
+            predator_distances,
+            sighted: sighted.map(|j| (j, seen[j as usize].position_m)),
+        }
     }
+}
 
-    /// The most dangerous thing inside animal `i`'s collision-sensitivity box:
-    /// a box ahead of the head, as wide as the body, `collision_box_ahead`
-    /// long (halved for a schooling fish in formation, §7.2).
-    pub(super) fn collision_check(
-        &self,
-        i: usize,
-        seen: &[Seen],
-        neighbours: &[Neighbour],
-    ) -> Option<Target> {
-        let me = seen[i];
-        let a = &self.animals[i];
-        // In formation: schooling, or swerving within the school (an avoidance
-        // that interrupted schooling).
-        let schooling = a.focus.intention == Intention::School
-            || a.generator
-                .memory
-                .is_some_and(|m| m.intention == Intention::School);
-        let in_formation = schooling && neighbours.len() >= 2;
-        let mut ahead = a.habits.collision_box_ahead_body_lengths * me.length_m;
-        if in_formation {
-            ahead *= 0.5;
-        }
-        let half_width = 0.3 * me.length_m;
-        // The glass, the sand and the surface.
-        let probe = me.head_m + me.heading * ahead;
-        if !self.tank.contains(probe, 0.3 * me.length_m) {
-            return Some(Target::Glass);
-        }
-        // Rocks.
-        let mut best: Option<(f32, Target)> = None;
-        for (k, o) in self.obstacles.iter().enumerate() {
-            let steps = 4;
-            for s in 0..=steps {
-                let p = me.head_m + me.heading * (ahead * s as f32 / steps as f32);
-                let d = o.signed_distance_m(p);
-                if d < half_width && best.is_none_or(|b| d < b.0) {
-                    best = Some((d, Target::Obstacle(k as u32)));
-                }
+/// The most dangerous thing inside animal `i`'s collision-sensitivity box:
+/// a box ahead of the head, as wide as the body, `collision_box_ahead`
+/// long (halved for a schooling fish in formation, §7.2).
+fn collision_check(
+    i: usize,
+    a: &ReefAnimal,
+    seen: &[Seen],
+    neighbours: &[Neighbour],
+    inputs: &PerceptionInputs,
+) -> Option<Target> {
+    let me = seen[i];
+    // In formation: schooling, or swerving within the school (an avoidance
+    // that interrupted schooling).
+    let schooling = a.focus.intention == Intention::School
+        || a.generator
+            .memory
+            .is_some_and(|m| m.intention == Intention::School);
+    let in_formation = schooling && neighbours.len() >= 2;
+    let mut ahead = a.habits.collision_box_ahead_body_lengths * me.length_m;
+    if in_formation {
+        ahead *= 0.5;
+    }
+    let half_width = 0.3 * me.length_m;
+    // The glass, the sand and the surface.
+    let probe = me.head_m + me.heading * ahead;
+    if !inputs.tank.contains(probe, 0.3 * me.length_m) {
+        return Some(Target::Glass);
+    }
+    // Rocks.
+    let mut best: Option<(f32, Target)> = None;
+    for (k, o) in inputs.obstacles.iter().enumerate() {
+        let steps = 4;
+        for s in 0..=steps {
+            let p = me.head_m + me.heading * (ahead * s as f32 / steps as f32);
+            let d = o.signed_distance_m(p);
+            if d < half_width && best.is_none_or(|b| d < b.0) {
+                best = Some((d, Target::Obstacle(k as u32)));
             }
         }
-        // Other fish, except the prey a predator is about to swallow and a
-        // courting partner (the pair's sensitivity regions are set tightly to
-        // their bodies, §7.3).
-        let exempt = match a.focus.target {
-            Some(Target::Animal(j)) if a.focus.intention == Intention::Eat => Some(j as usize),
-            _ => self.pair_of(i).map(|p| {
-                if p.male as usize == i {
-                    p.female as usize
-                } else {
-                    p.male as usize
-                }
-            }),
-        };
-        for (j, o) in seen.iter().enumerate() {
-            if j == i || !o.alive || Some(j) == exempt {
-                continue;
+    }
+    // Other fish, except the prey a predator is about to swallow and a
+    // courting partner (the pair's sensitivity regions are set tightly to
+    // their bodies, §7.3).
+    let exempt = match a.focus.target {
+        Some(Target::Animal(j)) if a.focus.intention == Intention::Eat => Some(j as usize),
+        _ => inputs.courtship.pair_of(i).map(|p| {
+            if p.male as usize == i {
+                p.female as usize
+            } else {
+                p.male as usize
             }
-            // Prey do not swerve from the shark here: fear handles it.
-            let offset = o.position_m - me.head_m;
-            let along = offset.dot(me.heading);
-            if along < -0.2 * me.length_m || along > ahead + 0.5 * o.length_m {
-                continue;
-            }
-            let across = (offset - me.heading * along).length();
-            if across < half_width + 0.15 * o.length_m {
-                let d = offset.length();
-                if best.is_none_or(|b| d < b.0) {
-                    best = Some((d, Target::Animal(j as u32)));
-                }
+        }),
+    };
+    for (j, o) in seen.iter().enumerate() {
+        if j == i || !o.alive || Some(j) == exempt {
+            continue;
+        }
+        // Prey do not swerve from the shark here: fear handles it.
+        let offset = o.position_m - me.head_m;
+        let along = offset.dot(me.heading);
+        if along < -0.2 * me.length_m || along > ahead + 0.5 * o.length_m {
+            continue;
+        }
+        let across = (offset - me.heading * along).length();
+        if across < half_width + 0.15 * o.length_m {
+            let d = offset.length();
+            if best.is_none_or(|b| d < b.0) {
+                best = Some((d, Target::Animal(j as u32)));
             }
         }
-        best.map(|b| b.1)
+    }
+    best.map(|b| b.1)
+}
+
+/// What animal `viewer` of `animals` sees on its retina: the other living
+/// fish, the plankton and the rocks.
+pub(super) fn retina_scene<'a>(
+    animals: &[ReefAnimal],
+    food: &[FoodParticle],
+    obstacles: &'a [Obstacle],
+    viewer: usize,
+) -> RetinaScene<'a> {
+    RetinaScene {
+        fish: animals
+            .iter()
+            .enumerate()
+            .filter(|(j, a)| *j != viewer && a.alive)
+            .map(|(_, a)| {
+                (
+                    a.body.position_m(),
+                    a.body.heading(),
+                    a.body.body_length_m(),
+                    hue_rgb(a.hue, a.habits.kind),
+                )
+            })
+            .collect(),
+        food_m: food.iter().map(|f| f.position_m).collect(),
+        obstacles,
     }
 }
 

@@ -9,12 +9,13 @@
 //! reports it, so a fish that strays for a moment or a school that touches
 //! again for an instant is not news.
 
-use super::events::ReefEventKind;
-use super::world::*;
 use crate::sim::common::fish::Fish;
 use crate::sim::common::obstacle::Obstacle;
 use crate::sim::common::school_metrics::group_labels;
+use crate::sim::common::tank::Tank;
+use crate::sim::reef::animal::ReefAnimal;
 use crate::sim::reef::demos::ReefScene;
+use crate::sim::reef::events::{EventLog, ReefEventKind};
 use crate::sim::reef::mind::FishKind;
 
 /// Seconds between two looks at the school (0.5, chosen: a school of fish a
@@ -55,16 +56,33 @@ pub struct SchoolWatch {
     split_at_pillar: bool,
 }
 
-impl ReefWorld {
+/// What the school watch reads besides the animals: the clock, the demo
+/// (the pillar is watched in *School meets obstacle* only), the rocks and
+/// the tank.
+pub(super) struct WatchInputs<'a> {
+    pub time_secs: f64,
+    pub scene: ReefScene,
+    pub obstacles: &'a [Obstacle],
+    pub tank: &'a Tank,
+}
+
+impl SchoolWatch {
     /// Looks at the prey school every [`CHECK_EVERY_SECS`] and logs what
     /// changed.
-    pub(super) fn watch_school(&mut self) {
-        if self.time_secs < self.school_watch.next_check_secs {
+    pub(super) fn step(
+        &mut self,
+        animals: &[ReefAnimal],
+        log: &mut EventLog,
+        inputs: &WatchInputs,
+    ) {
+        if inputs.time_secs < self.next_check_secs {
             return;
         }
-        self.school_watch.next_check_secs += CHECK_EVERY_SECS;
-        let prey: Vec<(usize, Fish)> = self
-            .living()
+        self.next_check_secs += CHECK_EVERY_SECS;
+        let prey: Vec<(usize, Fish)> = animals
+            .iter()
+            .enumerate()
+            .filter(|(_, a)| a.alive)
             .filter(|(_, a)| a.habits.kind == FishKind::Prey)
             .map(|(i, a)| {
                 let f = Fish::new(
@@ -81,44 +99,49 @@ impl ReefWorld {
         }
         let fish: Vec<Fish> = prey.iter().map(|(_, f)| *f).collect();
         let groups = named_groups(&group_labels(&fish));
-        self.watch_groups(&groups, &prey);
-        if self.config.scene == ReefScene::SchoolMeetsObstacle {
-            self.watch_pillar(&prey);
+        self.watch_groups(&groups, &prey, log, inputs.time_secs);
+        if inputs.scene == ReefScene::SchoolMeetsObstacle {
+            self.watch_pillar(&prey, log, inputs);
         }
     }
 
-    fn watch_groups(&mut self, groups: &[Vec<usize>], prey: &[(usize, Fish)]) {
-        let now = self.time_secs;
+    fn watch_groups(
+        &mut self,
+        groups: &[Vec<usize>],
+        prey: &[(usize, Fish)],
+        log: &mut EventLog,
+        now: f64,
+    ) {
         let count = groups.len() as u32;
-        let watch = &mut self.school_watch;
-        if count != watch.candidate {
-            watch.candidate = count;
-            watch.candidate_since_secs = now;
+        if count != self.candidate {
+            self.candidate = count;
+            self.candidate_since_secs = now;
         }
-        if count == 0 || count == watch.groups || now - watch.candidate_since_secs < HOLD_SECS {
+        if count == 0 || count == self.groups || now - self.candidate_since_secs < HOLD_SECS {
             return;
         }
-        let before = std::mem::replace(&mut watch.groups, count);
-        let at_pillar = watch.at_pillar && !watch.passed;
+        let before = std::mem::replace(&mut self.groups, count);
+        let at_pillar = self.at_pillar && !self.passed;
         match (before, count) {
             (1, n) if n >= 2 => {
-                self.school_watch.split = true;
+                self.split = true;
                 if at_pillar {
-                    self.school_watch.split_at_pillar = true;
+                    self.split_at_pillar = true;
                 }
                 let fish = prey[groups[1][0]].0 as u32;
                 let text = format!(
                     "The school split into {n} groups{}",
                     if at_pillar { " at the pillar" } else { "" }
                 );
-                self.log(ReefEventKind::SchoolSplit { fish, groups: n }, text);
+                log.push(now, ReefEventKind::SchoolSplit { fish, groups: n }, text);
             }
             // The first state the watch sees is not news: a school that
             // starts in two groups and gathers did not "join up again".
-            (b, 1) if b >= 2 && self.school_watch.split => {
-                self.school_watch.split = false;
+            (b, 1) if b >= 2 && self.split => {
+                self.split = false;
                 let fish = prey[groups[0][0]].0 as u32;
-                self.log(
+                log.push(
+                    now,
                     ReefEventKind::SchoolJoined { fish },
                     "The school joined up again".to_owned(),
                 );
@@ -127,8 +150,8 @@ impl ReefWorld {
         }
     }
 
-    fn watch_pillar(&mut self, prey: &[(usize, Fish)]) {
-        let Some((axis_m, radius_m)) = self.obstacles.iter().find_map(|o| match o {
+    fn watch_pillar(&mut self, prey: &[(usize, Fish)], log: &mut EventLog, inputs: &WatchInputs) {
+        let Some((axis_m, radius_m)) = inputs.obstacles.iter().find_map(|o| match o {
             Obstacle::Cylinder {
                 base_center_m,
                 radius_m,
@@ -141,9 +164,9 @@ impl ReefWorld {
         let pillar = Obstacle::Cylinder {
             base_center_m: axis_m,
             radius_m,
-            height_m: self.tank.size_m().y,
+            height_m: inputs.tank.size_m().y,
         };
-        if !self.school_watch.at_pillar {
+        if !self.at_pillar {
             let nearest = prey.iter().min_by(|a, b| {
                 pillar
                     .signed_distance_m(a.1.position_m)
@@ -152,22 +175,24 @@ impl ReefWorld {
             if let Some(&(i, f)) = nearest
                 && pillar.signed_distance_m(f.position_m) <= PILLAR_REACH_M
             {
-                self.school_watch.at_pillar = true;
-                self.log(
+                self.at_pillar = true;
+                log.push(
+                    inputs.time_secs,
                     ReefEventKind::SchoolAtPillar { fish: i as u32 },
                     "The school reached the pillar".to_owned(),
                 );
             }
             return;
         }
-        if self.school_watch.passed {
+        if self.passed {
             return;
         }
         let mean_x_m = prey.iter().map(|(_, f)| f.position_m.x).sum::<f32>() / prey.len() as f32;
         if mean_x_m > axis_m.x + radius_m + PAST_PILLAR_M {
-            self.school_watch.passed = true;
-            if !self.school_watch.split_at_pillar {
-                self.log(
+            self.passed = true;
+            if !self.split_at_pillar {
+                log.push(
+                    inputs.time_secs,
                     ReefEventKind::SchoolPassedWhole {
                         fish: prey[0].0 as u32,
                     },
@@ -196,6 +221,7 @@ fn named_groups(labels: &[usize]) -> Vec<Vec<usize>> {
 mod tests {
     use super::*;
     use crate::sim::reef::events::ReefEvent;
+    use crate::sim::reef::world::{ReefConfig, ReefWorld};
 
     fn events_after(scene: ReefScene, seed: u64, secs: f32) -> Vec<ReefEvent> {
         let mut w = ReefWorld::new(ReefConfig {

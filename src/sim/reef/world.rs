@@ -1,83 +1,65 @@
-//! The living reef of Tu & Terzopoulos 1994 (Plate 1): fish with minds. Each
-//! step every animal
-//! 1. **perceives** (`reef/perception.rs`): what it sees with its 300° occluded
-//!    vision out to the water's visibility V_r, the temperature at its centre
-//!    and the brightness of its retinal image;
+//! The living reef of Tu & Terzopoulos 1994 (Plate 1): fish with minds. The
+//! reef's step is a pipeline of stages, each a struct that owns its state and
+//! takes what it reads and writes as explicit inputs (as rapier's
+//! `PhysicsPipeline::step` does); this file holds them and lists the order.
+//! Each step every living animal, in index order,
+//! 1. **perceives** ([`Perception`], `reef/perception.rs`): what it sees with
+//!    its 300° occluded vision out to the water's visibility V_r, the
+//!    temperature at its centre and the brightness of its retinal image;
 //! 2. updates its **mental state** and lets the **intention generator** choose an
-//!    intention and a focus (`reef/mind/`);
-//! 3. runs the **behaviour routine** for it (`reef/behaviour.rs`, `reef/courtship.rs`),
+//!    intention and a focus ([`ReefAnimal::think`], `reef/animal.rs`, `reef/mind/`);
+//! 3. runs the **behaviour routine** for it ([`behaviour::behave`],
+//!    `reef/behaviour.rs`, with the pair's wishes of `reef/courtship.rs`),
 //!    which gives the velocity it wants and how (swim, hover, or hover and bob);
-//!    keeping off the glass, sand, surface and rocks bends the direction of a
-//!    swimming wish (motor preferences);
-//! 4. moves its **body**: the muscle-driven spring–mass fish by default, whose
-//!    motor controllers (swim-MC, turn-MC, pectoral fins) the routine's motor
-//!    choice picks (`reef/motor_choice.rs`), or the light point-mass fish of the boid
-//!    layer for big scenes, steered to the wished velocity — the same mind
-//!    drives either.
+//! 4. moves its **body** ([`bodies::move_body`], `reef/bodies.rs`): the
+//!    muscle-driven spring–mass fish by default, whose motor controllers
+//!    (swim-MC, turn-MC, pectoral fins) the routine's motor choice picks
+//!    (`reef/motor_choice.rs`), or the light point-mass fish of the boid layer
+//!    for big scenes, steered to the wished velocity — the same mind drives
+//!    either; keeping off the glass, sand, surface and rocks bends the
+//!    direction of a swimming wish (motor preferences).
 //!
-//! Then mouths suck in food and prey, plankton drifts and is replenished,
-//! seaweed sways in the current, and readable events are logged ("shark 12 ate
-//! fish 3"). Deterministic for a seed: one ChaCha8 generator, animals in
-//! index order.
-
-use crate::sim::common::fmath;
-use std::collections::VecDeque;
+//! Then mouths suck in food and prey ([`Feeding`], `reef/feeding.rs`), pairs
+//! court ([`Courtship`]), plankton drifts and is replenished ([`Plankton`]),
+//! seaweed sways in the current (`reef/seaweed.rs`), collisions are counted
+//! ([`Contacts`], `reef/contacts.rs`) and the prey school is watched
+//! ([`SchoolWatch`], `reef/school_watch.rs`); readable events go to the
+//! [`EventLog`] ("shark 12 ate fish 3", `reef/events.rs`). Deterministic for a
+//! seed: one ChaCha8 generator, drawn from in the same order every run,
+//! animals in index order.
 
 use glam::Vec3;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use serde::{Deserialize, Serialize};
 
-use super::demos::ReefScene;
-use super::events::ReefEvent;
-use super::school_watch::SchoolWatch;
-use crate::sim::body::body_layout::HEAD_NODE;
-use crate::sim::body::drive::{drive_physical, step_and_constrain};
-use crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
-use crate::sim::body::physical_fish::PhysicalFish;
+use super::behaviour::{self, BehaviourInputs};
+use super::bodies::{self, BodyInputs};
+use super::contacts::Contacts;
+use super::courtship::{Courtship, CourtshipInputs, Pair};
+use super::demos::{self, ReefScene, StockInputs};
+use super::events::{EventLog, ReefEvent};
+use super::feeding::{Feeding, FeedingInputs, Plankton};
+use super::perception::{self, Eye, Perception, PerceptionInputs, Retina};
+use super::school_watch::{SchoolWatch, WatchInputs};
+use super::seaweed;
 use crate::sim::common::fish::Fish;
 use crate::sim::common::obstacle::Obstacle;
-use crate::sim::common::steering::{self, SteeringParams};
 use crate::sim::common::tank::Tank;
 use crate::sim::common::water_current::WaterCurrent;
-use crate::sim::reef::courtship::Pair;
+use crate::sim::reef::animal::MindInputs;
 use crate::sim::reef::environment::Environment;
+use crate::sim::reef::mind::FishKind;
 use crate::sim::reef::mind::habits::KindTraits;
-use crate::sim::reef::mind::{FishKind, Focus, Habits, IntentionGenerator, MentalState, Sex};
-use crate::sim::reef::motor_choice::{self, Gait, Wish};
 use crate::sim::reef::params::ReefParams;
-use crate::sim::reef::perception::{Eye, Retina, Sphere, fish_occluder, in_a_school};
 
-/// Most animals in a reef.
-pub const MAX_REEF_ANIMALS: usize = 200;
-/// Most plankton particles kept in the water.
-pub const MAX_FOOD: usize = 200;
-/// Time step of the point-mass body, seconds: the fish world's one step
-/// ([`crate::sim::common::paper_time::FISH_STEP_SECS`]), as the muscle body's, so both
-/// bodies see the same world clock.
-pub const POINT_BODY_DT_SECS: f32 = crate::sim::common::paper_time::FISH_STEP_SECS;
-/// Seconds between mind-history samples.
-pub const HISTORY_EVERY_SECS: f64 = 0.5;
-/// Mind-history samples kept per animal (2 minutes).
-pub const HISTORY_LEN: usize = 240;
-/// Seconds between two "fled" events of one fish.
-pub(super) const ESCAPE_LOG_EVERY_SECS: f64 = 15.0;
-/// Events kept in the log.
-pub const EVENT_LOG_LEN: usize = 200;
-/// Two bodies whose centres are closer than this share of their mean length
-/// count as colliding (0.5: their bodies overlap).
-pub(super) const COLLISION_BODY_LENGTHS: f32 = 0.5;
-
-/// Which body carries the minds.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ReefBodyKind {
-    /// The muscle-driven spring–mass fish (Tu & Terzopoulos §3).
-    #[default]
-    Physical,
-    /// The boid layer's point-mass fish: cheap, for big scenes.
-    PointMass,
-}
+pub use super::animal::{
+    HISTORY_EVERY_SECS, HISTORY_LEN, MAX_REEF_ANIMALS, MindSample, ReefAnimal,
+};
+pub use super::bodies::{POINT_BODY_DT_SECS, ReefBody, ReefBodyKind};
+pub use super::contacts::COLLISION_BODY_LENGTHS;
+pub use super::events::{ESCAPE_LOG_EVERY_SECS, EVENT_LOG_LEN, ReefCounts};
+pub use super::feeding::{FoodParticle, MAX_FOOD};
+pub use super::seaweed::{SEAWEED_NODES, Seaweed};
 
 /// What to build.
 #[derive(Clone, Debug, PartialEq)]
@@ -112,226 +94,33 @@ impl Default for ReefConfig {
     }
 }
 
-/// The body of one reef animal.
-#[derive(Clone, Debug)]
-pub enum ReefBody {
-    Physical(Box<PhysicalFish>),
-    Point(Fish),
-}
-
-impl ReefBody {
-    pub fn position_m(&self) -> Vec3 {
-        match self {
-            Self::Physical(p) => p.point.position_m,
-            Self::Point(f) => f.position_m,
-        }
-    }
-
-    pub fn velocity_m_per_s(&self) -> Vec3 {
-        match self {
-            Self::Physical(p) => p.point.velocity_m_per_s,
-            Self::Point(f) => f.velocity_m_per_s,
-        }
-    }
-
-    /// Where the fish points (unit).
-    pub fn heading(&self) -> Vec3 {
-        match self {
-            Self::Physical(p) => p.heading(),
-            Self::Point(f) => f.heading(),
-        }
-    }
-
-    pub fn body_length_m(&self) -> f32 {
-        match self {
-            Self::Physical(p) => p.body_length_m(),
-            Self::Point(f) => f.body_length_m,
-        }
-    }
-
-    /// Top speed, m/s (the same for both bodies of a given length).
-    pub fn top_speed_m_per_s(&self) -> f32 {
-        TOP_SPEED_BODY_LENGTHS_PER_SEC * self.body_length_m()
-    }
-
-    /// The mouth (the head node of the muscle body).
-    pub fn head_m(&self) -> Vec3 {
-        match self {
-            Self::Physical(p) => p.nodes_m()[HEAD_NODE],
-            Self::Point(f) => f.position_m + f.heading() * 0.5 * f.body_length_m,
-        }
-    }
-
-    /// Adds `dv_m_per_s` to the whole body's velocity (the vacuum's pull).
-    pub(super) fn nudge(&mut self, dv_m_per_s: Vec3) {
-        match self {
-            Self::Physical(p) => p.add_velocity(dv_m_per_s),
-            Self::Point(f) => f.velocity_m_per_s += dv_m_per_s,
-        }
-    }
-}
-
-/// One sample of an animal's mind, for the inspector's history plot and the
-/// reef's CSV export.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct MindSample {
-    pub time_secs: f32,
-    pub hunger: f32,
-    pub libido: f32,
-    pub fear: f32,
-    /// What it meant to do at that moment.
-    pub intention: crate::sim::reef::mind::Intention,
-}
-
-/// An animal of the reef: body and mind.
-#[derive(Clone, Debug)]
-pub struct ReefAnimal {
-    /// The habits in use: the demo's own with the teacher's traits put in.
-    pub habits: Habits,
-    /// The habits the demo gave this animal.
-    pub demo_habits: Habits,
-    pub mental: MentalState,
-    pub generator: IntentionGenerator,
-    /// This step's intention and target.
-    pub focus: Focus,
-    pub body: ReefBody,
-    /// Colour around the colour wheel, 0..1.
-    pub hue: f32,
-    /// Eaten animals stay in the list (indices are names) but no longer live.
-    pub alive: bool,
-    /// Is the mouth open (sucking in)?
-    pub mouth_open: bool,
-    /// The velocity the behaviour asked for last step, m/s.
-    pub desired_m_per_s: Vec3,
-    /// Mean brightness of the retinal image (refreshed about every 4 s, one
-    /// fish in four each second).
-    pub brightness: f32,
-    /// Water temperature at the centre, °C.
-    pub temperature_c: f32,
-    /// Recent hunger, libido and fear.
-    pub history: VecDeque<MindSample>,
-    /// Point-mass velocity the muscle body chases (see `physics/world.rs`).
-    pub(super) intended_m_per_s: Vec3,
-    pub(super) touch: Option<Vec3>,
-    /// The predator last seen, where, and for how many more seconds it is
-    /// remembered (see [`ReefParams::threat_memory_secs`]).
-    pub(super) last_threat: Option<(u32, Vec3, f32)>,
-    /// When this animal's last escape was logged (the log says "fled" once per
-    /// [`ESCAPE_LOG_EVERY_SECS`], not at every glance at the shark).
-    pub(super) last_escape_logged_secs: Option<f64>,
-    /// A female that left this male for another, and for how many more
-    /// seconds he leaves her alone.
-    pub(super) rejected_by: Option<(u32, f32)>,
-    /// Wander state for the point body and the wander routine.
-    pub(super) wander: Fish,
-    /// Seconds until a predator that missed a strike can strike again.
-    pub(super) strike_recovery_secs: f32,
-    /// The partners it saw at its last decision, best first (a female's
-    /// choice, for the log).
-    pub(super) mates_seen: Vec<u32>,
-}
-
-impl ReefAnimal {
-    /// "shark 3", "prey 7", "pacifist 2".
-    pub fn name(&self, index: usize) -> String {
-        let kind = match self.habits.kind {
-            FishKind::Predator => "shark",
-            FishKind::Prey => "fish",
-            FishKind::Pacifist => "pacifist",
-        };
-        format!("{kind} {index}")
-    }
-}
-
-/// A plankton particle.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct FoodParticle {
-    pub id: u32,
-    pub position_m: Vec3,
-}
-
-/// A strand of seaweed: a chain of points rooted in the sand.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Seaweed {
-    /// Node 0 is the root.
-    pub nodes_m: Vec<Vec3>,
-    pub segment_m: f32,
-    pub(super) phase_rad: f32,
-}
-
-/// Seaweed nodes per strand.
-pub const SEAWEED_NODES: usize = 10;
-
-/// Counters over the run.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct ReefCounts {
-    pub prey_eaten: u32,
-    /// Strikes that failed because other prey near the target confused the
-    /// predator (see [`ReefParams::confusion_per_neighbour`]).
-    pub missed_strikes: u32,
-    /// Pairs that completed the courtship sequence.
-    pub spawnings: u32,
-    /// Of those, prey whose intention was to school when caught (not the
-    /// predator's S_k, which asks whether schoolmates were around it).
-    pub schooling_prey_eaten: u32,
-    pub food_eaten: u32,
-    /// Starts of body overlaps between two fish, not counting a bonded
-    /// courting pair's (circling, ascending and nuzzling are close by design).
-    pub fish_collisions: u32,
-    /// Body-steps inside a rock (should stay 0).
-    pub inside_rock_steps: u32,
-}
-
-/// The reef.
+/// The reef: the stages of its step and the state they share.
 #[derive(Clone, Debug)]
 pub struct ReefWorld {
     /// The reef's tuning (boxed: some 170 bytes a scene's world enum need not
     /// carry inline).
-    pub(super) params: Box<ReefParams>,
-    pub(super) tank: Tank,
-    pub(super) env: Environment,
-    pub(super) obstacles: Vec<Obstacle>,
-    pub(super) animals: Vec<ReefAnimal>,
-    pub(super) food: Vec<FoodParticle>,
-    pub(super) food_target: usize,
-    pub(super) next_food_id: u32,
-    pub(super) food_release_secs: f32,
-    pub(super) seaweed: Vec<Seaweed>,
-    pub(super) current: WaterCurrent,
-    pub(super) config: ReefConfig,
-    pub(super) rng: ChaCha8Rng,
-    pub(super) time_secs: f64,
-    pub(super) steps: u64,
-    pub(super) next_history_secs: f64,
-    pub(super) events: VecDeque<ReefEvent>,
-    /// Events logged since the start (the log keeps the last
-    /// [`EVENT_LOG_LEN`]).
-    pub(super) events_logged: u64,
-    /// What the prey school did last (split, joined, at the pillar).
-    pub(super) school_watch: SchoolWatch,
-    pub(super) counts: ReefCounts,
-    /// Pairs in contact last step (for counting collision starts).
-    pub(super) touching: Vec<(u32, u32)>,
+    params: Box<ReefParams>,
+    config: ReefConfig,
+    tank: Tank,
+    env: Environment,
+    obstacles: Vec<Obstacle>,
+    current: WaterCurrent,
+    seaweed: Vec<Seaweed>,
+    /// The animals, bodies and minds: the data the stages read and write.
+    animals: Vec<ReefAnimal>,
+    plankton: Plankton,
+    feeding: Feeding,
+    courtship: Courtship,
+    contacts: Contacts,
+    school_watch: SchoolWatch,
+    log: EventLog,
+    counts: ReefCounts,
     /// Constraint node moves of the muscle bodies.
-    pub(super) constraint_moves: u64,
-    /// Courting pairs.
-    pub(super) pairs: Vec<Pair>,
-}
-
-/// Inputs of one animal's decision, read before anyone moves.
-#[derive(Clone, Copy)]
-pub(super) struct Seen {
-    pub(super) position_m: Vec3,
-    pub(super) head_m: Vec3,
-    pub(super) heading: Vec3,
-    pub(super) velocity_m_per_s: Vec3,
-    pub(super) length_m: f32,
-    pub(super) alive: bool,
-    pub(super) kind: FishKind,
-    pub(super) sex: Sex,
-    pub(super) species: u8,
-    /// Swims in a school now, whatever its intention (see [`in_a_school`]).
-    pub(super) schooling: bool,
+    constraint_moves: u64,
+    rng: ChaCha8Rng,
+    time_secs: f64,
+    steps: u64,
+    next_history_secs: f64,
 }
 
 impl ReefWorld {
@@ -343,38 +132,49 @@ impl ReefWorld {
         } else {
             6.0
         };
+        let params: Box<ReefParams> = Box::default();
+        let env = Environment::new(tank);
+        let mut rng = ChaCha8Rng::seed_from_u64(config.seed ^ 0x00EE_F5EA);
+        let stocked = demos::populate(
+            config.scene,
+            &mut rng,
+            &StockInputs {
+                tank,
+                env: &env,
+                params: &params,
+                body: config.body,
+                prey_count: config.prey_count,
+            },
+        );
         let mut world = Self {
-            params: Box::default(),
+            params,
             tank,
-            env: Environment::new(tank),
-            obstacles: Vec::new(),
-            animals: Vec::new(),
-            food: Vec::new(),
-            food_target: 0,
-            next_food_id: 0,
-            food_release_secs: 0.0,
-            seaweed: Vec::new(),
+            env,
+            obstacles: stocked.obstacles,
             current: WaterCurrent::new(tank, config.current_m_per_s),
-            rng: ChaCha8Rng::seed_from_u64(config.seed ^ 0x00EE_F5EA),
+            seaweed: stocked.seaweed,
+            animals: stocked.animals,
+            plankton: Plankton::default(),
+            feeding: Feeding::default(),
+            courtship: Courtship::default(),
+            contacts: Contacts::default(),
+            school_watch: SchoolWatch::default(),
+            log: EventLog::default(),
+            counts: ReefCounts::default(),
+            constraint_moves: 0,
+            rng,
             config: config.clone(),
             time_secs: 0.0,
             steps: 0,
             next_history_secs: 0.0,
-            events: VecDeque::new(),
-            events_logged: 0,
-            school_watch: SchoolWatch::default(),
-            counts: ReefCounts::default(),
-            touching: Vec::new(),
-            constraint_moves: 0,
-            pairs: Vec::new(),
         };
-        world.populate(config.scene);
+        world.plankton.set_target(stocked.food_target);
         world.set_traits(config.traits);
         if let Some(n) = config.food_count {
-            world.food_target = n.min(MAX_FOOD);
+            world.plankton.set_target(n);
         }
-        for _ in 0..world.food_target {
-            let p = world.random_free_point(0.3);
+        for _ in 0..world.plankton.target() {
+            let p = demos::random_free_point(&mut world.rng, &world.tank, &world.obstacles, 0.3);
             world.add_food(p);
         }
         world
@@ -387,6 +187,12 @@ impl ReefWorld {
     /// The reef's tuning.
     pub fn params(&self) -> &ReefParams {
         &self.params
+    }
+
+    /// The reef's tuning, to change (a test's or a census script's probe of
+    /// a setting; the lab never changes it).
+    pub fn params_mut(&mut self) -> &mut ReefParams {
+        &mut self.params
     }
 
     /// Gives every animal its demo's habits with `traits` put in, at once
@@ -409,27 +215,38 @@ impl ReefWorld {
         &self.animals
     }
     pub fn food(&self) -> &[FoodParticle] {
-        &self.food
+        self.plankton.particles()
     }
     pub fn seaweed(&self) -> &[Seaweed] {
         &self.seaweed
     }
-    pub fn events(&self) -> &VecDeque<ReefEvent> {
-        &self.events
+    pub fn events(&self) -> &std::collections::VecDeque<ReefEvent> {
+        self.log.lines()
     }
     /// Events logged since the start, including those the log has dropped.
     pub fn events_logged(&self) -> u64 {
-        self.events_logged
+        self.log.logged()
     }
     /// Courting pairs.
     pub fn pairs(&self) -> &[Pair] {
-        &self.pairs
+        self.courtship.pairs()
     }
 
     /// The pair animal `i` belongs to.
     pub fn pair_of(&self, i: usize) -> Option<&Pair> {
-        let i = i as u32;
-        self.pairs.iter().find(|p| p.male == i || p.female == i)
+        self.courtship.pair_of(i)
+    }
+
+    /// The first event of the demo's moment among those logged after the
+    /// first `logged_before` (see [`ReefWorld::events_logged`]).
+    pub fn moment_since(&self, logged_before: u64) -> Option<&ReefEvent> {
+        let new = self.events_logged().saturating_sub(logged_before) as usize;
+        let scene = self.config.scene;
+        let events = self.events();
+        events
+            .iter()
+            .skip(events.len().saturating_sub(new))
+            .find(|e| scene.is_moment(&e.kind))
     }
 
     pub fn counts(&self) -> ReefCounts {
@@ -497,6 +314,15 @@ impl ReefWorld {
         crate::sim::common::school_metrics::measure(&fish, self.tank.min_m, self.tank.max_m)
     }
 
+    /// Renders animal `i`'s retinal image (`size` × `size`).
+    pub fn retina(&self, i: usize, size: usize) -> Option<Retina> {
+        let a = self.animals.get(i)?;
+        let eye = Eye::new(a.body.head_m(), a.body.heading(), self.config.visibility_m);
+        let scene =
+            perception::retina_scene(&self.animals, self.plankton.particles(), &self.obstacles, i);
+        Some(Retina::render(&eye, Vec3::Y, size, &scene, &self.env))
+    }
+
     /// Mutable access for tests and teachers' edits (habits, mental state).
     pub fn animal_mut(&mut self, i: usize) -> Option<&mut ReefAnimal> {
         self.animals.get_mut(i)
@@ -505,349 +331,182 @@ impl ReefWorld {
     /// Moves animal `i` (a test or a teacher's drag) to `position_m` heading
     /// `heading`, at rest.
     pub fn place(&mut self, i: usize, position_m: Vec3, heading: Vec3) {
-        let Some(a) = self.animals.get_mut(i) else {
-            return;
-        };
         let p = self.tank.clamp_inside(position_m, 0.6);
-        let length = a.body.body_length_m();
-        a.body = match &a.body {
-            ReefBody::Physical(old) => ReefBody::Physical(Box::new(PhysicalFish::new(
-                old.species,
-                length,
-                p,
-                heading,
-                old.hue,
-            ))),
-            ReefBody::Point(f) => ReefBody::Point(Fish::new(
-                p,
-                heading.normalize_or(Vec3::X) * 0.3 * TOP_SPEED_BODY_LENGTHS_PER_SEC * length,
-                length,
-                f.hue,
-            )),
-        };
-        a.intended_m_per_s = a.body.heading() * 0.5 * a.body.top_speed_m_per_s();
-        a.wander.position_m = p;
-        a.touch = None;
+        if let Some(a) = self.animals.get_mut(i) {
+            a.place(p, heading);
+        }
     }
 
     /// Adds a plankton particle at `p_m` (if there is room).
     pub fn add_food(&mut self, p_m: Vec3) {
-        if self.food.len() >= MAX_FOOD {
-            return;
-        }
-        self.food.push(FoodParticle {
-            id: self.next_food_id,
-            position_m: self.tank.clamp_inside(p_m, 0.05),
-        });
-        self.next_food_id = self.next_food_id.wrapping_add(1);
+        self.plankton.add(p_m, &self.tank);
     }
 
-    // ----- Building scenes -----
+    /// Takes every plankton particle out of the water and releases no more
+    /// (a test's tank with only the food it puts in).
+    pub fn clear_food(&mut self) {
+        self.plankton.clear();
+    }
 
-    // ----- Stepping -----
-
-    /// Advances the reef by one step.
+    /// Advances the reef by one step: the stages in order.
     pub fn step(&mut self) {
         let dt = self.dt_secs();
-        let mut seen: Vec<Seen> = self
-            .animals
-            .iter()
-            .map(|a| Seen {
-                position_m: a.body.position_m(),
-                head_m: a.body.head_m(),
-                heading: a.body.heading(),
-                velocity_m_per_s: a.body.velocity_m_per_s(),
-                length_m: a.body.body_length_m(),
-                alive: a.alive,
-                kind: a.habits.kind,
-                sex: a.habits.sex,
-                species: a.habits.species,
-                schooling: false,
-            })
-            .collect();
-        // S_k of the predator's prey cost: does the fish swim in a school now
-        // (whatever it intends)?
-        let perception = &self.params.perception;
-        let schooling: Vec<bool> = (0..seen.len())
-            .map(|i| in_a_school(perception, &seen, i))
-            .collect();
-        for (s, schooling) in seen.iter_mut().zip(schooling) {
-            s.schooling = schooling;
-        }
-        let bodies: Vec<Sphere> = seen
-            .iter()
-            .map(|s| {
-                fish_occluder(
-                    perception,
-                    s.position_m,
-                    if s.alive { s.length_m } else { 0.0 },
-                )
-            })
-            .collect();
+        let time_secs = self.time_secs;
+        let view = Perception::look(&self.params.perception, &self.animals);
         let refresh_brightness = self.steps.is_multiple_of(18);
-        let threat_memory_secs = self.params.threat_memory_secs;
         for i in 0..self.animals.len() {
             if !self.animals[i].alive {
                 continue;
             }
+            // Perception: the retina's brightness now and then, then what
+            // the animal sees.
             if refresh_brightness && (i as u64 + self.steps / 18).is_multiple_of(4) {
-                let scene = self.retina_scene(i);
+                let scene = perception::retina_scene(
+                    &self.animals,
+                    self.plankton.particles(),
+                    &self.obstacles,
+                    i,
+                );
                 let a = &self.animals[i];
                 let eye = Eye::new(a.body.head_m(), a.body.heading(), self.config.visibility_m);
                 let b = Retina::render(&eye, Vec3::Y, 10, &scene, &self.env).mean_brightness;
                 self.animals[i].brightness = b;
             }
-            let (percept, neighbours, predator_distances, sighted) =
-                self.perceive(i, &seen, &bodies);
-            let a = &mut self.animals[i];
-            a.last_threat = match sighted {
-                Some(j) => Some((j, seen[j as usize].position_m, threat_memory_secs)),
-                None => a
-                    .last_threat
-                    .map(|(j, at, left)| (j, at, left - dt))
-                    .filter(|t| t.2 > 0.0),
-            };
-            let a = &mut self.animals[i];
-            a.temperature_c = self.env.temperature_c_at(seen[i].position_m);
-            a.mental.update(&a.habits.mental, dt, predator_distances);
-            // Predators feel no fear and no libido; prey do not mate (§7.1–7.2).
-            match a.habits.kind {
-                FishKind::Predator => (a.mental.fear, a.mental.libido) = (0.0, 0.0),
-                FishKind::Prey => a.mental.libido = 0.0,
-                FishKind::Pacifist => {}
-            }
-            if let Some((f, left)) = a.rejected_by {
-                a.rejected_by = (left > dt).then_some((f, left - dt));
-            }
-            let me = i as u32;
-            let partner = self
-                .pairs
-                .iter()
-                .find(|p| p.bonded() && (p.male == me || p.female == me))
-                .map(|p| if p.male == me { p.female } else { p.male });
-            let a = &mut self.animals[i];
-            let before = a.focus;
-            a.focus = a.generator.decide(&a.habits, &a.mental, &percept, partner);
-            a.mates_seen.clear();
-            a.mates_seen.extend(percept.mates.iter().map(|m| m.0));
-            let focus = a.focus;
+            let sight = view.perceive(
+                i,
+                &self.animals[i],
+                &PerceptionInputs {
+                    params: &self.params,
+                    visibility_m: self.config.visibility_m,
+                    env: &self.env,
+                    tank: &self.tank,
+                    obstacles: &self.obstacles,
+                    food: self.plankton.particles(),
+                    courtship: &self.courtship,
+                },
+            );
+            // Mind: mental state and intention.
+            let partner = self.courtship.bonded_partner(i);
+            let before = self.animals[i].think(MindInputs {
+                percept: &sight.percept,
+                predator_distances: sight.predator_distances,
+                sighted: sight.sighted,
+                partner,
+                env: &self.env,
+                threat_memory_secs: self.params.threat_memory_secs,
+                dt_secs: dt,
+            });
+            self.courtship.forget_rejection(i, dt);
+            self.courtship
+                .saw_mates(i, sight.percept.mates.iter().map(|m| m.0));
+            let focus = self.animals[i].focus;
             if focus.intention != before.intention || focus.target != before.target {
-                self.log_decision(i, before, focus);
+                self.log
+                    .log_decision(&self.animals, i, before, focus, time_secs);
             }
-            let wish = self.behave(i, &seen, &neighbours);
-            self.move_body(i, wish, dt);
+            // Behaviour and motor choice: the wish.
+            let wish = behaviour::behave(
+                i,
+                &mut self.animals[i],
+                view.seen(),
+                &sight.neighbours,
+                &mut self.rng,
+                &BehaviourInputs {
+                    params: &self.params,
+                    tank: &self.tank,
+                    env: &self.env,
+                    obstacles: &self.obstacles,
+                    plankton: &self.plankton,
+                    courtship: &self.courtship,
+                    time_secs: time_secs as f32,
+                },
+            );
+            // Body.
+            let chase_target_m =
+                behaviour::chase_target_m(&self.animals, self.plankton.particles(), i);
+            let water_m_per_s = self.water_at(self.animals[i].body.position_m());
+            let a = &mut self.animals[i];
+            a.desired_m_per_s = wish.velocity_m_per_s;
+            let (body, drive) = a.body_and_drive_mut();
+            let moved = bodies::move_body(
+                body,
+                drive,
+                wish,
+                &BodyInputs {
+                    params: &self.params,
+                    tank: &self.tank,
+                    obstacles: &self.obstacles,
+                    water_m_per_s,
+                    chase_target_m,
+                    time_secs: time_secs as f32,
+                    dt_secs: dt,
+                },
+            );
+            self.constraint_moves += moved.constraint_moves;
+            if moved.inside_rock {
+                self.counts.inside_rock_steps += 1;
+            }
         }
-        self.suck_in(dt);
-        self.court(dt);
-        self.drift_food(dt);
-        self.sway_seaweed(dt);
-        self.count_contacts();
-        self.watch_school();
+        self.feeding.step(
+            &mut self.animals,
+            &mut self.plankton,
+            FeedingInputs {
+                params: &self.params,
+                rng: &mut self.rng,
+                log: &mut self.log,
+                counts: &mut self.counts,
+                time_secs,
+                dt_secs: dt,
+            },
+        );
+        self.courtship.step(
+            &mut self.animals,
+            &mut self.log,
+            &mut self.counts,
+            &CourtshipInputs {
+                params: &self.params.courtship,
+                surface_y_m: self.tank.max_m.y,
+                visibility_m: self.config.visibility_m,
+                time_secs,
+                dt_secs: dt,
+            },
+        );
+        self.plankton.drift(
+            &self.params,
+            &mut self.rng,
+            &self.tank,
+            &self.obstacles,
+            &self.current,
+            time_secs,
+            dt,
+        );
+        seaweed::sway(
+            &mut self.seaweed,
+            &self.current,
+            &self.tank,
+            time_secs as f32,
+            dt,
+        );
+        self.contacts
+            .step(&self.animals, &self.courtship, &mut self.counts);
+        self.school_watch.step(
+            &self.animals,
+            &mut self.log,
+            &WatchInputs {
+                time_secs,
+                scene: self.config.scene,
+                obstacles: &self.obstacles,
+                tank: &self.tank,
+            },
+        );
         self.time_secs += f64::from(dt);
         self.steps += 1;
         if self.time_secs >= self.next_history_secs {
             self.next_history_secs += HISTORY_EVERY_SECS;
             let t = self.time_secs as f32;
             for a in self.animals.iter_mut().filter(|a| a.alive) {
-                if a.history.len() == HISTORY_LEN {
-                    a.history.pop_front();
-                }
-                a.history.push_back(MindSample {
-                    time_secs: t,
-                    hunger: a.mental.hunger,
-                    libido: a.mental.libido,
-                    fear: a.mental.fear,
-                    intention: a.focus.intention,
-                });
+                a.record_history(t);
             }
         }
-    }
-
-    /// Moves animal `i`'s body as `wish` asks. The muscle body: the motor choice
-    /// (`reef/motor_choice.rs`) picks its motor controllers; the point-mass body: the
-    /// boid layer steers it towards the wished velocity. Under both, keeping off
-    /// the glass, sand, surface and rocks bends the direction of a swimming wish.
-    pub(super) fn move_body(&mut self, i: usize, wish: Wish, dt: f32) {
-        let chase_target = self.chase_target_m(i);
-        let water = self.water_at(self.animals[i].body.position_m());
-        let time_secs = self.time_secs as f32;
-        let a = &mut self.animals[i];
-        let desired = wish.velocity_m_per_s;
-        a.desired_m_per_s = desired;
-        let top = a.body.top_speed_m_per_s();
-        let length = a.body.body_length_m();
-        let drive = &self.params.drive;
-        let response_time_secs = drive.response_time_secs;
-        let max_force = top / response_time_secs;
-        let position = a.body.position_m();
-        // Motor preferences: keep off the glass, sand, surface and rocks. A fish
-        // closing in on its food, prey or partner heeds only the glass that lies
-        // before it (see `ReefParams::chase_glass_margin_body_lengths`).
-        let (look_ahead_s, margin_m) = match chase_target {
-            Some(target_m) => (
-                (target_m.distance(position) / top.max(1e-3))
-                    .min(drive.containment_look_ahead_secs),
-                self.params.chase_glass_margin_body_lengths * length,
-            ),
-            None => (
-                drive.containment_look_ahead_secs,
-                drive.containment_margin_m(length),
-            ),
-        };
-        let contain = |velocity: Vec3| {
-            steering::containment(position, velocity, &self.tank, look_ahead_s, margin_m, top)
-        };
-        let avoid_rocks = |velocity: Vec3| {
-            steering::avoid_obstacles(
-                position,
-                velocity,
-                self.obstacles.iter(),
-                3.0,
-                self.params.steering.avoidance_clearance_m + 0.5 * length,
-                top,
-            )
-        };
-        let keep_off = |velocity: Vec3| contain(velocity) + avoid_rocks(velocity);
-        match &mut a.body {
-            ReefBody::Physical(p) if wish.gait == Gait::School => {
-                // The physics scene's way: the boid layer's intended velocity,
-                // then the bridge.
-                let velocity = a.intended_m_per_s;
-                let steer = steering::limit((desired - velocity) / response_time_secs, max_force);
-                let keep = steering::limit(keep_off(velocity) / response_time_secs, max_force);
-                let force = steering::limit(steer + keep, max_force);
-                let intent = drive_physical(drive, p, &mut a.intended_m_per_s, force, a.touch, dt);
-                let (moved, touch) =
-                    step_and_constrain(drive, p, &intent, water, &self.tank, &self.obstacles);
-                self.constraint_moves += moved as u64;
-                a.touch = touch;
-            }
-            ReefBody::Physical(p) => {
-                let heading = p.heading();
-                let speed = p.point.velocity_m_per_s.length();
-                let mut wish = wish;
-                if matches!(wish.gait, Gait::Swim | Gait::Pursue | Gait::Forage) {
-                    // The path the fish is on: its heading at the speed it swims
-                    // or means to swim.
-                    let wanted = desired.length();
-                    let path = heading * speed.max(wanted);
-                    let bent = desired + keep_off(path);
-                    let mut v = bent.normalize_or(heading) * wanted;
-                    if let Some(away) = a.touch {
-                        v = crate::sim::body::drive::touch_reflex(drive, v, away, top);
-                    }
-                    wish.velocity_m_per_s = v;
-                }
-                let body = motor_choice::Body {
-                    heading,
-                    speed_m_per_s: speed,
-                    top_speed_m_per_s: top,
-                    turning: p.is_turning(),
-                };
-                let intent =
-                    motor_choice::choose(&self.params.motor_choice, &wish, &body, time_secs);
-                let (moved, touch) =
-                    step_and_constrain(drive, p, &intent, water, &self.tank, &self.obstacles);
-                self.constraint_moves += moved as u64;
-                a.touch = touch;
-                a.intended_m_per_s = wish.velocity_m_per_s;
-            }
-            ReefBody::Point(f) => {
-                let velocity = a.intended_m_per_s;
-                let steer = steering::limit((desired - velocity) / response_time_secs, max_force);
-                let containment =
-                    steering::limit(contain(velocity) / response_time_secs, max_force);
-                let avoidance =
-                    steering::limit(avoid_rocks(velocity) / response_time_secs, max_force);
-                let force = steering::limit(steer + containment + avoidance, max_force);
-                let params = SteeringParams {
-                    max_speed_m_per_s: top,
-                    min_speed_m_per_s: 0.2 * top,
-                    max_force_m_per_s2: max_force,
-                    ..SteeringParams::default()
-                };
-                f.velocity_m_per_s = a.intended_m_per_s;
-                f.integrate(force, &params, dt);
-                f.position_m += water * dt;
-                f.position_m = self.tank.clamp_inside(f.position_m, 0.5 * length.min(0.5));
-                for o in &self.obstacles {
-                    if o.signed_distance_m(f.position_m) < 0.1 * length {
-                        f.position_m = o.push_outside(f.position_m, 0.1 * length);
-                    }
-                }
-                f.advance_tail_phase(dt);
-                a.intended_m_per_s = f.velocity_m_per_s;
-            }
-        }
-        if self
-            .obstacles
-            .iter()
-            .any(|o| o.signed_distance_m(a.body.position_m()) < 0.0)
-        {
-            self.counts.inside_rock_steps += 1;
-        }
-    }
-
-    pub(super) fn sway_seaweed(&mut self, dt: f32) {
-        let t = self.time_secs as f32;
-        for w in &mut self.seaweed {
-            let root = w.nodes_m[0];
-            for n in 1..w.nodes_m.len() {
-                let p = w.nodes_m[n];
-                let water = self.current.velocity_m_per_s(p, f64::from(t));
-                let along = n as f32 / (SEAWEED_NODES - 1) as f32;
-                let sway = Vec3::new(
-                    fmath::sin(0.7 * t + w.phase_rad + 0.6 * along),
-                    0.0,
-                    fmath::cos(0.45 * t + 1.3 * w.phase_rad),
-                ) * 0.06;
-                let lift = Vec3::Y * 0.15;
-                w.nodes_m[n] = p + (water * 3.0 + sway + lift) * dt * along;
-            }
-            // Keep the segment lengths, from the root out.
-            w.nodes_m[0] = root;
-            for n in 1..w.nodes_m.len() {
-                let prev = w.nodes_m[n - 1];
-                let dir = (w.nodes_m[n] - prev).normalize_or(Vec3::Y);
-                let mut q = prev + dir * w.segment_m;
-                q.y = q.y.max(self.tank.min_m.y + 0.02);
-                w.nodes_m[n] = q;
-            }
-        }
-    }
-
-    pub(super) fn count_contacts(&mut self) {
-        let mut now = Vec::new();
-        for i in 0..self.animals.len() {
-            if !self.animals[i].alive {
-                continue;
-            }
-            for j in i + 1..self.animals.len() {
-                if !self.animals[j].alive {
-                    continue;
-                }
-                // A bonded pair chases each other's tails, rises together and
-                // nuzzles: their contacts are the courtship, not collisions.
-                let courting = self.pairs.iter().any(|p| {
-                    p.bonded()
-                        && ((p.male, p.female) == (i as u32, j as u32)
-                            || (p.male, p.female) == (j as u32, i as u32))
-                });
-                if courting {
-                    continue;
-                }
-                let (a, b) = (&self.animals[i].body, &self.animals[j].body);
-                let mean = 0.5 * (a.body_length_m() + b.body_length_m());
-                if a.position_m().distance(b.position_m()) < COLLISION_BODY_LENGTHS * mean {
-                    now.push((i as u32, j as u32));
-                }
-            }
-        }
-        for pair in &now {
-            if !self.touching.contains(pair) {
-                self.counts.fish_collisions += 1;
-            }
-        }
-        self.touching = now;
     }
 }
