@@ -25,7 +25,10 @@ use std::collections::BTreeMap;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
+use super::physics::PhysicsSettings;
 use super::range::SettingError;
+use super::reef::ReefSettings;
+use super::tank::TankSettings;
 use super::{Scene, Settings, Side};
 
 /// Longest question, in characters (default 1,000: a paragraph or two; the
@@ -39,14 +42,11 @@ pub const RULES_MAX: usize = 200;
 /// What is masked in place of a mystery value in `settings()`, `state()`.
 pub const MYSTERY: &str = "mystery";
 
-/// The five urge weights of a tank, whose mix a preset's name gives away.
-const WEIGHT_KEYS: [&str; 5] = [
-    "containment",
-    "alignment",
-    "cohesion",
-    "separation",
-    "avoidance",
-];
+/// The keys of the five urge weights of a tank, whose mix a preset's name
+/// gives away.
+fn weight_keys() -> impl Iterator<Item = &'static str> {
+    TankSettings::WEIGHTS.iter().map(|w| w.range.key)
+}
 
 /// What a student may do with one control.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -123,10 +123,8 @@ impl Studio {
             && (side == Side::Left.name() || side == Side::Right.name())
         {
             if name == "preset" {
-                rule.mystery |= WEIGHT_KEYS
-                    .iter()
-                    .any(|w| self.rule(&format!("{side}.{w}")).mystery);
-            } else if WEIGHT_KEYS.contains(&name) {
+                rule.mystery |= weight_keys().any(|w| self.rule(&format!("{side}.{w}")).mystery);
+            } else if weight_keys().any(|w| w == name) {
                 rule.mystery |= self.rule(&format!("{side}.preset")).mystery;
             }
         }
@@ -155,7 +153,7 @@ impl Studio {
         let mut keys: Vec<String> = self.rules.keys().cloned().collect();
         for side in Side::BOTH {
             if self.rule(&format!("{}.preset", side.name())).mystery {
-                keys.extend(WEIGHT_KEYS.iter().map(|w| format!("{}.{w}", side.name())));
+                keys.extend(weight_keys().map(|w| format!("{}.{w}", side.name())));
             }
         }
         keys.sort();
@@ -298,11 +296,16 @@ impl Studio {
     /// `state().fish_count`) give a mystery value away to a student: the count
     /// of either tank, the physics tank's fish or sharks, the reef's prey?
     pub fn count_is_mystery_for_student(&self, scene: Scene) -> bool {
-        let keys: &[&str] = match scene {
-            Scene::Aquarium | Scene::Boids => &["left.fish_count", "right.fish_count"],
-            Scene::Physics => &["physics.fish_count", "physics.sharks"],
-            Scene::Reef => &["reef.prey_count"],
-            Scene::Learning => &[],
+        let fish_count = TankSettings::COUNTS[0];
+        let keys: Vec<String> = match scene {
+            Scene::Aquarium | Scene::Boids => Side::BOTH
+                .map(|side| fish_count.full_key(&side.prefix()))
+                .to_vec(),
+            Scene::Physics => [PhysicsSettings::FISH_COUNT, PhysicsSettings::SHARKS]
+                .map(|count| count.full_key(PhysicsSettings::PREFIX))
+                .to_vec(),
+            Scene::Reef => vec![ReefSettings::PREY_COUNT.full_key(ReefSettings::PREFIX)],
+            Scene::Learning => Vec::new(),
         };
         keys.iter().any(|key| self.for_student(key).mystery)
     }
