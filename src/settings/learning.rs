@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::settings::number::{Access, Number, NumberSetting, Widget, check_all, clamp_all};
+use crate::settings::number::{Number, NumberSetting, Widget, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::BodySpecies;
 use crate::sim::learning::learning_lab::ControllerChoice;
@@ -52,18 +52,12 @@ impl LearningSettings {
     /// Annealing steps per drill.
     pub const ANNEALING_STEPS: NumberSetting<Self, u32> = NumberSetting {
         range: Range::new("annealing_steps", ANNEALING_STEPS_MIN, ANNEALING_STEPS_MAX),
-        access: Access::Plain {
-            get: |l| l.annealing_steps,
-            get_mut: |l| &mut l.annealing_steps,
-        },
+        access: field!(annealing_steps),
         label: "Tries per drill",
         help: "How many tries the fish gets for each drill. More tries, better \
                swimming (the paper's best shark had 6840). Changing it starts again",
         unit: "",
-        widget: Widget::Slider {
-            logarithmic: true,
-            decimals: None,
-        },
+        widget: Widget::LOG_SLIDER,
         rect: "learning_steps",
     };
     /// Every numeric setting.

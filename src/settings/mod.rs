@@ -16,7 +16,7 @@ pub mod tank;
 
 use serde::{Deserialize, Serialize};
 
-use self::number::{Access, Number, NumberSetting, Widget};
+use self::number::{Number, NumberSetting, Widget, field};
 pub use self::range::{Range, SettingError};
 use crate::settings::learning::LearningSettings;
 use crate::settings::physics::PhysicsSettings;
@@ -260,10 +260,7 @@ impl Settings {
     /// Simulated seconds per real second.
     pub const SPEED: NumberSetting<Self, f32> = NumberSetting {
         range: Range::or_else("speed", SPEED_MIN, SPEED_MAX, 1.0),
-        access: Access::Plain {
-            get: |s| s.speed,
-            get_mut: |s| &mut s.speed,
-        },
+        access: field!(speed),
         label: "Speed",
         help: "How fast time runs: 1× is real time, 2× is twice as fast",
         unit: "×",
@@ -276,10 +273,7 @@ impl Settings {
     /// The world's seed (typed in, or a new one from the *New* button beside it).
     pub const SEED: NumberSetting<Self, u64> = NumberSetting {
         range: Range::new("seed", 0, SEED_MAX),
-        access: Access::Plain {
-            get: |s| s.seed,
-            get_mut: |s| &mut s.seed,
-        },
+        access: field!(seed),
         label: "Seed",
         help: "The number that decides where everything starts. \
                The same seed always gives the same run, so a class can share it",

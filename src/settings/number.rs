@@ -23,6 +23,18 @@ pub enum Access<S, T> {
     },
 }
 
+/// [`Access::Plain`] to the field `$field` of a settings struct, the type of which
+/// the table's entry gives: `field!(alignment)`.
+macro_rules! field {
+    ($field:ident) => {
+        $crate::settings::number::Access::Plain {
+            get: |s| s.$field,
+            get_mut: |s| &mut s.$field,
+        }
+    };
+}
+pub(crate) use field;
+
 // By hand: derived, they would ask `S` to be `Copy` too.
 impl<S, T> Clone for Access<S, T> {
     fn clone(&self) -> Self {
@@ -57,6 +69,28 @@ pub enum Widget {
         more: &'static str,
         typed: bool,
     },
+}
+
+impl Widget {
+    /// A linear slider, egui picking the decimals.
+    pub const SLIDER: Self = Self::Slider {
+        logarithmic: false,
+        decimals: None,
+    };
+
+    /// A logarithmic slider, egui picking the decimals.
+    pub const LOG_SLIDER: Self = Self::Slider {
+        logarithmic: true,
+        decimals: None,
+    };
+
+    /// A linear slider showing (and keeping) `decimals` decimals at most.
+    pub const fn slider(decimals: usize) -> Self {
+        Self::Slider {
+            logarithmic: false,
+            decimals: Some(decimals),
+        }
+    }
 }
 
 /// One numeric setting of the settings struct `S`, holding a `T`: everything

@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::settings::number::{Access, Number, NumberSetting, Widget, check_all, clamp_all};
+use crate::settings::number::{Number, NumberSetting, Widget, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::PhysicsBehaviour;
 use crate::sim::physics::world::{MAX_PHYSICAL_FISH, MAX_PHYSICAL_SHARKS};
@@ -84,26 +84,17 @@ impl PhysicsSettings {
 
     pub const FISH_COUNT: NumberSetting<Self, u32> = NumberSetting {
         range: Range::new("fish_count", 1, PHYSICS_FISH_MAX),
-        access: Access::Plain {
-            get: |p| p.fish_count,
-            get_mut: |p| &mut p.fish_count,
-        },
+        access: field!(fish_count),
         label: "Fish",
         help: "How many muscle-driven fish swim in the tank. Each one is 23 masses \
                joined by 91 springs",
         unit: "",
-        widget: Widget::Slider {
-            logarithmic: true,
-            decimals: None,
-        },
+        widget: Widget::LOG_SLIDER,
         rect: "physics_fish",
     };
     pub const SHARKS: NumberSetting<Self, u32> = NumberSetting {
         range: Range::new("sharks", 0, PHYSICS_SHARKS_MAX),
-        access: Access::Plain {
-            get: |p| p.sharks,
-            get_mut: |p| &mut p.sharks,
-        },
+        access: field!(sharks),
         label: "Sharks",
         help: "Sharks are built like the fish, only twice as long and four times heavier",
         unit: "",
@@ -117,33 +108,21 @@ impl PhysicsSettings {
     };
     pub const CURRENT_M_PER_S: NumberSetting<Self, f32> = NumberSetting {
         range: Range::new("current_m_per_s", 0.0, CURRENT_MAX_M_PER_S),
-        access: Access::Plain {
-            get: |p| p.current_m_per_s,
-            get_mut: |p| &mut p.current_m_per_s,
-        },
+        access: field!(current_m_per_s),
         label: "Current",
         help: "How fast the water flows round the tank. A fish that stops \
                swimming drifts with it; to stay put it must swim against it",
         unit: " m/s",
-        widget: Widget::Slider {
-            logarithmic: false,
-            decimals: Some(2),
-        },
+        widget: Widget::slider(2),
         rect: "physics_current",
     };
     pub const HAND_SPEED: NumberSetting<Self, f32> = NumberSetting {
         range: Range::new("hand_speed", 0.0, 1.0),
-        access: Access::Plain {
-            get: |p| p.hand_speed,
-            get_mut: |p| &mut p.hand_speed,
-        },
+        access: field!(hand_speed),
         label: "Swim",
         help: "How hard the tail muscles beat: 0 rests, 1 is the fastest swimming",
         unit: "",
-        widget: Widget::Slider {
-            logarithmic: false,
-            decimals: Some(2),
-        },
+        widget: Widget::slider(2),
         rect: "hand_speed",
     };
     pub const HAND_PITCH_DEG: NumberSetting<Self, f32> = NumberSetting {
@@ -153,27 +132,18 @@ impl PhysicsSettings {
             HAND_PITCH_MAX_DEG,
             0.0,
         ),
-        access: Access::Plain {
-            get: |p| p.hand_pitch_deg,
-            get_mut: |p| &mut p.hand_pitch_deg,
-        },
+        access: field!(hand_pitch_deg),
         label: "Fins",
         help: "Tilt the side fins: up makes the fish climb, down makes it dive \
                (only while it swims)",
         unit: "°",
-        widget: Widget::Slider {
-            logarithmic: false,
-            decimals: Some(0),
-        },
+        widget: Widget::slider(0),
         rect: "hand_pitch",
     };
     /// Typed in beside the *Turn* button that asks for it.
     pub const TURN_ANGLE_DEG: NumberSetting<Self, f32> = NumberSetting {
         range: Range::or_else("turn_angle_deg", -TURN_MAX_DEG, TURN_MAX_DEG, 0.0),
-        access: Access::Plain {
-            get: |p| p.turn_angle_deg,
-            get_mut: |p| &mut p.turn_angle_deg,
-        },
+        access: field!(turn_angle_deg),
         label: "Turn",
         help: "The turn the button asks for: positive to the fish's left, \
                negative to its right. Turns above 90° are made of smaller ones",

@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::settings::number::{Access, Number, NumberSetting, Widget, check_all, clamp_all};
+use crate::settings::number::{Access, Number, NumberSetting, Widget, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::FishKind;
@@ -142,10 +142,7 @@ impl ReefSettings {
         label: "Prey fish",
         help: "How many small prey fish live in this reef (they school and flee the shark)",
         unit: "",
-        widget: Widget::Slider {
-            logarithmic: false,
-            decimals: None,
-        },
+        widget: Widget::SLIDER,
         rect: "reef_prey",
     };
     /// Unset, the demo's own number.
@@ -159,41 +156,26 @@ impl ReefSettings {
         label: "Plankton",
         help: "How much plankton drifts in the water; eaten plankton is replaced",
         unit: "",
-        widget: Widget::Slider {
-            logarithmic: false,
-            decimals: None,
-        },
+        widget: Widget::SLIDER,
         rect: "reef_food",
     };
     pub const VISIBILITY_M: NumberSetting<Self, f32> = NumberSetting {
         range: Range::or_else("visibility_m", VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0),
-        access: Access::Plain {
-            get: |r| r.visibility_m,
-            get_mut: |r| &mut r.visibility_m,
-        },
+        access: field!(visibility_m),
         label: "Visibility",
         help: "How far a fish can see in this water, metres. Murky water: fish see \
                less, find less food and notice the shark later",
         unit: " m",
-        widget: Widget::Slider {
-            logarithmic: false,
-            decimals: None,
-        },
+        widget: Widget::SLIDER,
         rect: "reef_visibility",
     };
     pub const CURRENT_M_PER_S: NumberSetting<Self, f32> = NumberSetting {
         range: Range::or_else("current_m_per_s", 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03),
-        access: Access::Plain {
-            get: |r| r.current_m_per_s,
-            get_mut: |r| &mut r.current_m_per_s,
-        },
+        access: field!(current_m_per_s),
         label: "Current",
         help: "How fast the water flows; it carries plankton and sways the seaweed",
         unit: " m/s",
-        widget: Widget::Slider {
-            logarithmic: false,
-            decimals: None,
-        },
+        widget: Widget::SLIDER,
         rect: "reef_current",
     };
     /// Every numeric setting (the traits have their own table, `selected`

@@ -12,7 +12,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::settings::number::{Access, Number, NumberSetting, Widget, check_all, clamp_all};
+use crate::settings::number::{Access, Number, NumberSetting, Widget, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::boids::control_mode::{self, ControlMode};
 use crate::sim::boids::shark::MAX_SHARKS;
@@ -230,10 +230,7 @@ impl TankSettings {
     pub const WEIGHTS: [NumberSetting<Self, f32>; 5] = [
         weight(
             Range::new("containment", 0.0, WEIGHT_MAX),
-            Access::Plain {
-                get: |t| t.containment,
-                get_mut: |t| &mut t.containment,
-            },
+            field!(containment),
             "Containment",
             "How strongly a fish stays in the pond: it turns back towards open water before its \
              path comes near the glass, the sand or the surface.",
@@ -241,10 +238,7 @@ impl TankSettings {
         ),
         weight(
             Range::new("alignment", 0.0, WEIGHT_MAX),
-            Access::Plain {
-                get: |t| t.alignment,
-                get_mut: |t| &mut t.alignment,
-            },
+            field!(alignment),
             "Alignment",
             "How much a fish copies the direction its neighbours are swimming \
              (close neighbours count more: their heading is easier to see).",
@@ -252,10 +246,7 @@ impl TankSettings {
         ),
         weight(
             Range::new("cohesion", 0.0, WEIGHT_MAX),
-            Access::Plain {
-                get: |t| t.cohesion,
-                get_mut: |t| &mut t.cohesion,
-            },
+            field!(cohesion),
             "Cohesion",
             "How much a fish swims towards the middle of the neighbours it can see \
              (and of the distant school it sees), easing off as it arrives.",
@@ -263,10 +254,7 @@ impl TankSettings {
         ),
         weight(
             Range::new("separation", 0.0, WEIGHT_MAX),
-            Access::Plain {
-                get: |t| t.separation,
-                get_mut: |t| &mut t.separation,
-            },
+            field!(separation),
             "Separation",
             "How much a fish keeps its own space: it moves away from fish inside its personal \
              space, harder the closer they are.",
@@ -274,10 +262,7 @@ impl TankSettings {
         ),
         weight(
             Range::new("avoidance", 0.0, WEIGHT_MAX),
-            Access::Plain {
-                get: |t| t.avoidance,
-                get_mut: |t| &mut t.avoidance,
-            },
+            field!(avoidance),
             "Avoidance",
             "How strongly a fish swerves around obstacles: the glass, sand and surface, rocks, \
              pillars, stingrays, and fish coming straight at it (three or more close together \
@@ -291,10 +276,7 @@ impl TankSettings {
         // From under two body lengths to the tank's width.
         sense(
             Range::new("vision_distance_m", 0.5, 12.0),
-            Access::Plain {
-                get: |t| t.vision_distance_m,
-                get_mut: |t| &mut t.vision_distance_m,
-            },
+            field!(vision_distance_m),
             "Vision distance",
             " m",
             "How far a fish can see its neighbours, in metres.",
@@ -302,10 +284,7 @@ impl TankSettings {
         // 360: no blind spot.
         sense(
             Range::new("vision_angle_deg", 0.0, 360.0),
-            Access::Plain {
-                get: |t| t.vision_angle_deg,
-                get_mut: |t| &mut t.vision_angle_deg,
-            },
+            field!(vision_angle_deg),
             "Vision angle",
             "°",
             "How wide a fish sees around itself. At 360° it sees behind too; \
@@ -315,20 +294,14 @@ impl TankSettings {
         // ten body lengths per second).
         sense(
             Range::new("max_speed_m_per_s", 0.1, 3.0),
-            Access::Plain {
-                get: |t| t.max_speed_m_per_s,
-                get_mut: |t| &mut t.max_speed_m_per_s,
-            },
+            field!(max_speed_m_per_s),
             "Top speed",
             " m/s",
             "The fastest a fish can swim, in metres per second.",
         ),
         sense(
             Range::new("max_force_m_per_s2", 0.1, 10.0),
-            Access::Plain {
-                get: |t| t.max_force_m_per_s2,
-                get_mut: |t| &mut t.max_force_m_per_s2,
-            },
+            field!(max_force_m_per_s2),
             "Turning power",
             " m/s²",
             "How hard a fish can turn or speed up at once (the maximum force). \
@@ -338,10 +311,7 @@ impl TankSettings {
         // that keeps everybody away).
         sense(
             Range::new("personal_space_m", 0.1, 3.0),
-            Access::Plain {
-                get: |t| t.personal_space_m,
-                get_mut: |t| &mut t.personal_space_m,
-            },
+            field!(personal_space_m),
             "Personal space",
             " m",
             "How close another fish may come before separation pushes this one away. \
@@ -350,10 +320,7 @@ impl TankSettings {
         // On the weights' scale.
         sense(
             Range::new("wander", 0.0, WEIGHT_MAX),
-            Access::Plain {
-                get: |t| t.wander,
-                get_mut: |t| &mut t.wander,
-            },
+            field!(wander),
             "Wander",
             "",
             "How much a fish roams about on its own, 0 to 100 (on the urges' scale). \
@@ -366,10 +333,7 @@ impl TankSettings {
     pub const COUNTS: [NumberSetting<Self, u32>; 3] = [
         NumberSetting {
             range: Range::new("fish_count", 0, FISH_COUNT_MAX),
-            access: Access::Plain {
-                get: |t| t.fish_count,
-                get_mut: |t| &mut t.fish_count,
-            },
+            access: field!(fish_count),
             label: "Fish",
             help: "How many fish (the prey) are in the tank.",
             unit: "",
@@ -383,10 +347,7 @@ impl TankSettings {
         },
         NumberSetting {
             range: Range::new("sharks", 0, SHARKS_MAX),
-            access: Access::Plain {
-                get: |t| t.sharks,
-                get_mut: |t| &mut t.sharks,
-            },
+            access: field!(sharks),
             label: "Sharks",
             help: "Hunters. A shark chases a fish; fish that see it flee and bunch together.",
             unit: "",
@@ -395,10 +356,7 @@ impl TankSettings {
         },
         NumberSetting {
             range: Range::new("stingrays", 0, STINGRAYS_MAX),
-            access: Access::Plain {
-                get: |t| t.stingrays,
-                get_mut: |t| &mut t.stingrays,
-            },
+            access: field!(stingrays),
             label: "Stingrays",
             help: "Flat fish that glide over the sand. Other fish swim around them like rocks.",
             unit: "",
@@ -412,10 +370,7 @@ impl TankSettings {
     /// setting).
     pub const AQUARIUM_FISH_COUNT: NumberSetting<Self, u32> = NumberSetting {
         help: "How many fish are in the tank",
-        widget: Widget::Slider {
-            logarithmic: true,
-            decimals: None,
-        },
+        widget: Widget::LOG_SLIDER,
         rect: "fish_count",
         ..Self::COUNTS[0]
     };
@@ -503,10 +458,7 @@ const fn weight(
         label,
         help,
         unit: "",
-        widget: Widget::Slider {
-            logarithmic: false,
-            decimals: Some(0),
-        },
+        widget: Widget::slider(0),
         rect,
     }
 }
@@ -526,10 +478,7 @@ const fn sense(
         label,
         help,
         unit,
-        widget: Widget::Slider {
-            logarithmic: false,
-            decimals: Some(1),
-        },
+        widget: Widget::slider(1),
         rect: range.key,
     }
 }
