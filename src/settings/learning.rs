@@ -50,16 +50,15 @@ impl LearningSettings {
     pub const PREFIX: &str = "learning.";
 
     /// Annealing steps per drill.
-    pub const ANNEALING_STEPS: NumberSetting<Self, u32> = NumberSetting {
-        range: Range::new("annealing_steps", ANNEALING_STEPS_MIN, ANNEALING_STEPS_MAX),
-        access: field!(annealing_steps),
-        label: "Tries per drill",
-        help: "How many tries the fish gets for each drill. More tries, better \
-               swimming (the paper's best shark had 6840). Changing it starts again",
-        unit: "",
-        widget: Widget::LOG_SLIDER,
-        rect: "learning_steps",
-    };
+    pub const ANNEALING_STEPS: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        Range::new("annealing_steps", ANNEALING_STEPS_MIN, ANNEALING_STEPS_MAX),
+        field!(annealing_steps),
+        "Tries per drill",
+        "How many tries the fish gets for each drill. More tries, better \
+         swimming (the paper's best shark had 6840). Changing it starts again",
+    )
+    .widget(Widget::LOG_SLIDER)
+    .rect("learning_steps");
     /// Every numeric setting.
     pub const NUMBERS: [Number<Self>; 1] = [Number::U32(Self::ANNEALING_STEPS)];
 

@@ -258,32 +258,29 @@ impl Settings {
     }
 
     /// Simulated seconds per real second.
-    pub const SPEED: NumberSetting<Self, f32> = NumberSetting {
-        range: Range::or_else("speed", SPEED_MIN, SPEED_MAX, 1.0),
-        access: field!(speed),
-        label: "Speed",
-        help: "How fast time runs: 1× is real time, 2× is twice as fast",
-        unit: "×",
-        widget: Widget::Slider {
-            logarithmic: true,
-            decimals: Some(2),
-        },
-        rect: "speed",
-    };
+    pub const SPEED: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::or_else("speed", SPEED_MIN, SPEED_MAX, 1.0),
+        field!(speed),
+        "Speed",
+        "How fast time runs: 1× is real time, 2× is twice as fast",
+    )
+    .unit("×")
+    .widget(Widget::Slider {
+        logarithmic: true,
+        decimals: Some(2),
+    });
     /// The world's seed (typed in, or a new one from the *New* button beside it).
-    pub const SEED: NumberSetting<Self, u64> = NumberSetting {
-        range: Range::new("seed", 0, SEED_MAX),
-        access: field!(seed),
-        label: "Seed",
-        help: "The number that decides where everything starts. \
-               The same seed always gives the same run, so a class can share it",
-        unit: "",
-        widget: Widget::Field {
-            drag_speed: 1.0,
-            help: Some("Type a number to start a new run from it"),
-        },
-        rect: "seed",
-    };
+    pub const SEED: NumberSetting<Self, u64> = NumberSetting::<Self, _>::new(
+        Range::new("seed", 0, SEED_MAX),
+        field!(seed),
+        "Seed",
+        "The number that decides where everything starts. \
+         The same seed always gives the same run, so a class can share it",
+    )
+    .widget(Widget::Field {
+        drag_speed: 1.0,
+        help: Some("Type a number to start a new run from it"),
+    });
     /// Every numeric setting at the top level (each scene's are in its own
     /// settings' table).
     pub const NUMBERS: [Number<Self>; 2] = [Number::F32(Self::SPEED), Number::U64(Self::SEED)];

@@ -25,11 +25,21 @@ pub enum Access<S, T> {
 
 /// [`Access::Plain`] to the field `$field` of a settings struct, the type of which
 /// the table's entry gives: `field!(alignment)`.
+///
+/// `field!(prey_count, |r| …)` is [`Access::Optional`] to an `Option` field, the
+/// closure giving the value that applies while it is unset.
 macro_rules! field {
     ($field:ident) => {
         $crate::settings::number::Access::Plain {
             get: |s| s.$field,
             get_mut: |s| &mut s.$field,
+        }
+    };
+    ($field:ident, $otherwise:expr) => {
+        $crate::settings::number::Access::Optional {
+            get: |s| s.$field,
+            get_mut: |s| &mut s.$field,
+            otherwise: $otherwise,
         }
     };
 }
@@ -123,6 +133,42 @@ impl<S, T: Copy> Clone for NumberSetting<S, T> {
 }
 
 impl<S, T: Copy> Copy for NumberSetting<S, T> {}
+
+impl<S, T: Copy> NumberSetting<S, T> {
+    /// A setting edited on a linear slider ([`Widget::SLIDER`]), without a
+    /// unit, its rectangle named by its key; the methods below say otherwise.
+    pub const fn new(
+        range: Range<T>,
+        access: Access<S, T>,
+        label: &'static str,
+        help: &'static str,
+    ) -> Self {
+        Self {
+            range,
+            access,
+            label,
+            help,
+            unit: "",
+            widget: Widget::SLIDER,
+            rect: range.key,
+        }
+    }
+
+    /// Shown with `unit` after the number (" m/s").
+    pub const fn unit(self, unit: &'static str) -> Self {
+        Self { unit, ..self }
+    }
+
+    /// Edited with `widget`.
+    pub const fn widget(self, widget: Widget) -> Self {
+        Self { widget, ..self }
+    }
+
+    /// Its control's rectangle named `rect`.
+    pub const fn rect(self, rect: &'static str) -> Self {
+        Self { rect, ..self }
+    }
+}
 
 impl<S, T: SettingValue> NumberSetting<S, T> {
     /// The key under `prefix` ("left." gives "left.alignment"), as the studio's

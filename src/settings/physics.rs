@@ -82,78 +82,74 @@ impl PhysicsSettings {
     /// The key prefix of these settings in `shoal.set` and the studio's rules.
     pub const PREFIX: &str = "physics.";
 
-    pub const FISH_COUNT: NumberSetting<Self, u32> = NumberSetting {
-        range: Range::new("fish_count", 1, PHYSICS_FISH_MAX),
-        access: field!(fish_count),
-        label: "Fish",
-        help: "How many muscle-driven fish swim in the tank. Each one is 23 masses \
-               joined by 91 springs",
-        unit: "",
-        widget: Widget::LOG_SLIDER,
-        rect: "physics_fish",
-    };
-    pub const SHARKS: NumberSetting<Self, u32> = NumberSetting {
-        range: Range::new("sharks", 0, PHYSICS_SHARKS_MAX),
-        access: field!(sharks),
-        label: "Sharks",
-        help: "Sharks are built like the fish, only twice as long and four times heavier",
-        unit: "",
-        widget: Widget::Count {
-            step: 1,
-            fewer: "One shark fewer",
-            more: "One more shark",
-            typed: false,
-        },
-        rect: "physics_sharks",
-    };
-    pub const CURRENT_M_PER_S: NumberSetting<Self, f32> = NumberSetting {
-        range: Range::new("current_m_per_s", 0.0, CURRENT_MAX_M_PER_S),
-        access: field!(current_m_per_s),
-        label: "Current",
-        help: "How fast the water flows round the tank. A fish that stops \
-               swimming drifts with it; to stay put it must swim against it",
-        unit: " m/s",
-        widget: Widget::slider(2),
-        rect: "physics_current",
-    };
-    pub const HAND_SPEED: NumberSetting<Self, f32> = NumberSetting {
-        range: Range::new("hand_speed", 0.0, 1.0),
-        access: field!(hand_speed),
-        label: "Swim",
-        help: "How hard the tail muscles beat: 0 rests, 1 is the fastest swimming",
-        unit: "",
-        widget: Widget::slider(2),
-        rect: "hand_speed",
-    };
-    pub const HAND_PITCH_DEG: NumberSetting<Self, f32> = NumberSetting {
-        range: Range::or_else(
+    pub const FISH_COUNT: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        Range::new("fish_count", 1, PHYSICS_FISH_MAX),
+        field!(fish_count),
+        "Fish",
+        "How many muscle-driven fish swim in the tank. Each one is 23 masses \
+         joined by 91 springs",
+    )
+    .widget(Widget::LOG_SLIDER)
+    .rect("physics_fish");
+    pub const SHARKS: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        Range::new("sharks", 0, PHYSICS_SHARKS_MAX),
+        field!(sharks),
+        "Sharks",
+        "Sharks are built like the fish, only twice as long and four times heavier",
+    )
+    .widget(Widget::Count {
+        step: 1,
+        fewer: "One shark fewer",
+        more: "One more shark",
+        typed: false,
+    })
+    .rect("physics_sharks");
+    pub const CURRENT_M_PER_S: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::new("current_m_per_s", 0.0, CURRENT_MAX_M_PER_S),
+        field!(current_m_per_s),
+        "Current",
+        "How fast the water flows round the tank. A fish that stops \
+         swimming drifts with it; to stay put it must swim against it",
+    )
+    .unit(" m/s")
+    .widget(Widget::slider(2))
+    .rect("physics_current");
+    pub const HAND_SPEED: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::new("hand_speed", 0.0, 1.0),
+        field!(hand_speed),
+        "Swim",
+        "How hard the tail muscles beat: 0 rests, 1 is the fastest swimming",
+    )
+    .widget(Widget::slider(2));
+    pub const HAND_PITCH_DEG: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::or_else(
             "hand_pitch_deg",
             -HAND_PITCH_MAX_DEG,
             HAND_PITCH_MAX_DEG,
             0.0,
         ),
-        access: field!(hand_pitch_deg),
-        label: "Fins",
-        help: "Tilt the side fins: up makes the fish climb, down makes it dive \
-               (only while it swims)",
-        unit: "°",
-        widget: Widget::slider(0),
-        rect: "hand_pitch",
-    };
+        field!(hand_pitch_deg),
+        "Fins",
+        "Tilt the side fins: up makes the fish climb, down makes it dive \
+         (only while it swims)",
+    )
+    .unit("°")
+    .widget(Widget::slider(0))
+    .rect("hand_pitch");
     /// Typed in beside the *Turn* button that asks for it.
-    pub const TURN_ANGLE_DEG: NumberSetting<Self, f32> = NumberSetting {
-        range: Range::or_else("turn_angle_deg", -TURN_MAX_DEG, TURN_MAX_DEG, 0.0),
-        access: field!(turn_angle_deg),
-        label: "Turn",
-        help: "The turn the button asks for: positive to the fish's left, \
-               negative to its right. Turns above 90° are made of smaller ones",
-        unit: "°",
-        widget: Widget::Field {
-            drag_speed: 1.0,
-            help: None,
-        },
-        rect: "turn_angle",
-    };
+    pub const TURN_ANGLE_DEG: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::or_else("turn_angle_deg", -TURN_MAX_DEG, TURN_MAX_DEG, 0.0),
+        field!(turn_angle_deg),
+        "Turn",
+        "The turn the button asks for: positive to the fish's left, \
+         negative to its right. Turns above 90° are made of smaller ones",
+    )
+    .unit("°")
+    .widget(Widget::Field {
+        drag_speed: 1.0,
+        help: None,
+    })
+    .rect("turn_angle");
     /// Every numeric setting (`selected` depends on the counts), in the order
     /// validation reports them.
     pub const NUMBERS: [Number<Self>; 6] = [

@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::settings::number::{Access, Number, NumberSetting, Widget, check_all, clamp_all, field};
+use crate::settings::number::{Number, NumberSetting, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::FishKind;
@@ -132,52 +132,38 @@ impl ReefSettings {
     pub const PREFIX: &str = "reef.";
 
     /// Unset, the demo's own number.
-    pub const PREY_COUNT: NumberSetting<Self, u32> = NumberSetting {
-        range: Range::new("prey_count", 0, REEF_PREY_MAX),
-        access: Access::Optional {
-            get: |r| r.prey_count,
-            get_mut: |r| &mut r.prey_count,
-            otherwise: |r| r.demo.default_prey_count() as u32,
-        },
-        label: "Prey fish",
-        help: "How many small prey fish live in this reef (they school and flee the shark)",
-        unit: "",
-        widget: Widget::SLIDER,
-        rect: "reef_prey",
-    };
+    pub const PREY_COUNT: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        Range::new("prey_count", 0, REEF_PREY_MAX),
+        field!(prey_count, |r| r.demo.default_prey_count() as u32),
+        "Prey fish",
+        "How many small prey fish live in this reef (they school and flee the shark)",
+    )
+    .rect("reef_prey");
     /// Unset, the demo's own number.
-    pub const FOOD_COUNT: NumberSetting<Self, u32> = NumberSetting {
-        range: Range::new("food_count", 0, REEF_FOOD_MAX),
-        access: Access::Optional {
-            get: |r| r.food_count,
-            get_mut: |r| &mut r.food_count,
-            otherwise: |r| r.demo.default_food_count() as u32,
-        },
-        label: "Plankton",
-        help: "How much plankton drifts in the water; eaten plankton is replaced",
-        unit: "",
-        widget: Widget::SLIDER,
-        rect: "reef_food",
-    };
-    pub const VISIBILITY_M: NumberSetting<Self, f32> = NumberSetting {
-        range: Range::or_else("visibility_m", VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0),
-        access: field!(visibility_m),
-        label: "Visibility",
-        help: "How far a fish can see in this water, metres. Murky water: fish see \
-               less, find less food and notice the shark later",
-        unit: " m",
-        widget: Widget::SLIDER,
-        rect: "reef_visibility",
-    };
-    pub const CURRENT_M_PER_S: NumberSetting<Self, f32> = NumberSetting {
-        range: Range::or_else("current_m_per_s", 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03),
-        access: field!(current_m_per_s),
-        label: "Current",
-        help: "How fast the water flows; it carries plankton and sways the seaweed",
-        unit: " m/s",
-        widget: Widget::SLIDER,
-        rect: "reef_current",
-    };
+    pub const FOOD_COUNT: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        Range::new("food_count", 0, REEF_FOOD_MAX),
+        field!(food_count, |r| r.demo.default_food_count() as u32),
+        "Plankton",
+        "How much plankton drifts in the water; eaten plankton is replaced",
+    )
+    .rect("reef_food");
+    pub const VISIBILITY_M: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::or_else("visibility_m", VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0),
+        field!(visibility_m),
+        "Visibility",
+        "How far a fish can see in this water, metres. Murky water: fish see \
+         less, find less food and notice the shark later",
+    )
+    .unit(" m")
+    .rect("reef_visibility");
+    pub const CURRENT_M_PER_S: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::or_else("current_m_per_s", 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03),
+        field!(current_m_per_s),
+        "Current",
+        "How fast the water flows; it carries plankton and sways the seaweed",
+    )
+    .unit(" m/s")
+    .rect("reef_current");
     /// Every numeric setting (the traits have their own table, `selected`
     /// depends on the demo and the counts), in the order validation reports them.
     pub const NUMBERS: [Number<Self>; 4] = [

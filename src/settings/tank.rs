@@ -12,7 +12,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::settings::number::{Access, Number, NumberSetting, Widget, check_all, clamp_all, field};
+use crate::settings::number::{Number, NumberSetting, Widget, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::boids::control_mode::{self, ControlMode};
 use crate::sim::boids::shark::MAX_SHARKS;
@@ -228,141 +228,146 @@ impl TankSettings {
     /// The five urge weights in [`control_mode::Force::ALL`] order, 0 to
     /// [`WEIGHT_MAX`]: the sliders a preset sets.
     pub const WEIGHTS: [NumberSetting<Self, f32>; 5] = [
-        weight(
+        NumberSetting::<Self, _>::new(
             Range::new("containment", 0.0, WEIGHT_MAX),
             field!(containment),
             "Containment",
             "How strongly a fish stays in the pond: it turns back towards open water before its \
              path comes near the glass, the sand or the surface.",
-            "weight_containment",
-        ),
-        weight(
+        )
+        .widget(WHOLE)
+        .rect("weight_containment"),
+        NumberSetting::<Self, _>::new(
             Range::new("alignment", 0.0, WEIGHT_MAX),
             field!(alignment),
             "Alignment",
             "How much a fish copies the direction its neighbours are swimming \
              (close neighbours count more: their heading is easier to see).",
-            "weight_alignment",
-        ),
-        weight(
+        )
+        .widget(WHOLE)
+        .rect("weight_alignment"),
+        NumberSetting::<Self, _>::new(
             Range::new("cohesion", 0.0, WEIGHT_MAX),
             field!(cohesion),
             "Cohesion",
             "How much a fish swims towards the middle of the neighbours it can see \
              (and of the distant school it sees), easing off as it arrives.",
-            "weight_cohesion",
-        ),
-        weight(
+        )
+        .widget(WHOLE)
+        .rect("weight_cohesion"),
+        NumberSetting::<Self, _>::new(
             Range::new("separation", 0.0, WEIGHT_MAX),
             field!(separation),
             "Separation",
             "How much a fish keeps its own space: it moves away from fish inside its personal \
              space, harder the closer they are.",
-            "weight_separation",
-        ),
-        weight(
+        )
+        .widget(WHOLE)
+        .rect("weight_separation"),
+        NumberSetting::<Self, _>::new(
             Range::new("avoidance", 0.0, WEIGHT_MAX),
             field!(avoidance),
             "Avoidance",
             "How strongly a fish swerves around obstacles: the glass, sand and surface, rocks, \
              pillars, stingrays, and fish coming straight at it (three or more close together \
              count as one obstacle).",
-            "weight_avoidance",
-        ),
+        )
+        .widget(WHOLE)
+        .rect("weight_avoidance"),
     ];
 
     /// The senses, the body and the urge to roam: the same whatever the preset.
     pub const SENSES: [NumberSetting<Self, f32>; 6] = [
         // From under two body lengths to the tank's width.
-        sense(
+        NumberSetting::<Self, _>::new(
             Range::new("vision_distance_m", 0.5, 12.0),
             field!(vision_distance_m),
             "Vision distance",
-            " m",
             "How far a fish can see its neighbours, in metres.",
-        ),
+        )
+        .unit(" m")
+        .widget(TENTHS),
         // 360: no blind spot.
-        sense(
+        NumberSetting::<Self, _>::new(
             Range::new("vision_angle_deg", 0.0, 360.0),
             field!(vision_angle_deg),
             "Vision angle",
-            "°",
             "How wide a fish sees around itself. At 360° it sees behind too; \
              at 300° there is a blind spot behind its tail.",
-        ),
+        )
+        .unit("°")
+        .widget(TENTHS),
         // From a crawl (a third of a body length per second) to a sprint (about
         // ten body lengths per second).
-        sense(
+        NumberSetting::<Self, _>::new(
             Range::new("max_speed_m_per_s", 0.1, 3.0),
             field!(max_speed_m_per_s),
             "Top speed",
-            " m/s",
             "The fastest a fish can swim, in metres per second.",
-        ),
-        sense(
+        )
+        .unit(" m/s")
+        .widget(TENTHS),
+        NumberSetting::<Self, _>::new(
             Range::new("max_force_m_per_s2", 0.1, 10.0),
             field!(max_force_m_per_s2),
             "Turning power",
-            " m/s²",
             "How hard a fish can turn or speed up at once (the maximum force). \
              Small values make slow, lazy turns.",
-        ),
+        )
+        .unit(" m/s²")
+        .widget(TENTHS),
         // From a third of a body length (packed) to ten body lengths (a loner
         // that keeps everybody away).
-        sense(
+        NumberSetting::<Self, _>::new(
             Range::new("personal_space_m", 0.1, 3.0),
             field!(personal_space_m),
             "Personal space",
-            " m",
             "How close another fish may come before separation pushes this one away. \
              A school settles at about one body length (0.3–0.5 m here).",
-        ),
+        )
+        .unit(" m")
+        .widget(TENTHS),
         // On the weights' scale.
-        sense(
+        NumberSetting::<Self, _>::new(
             Range::new("wander", 0.0, WEIGHT_MAX),
             field!(wander),
             "Wander",
-            "",
             "How much a fish roams about on its own, 0 to 100 (on the urges' scale). \
              The same for loners and schools: a school's alignment and cohesion \
              overcome it, loners' do not.",
-        ),
+        )
+        .widget(TENTHS),
     ];
 
     /// The animals in the tank: fish, sharks, stingrays.
     pub const COUNTS: [NumberSetting<Self, u32>; 3] = [
-        NumberSetting {
-            range: Range::new("fish_count", 0, FISH_COUNT_MAX),
-            access: field!(fish_count),
-            label: "Fish",
-            help: "How many fish (the prey) are in the tank.",
-            unit: "",
-            widget: Widget::Count {
-                step: 10,
-                fewer: "Take 10 away",
-                more: "Add 10",
-                typed: true,
-            },
-            rect: "fish",
-        },
-        NumberSetting {
-            range: Range::new("sharks", 0, SHARKS_MAX),
-            access: field!(sharks),
-            label: "Sharks",
-            help: "Hunters. A shark chases a fish; fish that see it flee and bunch together.",
-            unit: "",
-            widget: ONE_AT_A_TIME,
-            rect: "sharks",
-        },
-        NumberSetting {
-            range: Range::new("stingrays", 0, STINGRAYS_MAX),
-            access: field!(stingrays),
-            label: "Stingrays",
-            help: "Flat fish that glide over the sand. Other fish swim around them like rocks.",
-            unit: "",
-            widget: ONE_AT_A_TIME,
-            rect: "stingrays",
-        },
+        NumberSetting::<Self, _>::new(
+            Range::new("fish_count", 0, FISH_COUNT_MAX),
+            field!(fish_count),
+            "Fish",
+            "How many fish (the prey) are in the tank.",
+        )
+        .widget(Widget::Count {
+            step: 10,
+            fewer: "Take 10 away",
+            more: "Add 10",
+            typed: true,
+        })
+        .rect("fish"),
+        NumberSetting::<Self, _>::new(
+            Range::new("sharks", 0, SHARKS_MAX),
+            field!(sharks),
+            "Sharks",
+            "Hunters. A shark chases a fish; fish that see it flee and bunch together.",
+        )
+        .widget(ONE_AT_A_TIME),
+        NumberSetting::<Self, _>::new(
+            Range::new("stingrays", 0, STINGRAYS_MAX),
+            field!(stingrays),
+            "Stingrays",
+            "Flat fish that glide over the sand. Other fish swim around them like rocks.",
+        )
+        .widget(ONE_AT_A_TIME),
     ];
 
     /// The aquarium scene's one control: the fish count of [`Self::COUNTS`] as a
@@ -444,44 +449,11 @@ impl TankSettings {
 /// Most obstacles a tank may hold: plenty for a lesson, bounded for share links.
 pub const MAX_OBSTACLES: usize = 24;
 
-/// An urge weight's row: a slider of whole numbers on the papers' 0–100 scale.
-const fn weight(
-    range: Range<f32>,
-    access: Access<TankSettings, f32>,
-    label: &'static str,
-    help: &'static str,
-    rect: &'static str,
-) -> NumberSetting<TankSettings, f32> {
-    NumberSetting {
-        range,
-        access,
-        label,
-        help,
-        unit: "",
-        widget: Widget::slider(0),
-        rect,
-    }
-}
+/// The urge weights' slider: whole numbers on the papers' 0–100 scale.
+const WHOLE: Widget = Widget::slider(0);
 
-/// A sense's (body's, wander's) row: a slider to a tenth, its rectangle named
-/// by its key.
-const fn sense(
-    range: Range<f32>,
-    access: Access<TankSettings, f32>,
-    label: &'static str,
-    unit: &'static str,
-    help: &'static str,
-) -> NumberSetting<TankSettings, f32> {
-    NumberSetting {
-        range,
-        access,
-        label,
-        help,
-        unit,
-        widget: Widget::slider(1),
-        rect: range.key,
-    }
-}
+/// The senses' (body's, wander's) slider: to a tenth.
+const TENTHS: Widget = Widget::slider(1);
 
 /// Sharks and stingrays come one at a time.
 const ONE_AT_A_TIME: Widget = Widget::Count {
