@@ -79,4 +79,37 @@ mod tests {
         }
         assert!(find("no-such-census").is_none());
     }
+
+    #[test]
+    fn every_script_the_docs_quote_is_registered() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let mut pages = vec![root.join("README.md"), root.join("ARCHITECTURE.md")];
+        let docs = std::fs::read_dir(root.join("docs")).expect("the docs folder");
+        pages.extend(
+            docs.flatten()
+                .map(|e| e.path())
+                .filter(|p| p.extension().is_some_and(|e| e == "md")),
+        );
+        let mut quoted = 0;
+        for page in pages {
+            let text = std::fs::read_to_string(&page).expect("a readable page");
+            // `shoal-census -- NAME` and `shoal-census NAME`.
+            for (at, _) in text.match_indices("shoal-census ") {
+                let rest = text[at + "shoal-census ".len()..].trim_start_matches("-- ");
+                let name: String = rest
+                    .chars()
+                    .take_while(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || *c == '-')
+                    .collect();
+                if name.len() > 2 && !name.starts_with('-') {
+                    quoted += 1;
+                    assert!(
+                        find(&name).is_some(),
+                        "{} quotes shoal-census {name}, which is not registered",
+                        page.display()
+                    );
+                }
+            }
+        }
+        assert!(quoted > 10, "only {quoted} quoted scripts found");
+    }
 }

@@ -123,12 +123,18 @@ fn every_class_is_its_own_scene_and_agrees_with_the_world_it_builds() {
             assert!(SCHOOL_MEASURES.iter().all(|m| class.measures().contains(m)));
         }
         assert!(class.secs_per_animal_step() > 0.0);
-        // Every key that acts lies in the scene's own settings section.
+        // The counts a mystery hides are settings of the scene's own section
+        // (or the compared right tank's).
         let section = format!("{}.", class.settings_section());
+        let settings_json = crate::experiment::design::settings_value(&Settings::default());
         for key in class.count_keys() {
             assert!(
                 key.starts_with(&section) || key.starts_with("right."),
                 "{scene:?}: {key}"
+            );
+            assert!(
+                crate::experiment::design::value_at(&settings_json, key).is_some(),
+                "{scene:?}: {key} is no setting"
             );
         }
         assert!(!class.acts("seedling.fish_count"));

@@ -5,6 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::settings::number::{Number, NumberSetting, Widget, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::BodySpecies;
 use crate::sim::learning::learning_lab::ControllerChoice;
@@ -45,19 +46,29 @@ impl LearningSettings {
         (self.species, self.annealing_steps)
     }
 
+    /// The key prefix of these settings in `shoal.set` and the studio's rules.
+    pub const PREFIX: &str = "learning.";
+
     /// Annealing steps per drill.
-    pub const ANNEALING_STEPS: Range<u32> =
-        Range::new("annealing_steps", ANNEALING_STEPS_MIN, ANNEALING_STEPS_MAX);
-    /// Every numeric setting's range.
-    pub const U32_RANGES: [Range<u32>; 1] = [Self::ANNEALING_STEPS];
+    pub const ANNEALING_STEPS: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        Range::new("annealing_steps", ANNEALING_STEPS_MIN, ANNEALING_STEPS_MAX),
+        field!(annealing_steps),
+        "Tries per drill",
+        "How many tries the fish gets for each drill. More tries, better \
+         swimming (the paper's best shark had 6840). Changing it starts again",
+    )
+    .widget(Widget::LOG_SLIDER)
+    .rect("learning_steps");
+    /// Every numeric setting.
+    pub const NUMBERS: [Number<Self>; 1] = [Number::U32(Self::ANNEALING_STEPS)];
 
     /// The first out-of-range value, its key under `prefix`.
     pub fn validate(&self, prefix: &str) -> Result<(), SettingError> {
-        Self::ANNEALING_STEPS.check(prefix, self.annealing_steps)
+        check_all(&Self::NUMBERS, prefix, self)
     }
 
     pub fn clamp(&mut self) {
-        self.annealing_steps = Self::ANNEALING_STEPS.clamp(self.annealing_steps);
+        clamp_all(&Self::NUMBERS, self);
     }
 }
 
@@ -85,12 +96,10 @@ mod tests {
 
     #[test]
     fn every_range_refuses_a_value_just_outside_and_clamps_it_to_the_bound() {
-        crate::settings::range::check_tables(
+        crate::settings::number::check_table(
             &LearningSettings::default(),
             "learning.",
-            &[],
-            &LearningSettings::U32_RANGES,
-            &[],
+            &LearningSettings::NUMBERS,
             |s| s.validate("learning."),
             LearningSettings::clamp,
         );

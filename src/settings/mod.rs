@@ -6,6 +6,7 @@
 //! first unknown key, wrong type or out-of-range value, changes nothing and explains why.
 
 pub mod learning;
+pub mod number;
 pub mod physics;
 pub mod range;
 pub mod reef;
@@ -15,6 +16,7 @@ pub mod tank;
 
 use serde::{Deserialize, Serialize};
 
+use self::number::{Number, NumberSetting, Widget, field};
 pub use self::range::{Range, SettingError};
 use crate::settings::learning::LearningSettings;
 use crate::settings::physics::PhysicsSettings;
@@ -92,6 +94,12 @@ impl Side {
             Self::Left => "left",
             Self::Right => "right",
         }
+    }
+
+    /// The prefix of the tank's keys in `shoal.set`, error messages and the
+    /// studio's rules (`left.`).
+    pub fn prefix(self) -> String {
+        format!("{}.", self.name())
     }
 
     pub fn index(self) -> usize {
@@ -206,29 +214,50 @@ impl Settings {
     }
 
     /// Simulated seconds per real second.
-    pub const SPEED: Range<f32> = Range::or_else("speed", SPEED_MIN, SPEED_MAX, 1.0);
-    pub const SEED: Range<u64> = Range::new("seed", 0, SEED_MAX);
+    pub const SPEED: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::or_else("speed", SPEED_MIN, SPEED_MAX, 1.0),
+        field!(speed),
+        "Speed",
+        "How fast time runs: 1× is real time, 2× is twice as fast",
+    )
+    .unit("×")
+    .widget(Widget::Slider {
+        logarithmic: true,
+        decimals: Some(2),
+    });
+    /// The world's seed (typed in, or a new one from the *New* button beside it).
+    pub const SEED: NumberSetting<Self, u64> = NumberSetting::<Self, _>::new(
+        Range::new("seed", 0, SEED_MAX),
+        field!(seed),
+        "Seed",
+        "The number that decides where everything starts. \
+         The same seed always gives the same run, so a class can share it",
+    )
+    .widget(Widget::Field {
+        drag_speed: 1.0,
+        help: Some("Type a number to start a new run from it"),
+    });
+    /// Every numeric setting at the top level (each scene's are in its own
+    /// settings' table).
+    pub const NUMBERS: [Number<Self>; 2] = [Number::F32(Self::SPEED), Number::U64(Self::SEED)];
 
     /// Checks every range. Returns the first violation.
     pub fn validate(&self) -> Result<(), SettingsError> {
-        Self::SPEED.check("", self.speed)?;
-        Self::SEED.check("", self.seed)?;
+        number::check_all(&Self::NUMBERS, "", self)?;
         let tank = Tank::default();
         for side in Side::BOTH {
-            let prefix = format!("{}.", side.name());
-            self.tank(side).validate(&prefix, &tank)?;
+            self.tank(side).validate(&side.prefix(), &tank)?;
         }
-        self.physics.validate("physics.")?;
-        self.reef.validate("reef.")?;
-        self.learning.validate("learning.")?;
+        self.physics.validate(PhysicsSettings::PREFIX)?;
+        self.reef.validate(ReefSettings::PREFIX)?;
+        self.learning.validate(LearningSettings::PREFIX)?;
         self.studio.validate()?;
         Ok(())
     }
 
     /// Brings every value into range (for paths that cannot refuse).
     pub fn clamp(&mut self) {
-        self.speed = Self::SPEED.clamp(self.speed);
-        self.seed = Self::SEED.clamp(self.seed);
+        number::clamp_all(&Self::NUMBERS, self);
         let tank = Tank::default();
         self.left.clamp(&tank);
         self.right.clamp(&tank);
@@ -557,12 +586,10 @@ mod tests {
 
     #[test]
     fn every_range_refuses_a_value_just_outside_and_clamps_it_to_the_bound() {
-        range::check_tables(
+        number::check_table(
             &Settings::default(),
             "",
-            &[Settings::SPEED],
-            &[],
-            &[Settings::SEED],
+            &Settings::NUMBERS,
             |s| match s.validate() {
                 Err(SettingsError::Invalid(err)) => Err(err),
                 other => {

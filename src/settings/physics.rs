@@ -5,6 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::settings::number::{Number, NumberSetting, Widget, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::PhysicsBehaviour;
 use crate::sim::physics::world::{MAX_PHYSICAL_FISH, MAX_PHYSICAL_SHARKS};
@@ -78,35 +79,91 @@ impl PhysicsSettings {
         self.fish_count + self.sharks
     }
 
-    pub const FISH_COUNT: Range<u32> = Range::new("fish_count", 1, PHYSICS_FISH_MAX);
-    pub const SHARKS: Range<u32> = Range::new("sharks", 0, PHYSICS_SHARKS_MAX);
-    pub const CURRENT_M_PER_S: Range<f32> = Range::new("current_m_per_s", 0.0, CURRENT_MAX_M_PER_S);
-    pub const HAND_SPEED: Range<f32> = Range::new("hand_speed", 0.0, 1.0);
-    pub const HAND_PITCH_DEG: Range<f32> = Range::or_else(
-        "hand_pitch_deg",
-        -HAND_PITCH_MAX_DEG,
-        HAND_PITCH_MAX_DEG,
-        0.0,
-    );
-    pub const TURN_ANGLE_DEG: Range<f32> =
-        Range::or_else("turn_angle_deg", -TURN_MAX_DEG, TURN_MAX_DEG, 0.0);
-    /// Every numeric setting's range (`selected` depends on the counts).
-    pub const U32_RANGES: [Range<u32>; 2] = [Self::FISH_COUNT, Self::SHARKS];
-    pub const F32_RANGES: [Range<f32>; 4] = [
-        Self::CURRENT_M_PER_S,
-        Self::HAND_SPEED,
-        Self::HAND_PITCH_DEG,
-        Self::TURN_ANGLE_DEG,
+    /// The key prefix of these settings in `shoal.set` and the studio's rules.
+    pub const PREFIX: &str = "physics.";
+
+    pub const FISH_COUNT: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        Range::new("fish_count", 1, PHYSICS_FISH_MAX),
+        field!(fish_count),
+        "Fish",
+        "How many muscle-driven fish swim in the tank. Each one is 23 masses \
+         joined by 91 springs",
+    )
+    .widget(Widget::LOG_SLIDER)
+    .rect("physics_fish");
+    pub const SHARKS: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        Range::new("sharks", 0, PHYSICS_SHARKS_MAX),
+        field!(sharks),
+        "Sharks",
+        "Sharks are built like the fish, only twice as long and four times heavier",
+    )
+    .widget(Widget::Count {
+        step: 1,
+        fewer: "One shark fewer",
+        more: "One more shark",
+        typed: false,
+    })
+    .rect("physics_sharks");
+    pub const CURRENT_M_PER_S: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::new("current_m_per_s", 0.0, CURRENT_MAX_M_PER_S),
+        field!(current_m_per_s),
+        "Current",
+        "How fast the water flows round the tank. A fish that stops \
+         swimming drifts with it; to stay put it must swim against it",
+    )
+    .unit(" m/s")
+    .widget(Widget::slider(2))
+    .rect("physics_current");
+    pub const HAND_SPEED: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::new("hand_speed", 0.0, 1.0),
+        field!(hand_speed),
+        "Swim",
+        "How hard the tail muscles beat: 0 rests, 1 is the fastest swimming",
+    )
+    .widget(Widget::slider(2));
+    pub const HAND_PITCH_DEG: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::or_else(
+            "hand_pitch_deg",
+            -HAND_PITCH_MAX_DEG,
+            HAND_PITCH_MAX_DEG,
+            0.0,
+        ),
+        field!(hand_pitch_deg),
+        "Fins",
+        "Tilt the side fins: up makes the fish climb, down makes it dive \
+         (only while it swims)",
+    )
+    .unit("°")
+    .widget(Widget::slider(0))
+    .rect("hand_pitch");
+    /// Typed in beside the *Turn* button that asks for it.
+    pub const TURN_ANGLE_DEG: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::or_else("turn_angle_deg", -TURN_MAX_DEG, TURN_MAX_DEG, 0.0),
+        field!(turn_angle_deg),
+        "Turn",
+        "The turn the button asks for: positive to the fish's left, \
+         negative to its right. Turns above 90° are made of smaller ones",
+    )
+    .unit("°")
+    .widget(Widget::Field {
+        drag_speed: 1.0,
+        help: None,
+    })
+    .rect("turn_angle");
+    /// Every numeric setting (`selected` depends on the counts), in the order
+    /// validation reports them.
+    pub const NUMBERS: [Number<Self>; 6] = [
+        Number::U32(Self::FISH_COUNT),
+        Number::U32(Self::SHARKS),
+        Number::F32(Self::CURRENT_M_PER_S),
+        Number::F32(Self::HAND_SPEED),
+        Number::F32(Self::HAND_PITCH_DEG),
+        Number::F32(Self::TURN_ANGLE_DEG),
     ];
 
     /// The first out-of-range value, its key under `prefix`.
     pub fn validate(&self, prefix: &str) -> Result<(), SettingError> {
-        Self::FISH_COUNT.check(prefix, self.fish_count)?;
-        Self::SHARKS.check(prefix, self.sharks)?;
-        Self::CURRENT_M_PER_S.check(prefix, self.current_m_per_s)?;
-        Self::HAND_SPEED.check(prefix, self.hand_speed)?;
-        Self::HAND_PITCH_DEG.check(prefix, self.hand_pitch_deg)?;
-        Self::TURN_ANGLE_DEG.check(prefix, self.turn_angle_deg)?;
+        check_all(&Self::NUMBERS, prefix, self)?;
         if let Some(selected) = self.selected
             && selected >= self.animal_count()
         {
@@ -124,12 +181,7 @@ impl PhysicsSettings {
 
     /// Brings every value into range.
     pub fn clamp(&mut self) {
-        self.fish_count = Self::FISH_COUNT.clamp(self.fish_count);
-        self.sharks = Self::SHARKS.clamp(self.sharks);
-        self.current_m_per_s = Self::CURRENT_M_PER_S.clamp(self.current_m_per_s);
-        self.hand_speed = Self::HAND_SPEED.clamp(self.hand_speed);
-        self.hand_pitch_deg = Self::HAND_PITCH_DEG.clamp(self.hand_pitch_deg);
-        self.turn_angle_deg = Self::TURN_ANGLE_DEG.clamp(self.turn_angle_deg);
+        clamp_all(&Self::NUMBERS, self);
         if self.selected.is_some_and(|s| s >= self.animal_count()) {
             self.selected = None;
         }
@@ -188,12 +240,10 @@ mod tests {
 
     #[test]
     fn every_range_refuses_a_value_just_outside_and_clamps_it_to_the_bound() {
-        crate::settings::range::check_tables(
+        crate::settings::number::check_table(
             &PhysicsSettings::default(),
             "physics.",
-            &PhysicsSettings::F32_RANGES,
-            &PhysicsSettings::U32_RANGES,
-            &[],
+            &PhysicsSettings::NUMBERS,
             |s| s.validate("physics."),
             PhysicsSettings::clamp,
         );

@@ -1,7 +1,7 @@
 //! One numeric setting's valid range, written once: [`Range::check`] refuses a value
 //! outside it (settings validation), [`Range::clamp`] brings a value into it (paths
-//! that cannot refuse), [`Range::bounds`] is the slider's. Each settings struct keeps
-//! one `Range` constant per numeric setting and lists them in its `RANGES` tables.
+//! that cannot refuse), [`Range::bounds`] is the slider's. Each numeric setting's
+//! entry in its settings struct's table holds its `Range` (`number.rs`).
 
 use std::fmt::Display;
 use std::ops::RangeInclusive;
@@ -120,59 +120,5 @@ impl<T: SettingValue> Range<T> {
         } else {
             value
         }
-    }
-}
-
-/// For every range in `f32s`, `u32s` and `u64s`: a value just outside each bound, written
-/// into `settings` by key through JSON, is refused by `validate` with an error naming
-/// `prefix` + key, and `clamp` brings it to the bound. Shared by each settings
-/// struct's tests.
-#[cfg(test)]
-pub(crate) fn check_tables<S>(
-    settings: &S,
-    prefix: &str,
-    f32s: &[Range<f32>],
-    u32s: &[Range<u32>],
-    u64s: &[Range<u64>],
-    validate: impl Fn(&S) -> Result<(), SettingError>,
-    clamp: impl Fn(&mut S),
-) where
-    S: serde::Serialize + serde::de::DeserializeOwned,
-{
-    use serde_json::{Value, json};
-    let mut cases: Vec<(&str, Value, Value)> = Vec::new();
-    for r in f32s {
-        let step = (r.max - r.min).abs().max(1.0) * 1e-3;
-        cases.push((r.key, json!(r.min - step), json!(r.min)));
-        cases.push((r.key, json!(r.max + step), json!(r.max)));
-    }
-    for r in u32s {
-        if r.min > 0 {
-            cases.push((r.key, json!(r.min - 1), json!(r.min)));
-        }
-        cases.push((r.key, json!(u64::from(r.max) + 1), json!(r.max)));
-    }
-    for r in u64s {
-        if r.min > 0 {
-            cases.push((r.key, json!(r.min - 1), json!(r.min)));
-        }
-        cases.push((r.key, json!(r.max + 1), json!(r.max)));
-    }
-    assert!(!cases.is_empty());
-    for (key, outside, bound) in cases {
-        let mut value = serde_json::to_value(settings).expect("settings serialise");
-        value[key] = outside.clone();
-        let mut s: S = serde_json::from_value(value).expect("a number the field takes");
-        let err = validate(&s).expect_err(&format!("{key} = {outside} is refused"));
-        assert_eq!(err.key, format!("{prefix}{key}"), "{err}");
-        assert!(err.reason.contains("out of range"), "{err}");
-        clamp(&mut s);
-        let clamped = serde_json::to_value(&s).expect("settings serialise")[key].clone();
-        assert_eq!(
-            clamped.as_f64(),
-            bound.as_f64(),
-            "{key} = {outside} clamps to the bound"
-        );
-        assert!(validate(&s).is_ok(), "{key}: clamp makes it valid");
     }
 }

@@ -5,6 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::settings::number::{Number, NumberSetting, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::FishKind;
@@ -127,27 +128,54 @@ impl ReefSettings {
         (self.demo, self.body, self.prey_count, self.food_count)
     }
 
-    pub const PREY_COUNT: Range<u32> = Range::new("prey_count", 0, REEF_PREY_MAX);
-    pub const FOOD_COUNT: Range<u32> = Range::new("food_count", 0, REEF_FOOD_MAX);
-    pub const VISIBILITY_M: Range<f32> =
-        Range::or_else("visibility_m", VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0);
-    pub const CURRENT_M_PER_S: Range<f32> =
-        Range::or_else("current_m_per_s", 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03);
-    /// Every numeric setting's range (the traits have their own table, `selected`
-    /// depends on the demo and the counts).
-    pub const U32_RANGES: [Range<u32>; 2] = [Self::PREY_COUNT, Self::FOOD_COUNT];
-    pub const F32_RANGES: [Range<f32>; 2] = [Self::VISIBILITY_M, Self::CURRENT_M_PER_S];
+    /// The key prefix of these settings in `shoal.set` and the studio's rules.
+    pub const PREFIX: &str = "reef.";
+
+    /// Unset, the demo's own number.
+    pub const PREY_COUNT: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        Range::new("prey_count", 0, REEF_PREY_MAX),
+        field!(prey_count, |r| r.demo.default_prey_count() as u32),
+        "Prey fish",
+        "How many small prey fish live in this reef (they school and flee the shark)",
+    )
+    .rect("reef_prey");
+    /// Unset, the demo's own number.
+    pub const FOOD_COUNT: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        Range::new("food_count", 0, REEF_FOOD_MAX),
+        field!(food_count, |r| r.demo.default_food_count() as u32),
+        "Plankton",
+        "How much plankton drifts in the water; eaten plankton is replaced",
+    )
+    .rect("reef_food");
+    pub const VISIBILITY_M: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::or_else("visibility_m", VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0),
+        field!(visibility_m),
+        "Visibility",
+        "How far a fish can see in this water, metres. Murky water: fish see \
+         less, find less food and notice the shark later",
+    )
+    .unit(" m")
+    .rect("reef_visibility");
+    pub const CURRENT_M_PER_S: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        Range::or_else("current_m_per_s", 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03),
+        field!(current_m_per_s),
+        "Current",
+        "How fast the water flows; it carries plankton and sways the seaweed",
+    )
+    .unit(" m/s")
+    .rect("reef_current");
+    /// Every numeric setting (the traits have their own table, `selected`
+    /// depends on the demo and the counts), in the order validation reports them.
+    pub const NUMBERS: [Number<Self>; 4] = [
+        Number::U32(Self::PREY_COUNT),
+        Number::U32(Self::FOOD_COUNT),
+        Number::F32(Self::VISIBILITY_M),
+        Number::F32(Self::CURRENT_M_PER_S),
+    ];
 
     /// The first out-of-range value, its key under `prefix`.
     pub fn validate(&self, prefix: &str) -> Result<(), SettingError> {
-        if let Some(n) = self.prey_count {
-            Self::PREY_COUNT.check(prefix, n)?;
-        }
-        if let Some(n) = self.food_count {
-            Self::FOOD_COUNT.check(prefix, n)?;
-        }
-        Self::VISIBILITY_M.check(prefix, self.visibility_m)?;
-        Self::CURRENT_M_PER_S.check(prefix, self.current_m_per_s)?;
+        check_all(&Self::NUMBERS, prefix, self)?;
         for kind in FishKind::ALL {
             if let Err((name, reason)) = self.traits.of(kind).validate() {
                 return Err(SettingError {
@@ -172,10 +200,7 @@ impl ReefSettings {
 
     /// Brings every value into range.
     pub fn clamp(&mut self) {
-        self.prey_count = self.prey_count.map(|n| Self::PREY_COUNT.clamp(n));
-        self.food_count = self.food_count.map(|n| Self::FOOD_COUNT.clamp(n));
-        self.visibility_m = Self::VISIBILITY_M.clamp(self.visibility_m);
-        self.current_m_per_s = Self::CURRENT_M_PER_S.clamp(self.current_m_per_s);
+        clamp_all(&Self::NUMBERS, self);
         for kind in FishKind::ALL {
             let traits = self.traits.of_mut(kind);
             *traits = traits.clamped();
@@ -269,12 +294,10 @@ mod tests {
 
     #[test]
     fn every_range_refuses_a_value_just_outside_and_clamps_it_to_the_bound() {
-        crate::settings::range::check_tables(
+        crate::settings::number::check_table(
             &ReefSettings::default(),
             "reef.",
-            &ReefSettings::F32_RANGES,
-            &ReefSettings::U32_RANGES,
-            &[],
+            &ReefSettings::NUMBERS,
             |s| s.validate("reef."),
             ReefSettings::clamp,
         );

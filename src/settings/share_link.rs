@@ -146,8 +146,8 @@ mod tests {
         let preset = Preset::ALL[rng.random_range(0..Preset::ALL.len())];
         let mut tank = TankSettings::with_preset(preset);
         if preset == Preset::Custom || rng.random_bool(0.3) {
-            for (_, w) in tank.weights_mut() {
-                *w = f32::from(rng.random_range(0u8..=100));
+            for w in TankSettings::WEIGHTS {
+                w.set(&mut tank, f32::from(rng.random_range(0u8..=100)));
             }
             tank.vision_distance_m = rng.random_range(0.5..=12.0);
             tank.vision_angle_deg = rng.random_range(0.0..=360.0);

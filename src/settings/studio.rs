@@ -26,6 +26,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use super::range::SettingError;
+use super::tank::TankSettings;
 use super::{Scene, Settings, Side};
 
 /// Longest question, in characters (default 1,000: a paragraph or two; the
@@ -39,14 +40,11 @@ pub const RULES_MAX: usize = 200;
 /// What is masked in place of a mystery value in `settings()`, `state()`.
 pub const MYSTERY: &str = "mystery";
 
-/// The five urge weights of a tank, whose mix a preset's name gives away.
-const WEIGHT_KEYS: [&str; 5] = [
-    "containment",
-    "alignment",
-    "cohesion",
-    "separation",
-    "avoidance",
-];
+/// The keys of the five urge weights of a tank, whose mix a preset's name
+/// gives away.
+fn weight_keys() -> impl Iterator<Item = &'static str> {
+    TankSettings::WEIGHTS.iter().map(|w| w.range.key)
+}
 
 /// What a student may do with one control.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -123,10 +121,8 @@ impl Studio {
             && (side == Side::Left.name() || side == Side::Right.name())
         {
             if name == "preset" {
-                rule.mystery |= WEIGHT_KEYS
-                    .iter()
-                    .any(|w| self.rule(&format!("{side}.{w}")).mystery);
-            } else if WEIGHT_KEYS.contains(&name) {
+                rule.mystery |= weight_keys().any(|w| self.rule(&format!("{side}.{w}")).mystery);
+            } else if weight_keys().any(|w| w == name) {
                 rule.mystery |= self.rule(&format!("{side}.preset")).mystery;
             }
         }
@@ -155,7 +151,7 @@ impl Studio {
         let mut keys: Vec<String> = self.rules.keys().cloned().collect();
         for side in Side::BOTH {
             if self.rule(&format!("{}.preset", side.name())).mystery {
-                keys.extend(WEIGHT_KEYS.iter().map(|w| format!("{}.{w}", side.name())));
+                keys.extend(weight_keys().map(|w| format!("{}.{w}", side.name())));
             }
         }
         keys.sort();

@@ -12,6 +12,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::settings::number::{Number, NumberSetting, Widget, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::boids::control_mode::{self, ControlMode};
 use crate::sim::boids::shark::MAX_SHARKS;
@@ -163,35 +164,13 @@ impl TankSettings {
 
     /// The five weights in [`control_mode::Force::ALL`] order.
     pub fn weights(&self) -> [f32; 5] {
-        [
-            self.containment,
-            self.alignment,
-            self.cohesion,
-            self.separation,
-            self.avoidance,
-        ]
+        Self::WEIGHTS.map(|w| w.value(self))
     }
 
-    fn set_weights(&mut self, w: [f32; 5]) {
-        [
-            self.containment,
-            self.alignment,
-            self.cohesion,
-            self.separation,
-            self.avoidance,
-        ] = w;
-    }
-
-    /// Mutable access to each weight with its range (which names it), for sliders.
-    pub fn weights_mut(&mut self) -> [(Range<f32>, &mut f32); 5] {
-        let [c, a, h, s, v] = Self::WEIGHTS;
-        [
-            (c, &mut self.containment),
-            (a, &mut self.alignment),
-            (h, &mut self.cohesion),
-            (s, &mut self.separation),
-            (v, &mut self.avoidance),
-        ]
+    fn set_weights(&mut self, weights: [f32; 5]) {
+        for (w, value) in Self::WEIGHTS.iter().zip(weights) {
+            w.set(self, value);
+        }
     }
 
     /// What the simulation runs with.
@@ -246,61 +225,182 @@ impl TankSettings {
         }
     }
 
-    /// The five weights in [`control_mode::Force::ALL`] order, 0 to [`WEIGHT_MAX`].
-    pub const WEIGHTS: [Range<f32>; 5] = [
-        Range::new("containment", 0.0, WEIGHT_MAX),
-        Range::new("alignment", 0.0, WEIGHT_MAX),
-        Range::new("cohesion", 0.0, WEIGHT_MAX),
-        Range::new("separation", 0.0, WEIGHT_MAX),
-        Range::new("avoidance", 0.0, WEIGHT_MAX),
+    /// The five urge weights in [`control_mode::Force::ALL`] order, 0 to
+    /// [`WEIGHT_MAX`]: the sliders a preset sets.
+    pub const WEIGHTS: [NumberSetting<Self, f32>; 5] = [
+        NumberSetting::<Self, _>::new(
+            Range::new("containment", 0.0, WEIGHT_MAX),
+            field!(containment),
+            "Containment",
+            "How strongly a fish stays in the pond: it turns back towards open water before its \
+             path comes near the glass, the sand or the surface.",
+        )
+        .widget(WHOLE)
+        .rect("weight_containment"),
+        NumberSetting::<Self, _>::new(
+            Range::new("alignment", 0.0, WEIGHT_MAX),
+            field!(alignment),
+            "Alignment",
+            "How much a fish copies the direction its neighbours are swimming \
+             (close neighbours count more: their heading is easier to see).",
+        )
+        .widget(WHOLE)
+        .rect("weight_alignment"),
+        NumberSetting::<Self, _>::new(
+            Range::new("cohesion", 0.0, WEIGHT_MAX),
+            field!(cohesion),
+            "Cohesion",
+            "How much a fish swims towards the middle of the neighbours it can see \
+             (and of the distant school it sees), easing off as it arrives.",
+        )
+        .widget(WHOLE)
+        .rect("weight_cohesion"),
+        NumberSetting::<Self, _>::new(
+            Range::new("separation", 0.0, WEIGHT_MAX),
+            field!(separation),
+            "Separation",
+            "How much a fish keeps its own space: it moves away from fish inside its personal \
+             space, harder the closer they are.",
+        )
+        .widget(WHOLE)
+        .rect("weight_separation"),
+        NumberSetting::<Self, _>::new(
+            Range::new("avoidance", 0.0, WEIGHT_MAX),
+            field!(avoidance),
+            "Avoidance",
+            "How strongly a fish swerves around obstacles: the glass, sand and surface, rocks, \
+             pillars, stingrays, and fish coming straight at it (three or more close together \
+             count as one obstacle).",
+        )
+        .widget(WHOLE)
+        .rect("weight_avoidance"),
     ];
-    /// Vision distance, metres: from under two body lengths to the tank's width.
-    pub const VISION_DISTANCE_M: Range<f32> = Range::new("vision_distance_m", 0.5, 12.0);
-    /// Vision angle, degrees (360: no blind spot).
-    pub const VISION_ANGLE_DEG: Range<f32> = Range::new("vision_angle_deg", 0.0, 360.0);
-    /// Maximum speed, m/s: from a crawl (a third of a body length per second) to a
-    /// sprint (about ten body lengths per second).
-    pub const MAX_SPEED_M_PER_S: Range<f32> = Range::new("max_speed_m_per_s", 0.1, 3.0);
-    /// Maximum steering force, m/s².
-    pub const MAX_FORCE_M_PER_S2: Range<f32> = Range::new("max_force_m_per_s2", 0.1, 10.0);
-    /// Personal space, metres: from a third of a body length (packed) to ten body
-    /// lengths (a loner that keeps everybody away).
-    pub const PERSONAL_SPACE_M: Range<f32> = Range::new("personal_space_m", 0.1, 3.0);
-    /// The urge to roam, on the weights' scale.
-    pub const WANDER: Range<f32> = Range::new("wander", 0.0, WEIGHT_MAX);
-    pub const FISH_COUNT: Range<u32> = Range::new("fish_count", 0, FISH_COUNT_MAX);
-    pub const SHARKS: Range<u32> = Range::new("sharks", 0, SHARKS_MAX);
-    pub const STINGRAYS: Range<u32> = Range::new("stingrays", 0, STINGRAYS_MAX);
-    /// Every numeric setting's range.
-    pub const F32_RANGES: [Range<f32>; 11] = [
-        Self::WEIGHTS[0],
-        Self::WEIGHTS[1],
-        Self::WEIGHTS[2],
-        Self::WEIGHTS[3],
-        Self::WEIGHTS[4],
-        Self::VISION_DISTANCE_M,
-        Self::VISION_ANGLE_DEG,
-        Self::MAX_SPEED_M_PER_S,
-        Self::MAX_FORCE_M_PER_S2,
-        Self::PERSONAL_SPACE_M,
-        Self::WANDER,
+
+    /// The senses, the body and the urge to roam: the same whatever the preset.
+    pub const SENSES: [NumberSetting<Self, f32>; 6] = [
+        // From under two body lengths to the tank's width.
+        NumberSetting::<Self, _>::new(
+            Range::new("vision_distance_m", 0.5, 12.0),
+            field!(vision_distance_m),
+            "Vision distance",
+            "How far a fish can see its neighbours, in metres.",
+        )
+        .unit(" m")
+        .widget(TENTHS),
+        // 360: no blind spot.
+        NumberSetting::<Self, _>::new(
+            Range::new("vision_angle_deg", 0.0, 360.0),
+            field!(vision_angle_deg),
+            "Vision angle",
+            "How wide a fish sees around itself. At 360° it sees behind too; \
+             at 300° there is a blind spot behind its tail.",
+        )
+        .unit("°")
+        .widget(TENTHS),
+        // From a crawl (a third of a body length per second) to a sprint (about
+        // ten body lengths per second).
+        NumberSetting::<Self, _>::new(
+            Range::new("max_speed_m_per_s", 0.1, 3.0),
+            field!(max_speed_m_per_s),
+            "Top speed",
+            "The fastest a fish can swim, in metres per second.",
+        )
+        .unit(" m/s")
+        .widget(TENTHS),
+        NumberSetting::<Self, _>::new(
+            Range::new("max_force_m_per_s2", 0.1, 10.0),
+            field!(max_force_m_per_s2),
+            "Turning power",
+            "How hard a fish can turn or speed up at once (the maximum force). \
+             Small values make slow, lazy turns.",
+        )
+        .unit(" m/s²")
+        .widget(TENTHS),
+        // From a third of a body length (packed) to ten body lengths (a loner
+        // that keeps everybody away).
+        NumberSetting::<Self, _>::new(
+            Range::new("personal_space_m", 0.1, 3.0),
+            field!(personal_space_m),
+            "Personal space",
+            "How close another fish may come before separation pushes this one away. \
+             A school settles at about one body length (0.3–0.5 m here).",
+        )
+        .unit(" m")
+        .widget(TENTHS),
+        // On the weights' scale.
+        NumberSetting::<Self, _>::new(
+            Range::new("wander", 0.0, WEIGHT_MAX),
+            field!(wander),
+            "Wander",
+            "How much a fish roams about on its own, 0 to 100 (on the urges' scale). \
+             The same for loners and schools: a school's alignment and cohesion \
+             overcome it, loners' do not.",
+        )
+        .widget(TENTHS),
     ];
-    pub const U32_RANGES: [Range<u32>; 3] = [Self::FISH_COUNT, Self::SHARKS, Self::STINGRAYS];
+
+    /// The animals in the tank: fish, sharks, stingrays.
+    pub const COUNTS: [NumberSetting<Self, u32>; 3] = [
+        NumberSetting::<Self, _>::new(
+            Range::new("fish_count", 0, FISH_COUNT_MAX),
+            field!(fish_count),
+            "Fish",
+            "How many fish (the prey) are in the tank.",
+        )
+        .widget(Widget::Count {
+            step: 10,
+            fewer: "Take 10 away",
+            more: "Add 10",
+            typed: true,
+        })
+        .rect("fish"),
+        NumberSetting::<Self, _>::new(
+            Range::new("sharks", 0, SHARKS_MAX),
+            field!(sharks),
+            "Sharks",
+            "Hunters. A shark chases a fish; fish that see it flee and bunch together.",
+        )
+        .widget(ONE_AT_A_TIME),
+        NumberSetting::<Self, _>::new(
+            Range::new("stingrays", 0, STINGRAYS_MAX),
+            field!(stingrays),
+            "Stingrays",
+            "Flat fish that glide over the sand. Other fish swim around them like rocks.",
+        )
+        .widget(ONE_AT_A_TIME),
+    ];
+
+    /// The aquarium scene's one control: the fish count of [`Self::COUNTS`] as a
+    /// slider, in the aquarium's words (not in [`Self::NUMBERS`]: the same
+    /// setting).
+    pub const AQUARIUM_FISH_COUNT: NumberSetting<Self, u32> = NumberSetting {
+        help: "How many fish are in the tank",
+        widget: Widget::LOG_SLIDER,
+        rect: "fish_count",
+        ..Self::COUNTS[0]
+    };
+
+    /// Every numeric setting, in the order validation reports them.
+    pub const NUMBERS: [Number<Self>; 14] = [
+        Number::F32(Self::WEIGHTS[0]),
+        Number::F32(Self::WEIGHTS[1]),
+        Number::F32(Self::WEIGHTS[2]),
+        Number::F32(Self::WEIGHTS[3]),
+        Number::F32(Self::WEIGHTS[4]),
+        Number::F32(Self::SENSES[0]),
+        Number::F32(Self::SENSES[1]),
+        Number::F32(Self::SENSES[2]),
+        Number::F32(Self::SENSES[3]),
+        Number::F32(Self::SENSES[4]),
+        Number::F32(Self::SENSES[5]),
+        Number::U32(Self::COUNTS[0]),
+        Number::U32(Self::COUNTS[1]),
+        Number::U32(Self::COUNTS[2]),
+    ];
 
     /// Checks every range; `prefix` names the tank in messages ("left.").
     pub fn validate(&self, prefix: &str, tank: &Tank) -> Result<(), SettingError> {
-        for (range, weight) in Self::WEIGHTS.iter().zip(self.weights()) {
-            range.check(prefix, weight)?;
-        }
-        Self::VISION_DISTANCE_M.check(prefix, self.vision_distance_m)?;
-        Self::VISION_ANGLE_DEG.check(prefix, self.vision_angle_deg)?;
-        Self::MAX_SPEED_M_PER_S.check(prefix, self.max_speed_m_per_s)?;
-        Self::MAX_FORCE_M_PER_S2.check(prefix, self.max_force_m_per_s2)?;
-        Self::PERSONAL_SPACE_M.check(prefix, self.personal_space_m)?;
-        Self::WANDER.check(prefix, self.wander)?;
-        Self::FISH_COUNT.check(prefix, self.fish_count)?;
-        Self::SHARKS.check(prefix, self.sharks)?;
-        Self::STINGRAYS.check(prefix, self.stingrays)?;
+        check_all(&Self::NUMBERS, prefix, self)?;
         if let Some(selected) = self.selected
             && selected >= self.fish_count
         {
@@ -336,18 +436,7 @@ impl TankSettings {
     /// Brings every value into its range (for paths that cannot refuse, such as the
     /// UI's own widgets). Invalid obstacles are dropped.
     pub fn clamp(&mut self, tank: &Tank) {
-        for (range, weight) in self.weights_mut() {
-            *weight = range.clamp(*weight);
-        }
-        self.vision_distance_m = Self::VISION_DISTANCE_M.clamp(self.vision_distance_m);
-        self.vision_angle_deg = Self::VISION_ANGLE_DEG.clamp(self.vision_angle_deg);
-        self.max_speed_m_per_s = Self::MAX_SPEED_M_PER_S.clamp(self.max_speed_m_per_s);
-        self.max_force_m_per_s2 = Self::MAX_FORCE_M_PER_S2.clamp(self.max_force_m_per_s2);
-        self.personal_space_m = Self::PERSONAL_SPACE_M.clamp(self.personal_space_m);
-        self.wander = Self::WANDER.clamp(self.wander);
-        self.fish_count = Self::FISH_COUNT.clamp(self.fish_count);
-        self.sharks = Self::SHARKS.clamp(self.sharks);
-        self.stingrays = Self::STINGRAYS.clamp(self.stingrays);
+        clamp_all(&Self::NUMBERS, self);
         // Fewer fish than the selected one's number: let it go.
         self.selected = self.selected.filter(|&i| i < self.fish_count);
         if let Some(obstacles) = &mut self.obstacles {
@@ -359,6 +448,20 @@ impl TankSettings {
 
 /// Most obstacles a tank may hold: plenty for a lesson, bounded for share links.
 pub const MAX_OBSTACLES: usize = 24;
+
+/// The urge weights' slider: whole numbers on the papers' 0–100 scale.
+const WHOLE: Widget = Widget::slider(0);
+
+/// The senses' (body's, wander's) slider: to a tenth.
+const TENTHS: Widget = Widget::slider(1);
+
+/// Sharks and stingrays come one at a time.
+const ONE_AT_A_TIME: Widget = Widget::Count {
+    step: 1,
+    fewer: "Take 1 away",
+    more: "Add 1",
+    typed: true,
+};
 
 #[cfg(test)]
 mod tests {
@@ -453,12 +556,10 @@ mod tests {
     #[test]
     fn every_range_refuses_a_value_just_outside_and_clamps_it_to_the_bound() {
         let tank = Tank::default();
-        crate::settings::range::check_tables(
+        crate::settings::number::check_table(
             &TankSettings::with_preset(Preset::Group),
             "left.",
-            &TankSettings::F32_RANGES,
-            &TankSettings::U32_RANGES,
-            &[],
+            &TankSettings::NUMBERS,
             |s| s.validate("left.", &tank),
             |s| s.clamp(&tank),
         );

@@ -10,8 +10,9 @@ use super::body_overlay;
 use super::boids_attention::{attention_section_ui, draw_attention, selected_attention};
 use super::metrics_panel::{METRICS_PANEL_HEIGHT, metrics_panel_ui, side_color};
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
+use super::setting_slider::setting_row;
 use super::show_bottom_panel;
-use super::studio_panel::{control, control_block, control_row, is_hidden, is_mystery};
+use super::studio_panel::{control, control_block, is_hidden, is_mystery};
 use super::tank_panel::{mode_label, tank_ui};
 use crate::lab::Lab;
 use crate::render::OrbitCamera;
@@ -46,27 +47,12 @@ impl ScenePanel for AquariumPanel {
             .num_columns(2)
             .spacing([8.0, 6.0])
             .show(ui, |ui| {
-                control_row(
+                setting_row(
                     ui,
                     rects,
-                    "left.fish_count",
-                    |ui| {
-                        ui.label("Fish")
-                            .on_hover_text("How many fish are in the tank");
-                    },
-                    |ui, rects| {
-                        let fish = ui
-                            .add(
-                                egui::Slider::new(
-                                    &mut settings.left.fish_count,
-                                    TankSettings::FISH_COUNT.bounds(),
-                                )
-                                .logarithmic(true)
-                                .smallest_positive(1.0),
-                            )
-                            .on_hover_text("How many fish are in the tank");
-                        rects.insert("fish_count", fish.rect);
-                    },
+                    &Side::Left.prefix(),
+                    &TankSettings::AQUARIUM_FISH_COUNT,
+                    &mut settings.left,
                 );
             });
     }

@@ -6,7 +6,8 @@ use eframe::egui;
 
 use super::WidgetRects;
 use super::scene_panel::PanelAction;
-use super::studio_panel::{control, control_row};
+use super::setting_slider::{setting_row, setting_row_with};
+use super::studio_panel::control;
 use crate::scenes::CurrentPanel;
 use crate::settings::{SEED_MAX, Scene, Settings};
 
@@ -102,54 +103,21 @@ pub fn control_panel_ui(
         .num_columns(2)
         .spacing([8.0, 6.0])
         .show(ui, |ui| {
-            let speed_help = "How fast time runs: 1× is real time, 2× is twice as fast";
-            control_row(
+            setting_row(ui, rects, "", &Settings::SPEED, settings);
+            setting_row_with(
                 ui,
                 rects,
-                "speed",
-                |ui| {
-                    ui.label("Speed").on_hover_text(speed_help);
-                },
-                |ui, rects| {
-                    let speed = ui
-                        .add(
-                            egui::Slider::new(&mut settings.speed, Settings::SPEED.bounds())
-                                .logarithmic(true)
-                                .suffix("×")
-                                .max_decimals(2),
-                        )
-                        .on_hover_text(speed_help);
-                    rects.insert("speed", speed.rect);
-                },
-            );
-
-            control_row(
-                ui,
-                rects,
-                "seed",
-                |ui| {
-                    ui.label("Seed").on_hover_text(
-                        "The number that decides where everything starts. \
-                         The same seed always gives the same run, so a class can share it",
+                "",
+                &Settings::SEED,
+                settings,
+                |ui, rects, settings| {
+                    let dice = ui.button("New").on_hover_text(
+                        "Pick a new random seed: a different tank and different fish",
                     );
-                },
-                |ui, rects| {
-                    ui.horizontal(|ui| {
-                        let seed = ui
-                            .add(
-                                egui::DragValue::new(&mut settings.seed)
-                                    .range(Settings::SEED.bounds()),
-                            )
-                            .on_hover_text("Type a number to start a new run from it");
-                        rects.insert("seed", seed.rect);
-                        let dice = ui.button("New").on_hover_text(
-                            "Pick a new random seed: a different tank and different fish",
-                        );
-                        rects.insert("new_seed", dice.rect);
-                        if dice.clicked() {
-                            settings.seed = next_seed(settings.seed);
-                        }
-                    });
+                    rects.insert("new_seed", dice.rect);
+                    if dice.clicked() {
+                        settings.seed = next_seed(settings.seed);
+                    }
                 },
             );
         });

@@ -11,6 +11,7 @@ use super::body_overlay::muscle_color;
 use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
 use super::files::{FileError, PendingFile, open_text_file, save_text_file};
 use super::scene_panel::{Notice, ScenePanel};
+use super::setting_slider::setting_row;
 use super::studio_panel::{control, control_row};
 use crate::lab::{Lab, LabError, Run};
 use crate::render::Framing;
@@ -72,27 +73,12 @@ fn learning_controls_ui(
                 },
             );
 
-            let help = "How many tries the fish gets for each drill. More tries, better \
-                        swimming (the paper's best shark had 6840). Changing it starts again";
-            control_row(
+            setting_row(
                 ui,
                 rects,
-                "learning.annealing_steps",
-                |ui| {
-                    ui.label("Tries per drill").on_hover_text(help);
-                },
-                |ui, rects| {
-                    let r = ui
-                        .add(
-                            egui::Slider::new(
-                                &mut learning.annealing_steps,
-                                LearningSettings::ANNEALING_STEPS.bounds(),
-                            )
-                            .logarithmic(true),
-                        )
-                        .on_hover_text(help);
-                    rects.insert("learning_steps", r.rect);
-                },
+                LearningSettings::PREFIX,
+                &LearningSettings::ANNEALING_STEPS,
+                learning,
             );
         });
     ui.horizontal(|ui| {

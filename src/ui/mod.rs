@@ -28,6 +28,7 @@ pub mod reef_panel;
 mod reef_skip;
 pub mod scene_panel;
 pub mod screen;
+pub mod setting_slider;
 mod status_line;
 pub mod studio_panel;
 mod tank_panel;

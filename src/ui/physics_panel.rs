@@ -10,7 +10,8 @@ use super::body_overlay::{self, muscle_color};
 use super::bottom_panel::time_plot;
 use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
-use super::studio_panel::{control, control_block, control_row, is_hidden};
+use super::setting_slider::{setting_row, setting_row_with};
+use super::studio_panel::{control, control_block, is_hidden};
 use crate::lab::{BODY_TRACE_SECS, Lab, Run};
 use crate::settings::Settings;
 use crate::settings::physics::PhysicsSettings;
@@ -32,86 +33,15 @@ fn physics_controls_ui(
         .num_columns(2)
         .spacing([8.0, 6.0])
         .show(ui, |ui| {
-            let help = "How many muscle-driven fish swim in the tank. Each one is 23 masses \
-                        joined by 91 springs";
-            control_row(
+            for count in [PhysicsSettings::FISH_COUNT, PhysicsSettings::SHARKS] {
+                setting_row(ui, rects, PhysicsSettings::PREFIX, &count, physics);
+            }
+            setting_row(
                 ui,
                 rects,
-                "physics.fish_count",
-                |ui| {
-                    ui.label("Fish").on_hover_text(help);
-                },
-                |ui, rects| {
-                    let fish = ui
-                        .add(
-                            egui::Slider::new(
-                                &mut physics.fish_count,
-                                PhysicsSettings::FISH_COUNT.bounds(),
-                            )
-                            .logarithmic(true),
-                        )
-                        .on_hover_text(help);
-                    rects.insert("physics_fish", fish.rect);
-                },
-            );
-
-            let help = "Sharks are built like the fish, only twice as long and four times heavier";
-            control_row(
-                ui,
-                rects,
-                "physics.sharks",
-                |ui| {
-                    ui.label("Sharks").on_hover_text(help);
-                },
-                |ui, rects| {
-                    ui.horizontal(|ui| {
-                        let minus = ui
-                            .add_enabled(
-                                physics.sharks > PhysicsSettings::SHARKS.min,
-                                egui::Button::new("−"),
-                            )
-                            .on_hover_text("One shark fewer");
-                        rects.insert("physics_sharks_minus", minus.rect);
-                        if minus.clicked() {
-                            physics.sharks -= 1;
-                        }
-                        ui.label(physics.sharks.to_string()).on_hover_text(help);
-                        let plus = ui
-                            .add_enabled(
-                                physics.sharks < PhysicsSettings::SHARKS.max,
-                                egui::Button::new("+"),
-                            )
-                            .on_hover_text("One more shark");
-                        rects.insert("physics_sharks_plus", plus.rect);
-                        if plus.clicked() {
-                            physics.sharks += 1;
-                        }
-                    });
-                },
-            );
-
-            let help = "How fast the water flows round the tank. A fish that stops \
-                        swimming drifts with it; to stay put it must swim against it";
-            control_row(
-                ui,
-                rects,
-                "physics.current_m_per_s",
-                |ui| {
-                    ui.label("Current").on_hover_text(help);
-                },
-                |ui, rects| {
-                    let current = ui
-                        .add(
-                            egui::Slider::new(
-                                &mut physics.current_m_per_s,
-                                PhysicsSettings::CURRENT_M_PER_S.bounds(),
-                            )
-                            .suffix(" m/s")
-                            .max_decimals(2),
-                        )
-                        .on_hover_text(help);
-                    rects.insert("physics_current", current.rect);
-                },
+                PhysicsSettings::PREFIX,
+                &PhysicsSettings::CURRENT_M_PER_S,
+                physics,
             );
         });
 
@@ -229,84 +159,27 @@ fn selected_fish_ui(
             .num_columns(2)
             .spacing([8.0, 6.0])
             .show(ui, |ui| {
-                let help = "How hard the tail muscles beat: 0 rests, 1 is the fastest swimming";
-                control_row(
+                for hand in [PhysicsSettings::HAND_SPEED, PhysicsSettings::HAND_PITCH_DEG] {
+                    setting_row(ui, rects, PhysicsSettings::PREFIX, &hand, physics);
+                }
+                setting_row_with(
                     ui,
                     rects,
-                    "physics.hand_speed",
-                    |ui| {
-                        ui.label("Swim").on_hover_text(help);
-                    },
-                    |ui, rects| {
-                        let speed = ui
-                            .add(
-                                egui::Slider::new(
-                                    &mut physics.hand_speed,
-                                    PhysicsSettings::HAND_SPEED.bounds(),
-                                )
-                                .max_decimals(2),
-                            )
-                            .on_hover_text(help);
-                        rects.insert("hand_speed", speed.rect);
-                    },
-                );
-
-                let help = "Tilt the side fins: up makes the fish climb, down makes it dive \
-                            (only while it swims)";
-                control_row(
-                    ui,
-                    rects,
-                    "physics.hand_pitch_deg",
-                    |ui| {
-                        ui.label("Fins").on_hover_text(help);
-                    },
-                    |ui, rects| {
-                        let pitch = ui
-                            .add(
-                                egui::Slider::new(
-                                    &mut physics.hand_pitch_deg,
-                                    PhysicsSettings::HAND_PITCH_DEG.bounds(),
-                                )
-                                .suffix("°")
-                                .max_decimals(0),
-                            )
-                            .on_hover_text(help);
-                        rects.insert("hand_pitch", pitch.rect);
-                    },
-                );
-
-                let help = "The turn the button asks for: positive to the fish's left, \
-                            negative to its right. Turns above 90° are made of smaller ones";
-                control_row(
-                    ui,
-                    rects,
-                    "physics.turn_angle_deg",
-                    |ui| {
-                        ui.label("Turn").on_hover_text(help);
-                    },
-                    |ui, rects| {
-                        ui.horizontal(|ui| {
-                            let angle = ui
-                                .add(
-                                    egui::DragValue::new(&mut physics.turn_angle_deg)
-                                        .range(PhysicsSettings::TURN_ANGLE_DEG.bounds())
-                                        .suffix("°")
-                                        .speed(1.0),
-                                )
-                                .on_hover_text(help);
-                            rects.insert("turn_angle", angle.rect);
-                            let left = physics.turn_angle_deg >= 0.0;
-                            let turn = ui
-                                .button(if left { "Turn left" } else { "Turn right" })
-                                .on_hover_text(
-                                    "Contract the muscles on one side quickly, then let them \
-                                     go slowly: the fish bends and swims round",
-                                );
-                            rects.insert("turn", turn.rect);
-                            if turn.clicked() {
-                                *turn_asked = Some(physics.turn_angle_deg);
-                            }
-                        });
+                    PhysicsSettings::PREFIX,
+                    &PhysicsSettings::TURN_ANGLE_DEG,
+                    physics,
+                    |ui, rects, physics| {
+                        let left = physics.turn_angle_deg >= 0.0;
+                        let turn = ui
+                            .button(if left { "Turn left" } else { "Turn right" })
+                            .on_hover_text(
+                                "Contract the muscles on one side quickly, then let them \
+                                 go slowly: the fish bends and swims round",
+                            );
+                        rects.insert("turn", turn.rect);
+                        if turn.clicked() {
+                            *turn_asked = Some(physics.turn_angle_deg);
+                        }
                     },
                 );
             });

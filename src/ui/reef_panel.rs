@@ -11,6 +11,7 @@ use super::reef_inspector::{FishEyeView, reef_inspector_height, reef_inspector_u
 use super::reef_minds::minds_ui;
 use super::reef_skip::SkipUi;
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
+use super::setting_slider::setting_row;
 use super::studio_panel::{control, control_row};
 use super::{body_overlay, reef_overlay};
 use crate::lab::{Lab, Run};
@@ -110,101 +111,26 @@ fn reef_sliders_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut Widge
                 },
             );
 
-            let demo_prey = reef.demo.default_prey_count() as u32;
-            let help =
-                "How many small prey fish live in this reef (they school and flee the shark)";
-            control_row(
+            if setting_row(
                 ui,
                 rects,
-                "reef.prey_count",
-                |ui| {
-                    ui.label("Prey fish").on_hover_text(help);
-                },
-                |ui, rects| {
-                    let mut prey = reef.prey_count.unwrap_or(demo_prey);
-                    let r = ui
-                        .add(egui::Slider::new(
-                            &mut prey,
-                            ReefSettings::PREY_COUNT.bounds(),
-                        ))
-                        .on_hover_text(help);
-                    rects.insert("reef_prey", r.rect);
-                    if r.changed() {
-                        reef.prey_count = Some(prey);
-                        reef.selected = None;
-                    }
-                },
-            );
-
-            let help = "How much plankton drifts in the water; eaten plankton is replaced";
-            control_row(
+                ReefSettings::PREFIX,
+                &ReefSettings::PREY_COUNT,
+                reef,
+            ) {
+                // The fish numbers change with the new reef.
+                reef.selected = None;
+            }
+            setting_row(
                 ui,
                 rects,
-                "reef.food_count",
-                |ui| {
-                    ui.label("Plankton").on_hover_text(help);
-                },
-                |ui, rects| {
-                    let mut food = reef
-                        .food_count
-                        .unwrap_or(reef.demo.default_food_count() as u32);
-                    let r = ui
-                        .add(egui::Slider::new(
-                            &mut food,
-                            ReefSettings::FOOD_COUNT.bounds(),
-                        ))
-                        .on_hover_text(help);
-                    rects.insert("reef_food", r.rect);
-                    if r.changed() {
-                        reef.food_count = Some(food);
-                    }
-                },
+                ReefSettings::PREFIX,
+                &ReefSettings::FOOD_COUNT,
+                reef,
             );
-
-            let help = "How far a fish can see in this water, metres. Murky water: fish see \
-                        less, find less food and notice the shark later";
-            control_row(
-                ui,
-                rects,
-                "reef.visibility_m",
-                |ui| {
-                    ui.label("Visibility").on_hover_text(help);
-                },
-                |ui, rects| {
-                    let r = ui
-                        .add(
-                            egui::Slider::new(
-                                &mut reef.visibility_m,
-                                ReefSettings::VISIBILITY_M.bounds(),
-                            )
-                            .suffix(" m"),
-                        )
-                        .on_hover_text(help);
-                    rects.insert("reef_visibility", r.rect);
-                },
-            );
-
-            let help = "How fast the water flows; it carries plankton and sways the seaweed";
-            control_row(
-                ui,
-                rects,
-                "reef.current_m_per_s",
-                |ui| {
-                    ui.label("Current").on_hover_text(help);
-                },
-                |ui, rects| {
-                    let r = ui
-                        .add(
-                            egui::Slider::new(
-                                &mut reef.current_m_per_s,
-                                ReefSettings::CURRENT_M_PER_S.bounds(),
-                            )
-                            .suffix(" m/s"),
-                        )
-                        .on_hover_text(help);
-                    rects.insert("reef_current", r.rect);
-                },
-            );
+            for water in [ReefSettings::VISIBILITY_M, ReefSettings::CURRENT_M_PER_S] {
+                setting_row(ui, rects, ReefSettings::PREFIX, &water, reef);
+            }
 
             let help = "Colour the water by how bright or how warm it is. Some fish like light \
                         or warmth and leave water they do not like";

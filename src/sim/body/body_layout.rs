@@ -46,7 +46,7 @@
 //! last ring to the front of it keeps every spring at its rest length: the
 //! folded fin is a second rest shape. Fish fell into it and stayed there, swimming
 //! at a fraction of their speed with the fin pointing forward along the body
-//! (found by `FishBody::tail_fin_folded`; `reef_world::tests::fold_census`, two
+//! (found by `FishBody::tail_fin_folded`; `shoal-census fold`, two
 //! minutes, seeds 1–2: half the fish of the default reef and of *Predator and
 //! school*, for 34–35 % and 40–47 % of the fish-time; 2–3 of 16 in *School meets
 //! obstacle*; a converged body fell into it too). Tying each tip to two nodes of

@@ -65,7 +65,7 @@ pub struct ReefParams {
     /// `behaviour::level_reach_m`) and the straight distance. 0 ranks by distance.
     /// Default 0.5 (chosen, issue 13): the muscle body turns at about 24°/s at
     /// most whatever its speed (its circle does not shrink when it slows down,
-    /// `body/physical_fish.rs`, `held_bend_radius_census`), so food a metre
+    /// `shoal-census held-bend-radius`), so food a metre
     /// behind it is further in time than food two metres ahead. *Feeding*, six
     /// ravenous fish, seeds 1–8, 60 s: 142 plankton with 0, 145 with 0.3, 165
     /// with 0.5, 174 with 1 (point masses 342); ranking by distance, the fish
@@ -349,7 +349,7 @@ pub struct MotorChoiceParams {
     /// fins trim the body (`BodyParams::fin_trim_gain`, up to
     /// `BodyParams::max_trim_rad` 0.7, the part beyond 0.5 rate-limited,
     /// `BodyParams::max_trim_rate_rad_per_s`): a fish at 0.7 of its top speed
-    /// climbs at 44° (`physical_fish::bend_census::climb_angle_census`;
+    /// climbs at 44° (`shoal-census climb-angle`;
     /// 32° at 0.5). *Feeding* on muscles, 60 / 132 s (`shoal-census feeding-agility`):
     /// seeds 1–8, 202 / 469 plankton (190 / 450 with 0.5, 165 / 375 with the
     /// old fin law, 0.5 rad and climb effort 4); seeds 1–16, 420 / 956 (point

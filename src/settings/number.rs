@@ -1,0 +1,356 @@
+//! Each numeric setting described once: its key, range, label, hover help, unit,
+//! the control that edits it and how to read and write it on its settings struct
+//! ([`NumberSetting`]). Each settings struct lists its settings in one table
+//! (`NUMBERS`, of [`Number`]s): validation and clamping iterate it, the panels
+//! draw each row from its entry (`ui/setting_slider.rs`), the studio takes its
+//! keys from it, and the tests walk it.
+
+use super::range::{Range, SettingError, SettingValue};
+
+/// Where a setting's number lives on its settings struct `S`.
+pub enum Access<S, T> {
+    /// A number that is always set.
+    Plain {
+        get: fn(&S) -> T,
+        get_mut: fn(&mut S) -> &mut T,
+    },
+    /// A number that may be left unset (`null`), in which case `otherwise`
+    /// gives the value that applies (the reef demo's own prey count).
+    Optional {
+        get: fn(&S) -> Option<T>,
+        get_mut: fn(&mut S) -> &mut Option<T>,
+        otherwise: fn(&S) -> T,
+    },
+}
+
+/// [`Access::Plain`] to the field `$field` of a settings struct, the type of which
+/// the table's entry gives: `field!(alignment)`.
+///
+/// `field!(prey_count, |r| …)` is [`Access::Optional`] to an `Option` field, the
+/// closure giving the value that applies while it is unset.
+macro_rules! field {
+    ($field:ident) => {
+        $crate::settings::number::Access::Plain {
+            get: |s| s.$field,
+            get_mut: |s| &mut s.$field,
+        }
+    };
+    ($field:ident, $otherwise:expr) => {
+        $crate::settings::number::Access::Optional {
+            get: |s| s.$field,
+            get_mut: |s| &mut s.$field,
+            otherwise: $otherwise,
+        }
+    };
+}
+pub(crate) use field;
+
+// By hand: derived, they would ask `S` to be `Copy` too.
+impl<S, T> Clone for Access<S, T> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<S, T> Copy for Access<S, T> {}
+
+/// The control a setting is edited with on the side panel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Widget {
+    /// A slider over the whole range: `logarithmic` for ranges over orders of
+    /// magnitude; at most `decimals` decimals shown (and kept), `None` for as
+    /// many as egui picks.
+    Slider {
+        logarithmic: bool,
+        decimals: Option<usize>,
+    },
+    /// A number to type in or drag (`drag_speed` per point of drag), with
+    /// hover help of its own when it says something else than the label's.
+    Field {
+        drag_speed: f64,
+        help: Option<&'static str>,
+    },
+    /// A count with − and + buttons that take away and add `step` (their hover
+    /// help `fewer` and `more`), around a field to type in (`typed`) or the
+    /// number as text.
+    Count {
+        step: u32,
+        fewer: &'static str,
+        more: &'static str,
+        typed: bool,
+    },
+}
+
+impl Widget {
+    /// A linear slider, egui picking the decimals.
+    pub const SLIDER: Self = Self::Slider {
+        logarithmic: false,
+        decimals: None,
+    };
+
+    /// A logarithmic slider, egui picking the decimals.
+    pub const LOG_SLIDER: Self = Self::Slider {
+        logarithmic: true,
+        decimals: None,
+    };
+
+    /// A linear slider showing (and keeping) `decimals` decimals at most.
+    pub const fn slider(decimals: usize) -> Self {
+        Self::Slider {
+            logarithmic: false,
+            decimals: Some(decimals),
+        }
+    }
+}
+
+/// One numeric setting of the settings struct `S`, holding a `T`: everything
+/// validation, clamping, the panel, the studio and a screen reader need.
+pub struct NumberSetting<S, T> {
+    /// Its key (`shoal.set` and share links, under the struct's prefix:
+    /// `alignment` is `left.alignment`), valid values and what a value that is
+    /// not a number clamps to.
+    pub range: Range<T>,
+    /// How to read and write it on `S`.
+    pub access: Access<S, T>,
+    /// Its name on the panel ("Vision distance").
+    pub label: &'static str,
+    /// The hover help of its label and control, as a 12-year-old reads it.
+    pub help: &'static str,
+    /// What the control shows after the number, with its space (" m/s", "°");
+    /// empty for a plain number.
+    pub unit: &'static str,
+    /// The control that edits it.
+    pub widget: Widget,
+    /// The name of its control's rectangle in `WidgetRects` (the browser tests
+    /// click it); a count's buttons add `_minus` and `_plus`, its field `_count`.
+    pub rect: &'static str,
+}
+
+impl<S, T: Copy> Clone for NumberSetting<S, T> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<S, T: Copy> Copy for NumberSetting<S, T> {}
+
+impl<S, T: Copy> NumberSetting<S, T> {
+    /// A setting edited on a linear slider ([`Widget::SLIDER`]), without a
+    /// unit, its rectangle named by its key; the methods below say otherwise.
+    pub const fn new(
+        range: Range<T>,
+        access: Access<S, T>,
+        label: &'static str,
+        help: &'static str,
+    ) -> Self {
+        Self {
+            range,
+            access,
+            label,
+            help,
+            unit: "",
+            widget: Widget::SLIDER,
+            rect: range.key,
+        }
+    }
+
+    /// Shown with `unit` after the number (" m/s").
+    pub const fn unit(self, unit: &'static str) -> Self {
+        Self { unit, ..self }
+    }
+
+    /// Edited with `widget`.
+    pub const fn widget(self, widget: Widget) -> Self {
+        Self { widget, ..self }
+    }
+
+    /// Its control's rectangle named `rect`.
+    pub const fn rect(self, rect: &'static str) -> Self {
+        Self { rect, ..self }
+    }
+}
+
+impl<S, T: SettingValue> NumberSetting<S, T> {
+    /// The key under `prefix` ("left." gives "left.alignment"), as the studio's
+    /// rules and error messages name the setting.
+    pub fn full_key(&self, prefix: &str) -> String {
+        format!("{prefix}{}", self.range.key)
+    }
+
+    /// The value `settings` holds, or, for an unset optional one, the value
+    /// that applies.
+    pub fn value(&self, settings: &S) -> T {
+        match self.access {
+            Access::Plain { get, .. } => get(settings),
+            Access::Optional { get, otherwise, .. } => {
+                get(settings).unwrap_or_else(|| otherwise(settings))
+            }
+        }
+    }
+
+    /// The value `settings` holds; `None` for an unset optional one.
+    pub fn given(&self, settings: &S) -> Option<T> {
+        match self.access {
+            Access::Plain { get, .. } => Some(get(settings)),
+            Access::Optional { get, .. } => get(settings),
+        }
+    }
+
+    /// Puts `value` in `settings` (an optional one is then set).
+    pub fn set(&self, settings: &mut S, value: T) {
+        match self.access {
+            Access::Plain { get_mut, .. } => *get_mut(settings) = value,
+            Access::Optional { get_mut, .. } => *get_mut(settings) = Some(value),
+        }
+    }
+
+    /// Refuses a value outside the range, naming the setting under `prefix`;
+    /// an unset optional one is fine.
+    pub fn check(&self, prefix: &str, settings: &S) -> Result<(), SettingError> {
+        match self.given(settings) {
+            Some(value) => self.range.check(prefix, value),
+            None => Ok(()),
+        }
+    }
+
+    /// Brings the value into the range; an unset optional one stays unset.
+    pub fn clamp(&self, settings: &mut S) {
+        match self.access {
+            Access::Plain { get_mut, .. } => {
+                let value = get_mut(settings);
+                *value = self.range.clamp(*value);
+            }
+            Access::Optional { get_mut, .. } => {
+                if let Some(value) = get_mut(settings) {
+                    *value = self.range.clamp(*value);
+                }
+            }
+        }
+    }
+}
+
+/// A row of a settings struct's table: a [`NumberSetting`] of any number type.
+pub enum Number<S> {
+    F32(NumberSetting<S, f32>),
+    U32(NumberSetting<S, u32>),
+    U64(NumberSetting<S, u64>),
+}
+
+impl<S> Clone for Number<S> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<S> Copy for Number<S> {}
+
+/// Runs `$body` with `$setting` bound to the [`NumberSetting`] inside `$number`,
+/// whatever its number type.
+macro_rules! with_setting {
+    ($number:expr, $setting:ident => $body:expr) => {
+        match $number {
+            Number::F32($setting) => $body,
+            Number::U32($setting) => $body,
+            Number::U64($setting) => $body,
+        }
+    };
+}
+
+impl<S> Number<S> {
+    /// The setting's key ("alignment").
+    pub fn key(&self) -> &'static str {
+        with_setting!(self, s => s.range.key)
+    }
+
+    /// See [`NumberSetting::check`].
+    pub fn check(&self, prefix: &str, settings: &S) -> Result<(), SettingError> {
+        with_setting!(self, s => s.check(prefix, settings))
+    }
+
+    /// See [`NumberSetting::clamp`].
+    pub fn clamp(&self, settings: &mut S) {
+        with_setting!(self, s => s.clamp(settings))
+    }
+}
+
+/// Refuses the first value of `table` outside its range, naming it under `prefix`.
+pub fn check_all<S>(table: &[Number<S>], prefix: &str, settings: &S) -> Result<(), SettingError> {
+    table.iter().try_for_each(|n| n.check(prefix, settings))
+}
+
+/// Brings every value of `table` into its range.
+pub fn clamp_all<S>(table: &[Number<S>], settings: &mut S) {
+    for n in table {
+        n.clamp(settings);
+    }
+}
+
+/// For every setting of `table`: a value just outside each bound, written into
+/// `settings` by key through JSON, is refused by `validate` with an error naming
+/// `prefix` + key, and `clamp` brings it to the bound. And the table holds every
+/// number `settings` serialise to, so a setting left out of it is not left
+/// unchecked. Shared by each settings struct's tests.
+#[cfg(test)]
+pub(crate) fn check_table<S>(
+    settings: &S,
+    prefix: &str,
+    table: &[Number<S>],
+    validate: impl Fn(&S) -> Result<(), SettingError>,
+    clamp: impl Fn(&mut S),
+) where
+    S: serde::Serialize + serde::de::DeserializeOwned,
+{
+    use serde_json::{Value, json};
+    let fields = serde_json::to_value(settings).expect("settings serialise");
+    for (key, value) in fields.as_object().expect("settings are an object") {
+        if value.is_number() {
+            assert!(
+                table.iter().any(|n| n.key() == key),
+                "{prefix}{key} is a number missing from the table"
+            );
+        }
+    }
+    let mut cases: Vec<(&str, Value, Value)> = Vec::new();
+    for n in table {
+        match n {
+            Number::F32(s) => {
+                let r = s.range;
+                let step = (r.max - r.min).abs().max(1.0) * 1e-3;
+                cases.push((r.key, json!(r.min - step), json!(r.min)));
+                cases.push((r.key, json!(r.max + step), json!(r.max)));
+            }
+            Number::U32(s) => {
+                let r = s.range;
+                if r.min > 0 {
+                    cases.push((r.key, json!(r.min - 1), json!(r.min)));
+                }
+                cases.push((r.key, json!(u64::from(r.max) + 1), json!(r.max)));
+            }
+            Number::U64(s) => {
+                let r = s.range;
+                if r.min > 0 {
+                    cases.push((r.key, json!(r.min - 1), json!(r.min)));
+                }
+                cases.push((r.key, json!(r.max + 1), json!(r.max)));
+            }
+        }
+    }
+    assert!(!cases.is_empty());
+    for (key, outside, bound) in cases {
+        assert!(fields.get(key).is_some(), "{prefix}{key} is a setting");
+        let mut value = fields.clone();
+        value[key] = outside.clone();
+        let mut s: S = serde_json::from_value(value).expect("a number the field takes");
+        let err = validate(&s).expect_err(&format!("{key} = {outside} is refused"));
+        assert_eq!(err.key, format!("{prefix}{key}"), "{err}");
+        assert!(err.reason.contains("out of range"), "{err}");
+        clamp(&mut s);
+        let clamped = serde_json::to_value(&s).expect("settings serialise")[key].clone();
+        assert_eq!(
+            clamped.as_f64(),
+            bound.as_f64(),
+            "{key} = {outside} clamps to the bound"
+        );
+        assert!(validate(&s).is_ok(), "{key}: clamp makes it valid");
+    }
+}

@@ -1,0 +1,297 @@
+//! One row of a settings grid drawn from the setting's table entry
+//! ([`NumberSetting`], `settings/number.rs`): its label with hover help, then
+//! its control (a slider, a number field or a count with − and +) through the
+//! studio's rules (hidden, locked, mystery, the teacher's toggles), its widget
+//! rectangle recorded under the entry's name for the browser tests.
+
+use eframe::egui;
+use egui::emath::Numeric;
+
+use super::WidgetRects;
+use super::studio_panel::control_row;
+use crate::settings::number::{NumberSetting, Widget};
+use crate::settings::range::SettingValue;
+
+/// Draws `setting`'s row of `settings` (the keys under `prefix`, as in
+/// "left."). Returns whether the control changed the value this frame.
+pub fn setting_row<S, T>(
+    ui: &mut egui::Ui,
+    rects: &mut WidgetRects,
+    prefix: &str,
+    setting: &NumberSetting<S, T>,
+    settings: &mut S,
+) -> bool
+where
+    T: SettingValue + Numeric,
+{
+    let no_more = None::<fn(&mut egui::Ui, &mut WidgetRects, &mut S)>;
+    row(ui, rects, prefix, setting, settings, no_more)
+}
+
+/// [`setting_row`] with `more` drawn after the control on the same line, under
+/// the same studio rule (the *New* seed button, the *Turn* button); `more` sees
+/// the settings with the value already changed.
+pub fn setting_row_with<S, T>(
+    ui: &mut egui::Ui,
+    rects: &mut WidgetRects,
+    prefix: &str,
+    setting: &NumberSetting<S, T>,
+    settings: &mut S,
+    more: impl FnOnce(&mut egui::Ui, &mut WidgetRects, &mut S),
+) -> bool
+where
+    T: SettingValue + Numeric,
+{
+    row(ui, rects, prefix, setting, settings, Some(more))
+}
+
+fn row<S, T>(
+    ui: &mut egui::Ui,
+    rects: &mut WidgetRects,
+    prefix: &str,
+    setting: &NumberSetting<S, T>,
+    settings: &mut S,
+    more: Option<impl FnOnce(&mut egui::Ui, &mut WidgetRects, &mut S)>,
+) -> bool
+where
+    T: SettingValue + Numeric,
+{
+    let edit = |ui: &mut egui::Ui, rects: &mut WidgetRects, settings: &mut S| {
+        let before = setting.value(settings);
+        let mut value = before;
+        control(ui, rects, setting, &mut value);
+        let changed = value != before;
+        if changed {
+            setting.set(settings, value);
+        }
+        changed
+    };
+    control_row(
+        ui,
+        rects,
+        &setting.full_key(prefix),
+        |ui| {
+            ui.label(setting.label).on_hover_text(setting.help);
+        },
+        |ui, rects| match more {
+            None => edit(ui, rects, settings),
+            Some(more) => {
+                ui.horizontal(|ui| {
+                    let changed = edit(ui, rects, settings);
+                    more(ui, rects, settings);
+                    changed
+                })
+                .inner
+            }
+        },
+    )
+    .unwrap_or(false)
+}
+
+/// The control of `setting`, editing `value`.
+fn control<S, T>(
+    ui: &mut egui::Ui,
+    rects: &mut WidgetRects,
+    setting: &NumberSetting<S, T>,
+    value: &mut T,
+) where
+    T: SettingValue + Numeric,
+{
+    let NumberSetting {
+        range,
+        help,
+        unit,
+        rect,
+        ..
+    } = *setting;
+    match setting.widget {
+        Widget::Slider {
+            logarithmic,
+            decimals,
+        } => {
+            let mut slider = egui::Slider::new(value, range.bounds())
+                .logarithmic(logarithmic)
+                .max_decimals_opt(decimals);
+            if logarithmic && T::INTEGRAL {
+                // A count from 0: its first step up is one.
+                slider = slider.smallest_positive(1.0);
+            }
+            if !unit.is_empty() {
+                slider = slider.suffix(unit);
+            }
+            let r = ui.add(slider).on_hover_text(help);
+            rects.insert(rect, r.rect);
+        }
+        Widget::Field {
+            drag_speed,
+            help: field_help,
+        } => {
+            let mut field = egui::DragValue::new(value)
+                .range(range.bounds())
+                .speed(drag_speed);
+            if !unit.is_empty() {
+                field = field.suffix(unit);
+            }
+            let r = ui.add(field).on_hover_text(field_help.unwrap_or(help));
+            rects.insert(rect, r.rect);
+        }
+        Widget::Count {
+            step,
+            fewer,
+            more,
+            typed,
+        } => {
+            let step = f64::from(step);
+            ui.horizontal(|ui| {
+                let minus = ui
+                    .add_enabled(*value > range.min, egui::Button::new(" − "))
+                    .on_hover_text(fewer);
+                rects.insert(&format!("{rect}_minus"), minus.rect);
+                if minus.clicked() {
+                    // A whole number below zero comes back as zero.
+                    *value = range.clamp(T::from_f64(value.to_f64() - step));
+                }
+                if typed {
+                    let field = ui
+                        .add(
+                            egui::DragValue::new(value)
+                                .range(range.bounds())
+                                .speed(step.max(1.0) * 0.2),
+                        )
+                        .on_hover_text(help);
+                    rects.insert(&format!("{rect}_count"), field.rect);
+                } else {
+                    ui.label(value.to_string()).on_hover_text(help);
+                }
+                let plus = ui
+                    .add_enabled(*value < range.max, egui::Button::new(" + "))
+                    .on_hover_text(more);
+                rects.insert(&format!("{rect}_plus"), plus.rect);
+                if plus.clicked() {
+                    *value = range.clamp(T::from_f64(value.to_f64() + step));
+                }
+            });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::settings::learning::LearningSettings;
+    use crate::settings::number::Number;
+    use crate::settings::physics::PhysicsSettings;
+    use crate::settings::reef::ReefSettings;
+    use crate::settings::studio::{ControlRule, Studio};
+    use crate::settings::tank::TankSettings;
+    use crate::settings::{Settings, Side};
+    use crate::ui::studio_panel::draw_controls_for_test;
+
+    /// Draws every row of `table` of `settings` under `studio` and returns the
+    /// widgets drawn.
+    fn draw_table<S>(
+        studio: &Studio,
+        prefix: &str,
+        table: &[Number<S>],
+        settings: &mut S,
+    ) -> WidgetRects {
+        draw_controls_for_test(studio, false, |ui, rects| {
+            egui::Grid::new("table").num_columns(2).show(ui, |ui| {
+                for number in table {
+                    match number {
+                        Number::F32(s) => setting_row(ui, rects, prefix, s, settings),
+                        Number::U32(s) => setting_row(ui, rects, prefix, s, settings),
+                        Number::U64(s) => setting_row(ui, rects, prefix, s, settings),
+                    };
+                }
+            });
+        })
+        .0
+    }
+
+    /// The names of the rectangles a row records.
+    fn rect_names<S>(number: &Number<S>) -> Vec<String> {
+        let (widget, rect) = match number {
+            Number::F32(s) => (s.widget, s.rect),
+            Number::U32(s) => (s.widget, s.rect),
+            Number::U64(s) => (s.widget, s.rect),
+        };
+        match widget {
+            Widget::Count { typed, .. } => {
+                let mut names = vec![format!("{rect}_minus"), format!("{rect}_plus")];
+                if typed {
+                    names.push(format!("{rect}_count"));
+                }
+                names
+            }
+            Widget::Slider { .. } | Widget::Field { .. } => vec![rect.to_owned()],
+        }
+    }
+
+    /// Every row of `table` draws its named widgets, and none of them once the
+    /// studio hides every setting from a student.
+    fn check<S: Clone>(prefix: &str, table: &[Number<S>], settings: &S) {
+        let drawn = draw_table(&Studio::default(), prefix, table, &mut settings.clone());
+        for number in table {
+            for name in rect_names(number) {
+                assert!(
+                    drawn.get(&name).is_some(),
+                    "{prefix}{}: {name}",
+                    number.key()
+                );
+            }
+        }
+        let mut hidden = Studio {
+            student_view: true,
+            ..Studio::default()
+        };
+        for number in table {
+            let rule = ControlRule {
+                hidden: true,
+                ..ControlRule::default()
+            };
+            hidden.set_rule(&format!("{prefix}{}", number.key()), rule);
+        }
+        let drawn = draw_table(&hidden, prefix, table, &mut settings.clone());
+        assert_eq!(drawn.iter().count(), 0, "{prefix}: nothing drawn");
+    }
+
+    #[test]
+    fn every_setting_of_every_table_draws_its_named_widgets_through_the_studio() {
+        let settings = Settings::default();
+        check("", &Settings::NUMBERS, &settings);
+        check(
+            &Side::Right.prefix(),
+            &TankSettings::NUMBERS,
+            &settings.right,
+        );
+        check(
+            PhysicsSettings::PREFIX,
+            &PhysicsSettings::NUMBERS,
+            &settings.physics,
+        );
+        check(ReefSettings::PREFIX, &ReefSettings::NUMBERS, &settings.reef);
+        check(
+            LearningSettings::PREFIX,
+            &LearningSettings::NUMBERS,
+            &settings.learning,
+        );
+    }
+
+    #[test]
+    fn an_unset_count_shows_the_demo_s_own_and_is_set_only_when_moved() {
+        let mut reef = ReefSettings::default();
+        let drawn = draw_table(
+            &Studio::default(),
+            "reef.",
+            &ReefSettings::NUMBERS,
+            &mut reef,
+        );
+        assert!(drawn.get("reef_prey").is_some());
+        assert_eq!(reef.prey_count, None, "drawing leaves it unset");
+        assert_eq!(
+            ReefSettings::PREY_COUNT.value(&reef),
+            reef.demo.default_prey_count() as u32
+        );
+    }
+}
