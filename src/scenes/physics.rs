@@ -54,7 +54,7 @@ impl SceneClass for PhysicsTank {
         _learning: &mut Option<LearningLab>,
     ) -> SceneWorld {
         let physics = &settings.physics;
-        SceneWorld::Physics(PhysicsWorld::new(PhysicsConfig {
+        SceneWorld::Physics(Box::new(PhysicsWorld::new(PhysicsConfig {
             seed: settings.seed,
             fish_count: physics.fish_count as usize,
             sharks: physics.sharks as usize,
@@ -62,7 +62,7 @@ impl SceneClass for PhysicsTank {
             current_m_per_s: physics.current_m_per_s,
             // The seed's rocks, as the schooling lab's tank has them.
             obstacles: World::seeded_obstacles(settings.seed),
-        }))
+        })))
     }
 
     /// Counts, behaviour, current and the selected fish's hand command.

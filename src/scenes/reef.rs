@@ -77,7 +77,9 @@ impl SceneClass for Reef {
         _side: Side,
         _learning: &mut Option<LearningLab>,
     ) -> SceneWorld {
-        SceneWorld::Reef(ReefWorld::new(settings.reef.config(settings.seed)))
+        SceneWorld::Reef(Box::new(ReefWorld::new(
+            settings.reef.config(settings.seed),
+        )))
     }
 
     /// The water (visibility, current) and the minds' traits.

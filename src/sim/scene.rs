@@ -112,9 +112,9 @@ pub enum SceneWorld {
     /// schooling lab (the SIMBA boid layer on).
     Boids(Box<World>),
     /// Muscle-driven fish steered by the boid layer (Tu & Terzopoulos §3).
-    Physics(PhysicsWorld),
+    Physics(Box<PhysicsWorld>),
     /// Fish with minds, on muscle or point-mass bodies (Tu & Terzopoulos §5–7).
-    Reef(ReefWorld),
+    Reef(Box<ReefWorld>),
     /// The learning centre (Tu & Terzopoulos §4): training, the demo fish and the
     /// race, in open water.
     Learning(Box<LearningLab>),
@@ -543,7 +543,7 @@ impl SceneWorld {
     /// The physics fish tank, in its scene.
     pub fn physics(&self) -> Option<&PhysicsWorld> {
         match self {
-            Self::Physics(w) => Some(w),
+            Self::Physics(w) => Some(w.as_ref()),
             _ => None,
         }
     }
@@ -551,7 +551,7 @@ impl SceneWorld {
     /// The reef, in its scene.
     pub fn reef(&self) -> Option<&ReefWorld> {
         match self {
-            Self::Reef(w) => Some(w),
+            Self::Reef(w) => Some(w.as_ref()),
             _ => None,
         }
     }
