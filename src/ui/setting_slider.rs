@@ -109,9 +109,12 @@ fn control<S, T>(
             logarithmic,
             decimals,
         } => {
-            let mut slider = egui::Slider::new(value, range.bounds())
-                .logarithmic(logarithmic)
-                .max_decimals_opt(decimals);
+            let mut slider = egui::Slider::new(value, range.bounds()).logarithmic(logarithmic);
+            // A whole number keeps egui's whole-number display ("10", not
+            // "10.0"): only a decimal setting says how many decimals it shows.
+            if let Some(decimals) = decimals {
+                slider = slider.max_decimals(decimals);
+            }
             if logarithmic && T::INTEGRAL {
                 // A count from 0: its first step up is one.
                 slider = slider.smallest_positive(1.0);
