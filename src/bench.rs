@@ -12,12 +12,12 @@ use crate::settings::tank::{Preset, TankSettings};
 use crate::settings::{Scene, Settings};
 
 /// Scenes and fish counts the benchmark visits, in order: each scene's
-/// [`crate::scenes::SceneClass::bench_counts`].
+/// [`crate::scenes::SceneFacts::bench_counts`].
 pub fn phases() -> Vec<(Scene, u32)> {
     Scene::ALL
         .into_iter()
         .flat_map(|scene| {
-            let counts = scene.class().bench_counts();
+            let counts = scene.class().facts().bench_counts;
             counts.iter().map(move |&n| (scene, n))
         })
         .collect()

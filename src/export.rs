@@ -88,7 +88,7 @@ fn header(settings: &Settings, run: &Run) -> String {
     let _ = writeln!(
         out,
         "# Shoal data: {} ({})",
-        scene.class().label(),
+        scene.class().facts().label,
         scene.name()
     );
     let _ = writeln!(
@@ -192,7 +192,12 @@ mod tests {
         let text = &export.text;
         assert!(text.starts_with("# Shoal data: "), "{text}");
         let scene = lab.settings().scene;
-        assert!(text.lines().next().unwrap().contains(scene.class().label()));
+        assert!(
+            text.lines()
+                .next()
+                .unwrap()
+                .contains(scene.class().facts().label)
+        );
         let t = format!("# simulated time: {:.3} s", lab.runs()[0].time_secs());
         assert!(text.contains(&t), "{t} in {text}");
         assert!(text.contains(&format!("# seed: {}\n", lab.settings().seed)));

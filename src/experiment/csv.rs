@@ -89,7 +89,7 @@ fn header_lines(plan: &Plan) -> String {
         plan.warmup_steps,
         plan.measure_steps,
         plan.dt_secs,
-        scene.class().label(),
+        scene.class().facts().label,
         scene.name()
     );
     let _ = writeln!(
@@ -112,7 +112,7 @@ fn one_line(text: &str) -> String {
 /// …); not the seed (its own column) nor the factors (theirs).
 fn setting_columns(plan: &Plan) -> Vec<String> {
     let value = settings_value(&plan.base);
-    let section = plan.base.scene.class().settings_section();
+    let section = plan.base.scene.class().facts().settings_section;
     let mut keys = vec!["scene".to_owned()];
     if let Some(inner) = value.get(section) {
         flatten_keys(section, inner, &mut keys);

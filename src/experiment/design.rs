@@ -211,10 +211,10 @@ impl Design {
         }
         let seeds = self.seeds()?;
         let measures = self.measures(scene)?;
-        let dt_secs = scene.class().step_secs();
+        let dt_secs = scene.class().facts().clock.step_secs;
         let warmup_steps = steps_of("warmup_secs", self.warmup_secs, dt_secs, true)?;
         let measure_steps = steps_of("measure_secs", self.measure_secs, dt_secs, false)?;
-        let sample_every_steps = scene.class().sample_every_steps();
+        let sample_every_steps = scene.class().facts().clock.sample_every_steps;
         let first_sample = (warmup_steps / sample_every_steps + 1) * sample_every_steps;
         if first_sample > warmup_steps + measure_steps {
             return Err(DesignError::new(
@@ -372,7 +372,7 @@ impl Design {
                     format!(
                         "'{}' is not measured in the {} ({}); there: {}",
                         measure.name(),
-                        scene.class().label(),
+                        scene.class().facts().label,
                         scene.name(),
                         if known.is_empty() {
                             "nothing".to_owned()
@@ -446,7 +446,7 @@ pub fn patch_for(key: &str, value: Value) -> Value {
 
 /// Why a factor on `key` would change nothing in `scene`, if it would not.
 fn inert_reason(key: &str, scene: Scene) -> Option<String> {
-    let section = scene.class().settings_section();
+    let section = scene.class().facts().settings_section;
     match key {
         "seed" => return Some("seeds are the replicates: set them in replicates".into()),
         "speed" | "paused" | "show_vision" | "compare" => {
@@ -464,7 +464,7 @@ fn inert_reason(key: &str, scene: Scene) -> Option<String> {
     (!scene.class().acts(key)).then(|| {
         format!(
             "'{key}' does not act in the {} ({}); its settings there are under '{section}.'",
-            scene.class().label(),
+            scene.class().facts().label,
             scene.name()
         )
     })
@@ -735,7 +735,7 @@ impl Plan {
             steps_per_run,
             total_steps: steps_per_run * runs.len() as u64,
             animal_steps,
-            secs_one_core: animal_steps * self.base.scene.class().secs_per_animal_step(),
+            secs_one_core: animal_steps * self.base.scene.class().facts().secs_per_animal_step,
         }
     }
 }

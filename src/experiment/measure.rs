@@ -93,9 +93,9 @@ impl Measure {
         )
     }
 
-    /// Does `scene` measure it ([`crate::scenes::SceneClass::measures`])?
+    /// Does `scene` measure it ([`crate::scenes::SceneFacts::measures`])?
     pub fn available_in(self, scene: Scene) -> bool {
-        scene.class().measures().contains(&self)
+        scene.class().facts().measures.contains(&self)
     }
 }
 

@@ -66,7 +66,7 @@ fn reef_design() -> Value {
 /// The distance swum, summed step by step, is about the mean of the speed
 /// samples times the window (the samples are 0.275 s apart, so not exactly).
 fn assert_distance_follows_speed(plan: &Plan, run: &RunResult) {
-    let window_secs = plan.measure_steps as f64 * plan.base.scene.class().step_secs();
+    let window_secs = plan.measure_steps as f64 * plan.base.scene.class().facts().clock.step_secs;
     let distance = run.last(column(plan, Measure::DistanceSwum));
     let from_speed = run.mean(column(plan, Measure::MeanSpeed)) * window_secs;
     assert!(
@@ -190,7 +190,7 @@ fn the_physics_tank_and_the_reef_offer_their_own_settings_as_factors() {
                 "{scene:?} offers {key}: {keys:?}"
             );
         }
-        let prefix = format!("{}.", scene.class().settings_section());
+        let prefix = format!("{}.", scene.class().facts().settings_section);
         assert!(keys.iter().all(|k| k.starts_with(&prefix)), "{keys:?}");
     }
 }

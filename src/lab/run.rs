@@ -44,7 +44,7 @@ pub struct Run {
     traced: Option<u32>,
     pub(super) history: MetricsHistory,
     /// Steps between two metrics samples (the scene's
-    /// [`crate::scenes::SceneClass::sample_every_steps`]).
+    /// [`crate::scenes::SceneFacts::clock`]).
     sample_every_steps: u64,
     /// The scene's counts at each metrics sample over the last
     /// [`crate::metrics_history::HISTORY_SECS`] (the reef; see
@@ -77,7 +77,7 @@ impl Run {
             history: MetricsHistory::default(),
             census: VecDeque::new(),
             generation,
-            sample_every_steps: settings.scene.class().sample_every_steps(),
+            sample_every_steps: settings.scene.class().facts().clock.sample_every_steps,
             obstacles_from_settings: settings
                 .scene
                 .class()

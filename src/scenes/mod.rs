@@ -49,38 +49,11 @@ pub trait SceneClass: Sync {
     /// benchmark counts, measures.
     fn facts(&self) -> &'static SceneFacts;
 
-    /// The name on the scene picker ("Schooling lab").
-    fn label(&self) -> &'static str {
-        self.facts().label
-    }
-
-    /// A sentence a student understands, under the picker.
-    fn description(&self) -> &'static str {
-        self.facts().description
-    }
-
-    /// The words of *About this scene*.
-    fn about(&self) -> &'static About {
-        self.facts().about
-    }
-
-    /// The part of the settings that acts in this scene: its keys start with
-    /// this and a dot.
-    fn settings_section(&self) -> &'static str {
-        self.facts().settings_section
-    }
-
     /// Does the setting at the dotted `key` change what happens in a run of
     /// this scene? By default every key of its section does.
     fn acts(&self, key: &str) -> bool {
-        key.strip_prefix(self.settings_section())
+        key.strip_prefix(self.facts().settings_section)
             .is_some_and(|rest| rest.starts_with('.'))
-    }
-
-    /// The settings that give away how many fish there are (see
-    /// [`SceneFacts::count_keys`]).
-    fn count_keys(&self) -> &'static [&'static str] {
-        self.facts().count_keys
     }
 
     /// The animal selected in the tank of `side`, if the scene lets one pick.
@@ -100,36 +73,10 @@ pub trait SceneClass: Sync {
         false
     }
 
-    /// Length of one simulation step, seconds.
-    fn step_secs(&self) -> f64 {
-        self.facts().clock.step_secs
-    }
-
-    /// Steps between two metrics samples.
-    fn sample_every_steps(&self) -> u64 {
-        self.facts().clock.sample_every_steps
-    }
-
-    /// Native seconds of one animal-step on one core (see
-    /// [`SceneFacts::secs_per_animal_step`]).
-    fn secs_per_animal_step(&self) -> f64 {
-        self.facts().secs_per_animal_step
-    }
-
-    /// The animal counts the benchmark times this scene at.
-    fn bench_counts(&self) -> &'static [u32] {
-        self.facts().bench_counts
-    }
-
     /// Puts `count` animals in the scene's tank: `count` fish and no
     /// predators in the boid and physics tanks; the reef demo's own predators
     /// and pacifists with prey making up the rest.
     fn set_animal_count(&self, _settings: &mut Settings, _count: u32) {}
-
-    /// What an experiment can measure here.
-    fn measures(&self) -> &'static [Measure] {
-        self.facts().measures
-    }
 
     /// The world of tank `side` for `settings`; the learning lab takes
     /// `learning` (kept while another scene was shown) if it fits.

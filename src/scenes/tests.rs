@@ -103,31 +103,36 @@ fn every_class_is_its_own_scene_and_agrees_with_the_world_it_builds() {
             ..Settings::default()
         });
         let world = lab.scene();
-        assert_eq!(world.dt_secs(), class.step_secs(), "{scene:?}");
+        assert_eq!(world.dt_secs(), class.facts().clock.step_secs, "{scene:?}");
         assert_eq!(
             lab.runs()[0].sample_every_steps(),
-            class.sample_every_steps()
+            class.facts().clock.sample_every_steps
         );
         // A quarter of a second or so between samples in every scene.
-        let every_secs = class.sample_every_steps() as f64 * class.step_secs();
+        let every_secs =
+            class.facts().clock.sample_every_steps as f64 * class.facts().clock.step_secs;
         assert!((0.2..=0.3).contains(&every_secs), "{scene:?}: {every_secs}");
         // The measures of a school where the world has one, none where not.
         let has_school = world.metrics().is_some();
-        assert_eq!(has_school, !class.measures().is_empty(), "{scene:?}");
+        assert_eq!(has_school, !class.facts().measures.is_empty(), "{scene:?}");
         assert_eq!(
             has_school,
             world.school_mean_speed_m_per_s().is_some(),
             "{scene:?}"
         );
         if has_school {
-            assert!(SCHOOL_MEASURES.iter().all(|m| class.measures().contains(m)));
+            assert!(
+                SCHOOL_MEASURES
+                    .iter()
+                    .all(|m| class.facts().measures.contains(m))
+            );
         }
-        assert!(class.secs_per_animal_step() > 0.0);
+        assert!(class.facts().secs_per_animal_step > 0.0);
         // The counts a mystery hides are settings of the scene's own section
         // (or the compared right tank's).
-        let section = format!("{}.", class.settings_section());
+        let section = format!("{}.", class.facts().settings_section);
         let settings_json = crate::experiment::design::settings_value(&Settings::default());
-        for key in class.count_keys() {
+        for key in class.facts().count_keys {
             assert!(
                 key.starts_with(&section) || key.starts_with("right."),
                 "{scene:?}: {key}"
@@ -138,8 +143,8 @@ fn every_class_is_its_own_scene_and_agrees_with_the_world_it_builds() {
             );
         }
         assert!(!class.acts("seedling.fish_count"));
-        assert!(!class.label().is_empty() && !class.description().is_empty());
-        assert!(!class.about().what.is_empty());
+        assert!(!class.facts().label.is_empty() && !class.facts().description.is_empty());
+        assert!(!class.facts().about.what.is_empty());
     }
 }
 

@@ -296,7 +296,8 @@ impl Studio {
     pub fn count_is_mystery_for_student(&self, scene: Scene) -> bool {
         scene
             .class()
-            .count_keys()
+            .facts()
+            .count_keys
             .iter()
             .any(|key| self.for_student(key).mystery)
     }

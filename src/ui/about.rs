@@ -38,8 +38,8 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
     }
     let screen = ctx.content_rect();
     let width = (screen.width() - 24.0).clamp(200.0, 560.0);
-    let page = scene.class().about();
-    let shown = egui::Window::new(format!("About: {}", scene.class().label()))
+    let page = scene.class().facts().about;
+    let shown = egui::Window::new(format!("About: {}", scene.class().facts().label))
         .id(egui::Id::unique(("about_window", scene.name())))
         .open(&mut open)
         .collapsible(false)
@@ -114,7 +114,7 @@ mod tests {
     #[test]
     fn every_scene_has_a_whole_page() {
         for scene in Scene::ALL {
-            let page = scene.class().about();
+            let page = scene.class().facts().about;
             assert!(page.what.len() > 80 && page.how.len() > 150, "{scene:?}");
             assert!(
                 page.notice.len() >= 2 && page.try_this.len() >= 2,

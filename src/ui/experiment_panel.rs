@@ -160,7 +160,7 @@ impl DesignForm {
 
     /// The design: the scene and its own settings as they are now, then the form.
     pub fn design(&self, base: &Settings) -> Design {
-        let section = base.scene.class().settings_section();
+        let section = base.scene.class().facts().settings_section;
         let all = settings_value(base);
         let mut settings = serde_json::Map::new();
         settings.insert("scene".into(), Value::from(base.scene.name()));
@@ -787,7 +787,7 @@ fn sizing_ui(
     sizing: &Sizing,
     rects: &mut WidgetRects,
 ) {
-    let dt = settings.scene.class().step_secs();
+    let dt = settings.scene.class().facts().clock.step_secs;
     let levels = sizing.runs / form.seeds.max(1) as usize;
     let grid = egui::Grid::new("experiment_sizing")
         .num_columns(2)
