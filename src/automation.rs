@@ -274,6 +274,10 @@ pub struct StateReport {
     /// could not be opened).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub notice: Option<String>,
+    /// The last words the screen reader's live region said about the tank
+    /// (app only; see `crate::a11y::describe`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub said: Option<String>,
     /// The scene's own part: `physics`, `reef` or `learning` (see
     /// [`crate::sim::SceneReport`]).
     #[serde(flatten)]
@@ -357,6 +361,7 @@ impl StateReport {
             compare: lab.comparing(),
             student_view: settings.studio.student_view,
             notice: None,
+            said: None,
             camera: None,
             ui_scale: None,
             scene_detail: None,

@@ -9,6 +9,7 @@
 
 // Drawing only: the platform's sin, cos… are fine here (clippy.toml forbids them
 // everywhere a run's numbers are computed; see sim::common::fmath).
+pub mod a11y;
 #[allow(clippy::disallowed_methods)]
 pub mod app;
 pub mod automation;

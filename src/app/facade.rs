@@ -148,6 +148,7 @@ impl ShoalApp {
             target_m: self.camera.target_m.to_array(),
         });
         report.notice = self.notice.as_ref().map(|n| n.text.clone());
+        report.said = self.last_said.clone();
         report.ui_scale = Some(self.ctx.zoom_factor());
         report.scene_detail = Some(SceneDetailReport {
             scale: self.scene_detail.scale(),

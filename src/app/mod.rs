@@ -6,6 +6,7 @@
 //! 3D view, and hand the renderer a freshly built frame per view.
 
 mod facade;
+pub mod keys;
 mod views;
 
 use eframe::egui;
@@ -77,6 +78,17 @@ pub struct ShoalApp {
     studio: crate::ui::StudioPanel,
     /// The guided investigation under way and the session's record.
     investigations: crate::ui::InvestigationPanel,
+    /// What the screen reader's live region says about the tank, and when.
+    narrator: crate::a11y::describe::Narrator,
+    /// Say what the selected animal does on the next frame (it was just
+    /// picked with N or B).
+    describe_selection: bool,
+    /// Is the *Keyboard* window (`?`) open?
+    keys_open: bool,
+    /// The live region's last words (`shoal.state().said`).
+    last_said: Option<String>,
+    /// The notice last read out (each new notice is said once).
+    notice_said: Option<String>,
     ctx: egui::Context,
 }
 impl ShoalApp {
@@ -126,6 +138,11 @@ impl ShoalApp {
             experiment: crate::ui::ExperimentPanel::default(),
             studio: crate::ui::StudioPanel::default(),
             investigations: crate::ui::InvestigationPanel::default(),
+            narrator: Default::default(),
+            describe_selection: false,
+            keys_open: false,
+            last_said: None,
+            notice_said: None,
             ctx: cc.egui_ctx.clone(),
         })
     }
@@ -186,6 +203,8 @@ impl ShoalApp {
                 PanelAction::Reset => self.lab.reset(None),
                 PanelAction::ResetView => self.reset_view(),
                 PanelAction::HidePanel => self.panel_open = false,
+                PanelAction::Describe => self.describe_tank(),
+                PanelAction::Keyboard => self.keys_open = !self.keys_open,
                 PanelAction::CopyLink => {
                     let link = self.share_link();
                     self.ctx.copy_text(link);
@@ -254,30 +273,6 @@ impl ShoalApp {
     }
 }
 
-/// Space: play/pause; S: one step; R: reset; V: reset the view. Ignored while
-/// typing in a text field.
-fn keyboard_shortcuts(ui: &egui::Ui, settings: &mut Settings) -> Vec<PanelAction> {
-    let mut actions = Vec::new();
-    if ui.ctx().egui_wants_keyboard_input() {
-        return actions;
-    }
-    ui.input(|input| {
-        if input.key_pressed(egui::Key::Space) {
-            settings.paused = !settings.paused;
-        }
-        if input.key_pressed(egui::Key::S) {
-            actions.push(PanelAction::Step);
-        }
-        if input.key_pressed(egui::Key::R) {
-            actions.push(PanelAction::Reset);
-        }
-        if input.key_pressed(egui::Key::V) {
-            actions.push(PanelAction::ResetView);
-        }
-    });
-    actions
-}
-
 impl eframe::App for ShoalApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         assert!(
@@ -312,11 +307,13 @@ impl eframe::App for ShoalApp {
 
         self.choose_screen_layout();
         let status = self.state_report();
-        egui::Panel::bottom("status").show(ui, |ui| {
+        self.narrate(&status, now_secs);
+        let status_panel = egui::Panel::bottom("status").show(ui, |ui| {
             let settings = self.lab.settings();
             let hidden_count = settings.studio.count_is_mystery_for_student(settings.scene);
             status_line_ui(ui, &status, self.caps, hidden_count);
         });
+        let _ = status_panel.response.accessible_name("Status");
 
         // The scene's panel: refreshed from the simulation, then the panel under
         // the tank (drawn before the side panel and the tank, which take the rest).
@@ -337,7 +334,7 @@ impl eframe::App for ShoalApp {
         crate::ui::studio_panel::begin_frame(&self.ctx, &settings.studio);
         scene_panel.bottom_ui(ui, &self.lab, &mut settings, &mut self.widget_rects);
 
-        let mut actions = keyboard_shortcuts(ui, &mut settings);
+        let mut actions = self.keys(&mut settings);
         let step_secs = self.lab.scene().dt_secs();
         let width = ui.ctx().content_rect().width();
         let mut view = crate::ui::ViewOptions {
@@ -346,7 +343,7 @@ impl eframe::App for ShoalApp {
             detail_auto: self.scene_detail.auto,
             detail_scale: self.scene_detail.scale(),
         };
-        egui::Panel::left("controls")
+        let controls = egui::Panel::left("controls")
             .default_size(if crate::ui::screen::is_narrow(width) {
                 crate::ui::screen::drawer_width(width)
             } else {
@@ -367,6 +364,10 @@ impl eframe::App for ShoalApp {
                     ));
                 });
             });
+        if let Some(controls) = controls {
+            // The panel's name for a screen reader (a region of the page).
+            let _ = controls.response.accessible_name("Controls");
+        }
         self.interface_scale = view.interface_scale;
         if view.detail_auto != self.scene_detail.auto {
             self.scene_detail.set_auto(view.detail_auto);
@@ -396,6 +397,7 @@ impl eframe::App for ShoalApp {
                 self.notice_ui(ui);
             });
         crate::ui::about_window(ui.ctx(), settings.scene, &mut self.widget_rects);
+        keys::help_window(ui.ctx(), &mut self.keys_open, &mut self.widget_rects);
         let cost = self.lab_cost();
         let mut watch = false;
         for outcome in self

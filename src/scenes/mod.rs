@@ -61,6 +61,10 @@ pub trait SceneClass: Sync {
         None
     }
 
+    /// Selects `animal` (or none) in the tank of `side`, as a click on it
+    /// would; a scene that lets no one pick ignores it.
+    fn select(&self, _settings: &mut Settings, _side: Side, _animal: Option<u32>) {}
+
     /// How many tanks the scene shows with these settings (two while the
     /// schooling lab compares).
     fn tanks(&self, _settings: &Settings) -> usize {

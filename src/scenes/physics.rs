@@ -42,6 +42,10 @@ impl SceneClass for PhysicsTank {
         settings.physics.selected
     }
 
+    fn select(&self, settings: &mut Settings, _side: Side, animal: Option<u32>) {
+        settings.physics.selected = animal;
+    }
+
     fn set_animal_count(&self, settings: &mut Settings, count: u32) {
         settings.physics.fish_count = count;
         settings.physics.sharks = 0;

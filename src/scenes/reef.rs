@@ -60,6 +60,10 @@ impl SceneClass for Reef {
         settings.reef.selected
     }
 
+    fn select(&self, settings: &mut Settings, _side: Side, animal: Option<u32>) {
+        settings.reef.selected = animal;
+    }
+
     /// A new demo, body or count of prey or plankton builds a new reef.
     fn needs_rebuild(&self, before: &Settings, after: &Settings) -> bool {
         before.reef.rebuild_key() != after.reef.rebuild_key()

@@ -76,6 +76,13 @@ impl SceneClass for SchoolingLab {
         }
     }
 
+    fn select(&self, settings: &mut Settings, side: Side, animal: Option<u32>) {
+        match side {
+            Side::Left => settings.left.selected = animal,
+            Side::Right => settings.right.selected = animal,
+        }
+    }
+
     fn tanks(&self, settings: &Settings) -> usize {
         if settings.compare { 2 } else { 1 }
     }

@@ -113,6 +113,8 @@ pub fn show_bottom_panel<R>(
             add_contents(ui, content_height, rects)
         });
     rects.insert(&format!("panel_{id}"), response.response.rect);
+    // The panel's name for a screen reader.
+    let _ = response.response.accessible_name("Plots and readings");
     response.inner
 }
 

@@ -65,6 +65,21 @@ pub fn control_panel_ui(
     ui.horizontal_wrapped(|ui| {
         super::about::about_button(ui, rects);
         super::studio_panel::studio_button(ui, &settings.studio, rects);
+        let describe = ui.button("Describe the tank").on_hover_text(
+            "Say in words what the fish do and what the plots show now (key D). \
+             A screen reader reads it aloud.",
+        );
+        rects.insert("describe", describe.rect);
+        if describe.clicked() {
+            actions.push(PanelAction::Describe);
+        }
+        let keys = ui
+            .button("Keys")
+            .on_hover_text("Every keyboard shortcut (key ?)");
+        rects.insert("keys", keys.rect);
+        if keys.clicked() {
+            actions.push(PanelAction::Keyboard);
+        }
     });
     ui.separator();
 
@@ -157,7 +172,10 @@ pub fn control_panel_ui(
                     the back of the room can read it";
         ui.label("Text size").on_hover_text(help);
         let mut auto = view.interface_scale.is_none();
-        let r = ui.checkbox(&mut auto, "Auto").on_hover_text(help);
+        let r = ui
+            .checkbox(&mut auto, "Auto")
+            .on_hover_text(help)
+            .accessible_name("Automatic text size");
         rects.insert("ui_scale_auto", r.rect);
         if r.changed() {
             view.interface_scale = (!auto).then_some(view.current_scale);
@@ -167,7 +185,8 @@ pub fn control_panel_ui(
         let current = view.interface_scale.unwrap_or(view.current_scale);
         let r = ui
             .add_enabled(current > *range.start() + 0.01, egui::Button::new("A−"))
-            .on_hover_text("Smaller text");
+            .on_hover_text("Smaller text")
+            .accessible_name("Smaller text");
         rects.insert("ui_scale_smaller", r.rect);
         if r.clicked() {
             view.interface_scale = Some((current - 0.1).max(*range.start()));
@@ -175,7 +194,8 @@ pub fn control_panel_ui(
         ui.label(format!("{current:.2}×"));
         let r = ui
             .add_enabled(current < *range.end() - 0.01, egui::Button::new("A+"))
-            .on_hover_text("Bigger text");
+            .on_hover_text("Bigger text")
+            .accessible_name("Bigger text");
         rects.insert("ui_scale_bigger", r.rect);
         if r.clicked() {
             view.interface_scale = Some((current + 0.1).min(*range.end()));
@@ -188,7 +208,8 @@ pub fn control_panel_ui(
         ui.label("Tank detail").on_hover_text(help);
         let r = ui
             .checkbox(&mut view.detail_auto, "Auto")
-            .on_hover_text(help);
+            .on_hover_text(help)
+            .accessible_name("Automatic tank detail");
         rects.insert("scene_detail_auto", r.rect);
         let pixels = view.detail_scale * view.detail_scale;
         ui.label(if view.detail_scale < 1.0 {

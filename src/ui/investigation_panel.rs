@@ -495,13 +495,16 @@ impl InvestigationPanel {
             p.prompt + 1,
             inv.prompts.len()
         ));
-        ui.label(egui::RichText::new(inv.prompts[p.prompt]).strong());
-        let answer = ui.add(
-            egui::TextEdit::multiline(&mut p.explanations[p.prompt])
-                .desired_rows(3)
-                .desired_width(f32::INFINITY)
-                .hint_text("Your answer (it goes in your record)"),
-        );
+        let prompt = ui.label(egui::RichText::new(inv.prompts[p.prompt]).strong());
+        let answer = ui
+            .add(
+                egui::TextEdit::multiline(&mut p.explanations[p.prompt])
+                    .desired_rows(3)
+                    .desired_width(f32::INFINITY)
+                    .hint_text("Your answer (it goes in your record)"),
+            )
+            // A screen reader names the box by its question.
+            .labelled_by(prompt.id);
         rects.insert("investigation_answer", answer.rect);
         let last = p.prompt + 1 == inv.prompts.len();
         let next = ui.button(if last {

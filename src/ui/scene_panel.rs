@@ -33,6 +33,10 @@ pub enum PanelAction {
     /// Download the scene's own data (metrics, muscles, the reef's counts,
     /// events and minds, the learning history) as a CSV file.
     ExportCsv,
+    /// Say the tank in words (the notice and the screen reader's live region).
+    Describe,
+    /// Open or close the *Keyboard* window.
+    Keyboard,
 }
 
 /// A message shown at the top of the 3D view until dismissed.

@@ -99,6 +99,7 @@ fn control<S, T>(
 {
     let NumberSetting {
         range,
+        label,
         help,
         unit,
         rect,
@@ -122,7 +123,9 @@ fn control<S, T>(
             if !unit.is_empty() {
                 slider = slider.suffix(unit);
             }
-            let r = ui.add(slider).on_hover_text(help);
+            // Named by the row's label (a screen reader reads the hover
+            // help after it).
+            let r = ui.add(slider).on_hover_text(help).accessible_name(label);
             rects.insert(rect, r.rect);
         }
         Widget::Field {
@@ -135,7 +138,10 @@ fn control<S, T>(
             if !unit.is_empty() {
                 field = field.suffix(unit);
             }
-            let r = ui.add(field).on_hover_text(field_help.unwrap_or(help));
+            let r = ui
+                .add(field)
+                .on_hover_text(field_help.unwrap_or(help))
+                .accessible_name(label);
             rects.insert(rect, r.rect);
         }
         Widget::Count {
@@ -148,7 +154,8 @@ fn control<S, T>(
             ui.horizontal(|ui| {
                 let minus = ui
                     .add_enabled(*value > range.min, egui::Button::new(" − "))
-                    .on_hover_text(fewer);
+                    .on_hover_text(fewer)
+                    .accessible_name(format!("{label}: fewer"));
                 rects.insert(&format!("{rect}_minus"), minus.rect);
                 if minus.clicked() {
                     // A whole number below zero comes back as zero.
@@ -161,14 +168,16 @@ fn control<S, T>(
                                 .range(range.bounds())
                                 .speed(step.max(1.0) * 0.2),
                         )
-                        .on_hover_text(help);
+                        .on_hover_text(help)
+                        .accessible_name(label);
                     rects.insert(&format!("{rect}_count"), field.rect);
                 } else {
                     ui.label(value.to_string()).on_hover_text(help);
                 }
                 let plus = ui
                     .add_enabled(*value < range.max, egui::Button::new(" + "))
-                    .on_hover_text(more);
+                    .on_hover_text(more)
+                    .accessible_name(format!("{label}: more"));
                 rects.insert(&format!("{rect}_plus"), plus.rect);
                 if plus.clicked() {
                     *value = range.clamp(T::from_f64(value.to_f64() + step));

@@ -1,12 +1,14 @@
 //! Browser glue: starts eframe on the page's canvas, explains failures on the page
 //! itself (no GPU, a panic), and installs the `window.shoal` automation API.
 
+mod a11y_dom;
 mod api;
 mod page;
 
 use crate::ShoalApp;
 use crate::settings::Settings;
 
+pub use a11y_dom::announce;
 pub use page::{download_text, pick_text_file};
 
 /// Starts Shoal in the page. Called once from `main`.
@@ -45,6 +47,10 @@ pub async fn start() {
             eframe::WebOptions::default(),
             Box::new(move |cc| {
                 let mut app = ShoalApp::new(cc, settings)?;
+                // Every control as a real element for screen readers and Tab.
+                if let Err(err) = a11y_dom::install(&cc.egui_ctx) {
+                    log::warn!("the accessible controls could not be set up: {err:?}");
+                }
                 if let Some(url) = page::url_without_fragment() {
                     app.set_page_url(url);
                 }
