@@ -229,6 +229,8 @@ mod tests {
     use crate::settings::studio::{ControlRule, Studio};
     use crate::settings::tank::TankSettings;
     use crate::settings::{Settings, Side};
+    use crate::sim::reef::mind::FishKind;
+    use crate::sim::reef::mind::habits::MindTraits;
     use crate::ui::studio_panel::draw_controls_for_test;
 
     /// Draws every row of `table` of `settings` under `studio` and returns the
@@ -335,6 +337,41 @@ mod tests {
             &LearningSettings::NUMBERS,
             &settings.learning,
         );
+        for kind in FishKind::ALL {
+            check(
+                &MindTraits::prefix(ReefSettings::PREFIX, kind),
+                &MindTraits::NUMBERS,
+                settings.reef.traits.of(kind),
+            );
+        }
+    }
+
+    #[test]
+    fn the_minds_rows_keep_the_names_the_browser_tests_click() {
+        let mut traits = MindTraits::default();
+        let drawn = draw_table(
+            &Studio::default(),
+            "reef.traits.pacifist.",
+            &MindTraits::NUMBERS,
+            &mut traits,
+        );
+        for name in [
+            "reef_minds_hunger",
+            "reef_minds_hunger_calm",
+            "reef_minds_libido_nominal",
+            "reef_minds_libido_sexual_mania",
+            "reef_minds_appetite",
+            "reef_minds_fear_distance",
+            "reef_minds_alarm",
+            "reef_minds_panic",
+            "reef_minds_urge",
+            "reef_minds_box_courageous",
+            "reef_minds_persistence_devoted",
+        ] {
+            assert!(drawn.get(name).is_some(), "{name}");
+        }
+        assert!(drawn.get("reef_minds_box").is_none(), "named values only");
+        assert_eq!(traits, MindTraits::default(), "drawing leaves them unset");
     }
 
     #[test]
