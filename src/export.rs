@@ -302,7 +302,7 @@ mod tests {
         check_header(&export, &lab);
         assert_eq!(export.name, "shoal-physics-t0005s.csv");
         let selected_line = export.text.lines().find(|l| l.starts_with("# selected: "));
-        let length = lab.runs()[0].physics().unwrap().animals()[1].body_length_m();
+        let length = lab.runs()[0].scene().physics().unwrap().animals()[1].body_length_m();
         assert_eq!(
             selected_line,
             Some(format!("# selected: fish 1 (body length {length:.2} m)").as_str())
@@ -367,6 +367,7 @@ mod tests {
         settings.reef.body = crate::sim::reef::world::ReefBodyKind::PointMass;
         let mut lab = Lab::new(settings);
         let shark = lab.runs()[0]
+            .scene()
             .reef()
             .unwrap()
             .animals()
@@ -399,7 +400,7 @@ mod tests {
         assert_eq!(counts.len() + events.len() + minds.len(), rows.len());
         // Counts: one row per sample (every 5 steps, the first at the start).
         assert_eq!(counts.len(), 129);
-        let reef = lab.runs()[0].reef().unwrap();
+        let reef = lab.runs()[0].scene().reef().unwrap();
         let last = counts.last().unwrap();
         let census = reef.census();
         assert_eq!(last[column(&header, "prey_alive")], census.prey.to_string());
@@ -489,7 +490,7 @@ mod tests {
         let finished: Vec<&Vec<&str>> = rows.iter().filter(|r| r[0] == "finished").collect();
         assert_eq!(training.len() + finished.len(), rows.len());
         // The random start and 20 steps.
-        let trainer = lab.runs()[0].learning().unwrap().trainer();
+        let trainer = lab.runs()[0].scene().learning().unwrap().trainer();
         assert_eq!(training.len(), trainer.history().len());
         assert_eq!(training.len(), 21);
         assert!(training.iter().all(|r| r[1] == "2"));
@@ -513,7 +514,7 @@ mod tests {
         assert_eq!(drill[2], "\"swim as far as it can\"");
         assert_eq!(drill[column(&header, "annealing_steps")], "90");
         let objective = number(drill[column(&header, "objective")]);
-        let learned = &lab.runs()[0].learning().unwrap().finished_drills()[0];
+        let learned = &lab.runs()[0].scene().learning().unwrap().finished_drills()[0];
         assert!((objective - f64::from(learned.objective)).abs() < 1e-5);
         let energy = number(drill[column(&header, "energy_in_two_modes")]);
         assert!(energy > 0.0 && energy <= 1.0, "{energy}");

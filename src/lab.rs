@@ -106,7 +106,7 @@ impl Lab {
     /// The left (or only) tank's boid world, in the aquarium and the schooling
     /// lab.
     pub fn boids(&self) -> Option<&World> {
-        self.runs[0].boids()
+        self.runs[0].scene.boids()
     }
 
     /// The left (or only) tank's learning lab, for the app's actions (race,
@@ -322,16 +322,17 @@ impl Lab {
 
     /// Starts a turn of `angle_deg` degrees (+ left) on the selected physical fish.
     pub fn turn_selected(&mut self, angle_deg: f32) -> Result<(), LabError> {
-        if self.settings.scene != Scene::Physics {
+        if !self.runs[0].scene.turns_on_command() {
             return Err(LabError::PhysicsSceneOnly);
         }
-        let Some(selected) = self.settings.physics.selected else {
+        let class = self.settings.scene.class();
+        let Some(selected) = class.selected(&self.settings, Side::Left) else {
             return Err(LabError::NoFishSelected);
         };
         if !angle_deg.is_finite() || angle_deg.abs() > TURN_MAX_DEG {
             return Err(LabError::TurnOutOfRange(angle_deg));
         }
-        self.runs[0].turn(selected as usize, angle_deg);
+        self.runs[0].scene.turn(selected as usize, angle_deg);
         Ok(())
     }
 
@@ -539,7 +540,7 @@ mod tests {
     fn the_physics_scene_steps_muscle_fish_at_the_body_step_and_follows_its_settings() {
         let mut lab = physics_lab();
         let run = &lab.runs()[0];
-        assert_eq!(run.physics().unwrap().animals().len(), 5);
+        assert_eq!(run.scene().physics().unwrap().animals().len(), 5);
         assert!(lab.boids().is_none(), "no boids in the physics tank");
         assert!(
             !lab.scene().obstacles().is_empty(),
@@ -560,7 +561,7 @@ mod tests {
         settings.physics.hand_speed = 1.0;
         lab.apply_settings(settings);
         assert_eq!(lab.runs()[0].steps(), steps, "more fish, same run");
-        let physics = lab.runs()[0].physics().unwrap();
+        let physics = lab.runs()[0].scene().physics().unwrap();
         assert_eq!((physics.fish_count(), physics.shark_count()), (6, 1));
         lab.step(40);
         let run = &lab.runs()[0];
@@ -571,7 +572,7 @@ mod tests {
         assert!(last.muscles.iter().any(|&u| u > 0.1), "{:?}", last.muscles);
         // Drawn nodes lie between the last two states.
         let drawn = run.drawn_nodes_m(2, 0.5);
-        let now = run.physics().unwrap().animals()[2].nodes_m();
+        let now = run.scene().physics().unwrap().animals()[2].nodes_m();
         assert!(drawn.iter().zip(now).all(|(a, b)| a.distance(b) < 0.1));
     }
 
@@ -584,7 +585,7 @@ mod tests {
             ..Settings::default()
         };
         let mut lab = Lab::new(settings);
-        let reef = lab.runs()[0].reef().expect("a reef");
+        let reef = lab.runs()[0].scene().reef().expect("a reef");
         assert_eq!(reef.config().scene, ReefScene::Reef);
         assert_eq!(
             lab.scene().obstacles(),
@@ -603,7 +604,7 @@ mod tests {
         s.reef.traits.predator.digestion_rate_per_unit = Some(0.005);
         lab.apply_settings(s);
         assert_eq!(lab.runs()[0].steps(), 20);
-        let reef = lab.runs()[0].reef().unwrap();
+        let reef = lab.runs()[0].scene().reef().unwrap();
         assert_eq!(reef.config().visibility_m, 3.0);
         for a in reef.animals() {
             let ravenous = a.habits.mental.digestion_rate_per_unit == 0.005;
@@ -624,19 +625,19 @@ mod tests {
         s.reef.demo = ReefScene::Courtship;
         s.reef.body = ReefBodyKind::PointMass;
         lab.apply_settings(s);
-        let reef = lab.runs()[0].reef().unwrap();
+        let reef = lab.runs()[0].scene().reef().unwrap();
         assert_eq!(lab.runs()[0].steps(), 0);
         assert_eq!(reef.animals().len(), 3);
         let mut s = lab.settings().clone();
         s.reef.demo = ReefScene::PredatorAndSchool;
         s.reef.prey_count = Some(30);
         lab.apply_settings(s);
-        assert_eq!(lab.runs()[0].reef().unwrap().animals().len(), 31);
+        assert_eq!(lab.runs()[0].scene().reef().unwrap().animals().len(), 31);
         // Drawn positions of point-mass fish lie between the last two states.
         lab.step(3);
         let run = &lab.runs()[0];
         for (i, c, _) in run.selectable_animals(0.5) {
-            let now = run.reef().unwrap().animals()[i].body.position_m();
+            let now = run.scene().reef().unwrap().animals()[i].body.position_m();
             assert!(c.distance(now) < 0.1);
         }
     }
@@ -668,7 +669,12 @@ mod tests {
         s.scene = Scene::Learning;
         lab.apply_settings(s);
         assert_eq!(
-            lab.runs()[0].learning().unwrap().trainer().evaluations(),
+            lab.runs()[0]
+                .scene()
+                .learning()
+                .unwrap()
+                .trainer()
+                .evaluations(),
             30
         );
         // Training runs a little each frame while it is on.
@@ -677,7 +683,15 @@ mod tests {
         lab.apply_settings(s);
         lab.advance_frame(0.1, 0.1);
         lab.advance_frame(0.1, 0.2);
-        assert!(lab.runs()[0].learning().unwrap().trainer().evaluations() > 30);
+        assert!(
+            lab.runs()[0]
+                .scene()
+                .learning()
+                .unwrap()
+                .trainer()
+                .evaluations()
+                > 30
+        );
         // Settings that change nothing here (the controller, the speed, the
         // boid tank's fish) leave the water open: no aquarium fish, no rocks.
         let mut s = lab.settings().clone();
@@ -688,13 +702,32 @@ mod tests {
         assert!(lab.boids().is_none() && lab.scene().obstacles().is_empty());
         // A different length, or Reset training, starts from a brain-dead fish.
         lab.reset_training();
-        assert_eq!(lab.runs()[0].learning().unwrap().trainer().evaluations(), 0);
+        assert_eq!(
+            lab.runs()[0]
+                .scene()
+                .learning()
+                .unwrap()
+                .trainer()
+                .evaluations(),
+            0
+        );
         let mut s = lab.settings().clone();
         s.learning.annealing_steps = 120;
         lab.train(5).unwrap();
         lab.apply_settings(s);
-        assert_eq!(lab.runs()[0].learning().unwrap().annealing_steps(), 120);
-        assert_eq!(lab.runs()[0].learning().unwrap().trainer().evaluations(), 0);
+        assert_eq!(
+            lab.runs()[0].scene().learning().unwrap().annealing_steps(),
+            120
+        );
+        assert_eq!(
+            lab.runs()[0]
+                .scene()
+                .learning()
+                .unwrap()
+                .trainer()
+                .evaluations(),
+            0
+        );
     }
 
     #[test]
@@ -752,7 +785,7 @@ mod tests {
         assert!(lab.turn_selected(500.0).is_err());
         lab.turn_selected(45.0).unwrap();
         lab.step(1);
-        assert!(lab.runs()[0].physics().unwrap().animals()[0].is_turning());
+        assert!(lab.runs()[0].scene().physics().unwrap().animals()[0].is_turning());
     }
 
     #[test]
@@ -767,7 +800,7 @@ mod tests {
         assert_eq!(lab.runs()[0].steps(), 2);
         settings.scene = Scene::Boids;
         lab.apply_settings(settings);
-        assert!(lab.runs()[0].physics().is_none());
+        assert!(lab.runs()[0].scene().physics().is_none());
         lab.advance_frame(0.06, 0.1);
         assert_eq!(lab.runs()[0].steps(), 3, "a new run at 1/60 s per step");
     }

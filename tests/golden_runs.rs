@@ -63,14 +63,14 @@ fn fingerprint(lab: &Lab) -> u64 {
     for run in lab.runs() {
         h.f64(run.time_secs());
         h.u64(run.steps());
-        if let Some(physics) = run.physics() {
+        if let Some(physics) = run.scene().physics() {
             for a in physics.animals() {
                 for p in a.nodes_m() {
                     h.vec3(p);
                 }
                 h.vec3(a.point.velocity_m_per_s);
             }
-        } else if let Some(reef) = run.reef() {
+        } else if let Some(reef) = run.scene().reef() {
             for a in reef.animals() {
                 h.u64(u64::from(a.alive));
                 h.vec3(a.body.position_m());
@@ -91,13 +91,13 @@ fn fingerprint(lab: &Lab) -> u64 {
             for n in [c.prey_eaten, c.missed_strikes, c.food_eaten, c.spawnings] {
                 h.u64(u64::from(n));
             }
-        } else if let Some(learning) = run.learning() {
+        } else if let Some(learning) = run.scene().learning() {
             for p in learning.demo_nodes_m() {
                 h.vec3(p);
             }
             h.u64(learning.annealing_steps());
             h.f32(learning.progress());
-        } else if let Some(world) = run.boids() {
+        } else if let Some(world) = run.scene().boids() {
             for f in world.fish() {
                 h.vec3(f.position_m);
                 h.vec3(f.velocity_m_per_s);

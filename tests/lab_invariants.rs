@@ -9,7 +9,7 @@ use shoal::settings::Settings;
 
 fn assert_sound(lab: &Lab) {
     for run in lab.runs() {
-        if let Some(world) = run.boids() {
+        if let Some(world) = run.scene().boids() {
             assert_world_sound(world);
         }
         let metrics = run.metrics();
@@ -59,7 +59,7 @@ fn a_scripted_lesson_is_reproducible_to_the_bit() {
         }
         lab.runs()
             .iter()
-            .flat_map(|run| run.boids().unwrap().fish().iter())
+            .flat_map(|run| run.scene().boids().unwrap().fish().iter())
             .map(|f| (f.position_m, f.velocity_m_per_s))
             .collect::<Vec<_>>()
     };
@@ -122,8 +122,8 @@ fn compare_mode_starts_both_tanks_from_the_same_fish_and_they_part_ways() {
         panic!("compare mode shows two tanks");
     };
     assert_eq!(
-        left.boids().unwrap().fish(),
-        right.boids().unwrap().fish(),
+        left.scene().boids().unwrap().fish(),
+        right.scene().boids().unwrap().fish(),
         "same seed, same starting positions"
     );
     // A minute: the group school forms within it (docs/boids.md).
@@ -152,7 +152,7 @@ fn compare_mode_starts_both_tanks_from_the_same_fish_and_they_part_ways() {
 /// Every node of every physical animal is finite, in the tank and out of the rocks.
 fn assert_physics_sound(lab: &Lab) {
     let run = &lab.runs()[0];
-    let Some(physics) = run.physics() else {
+    let Some(physics) = run.scene().physics() else {
         panic!("not the physics scene");
     };
     for (i, animal) in physics.animals().iter().enumerate() {
@@ -198,6 +198,7 @@ fn physical_fish_are_reproducible_finite_and_stay_in_the_tank_whatever_the_teach
         }
         assert_physics_sound(lab);
         lab.runs()[0]
+            .scene()
             .physics()
             .unwrap()
             .animals()

@@ -186,7 +186,7 @@ impl Measurement {
                 )
             }
             Self::Learning { secs, raced, .. } => {
-                let Some(l) = lab.runs()[0].learning() else {
+                let Some(l) = lab.runs()[0].scene().learning() else {
                     return (0.0, "open the learning lab".into());
                 };
                 match (raced, l.race()) {
@@ -628,13 +628,13 @@ fn learning_advance(
         }
         l.start_race().ok()?;
         *raced = true;
-        let mut copy = lab.runs()[0].learning()?.race()?.clone();
+        let mut copy = lab.runs()[0].scene().learning()?.race()?.clone();
         copy.run(secs as f32);
         *measured = Some((copy.time_secs(), copy.distances_m()));
         return None;
     }
     // The student watches the race reach the measured time.
-    let race = lab.runs()[0].learning()?.race()?;
+    let race = lab.runs()[0].scene().learning()?.race()?;
     if f64::from(race.time_secs()) + 1e-6 < secs {
         return None;
     }

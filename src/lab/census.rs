@@ -17,7 +17,7 @@ pub(crate) fn skip_moments() {
             let outcome = lab.finish_skip_now();
             println!("{d:?} seed {seed}: {outcome:?}");
             lab.step((60.0 / lab.step_secs()) as u32);
-            for e in lab.runs()[0].reef().expect("a reef demo").events() {
+            for e in lab.runs()[0].scene().reef().expect("a reef demo").events() {
                 if !matches!(
                     e.kind,
                     ReefEventKind::BeganEscape { .. }

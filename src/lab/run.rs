@@ -11,9 +11,7 @@ use crate::settings::{Settings, Side};
 use crate::sim::body::{MUSCLE_COUNT, NODE_COUNT};
 use crate::sim::learning::learning_lab::LearningLab;
 use crate::sim::reef::report::ReefCensus;
-use crate::sim::reef::world::ReefWorld;
 use crate::sim::scene::{SceneWorld, centre};
-use crate::sim::{PhysicsWorld, World};
 
 /// Seconds of the selected fish's muscles and speed kept for the plots.
 pub const BODY_TRACE_SECS: f64 = 10.0;
@@ -94,26 +92,6 @@ impl Run {
     /// The simulated world of this tank.
     pub fn scene(&self) -> &SceneWorld {
         &self.scene
-    }
-
-    /// The boid world, in the aquarium and the schooling lab.
-    pub fn boids(&self) -> Option<&World> {
-        self.scene.boids()
-    }
-
-    /// The physical fish, in the physics scene.
-    pub fn physics(&self) -> Option<&PhysicsWorld> {
-        self.scene.physics()
-    }
-
-    /// The fish with minds, in the reef scene.
-    pub fn reef(&self) -> Option<&ReefWorld> {
-        self.scene.reef()
-    }
-
-    /// The learning lab, in its scene.
-    pub fn learning(&self) -> Option<&LearningLab> {
-        self.scene.learning()
     }
 
     /// Simulated seconds since the run began.
@@ -277,13 +255,6 @@ impl Run {
     fn snapshot(&mut self) {
         self.scene.positions_m(&mut self.previous_positions_m);
         self.scene.nodes_m(&mut self.previous_nodes_m);
-    }
-
-    /// Starts a turn of `angle_deg` (+ left) on physical animal `index`.
-    pub(super) fn turn(&mut self, index: usize, angle_deg: f32) {
-        if let SceneWorld::Physics(physics) = &mut self.scene {
-            physics.turn(index, angle_deg);
-        }
     }
 
     /// Follows new settings for this tank without restarting where possible.

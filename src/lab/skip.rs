@@ -243,7 +243,7 @@ mod tests {
         );
         assert!(found.time_secs - now <= 1.5 * moment.lead_secs + 0.1);
         // Played on from there, the catch happens again, at the same time.
-        let reef = |lab: &Lab| lab.runs()[0].reef().unwrap().clone();
+        let reef = |lab: &Lab| lab.runs()[0].scene().reef().unwrap().clone();
         let steps_to_catch = ((found.time_secs - now) / lab.step_secs()).round() as u32 + 1;
         lab.step(steps_to_catch);
         let again = reef(&lab)

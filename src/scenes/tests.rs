@@ -198,14 +198,9 @@ const MAY_NAME_A_SCENE: &[(&str, &str)] = &[
     ("src/ui/learning_panel.rs", "the learning lab's panel"),
     (
         "src/lab.rs",
-        "the lab keeps the learning lab's training while another scene shows, and runs the \
-         window.shoal commands of one scene (train and race: the learning lab; turn: the \
-         physics tank)",
-    ),
-    (
-        "src/lab/run.rs",
-        "a run hands each scene's panel its own world (Run::reef(), Run::physics(), …) and \
-         starts the physics tank's turns",
+        "the lab keeps the learning lab's training while another scene shows, trains it \
+         between frames and runs its window.shoal commands (train, race, reset); and hands \
+         the tests the boid world (Lab::boids)",
     ),
     (
         "src/investigation/measure.rs",

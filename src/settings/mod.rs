@@ -6,6 +6,7 @@
 //! first unknown key, wrong type or out-of-range value, changes nothing and explains why.
 
 pub mod learning;
+pub mod minds;
 pub mod number;
 pub mod physics;
 pub mod range;

@@ -15,7 +15,8 @@ pub enum Access<S, T> {
         get_mut: fn(&mut S) -> &mut T,
     },
     /// A number that may be left unset (`null`), in which case `otherwise`
-    /// gives the value that applies (the reef demo's own prey count).
+    /// gives the value that applies (the reef demo's own prey count); a value
+    /// that is not a number clamps to unset.
     Optional {
         get: fn(&S) -> Option<T>,
         get_mut: fn(&mut S) -> &mut Option<T>,
@@ -79,6 +80,10 @@ pub enum Widget {
         more: &'static str,
         typed: bool,
     },
+    /// No control of its own: only the setting's named values
+    /// ([`NumberSetting::named`]), as buttons (a fish's character: timid,
+    /// ordinary, courageous).
+    NamedOnly,
 }
 
 impl Widget {
@@ -103,9 +108,32 @@ impl Widget {
     }
 }
 
+/// A value of a setting with a name of its own ("Calm", "Devoted"), offered as
+/// a button beside its control.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NamedValue<T> {
+    /// The button's text; lower-cased, spaces as `_`, it ends the button's
+    /// rectangle name ("Sexual mania": `<rect>_sexual_mania`).
+    pub label: &'static str,
+    pub value: T,
+    /// What it means, shown after the label when the pointer rests on it.
+    pub help: &'static str,
+}
+
+impl<T> NamedValue<T> {
+    pub const fn new(label: &'static str, value: T, help: &'static str) -> Self {
+        Self { label, value, help }
+    }
+
+    /// The name of its button's rectangle, after the setting's `rect`.
+    pub fn rect(&self, rect: &str) -> String {
+        format!("{rect}_{}", self.label.to_lowercase().replace(' ', "_"))
+    }
+}
+
 /// One numeric setting of the settings struct `S`, holding a `T`: everything
 /// validation, clamping, the panel, the studio and a screen reader need.
-pub struct NumberSetting<S, T> {
+pub struct NumberSetting<S, T: 'static> {
     /// Its key (`shoal.set` and share links, under the struct's prefix:
     /// `alignment` is `left.alignment`), valid values and what a value that is
     /// not a number clamps to.
@@ -122,19 +150,24 @@ pub struct NumberSetting<S, T> {
     /// The control that edits it.
     pub widget: Widget,
     /// The name of its control's rectangle in `WidgetRects` (the browser tests
-    /// click it); a count's buttons add `_minus` and `_plus`, its field `_count`.
+    /// click it); a count's buttons add `_minus` and `_plus`, its field `_count`,
+    /// a named value's button `_` and its name ([`NamedValue::rect`]).
     pub rect: &'static str,
+    /// Values with names of their own, as buttons under the control (picking
+    /// one sets it, even to the value it has: an unset optional one is then
+    /// set); empty for most.
+    pub named: &'static [NamedValue<T>],
 }
 
-impl<S, T: Copy> Clone for NumberSetting<S, T> {
+impl<S, T: Copy + 'static> Clone for NumberSetting<S, T> {
     fn clone(&self) -> Self {
         *self
     }
 }
 
-impl<S, T: Copy> Copy for NumberSetting<S, T> {}
+impl<S, T: Copy + 'static> Copy for NumberSetting<S, T> {}
 
-impl<S, T: Copy> NumberSetting<S, T> {
+impl<S, T: Copy + 'static> NumberSetting<S, T> {
     /// A setting edited on a linear slider ([`Widget::SLIDER`]), without a
     /// unit, its rectangle named by its key; the methods below say otherwise.
     pub const fn new(
@@ -151,6 +184,7 @@ impl<S, T: Copy> NumberSetting<S, T> {
             unit: "",
             widget: Widget::SLIDER,
             rect: range.key,
+            named: &[],
         }
     }
 
@@ -167,6 +201,11 @@ impl<S, T: Copy> NumberSetting<S, T> {
     /// Its control's rectangle named `rect`.
     pub const fn rect(self, rect: &'static str) -> Self {
         Self { rect, ..self }
+    }
+
+    /// Offers `named` values as buttons.
+    pub const fn named(self, named: &'static [NamedValue<T>]) -> Self {
+        Self { named, ..self }
     }
 }
 
@@ -213,7 +252,9 @@ impl<S, T: SettingValue> NumberSetting<S, T> {
         }
     }
 
-    /// Brings the value into the range; an unset optional one stays unset.
+    /// Brings the value into the range; an unset optional one stays unset,
+    /// and one that is not a number becomes unset (the value that otherwise
+    /// applies).
     pub fn clamp(&self, settings: &mut S) {
         match self.access {
             Access::Plain { get_mut, .. } => {
@@ -221,9 +262,8 @@ impl<S, T: SettingValue> NumberSetting<S, T> {
                 *value = self.range.clamp(*value);
             }
             Access::Optional { get_mut, .. } => {
-                if let Some(value) = get_mut(settings) {
-                    *value = self.range.clamp(*value);
-                }
+                let value = get_mut(settings);
+                *value = value.filter(|v| v.is_number()).map(|v| self.range.clamp(v));
             }
         }
     }

@@ -31,7 +31,7 @@ impl SettingError {
 }
 
 /// A number a setting can hold.
-pub trait SettingValue: Copy + PartialOrd + Display {
+pub trait SettingValue: Copy + PartialOrd + Display + 'static {
     /// False for NaN and the infinities, which no range holds.
     fn is_number(self) -> bool;
 }

@@ -9,7 +9,7 @@ use crate::settings::number::{Number, NumberSetting, check_all, clamp_all, field
 use crate::settings::range::{Range, SettingError};
 use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::FishKind;
-use crate::sim::reef::mind::habits::KindTraits;
+use crate::sim::reef::mind::habits::{KindTraits, MindTraits};
 use crate::sim::reef::world::{MAX_FOOD, ReefBodyKind, ReefConfig};
 
 /// Most prey fish the slider offers: the Reef demo then holds
@@ -164,7 +164,8 @@ impl ReefSettings {
     )
     .unit(" m/s")
     .rect("reef_current");
-    /// Every numeric setting (the traits have their own table, `selected`
+    /// Every numeric setting (each kind's traits have their own table,
+    /// [`MindTraits::NUMBERS`], under [`MindTraits::prefix`]; `selected`
     /// depends on the demo and the counts), in the order validation reports them.
     pub const NUMBERS: [Number<Self>; 4] = [
         Number::U32(Self::PREY_COUNT),
@@ -177,12 +178,8 @@ impl ReefSettings {
     pub fn validate(&self, prefix: &str) -> Result<(), SettingError> {
         check_all(&Self::NUMBERS, prefix, self)?;
         for kind in FishKind::ALL {
-            if let Err((name, reason)) = self.traits.of(kind).validate() {
-                return Err(SettingError {
-                    key: format!("{prefix}traits.{}.{name}", kind.label()),
-                    reason,
-                });
-            }
+            let kind_prefix = MindTraits::prefix(prefix, kind);
+            check_all(&MindTraits::NUMBERS, &kind_prefix, self.traits.of(kind))?;
         }
         let animals = self.animal_count();
         if let Some(i) = self.selected
@@ -202,8 +199,7 @@ impl ReefSettings {
     pub fn clamp(&mut self) {
         clamp_all(&Self::NUMBERS, self);
         for kind in FishKind::ALL {
-            let traits = self.traits.of_mut(kind);
-            *traits = traits.clamped();
+            clamp_all(&MindTraits::NUMBERS, self.traits.of_mut(kind));
         }
         let animals = self.animal_count();
         self.selected = self.selected.filter(|&i| (i as usize) < animals);

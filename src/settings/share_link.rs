@@ -225,11 +225,13 @@ mod tests {
         };
         for kind in crate::sim::reef::mind::FishKind::ALL {
             let traits = reef.traits.of_mut(kind);
-            for t in &crate::sim::reef::mind::habits::MindTraits::ALL {
-                let value = rng
-                    .random_bool(0.3)
-                    .then(|| rng.random_range(t.min..=t.max));
-                (t.set)(traits, value);
+            for number in &crate::sim::reef::mind::habits::MindTraits::NUMBERS {
+                let crate::settings::number::Number::F32(t) = number else {
+                    panic!("{}: a trait is an f32", number.key());
+                };
+                if rng.random_bool(0.3) {
+                    t.set(traits, rng.random_range(t.range.bounds()));
+                }
             }
         }
         let animals = reef.animal_count() as u32;

@@ -532,6 +532,25 @@ impl SceneWorld {
         }
     }
 
+    /// Does the world turn its selected animal on the teacher's command
+    /// (`shoal.turn`, the *Turn* button)? The physics tank's muscle fish do.
+    pub fn turns_on_command(&self) -> bool {
+        match self {
+            Self::Physics(_) => true,
+            Self::Boids(_) | Self::Reef(_) | Self::Learning(_) => false,
+        }
+    }
+
+    /// Starts a turn of `angle_deg` (+ left) on animal `index`, in a world
+    /// that [turns on command](Self::turns_on_command); elsewhere nothing
+    /// happens.
+    pub fn turn(&mut self, index: usize, angle_deg: f32) {
+        match self {
+            Self::Physics(w) => w.turn(index, angle_deg),
+            Self::Boids(_) | Self::Reef(_) | Self::Learning(_) => {}
+        }
+    }
+
     /// The boid world, in the aquarium and the schooling lab.
     pub fn boids(&self) -> Option<&World> {
         match self {

@@ -79,7 +79,7 @@ fn screen_disc(project: &Projector, centre: Vec3, body_length_m: f32) -> Option<
 
 /// Which animals to draw: the selected one, or the first [`SKELETONS_MAX`].
 fn shown(run: &Run, selected: Option<u32>) -> Vec<usize> {
-    let count = run.physics().map_or(0, |p| p.animals().len());
+    let count = run.scene().physics().map_or(0, |p| p.animals().len());
     match selected {
         Some(i) if (i as usize) < count => vec![i as usize],
         _ => (0..count.min(SKELETONS_MAX)).collect(),
@@ -95,7 +95,7 @@ pub fn draw_skeletons(
     alpha: f32,
     selected: Option<u32>,
 ) {
-    let Some(physics) = run.physics() else {
+    let Some(physics) = run.scene().physics() else {
         return;
     };
     let project = Projector::new(camera, rect);
@@ -145,7 +145,7 @@ pub fn draw_forces(
     alpha: f32,
     selected: Option<u32>,
 ) {
-    let Some(physics) = run.physics() else {
+    let Some(physics) = run.scene().physics() else {
         return;
     };
     let project = Projector::new(camera, rect);

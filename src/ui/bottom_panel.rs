@@ -392,7 +392,10 @@ mod tests {
             scene: Scene::Learning,
             ..Settings::default()
         });
-        let abstraction = lab.runs()[0].learning().map(|l| l.current_abstraction());
+        let abstraction = lab.runs()[0]
+            .scene()
+            .learning()
+            .map(|l| l.current_abstraction());
         let frames = run_frames(window, 120, |ui, rects| {
             show_bottom_panel(
                 ui,

@@ -171,7 +171,7 @@ pub fn learning_plots_ui(
     content_height: f32,
     rects: &mut WidgetRects,
 ) {
-    let Some(lab) = run.learning() else {
+    let Some(lab) = run.scene().learning() else {
         return;
     };
     ui.horizontal_top(|ui| {
@@ -424,7 +424,7 @@ impl ScenePanel for LearningPanel {
             .abstraction
             .as_ref()
             .is_none_or(|(at, _)| now_secs - at > ABSTRACTION_EVERY_SECS);
-        if stale && let Some(l) = lab.runs()[0].learning() {
+        if stale && let Some(l) = lab.runs()[0].scene().learning() {
             self.abstraction = Some((now_secs, l.current_abstraction()));
         }
         self.apply_loaded_controllers(lab)
@@ -501,7 +501,7 @@ impl ScenePanel for LearningPanel {
         _settings: &Settings,
         _rects: &mut WidgetRects,
     ) {
-        let Some(lab) = view.run.learning() else {
+        let Some(lab) = view.run.scene().learning() else {
             return;
         };
         let Some(race) = lab.race() else {
@@ -540,7 +540,7 @@ impl ScenePanel for LearningPanel {
     fn framing(&self, run: &Run, _settings: &Settings) -> Option<Framing> {
         // The swimmers are small in a big tank: look between the buoys and the
         // race's start line behind the swimmer.
-        let buoys = run.learning()?.buoys_m();
+        let buoys = run.scene().learning()?.buoys_m();
         Some(Framing::Target {
             target_m: (buoys[0] + buoys[1]) * 0.5 - glam::Vec3::new(1.0, 0.0, 0.0),
             distance_m: LEARNING_VIEW_DISTANCE_M,
@@ -583,6 +583,7 @@ pub enum SaveControllersError {
 /// The learned controllers in use, as JSON (`shoal.save_controllers()`).
 pub fn controllers_json(lab: &Lab) -> Result<String, SaveControllersError> {
     Ok(lab.runs()[0]
+        .scene()
         .learning()
         .ok_or(LabError::LearningLabOnly("save_controllers"))?
         .save_json()?)

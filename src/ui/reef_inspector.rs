@@ -39,7 +39,7 @@ pub fn reef_inspector_ui(
     rects: &mut WidgetRects,
 ) -> Option<u32> {
     let fish_eye = fish_eye.as_ref();
-    let reef = run.reef()?;
+    let reef = run.scene().reef()?;
     let animal = selected.and_then(|i| reef.animals().get(i as usize).map(|a| (i as usize, a)));
     // Every column fits `content_height`: the text columns scroll, the plot and the
     // event log take what their caption (one line) leaves.

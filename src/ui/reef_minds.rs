@@ -1,236 +1,15 @@
 //! The reef's *Minds* section of the side panel: each kind of fish's hunger,
-//! libido and fear constants and its character, over the demo's own values.
+//! libido and fear constants and its character, over the demo's own values;
+//! each row is drawn from its entry in [`MindTraits::NUMBERS`]
+//! (`settings/minds.rs`), the rows a kind shows from [`MindTraits::shown_for`].
 
 use eframe::egui;
 
 use super::WidgetRects;
-use crate::sim::reef::mind::habits::{
-    COURAGEOUS_BOX_BODY_LENGTHS, DEFAULT_BOX_BODY_LENGTHS, DEFAULT_PERSISTENCE_BODY_LENGTHS,
-    DEVOTED_BODY_LENGTHS, FICKLE_BODY_LENGTHS, KindTraits, MindTraits, TIMID_BOX_BODY_LENGTHS,
-};
-use crate::sim::reef::mind::mental_state::{
-    CALM_DIGESTION_RATE, CALM_LIBIDO_RATE, MANIC_LIBIDO_RATE, NOMINAL_DIGESTION_RATE,
-    NOMINAL_LIBIDO_RATE, RAVENOUS_DIGESTION_RATE,
-};
+use super::setting_slider::setting_row;
+use crate::settings::reef::ReefSettings;
+use crate::sim::reef::mind::habits::{KindTraits, MindTraits};
 use crate::sim::reef::mind::{FishKind, Habits};
-
-/// A row of the *Minds* section: one of [`MindTraits::ALL`] (by name), how it
-/// reads to a student, and its named values.
-struct MindRow {
-    /// The trait's settings name, in [`MindTraits::ALL`].
-    name: &'static str,
-    /// Short name for the widget rectangles (`reef_minds_<key>`).
-    key: &'static str,
-    label: &'static str,
-    help: &'static str,
-    suffix: &'static str,
-    /// A slider (logarithmic or not), or only the named values.
-    slider: Option<bool>,
-    /// Named values: (label, value, what it means).
-    presets: &'static [(&'static str, f32, &'static str)],
-    /// The kinds the row matters for.
-    kinds: &'static [FishKind],
-}
-
-const ALL_KINDS: &[FishKind] = &FishKind::ALL;
-const NOT_PREDATORS: &[FishKind] = &[FishKind::Prey, FishKind::Pacifist];
-
-const MIND_ROWS: [MindRow; 9] = [
-    MindRow {
-        name: "digestion_rate_per_unit",
-        key: "hunger",
-        label: "Hunger grows (p0)",
-        help: "p0: how fast a meal is digested, so how soon the fish is hungry again, \
-               per time unit of 1/40 s. Calm (Shoal's default) 0.0003: hungry again \
-               21 s after a full meal. The paper's nominal 0.00067: after 9 s; \
-               ravenous 0.005: after 1 s",
-        suffix: "",
-        slider: Some(true),
-        presets: &[
-            ("Calm", CALM_DIGESTION_RATE, "p0 = 0.0003 (Shoal's default)"),
-            (
-                "Nominal",
-                NOMINAL_DIGESTION_RATE,
-                "p0 = 0.00067 (the paper's)",
-            ),
-            (
-                "Ravenous",
-                RAVENOUS_DIGESTION_RATE,
-                "p0 = 0.005 (the paper's)",
-            ),
-        ],
-        kinds: ALL_KINDS,
-    },
-    MindRow {
-        name: "libido_rate_per_unit",
-        key: "libido",
-        label: "Libido grows (p1)",
-        help: "p1: how fast the wish to mate grows after mating, per time unit of \
-               1/40 s. Calm (Shoal's default) 0.0011: a fed fish wants to mate again \
-               6 s after mating. The paper's nominal 0.0025: after 2.5 s; sexual \
-               mania 0.01: after 0.6 s",
-        suffix: "",
-        slider: Some(true),
-        presets: &[
-            ("Calm", CALM_LIBIDO_RATE, "p1 = 0.0011 (Shoal's default)"),
-            ("Nominal", NOMINAL_LIBIDO_RATE, "p1 = 0.0025 (the paper's)"),
-            ("Sexual mania", MANIC_LIBIDO_RATE, "p1 = 0.01 (the paper's)"),
-        ],
-        kinds: &[FishKind::Pacifist],
-    },
-    MindRow {
-        name: "appetite_food_units",
-        key: "appetite",
-        label: "Appetite (α)",
-        help: "α: how much food fills the fish (a plankton particle is 1, a prey fish 4)",
-        suffix: " food",
-        slider: Some(false),
-        presets: &[],
-        kinds: ALL_KINDS,
-    },
-    MindRow {
-        name: "fear_distance_body_lengths",
-        key: "fear_distance",
-        label: "Fear distance (D0)",
-        help: "D0: a shark nearer than this many body lengths frightens the fish as much \
-               as it can be (paper: 3.85)",
-        suffix: " BL",
-        slider: Some(false),
-        presets: &[],
-        kinds: NOT_PREDATORS,
-    },
-    MindRow {
-        name: "fear_threshold",
-        key: "alarm",
-        label: "Alarm at fear (f0)",
-        help: "f0: fear above this makes the fish take evasive action (paper: between 0.1 \
-               and 0.5)",
-        suffix: "",
-        slider: Some(false),
-        presets: &[],
-        kinds: NOT_PREDATORS,
-    },
-    MindRow {
-        name: "panic_threshold",
-        key: "panic",
-        label: "Panic at fear (f1)",
-        help: "f1: when the nearest shark frightens it more than this, a schooling fish \
-               stops schooling and flees alone",
-        suffix: "",
-        slider: Some(false),
-        presets: &[],
-        kinds: &[FishKind::Prey],
-    },
-    MindRow {
-        name: "urge_threshold",
-        key: "urge",
-        label: "Acts on urges at (r)",
-        help: "r: hunger (or the wish to mate) above this sends the fish looking for food \
-               (or a partner) (paper: below 0.5)",
-        suffix: "",
-        slider: Some(false),
-        presets: &[],
-        kinds: ALL_KINDS,
-    },
-    MindRow {
-        name: "collision_box_ahead_body_lengths",
-        key: "box",
-        label: "Collision box",
-        help: "How far ahead the fish watches for things in its way",
-        suffix: "",
-        slider: None,
-        presets: &[
-            (
-                "Timid",
-                TIMID_BOX_BODY_LENGTHS,
-                "swerves from anything far ahead (1.5 body lengths)",
-            ),
-            (
-                "Ordinary",
-                DEFAULT_BOX_BODY_LENGTHS,
-                "swerves from what is 0.8 body lengths ahead",
-            ),
-            (
-                "Courageous",
-                COURAGEOUS_BOX_BODY_LENGTHS,
-                "swerves only at the last moment (0.3 body lengths)",
-            ),
-        ],
-        kinds: ALL_KINDS,
-    },
-    MindRow {
-        name: "persistence_body_lengths",
-        key: "persistence",
-        label: "Persistence",
-        help: "Does the fish stick to the food, prey or partner it chose?",
-        suffix: "",
-        slider: None,
-        presets: &[
-            (
-                "Fickle",
-                FICKLE_BODY_LENGTHS,
-                "switches to any target that is a little nearer",
-            ),
-            (
-                "Ordinary",
-                DEFAULT_PERSISTENCE_BODY_LENGTHS,
-                "switches when another is 2 body lengths nearer",
-            ),
-            (
-                "Devoted",
-                DEVOTED_BODY_LENGTHS,
-                "sticks to its target unless another is 20 body lengths nearer",
-            ),
-        ],
-        kinds: ALL_KINDS,
-    },
-];
-
-/// The control of one row of the *Minds* grid (its label is the caller's): a
-/// slider over the trait's range and its named values as buttons; what the
-/// teacher picks goes into `traits`.
-fn mind_row_ui(
-    ui: &mut egui::Ui,
-    row: &MindRow,
-    traits: &mut MindTraits,
-    now: &Habits,
-    rects: &mut WidgetRects,
-) {
-    let Some(spec) = MindTraits::ALL.iter().find(|t| t.name == row.name) else {
-        return;
-    };
-    ui.vertical(|ui| {
-        let value = (spec.current)(now);
-        if let Some(logarithmic) = row.slider {
-            let mut v = value;
-            let r = ui
-                .add(
-                    egui::Slider::new(&mut v, spec.min..=spec.max)
-                        .logarithmic(logarithmic)
-                        .suffix(row.suffix),
-                )
-                .on_hover_text(row.help);
-            rects.insert(&format!("reef_minds_{}", row.key), r.rect);
-            if r.changed() {
-                (spec.set)(traits, Some(v));
-            }
-        }
-        if !row.presets.is_empty() {
-            ui.horizontal_wrapped(|ui| {
-                for &(label, v, what) in row.presets {
-                    let r = ui
-                        .selectable_label(value == v, label)
-                        .on_hover_text(format!("{label}: {what}"));
-                    let name = label.to_lowercase().replace(' ', "_");
-                    rects.insert(&format!("reef_minds_{}_{name}", row.key), r.rect);
-                    if r.clicked() {
-                        (spec.set)(traits, Some(v));
-                    }
-                }
-            });
-        }
-    });
-}
 
 /// The reef's *Minds* section: the constants of hunger, libido and fear and
 /// the personality of one kind of fish at a time (Tu & Terzopoulos §6), over
@@ -286,27 +65,18 @@ pub fn minds_ui(
                 return;
             };
             let t = traits.of_mut(*kind);
-            let now = t.applied_to(demo);
+            // Each row shows what the kind's fish have (the demo's own, with
+            // the teacher's changes) and puts a change into the teacher's.
+            let mut now = MindTraits::of_fish(&t.applied_to(demo));
+            let prefix = MindTraits::prefix(ReefSettings::PREFIX, *kind);
             egui::Grid::new("reef_minds_grid")
                 .num_columns(2)
                 .spacing([8.0, 6.0])
                 .show(ui, |ui| {
-                    let kind_name = serde_json::to_value(*kind)
-                        .ok()
-                        .and_then(|v| v.as_str().map(str::to_owned))
-                        .unwrap_or_default();
-                    for row in MIND_ROWS.iter().filter(|r| r.kinds.contains(kind)) {
-                        // The studio's rules name it `reef.traits.prey.fear_threshold`.
-                        let key = format!("reef.traits.{kind_name}.{}", row.name);
-                        super::studio_panel::control_row(
-                            ui,
-                            rects,
-                            &key,
-                            |ui| {
-                                ui.label(row.label).on_hover_text(row.help);
-                            },
-                            |ui, rects| mind_row_ui(ui, row, t, &now, rects),
-                        );
+                    for setting in MindTraits::shown_for(*kind) {
+                        if setting_row(ui, rects, &prefix, setting, &mut now) {
+                            setting.set(t, setting.value(&now));
+                        }
                     }
                 });
             let changed = *t != MindTraits::default();
@@ -319,4 +89,85 @@ pub fn minds_ui(
             }
         });
     rects.insert("reef_minds", header.header_response.rect);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::settings::studio::Studio;
+    use crate::sim::reef::mind::Sex;
+    use crate::ui::studio_panel::draw_controls_for_test;
+
+    /// The section opened on `kind`, over a demo with every kind: the names of
+    /// the widgets it draws.
+    fn drawn(kind: FishKind) -> Vec<String> {
+        let demo: Vec<Habits> = FishKind::ALL
+            .iter()
+            .map(|&k| Habits::new(k, Sex::Female, 0))
+            .collect();
+        let mut traits = KindTraits::default();
+        let mut kind = kind;
+        let (rects, _) = draw_controls_for_test(&Studio::default(), false, |ui, rects| {
+            // Every collapsed section open.
+            ui.ctx().memory_mut(|m| m.set_everything_is_visible(true));
+            minds_ui(ui, &mut traits, &mut kind, &demo, rects);
+        });
+        assert_eq!(traits, KindTraits::default(), "drawing changes nothing");
+        rects.iter().map(|(name, _)| name.clone()).collect()
+    }
+
+    /// Every widget the section drew before its rows came from the settings
+    /// table is still drawn under its name (the browser tests click them).
+    #[test]
+    fn each_kind_draws_its_rows_under_the_names_they_always_had() {
+        let hunger = ["hunger", "hunger_calm", "hunger_nominal", "hunger_ravenous"];
+        let libido = [
+            "libido",
+            "libido_calm",
+            "libido_nominal",
+            "libido_sexual_mania",
+        ];
+        let fear = ["fear_distance", "alarm"];
+        let character = [
+            "urge",
+            "box_timid",
+            "box_ordinary",
+            "box_courageous",
+            "persistence_fickle",
+            "persistence_ordinary",
+            "persistence_devoted",
+        ];
+        let section = ["predator", "prey", "pacifist", "reset"];
+        let predator: Vec<&str> = [&hunger[..], &["appetite"], &character, &section].concat();
+        let prey: Vec<&str> = [
+            &hunger[..],
+            &["appetite"],
+            &fear,
+            &["panic"],
+            &character,
+            &section,
+        ]
+        .concat();
+        let pacifist: Vec<&str> = [
+            &hunger[..],
+            &libido,
+            &["appetite"],
+            &fear,
+            &character,
+            &section,
+        ]
+        .concat();
+        for (kind, rows) in [
+            (FishKind::Predator, predator),
+            (FishKind::Prey, prey),
+            (FishKind::Pacifist, pacifist),
+        ] {
+            let mut wanted: Vec<String> = rows.iter().map(|r| format!("reef_minds_{r}")).collect();
+            wanted.push("reef_minds".to_owned());
+            wanted.sort();
+            let mut got = drawn(kind);
+            got.sort();
+            assert_eq!(got, wanted, "{kind:?}");
+        }
+    }
 }

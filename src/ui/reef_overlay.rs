@@ -30,7 +30,7 @@ pub fn draw_vision(
     alpha: f32,
     selected: u32,
 ) {
-    let Some(reef) = run.reef() else {
+    let Some(reef) = run.scene().reef() else {
         return;
     };
     let Some(a) = reef.animals().get(selected as usize).filter(|a| a.alive) else {
@@ -124,7 +124,7 @@ pub fn draw_water(
     run: &Run,
     overlay: ReefOverlay,
 ) {
-    let Some(reef) = run.reef() else {
+    let Some(reef) = run.scene().reef() else {
         return;
     };
     if overlay == ReefOverlay::None {
@@ -188,7 +188,7 @@ pub fn draw_name_tags(
     run: &Run,
     alpha: f32,
 ) {
-    let Some(reef) = run.reef() else {
+    let Some(reef) = run.scene().reef() else {
         return;
     };
     let drawn = run.drawn_positions_m(alpha);
@@ -228,7 +228,7 @@ pub fn draw_choices(
     alpha: f32,
     except: Option<u32>,
 ) {
-    let Some(reef) = run.reef() else {
+    let Some(reef) = run.scene().reef() else {
         return;
     };
     let drawn = run.drawn_positions_m(alpha);

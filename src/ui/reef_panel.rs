@@ -265,7 +265,7 @@ impl ScenePanel for ReefPanel {
     ) -> Option<Notice> {
         // The Minds section shows the demo's own values under the teacher's.
         self.demo_habits.clear();
-        if let Some(reef) = lab.runs()[0].reef() {
+        if let Some(reef) = lab.runs()[0].scene().reef() {
             for kind in FishKind::ALL {
                 if let Some(a) = reef.animals().iter().find(|a| a.demo_habits.kind == kind) {
                     self.demo_habits.push(a.demo_habits);
@@ -274,7 +274,7 @@ impl ScenePanel for ReefPanel {
         }
         self.refresh_fish_eye(lab, now_secs, ctx);
         self.selected_name = lab.settings().reef.selected.and_then(|i| {
-            let reef = lab.runs()[0].reef()?;
+            let reef = lab.runs()[0].scene().reef()?;
             Some(reef.animals().get(i as usize)?.name(i as usize))
         });
         self.skip.before_frame(lab)
@@ -367,7 +367,7 @@ impl ScenePanel for ReefPanel {
     }
 
     fn framing(&self, run: &Run, settings: &Settings) -> Option<Framing> {
-        demo_framing(run.reef()?, settings.reef.demo)
+        demo_framing(run.scene().reef()?, settings.reef.demo)
     }
 
     fn view_subject(&self, settings: &Settings) -> &'static str {
@@ -433,6 +433,7 @@ impl ReefPanel {
             return;
         }
         let Some(retina) = lab.runs()[0]
+            .scene()
             .reef()
             .and_then(|r| r.retina(selected as usize, FISH_EYE_SIZE_PX))
         else {

@@ -1,8 +1,9 @@
 //! One row of a settings grid drawn from the setting's table entry
 //! ([`NumberSetting`], `settings/number.rs`): its label with hover help, then
-//! its control (a slider, a number field or a count with − and +) through the
-//! studio's rules (hidden, locked, mystery, the teacher's toggles), its widget
-//! rectangle recorded under the entry's name for the browser tests.
+//! its control (a slider, a number field or a count with − and +) and the
+//! buttons of its named values, through the studio's rules (hidden, locked,
+//! mystery, the teacher's toggles), its widget rectangles recorded under the
+//! entry's name for the browser tests.
 
 use eframe::egui;
 use egui::emath::Numeric;
@@ -59,8 +60,19 @@ where
     let edit = |ui: &mut egui::Ui, rects: &mut WidgetRects, settings: &mut S| {
         let before = setting.value(settings);
         let mut value = before;
-        control(ui, rects, setting, &mut value);
-        let changed = value != before;
+        let picked = if setting.named.is_empty() {
+            control(ui, rects, setting, &mut value);
+            false
+        } else {
+            // The named values' buttons under the control.
+            ui.vertical(|ui| {
+                control(ui, rects, setting, &mut value);
+                named_values(ui, rects, setting, &mut value)
+            })
+            .inner
+        };
+        // A named value picked is set even when it is the value shown.
+        let changed = picked || value != before;
         if changed {
             setting.set(settings, value);
         }
@@ -184,7 +196,36 @@ fn control<S, T>(
                 }
             });
         }
+        Widget::NamedOnly => {}
     }
+}
+
+/// The buttons of `setting`'s named values, the one `value` has selected;
+/// returns whether one was picked (and put in `value`).
+fn named_values<S, T>(
+    ui: &mut egui::Ui,
+    rects: &mut WidgetRects,
+    setting: &NumberSetting<S, T>,
+    value: &mut T,
+) -> bool
+where
+    T: SettingValue + Numeric,
+{
+    ui.horizontal_wrapped(|ui| {
+        let mut picked = false;
+        for named in setting.named {
+            let r = ui
+                .selectable_label(*value == named.value, named.label)
+                .on_hover_text(format!("{}: {}", named.label, named.help));
+            rects.insert(&named.rect(setting.rect), r.rect);
+            if r.clicked() {
+                *value = named.value;
+                picked = true;
+            }
+        }
+        picked
+    })
+    .inner
 }
 
 #[cfg(test)]
@@ -197,6 +238,8 @@ mod tests {
     use crate::settings::studio::{ControlRule, Studio};
     use crate::settings::tank::TankSettings;
     use crate::settings::{Settings, Side};
+    use crate::sim::reef::mind::FishKind;
+    use crate::sim::reef::mind::habits::MindTraits;
     use crate::ui::studio_panel::draw_controls_for_test;
 
     /// Draws every row of `table` of `settings` under `studio` and returns the
@@ -223,12 +266,24 @@ mod tests {
 
     /// The names of the rectangles a row records.
     fn rect_names<S>(number: &Number<S>) -> Vec<String> {
-        let (widget, rect) = match number {
-            Number::F32(s) => (s.widget, s.rect),
-            Number::U32(s) => (s.widget, s.rect),
-            Number::U64(s) => (s.widget, s.rect),
+        let (widget, rect, named): (_, _, Vec<String>) = match number {
+            Number::F32(s) => (
+                s.widget,
+                s.rect,
+                s.named.iter().map(|n| n.rect(s.rect)).collect(),
+            ),
+            Number::U32(s) => (
+                s.widget,
+                s.rect,
+                s.named.iter().map(|n| n.rect(s.rect)).collect(),
+            ),
+            Number::U64(s) => (
+                s.widget,
+                s.rect,
+                s.named.iter().map(|n| n.rect(s.rect)).collect(),
+            ),
         };
-        match widget {
+        let mut names = match widget {
             Widget::Count { typed, .. } => {
                 let mut names = vec![format!("{rect}_minus"), format!("{rect}_plus")];
                 if typed {
@@ -237,7 +292,10 @@ mod tests {
                 names
             }
             Widget::Slider { .. } | Widget::Field { .. } => vec![rect.to_owned()],
-        }
+            Widget::NamedOnly => vec![],
+        };
+        names.extend(named);
+        names
     }
 
     /// Every row of `table` draws its named widgets, and none of them once the
@@ -288,6 +346,41 @@ mod tests {
             &LearningSettings::NUMBERS,
             &settings.learning,
         );
+        for kind in FishKind::ALL {
+            check(
+                &MindTraits::prefix(ReefSettings::PREFIX, kind),
+                &MindTraits::NUMBERS,
+                settings.reef.traits.of(kind),
+            );
+        }
+    }
+
+    #[test]
+    fn the_minds_rows_keep_the_names_the_browser_tests_click() {
+        let mut traits = MindTraits::default();
+        let drawn = draw_table(
+            &Studio::default(),
+            "reef.traits.pacifist.",
+            &MindTraits::NUMBERS,
+            &mut traits,
+        );
+        for name in [
+            "reef_minds_hunger",
+            "reef_minds_hunger_calm",
+            "reef_minds_libido_nominal",
+            "reef_minds_libido_sexual_mania",
+            "reef_minds_appetite",
+            "reef_minds_fear_distance",
+            "reef_minds_alarm",
+            "reef_minds_panic",
+            "reef_minds_urge",
+            "reef_minds_box_courageous",
+            "reef_minds_persistence_devoted",
+        ] {
+            assert!(drawn.get(name).is_some(), "{name}");
+        }
+        assert!(drawn.get("reef_minds_box").is_none(), "named values only");
+        assert_eq!(traits, MindTraits::default(), "drawing leaves them unset");
     }
 
     #[test]

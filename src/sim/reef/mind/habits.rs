@@ -210,140 +210,58 @@ pub struct MindTraits {
     pub urge_threshold: Option<f32>,
 }
 
-/// One number a teacher can set in [`MindTraits`]: its name, its range and
-/// how to read and write it.
-pub struct MindTrait {
-    pub name: &'static str,
-    pub min: f32,
-    pub max: f32,
-    pub get: fn(&MindTraits) -> Option<f32>,
-    pub set: fn(&mut MindTraits, Option<f32>),
-    /// The value a fish has.
-    pub current: fn(&Habits) -> f32,
-    /// Gives a fish this value.
-    pub put: fn(&mut Habits, f32),
-}
-
 impl MindTraits {
-    /// Every trait with its range (the ranges [`Habits::sanitized`] keeps;
-    /// f0 and r within the paper's 0.1–0.5 and 0–0.5).
-    pub const ALL: [MindTrait; 9] = [
-        MindTrait {
-            name: "digestion_rate_per_unit",
-            min: 0.0,
-            max: 0.05,
-            get: |t| t.digestion_rate_per_unit,
-            set: |t, v| t.digestion_rate_per_unit = v,
-            current: |h| h.mental.digestion_rate_per_unit,
-            put: |h, v| h.mental.digestion_rate_per_unit = v,
-        },
-        MindTrait {
-            name: "libido_rate_per_unit",
-            min: 0.0,
-            max: 0.05,
-            get: |t| t.libido_rate_per_unit,
-            set: |t, v| t.libido_rate_per_unit = v,
-            current: |h| h.mental.libido_rate_per_unit,
-            put: |h, v| h.mental.libido_rate_per_unit = v,
-        },
-        MindTrait {
-            name: "appetite_food_units",
-            min: 0.5,
-            max: 20.0,
-            get: |t| t.appetite_food_units,
-            set: |t, v| t.appetite_food_units = v,
-            current: |h| h.mental.appetite_food_units,
-            put: |h, v| h.mental.appetite_food_units = v,
-        },
-        MindTrait {
-            name: "fear_distance_body_lengths",
-            min: 0.1,
-            max: 20.0,
-            get: |t| t.fear_distance_body_lengths,
-            set: |t, v| t.fear_distance_body_lengths = v,
-            current: |h| h.mental.fear_distance_body_lengths,
-            put: |h, v| h.mental.fear_distance_body_lengths = v,
-        },
-        MindTrait {
-            name: "collision_box_ahead_body_lengths",
-            min: 0.1,
-            max: 3.0,
-            get: |t| t.collision_box_ahead_body_lengths,
-            set: |t, v| t.collision_box_ahead_body_lengths = v,
-            current: |h| h.collision_box_ahead_body_lengths,
-            put: |h, v| h.collision_box_ahead_body_lengths = v,
-        },
-        MindTrait {
-            name: "persistence_body_lengths",
-            min: 0.0,
-            max: 50.0,
-            get: |t| t.persistence_body_lengths,
-            set: |t, v| t.persistence_body_lengths = v,
-            current: |h| h.persistence_body_lengths,
-            put: |h, v| h.persistence_body_lengths = v,
-        },
-        MindTrait {
-            name: "fear_threshold",
-            min: 0.1,
-            max: 0.5,
-            get: |t| t.fear_threshold,
-            set: |t, v| t.fear_threshold = v,
-            current: |h| h.fear_threshold,
-            put: |h, v| h.fear_threshold = v,
-        },
-        MindTrait {
-            name: "panic_threshold",
-            min: 0.5,
-            max: 1.0,
-            get: |t| t.panic_threshold,
-            set: |t, v| t.panic_threshold = v,
-            current: |h| h.panic_threshold,
-            put: |h, v| h.panic_threshold = v,
-        },
-        MindTrait {
-            name: "urge_threshold",
-            min: 0.01,
-            max: 0.5,
-            get: |t| t.urge_threshold,
-            set: |t, v| t.urge_threshold = v,
-            current: |h| h.urge_threshold,
-            put: |h, v| h.urge_threshold = v,
-        },
-    ];
-
     /// `habits` with every value given here put in (and kept in range).
     pub fn applied_to(&self, mut habits: Habits) -> Habits {
-        for t in &Self::ALL {
-            if let Some(v) = (t.get)(self) {
-                (t.put)(&mut habits, v);
+        let mut given = *self;
+        for (value, fish) in given.beside(&mut habits) {
+            if let Some(v) = *value {
+                *fish = v;
             }
         }
         habits.sanitized()
     }
 
-    /// Every value given brought into its range; a value that is not a
-    /// number is dropped (the demo's own is used).
-    pub fn clamped(mut self) -> Self {
-        for t in &Self::ALL {
-            let value = (t.get)(&self).filter(|v| v.is_finite());
-            (t.set)(&mut self, value.map(|v| v.clamp(t.min, t.max)));
+    /// The traits `habits` has, every one given: applied to a fish, they give
+    /// it every number of `habits` (the reef's *Minds* panel draws its rows
+    /// over those of the demo's own fish with the teacher's changes).
+    pub fn of_fish(habits: &Habits) -> Self {
+        let mut traits = Self::default();
+        let mut habits = *habits;
+        for (value, fish) in traits.beside(&mut habits) {
+            *value = Some(*fish);
         }
-        self
+        traits
     }
 
-    /// The first value out of its range, as (name, reason).
-    pub fn validate(&self) -> Result<(), (&'static str, String)> {
-        for t in &Self::ALL {
-            if let Some(v) = (t.get)(self)
-                && !(v.is_finite() && (t.min..=t.max).contains(&v))
-            {
-                return Err((
-                    t.name,
-                    format!("{v} is out of range: choose from {} to {}", t.min, t.max),
-                ));
-            }
-        }
-        Ok(())
+    /// Each trait beside the number of a fish it replaces. (Their ranges,
+    /// words and named values, as settings: `MindTraits::NUMBERS`, in
+    /// `settings/minds.rs`.)
+    fn beside<'a>(&'a mut self, h: &'a mut Habits) -> [(&'a mut Option<f32>, &'a mut f32); 9] {
+        let m = &mut h.mental;
+        [
+            (
+                &mut self.digestion_rate_per_unit,
+                &mut m.digestion_rate_per_unit,
+            ),
+            (&mut self.libido_rate_per_unit, &mut m.libido_rate_per_unit),
+            (&mut self.appetite_food_units, &mut m.appetite_food_units),
+            (
+                &mut self.fear_distance_body_lengths,
+                &mut m.fear_distance_body_lengths,
+            ),
+            (
+                &mut self.collision_box_ahead_body_lengths,
+                &mut h.collision_box_ahead_body_lengths,
+            ),
+            (
+                &mut self.persistence_body_lengths,
+                &mut h.persistence_body_lengths,
+            ),
+            (&mut self.fear_threshold, &mut h.fear_threshold),
+            (&mut self.panic_threshold, &mut h.panic_threshold),
+            (&mut self.urge_threshold, &mut h.urge_threshold),
+        ]
     }
 }
 
@@ -388,7 +306,7 @@ mod tests {
     }
 
     #[test]
-    fn traits_replace_only_what_they_set_and_name_a_bad_value() {
+    fn traits_replace_only_what_they_set() {
         let demo = Habits::new(FishKind::Predator, Sex::Male, 9);
         assert_eq!(MindTraits::default().applied_to(demo), demo);
         let ravenous = MindTraits {
@@ -406,20 +324,27 @@ mod tests {
             demo.mental.appetite_food_units
         );
         assert_eq!(h.fear_threshold, demo.fear_threshold);
-        for t in &MindTraits::ALL {
-            let mut bad = MindTraits::default();
-            (t.set)(&mut bad, Some(t.max + 1.0));
-            let (name, reason) = bad.validate().unwrap_err();
-            assert_eq!(name, t.name);
-            assert!(reason.contains("out of range"), "{reason}");
-            (t.set)(&mut bad, Some(f32::NAN));
-            assert!(bad.validate().is_err());
-            (t.set)(&mut bad, Some(t.min));
-            assert_eq!(bad.validate(), Ok(()));
-            let mut one = MindTraits::default();
-            (t.set)(&mut one, Some(t.min));
-            assert_eq!((t.current)(&one.applied_to(demo)), t.min, "{}", t.name);
-        }
+    }
+
+    #[test]
+    fn a_fish_s_traits_give_every_value_and_make_the_fish_again() {
+        let mut h = Habits::new(FishKind::Prey, Sex::Female, 2);
+        h.mental.digestion_rate_per_unit = 0.001;
+        h.mental.libido_rate_per_unit = 0.002;
+        h.mental.appetite_food_units = 5.0;
+        h.mental.fear_distance_body_lengths = 6.0;
+        h.collision_box_ahead_body_lengths = 1.1;
+        h.persistence_body_lengths = 7.0;
+        h.fear_threshold = 0.2;
+        h.panic_threshold = 0.6;
+        h.urge_threshold = 0.3;
+        let traits = MindTraits::of_fish(&h);
+        let json = serde_json::to_value(traits).unwrap();
+        let fields = json.as_object().unwrap();
+        assert_eq!(fields.len(), 9);
+        assert!(fields.values().all(|v| v.is_number()), "{json}");
+        let other = Habits::new(FishKind::Prey, Sex::Female, 2);
+        assert_eq!(traits.applied_to(other), h);
     }
 
     #[test]
