@@ -29,6 +29,8 @@ pub enum KeyAction {
     Zoom(f32),
     /// Select the next (+1) or previous (−1) animal, and say what it does.
     NextAnimal(i8),
+    /// Turn the camera's following of the selected animal on or off.
+    Follow,
     /// Read the whole tank in words.
     Describe,
     /// Open or close the *Keyboard* window.
@@ -78,6 +80,10 @@ pub const SHORTCUTS: &[Shortcut] = &[
     Shortcut {
         keys: "N and B",
         does: "Select the next or the previous fish, and hear what it does",
+    },
+    Shortcut {
+        keys: "F",
+        does: "The camera follows the selected fish, or stops (Physics fish, Reef)",
     },
     Shortcut {
         keys: "D",
@@ -143,6 +149,7 @@ pub fn key_actions(ctx: &egui::Context) -> Vec<KeyAction> {
                 Key::N => Some(KeyAction::NextAnimal(1)),
                 Key::B => Some(KeyAction::NextAnimal(-1)),
                 Key::D => Some(KeyAction::Describe),
+                Key::F => Some(KeyAction::Follow),
                 Key::Questionmark => Some(KeyAction::Help),
                 Key::Slash if modifiers.shift => Some(KeyAction::Help),
                 _ => None,
@@ -273,6 +280,25 @@ impl super::ShoalApp {
                     }
                 }
                 KeyAction::Describe => panel_actions.push(PanelAction::Describe),
+                KeyAction::Follow => {
+                    let class = settings.scene.class();
+                    let words = match class.toggle_camera_follow(settings) {
+                        Some(true) => "The camera follows the selected fish.".to_owned(),
+                        Some(false)
+                            if class
+                                .selected(settings, crate::settings::Side::Left)
+                                .is_none() =>
+                        {
+                            "Select a fish first (N or B), then F follows it.".to_owned()
+                        }
+                        Some(false) => "The camera no longer follows the fish.".to_owned(),
+                        None => format!(
+                            "In the {} the camera does not follow a fish.",
+                            class.facts().label
+                        ),
+                    };
+                    self.say(words);
+                }
                 KeyAction::Help => self.keys_open = !self.keys_open,
                 KeyAction::PlayPause | KeyAction::Scene(_) | KeyAction::Speed(_) => {}
             }
@@ -394,6 +420,7 @@ mod tests {
         );
         assert_eq!(press(Key::N, false, false), [KeyAction::NextAnimal(1)]);
         assert_eq!(press(Key::D, false, false), [KeyAction::Describe]);
+        assert_eq!(press(Key::F, false, false), [KeyAction::Follow]);
         assert_eq!(press(Key::Questionmark, false, false), [KeyAction::Help]);
         assert!(
             matches!(press(Key::ArrowLeft, false, false)[..], [KeyAction::Turn(x, _)] if x < 0.0)

@@ -65,6 +65,13 @@ pub trait SceneClass: Sync {
     /// would; a scene that lets no one pick ignores it.
     fn select(&self, _settings: &mut Settings, _side: Side, _animal: Option<u32>) {}
 
+    /// Turns the camera's following of the selected animal on or off (the F
+    /// key); returns whether it follows now, or `None` for a scene whose
+    /// camera does not follow.
+    fn toggle_camera_follow(&self, _settings: &mut Settings) -> Option<bool> {
+        None
+    }
+
     /// How many tanks the scene shows with these settings (two while the
     /// schooling lab compares).
     fn tanks(&self, _settings: &Settings) -> usize {

@@ -46,6 +46,12 @@ impl SceneClass for PhysicsTank {
         settings.physics.selected = animal;
     }
 
+    fn toggle_camera_follow(&self, settings: &mut Settings) -> Option<bool> {
+        // Only with a fish to follow, as the panel's check box.
+        settings.physics.follow = !settings.physics.follow && settings.physics.selected.is_some();
+        Some(settings.physics.follow)
+    }
+
     fn set_animal_count(&self, settings: &mut Settings, count: u32) {
         settings.physics.fish_count = count;
         settings.physics.sharks = 0;

@@ -64,6 +64,12 @@ impl SceneClass for Reef {
         settings.reef.selected = animal;
     }
 
+    fn toggle_camera_follow(&self, settings: &mut Settings) -> Option<bool> {
+        // Only with a fish to follow, as the panel's check box.
+        settings.reef.follow = !settings.reef.follow && settings.reef.selected.is_some();
+        Some(settings.reef.follow)
+    }
+
     /// A new demo, body or count of prey or plankton builds a new reef.
     fn needs_rebuild(&self, before: &Settings, after: &Settings) -> bool {
         before.reef.rebuild_key() != after.reef.rebuild_key()

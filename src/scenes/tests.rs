@@ -291,3 +291,32 @@ fn no_code_outside_the_scenes_own_files_names_a_scene() {
     assert_eq!(names_a_scene("ReefScene::Reef"), None);
     assert_eq!(names_a_scene("run.reef().unwrap()"), Some(".reef()".into()));
 }
+
+#[test]
+fn the_keyboard_selects_and_follows_where_the_mouse_can() {
+    for scene in Scene::ALL {
+        let class = scene.class();
+        let mut settings = Settings {
+            scene,
+            ..Settings::default()
+        };
+        class.select(&mut settings, Side::Left, Some(3));
+        let picks = class.selected(&settings, Side::Left) == Some(3);
+        // The scenes whose panel lets one click a fish.
+        let clickable = matches!(scene, Scene::Boids | Scene::Physics | Scene::Reef);
+        assert_eq!(picks, clickable, "{scene:?}");
+        match class.toggle_camera_follow(&mut settings) {
+            Some(on) => {
+                assert!(on, "{scene:?}: F follows the selected fish");
+                assert_eq!(class.toggle_camera_follow(&mut settings), Some(false));
+                class.select(&mut settings, Side::Left, None);
+                assert_eq!(
+                    class.toggle_camera_follow(&mut settings),
+                    Some(false),
+                    "{scene:?}: nothing to follow"
+                );
+            }
+            None => assert!(!matches!(scene, Scene::Physics | Scene::Reef), "{scene:?}"),
+        }
+    }
+}

@@ -216,7 +216,9 @@ where
         for named in setting.named {
             let r = ui
                 .selectable_label(*value == named.value, named.label)
-                .on_hover_text(format!("{}: {}", named.label, named.help));
+                .on_hover_text(format!("{}: {}", named.label, named.help))
+                // Which setting it is a value of, for a screen reader.
+                .accessible_name(format!("{}: {}", setting.label, named.label));
             rects.insert(&named.rect(setting.rect), r.rect);
             if r.clicked() {
                 *value = named.value;
