@@ -115,6 +115,14 @@ pub struct BoidsPanel {
     dragging: Option<(Side, usize)>,
     /// What each tank's selected fish paid attention to in the last step.
     attention: [Option<Attention>; 2],
+    /// Each tank's obstacles and tank box as the world has them (for the
+    /// rock buttons, which work without a mouse).
+    obstacles: [Vec<Obstacle>; 2],
+    tanks: [Option<crate::sim::Tank>; 2],
+    /// The obstacle the rock buttons act on, by index.
+    rock: usize,
+    /// Why the last rock button changed nothing, shown next frame.
+    rock_notice: Option<Notice>,
 }
 
 impl ScenePanel for BoidsPanel {
@@ -130,8 +138,11 @@ impl ScenePanel for BoidsPanel {
                 self.attention[run.side().index()] =
                     selected_attention(world, lab.settings(), run.side());
             }
+            let i = run.side().index();
+            self.obstacles[i] = run.scene().obstacles().to_vec();
+            self.tanks[i] = Some(*run.scene().tank());
         }
-        None
+        self.rock_notice.take()
     }
 
     fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
@@ -213,6 +224,16 @@ impl ScenePanel for BoidsPanel {
                 }
             });
             ui.label(egui::RichText::new(tool.help()).small().weak());
+            let keyboard = RockKeys {
+                tool: *tool,
+                side: edit_side,
+                obstacles: &self.obstacles[edit_side.index()],
+                tank: self.tanks[edit_side.index()],
+                rock: &mut self.rock,
+            };
+            if let Some(notice) = keyboard.ui(ui, settings, rects) {
+                self.rock_notice = Some(notice);
+            }
             let restore = ui
                 .add_enabled(
                     settings.tank(edit_side).obstacles.is_some(),
@@ -340,7 +361,7 @@ impl BoidsPanel {
                 };
                 let mut next = current;
                 next.push(rock);
-                propose_obstacles(settings, side, next)
+                propose_obstacles(settings, side, next, &tank)
             }
             EditTool::RemoveRock => {
                 if !response.clicked() {
@@ -349,7 +370,7 @@ impl BoidsPanel {
                 let i = picked_obstacle(&current, origin, direction)?;
                 let mut next = current;
                 next.remove(i);
-                propose_obstacles(settings, side, next)
+                propose_obstacles(settings, side, next, &tank)
             }
             EditTool::MoveRock => {
                 if response.drag_started_by(egui::PointerButton::Primary) {
@@ -363,7 +384,7 @@ impl BoidsPanel {
                 {
                     let mut next = current;
                     next[i] = next[i].moved_to(Vec2::new(p.x, p.z));
-                    notice = propose_obstacles(settings, side, next);
+                    notice = propose_obstacles(settings, side, next, &tank);
                 }
                 if response.drag_stopped() {
                     self.dragging = None;
@@ -374,13 +395,155 @@ impl BoidsPanel {
     }
 }
 
-/// Uses `obstacles` for the tank of `side` if every one is valid; otherwise
-/// explains why not and changes nothing.
+/// How far one press of a rock's arrow button moves it, metres (0.5: a
+/// rock's radius or so, a few presses cross a gap between rocks).
+const ROCK_STEP_M: f32 = 0.5;
+
+/// The rock tools without a mouse: buttons that pick a rock and move or
+/// remove it, or add one in the middle of the floor (WCAG 2.1.1: every drag
+/// has a key or button alternative).
+struct RockKeys<'a> {
+    tool: EditTool,
+    side: Side,
+    obstacles: &'a [Obstacle],
+    tank: Option<crate::sim::Tank>,
+    rock: &'a mut usize,
+}
+
+impl RockKeys<'_> {
+    fn ui(
+        self,
+        ui: &mut egui::Ui,
+        settings: &mut Settings,
+        rects: &mut WidgetRects,
+    ) -> Option<Notice> {
+        let tank = self.tank?;
+        let current: Vec<Obstacle> = settings
+            .tank(self.side)
+            .obstacles
+            .clone()
+            .unwrap_or_else(|| self.obstacles.to_vec());
+        let mut proposal = None;
+        match self.tool {
+            EditTool::Look => return None,
+            EditTool::AddRock => {
+                let add = ui.button("Add a rock in the middle").on_hover_text(
+                    "Without a mouse: a new rock on the sand in the middle of the tank",
+                );
+                rects.insert("rock_add_middle", add.rect);
+                if add.clicked() {
+                    // The free spot nearest the middle of the floor.
+                    let centre = 0.5 * (tank.min_m + tank.max_m);
+                    let spots = (0..12).flat_map(|ring| {
+                        let count = if ring == 0 { 1 } else { 8 * ring };
+                        (0..count).map(move |k| {
+                            let angle = std::f32::consts::TAU * k as f32 / count as f32;
+                            let r = ring as f32 * ROCK_STEP_M;
+                            Vec2::new(centre.x + r * angle.cos(), centre.z + r * angle.sin())
+                        })
+                    });
+                    let free = spots
+                        .map(|p| {
+                            let mut next = current.clone();
+                            next.push(Obstacle::Rock {
+                                center_m: Vec3::new(
+                                    p.x,
+                                    tank.min_m.y - 0.2 * NEW_ROCK_RADIUS_M,
+                                    p.y,
+                                ),
+                                radius_m: NEW_ROCK_RADIUS_M,
+                            });
+                            next
+                        })
+                        .find(|next| {
+                            crate::sim::boids::placement::check_obstacles(next, &tank).is_ok()
+                        });
+                    match free {
+                        Some(next) => {
+                            *self.rock = next.len() - 1;
+                            proposal = Some(next);
+                        }
+                        None => {
+                            return Some(Notice::info("There is no free place for another rock."));
+                        }
+                    }
+                }
+            }
+            EditTool::MoveRock | EditTool::RemoveRock => {
+                if current.is_empty() {
+                    ui.label("No rocks in this tank.");
+                    return None;
+                }
+                let n = current.len();
+                *self.rock = (*self.rock).min(n - 1);
+                let at = current[*self.rock].footprint_center_m();
+                ui.horizontal_wrapped(|ui| {
+                    let previous = ui.button("◀").accessible_name("Previous rock");
+                    rects.insert("rock_previous", previous.rect);
+                    if previous.clicked() {
+                        *self.rock = (*self.rock + n - 1) % n;
+                    }
+                    // Where it is, in words a screen reader reads.
+                    ui.label(format!(
+                        "Rock {} of {n}: {:.1} m from the left, {:.1} m from the front",
+                        *self.rock + 1,
+                        at.x - tank.min_m.x,
+                        tank.max_m.z - at.y,
+                    ));
+                    let next = ui.button("▶").accessible_name("Next rock");
+                    rects.insert("rock_next", next.rect);
+                    if next.clicked() {
+                        *self.rock = (*self.rock + 1) % n;
+                    }
+                });
+                if self.tool == EditTool::MoveRock {
+                    ui.horizontal_wrapped(|ui| {
+                        for (label, name, dx, dz) in [
+                            ("Left", "rock_left", -ROCK_STEP_M, 0.0),
+                            ("Right", "rock_right", ROCK_STEP_M, 0.0),
+                            ("Back", "rock_back", 0.0, -ROCK_STEP_M),
+                            ("Front", "rock_front", 0.0, ROCK_STEP_M),
+                        ] {
+                            let r = ui
+                                .button(label)
+                                .on_hover_text(format!("Move this rock {ROCK_STEP_M} m"))
+                                .accessible_name(format!("Move the rock {}", label.to_lowercase()));
+                            rects.insert(name, r.rect);
+                            if r.clicked() {
+                                let mut next = current.clone();
+                                next[*self.rock] =
+                                    next[*self.rock].moved_to(at + Vec2::new(dx, dz));
+                                proposal = Some(next);
+                            }
+                        }
+                    });
+                } else {
+                    let remove = ui.button("Remove this rock");
+                    rects.insert("rock_remove_this", remove.rect);
+                    if remove.clicked() {
+                        let mut next = current;
+                        next.remove(*self.rock);
+                        proposal = Some(next);
+                    }
+                }
+            }
+        }
+        proposal.and_then(|next| propose_obstacles(settings, self.side, next, &tank))
+    }
+}
+
+/// Uses `obstacles` for the tank of `side` if the world would keep every
+/// one (each valid, none too close to another); otherwise explains why not and
+/// changes nothing.
 fn propose_obstacles(
     settings: &mut Settings,
     side: Side,
     obstacles: Vec<Obstacle>,
+    tank: &crate::sim::Tank,
 ) -> Option<Notice> {
+    if let Err((_, reason)) = crate::sim::boids::placement::check_obstacles(&obstacles, tank) {
+        return Some(Notice::info(format!("That rock cannot go there: {reason}")));
+    }
     let mut candidate = settings.clone();
     candidate.tank_mut(side).obstacles = Some(obstacles);
     match candidate.validate() {

@@ -57,6 +57,23 @@ pub(super) fn valid_obstacles(obstacles: Vec<Obstacle>, tank: &Tank) -> Vec<Obst
     kept
 }
 
+/// Would a world keep every one of `obstacles` ([`valid_obstacles`] leaves
+/// none out)? If not, the first it would leave out and why: the panel refuses
+/// such an edit with this reason instead of letting the rock vanish.
+pub fn check_obstacles(
+    obstacles: &[Obstacle],
+    tank: &Tank,
+) -> Result<(), (usize, ObstacleEditError)> {
+    for (i, obstacle) in obstacles.iter().enumerate() {
+        obstacle
+            .validate(tank)
+            .map_err(ObstacleEditError::from)
+            .and_then(|()| check_gap(obstacle, &obstacles[..i], None))
+            .map_err(|reason| (i, reason))?;
+    }
+    Ok(())
+}
+
 /// Why a teacher's obstacle edit was refused (nothing changed).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum ObstacleEditError {
