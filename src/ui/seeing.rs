@@ -27,7 +27,7 @@ pub struct Seeing {
 }
 
 fn id() -> egui::Id {
-    egui::Id::new("shoal_seeing_options")
+    egui::Id::unique("shoal_seeing_options")
 }
 
 /// The options in force.
