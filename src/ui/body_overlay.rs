@@ -165,6 +165,7 @@ pub fn draw_forces(
     let drawn = run.drawn_nodes_all_m(alpha);
     let shown = shown(run, selected);
     let named = shown.len() == 1;
+    let mut labels = Vec::new();
     for i in shown {
         let animal = &physics.animals()[i];
         let length = animal.body_length_m();
@@ -210,19 +211,36 @@ pub fn draw_forces(
                 project.arrow(painter, centre, tip, egui::Stroke::new(2.0, color));
                 if named && let (Some(a), Some(b)) = (project.point(centre), project.point(tip)) {
                     let away = (b - a).normalized() * 10.0;
-                    tip_label(painter, b + away, name, color);
+                    tip_label(painter, b + away, name, color, &mut labels);
                 }
             }
         }
     }
 }
 
-/// `text` centred at `at` in `color` on a dark box, readable over the water.
-fn tip_label(painter: &egui::Painter, at: egui::Pos2, text: &str, color: egui::Color32) {
+/// `text` centred at `at` in `color` on a dark box, readable over the water;
+/// moved down below the labels already `placed` that it would cover (short
+/// arrows pointing the same way), and added to them.
+fn tip_label(
+    painter: &egui::Painter,
+    at: egui::Pos2,
+    text: &str,
+    color: egui::Color32,
+    placed: &mut Vec<egui::Rect>,
+) {
     let galley = painter.layout_no_wrap(text.to_owned(), egui::FontId::proportional(13.0), color);
-    let rect = egui::Rect::from_center_size(at, galley.size());
-    painter.rect_filled(rect.expand(2.0), 3.0, egui::Color32::from_black_alpha(160));
-    painter.galley(rect.min, galley, color);
+    let mut rect = egui::Rect::from_center_size(at, galley.size()).expand(2.0);
+    while let Some(below) = placed
+        .iter()
+        .filter(|p| p.intersects(rect))
+        .map(|p| p.bottom())
+        .reduce(f32::max)
+    {
+        rect = rect.translate(egui::vec2(0.0, below + 1.0 - rect.top()));
+    }
+    placed.push(rect);
+    painter.rect_filled(rect, 3.0, egui::Color32::from_black_alpha(160));
+    painter.galley(rect.min + egui::vec2(2.0, 2.0), galley, color);
 }
 
 /// A ring around the selected fish so it stands out in a school.

@@ -2,8 +2,9 @@
 // zoom (1.4.4); the High contrast toggle turns the panels black and the
 // usual theme comes back (1.4.3, 1.4.11); a computer that asks for reduced
 // motion gets it, starting paused, and so does a ?motion=reduce link
-// (2.3.3); at 320 CSS pixels wide the drawer's controls fit the screen
-// (1.4.10). Screenshots of both themes go to web/test-artifacts/.
+// (2.3.3); zoomed to 200 % and at 320 CSS pixels wide the drawer's controls
+// fit the screen (1.4.4, 1.4.10). Screenshots of both themes, the focus ring
+// and the narrow screens go to web/test-artifacts/.
 
 import { describe, test, before, after } from "node:test";
 import assert from "node:assert/strict";
@@ -134,6 +135,27 @@ for (const tier of TIERS) {
         const pixel = await panelPixel(page).catch(() => null);
         // The panel may start closed on a small screen; here it is open.
         assert.ok(pixel && pixel.every((c) => c <= 6), `black panel: ${pixel}`);
+        // The keyboard's focus ring, thick and yellow: Tab to the first control.
+        await page.keyboard.press("Tab", { delay: 100 });
+        await nudgeFrames(page, 2);
+        saveArtifact(`seeing-focus-ring-${tier}.png`, await page.screenshot());
+      } finally {
+        await context.close();
+      }
+    });
+
+    test("zoomed to 200 % (a 1280-pixel window seen as 640 CSS pixels) nothing shrinks it back", async () => {
+      const { context, page } = await open(browser, server.url, { width: 640, height: 400, deviceScaleFactor: 2 });
+      try {
+        const s = await state(page);
+        assert.equal(s.ui_scale, 1, "Shoal adds no scale of its own: the browser's zoom stands");
+        await clickUntil(page, "show_panel", () => !!window.shoal.widgets().hide_panel);
+        await waitFrames(page, 2);
+        const w = await widgets(page);
+        for (const name of ["hide_panel", "scene_learning", "reset", "new_seed"]) {
+          assert.ok(w[name] && w[name].x + w[name].width <= 640, `${name} fits: ${JSON.stringify(w[name])}`);
+        }
+        saveArtifact(`seeing-zoom-200-${tier}.png`, await page.screenshot());
       } finally {
         await context.close();
       }
