@@ -259,6 +259,10 @@ pub struct StateReport {
     /// `render::detail`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub scene_detail: Option<SceneDetailReport>,
+    /// The View section's *High contrast* and *Reduce motion* (app only; see
+    /// `ui::seeing`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seeing: Option<crate::ui::seeing::Seeing>,
     /// The (left) tank's school metrics, see [`MetricsSample`], and in the
     /// schooling lab what its selected fish pays attention to.
     pub metrics: TankReport,
@@ -365,6 +369,7 @@ impl StateReport {
             camera: None,
             ui_scale: None,
             scene_detail: None,
+            seeing: None,
             scene_report: run.scene().report(settings.selected()),
             skip: run.scene().moment().map(|m| SkipReport {
                 moment: m.what,

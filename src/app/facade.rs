@@ -132,6 +132,11 @@ impl ShoalApp {
         self.notice = Some(Notice::error(text));
     }
 
+    /// Shows a message at the top of the view (e.g. why the fish start paused).
+    pub fn show_info_notice(&mut self, text: impl Into<String>) {
+        self.notice = Some(Notice::info(text));
+    }
+
     /// What `shoal.state()` reports.
     pub fn state_report(&self) -> StateReport {
         let mut report = StateReport::new(
@@ -154,6 +159,7 @@ impl ShoalApp {
             scale: self.scene_detail.scale(),
             auto: self.scene_detail.auto,
         });
+        report.seeing = Some(crate::ui::seeing::get(&self.ctx));
         report
     }
 

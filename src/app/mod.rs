@@ -106,7 +106,7 @@ impl ShoalApp {
             render_state.adapter.get_info().backend,
             caps.msaa_samples
         );
-        cc.egui_ctx.set_theme(egui::Theme::Dark);
+        crate::ui::seeing::install(&cc.egui_ctx);
         let mut lab = Lab::new(settings);
         lab.set_frame_budget(Some(crate::lab::INTERACTIVE_FRAME_BUDGET_SECS));
         let tank = lab.scene().tank();

@@ -14,6 +14,11 @@ use super::ShoalApp;
 /// chosen: smooth, and a fish at top speed never leaves the view, at any frame rate).
 const FOLLOW_TIME_CONSTANT_SECS: f32 = 0.4;
 
+/// The moment the water's caustics, light shafts and ripples are frozen at
+/// with reduced motion (they animate with this time, nothing else does):
+/// 3 s, chosen, a frame with a clear web of light on the sand.
+const CALM_WATER_TIME_SECS: f32 = 3.0;
+
 impl ShoalApp {
     /// Frames what the scene is about (the whole tank unless its panel says
     /// otherwise), and stops following.
@@ -128,8 +133,18 @@ impl ShoalApp {
         else {
             return;
         };
-        let share = 1.0 - (-frame_secs.max(0.0) / FOLLOW_TIME_CONSTANT_SECS).exp();
-        self.camera.target_m = self.camera.target_m.lerp(centre, share);
+        if crate::ui::seeing::get(&self.ctx).reduce_motion {
+            // Reduced motion: still while the fish is near the middle, then
+            // just enough to keep it in view.
+            self.camera.target_m = crate::ui::seeing::calm_follow_target(
+                self.camera.target_m,
+                centre,
+                self.camera.distance_m,
+            );
+        } else {
+            let share = 1.0 - (-frame_secs.max(0.0) / FOLLOW_TIME_CONSTANT_SECS).exp();
+            self.camera.target_m = self.camera.target_m.lerp(centre, share);
+        }
         // On starting to follow, come close enough to see the body bend: about eight
         // body lengths away (the teacher may zoom afterwards).
         if !self.following {
@@ -173,8 +188,13 @@ impl ShoalApp {
             rect.height() * pixels_per_point,
         ]);
         let run = &self.lab.runs()[index];
-        // The water animates with simulated time: pausing freezes the whole picture.
-        let time_secs = run.time_secs() as f32;
+        // The water animates with simulated time: pausing freezes the whole
+        // picture. With reduced motion its caustics and light shafts stand still.
+        let time_secs = if crate::ui::seeing::get(&self.ctx).reduce_motion {
+            CALM_WATER_TIME_SECS
+        } else {
+            run.time_secs() as f32
+        };
         self.frame_builders[index].set_selected(self.scene_panel.get().selected(settings));
         let frame = self.frame_builders[index].build(
             run,

@@ -28,7 +28,8 @@ const PICK_SLACK_PT: f32 = 12.0;
 const TOUCH_PICK_SLACK_PT: f32 = 22.0;
 
 /// The colour of a muscle contracted by `u` in [0, 1]: relaxed pale blue, fully
-/// contracted red.
+/// contracted red. (The skeleton also draws a muscle thicker as it pulls,
+/// [`muscle_width`], so the contraction does not rest on colour alone.)
 pub fn muscle_color(u: f32) -> egui::Color32 {
     let u = if u.is_finite() {
         u.clamp(0.0, 1.0)
@@ -37,6 +38,17 @@ pub fn muscle_color(u: f32) -> egui::Color32 {
     };
     let lerp = |a: f32, b: f32| (a + (b - a) * u).round() as u8;
     egui::Color32::from_rgb(lerp(140.0, 255.0), lerp(190.0, 50.0), lerp(255.0, 40.0))
+}
+
+/// The width of a muscle contracted by `u` in [0, 1], points: 1.5 relaxed to
+/// 5 fully contracted.
+pub fn muscle_width(u: f32) -> f32 {
+    let u = if u.is_finite() {
+        u.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    1.5 + 3.5 * u
 }
 
 struct Projector<'a> {
@@ -125,7 +137,7 @@ pub fn draw_skeletons(
         for (muscle, u) in MUSCLES.iter().zip(muscles) {
             let spring = &SPRINGS[muscle.spring];
             if let (Some(a), Some(b)) = (screen[spring.a], screen[spring.b]) {
-                painter.line_segment([a, b], egui::Stroke::new(3.0, muscle_color(u)));
+                painter.line_segment([a, b], egui::Stroke::new(muscle_width(u), muscle_color(u)));
             }
         }
         for p in screen.into_iter().flatten() {
@@ -136,7 +148,8 @@ pub fn draw_skeletons(
 
 /// Force arrows: the water's push on each node (yellow, the thrust comes from the
 /// tail), the velocity the fish wants (green), its velocity (white) and the
-/// current where it is (cyan).
+/// current where it is (cyan). With one fish drawn (a selected one) each of the
+/// three big arrows is named at its tip, so none is known by its colour alone.
 pub fn draw_forces(
     painter: &egui::Painter,
     rect: egui::Rect,
@@ -150,7 +163,10 @@ pub fn draw_forces(
     };
     let project = Projector::new(camera, rect);
     let drawn = run.drawn_nodes_all_m(alpha);
-    for i in shown(run, selected) {
+    let shown = shown(run, selected);
+    let named = shown.len() == 1;
+    let mut labels = Vec::new();
+    for i in shown {
         let animal = &physics.animals()[i];
         let length = animal.body_length_m();
         let nodes = drawn[i];
@@ -184,21 +200,47 @@ pub fn draw_forces(
             (
                 physics.desired_m_per_s(i),
                 egui::Color32::from_rgb(90, 255, 120),
+                "wants to go",
             ),
-            (animal.point.velocity_m_per_s, egui::Color32::WHITE),
-            (water, egui::Color32::from_rgb(80, 220, 255)),
+            (animal.point.velocity_m_per_s, egui::Color32::WHITE, "goes"),
+            (water, egui::Color32::from_rgb(80, 220, 255), "current"),
         ];
-        for (v, color) in arrows {
+        for (v, color, name) in arrows {
             if v.length() > 1e-3 {
-                project.arrow(
-                    painter,
-                    centre,
-                    centre + v * seconds,
-                    egui::Stroke::new(2.0, color),
-                );
+                let tip = centre + v * seconds;
+                project.arrow(painter, centre, tip, egui::Stroke::new(2.0, color));
+                if named && let (Some(a), Some(b)) = (project.point(centre), project.point(tip)) {
+                    let away = (b - a).normalized() * 10.0;
+                    tip_label(painter, b + away, name, color, &mut labels);
+                }
             }
         }
     }
+}
+
+/// `text` centred at `at` in `color` on a dark box, readable over the water;
+/// moved down below the labels already `placed` that it would cover (short
+/// arrows pointing the same way), and added to them.
+fn tip_label(
+    painter: &egui::Painter,
+    at: egui::Pos2,
+    text: &str,
+    color: egui::Color32,
+    placed: &mut Vec<egui::Rect>,
+) {
+    let galley = painter.layout_no_wrap(text.to_owned(), egui::FontId::proportional(13.0), color);
+    let mut rect = egui::Rect::from_center_size(at, galley.size()).expand(2.0);
+    while let Some(below) = placed
+        .iter()
+        .filter(|p| p.intersects(rect))
+        .map(|p| p.bottom())
+        .reduce(f32::max)
+    {
+        rect = rect.translate(egui::vec2(0.0, below + 1.0 - rect.top()));
+    }
+    placed.push(rect);
+    painter.rect_filled(rect, 3.0, egui::Color32::from_black_alpha(160));
+    painter.galley(rect.min + egui::vec2(2.0, 2.0), galley, color);
 }
 
 /// A ring around the selected fish so it stands out in a school.

@@ -611,8 +611,10 @@ fn draw_tank_label(view: &ViewContext, settings: &Settings) {
             .for_student(&format!("{}.{name}", view.side.name()));
         rule.mystery || rule.hidden
     };
+    // The tank's line in the plots, so the name matches its line without colour.
     let label = format!(
-        "{} · {} · {}",
+        "{} {} · {} · {}",
+        super::palette::line_glyph(super::palette::side_series(view.side).line),
         tank_name(view.side, view.stacked),
         if hidden("preset") {
             "?"

@@ -219,6 +219,7 @@ pub fn control_panel_ui(
         })
         .on_hover_text("How many of the view's pixels the tank is drawn with now");
     });
+    super::seeing::seeing_ui(ui, rects);
     ui.label(
         egui::RichText::new(
             "Drag to turn the tank · scroll or pinch to zoom · right-drag or two fingers to \

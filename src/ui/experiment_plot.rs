@@ -5,7 +5,7 @@
 //! same for that level's first seed.
 
 use eframe::egui;
-use egui_plot::{Legend, Line, MarkerShape, Plot, PlotPoints, Points};
+use egui_plot::{Legend, Line, Plot, PlotPoints, Points};
 use serde_json::Value;
 
 use super::WidgetRects;
@@ -41,20 +41,6 @@ pub fn level_text(level: &Value) -> String {
             .map_or_else(|| n.to_string(), |x| format!("{}", (x * 1e6).round() / 1e6)),
         other => other.to_string(),
     }
-}
-
-/// Line colours for the second factor's levels (the first is the school's
-/// usual orange).
-fn series_color(k: usize) -> egui::Color32 {
-    const COLORS: [egui::Color32; 6] = [
-        egui::Color32::from_rgb(255, 170, 60),
-        egui::Color32::from_rgb(90, 170, 255),
-        egui::Color32::from_rgb(120, 220, 120),
-        egui::Color32::from_rgb(230, 110, 200),
-        egui::Color32::from_rgb(240, 230, 110),
-        egui::Color32::from_rgb(170, 170, 170),
-    ];
-    COLORS[k % COLORS.len()]
 }
 
 /// The plots and the table of `rows` (the summary of `plan`'s completed runs).
@@ -175,7 +161,11 @@ fn dose_response_plot(
                     (Some(f), Some(level)) => format!("{} = {}", f.key, level_text(level)),
                     _ => measure.name().to_owned(),
                 };
-                let color = series_color(k);
+                // Each level of the second factor in its own colour, line
+                // style and marker (Okabe–Ito; never colour alone), named in
+                // the legend.
+                let style = super::palette::series(k);
+                let color = style.color;
                 let line: Vec<&&SummaryRow> = rows
                     .iter()
                     .filter(|r| second.is_none_or(|s| r.levels.get(1) == Some(s)))
@@ -197,12 +187,18 @@ fn dose_response_plot(
                         );
                     }
                 }
-                plot.line(Line::new(name.clone(), PlotPoints::from(xy.clone())).color(color));
+                plot.line(
+                    Line::new(name.clone(), PlotPoints::from(xy.clone()))
+                        .color(color)
+                        .style(style.line)
+                        .width(1.8),
+                );
                 plot.points(
                     Points::new(name, PlotPoints::from(xy))
                         .color(color)
-                        .shape(MarkerShape::Circle)
-                        .radius(3.5),
+                        .shape(style.marker)
+                        .filled(true)
+                        .radius(4.0),
                 );
             }
             // A click near a point: watch that level's first seed.

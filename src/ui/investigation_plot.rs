@@ -13,8 +13,10 @@ use crate::settings::Side;
 /// phone's screen with the text around it.
 const PLOT_HEIGHT: f32 = 150.0;
 
-const MEASURED: egui::Color32 = egui::Color32::from_rgb(255, 170, 60);
-const PREDICTED: egui::Color32 = egui::Color32::from_rgb(110, 180, 255);
+/// The measured result: solid orange with round markers; the student's
+/// prediction: dashed sky blue (Okabe–Ito), each named in the legend.
+const MEASURED: egui::Color32 = super::palette::ORANGE;
+const PREDICTED: egui::Color32 = super::palette::SKY_BLUE;
 
 fn sketch_points(shape: &Shape, x0: f64, x1: f64, y_max: f64) -> PlotPoints<'static> {
     (0..=40)
@@ -188,6 +190,7 @@ pub fn timelines_ui(ui: &mut egui::Ui, timelines: &[Timeline], secs: f64) {
                 plot.line(
                     Line::new(t.label.clone(), t.points.clone())
                         .color(super::side_color(side))
+                        .style(super::palette::side_series(side).line)
                         .width(2.0),
                 );
             }

@@ -7,7 +7,6 @@ use eframe::egui;
 use egui_plot::{Legend, Line, Plot, PlotPoints};
 
 use super::WidgetRects;
-use super::body_overlay::muscle_color;
 use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
 use super::files::{FileError, PendingFile, open_text_file, save_text_file};
 use super::scene_panel::{Notice, ScenePanel};
@@ -306,9 +305,17 @@ fn objective_plot_ui(ui: &mut egui::Ui, lab: &LearningLab, height: f32, rects: &
         .legend(Legend::default())
         .x_axis_label("tries")
         .show(ui, |plot| {
-            plot.line(Line::new("now", series(false)).color(egui::Color32::from_gray(150)));
+            // Named in the legend, and told apart by the line as well as the
+            // colour: the try now dotted grey, the best so far solid green.
             plot.line(
-                Line::new("best", series(true)).color(egui::Color32::from_rgb(120, 220, 120)),
+                Line::new("now", series(false))
+                    .color(super::palette::GREY)
+                    .style(egui_plot::LineStyle::dotted_dense()),
+            );
+            plot.line(
+                Line::new("best", series(true))
+                    .color(super::palette::BLUISH_GREEN)
+                    .width(2.0),
             );
         });
     rects.insert("learning_objective_plot", r.response.rect);
@@ -356,9 +363,19 @@ fn fig8_ui(ui: &mut egui::Ui, a: &Abstraction, width: f32, height: f32, rects: &
                 .allow_scroll(false)
                 .allow_drag(false)
                 .x_axis_label("time (s)")
+                .legend(Legend::default())
                 .show(ui, |plot| {
                     for (m, label) in shown_muscles() {
-                        let color = muscle_color(if label == "tail" { 1.0 } else { 0.45 });
+                        // The tail solid vermillion, the middle dashed sky blue,
+                        // each named in the legend.
+                        let (color, line) = if label == "tail" {
+                            (super::palette::VERMILLION, egui_plot::LineStyle::Solid)
+                        } else {
+                            (
+                                super::palette::SKY_BLUE,
+                                egui_plot::LineStyle::dashed_dense(),
+                            )
+                        };
                         let points: PlotPoints = match kind {
                             "raw" => a
                                 .times_secs
@@ -386,7 +403,7 @@ fn fig8_ui(ui: &mut egui::Ui, a: &Abstraction, width: f32, height: f32, rects: &
                                 .map(|&t| [f64::from(t), f64::from(a.controller.value_at(t)[m])])
                                 .collect(),
                         };
-                        plot.line(Line::new(label, points).color(color));
+                        plot.line(Line::new(label, points).color(color).style(line).width(1.8));
                     }
                 });
             rects.insert(name, r.response.rect);

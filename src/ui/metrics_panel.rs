@@ -1,5 +1,7 @@
-//! Live numbers and plots of the school's metrics (egui_plot), one coloured line per
-//! tank, so students see in the curves why a school and a crowd of loners differ.
+//! Live numbers and plots of the school's metrics (egui_plot), one line per tank
+//! (the left tank solid orange, the right dashed sky blue: never told apart by
+//! colour alone), so students see in the curves why a school and a crowd of
+//! loners differ.
 
 use eframe::egui;
 use egui_plot::{Line, Plot, PlotPoints};
@@ -10,11 +12,23 @@ use crate::lab::Run;
 use crate::metrics_history::MetricsSample;
 use crate::settings::Side;
 
-/// Line colour of each tank, also used for its label over the 3D view.
+/// Line colour of each tank (Okabe–Ito orange and sky blue), also used for its
+/// label over the 3D view; its line style is [`super::palette::side_series`]'s.
 pub fn side_color(side: Side) -> egui::Color32 {
-    match side {
-        Side::Left => egui::Color32::from_rgb(255, 170, 60),
-        Side::Right => egui::Color32::from_rgb(90, 200, 255),
+    super::palette::side_series(side).color
+}
+
+/// How a tank's values are marked in a caption when two tanks are compared:
+/// a sample of its line ("—— 0.83", "– – 0.45"), so the numbers match the
+/// lines without the colour.
+fn caption_value(text: &str, side: Side, comparing: bool) -> String {
+    if comparing {
+        format!(
+            "{} {text}",
+            super::palette::line_glyph(super::palette::side_series(side).line)
+        )
+    } else {
+        text.to_owned()
     }
 }
 
@@ -65,6 +79,15 @@ const METRICS: [Metric; 5] = [
         y_range: None,
     },
 ];
+
+/// A tank's line in words, for hover help: "solid" or "dashed".
+fn line_name(side: Side) -> &'static str {
+    match super::palette::side_series(side).line {
+        egui_plot::LineStyle::Solid => "solid",
+        egui_plot::LineStyle::Dashed { .. } => "dashed",
+        egui_plot::LineStyle::Dotted { .. } => "dotted",
+    }
+}
 
 /// The height the metrics panel under the tank would like, points (see
 /// [`super::bottom_panel::bottom_panel_height`] for what it gets: at most 30 % of
@@ -130,12 +153,19 @@ pub fn metrics_panel_ui(
                                         format!("{value:.2}")
                                     };
                                     ui.label(
-                                        egui::RichText::new(text)
-                                            .monospace()
-                                            .strong()
-                                            .color(side_color(run.side())),
+                                        egui::RichText::new(caption_value(
+                                            &text,
+                                            run.side(),
+                                            runs.len() > 1,
+                                        ))
+                                        .monospace()
+                                        .strong()
+                                        .color(side_color(run.side())),
                                     )
-                                    .on_hover_text(label);
+                                    .on_hover_text(format!(
+                                        "{label} ({} line)",
+                                        line_name(run.side())
+                                    ));
                                 }
                             },
                         );
@@ -157,6 +187,7 @@ pub fn metrics_panel_ui(
                                 plot_ui.line(
                                     Line::new(label.clone(), points)
                                         .color(side_color(run.side()))
+                                        .style(super::palette::side_series(run.side()).line)
                                         .width(2.0),
                                 );
                             }
@@ -220,7 +251,8 @@ fn urges_plot_ui(
     let help = "How often each urge was used over the last second: containment, alignment, \
                 cohesion, separation, avoidance. In Blended mode every urge acts in every \
                 move (100 % each, mixed by its weight); in the one-urge modes the shares \
-                follow the weights.";
+                follow the weights. With two tanks, the upper bar of each pair is the left \
+                (or top) tank's, the lower the other's.";
     caption_ui(
         ui,
         ui.available_width(),
@@ -246,7 +278,9 @@ fn urges_plot_ui(
         .include_y(URGE_NAMES.len() as f64 - 0.5)
         .y_axis_min_width(56.0)
         .x_grid_spacer(readable_marks)
-        .x_axis_formatter(|mark, _| format!("{:.0} %", mark.value))
+        .custom_x_axes(vec![super::bottom_panel::readable_x_axis(|mark, _| {
+            format!("{:.0} %", mark.value)
+        })])
         .y_grid_spacer(|_| {
             (0..URGE_NAMES.len())
                 .map(|k| egui_plot::GridMark {

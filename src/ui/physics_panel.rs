@@ -6,7 +6,7 @@ use eframe::egui;
 use egui_plot::{Line, PlotPoints};
 
 use super::WidgetRects;
-use super::body_overlay::{self, muscle_color};
+use super::body_overlay;
 use super::bottom_panel::time_plot;
 use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
@@ -186,6 +186,26 @@ fn selected_fish_ui(
     });
 }
 
+/// How the muscles of one side of the fish are drawn in its plots: the left
+/// side solid vermillion, the right dashed blue (Okabe–Ito).
+fn muscle_side_style(side: Side) -> (egui::Color32, egui_plot::LineStyle) {
+    match side {
+        Side::Left => (super::palette::VERMILLION, egui_plot::LineStyle::Solid),
+        Side::Right => (
+            super::palette::SKY_BLUE,
+            egui_plot::LineStyle::dashed_dense(),
+        ),
+    }
+}
+
+/// "left" or "right".
+fn side_word(side: Side) -> &'static str {
+    match side {
+        Side::Left => "left",
+        Side::Right => "right",
+    }
+}
+
 /// The height the panel under the tank would like for the selected fish's plots,
 /// points (see [`super::bottom_panel::bottom_panel_height`] for what it gets).
 pub const BODY_PLOTS_PANEL_HEIGHT: f32 = 180.0;
@@ -236,19 +256,28 @@ pub fn body_plots_ui(
                 ui.horizontal(|ui| {
                     ui.set_height(caption_height);
                     ui.label(egui::RichText::new(title).small());
-                    ui.label(egui::RichText::new("left").small().color(muscle_color(0.9)));
-                    ui.label(
-                        egui::RichText::new("right")
+                    // Each side's name with a sample of its line: solid and
+                    // dashed tell them apart without the colour.
+                    for side in [Side::Left, Side::Right] {
+                        let (color, line) = muscle_side_style(side);
+                        ui.label(
+                            egui::RichText::new(format!(
+                                "{} {}",
+                                super::palette::line_glyph(line),
+                                side_word(side)
+                            ))
                             .small()
-                            .color(egui::Color32::from_rgb(90, 180, 255)),
-                    );
+                            .color(color),
+                        );
+                    }
                 })
                 .response
                 .on_hover_text(
                     "How hard each muscle of this part pulls, from 0 (resting) to 1 (fully \
-                     contracted), over the last seconds. Red: the fish's left side, blue: its \
-                     right side (two muscles each, top and bottom). Left and right take \
-                     turns: that is the tail beat",
+                     contracted), over the last seconds. Solid vermillion lines: the fish's \
+                     left side; dashed blue lines: its right side (two muscles each, the top \
+                     one thicker than the bottom one). Left and right take turns: that is the \
+                     tail beat",
                 );
                 let plot = time_plot(("muscles", index, k), plot_height)
                     .include_y(0.0)
@@ -263,14 +292,12 @@ pub fn body_plots_ui(
                                     .iter()
                                     .map(|s| [s.time_secs, f64::from(s.muscles[m])])
                                     .collect();
-                                let color = match side {
-                                    Side::Left => muscle_color(0.9 - 0.3 * offset as f32),
-                                    Side::Right => {
-                                        egui::Color32::from_rgb(90, 180 - 40 * offset as u8, 255)
-                                    }
-                                };
+                                let (color, line) = muscle_side_style(side);
                                 plot.line(
-                                    Line::new(format!("{side_name} {part}"), points).color(color),
+                                    Line::new(format!("{side_name} {part}"), points)
+                                        .color(color)
+                                        .style(line)
+                                        .width(if offset == 0 { 2.0 } else { 1.2 }),
                                 );
                             }
                         }

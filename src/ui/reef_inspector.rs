@@ -300,11 +300,13 @@ fn mind_summary_ui(
     ] {
         ui.horizontal(|ui| {
             ui.label(format!("{name:<7}")).on_hover_text(help);
+            // The value beside the bar, not on it: text over the coloured
+            // fill and the dark track could not keep 4.5:1 on both.
             let bar = egui::ProgressBar::new(value.clamp(0.0, 1.0))
                 .fill(color)
-                .text(format!("{value:.2}"))
                 .desired_width(180.0);
             let r = ui.add(bar).on_hover_text(help);
+            ui.label(egui::RichText::new(format!("{value:.2}")).monospace());
             rects.insert(&format!("reef_bar_{}", name.to_lowercase()), r.rect);
         });
     }
@@ -391,9 +393,25 @@ fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, height: f32, rects: &mut W
         .include_y(1.0)
         .legend(Legend::default())
         .show(ui, |plot| {
-            plot.line(Line::new("hunger", series(|s| s.hunger)).color(HUNGER_COLOR));
-            plot.line(Line::new("libido", series(|s| s.libido)).color(LIBIDO_COLOR));
-            plot.line(Line::new("fear", series(|s| s.fear)).color(FEAR_COLOR));
+            // Named in the legend and told apart by the line as well as the
+            // colour: hunger solid, libido dashed, fear dotted.
+            plot.line(
+                Line::new("hunger", series(|s| s.hunger))
+                    .color(HUNGER_COLOR)
+                    .width(2.0),
+            );
+            plot.line(
+                Line::new("libido", series(|s| s.libido))
+                    .color(LIBIDO_COLOR)
+                    .style(egui_plot::LineStyle::dashed_dense())
+                    .width(2.0),
+            );
+            plot.line(
+                Line::new("fear", series(|s| s.fear))
+                    .color(FEAR_COLOR)
+                    .style(egui_plot::LineStyle::dotted_dense())
+                    .width(2.0),
+            );
         });
     rects.insert("reef_mind_plot", r.response.rect);
 }

@@ -116,7 +116,8 @@ pub fn draw_vision(
 }
 
 /// Dots through the water coloured by brightness (dark blue → pale yellow) or
-/// temperature (blue → red).
+/// temperature (blue → red), and bigger where the water is brighter or
+/// warmer, so the size tells what the colour tells.
 pub fn draw_water(
     painter: &egui::Painter,
     rect: egui::Rect,
@@ -146,33 +147,46 @@ pub fn draw_water(
                 let Some(s) = project(camera, rect, p) else {
                     continue;
                 };
-                let color = match overlay {
+                let (value, color) = match overlay {
                     ReefOverlay::Light => {
                         let b = env.brightness_at(p);
                         let lerp = |a: f32, c: f32| (a + (c - a) * b).round() as u8;
-                        egui::Color32::from_rgba_unmultiplied(
+                        let color = egui::Color32::from_rgba_unmultiplied(
                             lerp(20.0, 255.0),
                             lerp(30.0, 245.0),
                             lerp(90.0, 170.0),
                             170,
-                        )
+                        );
+                        (b, color)
                     }
                     ReefOverlay::Temperature => {
                         let w = env.temperature_01_at(p);
                         let lerp = |a: f32, c: f32| (a + (c - a) * w).round() as u8;
-                        egui::Color32::from_rgba_unmultiplied(
+                        let color = egui::Color32::from_rgba_unmultiplied(
                             lerp(40.0, 255.0),
                             lerp(110.0, 80.0),
                             lerp(255.0, 40.0),
                             170,
-                        )
+                        );
+                        (w, color)
                     }
                     ReefOverlay::None => continue,
                 };
-                painter.circle_filled(s, 4.0, color);
+                painter.circle_filled(s, water_dot_radius(value), color);
             }
         }
     }
+}
+
+/// The radius of a water dot whose brightness or warmth is `value` in
+/// [0, 1], points: 2.5 to 6.
+pub fn water_dot_radius(value: f32) -> f32 {
+    let v = if value.is_finite() {
+        value.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    2.5 + 3.5 * v
 }
 
 /// Name tags drawn at most (60, chosen: a school's worth; more would hide the

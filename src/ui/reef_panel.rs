@@ -23,10 +23,12 @@ use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::{FishKind, Habits, Intention};
 use crate::sim::reef::world::{ReefBodyKind, ReefWorld};
 
-/// Colours of the three urges, used by the bars, the plot and the focus line.
-pub const HUNGER_COLOR: egui::Color32 = egui::Color32::from_rgb(255, 170, 60);
-pub const LIBIDO_COLOR: egui::Color32 = egui::Color32::from_rgb(240, 110, 200);
-pub const FEAR_COLOR: egui::Color32 = egui::Color32::from_rgb(110, 180, 255);
+/// Colours of the three urges, used by the bars, the plot and the focus line
+/// (Okabe–Ito orange, reddish purple and sky blue; the plot also draws them
+/// solid, dashed and dotted, and names each).
+pub const HUNGER_COLOR: egui::Color32 = super::palette::ORANGE;
+pub const LIBIDO_COLOR: egui::Color32 = super::palette::REDDISH_PURPLE;
+pub const FEAR_COLOR: egui::Color32 = super::palette::SKY_BLUE;
 
 /// One sentence per intention, for the inspector.
 pub fn intention_sentence(intention: Intention) -> &'static str {

@@ -5,15 +5,17 @@ use eframe::egui;
 use crate::automation::StateReport;
 use crate::render::RenderCaps;
 
-/// Draws the status line. `count_is_mystery`: a student must not read the
-/// number of fish (the teacher made it a mystery value).
+/// Draws the status line, wrapped onto more lines in a narrow window (a phone,
+/// or a zoomed page) so that time, count and "paused" stay in sight.
+/// `count_is_mystery`: a student must not read the number of fish (the
+/// teacher made it a mystery value).
 pub fn status_line_ui(
     ui: &mut egui::Ui,
     state: &StateReport,
     caps: RenderCaps,
     count_is_mystery: bool,
 ) {
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.label(format!("{:.0} FPS", state.fps))
             .on_hover_text("Pictures drawn per second");
         ui.separator();

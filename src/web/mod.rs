@@ -28,6 +28,12 @@ pub async fn start() {
         return;
     };
     let bench = page::query_has("bench");
+    // Reduced motion and high contrast: the person's own settings, or the link's.
+    let (seeing, start_paused) = crate::ui::seeing::initial(
+        &page::query(),
+        page::media_matches("(prefers-reduced-motion: reduce)"),
+        page::media_matches("(prefers-contrast: more)"),
+    );
     // A share link's settings, or the defaults and a notice saying why not.
     let (settings, link_error) = match crate::settings::share_link::decode(&page::fragment()) {
         Ok(settings) => (settings.unwrap_or_default(), None),
@@ -41,15 +47,23 @@ pub async fn start() {
     if let Some(message) = &link_error {
         log::warn!("{message}");
     }
+    let mut settings = settings;
+    if start_paused {
+        settings.paused = true;
+    }
     let started = runner
         .start(
             canvas,
             eframe::WebOptions::default(),
             Box::new(move |cc| {
+                crate::ui::seeing::set(&cc.egui_ctx, seeing);
                 let mut app = ShoalApp::new(cc, settings)?;
                 // Every control as a real element for screen readers and Tab.
                 if let Err(err) = a11y_dom::install(&cc.egui_ctx) {
                     log::warn!("the accessible controls could not be set up: {err:?}");
+                }
+                if start_paused {
+                    app.show_info_notice(crate::ui::seeing::STARTED_PAUSED);
                 }
                 if let Some(url) = page::url_without_fragment() {
                     app.set_page_url(url);

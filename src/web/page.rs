@@ -27,6 +27,21 @@ pub fn query_has(flag: &str) -> bool {
         })
 }
 
+/// The page's query string (`?bench&motion=reduce`), or "".
+pub fn query() -> String {
+    web_sys::window()
+        .and_then(|w| w.location().search().ok())
+        .unwrap_or_default()
+}
+
+/// Does the browser match the media query `query` (as in
+/// `(prefers-reduced-motion: reduce)`)? False where it cannot tell.
+pub fn media_matches(query: &str) -> bool {
+    web_sys::window()
+        .and_then(|w| w.match_media(query).ok().flatten())
+        .is_some_and(|list| list.matches())
+}
+
 /// Hides the loading notice once the app runs.
 pub fn hide_notice() {
     if let Some(notice) = document().and_then(|d| d.get_element_by_id("shoal_notice")) {
