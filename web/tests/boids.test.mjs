@@ -243,15 +243,24 @@ describe("schooling lab", () => {
     assert.equal(before, null, "the seed's rocks until edited");
     await clickWidget(page, "tool_add_rock");
     const view = await waitForWidget(page, "view_left");
-    // Walk down the middle of the view until a click lands on the sand (clicks
-    // beyond the glass are refused with a notice and change nothing).
+    // Walk down the view, column by column, until a click lands on free sand
+    // (clicks beyond the glass, or too close to another rock or pillar, are
+    // refused with a notice and change nothing).
     let at = null;
-    for (let y = 0.5; y < 0.95 && !at; y += 0.025) {
-      await page.mouse.click(view.x + view.width * 0.5, view.y + view.height * y, { delay: 60 });
-      await page.waitForTimeout(400);
-      if ((await settings(page)).left.obstacles !== null) at = y;
+    let x = 0.5;
+    for (const column of [0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.25, 0.75, 0.15, 0.85]) {
+      for (let y = 0.5; y < 0.95 && !at; y += 0.025) {
+        await page.mouse.click(view.x + view.width * column, view.y + view.height * y, { delay: 60 });
+        await page.waitForTimeout(400);
+        if ((await settings(page)).left.obstacles !== null) at = y;
+      }
+      if (at) {
+        x = column;
+        break;
+      }
     }
-    assert.ok(at, "a click on the sand adds a rock");
+    if (!at) saveArtifact("boids-rock-refused.png", await page.screenshot());
+    assert.ok(at, `a click on the sand adds a rock (${(await page.evaluate(() => window.shoal.state())).notice})`);
     const added = (await settings(page)).left.obstacles;
     const world = added.length;
     assert.ok(world >= 1);
@@ -260,7 +269,7 @@ describe("schooling lab", () => {
     for (let attempt = 0; attempt < 4; attempt++) {
       await clickWidget(page, "tool_remove_rock");
       await waitFrames(page, 2);
-      await page.mouse.click(view.x + view.width * 0.5, view.y + view.height * at, { delay: 60 });
+      await page.mouse.click(view.x + view.width * x, view.y + view.height * at, { delay: 60 });
       const removed = await page
         .waitForFunction((n) => window.shoal.settings().left.obstacles.length < n, world, { timeout: 20_000 })
         .then(() => true)
