@@ -229,25 +229,6 @@ fn the_schooling_labs_force_sliders_are_named_as_on_screen() {
 }
 
 #[test]
-#[ignore = "prints the mirror for a look"]
-fn print_the_mirrors() {
-    for scene in Scene::ALL {
-        let mirror = side_panel_mirror(scene);
-        println!("== {scene:?}");
-        for item in &mirror.items {
-            println!(
-                "  {:?} {:?} | {:?}",
-                item.kind,
-                item.name,
-                item.description
-                    .as_deref()
-                    .map(|d| d.chars().take(40).collect::<String>())
-            );
-        }
-    }
-}
-
-#[test]
 fn a_rock_is_added_moved_and_removed_without_a_mouse() {
     let mut lab = Harness::new(Scene::Boids);
     lab.frame();

@@ -170,6 +170,9 @@ impl DomMirror {
                 && agent.tag_name().eq_ignore_ascii_case("input")
             {
                 agent.set_attribute("aria-label", "Text you type into the field being edited")?;
+                // Not a Tab stop of its own: eframe focuses it while a text
+                // field is being edited.
+                agent.set_attribute("tabindex", "-1")?;
             }
         }
 

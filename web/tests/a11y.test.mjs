@@ -123,13 +123,24 @@ for (const tier of TIERS) {
 
     test("keys: Tab reaches the controls, ? lists the keys, D describes the tank, P pauses", async () => {
       await page.evaluate(() => window.shoal.set({ scene: "boids", paused: false }));
-      await page.evaluate(() => document.activeElement?.blur());
+      // A student who clicked the tank presses Tab: egui moves its focus to
+      // the first control, and the page's focus follows it into the mirror.
+      await page.focus("#shoal_canvas");
       await page.keyboard.press("Tab", { delay: 100 });
+      await page
+        .waitForFunction(() => !!document.activeElement?.closest("#shoal_a11y"), null, { timeout: 30_000 })
+        .catch(() => {});
       const first = await page.evaluate(() => ({
         inMirror: !!document.activeElement?.closest("#shoal_a11y"),
         text: document.activeElement?.textContent || document.activeElement?.getAttribute("aria-label"),
       }));
       assert.ok(first.inMirror, `Tab went to ${JSON.stringify(first)}`);
+      await page.keyboard.press("Tab", { delay: 100 });
+      const second = await page.evaluate(() => ({
+        inMirror: !!document.activeElement?.closest("#shoal_a11y"),
+        text: document.activeElement?.textContent || document.activeElement?.getAttribute("aria-label"),
+      }));
+      assert.ok(second.inMirror && second.text !== first.text, `the next Tab: ${JSON.stringify([first, second])}`);
       // The keys reach egui from a focused control.
       await page.keyboard.press("p", { delay: 100 });
       await page.waitForFunction(() => window.shoal.state().paused, null, { timeout: 30_000 });
