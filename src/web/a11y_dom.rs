@@ -42,7 +42,6 @@ const STYLE: &str = "
 #shoal_a11y section[data-node] { position: static; opacity: 1; overflow: visible; }
 #shoal_focus_ring { position: fixed; display: none; pointer-events: none; z-index: 2;
   border-radius: 4px; box-shadow: 0 0 0 2px #0b1118, 0 0 0 5px #ffd24a, 0 0 0 7px #0b1118; }
-#shoal_canvas:focus-visible { outline: 3px solid #ffd24a !important; outline-offset: -3px; }
 .shoal_sr_only { position: absolute; width: 1px; height: 1px; margin: -1px; padding: 0;
   overflow: hidden; clip: rect(0 0 0 0); white-space: nowrap; border: 0; }
 ";
