@@ -415,7 +415,12 @@ fn write(element: &web_sys::HtmlElement, item: &Item, zoom: f32) -> Result<(), J
     let name = (!item.name.trim().is_empty()).then_some(item.name.as_str());
     let description = item.description.as_deref().filter(|d| Some(*d) != name);
     set_or_remove(e, "aria-description", description);
+    // A greyed-out button or field says so (a text field stays readable).
     let disabled = item.disabled.then_some("true");
+    let (tag, _) = item.kind.tag();
+    if matches!(tag, "button" | "input") && !matches!(item.kind, Kind::TextInput { .. }) {
+        set_or_remove(e, "disabled", item.disabled.then_some(""));
+    }
     match &item.kind {
         Kind::Text => {
             if element.text_content().as_deref() != Some(&item.name) {
@@ -429,7 +434,6 @@ fn write(element: &web_sys::HtmlElement, item: &Item, zoom: f32) -> Result<(), J
                 "aria-pressed",
                 pressed.map(|p| if p { "true" } else { "false" }),
             );
-            set_or_remove(e, "disabled", item.disabled.then_some(""));
         }
         Kind::Disclosure { expanded } => {
             write_text(element, &item.name);
@@ -452,7 +456,6 @@ fn write(element: &web_sys::HtmlElement, item: &Item, zoom: f32) -> Result<(), J
                 "aria-expanded",
                 Some(if *expanded { "true" } else { "false" }),
             );
-            set_or_remove(e, "disabled", item.disabled.then_some(""));
         }
         Kind::Link => write_text(element, &item.name),
         Kind::CheckBox { checked } => {
@@ -460,13 +463,11 @@ fn write(element: &web_sys::HtmlElement, item: &Item, zoom: f32) -> Result<(), J
             input.set_checked(checked.unwrap_or(false));
             input.set_indeterminate(checked.is_none());
             set_or_remove(e, "aria-label", name);
-            set_or_remove(e, "disabled", item.disabled.then_some(""));
         }
         Kind::Radio { checked } => {
             let input = element.unchecked_ref::<web_sys::HtmlInputElement>();
             input.set_checked(*checked);
             set_or_remove(e, "aria-label", name);
-            set_or_remove(e, "disabled", item.disabled.then_some(""));
         }
         Kind::Slider {
             value,
@@ -486,7 +487,6 @@ fn write(element: &web_sys::HtmlElement, item: &Item, zoom: f32) -> Result<(), J
             }
             set_or_remove(e, "aria-valuetext", text.as_deref());
             set_or_remove(e, "aria-label", name);
-            set_or_remove(e, "disabled", item.disabled.then_some(""));
         }
         Kind::Number {
             value,
@@ -502,7 +502,6 @@ fn write(element: &web_sys::HtmlElement, item: &Item, zoom: f32) -> Result<(), J
                 input.set_value(&number(*value));
             }
             set_or_remove(e, "aria-label", name);
-            set_or_remove(e, "disabled", item.disabled.then_some(""));
         }
         Kind::TextInput {
             value,
