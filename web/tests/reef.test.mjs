@@ -16,6 +16,7 @@ import {
   waitForWidget,
   changedPixels,
   scrollPanelTo,
+  sleep,
 } from "./harness.mjs";
 
 const state = (page) => page.evaluate(() => window.shoal.state());
@@ -47,13 +48,19 @@ describe("reef", () => {
     assert.equal(s.reef.prey, 10);
     assert.equal(s.reef.pacifists, 7);
     assert.ok(s.reef.food > 20, `plankton: ${s.reef.food}`);
-    const shot = await page.screenshot();
-    saveArtifact("reef-webgl2.png", shot);
     const view = (await widgets(page)).view_left;
-    // Software graphics draw the tank at half per side (Tank detail's Auto), which
-    // blends the small reef fish's colours into the water: about 70 vivid
-    // pixels here against 0 for an empty tank.
-    const vivid = fishPixels(decode(shot), view).size;
+    // Software graphics draw the tank at half per side or less (Tank detail's
+    // Auto, which follows a loaded machine's frame rate), which blends the small
+    // reef fish's colours into the water: about 70 vivid pixels here against 0
+    // for an empty tank, fewer in a frame where the ten fish overlap or turn
+    // edge-on. The best of three frames a second apart.
+    let vivid = 0;
+    for (let k = 0; k < 3 && vivid <= 40; k++) {
+      if (k > 0) await sleep(1000);
+      const shot = await page.screenshot();
+      if (k === 0) saveArtifact("reef-webgl2.png", shot);
+      vivid = Math.max(vivid, fishPixels(decode(shot), view).size);
+    }
     assert.ok(vivid > 40, `fish are drawn: ${vivid} vivid pixels`);
   });
 
