@@ -263,6 +263,8 @@ pub struct StateReport {
     /// `ui::seeing`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub seeing: Option<crate::ui::seeing::Seeing>,
+    /// The language the interface speaks (`"en"`, `"es"`).
+    pub lang: crate::i18n::Lang,
     /// The (left) tank's school metrics, see [`MetricsSample`], and in the
     /// schooling lab what its selected fish pays attention to.
     pub metrics: TankReport,
@@ -370,6 +372,7 @@ impl StateReport {
             ui_scale: None,
             scene_detail: None,
             seeing: None,
+            lang: crate::i18n::lang(),
             scene_report: run.scene().report(settings.selected()),
             skip: run.scene().moment().map(|m| SkipReport {
                 moment: m.what,

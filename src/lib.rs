@@ -19,6 +19,7 @@ pub mod census;
 pub mod clock;
 pub mod experiment;
 pub mod export;
+pub mod i18n;
 pub mod investigation;
 pub mod lab;
 pub mod metrics_history;

@@ -21,8 +21,9 @@ impl ShoalApp {
         use crate::investigation::link as investigation_link;
         let investigation = investigation_link::from_url(&url);
         let experiment = experiment_link::from_url(&url);
-        self.page_url = Some(experiment_link::without_experiment(
-            &investigation_link::without_investigation(&url),
+        self.page_url = Some(crate::settings::share_link::without_query(
+            &experiment_link::without_experiment(&investigation_link::without_investigation(&url)),
+            crate::ui::language::KEY,
         ));
         match investigation {
             Some(Ok(investigation)) => {
@@ -66,11 +67,17 @@ impl ShoalApp {
         )));
     }
 
+    /// The page's address for the links Shoal makes: without parameters of
+    /// ours but the language in force (`?lang=`, unless English).
+    pub(super) fn page(&self) -> String {
+        crate::ui::language::with_lang(self.page_url.as_deref().unwrap_or_default())
+    }
+
     /// The link that reopens the experiment in the *Experiment* window and runs
     /// it again (`shoal.experiment_link()`); `None` if the window was never
     /// opened.
     pub fn experiment_link(&self) -> Option<String> {
-        let page = self.page_url.clone().unwrap_or_default();
+        let page = self.page();
         self.experiment
             .design()
             .map(|design| crate::experiment::link::link(&page, design))
@@ -217,15 +224,12 @@ impl ShoalApp {
     /// The link *Share with class* gives (`shoal.student_link()`): these
     /// settings in the student view.
     pub fn student_link(&self) -> String {
-        crate::ui::studio_panel::student_link(
-            self.lab.settings(),
-            self.page_url.as_deref().unwrap_or_default(),
-        )
+        crate::ui::studio_panel::student_link(self.lab.settings(), &self.page())
     }
 
     /// The link that reopens the current settings (`shoal.share_link()`).
     pub fn share_link(&self) -> String {
-        let page = self.page_url.clone().unwrap_or_default();
+        let page = self.page();
         let page = match self.investigations.open_id() {
             Some(id) => crate::investigation::link::with_investigation(&page, id),
             None => page,

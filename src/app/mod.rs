@@ -411,7 +411,7 @@ impl eframe::App for ShoalApp {
                 }
                 crate::ui::ExperimentOutcome::Notice(notice) => self.notice = Some(notice),
                 crate::ui::ExperimentOutcome::CopyLink(design) => {
-                    let page = self.page_url.clone().unwrap_or_default();
+                    let page = self.page();
                     self.ctx
                         .copy_text(crate::experiment::link::link(&page, &design));
                     self.notice = Some(Notice::info(
@@ -422,7 +422,7 @@ impl eframe::App for ShoalApp {
                 }
             }
         }
-        let page_url = self.page_url.clone().unwrap_or_default();
+        let page_url = self.page();
         if let Some(notice) =
             self.studio
                 .windows_ui(ui.ctx(), &mut settings, &page_url, &mut self.widget_rects)

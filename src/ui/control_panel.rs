@@ -8,8 +8,10 @@ use super::WidgetRects;
 use super::scene_panel::PanelAction;
 use super::setting_slider::{setting_row, setting_row_with};
 use super::studio_panel::control;
+use crate::i18n::{Lang, num, tr, ts};
 use crate::scenes::CurrentPanel;
 use crate::settings::{SEED_MAX, Scene, Settings};
+use crate::tr;
 
 /// The view options the side panel edits that are not settings (they belong
 /// to this screen, not to the run a link shares).
@@ -39,11 +41,11 @@ pub fn control_panel_ui(
     let mut actions = Vec::new();
     ui.add_space(6.0);
     ui.horizontal(|ui| {
-        ui.heading("Shoal");
+        ui.heading(ts("app-name"));
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             let hide = ui
-                .button("Hide")
-                .on_hover_text("Hide this panel so the aquarium fills the screen");
+                .button(ts("panel-hide"))
+                .on_hover_text(ts("panel-hide.help"));
             rects.insert("hide_panel", hide.rect);
             if hide.clicked() {
                 actions.push(PanelAction::HidePanel);
@@ -65,17 +67,16 @@ pub fn control_panel_ui(
     ui.horizontal_wrapped(|ui| {
         super::about::about_button(ui, rects);
         super::studio_panel::studio_button(ui, &settings.studio, rects);
-        let describe = ui.button("Describe the tank").on_hover_text(
-            "Say in words what the fish do and what the plots show now (key D). \
-             A screen reader reads it aloud.",
-        );
+        let describe = ui
+            .button(ts("panel-describe"))
+            .on_hover_text(ts("panel-describe.help"));
         rects.insert("describe", describe.rect);
         if describe.clicked() {
             actions.push(PanelAction::Describe);
         }
         let keys = ui
-            .button("Keys")
-            .on_hover_text("Every keyboard shortcut (key ?)");
+            .button(ts("panel-keys"))
+            .on_hover_text(ts("panel-keys.help"));
         rects.insert("keys", keys.rect);
         if keys.clicked() {
             actions.push(PanelAction::Keyboard);
@@ -83,12 +84,12 @@ pub fn control_panel_ui(
     });
     ui.separator();
 
-    ui.label(egui::RichText::new("Simulation").strong());
+    ui.label(egui::RichText::new(ts("panel-simulation")).strong());
     ui.horizontal(|ui| {
         let (icon, help) = if settings.paused {
-            ("Play", "Start the fish swimming again (Space)")
+            (ts("panel-play"), ts("panel-play.help"))
         } else {
-            ("Pause", "Freeze the fish so you can look closely (Space)")
+            (ts("panel-pause"), ts("panel-pause.help"))
         };
         control(ui, rects, "paused", |ui, rects| {
             let play_pause = ui
@@ -99,14 +100,16 @@ pub fn control_panel_ui(
                 settings.paused = !settings.paused;
             }
         });
-        let step = ui.button("Step").on_hover_text(step_help(step_secs));
+        let step = ui
+            .button(ts("panel-step"))
+            .on_hover_text(step_help(step_secs));
         rects.insert("step", step.rect);
         if step.clicked() {
             actions.push(PanelAction::Step);
         }
-        let reset = ui.button("Reset").on_hover_text(
-            "Start again from the beginning, with the same fish in the same places (R)",
-        );
+        let reset = ui
+            .button(ts("panel-reset"))
+            .on_hover_text(ts("panel-reset.help"));
         rects.insert("reset", reset.rect);
         if reset.clicked() {
             actions.push(PanelAction::Reset);
@@ -126,9 +129,9 @@ pub fn control_panel_ui(
                 &Settings::SEED,
                 settings,
                 |ui, rects, settings| {
-                    let dice = ui.button("New").on_hover_text(
-                        "Pick a new random seed: a different tank and different fish",
-                    );
+                    let dice = ui
+                        .button(ts("panel-new-seed"))
+                        .on_hover_text(ts("panel-new-seed.help"));
                     rects.insert("new_seed", dice.rect);
                     if dice.clicked() {
                         settings.seed = next_seed(settings.seed);
@@ -144,21 +147,18 @@ pub fn control_panel_ui(
         .controls_ui(ui, settings, rects);
 
     ui.separator();
-    ui.label(egui::RichText::new("Share").strong());
+    ui.label(egui::RichText::new(ts("panel-share")).strong());
     ui.horizontal(|ui| {
-        let copy = ui.button("Copy link").on_hover_text(
-            "Copy a web link that opens Shoal with exactly these settings, \
-             to send to your class",
-        );
+        let copy = ui
+            .button(ts("panel-copy-link"))
+            .on_hover_text(ts("panel-copy-link.help"));
         rects.insert("copy_link", copy.rect);
         if copy.clicked() {
             actions.push(PanelAction::CopyLink);
         }
-        let csv = ui.button("Download data (CSV)").on_hover_text(
-            "Save this scene's numbers as a table for a spreadsheet, in a file named \
-                 after the scene and the simulated time; its first lines hold the seed and \
-                 the link that reopens these settings",
-        );
+        let csv = ui
+            .button(ts("panel-download-csv"))
+            .on_hover_text(ts("panel-download-csv.help"));
         rects.insert("export_csv", csv.rect);
         if csv.clicked() {
             actions.push(PanelAction::ExportCsv);
@@ -166,16 +166,16 @@ pub fn control_panel_ui(
     });
 
     ui.separator();
-    ui.label(egui::RichText::new("View").strong());
+    ui.label(egui::RichText::new(ts("panel-view")).strong());
+    language_ui(ui, rects);
     ui.horizontal_wrapped(|ui| {
-        let help = "How big text, buttons and plots are. Auto: bigger on a big screen, so \
-                    the back of the room can read it";
-        ui.label("Text size").on_hover_text(help);
+        let help = ts("panel-text-size.help");
+        ui.label(ts("panel-text-size")).on_hover_text(help);
         let mut auto = view.interface_scale.is_none();
         let r = ui
-            .checkbox(&mut auto, "Auto")
+            .checkbox(&mut auto, ts("panel-auto"))
             .on_hover_text(help)
-            .accessible_name("Automatic text size");
+            .accessible_name(ts("panel-text-size.auto"));
         rects.insert("ui_scale_auto", r.rect);
         if r.changed() {
             view.interface_scale = (!auto).then_some(view.current_scale);
@@ -185,49 +185,43 @@ pub fn control_panel_ui(
         let current = view.interface_scale.unwrap_or(view.current_scale);
         let r = ui
             .add_enabled(current > *range.start() + 0.01, egui::Button::new("A−"))
-            .on_hover_text("Smaller text")
-            .accessible_name("Smaller text");
+            .on_hover_text(ts("panel-text-smaller"))
+            .accessible_name(ts("panel-text-smaller"));
         rects.insert("ui_scale_smaller", r.rect);
         if r.clicked() {
             view.interface_scale = Some((current - 0.1).max(*range.start()));
         }
-        ui.label(format!("{current:.2}×"));
+        ui.label(tr!("panel-text-scale", scale = num(f64::from(current), 2)));
         let r = ui
             .add_enabled(current < *range.end() - 0.01, egui::Button::new("A+"))
-            .on_hover_text("Bigger text")
-            .accessible_name("Bigger text");
+            .on_hover_text(ts("panel-text-bigger"))
+            .accessible_name(ts("panel-text-bigger"));
         rects.insert("ui_scale_bigger", r.rect);
         if r.clicked() {
             view.interface_scale = Some((current + 0.1).min(*range.end()));
         }
     });
     ui.horizontal_wrapped(|ui| {
-        let help = "Auto: on a computer whose graphics cannot keep up, the tank is drawn \
-                    with fewer pixels so that it keeps moving smoothly (the panels and plots \
-                    stay sharp). Untick for the sharpest tank, however slow";
-        ui.label("Tank detail").on_hover_text(help);
+        let help = ts("panel-tank-detail.help");
+        ui.label(ts("panel-tank-detail")).on_hover_text(help);
         let r = ui
-            .checkbox(&mut view.detail_auto, "Auto")
+            .checkbox(&mut view.detail_auto, ts("panel-auto"))
             .on_hover_text(help)
-            .accessible_name("Automatic tank detail");
+            .accessible_name(ts("panel-tank-detail.auto"));
         rects.insert("scene_detail_auto", r.rect);
         let pixels = view.detail_scale * view.detail_scale;
         ui.label(if view.detail_scale < 1.0 {
-            format!("{:.0} % of the pixels", pixels * 100.0)
+            tr!(
+                "panel-pixels-share",
+                percent = num(f64::from(pixels) * 100.0, 0)
+            )
         } else {
-            "every pixel".to_owned()
+            tr("panel-pixels-all")
         })
-        .on_hover_text("How many of the view's pixels the tank is drawn with now");
+        .on_hover_text(ts("panel-pixels.help"));
     });
     super::seeing::seeing_ui(ui, rects);
-    ui.label(
-        egui::RichText::new(
-            "Drag to turn the tank · scroll or pinch to zoom · right-drag or two fingers to \
-             move · V or the button on the tank puts the camera back",
-        )
-        .small()
-        .weak(),
-    );
+    ui.label(egui::RichText::new(ts("panel-camera-hint")).small().weak());
     actions
 }
 
@@ -235,13 +229,33 @@ pub fn control_panel_ui(
 fn step_help(step_secs: f64) -> String {
     let per_second = 1.0 / step_secs.max(1e-9);
     if (per_second - per_second.round()).abs() < 0.01 {
-        format!(
-            "Move time forward by one tiny step, 1/{} of a second (S)",
-            per_second.round()
-        )
+        tr!("panel-step.help-fraction", per_second = per_second.round())
     } else {
-        format!("Move time forward by one step, {step_secs:.3} seconds (S)")
+        tr!("panel-step.help-seconds", seconds = num(step_secs, 3))
     }
+}
+
+/// The language picker: every language of the catalogue, each named in itself.
+fn language_ui(ui: &mut egui::Ui, rects: &mut WidgetRects) {
+    ui.horizontal_wrapped(|ui| {
+        let help = ts("language.help");
+        ui.label(ts("language")).on_hover_text(help);
+        let current = crate::i18n::lang();
+        let r = egui::ComboBox::from_id_salt("language_picker")
+            .selected_text(current.native_name())
+            .show_ui(ui, |ui| {
+                for lang in Lang::ALL {
+                    let r = ui.selectable_label(lang == current, lang.native_name());
+                    if r.clicked() && lang != current {
+                        super::language::choose(ui.ctx(), lang);
+                    }
+                }
+            })
+            .response
+            .on_hover_text(help)
+            .accessible_name(ts("language"));
+        rects.insert("language", r.rect);
+    });
 }
 
 /// A new seed that looks random but is reproducible from the old one (SplitMix64).

@@ -17,6 +17,7 @@ mod experiment_plot;
 mod files;
 mod investigation_panel;
 mod investigation_plot;
+pub mod language;
 pub mod learning_panel;
 mod metrics_panel;
 pub mod palette;

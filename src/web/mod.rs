@@ -11,11 +11,56 @@ use crate::settings::Settings;
 pub use a11y_dom::announce;
 pub use page::{download_text, pick_text_file};
 
+/// Where this browser remembers the language last chosen.
+const LANGUAGE_STORE_KEY: &str = "shoal.lang";
+
+/// Puts `lang` on the page: `<html lang>` (what a screen reader speaks in) and,
+/// if `remember`, this browser's memory of the choice.
+pub fn set_language(lang: crate::i18n::Lang, remember: bool) {
+    let Some(window) = web_sys::window() else {
+        return;
+    };
+    if let Some(html) = window.document().and_then(|d| d.document_element()) {
+        let _ = html.set_attribute("lang", lang.code());
+    }
+    if remember && let Ok(Some(storage)) = window.local_storage() {
+        let _ = storage.set_item(LANGUAGE_STORE_KEY, lang.code());
+    }
+}
+
+/// The language the page opens in (see `ui::language::initial`).
+fn initial_language() -> crate::i18n::Lang {
+    let window = web_sys::window();
+    let stored = window
+        .as_ref()
+        .and_then(|w| w.local_storage().ok().flatten())
+        .and_then(|s| s.get_item(LANGUAGE_STORE_KEY).ok().flatten());
+    let preferred: Vec<String> = window
+        .as_ref()
+        .map(|w| {
+            w.navigator()
+                .languages()
+                .iter()
+                .filter_map(|l| l.as_string())
+                .collect()
+        })
+        .unwrap_or_default();
+    crate::ui::language::initial(
+        &page::query(),
+        stored.as_deref(),
+        preferred.iter().map(String::as_str),
+    )
+}
+
 /// Starts Shoal in the page. Called once from `main`.
 pub async fn start() {
     if eframe::WebLogger::init(log::LevelFilter::Info).is_err() {
         // A logger was already installed: keep it.
     }
+    // Every word from here on, the page's own notices too, in the language chosen.
+    let lang = initial_language();
+    crate::i18n::set_lang(lang);
+    set_language(lang, false);
     let runner = eframe::WebRunner::new();
     // After eframe's own hook, so a panic is both logged and shown.
     page::show_panics_on_page();
