@@ -316,3 +316,81 @@ fn a_rock_is_added_moved_and_removed_without_a_mouse() {
         "the rock removed"
     );
 }
+
+/// The words of the side panel of every scene, as a screen reader reads them
+/// (names and hover help), in `lang`.
+fn side_panel_words(lang: crate::i18n::Lang) -> Vec<(Scene, String)> {
+    crate::i18n::with_lang(lang, || {
+        let mut words = Vec::new();
+        for scene in Scene::ALL {
+            let mirror = side_panel_mirror(scene);
+            for item in &mirror.items {
+                words.push((scene, item.name.trim().to_owned()));
+                if let Some(description) = &item.description {
+                    words.push((scene, description.trim().to_owned()));
+                }
+            }
+        }
+        words
+    })
+}
+
+#[test]
+fn every_word_of_every_side_panel_changes_with_the_language() {
+    use crate::i18n::Lang;
+    use std::collections::BTreeSet;
+    let english: BTreeSet<String> = side_panel_words(Lang::En)
+        .into_iter()
+        .map(|(_, w)| w)
+        .collect();
+    // Words both languages write alike (a name, an abbreviation, a number).
+    let en = crate::i18n::tests::texts(Lang::En);
+    let es = crate::i18n::tests::texts(Lang::Es);
+    let alike: BTreeSet<&String> = en
+        .iter()
+        .filter(|(id, text)| es.get(*id) == Some(text))
+        .map(|(_, text)| text)
+        .collect();
+    let words = |w: &str| {
+        w.split(|c: char| !c.is_alphabetic())
+            .filter(|w| w.chars().count() >= 2)
+            .count()
+    };
+    let untranslated: BTreeSet<String> = side_panel_words(Lang::Es)
+        .into_iter()
+        .filter(|(_, w)| english.contains(w) && words(w) > 0 && !alike.contains(w))
+        .map(|(scene, w)| format!("{scene:?}: {w}"))
+        .collect();
+    assert!(
+        untranslated.is_empty(),
+        "{} words of the side panels stay English in Spanish:\n{}",
+        untranslated.len(),
+        untranslated.into_iter().collect::<Vec<_>>().join("\n")
+    );
+}
+
+#[test]
+fn the_language_picker_changes_every_word_without_a_mouse() {
+    use crate::i18n::Lang;
+    crate::i18n::with_lang(Lang::En, || {
+        let mut harness = Harness::new(Scene::Boids);
+        let mirror = harness.frame();
+        assert!(mirror.control("Reset").is_some());
+        assert!(mirror.control("English").is_some());
+        harness.click(&mirror, "Español");
+        harness.frame();
+        assert_eq!(crate::i18n::lang(), Lang::Es);
+        let mirror = harness.frame();
+        assert!(
+            mirror.control("Reiniciar").is_some() && mirror.control("Reset").is_none(),
+            "the panel speaks Spanish: {:?}",
+            mirror.controls().map(|i| &i.name).collect::<Vec<_>>()
+        );
+        assert_eq!(
+            mirror.control("Español").map(|i| &i.kind),
+            Some(&Kind::Button {
+                pressed: Some(true)
+            })
+        );
+    });
+}

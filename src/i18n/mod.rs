@@ -25,7 +25,7 @@ use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
 use serde::{Deserialize, Serialize};
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 mod catalogue {
     include!(concat!(env!("OUT_DIR"), "/catalogue.rs"));

@@ -75,6 +75,17 @@ fn variables(p: &ast::Pattern<&str>) -> BTreeSet<String> {
     out
 }
 
+/// Every message and attribute of `lang` as it reads without variables.
+pub(crate) fn texts(lang: Lang) -> BTreeMap<String, String> {
+    messages(lang)
+        .into_keys()
+        .map(|id| {
+            let text = tr_in(lang, &id, None);
+            (id, text)
+        })
+        .collect()
+}
+
 #[test]
 fn every_language_has_every_message_with_the_same_variables() {
     let english = messages(Lang::En);

@@ -235,26 +235,23 @@ fn step_help(step_secs: f64) -> String {
     }
 }
 
-/// The language picker: every language of the catalogue, each named in itself.
+/// The language picker: every language of the catalogue as a button named
+/// in itself (a student who cannot read the current language still finds
+/// their own), the one in force pressed.
 fn language_ui(ui: &mut egui::Ui, rects: &mut WidgetRects) {
     ui.horizontal_wrapped(|ui| {
         let help = ts("language.help");
         ui.label(ts("language")).on_hover_text(help);
         let current = crate::i18n::lang();
-        let r = egui::ComboBox::from_id_salt("language_picker")
-            .selected_text(current.native_name())
-            .show_ui(ui, |ui| {
-                for lang in Lang::ALL {
-                    let r = ui.selectable_label(lang == current, lang.native_name());
-                    if r.clicked() && lang != current {
-                        super::language::choose(ui.ctx(), lang);
-                    }
-                }
-            })
-            .response
-            .on_hover_text(help)
-            .accessible_name(ts("language"));
-        rects.insert("language", r.rect);
+        for lang in Lang::ALL {
+            let r = ui
+                .selectable_label(lang == current, lang.native_name())
+                .on_hover_text(help);
+            rects.insert(&format!("lang_{}", lang.code()), r.rect);
+            if r.clicked() && lang != current {
+                super::language::choose(ui.ctx(), lang);
+            }
+        }
     });
 }
 
