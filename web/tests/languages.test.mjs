@@ -1,0 +1,118 @@
+// Every student: Shoal in Spanish. The language comes from the link
+// (`?lang=es`), the person's choice on this browser, or the browser's own
+// languages; the page says which (`<html lang>`), the accessibility tree and the
+// screen speak it, numbers are written its way, and every link Shoal makes
+// carries it.
+import { describe, test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import { serveDist, launch, openShoal, TIERS, saveArtifact, waitFrames } from "./harness.mjs";
+
+async function axTree(page) {
+  const cdp = await page.context().newCDPSession(page);
+  await cdp.send("Accessibility.enable");
+  const { nodes } = await cdp.send("Accessibility.getFullAXTree");
+  await cdp.detach();
+  return nodes
+    .filter((n) => !n.ignored)
+    .map((n) => {
+      const props = Object.fromEntries((n.properties || []).map((p) => [p.name, p.value?.value]));
+      return { role: n.role?.value, name: n.name?.value ?? "", ...props };
+    });
+}
+
+const find = (tree, role, name) => tree.find((n) => n.role === role && n.name === name);
+
+/** Waits until the mirror has a button named `name`. */
+async function mirroredButton(page, name) {
+  await page.waitForFunction(
+    (n) => [...document.querySelectorAll("#shoal_a11y button")].some((b) => (b.getAttribute("aria-label") || b.textContent) === n),
+    name,
+    { timeout: 60_000 },
+  );
+}
+
+/** Presses the mirror's button named `name`, as a screen reader does. */
+async function press(page, name) {
+  await mirroredButton(page, name);
+  await page.evaluate((n) => {
+    const b = [...document.querySelectorAll("#shoal_a11y button")].find((b) => (b.getAttribute("aria-label") || b.textContent) === n);
+    b.click();
+  }, name);
+}
+
+for (const tier of TIERS) {
+  describe(`languages (${tier})`, () => {
+    let server, browser;
+    before(async () => {
+      server = await serveDist();
+      browser = await launch(tier);
+    });
+    after(async () => {
+      await browser?.close();
+      await server?.close();
+    });
+
+    test("?lang=es: the page, the accessibility tree and the numbers speak Spanish, and every link carries it", async () => {
+      const { page, errors } = await openShoal(browser, `${server.url}?lang=es#`);
+      assert.equal(await page.evaluate(() => document.documentElement.lang), "es");
+      assert.equal(await page.evaluate(() => window.shoal.state().lang), "es");
+      await mirroredButton(page, "Reiniciar");
+      const tree = await axTree(page);
+      for (const name of ["Reiniciar", "Paso", "Describir el tanque", "Teclas", "Copiar enlace"]) {
+        assert.ok(find(tree, "button", name), `no button ${name}`);
+      }
+      for (const name of ["Reset", "Step", "Describe the tank", "Copy link"]) {
+        assert.ok(!find(tree, "button", name), `an English button ${name}`);
+      }
+      const spanish = find(tree, "button", "Español");
+      assert.equal(spanish?.pressed, "true", "the Español button is pressed");
+      // The text size reads with a decimal comma (1,00×).
+      assert.ok(
+        tree.some((n) => /^\d+,\d\d×$/.test(n.name)),
+        `no number with a decimal comma: ${tree.map((n) => n.name).filter((n) => /×/.test(n)).join(" | ")}`,
+      );
+      // Every link Shoal makes opens in Spanish.
+      assert.match(await page.evaluate(() => window.shoal.share_link()), /\?lang=es#/);
+      assert.match(await page.evaluate(() => window.shoal.student_link()), /\?lang=es#/);
+      await page.evaluate(() => window.shoal.set({ investigation: "why-school" }));
+      const link = await page.evaluate(() => window.shoal.share_link());
+      assert.match(link, /[?&]investigation=why-school/);
+      assert.match(link, /[?&]lang=es/);
+      await waitFrames(page, 3);
+      saveArtifact(`lang-es-${tier}.png`, await page.screenshot());
+      assert.deepEqual(errors, []);
+      await page.close();
+    });
+
+    test("the language buttons switch every word, <html lang> and the remembered choice", async () => {
+      const { page, errors } = await openShoal(browser, `${server.url}#`);
+      assert.equal(await page.evaluate(() => document.documentElement.lang), "en");
+      await press(page, "Español");
+      await page.waitForFunction(() => window.shoal.state().lang === "es", null, { timeout: 60_000 });
+      await mirroredButton(page, "Reiniciar");
+      assert.equal(await page.evaluate(() => document.documentElement.lang), "es");
+      assert.equal(await page.evaluate(() => localStorage.getItem("shoal.lang")), "es");
+      assert.match(await page.evaluate(() => window.shoal.share_link()), /\?lang=es#/);
+      // Opened again without ?lang, this browser remembers.
+      await page.goto(`${server.url}#`);
+      await page.waitForFunction(() => window.shoal && window.shoal.state().steps > 5, null, { timeout: 90_000 });
+      assert.equal(await page.evaluate(() => window.shoal.state().lang), "es");
+      await press(page, "English");
+      await page.waitForFunction(() => window.shoal.state().lang === "en", null, { timeout: 60_000 });
+      await mirroredButton(page, "Reset");
+      assert.equal(await page.evaluate(() => document.documentElement.lang), "en");
+      assert.doesNotMatch(await page.evaluate(() => window.shoal.share_link()), /lang=/);
+      assert.deepEqual(errors, []);
+      await page.close();
+    });
+
+    test("a browser set to Spanish opens in Spanish", async () => {
+      const page = await browser.newPage({ viewport: { width: 1280, height: 720 }, locale: "es-MX" });
+      await page.goto(`${server.url}#`);
+      await page.waitForFunction(() => window.shoal && window.shoal.state().steps > 5, null, { timeout: 90_000 });
+      assert.equal(await page.evaluate(() => window.shoal.state().lang), "es");
+      assert.equal(await page.evaluate(() => document.documentElement.lang), "es");
+      await page.close();
+    });
+  });
+}
