@@ -181,13 +181,22 @@ impl Mirror {
                     if item.name.is_empty() {
                         item.name = labelled_by(node, &nodes);
                     }
+                    // egui does not say a drop-down is open; its list shows it.
+                    if let Kind::ComboBox { expanded, .. } = &mut item.kind {
+                        *expanded |= node
+                            .children()
+                            .iter()
+                            .any(|c| nodes.get(c).is_some_and(|n| n.role() == Role::ListBox));
+                    }
                     item
                 })
             };
             // Children of a control are its own parts (a text field's runs of
-            // text): the control speaks for them.
+            // text): the control speaks for them. But an open drop-down's
+            // list is there to be chosen from: it follows the drop-down.
             let (descend, children_parent) = match &item {
                 Some(item) if item.kind.is_group() => (true, Some(item.id)),
+                Some(item) if matches!(item.kind, Kind::ComboBox { .. }) => (true, parent),
                 Some(_) => (false, parent),
                 None => (true, parent),
             };

@@ -394,3 +394,65 @@ fn the_language_picker_changes_every_word_without_a_mouse() {
         );
     });
 }
+
+#[test]
+fn a_drop_down_opens_and_chooses_from_a_screen_reader() {
+    let ctx = egui::Context::default();
+    ctx.enable_accesskit();
+    let mut pending = Vec::new();
+    let mut choice = 0;
+    let mut mirror = Mirror::default();
+    let mut press = |mirror: &Mirror, pending: &mut Vec<egui::Event>, name: &str| {
+        let item = mirror
+            .items
+            .iter()
+            .find(|i| i.name == name)
+            .unwrap_or_else(|| panic!("no {name} in {:?}", mirror.items));
+        pending.push(egui::Event::AccessKitActionRequest(
+            egui::accesskit::ActionRequest {
+                action: egui::accesskit::Action::Click,
+                target_tree: egui::accesskit::TreeId::ROOT,
+                target_node: egui::accesskit::NodeId(item.id),
+                data: None,
+            },
+        ));
+    };
+    for frame in 0..8 {
+        let input = egui::RawInput {
+            screen_rect: Some(egui::Rect::from_min_size(
+                egui::Pos2::ZERO,
+                egui::vec2(800.0, 600.0),
+            )),
+            time: Some(f64::from(frame) / 60.0),
+            events: std::mem::take(&mut pending),
+            ..Default::default()
+        };
+        let mut output = ctx.run_ui(input, |ui| {
+            egui::ComboBox::from_id_salt("levels")
+                .selected_text(format!("level {choice}"))
+                .show_ui(ui, |ui| {
+                    for i in 0..3 {
+                        ui.selectable_value(&mut choice, i, format!("level {i}"));
+                    }
+                })
+                .response
+                .accessible_name("Levels");
+        });
+        output.textures_delta.clear();
+        if let Some(update) = output.platform_output.accesskit_update {
+            mirror = Mirror::from_update(&update);
+        }
+        match frame {
+            1 => press(&mirror, &mut pending, "Levels"),
+            4 => {
+                assert!(matches!(
+                    mirror.control("Levels").map(|i| &i.kind),
+                    Some(Kind::ComboBox { expanded: true, .. })
+                ));
+                press(&mirror, &mut pending, "level 2");
+            }
+            _ => {}
+        }
+    }
+    assert_eq!(choice, 2, "the option chosen through the mirror");
+}
