@@ -402,7 +402,7 @@ fn a_drop_down_opens_and_chooses_from_a_screen_reader() {
     let mut pending = Vec::new();
     let mut choice = 0;
     let mut mirror = Mirror::default();
-    let mut press = |mirror: &Mirror, pending: &mut Vec<egui::Event>, name: &str| {
+    let press = |mirror: &Mirror, pending: &mut Vec<egui::Event>, name: &str| {
         let item = mirror
             .items
             .iter()
