@@ -17,8 +17,8 @@
 
 use crate::automation::{StateReport, TankReport};
 use crate::i18n::{fmt, num, ts};
-use crate::tr;
 use crate::metrics_history::{MetricsHistory, MetricsSample};
+use crate::tr;
 
 /// At most one sentence about an event every this many seconds (real time);
 /// events in between are said together.
@@ -127,7 +127,10 @@ pub fn summary(state: &StateReport) -> String {
         let mut w = school_words(physics.fish, &state.metrics.sample, hidden);
         if physics.sharks > 0 {
             w.push(' ');
-            w.push_str(&tr!("describe-sharks-hunting", count = physics.sharks as u64));
+            w.push_str(&tr!(
+                "describe-sharks-hunting",
+                count = physics.sharks as u64
+            ));
         }
         if let Some(fish) = &physics.selected {
             w.push(' ');
@@ -161,10 +164,7 @@ pub fn summary(state: &StateReport) -> String {
         let mut w = school_words(state.fish_count, &state.metrics.sample, hidden);
         if let Some(attention) = &state.metrics.attention {
             w.push(' ');
-            w.push_str(&tr!(
-                "describe-sees",
-                count = attention.neighbours.len()
-            ));
+            w.push_str(&tr!("describe-sees", count = attention.neighbours.len()));
         }
         w
     };
@@ -556,7 +556,10 @@ mod tests {
             words.contains(&format!("polarización {polarization}")),
             "{words}"
         );
-        assert!(words.contains(&format!("{} peces", state.fish_count)), "{words}");
+        assert!(
+            words.contains(&format!("{} peces", state.fish_count)),
+            "{words}"
+        );
         assert!(words.contains("metros por segundo"), "{words}");
         assert!(words.contains("semilla 11"), "{words}");
         assert!(words.contains("En pausa."), "{words}");

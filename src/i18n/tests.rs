@@ -244,9 +244,6 @@ const NOT_YET: &[&str] = &[
     "ui/status_line.rs",
     "ui/studio_panel.rs",
     "ui/tank_panel.rs",
-    "web/a11y_dom.rs",
-    "web/mod.rs",
-    "web/page.rs",
 ];
 
 /// Files that show nothing to a student: the simulation's own diagnostics,
