@@ -222,12 +222,21 @@ fn mind_words(fish: &crate::sim::reef::report::SelectedMindReport) -> String {
     if !fish.alive {
         return tr!("describe-eaten", name = fish.name.as_str());
     }
-    // The intention's label selects the words (avoid, escape, school, eat,
-    // mate, leave; anything else: wandering).
+    use crate::sim::reef::mind::Intention;
+    // Selectors of `describe-mind`'s words, not words.
+    let doing = match fish.intention {
+        Intention::Avoid => "avoid",
+        Intention::Escape => "escape",
+        Intention::School => "school",
+        Intention::Eat => "eat",
+        Intention::Mate => "mate",
+        Intention::Leave => "leave",
+        Intention::Wander => "wander",
+    };
     tr!(
         "describe-mind",
         name = fish.name.as_str(),
-        doing = fish.intention.label(),
+        doing = doing,
         hunger = num(f64::from(fish.hunger), 1),
         fear = num(f64::from(fish.fear), 1),
         libido = num(f64::from(fish.libido), 1),
