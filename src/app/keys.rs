@@ -458,6 +458,12 @@ mod tests {
                 .map(|s| (s.keys_text(), s.does_text()))
                 .collect()
         });
+        for (keys, does) in &spanish {
+            assert!(
+                !keys.starts_with("[keys") && !does.starts_with("[keys"),
+                "{spanish:?}"
+            );
+        }
         assert_eq!(spanish[0].0, "Espacio o P");
         assert_eq!(spanish[4].0, "[ y ]");
         assert!(spanish[2].1.contains("Reiniciar"), "{spanish:?}");
