@@ -16,7 +16,9 @@
 //! never from the picture, so what is said is what the plots measure.
 
 use crate::automation::{StateReport, TankReport};
+use crate::i18n::{fmt, num, ts};
 use crate::metrics_history::{MetricsHistory, MetricsSample};
+use crate::tr;
 
 /// At most one sentence about an event every this many seconds (real time);
 /// events in between are said together.
@@ -28,59 +30,51 @@ pub const SUMMARY_GAP_SECS: f64 = 30.0;
 /// How aligned the fish are, in words, from the polarization (0–1).
 pub fn alignment_words(polarization: f32) -> &'static str {
     if polarization >= 0.8 {
-        "tightly aligned"
+        ts("describe-aligned-tight")
     } else if polarization >= 0.5 {
-        "loosely aligned"
+        ts("describe-aligned-loose")
     } else {
-        "swimming every which way"
-    }
-}
-
-fn plural(n: u64, one: &str, many: &str) -> String {
-    if n == 1 {
-        format!("1 {one}")
-    } else {
-        format!("{n} {many}")
+        ts("describe-aligned-none")
     }
 }
 
 /// One tank of point-mass or muscle fish, as its metrics say.
 fn school_words(fish: usize, sample: &MetricsSample, count_hidden: bool) -> String {
     let fish_text = if count_hidden {
-        "The fish".to_owned()
+        tr!("describe-the-fish")
     } else {
-        plural(fish as u64, "fish", "fish")
+        tr!("describe-fish-count", count = fish)
     };
     if fish == 0 {
-        return "The tank is empty.".to_owned();
+        return tr!("describe-empty");
     }
     let arrangement = match sample.groups {
-        0 | 1 if fish > 1 => "in one school".to_owned(),
-        0 | 1 => "alone".to_owned(),
+        0 | 1 if fish > 1 => tr!("describe-one-school"),
+        0 | 1 => tr!("describe-alone"),
         // Mostly fish on their own, hardly groups at all.
-        g if g as usize * 4 > fish => format!("scattered ({g} separate groups)"),
-        g => format!("in {g} groups"),
+        g if g as usize * 4 > fish => tr!("describe-scattered", groups = g),
+        g => tr!("describe-in-groups", groups = g),
     };
-    let mut words = format!(
-        "{fish_text} {arrangement}, {} (polarization {:.2}), about {:.1} body lengths apart, \
-         swimming at {:.2} metres per second",
-        alignment_words(sample.polarization),
-        sample.polarization,
-        sample.nnd_body_lengths,
-        sample.mean_speed,
+    let mut words = tr!(
+        "describe-school",
+        fish = fish_text,
+        arrangement = arrangement,
+        alignment = alignment_words(sample.polarization),
+        polarization = num(sample.polarization.into(), 2),
+        spacing = num(sample.nnd_body_lengths.into(), 1),
+        speed = num(sample.mean_speed.into(), 2),
     );
     if sample.milling >= 0.5 {
-        words.push_str(&format!(
-            ", circling round their centre (milling {:.2})",
-            sample.milling
+        words.push_str(", ");
+        words.push_str(&tr!(
+            "describe-milling",
+            milling = num(sample.milling.into(), 2)
         ));
     }
     words.push('.');
     if sample.catches > 0 {
-        words.push_str(&format!(
-            " Sharks have caught {} so far.",
-            plural(sample.catches, "fish", "fish")
-        ));
+        words.push(' ');
+        words.push_str(&tr!("describe-caught-so-far", count = sample.catches));
     }
     words
 }
@@ -89,12 +83,12 @@ fn school_words(fish: usize, sample: &MetricsSample, count_hidden: bool) -> Stri
 pub fn summary(state: &StateReport) -> String {
     let hidden = state.student_view && state.fish_count == 0;
     let mut words = if let Some(reef) = &state.scene_report.reef {
-        let mut w = format!(
-            "The reef: {}, {}, {} and {} of plankton.",
-            plural(reef.predators as u64, "predator", "predators"),
-            plural(reef.prey as u64, "prey fish", "prey fish"),
-            plural(reef.pacifists as u64, "pacifist", "pacifists"),
-            plural(reef.food as u64, "bit", "bits"),
+        let mut w = tr!(
+            "describe-reef",
+            predators = reef.predators as u64,
+            prey = reef.prey as u64,
+            pacifists = reef.pacifists as u64,
+            food = reef.food as u64,
         );
         if let Some(fish) = &reef.selected {
             w.push(' ');
@@ -103,73 +97,80 @@ pub fn summary(state: &StateReport) -> String {
         w
     } else if let Some(learning) = &state.scene_report.learning {
         let mut w = match learning.drill {
-            Some(drill) => format!(
-                "Training drill {} of {}: {:.0} % done, best score {:.2}.",
-                drill + 1,
-                learning.drills,
-                learning.progress * 100.0,
-                learning.best_objective
+            Some(drill) => tr!(
+                "describe-drill",
+                drill = drill + 1,
+                drills = learning.drills,
+                percent = num(f64::from(learning.progress) * 100.0, 0),
+                best = num(f64::from(learning.best_objective), 2),
             ),
-            None => format!(
-                "The learning lab: {} of {} drills learned; the fish swims with {} \
-                 controllers.",
-                learning.finished.len(),
-                learning.drills,
-                match learning.source {
-                    crate::sim::learning::learning_lab::SetSource::Shipped => "the shipped",
-                    crate::sim::learning::learning_lab::SetSource::TrainedHere =>
-                        "its newly trained",
-                    crate::sim::learning::learning_lab::SetSource::Loaded => "loaded",
+            None => tr!(
+                "describe-lab",
+                learned = learning.finished.len(),
+                drills = learning.drills,
+                source = match learning.source {
+                    crate::sim::learning::learning_lab::SetSource::Shipped => "shipped", // words: a Fluent selector
+                    crate::sim::learning::learning_lab::SetSource::TrainedHere => "trained", // words: a Fluent selector
+                    crate::sim::learning::learning_lab::SetSource::Loaded => "loaded", // words: a Fluent selector
                 }
             ),
         };
         if let Some(race) = &learning.race {
-            w.push_str(&format!(
-                " A race of {} fish is on.",
-                race.len().max(learning.race_entrants)
+            w.push(' ');
+            w.push_str(&tr!(
+                "describe-race",
+                count = race.len().max(learning.race_entrants)
             ));
         }
         w
     } else if let Some(physics) = &state.scene_report.physics {
         let mut w = school_words(physics.fish, &state.metrics.sample, hidden);
         if physics.sharks > 0 {
-            w.push_str(&format!(
-                " {} hunting.",
-                plural(physics.sharks as u64, "shark is", "sharks are")
+            w.push(' ');
+            w.push_str(&tr!(
+                "describe-sharks-hunting",
+                count = physics.sharks as u64
             ));
         }
         if let Some(fish) = &physics.selected {
-            w.push_str(&format!(
-                " Fish {} swims at {:.2} metres per second{}.",
-                fish.index + 1,
-                fish.speed_m_per_s,
-                if fish.turning { ", turning" } else { "" }
+            w.push(' ');
+            w.push_str(&tr!(
+                if fish.turning {
+                    "describe-physics-fish-turning"
+                } else {
+                    "describe-physics-fish"
+                },
+                number = fish.index + 1,
+                speed = num(f64::from(fish.speed_m_per_s), 2),
             ));
         }
         w
     } else if state.compare {
         let right = state.metrics_right.as_ref().map_or(String::new(), |r| {
             format!(
-                " Right tank: {}",
-                school_words(state.fish_count, &r.sample, hidden)
+                " {}",
+                tr!(
+                    "describe-right-tank",
+                    words = school_words(state.fish_count, &r.sample, hidden)
+                )
             )
         });
-        format!(
-            "Left tank: {}{right}",
-            school_words(state.fish_count, &state.metrics.sample, hidden)
-        )
+        let left = tr!(
+            "describe-left-tank",
+            words = school_words(state.fish_count, &state.metrics.sample, hidden)
+        );
+        format!("{left}{right}")
     } else {
         let mut w = school_words(state.fish_count, &state.metrics.sample, hidden);
         if let Some(attention) = &state.metrics.attention {
-            w.push_str(&format!(
-                " The selected fish sees {}.",
-                plural(attention.neighbours.len() as u64, "neighbour", "neighbours")
-            ));
+            w.push(' ');
+            w.push_str(&tr!("describe-sees", count = attention.neighbours.len()));
         }
         w
     };
     if state.paused {
-        words.push_str(" Paused.");
+        words.push(' ');
+        words.push_str(ts("describe-paused"));
     }
     words
 }
@@ -181,32 +182,36 @@ pub fn selected(state: &StateReport) -> Option<String> {
         return reef
             .selected
             .as_ref()
-            .map(|fish| format!("Selected: {}", mind_words(fish)));
+            .map(|fish| tr!("describe-selected", what = mind_words(fish)));
     }
     if let Some(physics) = &state.scene_report.physics {
         return physics.selected.as_ref().map(|fish| {
-            format!(
-                "Selected: fish {}, a {} {:.2} metres long, swimming at {:.2} metres per second{}.",
-                fish.index + 1,
-                fish.species,
-                fish.body_length_m,
-                fish.speed_m_per_s,
-                if fish.turning { " and turning" } else { "" }
+            tr!(
+                if fish.turning {
+                    "describe-selected-body-turning"
+                } else {
+                    "describe-selected-body"
+                },
+                number = fish.index + 1,
+                species = fish.species,
+                length = num(f64::from(fish.body_length_m), 2),
+                speed = num(f64::from(fish.speed_m_per_s), 2),
             )
         });
     }
     state.metrics.attention.as_ref().map(|attention| {
-        let mut words = format!(
-            "Selected: fish {}. It sees {}",
-            attention.fish + 1,
-            plural(attention.neighbours.len() as u64, "neighbour", "neighbours")
+        let mut words = tr!(
+            if attention.sees_far_school {
+                "describe-selected-sees-far"
+            } else {
+                "describe-selected-sees"
+            },
+            number = attention.fish + 1,
+            count = attention.neighbours.len(),
         );
-        if attention.sees_far_school {
-            words.push_str(" and a school further off");
-        }
-        words.push('.');
         if attention.fleeing {
-            words.push_str(" It is fleeing a shark.");
+            words.push(' ');
+            words.push_str(ts("describe-fleeing"));
         }
         words
     })
@@ -215,20 +220,26 @@ pub fn selected(state: &StateReport) -> Option<String> {
 /// The selected reef fish's state of mind.
 fn mind_words(fish: &crate::sim::reef::report::SelectedMindReport) -> String {
     if !fish.alive {
-        return format!("{} was eaten.", fish.name);
+        return tr!("describe-eaten", name = fish.name.as_str());
     }
-    let doing = match fish.intention.label() {
-        "avoid" => "is swerving round an obstacle",
-        "escape" => "is fleeing a predator",
-        "school" => "is schooling with others",
-        "eat" => "is hungry and going for food",
-        "mate" => "is courting",
-        "leave" => "is leaving the others",
-        _ => "is wandering",
+    use crate::sim::reef::mind::Intention;
+    // Selectors of `describe-mind`'s words, not words.
+    let doing = match fish.intention {
+        Intention::Avoid => "avoid",
+        Intention::Escape => "escape",
+        Intention::School => "school",
+        Intention::Eat => "eat",
+        Intention::Mate => "mate",
+        Intention::Leave => "leave",
+        Intention::Wander => "wander",
     };
-    format!(
-        "{} {doing} (hunger {:.1}, fear {:.1}, libido {:.1}).",
-        fish.name, fish.hunger, fish.fear, fish.libido
+    tr!(
+        "describe-mind",
+        name = fish.name.as_str(),
+        doing = doing,
+        hunger = num(f64::from(fish.hunger), 1),
+        fear = num(f64::from(fish.fear), 1),
+        libido = num(f64::from(fish.libido), 1),
     )
 }
 
@@ -244,18 +255,24 @@ fn trend(history: &MetricsHistory, value: impl Fn(&MetricsSample) -> f32, digits
         .filter(|s| s.time_secs <= latest.time_secs - 10.0)
         .last()
     else {
-        return format!("{now:.digits$}");
+        return fmt(now.into(), digits);
     };
     let then = value(before);
     let scale = now.abs().max(then.abs()).max(1e-6);
+    // Selectors of `describe-trend`, not words.
     let direction = if (now - then).abs() / scale < 0.05 {
-        "steady"
+        "steady" // words: a Fluent selector
     } else if now > then {
-        "rising"
+        "rising" // words: a Fluent selector
     } else {
-        "falling"
+        "falling" // words: a Fluent selector
     };
-    format!("{now:.digits$}, {direction} (it was {then:.digits$} ten seconds ago)")
+    tr!(
+        "describe-trend",
+        now = fmt(now.into(), digits),
+        direction = direction,
+        then = fmt(then.into(), digits),
+    )
 }
 
 /// The plots' latest values and trends, for one tank's history.
@@ -263,14 +280,13 @@ fn plot_words(history: &MetricsHistory) -> String {
     if history.is_empty() {
         return String::new();
     }
-    format!(
-        "Plots: polarization {}; nearest neighbour {} body lengths; groups {}; milling {}; \
-         mean speed {} metres per second.",
-        trend(history, |s| s.polarization, 2),
-        trend(history, |s| s.nnd_body_lengths, 1),
-        trend(history, |s| s.groups as f32, 0),
-        trend(history, |s| s.milling, 2),
-        trend(history, |s| s.mean_speed, 2),
+    tr!(
+        "describe-plots",
+        polarization = trend(history, |s| s.polarization, 2),
+        neighbour = trend(history, |s| s.nnd_body_lengths, 1),
+        groups = trend(history, |s| s.groups as f32, 0),
+        milling = trend(history, |s| s.milling, 2),
+        speed = trend(history, |s| s.mean_speed, 2),
     )
 }
 
@@ -298,11 +314,13 @@ pub fn full(state: &StateReport, histories: &[(&str, &MetricsHistory)]) -> Strin
             .take(3)
             .map(|e| e.text.as_str())
             .collect();
-        words.push(format!("Latest: {}.", latest.join("; ")));
+        words.push(tr!("describe-latest", events = latest.join("; ")));
     }
-    words.push(format!(
-        "Time {:.0} seconds, speed {}×, seed {}.",
-        state.time_secs, state.speed, state.seed
+    words.push(tr!(
+        "describe-time",
+        seconds = num(state.time_secs, 0),
+        speed = f64::from(state.speed),
+        seed = state.seed.to_string(),
     ));
     words.join(" ")
 }
@@ -347,34 +365,21 @@ fn news(before: &Glance, now: &Glance, state: &StateReport) -> Vec<String> {
     let school = state.scene_report.reef.is_none() && state.scene_report.learning.is_none();
     if school && !state.compare && state.fish_count > 1 {
         if now.groups > before.groups && before.groups <= 1 {
-            said.push(format!("The school split into {} groups.", now.groups));
+            said.push(tr!("describe-split", groups = now.groups));
         } else if now.groups == 1 && before.groups > 1 {
-            said.push("The fish came together into one school.".to_owned());
+            said.push(tr!("describe-together"));
         }
+        let polarization = || num(state.metrics.sample.polarization.into(), 2);
         if now.aligned && !before.aligned {
-            said.push(format!(
-                "The fish now swim in line (polarization {:.2}).",
-                state.metrics.sample.polarization
-            ));
+            said.push(tr!("describe-in-line", polarization = polarization()));
         } else if !now.aligned && before.aligned {
-            said.push(format!(
-                "The fish no longer swim in line (polarization {:.2}).",
-                state.metrics.sample.polarization
-            ));
+            said.push(tr!("describe-out-of-line", polarization = polarization()));
         }
     }
     if now.catches > before.catches {
         // (Events during a quiet gap are added up here.)
         let new = now.catches - before.catches;
-        said.push(format!(
-            "{} ({} so far).",
-            if new == 1 {
-                "A shark caught a fish".to_owned()
-            } else {
-                format!("Sharks caught {new} fish")
-            },
-            now.catches
-        ));
+        said.push(tr!("describe-caught", count = new, total = now.catches));
     }
     if now.last_reef_event != before.last_reef_event
         && let Some((_, text)) = &now.last_reef_event
@@ -545,6 +550,31 @@ mod tests {
         }
         // The first thing said is the summary.
         assert!(said[0].1.contains("fish"), "{said:?}");
+    }
+
+    #[test]
+    fn the_description_reads_in_spanish_with_decimal_commas() {
+        use crate::i18n::{Lang, with_lang};
+        let mut run = lab(Scene::Boids, 11, |s| s.paused = true);
+        run.step(600);
+        let state = state_of(&run);
+        let words = with_lang(Lang::Es, || full(&state, &[("", run.runs()[0].history())]));
+        let sample = &state.metrics.sample;
+        let polarization = format!("{:.2}", sample.polarization).replace('.', ",");
+        assert!(
+            words.contains(&format!("polarización {polarization}")),
+            "{words}"
+        );
+        assert!(
+            words.contains(&format!("{} peces", state.fish_count)),
+            "{words}"
+        );
+        assert!(words.contains("metros por segundo"), "{words}");
+        assert!(words.contains("semilla 11"), "{words}");
+        assert!(words.contains("En pausa."), "{words}");
+        assert!(!words.contains("polarization"), "{words}");
+        // Back in English afterwards.
+        assert!(full(&state, &[]).contains("polarization"));
     }
 
     #[test]

@@ -32,9 +32,9 @@ impl ShoalApp {
                 }
             }
             Some(Err(err)) => {
-                self.notice = Some(Notice::error(format!(
-                    "This link could not open its investigation: {err}. The rest of the link \
-                     was opened."
+                self.notice = Some(Notice::error(crate::tr!(
+                    "notice-investigation-link-error",
+                    error = err.to_string()
                 )));
             }
             None => {}
@@ -42,9 +42,9 @@ impl ShoalApp {
         match experiment {
             Some(Ok(plan)) => self.reopen_experiment(plan),
             Some(Err(err)) => {
-                self.notice = Some(Notice::error(format!(
-                    "This link could not open its experiment: {err}. The rest of the link \
-                     was opened."
+                self.notice = Some(Notice::error(crate::tr!(
+                    "notice-experiment-link-error",
+                    error = err.to_string()
                 )));
             }
             None => {}
@@ -60,10 +60,9 @@ impl ShoalApp {
         self.lab.apply_settings(settings);
         let cost = self.lab_cost();
         self.experiment.start_plan(&self.ctx, plan, cost);
-        self.notice = Some(Notice::info(format!(
-            "This link reopened the experiment '{}': its runs start now, the same runs and \
-             numbers as when the link was made.",
-            self.experiment.design().map_or("", |d| d.name.as_str())
+        self.notice = Some(Notice::info(crate::tr!(
+            "notice-experiment-reopened",
+            name = self.experiment.design().map_or("", |d| d.name.as_str())
         )));
     }
 

@@ -10,6 +10,7 @@
 
 use eframe::egui;
 
+use crate::i18n::ts;
 use crate::settings::{SPEED_MAX, SPEED_MIN, Scene, Settings};
 
 /// Something a key asks of the app.
@@ -37,65 +38,83 @@ pub enum KeyAction {
     Help,
 }
 
-/// One shortcut as the *Keyboard* window lists it.
+/// One shortcut as the *Keyboard* window lists it: the catalogue's ids of
+/// its keys' names and of what it does.
 pub struct Shortcut {
     pub keys: &'static str,
     pub does: &'static str,
 }
 
+impl Shortcut {
+    /// The keys' names in the language in force (the keys stay the same).
+    pub fn keys_text(&self) -> String {
+        if self.keys == "keys-speed" {
+            // A message cannot start with "[": the brackets come as variables.
+            crate::tr!("keys-speed", slower = "[", faster = "]")
+        } else {
+            ts(self.keys).to_owned()
+        }
+    }
+
+    /// What the keys do, in the language in force.
+    pub fn does_text(&self) -> &'static str {
+        ts(self.does)
+    }
+}
+
 /// Every key, in the order the *Keyboard* window lists them.
 pub const SHORTCUTS: &[Shortcut] = &[
     Shortcut {
-        keys: "Space or P",
-        does: "Play or pause (Space presses a button instead while one has the focus)",
+        keys: "keys-play",
+        does: "keys-play.does",
     },
     Shortcut {
-        keys: "S",
-        does: "One step forward",
+        keys: "keys-step",
+        does: "keys-step.does",
     },
     Shortcut {
-        keys: "R",
-        does: "Reset the run",
+        keys: "keys-reset",
+        does: "keys-reset.does",
     },
     Shortcut {
-        keys: "1 to 5",
-        does: "Aquarium, Schooling lab, Physics fish, Reef, Learning lab",
+        keys: "keys-scenes",
+        does: "keys-scenes.does",
     },
     Shortcut {
-        keys: "[ and ]",
-        does: "Slower and faster (half and twice the speed)",
+        keys: "keys-speed",
+        does: "keys-speed.does",
     },
     Shortcut {
-        keys: "Arrow keys",
-        does: "Turn the camera round the tank (when no control has the focus)",
+        keys: "keys-arrows",
+        does: "keys-arrows.does",
     },
     Shortcut {
-        keys: "+ and −",
-        does: "Zoom the camera in and out",
+        keys: "keys-zoom",
+        does: "keys-zoom.does",
     },
     Shortcut {
-        keys: "V",
-        does: "Put the camera back",
+        keys: "keys-view",
+        does: "keys-view.does",
     },
     Shortcut {
-        keys: "N and B",
-        does: "Select the next or the previous fish, and hear what it does",
+        keys: "keys-next",
+        does: "keys-next.does",
     },
     Shortcut {
-        keys: "F",
-        does: "The camera follows the selected fish, or stops (Physics fish, Reef)",
+        keys: "keys-follow",
+        does: "keys-follow.does",
     },
     Shortcut {
-        keys: "D",
-        does: "Describe the tank: what the fish do and what the plots show",
+        keys: "keys-describe",
+        does: "keys-describe.does",
     },
     Shortcut {
-        keys: "Tab and Shift+Tab",
-        does: "Move between the controls; Enter or Space presses one",
+        keys: "keys-tab",
+        does: "keys-tab.does",
     },
     Shortcut {
-        keys: "?",
-        does: "Show or hide this list",
+        keys: "keys-help",
+        does: "keys-help.does",
     },
 ];
 
@@ -204,7 +223,9 @@ pub fn next_animal(animals: &[usize], current: Option<u32>, direction: i8) -> Op
 /// The *Keyboard* window: every key from [`SHORTCUTS`].
 pub fn help_window(ctx: &egui::Context, open: &mut bool, rects: &mut crate::ui::WidgetRects) {
     let mut still_open = *open;
-    egui::Window::new("Keyboard")
+    egui::Window::new(ts("keys-title"))
+        // The same window whatever the language.
+        .id(egui::Id::unique("Keyboard")) // words: the window's id, never shown
         .open(&mut still_open)
         .collapsible(false)
         .resizable(false)
@@ -219,17 +240,14 @@ pub fn help_window(ctx: &egui::Context, open: &mut bool, rects: &mut crate::ui::
                 .striped(true)
                 .show(ui, |ui| {
                     for shortcut in SHORTCUTS {
-                        ui.label(egui::RichText::new(shortcut.keys).strong());
-                        ui.label(shortcut.does);
+                        ui.label(egui::RichText::new(shortcut.keys_text()).strong());
+                        ui.label(shortcut.does_text());
                         ui.end_row();
                     }
                 });
             ui.add_space(6.0);
-            ui.label(
-                "With a screen reader, every control is in the page; the tank is described \
-                 in a live region, and D reads it all.",
-            );
-            let close = ui.button("Close");
+            ui.label(ts("keys-screen-reader"));
+            let close = ui.button(ts("keys-close"));
             rects.insert("keys_close", close.rect);
             if close.clicked() {
                 *open = false;
@@ -273,29 +291,23 @@ impl super::ShoalApp {
                     if class.selected(settings, side).is_some() {
                         self.describe_selection = true;
                     } else {
-                        self.say(format!(
-                            "In the {} you cannot pick a fish.",
-                            class.facts().label
-                        ));
+                        self.say(crate::tr!("keys-cannot-pick", scene = class.facts().label));
                     }
                 }
                 KeyAction::Describe => panel_actions.push(PanelAction::Describe),
                 KeyAction::Follow => {
                     let class = settings.scene.class();
                     let words = match class.toggle_camera_follow(settings) {
-                        Some(true) => "The camera follows the selected fish.".to_owned(),
+                        Some(true) => ts("keys-following").to_owned(),
                         Some(false)
                             if class
                                 .selected(settings, crate::settings::Side::Left)
                                 .is_none() =>
                         {
-                            "Select a fish first (N or B), then F follows it.".to_owned()
+                            ts("keys-select-first").to_owned()
                         }
-                        Some(false) => "The camera no longer follows the fish.".to_owned(),
-                        None => format!(
-                            "In the {} the camera does not follow a fish.",
-                            class.facts().label
-                        ),
+                        Some(false) => ts("keys-not-following").to_owned(),
+                        None => crate::tr!("keys-cannot-follow", scene = class.facts().label),
                     };
                     self.say(words);
                 }
@@ -316,8 +328,8 @@ impl super::ShoalApp {
             .iter()
             .map(|run| {
                 let name = match run.side() {
-                    crate::settings::Side::Left => "Left tank",
-                    crate::settings::Side::Right => "Right tank",
+                    crate::settings::Side::Left => ts("keys-left-tank"),
+                    crate::settings::Side::Right => ts("keys-right-tank"),
                 };
                 (name, run.history())
             })
@@ -435,6 +447,28 @@ mod tests {
         assert!(press(Key::ArrowLeft, false, true).is_empty());
         // The letters still work.
         assert_eq!(press(Key::P, false, true), [KeyAction::PlayPause]);
+    }
+
+    #[test]
+    fn the_keyboard_list_reads_in_spanish_with_the_same_keys() {
+        use crate::i18n::{Lang, with_lang};
+        let spanish: Vec<(String, &str)> = with_lang(Lang::Es, || {
+            SHORTCUTS
+                .iter()
+                .map(|s| (s.keys_text(), s.does_text()))
+                .collect()
+        });
+        for (keys, does) in &spanish {
+            assert!(
+                !keys.starts_with("[keys") && !does.starts_with("[keys"),
+                "{spanish:?}"
+            );
+        }
+        assert_eq!(spanish[0].0, "Espacio o P");
+        assert_eq!(spanish[4].0, "[ y ]");
+        assert!(spanish[2].1.contains("Reiniciar"), "{spanish:?}");
+        assert_eq!(SHORTCUTS[4].keys_text(), "[ and ]");
+        assert_eq!(SHORTCUTS[0].keys_text(), "Space or P");
     }
 
     #[test]

@@ -13,18 +13,29 @@ use eframe::egui;
 
 use crate::bench::Benchmark;
 use crate::clock::RateMeter;
+use crate::i18n::{fmt, num, ts};
 use crate::lab::Lab;
 use crate::render::{FrameBuilder, OrbitCamera, RenderCaps, SceneDetail, SceneRenderer};
 use crate::scenes::CurrentPanel;
 use crate::settings::{Scene, Settings};
+use crate::tr;
 use crate::ui::{Notice, PanelAction, WidgetRects, control_panel_ui, status_line_ui};
 
 /// Why Shoal could not start.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum StartError {
-    #[error("Shoal needs a GPU renderer (WebGPU or WebGL2), and none could be started.")]
     NoGpuRenderer,
 }
+
+impl std::fmt::Display for StartError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NoGpuRenderer => f.write_str(ts("app-no-gpu")),
+        }
+    }
+}
+
+impl std::error::Error for StartError {}
 
 /// The Shoal app.
 pub struct ShoalApp {
@@ -101,7 +112,7 @@ impl ShoalApp {
             .ok_or(StartError::NoGpuRenderer)?;
         let caps = SceneRenderer::install(render_state);
         log::info!(
-            "render tier: {} ({:?}), MSAA ×{}",
+            "render tier: {} ({:?}), MSAA ×{}", // words: a log line
             caps.tier.label(),
             render_state.adapter.get_info().backend,
             caps.msaa_samples
@@ -152,24 +163,26 @@ impl ShoalApp {
             return;
         };
         let report = bench.report();
-        egui::Window::new("Benchmark")
+        egui::Window::new(ts("app-bench-title"))
+            // The same window whatever the language.
+            .id(egui::Id::unique("Benchmark")) // words: the window's id, never shown
             .anchor(egui::Align2::RIGHT_TOP, egui::vec2(-8.0, 8.0))
             .resizable(false)
             .collapsible(false)
             .show(ui.ctx(), |ui| {
                 ui.label(if report.done {
-                    "Done. Figures for this computer and browser:"
+                    ts("app-bench-done")
                 } else {
-                    "Measuring… (about a minute)"
+                    ts("app-bench-measuring")
                 });
                 egui::Grid::new("bench_rows").striped(true).show(ui, |ui| {
                     for head in [
-                        "scene",
-                        "fish",
-                        "steps/s",
-                        "fish-steps/s",
-                        "frame ms",
-                        "CPU ms",
+                        ts("app-bench-scene"),
+                        ts("app-bench-fish"),
+                        ts("app-bench-steps"),
+                        ts("app-bench-fish-steps"),
+                        ts("app-bench-frame"),
+                        ts("app-bench-cpu"),
                     ] {
                         ui.strong(head);
                     }
@@ -177,20 +190,23 @@ impl ShoalApp {
                     for row in &report.rows {
                         ui.label(row.scene);
                         ui.label(row.fish.to_string());
-                        ui.label(format!("{:.0}", row.sim_steps_per_sec));
-                        ui.label(format!("{:.0}", row.fish_steps_per_sec));
-                        ui.label(format!("{:.2}", row.frame_ms));
-                        ui.label(format!("{:.2}", row.cpu_frame_ms));
+                        ui.label(fmt(row.sim_steps_per_sec, 0));
+                        ui.label(fmt(row.fish_steps_per_sec, 0));
+                        ui.label(fmt(row.frame_ms, 2));
+                        ui.label(fmt(row.cpu_frame_ms, 2));
                         ui.end_row();
                     }
                 });
                 if let Some(rate) = report.annealing_evaluations_per_sec {
-                    ui.label(format!("Learning lab: {rate:.1} annealing evaluations/s"));
+                    ui.label(tr!("app-bench-annealing", rate = num(rate, 1)));
                 }
                 if let Some(e) = &report.experiment {
-                    ui.label(format!(
-                        "Experiment {}: {:.3} runs/s ({} runs of {} steps, one thread)",
-                        e.name, e.runs_per_sec, e.runs, e.steps_per_run
+                    ui.label(tr!(
+                        "app-bench-experiment",
+                        name = e.name.to_string(),
+                        rate = num(e.runs_per_sec, 3),
+                        runs = e.runs,
+                        steps = e.steps_per_run,
                     ));
                 }
             });
@@ -208,10 +224,7 @@ impl ShoalApp {
                 PanelAction::CopyLink => {
                     let link = self.share_link();
                     self.ctx.copy_text(link);
-                    self.notice = Some(Notice::info(
-                        "Link copied. Paste it in a message or a web page: it opens \
-                         Shoal with exactly these settings.",
-                    ));
+                    self.notice = Some(Notice::info(ts("notice-link-copied")));
                 }
                 PanelAction::ExportCsv => {
                     let csv = self.export_csv();
@@ -220,7 +233,7 @@ impl ShoalApp {
                             &csv.name,
                             "text/csv",
                             &csv.text,
-                            Some("open it with a spreadsheet"),
+                            Some(ts("notice-csv-next")),
                         ) {
                             Ok(message) => Notice::info(message),
                             Err(err) => Notice::error(err.to_string()),
@@ -262,7 +275,9 @@ impl ShoalApp {
                         ui.add(
                             egui::Label::new(egui::RichText::new(&notice.text).color(color)).wrap(),
                         );
-                        let close = ui.button("OK").on_hover_text("Hide this message");
+                        let close = ui
+                            .button(ts("notice-ok"))
+                            .on_hover_text(ts("notice-ok.help"));
                         self.widget_rects.insert("notice_ok", close.rect);
                         if close.clicked() {
                             self.notice = None;
@@ -277,7 +292,7 @@ impl eframe::App for ShoalApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         assert!(
             !self.crash_requested,
-            "crash test requested through shoal.crash_test()"
+            "crash test requested through shoal.crash_test()" // words: a test's panic
         );
         let now_secs = ui.input(|i| i.time);
         self.widget_rects.clear();
@@ -313,7 +328,7 @@ impl eframe::App for ShoalApp {
             let hidden_count = settings.studio.count_is_mystery_for_student(settings.scene);
             status_line_ui(ui, &status, self.caps, hidden_count);
         });
-        let _ = status_panel.response.accessible_name("Status");
+        let _ = status_panel.response.accessible_name(ts("app-status"));
 
         // The scene's panel: refreshed from the simulation, then the panel under
         // the tank (drawn before the side panel and the tank, which take the rest).
@@ -366,7 +381,7 @@ impl eframe::App for ShoalApp {
             });
         if let Some(controls) = controls {
             // The panel's name for a screen reader (a region of the page).
-            let _ = controls.response.accessible_name("Controls");
+            let _ = controls.response.accessible_name(ts("app-controls"));
         }
         self.interface_scale = view.interface_scale;
         if view.detail_auto != self.scene_detail.auto {
@@ -381,14 +396,14 @@ impl eframe::App for ShoalApp {
             .show(ui, |ui| {
                 self.views_ui(ui, &mut settings);
                 if !self.panel_open {
-                    let button = egui::Button::new("Controls");
+                    let button = egui::Button::new(ts("app-controls"));
                     let at = ui.max_rect().left_top() + egui::vec2(8.0, 8.0);
                     let show = ui
                         .put(
                             egui::Rect::from_min_size(at, egui::vec2(100.0, 28.0)),
                             button,
                         )
-                        .on_hover_text("Show the control panel");
+                        .on_hover_text(ts("app-controls.help"));
                     self.widget_rects.insert("show_panel", show.rect);
                     if show.clicked() {
                         self.panel_open = true;
@@ -414,11 +429,7 @@ impl eframe::App for ShoalApp {
                     let page = self.page();
                     self.ctx
                         .copy_text(crate::experiment::link::link(&page, &design));
-                    self.notice = Some(Notice::info(
-                        "Link copied: it opens Shoal on this experiment and runs it again, \
-                         with the same numbers."
-                            .to_owned(),
-                    ));
+                    self.notice = Some(Notice::info(tr!("notice-experiment-link-copied")));
                 }
             }
         }

@@ -230,9 +230,9 @@ impl ShoalApp {
             let button = ui
                 .put(
                     egui::Rect::from_min_size(at, size),
-                    egui::Button::new("Reset view (V)"),
+                    egui::Button::new(crate::i18n::ts("app-reset-view")),
                 )
-                .on_hover_text("Put the camera back on what this scene is about");
+                .on_hover_text(crate::i18n::ts("app-reset-view.help"));
             self.widget_rects.insert("reset_view", button.rect);
             if button.clicked() {
                 self.reset_view();

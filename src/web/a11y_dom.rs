@@ -34,17 +34,17 @@ const LIVE_ID: &str = "shoal_live";
 
 /// The style of the mirror: invisible elements over the canvas that never
 /// take a mouse click from it, and a focus ring that shows on any colour.
-const STYLE: &str = "
-#shoal_a11y { position: fixed; inset: 0; overflow: hidden; pointer-events: none; z-index: 1; }
-#shoal_a11y [data-node] { position: absolute; box-sizing: border-box; margin: 0; padding: 0;
-  border: 0; opacity: 0; pointer-events: none; overflow: hidden; white-space: nowrap;
-  font-size: 12px; min-width: 1px; min-height: 1px; }
-#shoal_a11y section[data-node] { position: static; opacity: 1; overflow: visible; }
-#shoal_focus_ring { position: fixed; display: none; pointer-events: none; z-index: 2;
-  border-radius: 4px; box-shadow: 0 0 0 2px #0b1118, 0 0 0 5px #ffd24a, 0 0 0 7px #0b1118; }
-.shoal_sr_only { position: absolute; width: 1px; height: 1px; margin: -1px; padding: 0;
-  overflow: hidden; clip: rect(0 0 0 0); white-space: nowrap; border: 0; }
-";
+const STYLE: &str = concat!(
+    "#shoal_a11y { position: fixed; inset: 0; overflow: hidden; pointer-events: none; z-index: 1; }\n", // words: CSS
+    "#shoal_a11y [data-node] { position: absolute; box-sizing: border-box; margin: 0; padding: 0;\n", // words: CSS
+    "  border: 0; opacity: 0; pointer-events: none; overflow: hidden; white-space: nowrap;\n", // words: CSS
+    "  font-size: 12px; min-width: 1px; min-height: 1px; }\n", // words: CSS
+    "#shoal_a11y section[data-node] { position: static; opacity: 1; overflow: visible; }\n", // words: CSS
+    "#shoal_focus_ring { position: fixed; display: none; pointer-events: none; z-index: 2;\n", // words: CSS
+    "  border-radius: 4px; box-shadow: 0 0 0 2px #0b1118, 0 0 0 5px #ffd24a, 0 0 0 7px #0b1118; }\n", // words: CSS
+    ".shoal_sr_only { position: absolute; width: 1px; height: 1px; margin: -1px; padding: 0;\n", // words: CSS
+    "  overflow: hidden; clip: rect(0 0 0 0); white-space: nowrap; border: 0; }\n", // words: CSS
+);
 
 thread_local! {
     static MIRROR: RefCell<Option<DomMirror>> = const { RefCell::new(None) };
@@ -73,6 +73,40 @@ pub fn announce(text: &str) {
             mirror.live.set_text_content(Some(text));
         }
     });
+}
+
+/// eframe's hidden text box, right after the canvas, that takes what is
+/// typed into a text field clicked with the mouse.
+fn text_agent(canvas: &web_sys::Element) -> Option<web_sys::Element> {
+    canvas
+        .next_element_sibling()
+        .filter(|agent| agent.tag_name().eq_ignore_ascii_case("input"))
+}
+
+/// Names the mirror's root, the canvas and eframe's text box in the language
+/// in force.
+fn name_elements(document: &web_sys::Document) -> Result<(), JsValue> {
+    use crate::i18n::ts;
+    if let Some(root) = document.get_element_by_id(ROOT_ID) {
+        root.set_attribute("aria-label", ts("app-name"))?;
+    }
+    if let Some(canvas) = document.get_element_by_id("shoal_canvas") {
+        canvas.set_attribute("aria-label", ts("page-canvas"))?;
+        if let Some(agent) = text_agent(&canvas) {
+            agent.set_attribute("aria-label", ts("page-text-agent"))?;
+        }
+    }
+    Ok(())
+}
+
+/// Names the page's elements again in the language now in force (the
+/// controls' own names follow by themselves: egui sends them every frame).
+pub fn set_language() {
+    if let Some(document) = web_sys::window().and_then(|w| w.document())
+        && let Err(err) = name_elements(&document)
+    {
+        log::warn!("accessibility mirror: {err:?}");
+    }
 }
 
 /// The egui plugin that carries the tree out and the actions in.
@@ -136,44 +170,34 @@ struct DomMirror {
 fn html(element: web_sys::Element) -> Result<web_sys::HtmlElement, JsValue> {
     element
         .dyn_into::<web_sys::HtmlElement>()
-        .map_err(|_| JsValue::from_str("not an HTML element"))
+        .map_err(|_| JsValue::from_str("not an HTML element")) // words: a developer's error, logged
 }
 
 impl DomMirror {
     fn new(ctx: egui::Context) -> Result<Self, JsValue> {
         let document = web_sys::window()
             .and_then(|w| w.document())
-            .ok_or("no document")?;
-        let body = document.body().ok_or("no body")?;
+            .ok_or("no document")?; // words: a developer's error, logged
+        let body = document.body().ok_or("no body")?; // words: a developer's error, logged
         let style = document.create_element("style")?;
         style.set_text_content(Some(STYLE));
-        document.head().ok_or("no head")?.append_child(&style)?;
+        document.head().ok_or("no head")?.append_child(&style)?; // words: a developer's error, logged
 
         // Before the canvas: Tab reaches the controls first, the tank after.
         let root = html(document.create_element("div")?)?;
         root.set_id(ROOT_ID);
-        root.set_attribute("aria-label", "Shoal")?;
         let canvas = document.get_element_by_id("shoal_canvas");
         body.insert_before(&root, canvas.as_ref().map(|c| c.as_ref()))?;
         if let Some(canvas) = &canvas {
             // The picture egui draws, and where its own keys go.
             canvas.set_attribute("role", "application")?;
-            canvas.set_attribute(
-                "aria-label",
-                "The tank. Arrow keys turn the camera, plus and minus zoom, \
-                 N selects a fish, D describes the tank, question mark lists every key.",
-            )?;
-            // eframe's hidden text box, right after the canvas, that takes
-            // what is typed into a text field clicked with the mouse.
-            if let Some(agent) = canvas.next_element_sibling()
-                && agent.tag_name().eq_ignore_ascii_case("input")
-            {
-                agent.set_attribute("aria-label", "Text you type into the field being edited")?;
+            if let Some(agent) = text_agent(canvas) {
                 // Not a Tab stop of its own: eframe focuses it while a text
                 // field is being edited.
                 agent.set_attribute("tabindex", "-1")?;
             }
         }
+        name_elements(&document)?;
 
         let live = html(document.create_element("div")?)?;
         live.set_id(LIVE_ID);
@@ -332,10 +356,10 @@ impl DomMirror {
             Some([left, top, right, bottom]) => {
                 let z = self.last_zoom;
                 let _ = style.set_property("display", "block");
-                let _ = style.set_property("left", &format!("{}px", left * z));
-                let _ = style.set_property("top", &format!("{}px", top * z));
-                let _ = style.set_property("width", &format!("{}px", (right - left) * z));
-                let _ = style.set_property("height", &format!("{}px", (bottom - top) * z));
+                let _ = style.set_property("left", &format!("{}px", left * z)); // words: CSS
+                let _ = style.set_property("top", &format!("{}px", top * z)); // words: CSS
+                let _ = style.set_property("width", &format!("{}px", (right - left) * z)); // words: CSS
+                let _ = style.set_property("height", &format!("{}px", (bottom - top) * z)); // words: CSS
             }
             None => {
                 let _ = style.set_property("display", "none");
@@ -407,10 +431,10 @@ fn write(element: &web_sys::HtmlElement, item: &Item, zoom: f32) -> Result<(), J
         && let Some([left, top, right, bottom]) = item.bounds
     {
         let style = element.style();
-        style.set_property("left", &format!("{}px", left * zoom))?;
-        style.set_property("top", &format!("{}px", top * zoom))?;
-        style.set_property("width", &format!("{}px", ((right - left) * zoom).max(1.0)))?;
-        style.set_property("height", &format!("{}px", ((bottom - top) * zoom).max(1.0)))?;
+        style.set_property("left", &format!("{}px", left * zoom))?; // words: CSS
+        style.set_property("top", &format!("{}px", top * zoom))?; // words: CSS
+        style.set_property("width", &format!("{}px", ((right - left) * zoom).max(1.0)))?; // words: CSS
+        style.set_property("height", &format!("{}px", ((bottom - top) * zoom).max(1.0)))?; // words: CSS
     }
     let name = (!item.name.trim().is_empty()).then_some(item.name.as_str());
     let description = item.description.as_deref().filter(|d| Some(*d) != name);

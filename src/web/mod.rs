@@ -14,9 +14,13 @@ pub use page::{download_text, pick_text_file};
 /// Where this browser remembers the language last chosen.
 const LANGUAGE_STORE_KEY: &str = "shoal.lang";
 
-/// Puts `lang` on the page: `<html lang>` (what a screen reader speaks in) and,
-/// if `remember`, this browser's memory of the choice.
+/// Puts `lang` on the page: `<html lang>` (what a screen reader speaks in),
+/// the names the page gives the canvas and its text box, the page's own
+/// notices, and, if `remember`, this browser's memory of the choice.
+/// `lang` must already be in force (`crate::i18n::set_lang`).
 pub fn set_language(lang: crate::i18n::Lang, remember: bool) {
+    page::set_language();
+    a11y_dom::set_language();
     let Some(window) = web_sys::window() else {
         return;
     };
@@ -67,8 +71,8 @@ pub async fn start() {
 
     let Some(canvas) = page::canvas() else {
         page::show_error(
-            "Shoal could not start",
-            "The page has no canvas named shoal_canvas.",
+            crate::i18n::ts("page-could-not-start"),
+            crate::i18n::ts("page-no-canvas"),
         );
         return;
     };
@@ -84,9 +88,7 @@ pub async fn start() {
         Ok(settings) => (settings.unwrap_or_default(), None),
         Err(err) => (
             Settings::default(),
-            Some(format!(
-                "This link could not be opened: {err}. Shoal started with its usual settings instead."
-            )),
+            Some(crate::tr!("page-link-error", error = err.to_string())),
         ),
     };
     if let Some(message) = &link_error {

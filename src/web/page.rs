@@ -1,7 +1,35 @@
 //! Messages on the page itself, outside the canvas: the "no GPU" explanation and the
 //! panic notice. Text goes in with `set_text_content`, never as HTML.
 
+use std::cell::RefCell;
+
 use wasm_bindgen::JsCast;
+
+use crate::i18n::ts;
+use crate::tr;
+
+/// Stands for the panic's details in the words made before it.
+const DETAIL_MARK: &str = "\u{1}";
+
+thread_local! {
+    /// The panic notice's words in the language in force, made before any
+    /// panic (a panic hook must not build them: the catalogue may be the
+    /// thing that panicked). Set by [`set_language`].
+    static PANIC_WORDS: RefCell<Option<([&'static str; 3], String)>> = const { RefCell::new(None) };
+}
+
+/// Makes the page's own words (the panic notice) ready in the language in
+/// force; called whenever the language changes.
+pub fn set_language() {
+    let words = [
+        ts("page-panic-title"),
+        ts("page-panic-sorry"),
+        ts("page-reload"),
+    ];
+    // The details go where the marker is.
+    let details = tr!("page-panic-details", detail = DETAIL_MARK);
+    PANIC_WORDS.with(|w| *w.borrow_mut() = Some((words, details)));
+}
 
 fn document() -> Option<web_sys::Document> {
     web_sys::window()?.document()
@@ -51,30 +79,27 @@ pub fn hide_notice() {
 
 /// Shows `title` and `detail` in the page's notice box, with a reload button.
 pub fn show_error(title: &str, detail: &str) {
-    show(title, &[detail], "error");
+    show(title, &[detail], "error", ts("page-reload"));
 }
 
 /// The browser offered neither WebGPU nor WebGL2.
 pub fn show_no_gpu(detail: &str) {
     show(
-        "Shoal needs 3D graphics, and this browser did not provide them",
+        ts("page-no-gpu-title"),
         &[
-            "Shoal draws the aquarium with WebGPU or, where that is missing, WebGL2. \
-             This browser offered neither, or they are switched off.",
-            "It works in current Chrome, Edge, Firefox and Safari (version 15 or later) \
-             on Windows, macOS, Linux, ChromeOS, Android and iPadOS. Check that hardware \
-             acceleration is on (in Chrome: Settings → System → \"Use graphics \
-             acceleration when available\"), then reload.",
-            &format!("Details: {detail}"),
+            ts("page-no-gpu-why"),
+            ts("page-no-gpu-where"),
+            &tr!("page-details", detail = detail),
         ],
         "error",
+        ts("page-reload"),
     );
     if let Some(canvas) = canvas() {
         canvas.set_class_name("hidden");
     }
 }
 
-fn show(title: &str, paragraphs: &[&str], class: &str) {
+fn show(title: &str, paragraphs: &[&str], class: &str, reload: &str) {
     let Some(document) = document() else {
         return;
     };
@@ -94,7 +119,7 @@ fn show(title: &str, paragraphs: &[&str], class: &str) {
         add("p", paragraph);
     }
     if let Ok(button) = document.create_element("button") {
-        button.set_text_content(Some("Reload Shoal"));
+        button.set_text_content(Some(reload));
         let _ = button.set_attribute("onclick", "location.reload()");
         let _ = notice.append_child(&button);
     }
@@ -105,15 +130,22 @@ pub fn show_panics_on_page() {
     let previous = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {
         previous(info);
-        show(
-            "Shoal stopped because of an internal error",
-            &[
-                "Sorry: something went wrong inside Shoal. Reloading the page starts it \
-                 again.",
-                &format!("Details for the developers: {info}"),
-            ],
-            "error",
-        );
+        let ([title, sorry, reload], details) = PANIC_WORDS
+            .with(|w| w.try_borrow().ok().and_then(|w| w.clone()))
+            .unwrap_or_else(|| {
+                // Only if a panic comes before the language is set (see
+                // `crate::web::start`): English.
+                (
+                    [
+                        "Shoal stopped because of an internal error", // words: English before any language is set
+                        "Sorry: something went wrong inside Shoal. Reloading the page starts it again.", // words: English before any language is set
+                        "Reload Shoal", // words: English before any language is set
+                    ],
+                    format!("Details for the developers: {DETAIL_MARK}"), // words: English before any language is set
+                )
+            });
+        let details = details.replace(DETAIL_MARK, &info.to_string());
+        show(title, &[sorry, &details], "error", reload);
     }));
 }
 
@@ -126,12 +158,12 @@ pub fn download_text(name: &str, mime: &str, text: &str) -> Result<(), String> {
     let blob =
         web_sys::Blob::new_with_str_sequence_and_options(&parts, &options).map_err(describe)?;
     let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(describe)?;
-    let document = document().ok_or("no document")?;
+    let document = document().ok_or("no document")?; // words: a developer's error
     let anchor: web_sys::HtmlAnchorElement = document
         .create_element("a")
         .map_err(describe)?
         .dyn_into()
-        .map_err(|_| "not an anchor".to_owned())?;
+        .map_err(|_| "not an anchor".to_owned())?; // words: a developer's error
     anchor.set_href(&url);
     anchor.set_download(name);
     anchor.click();
@@ -149,12 +181,12 @@ pub fn pick_text_file(
 ) -> Result<(), String> {
     use wasm_bindgen::closure::Closure;
     let describe = |err: wasm_bindgen::JsValue| format!("{err:?}");
-    let document = document().ok_or("no document")?;
+    let document = document().ok_or("no document")?; // words: a developer's error
     let input: web_sys::HtmlInputElement = document
         .create_element("input")
         .map_err(describe)?
         .dyn_into()
-        .map_err(|_| "not an input".to_owned())?;
+        .map_err(|_| "not an input".to_owned())?; // words: a developer's error
     input.set_type("file");
     input.set_accept(accept);
     let picked = input.clone();
@@ -166,10 +198,8 @@ pub fn pick_text_file(
         wasm_bindgen_futures::spawn_local(async move {
             let text = wasm_bindgen_futures::JsFuture::from(file.text()).await;
             *into.borrow_mut() = Some(match text {
-                Ok(value) => value
-                    .as_string()
-                    .ok_or_else(|| "the file is not text".to_owned()),
-                Err(err) => Err(format!("the file could not be read: {err:?}")),
+                Ok(value) => value.as_string().ok_or_else(|| tr!("page-file-not-text")),
+                Err(err) => Err(tr!("page-file-unreadable", error = format!("{err:?}"))),
             });
             on_done();
         });
