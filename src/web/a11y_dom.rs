@@ -453,6 +453,12 @@ fn write(element: &web_sys::HtmlElement, item: &Item, zoom: f32) -> Result<(), J
         }
         Kind::Button { pressed } => {
             write_text(element, &item.name);
+            // A language's button is its name in itself, read in its own voice
+            // (WCAG 3.1.2).
+            let own = crate::i18n::Lang::ALL
+                .into_iter()
+                .find(|l| l.native_name() == item.name);
+            set_or_remove(e, "lang", own.map(crate::i18n::Lang::code));
             set_or_remove(
                 e,
                 "aria-pressed",

@@ -64,6 +64,15 @@ for (const tier of TIERS) {
       for (const name of ["Reset", "Step", "Describe the tank", "Copy link"]) {
         assert.ok(!find(tree, "button", name), `an English button ${name}`);
       }
+      assert.deepEqual(
+        await page.evaluate(() =>
+          [...document.querySelectorAll("#shoal_a11y button")]
+            .filter((b) => ["English", "Español"].includes(b.textContent))
+            .map((b) => [b.textContent, b.lang]),
+        ),
+        [["English", "en"], ["Español", "es"]],
+        "each language's button speaks its own language",
+      );
       const spanish = find(tree, "button", "Español");
       assert.equal(spanish?.pressed, "true", "the Español button is pressed");
       // The text size reads with a decimal comma (1,00×).
