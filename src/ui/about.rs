@@ -70,11 +70,11 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
                     for (k, (name, formula)) in
                         page.equations.iter().flat_map(|g| g.iter()).enumerate()
                     {
-                        let r = ui.label(egui::RichText::new(ts(*name)).strong());
+                        let r = ui.label(egui::RichText::new(ts(name)).strong());
                         if k == 0 {
                             rects.insert("about_equation_0", r.rect);
                         }
-                        ui.label(ts(*formula));
+                        ui.label(ts(formula));
                         ui.add_space(4.0);
                     }
                     ui.label(egui::RichText::new(ts("about-equations-docs")).italics());
@@ -82,7 +82,7 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
             rects.insert("about_equations", r.header_response.rect);
             section(ui, ts("about-references"));
             for reference in page.references {
-                ui.label(egui::RichText::new(ts(*reference)).weak());
+                ui.label(egui::RichText::new(ts(reference)).weak());
             }
         });
     });
@@ -101,7 +101,7 @@ fn bullets(ui: &mut egui::Ui, items: &[&'static str]) {
     for item in items {
         ui.horizontal_wrapped(|ui| {
             ui.label("•");
-            ui.label(ts(*item));
+            ui.label(ts(item));
         });
     }
 }
