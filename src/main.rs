@@ -7,14 +7,14 @@ fn main() -> eframe::Result {
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("info")).init();
     let options = eframe::NativeOptions {
         viewport: eframe::egui::ViewportBuilder::default()
-            .with_title("Shoal — a virtual ethology lab")
+            .with_title(shoal::i18n::tr("about-app-title"))
             .with_inner_size([1280.0, 800.0])
             .with_min_inner_size([480.0, 320.0]),
         renderer: eframe::Renderer::Wgpu,
         ..Default::default()
     };
     eframe::run_native(
-        "Shoal",
+        "Shoal", // words: eframe's app id (names the settings folder), the product name
         options,
         Box::new(|cc| {
             let app = shoal::ShoalApp::new(cc, shoal::settings::Settings::default())?;

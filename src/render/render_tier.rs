@@ -50,7 +50,7 @@ impl RenderTier {
         match self {
             Self::WebGpu => "WebGPU",
             Self::WebGl2 => "WebGL2",
-            Self::Native => "native GPU",
+            Self::Native => crate::i18n::ts("render-tier-native"),
         }
     }
 }

@@ -535,7 +535,7 @@ impl SceneRenderer {
             source: wgpu::ShaderSource::Wgsl(BLIT_SHADER.into()),
         });
         let uniform_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("scene uniforms"),
+            label: Some("scene uniforms"), // words: a GPU debug label
             entries: &[wgpu::BindGroupLayoutEntry {
                 binding: 0,
                 visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
@@ -623,7 +623,7 @@ impl SceneRenderer {
             None,
         );
         let static_pipeline = pipeline(
-            "static meshes",
+            "static meshes", // words: a GPU debug label
             "vs_static",
             "fs_lit",
             &[Some(vertex_layout.clone())],
@@ -633,7 +633,7 @@ impl SceneRenderer {
         );
         // Fins are double-sided geometry; bodies are closed: back-face culling.
         let swim_pipeline = pipeline(
-            "fish and sharks",
+            "fish and sharks", // words: a GPU debug label
             "vs_fish",
             "fs_lit",
             &[Some(vertex_layout.clone()), Some(instance_layout.clone())],
@@ -653,7 +653,7 @@ impl SceneRenderer {
         // Deformed bodies: fins are single sheets and `fs_lit` turns normals to the
         // eye, so no culling (which also keeps a mirrored placement visible).
         let body_pipeline = pipeline(
-            "deformed bodies",
+            "deformed bodies", // words: a GPU debug label
             "vs_body",
             "fs_lit",
             &[Some(vertex_layout)],
@@ -662,7 +662,7 @@ impl SceneRenderer {
             None,
         );
         let surface_pipeline = pipeline(
-            "water surface",
+            "water surface", // words: a GPU debug label
             "vs_surface",
             "fs_surface",
             &[],
@@ -754,7 +754,7 @@ impl SceneRenderer {
 
     fn instance_buffer(device: &wgpu::Device, capacity: usize) -> wgpu::Buffer {
         device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("animal instances"),
+            label: Some("animal instances"), // words: a GPU debug label
             size: (capacity * size_of::<FishInstance>()) as u64,
             usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
@@ -764,13 +764,13 @@ impl SceneRenderer {
     /// The GPU state of a view that is drawn for the first time.
     fn new_view(&self, device: &wgpu::Device) -> ViewState {
         let uniform_buffer = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("scene uniforms"),
+            label: Some("scene uniforms"), // words: a GPU debug label
             size: size_of::<SceneUniforms>() as u64,
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
         let uniform_bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("scene uniforms"),
+            label: Some("scene uniforms"), // words: a GPU debug label
             layout: &self.uniform_layout,
             entries: &[wgpu::BindGroupEntry {
                 binding: 0,
@@ -817,10 +817,10 @@ impl SceneRenderer {
                 .create_view(&wgpu::TextureViewDescriptor::default())
         };
         let samples = self.caps.msaa_samples;
-        let color = texture("scene colour", SCENE_COLOR_FORMAT, 1, true);
+        let color = texture("scene colour", SCENE_COLOR_FORMAT, 1, true); // words: a GPU debug label
         let msaa_color =
-            (samples > 1).then(|| texture("scene colour msaa", SCENE_COLOR_FORMAT, samples, false));
-        let depth = texture("scene depth", SCENE_DEPTH_FORMAT, samples, false);
+            (samples > 1).then(|| texture("scene colour msaa", SCENE_COLOR_FORMAT, samples, false)); // words: a GPU debug label
+        let depth = texture("scene depth", SCENE_DEPTH_FORMAT, samples, false); // words: a GPU debug label
         let blit_bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("blit"),
             layout: &self.blit_layout,
@@ -879,7 +879,7 @@ impl SceneRenderer {
             bodies.index_count = 0;
         }
         if view.static_generation != Some(frame.statics.generation) {
-            view.statics = GpuMesh::upload(device, "static scene", &frame.statics.mesh);
+            view.statics = GpuMesh::upload(device, "static scene", &frame.statics.mesh); // words: a GPU debug label
             view.static_generation = Some(frame.statics.generation);
         }
     }

@@ -6,7 +6,9 @@
 use eframe::egui;
 
 use super::WidgetRects;
+use crate::i18n::ts;
 use crate::settings::Scene;
+use crate::tr;
 
 /// Whether the window is open, kept in egui's memory (it belongs to this
 /// screen, not to the run a link shares).
@@ -17,8 +19,8 @@ fn open_id() -> egui::Id {
 /// The side panel's *About this scene* button.
 pub fn about_button(ui: &mut egui::Ui, rects: &mut WidgetRects) {
     let r = ui
-        .button("ℹ About this scene")
-        .on_hover_text("What this scene shows, how it works, what to notice and what to try");
+        .button(ts("about-button"))
+        .on_hover_text(ts("about-button.help"));
     rects.insert("about", r.rect);
     if r.clicked() {
         let id = open_id();
@@ -39,54 +41,51 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
     let screen = ctx.content_rect();
     let width = (screen.width() - 24.0).clamp(200.0, 560.0);
     let page = scene.class().facts().about;
-    let shown = egui::Window::new(format!("About: {}", scene.class().facts().label))
-        .id(egui::Id::unique(("about_window", scene.name())))
-        .open(&mut open)
-        .collapsible(false)
-        .resizable(true)
-        .default_width(width)
-        .max_width(width)
-        .default_height((screen.height() - 96.0).max(200.0))
-        .max_height((screen.height() - 80.0).max(200.0))
-        .default_pos(screen.right_top() + egui::vec2(-width - 12.0, 48.0))
-        .constrain(true)
-        .show(ctx, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| {
-                ui.label(page.what);
-                section(ui, "How it works");
-                ui.label(page.how);
-                section(ui, "Things to notice");
-                bullets(ui, page.notice);
-                section(ui, "Things to try");
-                bullets(ui, page.try_this);
-                let r = egui::CollapsingHeader::new("The equations")
-                    .id_salt("about_equations")
-                    .show(ui, |ui| {
-                        for (k, (name, formula)) in
-                            page.equations.iter().flat_map(|g| g.iter()).enumerate()
-                        {
-                            let r = ui.label(egui::RichText::new(*name).strong());
-                            if k == 0 {
-                                rects.insert("about_equation_0", r.rect);
-                            }
-                            ui.label(*formula);
-                            ui.add_space(4.0);
+    let shown = egui::Window::new(tr!(
+        "about-window-title",
+        scene = scene.class().facts().label
+    ))
+    .id(egui::Id::unique(("about_window", scene.name())))
+    .open(&mut open)
+    .collapsible(false)
+    .resizable(true)
+    .default_width(width)
+    .max_width(width)
+    .default_height((screen.height() - 96.0).max(200.0))
+    .max_height((screen.height() - 80.0).max(200.0))
+    .default_pos(screen.right_top() + egui::vec2(-width - 12.0, 48.0))
+    .constrain(true)
+    .show(ctx, |ui| {
+        egui::ScrollArea::vertical().show(ui, |ui| {
+            ui.label(ts(page.what));
+            section(ui, ts("about-how"));
+            ui.label(ts(page.how));
+            section(ui, ts("about-notice"));
+            bullets(ui, page.notice);
+            section(ui, ts("about-try"));
+            bullets(ui, page.try_this);
+            let r = egui::CollapsingHeader::new(ts("about-equations"))
+                .id_salt("about_equations")
+                .show(ui, |ui| {
+                    for (k, (name, formula)) in
+                        page.equations.iter().flat_map(|g| g.iter()).enumerate()
+                    {
+                        let r = ui.label(egui::RichText::new(ts(name)).strong());
+                        if k == 0 {
+                            rects.insert("about_equation_0", r.rect);
                         }
-                        ui.label(
-                            egui::RichText::new(
-                                "Every constant, its source and where Shoal departs from the \
-                                 papers: the docs/ folder of the project.",
-                            )
-                            .italics(),
-                        );
-                    });
-                rects.insert("about_equations", r.header_response.rect);
-                section(ui, "References");
-                for reference in page.references {
-                    ui.label(egui::RichText::new(*reference).weak());
-                }
-            });
+                        ui.label(ts(formula));
+                        ui.add_space(4.0);
+                    }
+                    ui.label(egui::RichText::new(ts("about-equations-docs")).italics());
+                });
+            rects.insert("about_equations", r.header_response.rect);
+            section(ui, ts("about-references"));
+            for reference in page.references {
+                ui.label(egui::RichText::new(ts(reference)).weak());
+            }
         });
+    });
     if let Some(shown) = shown {
         rects.insert("about_window", shown.response.rect);
     }
@@ -98,11 +97,11 @@ fn section(ui: &mut egui::Ui, title: &str) {
     ui.label(egui::RichText::new(title).strong());
 }
 
-fn bullets(ui: &mut egui::Ui, items: &[&str]) {
+fn bullets(ui: &mut egui::Ui, items: &[&'static str]) {
     for item in items {
         ui.horizontal_wrapped(|ui| {
             ui.label("•");
-            ui.label(*item);
+            ui.label(ts(item));
         });
     }
 }
@@ -110,29 +109,73 @@ fn bullets(ui: &mut egui::Ui, items: &[&str]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::i18n::{Lang, has, tr, with_lang};
 
     #[test]
-    fn every_scene_has_a_whole_page() {
-        for scene in Scene::ALL {
-            let page = scene.class().facts().about;
-            assert!(page.what.len() > 80 && page.how.len() > 150, "{scene:?}");
-            assert!(
-                page.notice.len() >= 2 && page.try_this.len() >= 2,
-                "{scene:?}"
-            );
-            assert!(!page.references.is_empty(), "{scene:?}");
-            assert!(
-                page.equations.iter().flat_map(|g| g.iter()).count() >= 3,
-                "{scene:?}"
-            );
-            // The repository explains itself: no pointer outside it.
-            for text in [page.what, page.how] {
-                assert!(
-                    !text.contains("shared") && !text.contains("NOTES"),
-                    "{scene:?}"
-                );
-            }
+    fn every_scene_has_a_whole_page_in_every_language() {
+        for lang in Lang::ALL {
+            with_lang(lang, || {
+                for scene in Scene::ALL {
+                    let page = scene.class().facts().about;
+                    let (what, how) = (tr(page.what), tr(page.how));
+                    assert!(what.len() > 80 && how.len() > 150, "{scene:?} {lang:?}");
+                    assert!(
+                        page.notice.len() >= 2 && page.try_this.len() >= 2,
+                        "{scene:?}"
+                    );
+                    assert!(!page.references.is_empty(), "{scene:?}");
+                    assert!(
+                        page.equations.iter().flat_map(|g| g.iter()).count() >= 3,
+                        "{scene:?}"
+                    );
+                    // Every message is in the catalogue, a formula under its name.
+                    for id in page.ids() {
+                        assert!(has(lang, id), "{id} in {lang:?}");
+                    }
+                    for (name, formula) in page.equations.iter().flat_map(|g| g.iter()) {
+                        assert_eq!(formula.strip_suffix(".formula"), Some(*name));
+                    }
+                    // The repository explains itself: no pointer outside it.
+                    for text in [what, how] {
+                        assert!(
+                            !text.contains("shared") && !text.contains("NOTES"),
+                            "{scene:?}"
+                        );
+                    }
+                }
+            });
         }
+    }
+
+    #[test]
+    fn the_pages_speak_spanish_with_decimal_commas() {
+        with_lang(Lang::Es, || {
+            assert_eq!(ts("about-how"), "Cómo funciona");
+            let notice = tr(crate::ui::about_text::SCHOOLING_LAB.notice[0]);
+            assert!(
+                notice.contains("cardumen") && notice.contains("0,8"),
+                "{notice}"
+            );
+            let springs = tr("about-eq-mass-motion.formula");
+            assert!(
+                springs.contains("0,165") && springs.contains("γ = 0,05"),
+                "{springs}"
+            );
+            let title = tr!("about-window-title", scene = "Arrecife");
+            assert_eq!(title, "Acerca de: Arrecife");
+            let Err(refused) = super::super::qr::encode(&"x".repeat(12_345)) else {
+                panic!("12,345 characters fit no QR code");
+            };
+            assert!(
+                refused.contains("demasiado largo") && refused.contains("12.345"),
+                "{refused}"
+            );
+        });
+        // English keeps its words and its decimal points.
+        with_lang(Lang::En, || {
+            let notice = tr(crate::ui::about_text::SCHOOLING_LAB.notice[0]);
+            assert!(notice.starts_with("The Group preset makes a school: polarization near 0.8"));
+        });
     }
 
     #[test]

@@ -1,257 +1,134 @@
 //! The words of *About this scene*: for each scene what it is, how it works,
 //! things to notice, things to try and the references, written for a
 //! 14-year-old; the equations one click deeper. Every number here is the
-//! model's own (see `docs/`).
+//! model's own (see `docs/`). The words themselves are in the catalogue
+//! (`locales/<lang>/about.ftl`); a page here names its messages.
 
-/// One scene's page.
+/// One scene's page: the ids of its messages in the catalogue, each shown
+/// with [`crate::i18n::ts`].
 pub struct About {
+    /// A paragraph: what the scene is.
     pub what: &'static str,
+    /// A paragraph: how it works.
     pub how: &'static str,
+    /// Things to notice, one bullet each.
     pub notice: &'static [&'static str],
+    /// Things to try, one bullet each.
     pub try_this: &'static [&'static str],
     /// Groups of (name, formula and what its letters mean), shown under *The
-    /// equations*.
+    /// equations*: a message and its `.formula` attribute.
     pub equations: &'static [&'static [(&'static str, &'static str)]],
     pub references: &'static [&'static str],
 }
 
-const TT_1994: &str = "Tu, X. & Terzopoulos, D. (1994). Artificial fishes: physics, \
-                       locomotion, perception, behavior. Proceedings of SIGGRAPH 94, 43–50; \
-                       and Artificial Life 1(4), 327–351.";
-const LIM_TAN: &str = "Lim, L. & Tan, K. Virtual ethology: simulation of aquatic animal \
-                       heterogeneous behaviours as particle-based autonomous agents (SIMBA); \
-                       and (2018) Understanding steering mechanisms for simulating fish \
-                       behaviours. JISTM 3(8).";
-const REYNOLDS: &str = "Reynolds, C. W. (1987). Flocks, herds and schools: a distributed \
-                        behavioral model. Computer Graphics 21(4), 25–34.";
-const COUZIN: &str = "Couzin, I. D., Krause, J., James, R., Ruxton, G. D. & Franks, N. R. \
-                      (2002). Collective memory and spatial sorting in animal groups. \
-                      Journal of Theoretical Biology 218, 1–11.";
-const BALLERINI: &str = "Ballerini, M. et al. (2008). Interaction ruling animal collective \
-                         behavior depends on topological rather than metric distance. PNAS \
-                         105(4), 1232–1237.";
-const PITCHER: &str = "Pitcher, T. J. & Partridge, B. L. (1979). Fish school density and \
-                       volume. Marine Biology 54, 383–394.";
-const LANDEAU: &str = "Landeau, L. & Terborgh, J. (1986). Oddity and the 'confusion effect' \
-                       in predation. Animal Behaviour 34, 1372–1380.";
-const VIDELER: &str = "Videler, J. J. (1993). Fish Swimming. Chapman & Hall.";
-const KIRKPATRICK: &str = "Kirkpatrick, S., Gelatt, C. D. & Vecchi, M. P. (1983). \
-                           Optimization by simulated annealing. Science 220, 671–680.";
+impl About {
+    /// Every message id of the page, in the order the window shows them.
+    pub fn ids(&self) -> impl Iterator<Item = &'static str> + '_ {
+        [self.what, self.how]
+            .into_iter()
+            .chain(self.notice.iter().copied())
+            .chain(self.try_this.iter().copied())
+            .chain(
+                self.equations
+                    .iter()
+                    .flat_map(|g| g.iter())
+                    .flat_map(|(name, formula)| [*name, *formula]),
+            )
+            .chain(self.references.iter().copied())
+    }
+}
+
+const TT_1994: &str = "about-ref-tu-terzopoulos";
+const LIM_TAN: &str = "about-ref-lim-tan";
+const REYNOLDS: &str = "about-ref-reynolds";
+const COUZIN: &str = "about-ref-couzin";
+const BALLERINI: &str = "about-ref-ballerini";
+const PITCHER: &str = "about-ref-pitcher";
+const LANDEAU: &str = "about-ref-landeau";
+const VIDELER: &str = "about-ref-videler";
+const KIRKPATRICK: &str = "about-ref-kirkpatrick";
 
 const STEERING_EQUATIONS: &[(&str, &str)] = &[
-    (
-        "Seek a wished velocity",
-        "steering = v_wish − v, then limited to the largest steering force (8 m/s² by \
-         default); v is the fish's velocity. Speeds are capped at the top speed.",
-    ),
-    (
-        "Wander",
-        "wish = towards a point on a circle ahead of the fish; the point's angle on the \
-         circle drifts a little at random each step, so the path meanders.",
-    ),
-    (
-        "Containment and avoidance",
-        "look ahead along the path; if it would come within 1 m of the glass, sand or \
-         surface, or hit a rock, steer along the obstacle instead of into it.",
-    ),
+    ("about-eq-seek", "about-eq-seek.formula"),
+    ("about-eq-wander", "about-eq-wander.formula"),
+    ("about-eq-containment", "about-eq-containment.formula"),
 ];
 
 const URGE_EQUATIONS: &[(&str, &str)] = &[
-    (
-        "Alignment",
-        "wish = the mean heading of the (up to 7) nearest neighbours it sees, nearer ones \
-         counting more, times the top speed.",
-    ),
-    (
-        "Cohesion",
-        "wish = towards the centre of those neighbours (and of the distant school it sees).",
-    ),
-    (
-        "Separation",
-        "wish = away from each neighbour closer than the personal space (0.8 m), stronger \
-         the closer it is.",
-    ),
-    (
-        "Weights",
-        "each urge's slider w (0–100) scales it: a full containment, alignment, cohesion or \
-         separation slider gives 25 % of the largest steering force, a full avoidance slider \
-         100 %.",
-    ),
+    ("about-eq-alignment", "about-eq-alignment.formula"),
+    ("about-eq-cohesion", "about-eq-cohesion.formula"),
+    ("about-eq-separation", "about-eq-separation.formula"),
+    ("about-eq-weights", "about-eq-weights.formula"),
 ];
 
 const BOIDS_EQUATIONS: &[(&str, &str)] = &[
+    ("about-eq-blended", "about-eq-blended.formula"),
+    ("about-eq-classic", "about-eq-classic.formula"),
     (
-        "Blended (direct)",
-        "acceleration = Σ wᵢ · urgeᵢ over the five urges, then limited.",
+        "about-eq-direct-alternate",
+        "about-eq-direct-alternate.formula",
     ),
-    (
-        "Classic",
-        "one urge per step: the one with the largest wᵢ × |urgeᵢ| acts alone, at its full \
-         share.",
-    ),
-    (
-        "Direct alternate",
-        "draw ρ in [0, 1]; every urge with weight wᵢ ≥ ρ (weights as shares of 100) acts.",
-    ),
-    (
-        "Monte Carlo",
-        "draw ρ in [0, Σw); the one urge whose slice of 0…Σw holds ρ acts (so it is chosen \
-         with probability wᵢ / Σw).",
-    ),
-    (
-        "Polarization",
-        "p = |Σ v̂ᵢ| / N, the length of the mean heading: 1 when every fish swims the same \
-         way, near 0 when they point every which way.",
-    ),
-    (
-        "Milling",
-        "m = |Σ r̂ᵢ × v̂ᵢ| / N about each group's centre (r̂ᵢ points from the centre to fish \
-         i): 1 when the fish circle round their centre like a doughnut.",
-    ),
-    (
-        "Nearest neighbour and groups",
-        "NND = the mean distance to each fish's nearest neighbour, in body lengths; a group \
-         is fish linked by gaps of at most two body lengths.",
-    ),
+    ("about-eq-monte-carlo", "about-eq-monte-carlo.formula"),
+    ("about-eq-polarization", "about-eq-polarization.formula"),
+    ("about-eq-milling", "about-eq-milling.formula"),
+    ("about-eq-nearest", "about-eq-nearest.formula"),
 ];
 
 const BODY_EQUATIONS: &[(&str, &str)] = &[
-    (
-        "Springs",
-        "f = c · (|r| − l) · r / |r|: a spring of stiffness c and rest length l pulls its two \
-         masses together when stretched and pushes them apart when squeezed (r runs from \
-         one mass to the other). c = 38 for cross springs, 28 for muscles, 30 for the rest.",
-    ),
-    (
-        "Motion of each mass",
-        "m ẍ + γ ẋ = Σ spring forces + water force, with masses m from 0.165 to 11 and \
-         damping γ = 0.05; solved implicitly (each step solves for the new velocities \
-         together), so stiff springs cannot blow up.",
-    ),
-    (
-        "Muscles",
-        "a muscle contracts by shortening its rest length: rest = l − u · (l − l_min), with \
-         u in [0, 1] set by the motor controller and l_min its fully contracted length.",
-    ),
-    (
-        "Water",
-        "on each small triangle of skin, f = −A (n · v) n when the triangle moves into the \
-         water (A its area, n its outward normal, v its velocity through the water); \
-         nothing when it moves away. A tail that beats sideways is pushed forward.",
-    ),
-    (
-        "Fins",
-        "F = −A |v| cos θ · n: tilting the pectoral fins up lifts, down dives; held square \
-         to the flow they brake.",
-    ),
+    ("about-eq-springs", "about-eq-springs.formula"),
+    ("about-eq-mass-motion", "about-eq-mass-motion.formula"),
+    ("about-eq-muscles", "about-eq-muscles.formula"),
+    ("about-eq-water", "about-eq-water.formula"),
+    ("about-eq-fins", "about-eq-fins.formula"),
 ];
 
 const MIND_EQUATIONS: &[(&str, &str)] = &[
-    (
-        "Hunger",
-        "H = min(1 − n · (1 − p₀ Δt_H) / α, 1): n food eaten at the last meal, Δt_H time \
-         since then (in paper time units of 1/40 s), p₀ how fast food digests, α appetite.",
-    ),
-    (
-        "Libido",
-        "L = min(p₁ Δt_L · (1 − H), 1): Δt_L time since mating; a hungry fish has little \
-         libido.",
-    ),
-    (
-        "Fear",
-        "F = min(Σᵢ min(D₀ / dᵢ, 1), 1) over the predators it sees, dᵢ their distances.",
-    ),
-    (
-        "The intention generator",
-        "in order: something in its way → avoid; F > f₀ → school (if it schools and the \
-         worst fear is below f₁) or escape; max(H, L) > r → eat or mate, whichever is \
-         larger; water it dislikes → leave; else wander.",
-    ),
-    (
-        "The shark's choice",
-        "it hunts the prey k with the smallest C = d · (1 + 0.5 S + 0.2 E / π): d the \
-         distance, S = 1 if that prey swims in a school, E the turn it would need. A \
-         school costs more.",
-    ),
-    (
-        "Her choice",
-        "a female ranks the males she sees by 0.2 d − 10 L (d distance, L his length in \
-         metres; lower wins): 10 cm longer is worth 5 m nearer.",
-    ),
+    ("about-eq-hunger", "about-eq-hunger.formula"),
+    ("about-eq-libido", "about-eq-libido.formula"),
+    ("about-eq-fear", "about-eq-fear.formula"),
+    ("about-eq-intention", "about-eq-intention.formula"),
+    ("about-eq-shark-choice", "about-eq-shark-choice.formula"),
+    ("about-eq-her-choice", "about-eq-her-choice.formula"),
 ];
 
 const LEARNING_EQUATIONS: &[(&str, &str)] = &[
+    ("about-eq-objective", "about-eq-objective.formula"),
     (
-        "What it tries to improve",
-        "E = ∫ (μ₁ E_u + μ₂ E_v) dt: E_v measures how far it is from the drill's goal (the \
-         distance left, or the difference from the speed or turn asked), E_u = ½(ν₁ |u̇|² + \
-         ν₂ |ü|²) punishes jerky muscle moves. Lower is better.",
+        "about-eq-muscle-controls",
+        "about-eq-muscle-controls.formula",
     ),
-    (
-        "The muscle controls",
-        "each of the 12 muscles' contraction u(t) is given at 15 moments and joined by a \
-         smooth curve (a spline).",
-    ),
-    (
-        "Simulated annealing",
-        "change the 15 × 12 numbers a little at random; keep the change if E is lower; keep \
-         a worse one with probability e^(−ΔE / T), where the temperature T falls over the \
-         tries, so early on it explores and later it only improves.",
-    ),
-    (
-        "Abstraction",
-        "a Fourier transform finds the main rhythms of the learned moves; keeping only them \
-         gives a simple controller, and interpolating between drills gives a speed and \
-         steering map.",
-    ),
+    ("about-eq-annealing", "about-eq-annealing.formula"),
+    ("about-eq-abstraction", "about-eq-abstraction.formula"),
 ];
 
 /// The aquarium's page.
 pub const AQUARIUM: About = About {
-    what: "An aquarium of fish that wander. Each fish is a point with a speed and a \
-           heading, drawn as a fish. Nothing tells them to school.",
-    how: "Every 1/60 of a second each fish picks a wished direction: a little wander \
-          (a point on a circle ahead of it that drifts at random), plus turning away \
-          from the glass, the sand and the surface, and round rocks and pillars. It \
-          steers towards the wish as hard as its turning power allows, never faster \
-          than its top speed.",
+    what: "about-aquarium-what",
+    how: "about-aquarium-how",
     notice: &[
-        "Fish turn before they reach the glass: they look ahead along their path.",
-        "They swerve round a pillar instead of stopping at it.",
-        "Two fish meeting do not line up: they have no urge to follow each other.",
+        "about-aquarium-notice-1",
+        "about-aquarium-notice-2",
+        "about-aquarium-notice-3",
     ],
-    try_this: &[
-        "Set Fish to 2,000 and look from above (drag the view).",
-        "Open the Schooling lab and compare: what do its fish do that these do not?",
-    ],
+    try_this: &["about-aquarium-try-1", "about-aquarium-try-2"],
     equations: &[STEERING_EQUATIONS],
     references: &[REYNOLDS, LIM_TAN],
 };
 
 /// The schooling lab's page.
 pub const SCHOOLING_LAB: About = About {
-    what: "A virtual ethology lab: fish that follow five urges, as in Lim & Tan's \
-           SIMBA. Change the urges and watch a school form, or fall apart. Compare \
-           two tanks that differ only in the urges.",
-    how: "Each fish sees its neighbours (5 m, all round except a blind cone behind) \
-          and heeds the 7 nearest it sees. Five urges each wish a velocity: stay in \
-          the tank (containment), swim like the neighbours (alignment), stay close \
-          (cohesion), keep some space (separation) and dodge rocks and other fish \
-          (avoidance). The sliders weigh them, and the control mode says how they \
-          combine: all together, or one at a time. There is no leader: every fish \
-          follows the same rules and only reacts to the few neighbours it sees.",
+    what: "about-schooling-what",
+    how: "about-schooling-how",
     notice: &[
-        "The Group preset makes a school: polarization near 0.8, one group, \
-         neighbours about a body length apart. Individual leaves them scattered.",
-        "A school turns as one, yet no fish decides where it goes.",
-        "With a shark, fish in a school are caught less often: the shark is confused \
-         by many fish around its target.",
+        "about-schooling-notice-1",
+        "about-schooling-notice-2",
+        "about-schooling-notice-3",
     ],
     try_this: &[
-        "Turn alignment to 0 in the Group tank. What happens to polarization?",
-        "Compare two tanks: does the school or the loners lose fewer fish to a shark?",
-        "Switch the control mode to Monte Carlo and read the urge bars.",
-        "Add a rock in the school's path and watch it split and join.",
+        "about-schooling-try-1",
+        "about-schooling-try-2",
+        "about-schooling-try-3",
+        "about-schooling-try-4",
     ],
     equations: &[STEERING_EQUATIONS, URGE_EQUATIONS, BOIDS_EQUATIONS],
     references: &[LIM_TAN, REYNOLDS, COUZIN, BALLERINI, PITCHER, LANDEAU],
@@ -259,25 +136,17 @@ pub const SCHOOLING_LAB: About = About {
 
 /// The physics fish tank's page.
 pub const PHYSICS_FISH: About = About {
-    what: "Fish with bodies: 23 masses joined by 91 springs, 12 of them muscles, as in \
-           Tu & Terzopoulos. Nothing pushes the fish forward but the water on its \
-           beating tail.",
-    how: "Muscles shorten and lengthen in turn on the two sides, bending the body \
-          left and right. Each patch of skin that moves into the water is pushed \
-          back by it; a tail swept sideways gets a push that is partly forwards, so \
-          the fish swims. A motor controller turns a wished speed into how far and \
-          how fast the muscles pull, another turns a wished turn into a bend, and \
-          the pectoral fins climb, dive and brake. The same urges as the schooling \
-          lab give each fish its wish.",
+    what: "about-physics-what",
+    how: "about-physics-how",
     notice: &[
-        "Select a fish and read its twelve muscles: the two sides pull in turn.",
-        "Show forces: the yellow push of the water is largest on the tail.",
-        "A fish cannot stop dead or turn on the spot: it has a body to move.",
+        "about-physics-notice-1",
+        "about-physics-notice-2",
+        "about-physics-notice-3",
     ],
     try_this: &[
-        "Steer a fish by hand: how does its speed change with the swim speed slider?",
-        "Turn on the current and watch a fish that stops swimming drift.",
-        "Turn left by 30° and by 90°: which takes longer?",
+        "about-physics-try-1",
+        "about-physics-try-2",
+        "about-physics-try-3",
     ],
     equations: &[BODY_EQUATIONS],
     references: &[TT_1994, VIDELER],
@@ -285,50 +154,28 @@ pub const PHYSICS_FISH: About = About {
 
 /// The reef's page.
 pub const REEF: About = About {
-    what: "A reef of fish with minds, as in Tu & Terzopoulos: they see, get hungry, \
-           get scared and court. Each decides what to do from what it sees and how \
-           it feels. Click a fish to look inside its head.",
-    how: "Each fish sees all round except behind, as far as the water is clear, and \
-          not through rocks or other fish. Hunger grows as its food digests, libido \
-          with time since mating, fear with predators close by. An intention \
-          generator picks one intention in a fixed order (avoid, escape or school, \
-          eat or mate, leave, wander), remembers an interrupted one, and a \
-          behaviour routine drives the body's motor controllers: swim, turn, fins.",
+    what: "about-reef-what",
+    how: "about-reef-how",
     notice: &[
-        "A frightened school flees together; a shark striking into a crowd often \
-         misses.",
-        "Courting females choose the bigger male (the log says so).",
-        "A fish that swerves round a rock goes back to the food it was after: it \
-         remembers.",
+        "about-reef-notice-1",
+        "about-reef-notice-2",
+        "about-reef-notice-3",
     ],
-    try_this: &[
-        "Open Predator and school and Skip to the moment: watch the shark's catch.",
-        "In Minds, make the prey timid or courageous and count the catches.",
-        "Make the water murky (Visibility): do fish find less food?",
-    ],
+    try_this: &["about-reef-try-1", "about-reef-try-2", "about-reef-try-3"],
     equations: &[MIND_EQUATIONS],
     references: &[TT_1994, LANDEAU],
 };
 
 /// The learning lab's page.
 pub const LEARNING_LAB: About = About {
-    what: "How a fish learns to swim, as in Tu & Terzopoulos: starting from random \
-           muscle moves, it keeps what works. Then it races copies of itself that \
-           practised less.",
-    how: "A drill sets a goal (swim far, swim at a speed, turn). The fish tries a \
-          pattern of muscle moves, measures how well it did, changes the pattern a \
-          little and keeps the change if it did better (and, early on, sometimes \
-          even if it did worse, so it does not get stuck). Over thousands of tries \
-          it finds a rhythm like a real fish's tail beat.",
+    what: "about-learning-what",
+    how: "about-learning-how",
     notice: &[
-        "The objective falls quickly at first, then slowly.",
-        "The learned moves are rhythmic: two or three main rhythms explain them.",
-        "The fish that practised longest usually wins the race.",
+        "about-learning-notice-1",
+        "about-learning-notice-2",
+        "about-learning-notice-3",
     ],
-    try_this: &[
-        "Train with 90 tries per drill, then with 6,840: compare the race.",
-        "Switch the swimmer between learned and hand-tuned controllers.",
-    ],
+    try_this: &["about-learning-try-1", "about-learning-try-2"],
     equations: &[LEARNING_EQUATIONS],
     references: &[TT_1994, KIRKPATRICK],
 };

@@ -11,13 +11,8 @@ const QUIET_ZONE_MODULES: i32 = 4;
 /// The QR code of `text`, at the lowest error correction level that holds it
 /// (a projected code is sharp; a lower level keeps the modules bigger).
 pub fn encode(text: &str) -> Result<QrCode, String> {
-    QrCode::encode_text(text, QrCodeEcc::Low).map_err(|_| {
-        format!(
-            "the link is too long for a QR code ({} characters): shorten the question \
-             or remove some rules",
-            text.len()
-        )
-    })
+    QrCode::encode_text(text, QrCodeEcc::Low)
+        .map_err(|_| crate::tr!("about-qr-too-long", count = text.len()))
 }
 
 /// The modules across, quiet zone included.

@@ -1,0 +1,3 @@
+# The renderer's words (src/render/).
+
+render-tier-native = native GPU
