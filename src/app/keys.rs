@@ -275,7 +275,7 @@ impl super::ShoalApp {
                     } else {
                         self.say(format!(
                             "In the {} you cannot pick a fish.",
-                            class.facts().label
+                            class.facts().label()
                         ));
                     }
                 }
@@ -294,7 +294,7 @@ impl super::ShoalApp {
                         Some(false) => "The camera no longer follows the fish.".to_owned(),
                         None => format!(
                             "In the {} the camera does not follow a fish.",
-                            class.facts().label
+                            class.facts().label()
                         ),
                     };
                     self.say(words);

@@ -39,7 +39,7 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
     let screen = ctx.content_rect();
     let width = (screen.width() - 24.0).clamp(200.0, 560.0);
     let page = scene.class().facts().about;
-    let shown = egui::Window::new(format!("About: {}", scene.class().facts().label))
+    let shown = egui::Window::new(format!("About: {}", scene.class().facts().label()))
         .id(egui::Id::unique(("about_window", scene.name())))
         .open(&mut open)
         .collapsible(false)
