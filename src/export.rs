@@ -88,7 +88,7 @@ fn header(settings: &Settings, run: &Run) -> String {
     let _ = writeln!(
         out,
         "# Shoal data: {} ({})",
-        scene.class().facts().label,
+        scene.class().facts().label(),
         scene.name()
     );
     let _ = writeln!(
@@ -196,7 +196,7 @@ mod tests {
             text.lines()
                 .next()
                 .unwrap()
-                .contains(scene.class().facts().label)
+                .contains(scene.class().facts().label())
         );
         let t = format!("# simulated time: {:.3} s", lab.runs()[0].time_secs());
         assert!(text.contains(&t), "{t} in {text}");

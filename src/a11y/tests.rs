@@ -158,7 +158,7 @@ fn every_control_of_every_scene_has_a_name_and_a_role() {
         }
         // Every scene tab is a button that says whether it is the one shown.
         for other in Scene::ALL {
-            let label = other.class().facts().label;
+            let label = other.class().facts().label();
             let tab = mirror
                 .control(label)
                 .unwrap_or_else(|| panic!("{scene:?}: no tab named {label}"));

@@ -291,7 +291,7 @@ impl super::ShoalApp {
                     if class.selected(settings, side).is_some() {
                         self.describe_selection = true;
                     } else {
-                        self.say(crate::tr!("keys-cannot-pick", scene = class.facts().label));
+                        self.say(crate::tr!("keys-cannot-pick", scene = class.facts().label()));
                     }
                 }
                 KeyAction::Describe => panel_actions.push(PanelAction::Describe),
@@ -307,7 +307,7 @@ impl super::ShoalApp {
                             ts("keys-select-first").to_owned()
                         }
                         Some(false) => ts("keys-not-following").to_owned(),
-                        None => crate::tr!("keys-cannot-follow", scene = class.facts().label),
+                        None => crate::tr!("keys-cannot-follow", scene = class.facts().label()),
                     };
                     self.say(words);
                 }

@@ -89,7 +89,7 @@ fn header_lines(plan: &Plan) -> String {
         plan.warmup_steps,
         plan.measure_steps,
         plan.dt_secs,
-        scene.class().facts().label,
+        scene.class().facts().label(),
         scene.name()
     );
     let _ = writeln!(

@@ -372,7 +372,7 @@ impl Design {
                     format!(
                         "'{}' is not measured in the {} ({}); there: {}",
                         measure.name(),
-                        scene.class().facts().label,
+                        scene.class().facts().label(),
                         scene.name(),
                         if known.is_empty() {
                             "nothing".to_owned()
@@ -464,7 +464,7 @@ fn inert_reason(key: &str, scene: Scene) -> Option<String> {
     (!scene.class().acts(key)).then(|| {
         format!(
             "'{key}' does not act in the {} ({}); its settings there are under '{section}.'",
-            scene.class().facts().label,
+            scene.class().facts().label(),
             scene.name()
         )
     })

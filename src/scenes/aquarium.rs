@@ -28,8 +28,7 @@ fn tank(settings: &Settings, side: Side) -> BoidTank {
 
 /// What the aquarium is, in data.
 const FACTS: SceneFacts = SceneFacts {
-    label: "Aquarium",
-    description: "Fish wander through the tank and swim around rocks and pillars.",
+    id: "scene-aquarium",
     about: &about_text::AQUARIUM,
     // The (left) tank's settings, of which only the fish count acts.
     settings_section: "left",

@@ -16,11 +16,7 @@ pub struct LearningScene;
 
 /// What the learning lab is, in data.
 const FACTS: SceneFacts = SceneFacts {
-    label: "Learning lab",
-    description: "How a fish learns to swim: starting from random muscle moves, it keeps what \
-         works and slowly learns to swim and turn, like practising a new sport. The \
-         swimmer between the buoys uses controllers learned before until you train \
-         your own.",
+    id: "scene-learning",
     about: &about_text::LEARNING_LAB,
     settings_section: "learning",
     // The learning lab has no school whose size a mystery could hide.

@@ -25,6 +25,7 @@ mod reef;
 mod schooling;
 
 use crate::experiment::Measure;
+use crate::i18n::ts;
 use crate::lab::Lab;
 use crate::settings::{Scene, Settings, Side};
 use crate::sim::common::paper_time::FISH_STEP_SECS;
@@ -180,10 +181,9 @@ impl CurrentPanel {
 /// panel) is its [`SceneClass`]'s methods.
 #[derive(Clone, Copy)]
 pub struct SceneFacts {
-    /// The name on the scene picker ("Schooling lab").
-    pub label: &'static str,
-    /// A sentence a student understands, under the picker.
-    pub description: &'static str,
+    /// Its message in the catalogue (`scene-schooling`): the name on the
+    /// scene picker ([`Self::label`]) with `.description`.
+    pub id: &'static str,
     /// The words of *About this scene* (`ui/about_text.rs`).
     pub about: &'static About,
     /// The part of the settings that acts in the scene: its keys start with
@@ -204,6 +204,21 @@ pub struct SceneFacts {
     pub bench_counts: &'static [u32],
     /// What an experiment can measure in the scene.
     pub measures: &'static [Measure],
+}
+
+impl SceneFacts {
+    /// The name on the scene picker ("Schooling lab").
+    pub fn label(&self) -> &'static str {
+        ts(self.id)
+    }
+
+    /// A sentence a student understands, under the picker.
+    pub fn description(&self) -> &'static str {
+        ts(crate::settings::number::static_id(format!(
+            "{}.description",
+            self.id
+        )))
+    }
 }
 
 /// A scene's clock: the length of its fixed step and how often the lab samples

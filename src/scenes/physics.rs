@@ -16,9 +16,7 @@ pub struct PhysicsTank;
 
 /// What the physics fish tank is, in data.
 const FACTS: SceneFacts = SceneFacts {
-    label: "Physics fish",
-    description: "Each fish is a body of 23 masses and 91 springs. Twelve springs are muscles: \
-         they pull the tail from side to side, the water pushes back, and the fish swims.",
+    id: "scene-physics",
     about: &about_text::PHYSICS_FISH,
     settings_section: "physics",
     count_keys: &["physics.fish_count", "physics.sharks"],

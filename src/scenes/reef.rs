@@ -34,9 +34,7 @@ const MEASURES: [Measure; 12] = [
 
 /// What the reef is, in data.
 const FACTS: SceneFacts = SceneFacts {
-    label: "Reef",
-    description: "Fish that see, get hungry, get scared and fall in love. Each one decides what \
-         to do next from what it sees and how it feels. Click a fish to look inside its head.",
+    id: "scene-reef",
     about: &about_text::REEF,
     settings_section: "reef",
     count_keys: &["reef.prey_count"],

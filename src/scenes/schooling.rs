@@ -43,9 +43,7 @@ fn tank(settings: &Settings, side: Side) -> BoidTank {
 
 /// What the schooling lab is, in data.
 const FACTS: SceneFacts = SceneFacts {
-    label: "Schooling lab",
-    description: "Each fish follows five urges: stay in the tank, swim like the others, \
-         stay close, keep space and dodge rocks. Change them and watch a school form.",
+    id: "scene-schooling",
     about: &about_text::SCHOOLING_LAB,
     settings_section: "left",
     count_keys: &["left.fish_count", "right.fish_count"],

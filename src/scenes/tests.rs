@@ -143,7 +143,7 @@ fn every_class_is_its_own_scene_and_agrees_with_the_world_it_builds() {
             );
         }
         assert!(!class.acts("seedling.fish_count"));
-        assert!(!class.facts().label.is_empty() && !class.facts().description.is_empty());
+        assert!(!class.facts().label().is_empty() && !class.facts().description().is_empty());
         assert!(!class.facts().about.what.is_empty());
     }
 }

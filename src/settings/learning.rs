@@ -51,11 +51,9 @@ impl LearningSettings {
 
     /// Annealing steps per drill.
     pub const ANNEALING_STEPS: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        "learning",
         Range::new("annealing_steps", ANNEALING_STEPS_MIN, ANNEALING_STEPS_MAX),
         field!(annealing_steps),
-        "Tries per drill",
-        "How many tries the fish gets for each drill. More tries, better \
-         swimming (the paper's best shark had 6840). Changing it starts again",
     )
     .widget(Widget::LOG_SLIDER)
     .rect("learning_steps");

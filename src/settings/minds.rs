@@ -7,7 +7,7 @@
 //! tests walk it. [`MindTraits`] itself, what the model reads, is the reef's
 //! (`sim/reef/mind/habits.rs`).
 
-use crate::settings::number::{NamedValue, Number, NumberSetting, Widget, field};
+use crate::settings::number::{NamedValue, Number, NumberSetting, Unit, Widget, field};
 use crate::settings::range::Range;
 use crate::sim::reef::mind::habits::{
     COURAGEOUS_BOX_BODY_LENGTHS, DEFAULT_BOX_BODY_LENGTHS, DEFAULT_PERSISTENCE_BODY_LENGTHS,
@@ -28,144 +28,93 @@ fn ordinary() -> Habits {
 
 impl MindTraits {
     pub const DIGESTION_RATE: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "minds",
         Range::new("digestion_rate_per_unit", 0.0, 0.05),
         field!(digestion_rate_per_unit, |_| ordinary()
             .mental
             .digestion_rate_per_unit),
-        "Hunger grows (p0)",
-        "p0: how fast a meal is digested, so how soon the fish is hungry again, \
-         per time unit of 1/40 s. Calm (Shoal's default) 0.0003: hungry again \
-         21 s after a full meal. The paper's nominal 0.00067: after 9 s; \
-         ravenous 0.005: after 1 s",
     )
     .widget(Widget::LOG_SLIDER)
     .rect("reef_minds_hunger")
     .named(&[
-        NamedValue::new("Calm", CALM_DIGESTION_RATE, "p0 = 0.0003 (Shoal's default)"),
-        NamedValue::new(
-            "Nominal",
-            NOMINAL_DIGESTION_RATE,
-            "p0 = 0.00067 (the paper's)",
-        ),
-        NamedValue::new(
-            "Ravenous",
-            RAVENOUS_DIGESTION_RATE,
-            "p0 = 0.005 (the paper's)",
-        ),
+        NamedValue::new("calm", CALM_DIGESTION_RATE),
+        NamedValue::new("nominal", NOMINAL_DIGESTION_RATE),
+        NamedValue::new("ravenous", RAVENOUS_DIGESTION_RATE),
     ]);
     pub const LIBIDO_RATE: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "minds",
         Range::new("libido_rate_per_unit", 0.0, 0.05),
         field!(libido_rate_per_unit, |_| ordinary()
             .mental
             .libido_rate_per_unit),
-        "Libido grows (p1)",
-        "p1: how fast the wish to mate grows after mating, per time unit of \
-         1/40 s. Calm (Shoal's default) 0.0011: a fed fish wants to mate again \
-         6 s after mating. The paper's nominal 0.0025: after 2.5 s; sexual \
-         mania 0.01: after 0.6 s",
     )
     .widget(Widget::LOG_SLIDER)
     .rect("reef_minds_libido")
     .named(&[
-        NamedValue::new("Calm", CALM_LIBIDO_RATE, "p1 = 0.0011 (Shoal's default)"),
-        NamedValue::new("Nominal", NOMINAL_LIBIDO_RATE, "p1 = 0.0025 (the paper's)"),
-        NamedValue::new("Sexual mania", MANIC_LIBIDO_RATE, "p1 = 0.01 (the paper's)"),
+        NamedValue::new("calm", CALM_LIBIDO_RATE),
+        NamedValue::new("nominal", NOMINAL_LIBIDO_RATE),
+        NamedValue::new("sexual-mania", MANIC_LIBIDO_RATE),
     ]);
     pub const APPETITE: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "minds",
         Range::new("appetite_food_units", 0.5, 20.0),
         field!(appetite_food_units, |_| ordinary()
             .mental
             .appetite_food_units),
-        "Appetite (α)",
-        "α: how much food fills the fish (a plankton particle is 1, a prey fish 4)",
     )
-    .unit(" food")
+    .unit(Unit::Food)
     .rect("reef_minds_appetite");
     pub const FEAR_DISTANCE: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "minds",
         Range::new("fear_distance_body_lengths", 0.1, 20.0),
         field!(fear_distance_body_lengths, |_| ordinary()
             .mental
             .fear_distance_body_lengths),
-        "Fear distance (D0)",
-        "D0: a shark nearer than this many body lengths frightens the fish as much \
-         as it can be (paper: 3.85)",
     )
-    .unit(" BL")
+    .unit(Unit::BodyLengths)
     .rect("reef_minds_fear_distance");
     pub const COLLISION_BOX: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "minds",
         Range::new("collision_box_ahead_body_lengths", 0.1, 3.0),
         field!(collision_box_ahead_body_lengths, |_| ordinary()
             .collision_box_ahead_body_lengths),
-        "Collision box",
-        "How far ahead the fish watches for things in its way",
     )
     .widget(Widget::NamedOnly)
     .rect("reef_minds_box")
     .named(&[
-        NamedValue::new(
-            "Timid",
-            TIMID_BOX_BODY_LENGTHS,
-            "swerves from anything far ahead (1.5 body lengths)",
-        ),
-        NamedValue::new(
-            "Ordinary",
-            DEFAULT_BOX_BODY_LENGTHS,
-            "swerves from what is 0.8 body lengths ahead",
-        ),
-        NamedValue::new(
-            "Courageous",
-            COURAGEOUS_BOX_BODY_LENGTHS,
-            "swerves only at the last moment (0.3 body lengths)",
-        ),
+        NamedValue::new("timid", TIMID_BOX_BODY_LENGTHS),
+        NamedValue::new("ordinary", DEFAULT_BOX_BODY_LENGTHS),
+        NamedValue::new("courageous", COURAGEOUS_BOX_BODY_LENGTHS),
     ]);
     pub const PERSISTENCE: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "minds",
         Range::new("persistence_body_lengths", 0.0, 50.0),
         field!(persistence_body_lengths, |_| ordinary()
             .persistence_body_lengths),
-        "Persistence",
-        "Does the fish stick to the food, prey or partner it chose?",
     )
     .widget(Widget::NamedOnly)
     .rect("reef_minds_persistence")
     .named(&[
-        NamedValue::new(
-            "Fickle",
-            FICKLE_BODY_LENGTHS,
-            "switches to any target that is a little nearer",
-        ),
-        NamedValue::new(
-            "Ordinary",
-            DEFAULT_PERSISTENCE_BODY_LENGTHS,
-            "switches when another is 2 body lengths nearer",
-        ),
-        NamedValue::new(
-            "Devoted",
-            DEVOTED_BODY_LENGTHS,
-            "sticks to its target unless another is 20 body lengths nearer",
-        ),
+        NamedValue::new("fickle", FICKLE_BODY_LENGTHS),
+        NamedValue::new("ordinary", DEFAULT_PERSISTENCE_BODY_LENGTHS),
+        NamedValue::new("devoted", DEVOTED_BODY_LENGTHS),
     ]);
     pub const FEAR_THRESHOLD: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "minds",
         Range::new("fear_threshold", 0.1, 0.5),
         field!(fear_threshold, |_| ordinary().fear_threshold),
-        "Alarm at fear (f0)",
-        "f0: fear above this makes the fish take evasive action (paper: between 0.1 \
-         and 0.5)",
     )
     .rect("reef_minds_alarm");
     pub const PANIC_THRESHOLD: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "minds",
         Range::new("panic_threshold", 0.5, 1.0),
         field!(panic_threshold, |_| ordinary().panic_threshold),
-        "Panic at fear (f1)",
-        "f1: when the nearest shark frightens it more than this, a schooling fish \
-         stops schooling and flees alone",
     )
     .rect("reef_minds_panic");
     pub const URGE_THRESHOLD: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "minds",
         Range::new("urge_threshold", 0.01, 0.5),
         field!(urge_threshold, |_| ordinary().urge_threshold),
-        "Acts on urges at (r)",
-        "r: hunger (or the wish to mate) above this sends the fish looking for food \
-         (or a partner) (paper: below 0.5)",
     )
     .rect("reef_minds_urge");
 
@@ -281,7 +230,7 @@ mod tests {
             });
             assert!(shown, "{} is shown for some kind", number.key());
             for named in setting.named {
-                assert!(setting.range.contains(named.value), "{}", named.label);
+                assert!(setting.range.contains(named.value), "{}", named.name);
             }
             if setting.widget == Widget::NamedOnly {
                 assert!(!setting.named.is_empty(), "{}", number.key());

@@ -17,7 +17,7 @@ pub mod tank;
 
 use serde::{Deserialize, Serialize};
 
-use self::number::{Number, NumberSetting, Widget, field};
+use self::number::{Number, NumberSetting, Unit, Widget, field};
 pub use self::range::{Range, SettingError};
 use crate::settings::learning::LearningSettings;
 use crate::settings::physics::PhysicsSettings;
@@ -25,6 +25,7 @@ use crate::settings::reef::ReefSettings;
 use crate::settings::studio::Studio;
 use crate::settings::tank::{Preset, TankSettings};
 use crate::sim::Tank;
+use crate::tr;
 
 /// The scenes Shoal can show.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -168,15 +169,44 @@ impl Default for Settings {
     }
 }
 
-/// Why a settings patch was refused. Nothing was changed.
-#[derive(Debug, thiserror::Error, PartialEq)]
+/// Why a settings patch was refused. Nothing was changed. (Its Display is
+/// the catalogue's `setting-error-…`.)
+#[derive(Debug, PartialEq)]
 pub enum SettingsError {
-    #[error("set() takes an object such as {{\"speed\": 2}}, not {0}")]
     NotAnObject(String),
-    #[error("unknown setting '{key}'; the settings are: {known}")]
     UnknownKey { key: String, known: String },
-    #[error(transparent)]
-    Invalid(#[from] SettingError),
+    Invalid(SettingError),
+}
+
+impl From<SettingError> for SettingsError {
+    fn from(err: SettingError) -> Self {
+        Self::Invalid(err)
+    }
+}
+
+impl std::fmt::Display for SettingsError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NotAnObject(value) => {
+                f.write_str(&tr!("setting-error-not-an-object", value = value.as_str()))
+            }
+            Self::UnknownKey { key, known } => f.write_str(&tr!(
+                "setting-error-unknown-key",
+                key = key.as_str(),
+                known = known.as_str()
+            )),
+            Self::Invalid(err) => err.fmt(f),
+        }
+    }
+}
+
+impl std::error::Error for SettingsError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::Invalid(err) => err.source(),
+            _ => None,
+        }
+    }
 }
 
 impl Settings {
@@ -216,28 +246,23 @@ impl Settings {
 
     /// Simulated seconds per real second.
     pub const SPEED: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "app",
         Range::or_else("speed", SPEED_MIN, SPEED_MAX, 1.0),
         field!(speed),
-        "Speed",
-        "How fast time runs: 1× is real time, 2× is twice as fast",
     )
-    .unit("×")
+    .unit(Unit::Times)
     .widget(Widget::Slider {
         logarithmic: true,
         decimals: Some(2),
     });
     /// The world's seed (typed in, or a new one from the *New* button beside it).
-    pub const SEED: NumberSetting<Self, u64> = NumberSetting::<Self, _>::new(
-        Range::new("seed", 0, SEED_MAX),
-        field!(seed),
-        "Seed",
-        "The number that decides where everything starts. \
-         The same seed always gives the same run, so a class can share it",
-    )
-    .widget(Widget::Field {
-        drag_speed: 1.0,
-        help: Some("Type a number to start a new run from it"),
-    });
+    pub const SEED: NumberSetting<Self, u64> =
+        NumberSetting::<Self, _>::new("app", Range::new("seed", 0, SEED_MAX), field!(seed)).widget(
+            Widget::Field {
+                drag_speed: 1.0,
+                own_help: true,
+            },
+        );
     /// Every numeric setting at the top level (each scene's are in its own
     /// settings' table).
     pub const NUMBERS: [Number<Self>; 2] = [Number::F32(Self::SPEED), Number::U64(Self::SEED)];
@@ -371,7 +396,11 @@ fn merge_checked(
                 if let Err(err) = serde_json::from_value::<Settings>(single) {
                     return Err(SettingError {
                         key: dotted,
-                        reason: format!("{value} has the wrong type ({})", type_hint(&err)),
+                        reason: tr!(
+                            "setting-error-wrong-type",
+                            value = value.to_string(),
+                            hint = type_hint(&err)
+                        ),
                     }
                     .into());
                 }

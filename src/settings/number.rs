@@ -5,7 +5,11 @@
 //! draw each row from its entry (`ui/setting_slider.rs`), the studio takes its
 //! keys from it, and the tests walk it.
 
+use std::cell::RefCell;
+use std::collections::HashSet;
+
 use super::range::{Range, SettingError, SettingValue};
+use crate::i18n::ts;
 
 /// Where a setting's number lives on its settings struct `S`.
 pub enum Access<S, T> {
@@ -66,20 +70,13 @@ pub enum Widget {
         decimals: Option<usize>,
     },
     /// A number to type in or drag (`drag_speed` per point of drag), with
-    /// hover help of its own when it says something else than the label's.
-    Field {
-        drag_speed: f64,
-        help: Option<&'static str>,
-    },
+    /// hover help of its own (`own_help`: the `.field` attribute of the
+    /// setting's message) when it says something else than the label's.
+    Field { drag_speed: f64, own_help: bool },
     /// A count with − and + buttons that take away and add `step` (their hover
-    /// help `fewer` and `more`), around a field to type in (`typed`) or the
-    /// number as text.
-    Count {
-        step: u32,
-        fewer: &'static str,
-        more: &'static str,
-        typed: bool,
-    },
+    /// help the `.fewer` and `.more` attributes of the setting's message),
+    /// around a field to type in (`typed`) or the number as text.
+    Count { step: u32, typed: bool },
     /// No control of its own: only the setting's named values
     /// ([`NumberSetting::named`]), as buttons (a fish's character: timid,
     /// ordinary, courageous).
@@ -109,44 +106,103 @@ impl Widget {
 }
 
 /// A value of a setting with a name of its own ("Calm", "Devoted"), offered as
-/// a button beside its control.
+/// a button beside its control. Its words are the catalogue's message
+/// `<setting's id>-<name>` ([`NumberSetting::named_label`]) with `.help`, what
+/// it means, shown after the label when the pointer rests on it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NamedValue<T> {
-    /// The button's text; lower-cased, spaces as `_`, it ends the button's
-    /// rectangle name ("Sexual mania": `<rect>_sexual_mania`).
-    pub label: &'static str,
+    /// Its name in the catalogue's ids, kebab-case ("sexual-mania"); with `_`
+    /// for `-`, it ends the button's rectangle name (`<rect>_sexual_mania`).
+    pub name: &'static str,
     pub value: T,
-    /// What it means, shown after the label when the pointer rests on it.
-    pub help: &'static str,
 }
 
 impl<T> NamedValue<T> {
-    pub const fn new(label: &'static str, value: T, help: &'static str) -> Self {
-        Self { label, value, help }
+    pub const fn new(name: &'static str, value: T) -> Self {
+        Self { name, value }
     }
 
     /// The name of its button's rectangle, after the setting's `rect`.
     pub fn rect(&self, rect: &str) -> String {
-        format!("{rect}_{}", self.label.to_lowercase().replace(' ', "_"))
+        format!("{rect}_{}", self.name.replace('-', "_"))
     }
 }
 
+/// What a control shows after the number (the catalogue's `setting-unit-…`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unit {
+    /// A plain number.
+    None,
+    Metres,
+    MetresPerSecond,
+    MetresPerSecondSquared,
+    Degrees,
+    /// Times as fast (the speed).
+    Times,
+    /// Food units (a plankton particle is 1).
+    Food,
+    BodyLengths,
+}
+
+impl Unit {
+    /// The catalogue's id of its words; `None` for a plain number.
+    pub fn id(self) -> Option<&'static str> {
+        Some(match self {
+            Self::None => return None,
+            Self::Metres => "setting-unit-metres",
+            Self::MetresPerSecond => "setting-unit-metres-per-second",
+            Self::MetresPerSecondSquared => "setting-unit-metres-per-second-squared",
+            Self::Degrees => "setting-unit-degrees",
+            Self::Times => "setting-unit-times",
+            Self::Food => "setting-unit-food",
+            Self::BodyLengths => "setting-unit-body-lengths",
+        })
+    }
+
+    /// What the control shows after the number, with its space (" m/s",
+    /// "°"); empty for a plain number.
+    pub fn text(self) -> &'static str {
+        self.id().map_or("", ts)
+    }
+}
+
+/// The catalogue id `id`, kept once for the program's life (ids made from a
+/// setting's section and key are asked for every frame).
+pub fn static_id(id: String) -> &'static str {
+    thread_local! {
+        static IDS: RefCell<HashSet<&'static str>> = RefCell::new(HashSet::new());
+    }
+    IDS.with(|ids| {
+        let mut ids = ids.borrow_mut();
+        match ids.get(id.as_str()) {
+            Some(kept) => kept,
+            None => {
+                let kept: &'static str = Box::leak(id.into_boxed_str());
+                ids.insert(kept);
+                kept
+            }
+        }
+    })
+}
+
 /// One numeric setting of the settings struct `S`, holding a `T`: everything
-/// validation, clamping, the panel, the studio and a screen reader need.
+/// validation, clamping, the panel, the studio and a screen reader need. Its
+/// words are in the catalogue (`locales/*/settings.ftl`) under its identity,
+/// `setting-<section>-<key>` (`setting-tank-vision-distance-m`): the label,
+/// `.help`, and the widget's own `.field`, `.fewer`, `.more`.
 pub struct NumberSetting<S, T: 'static> {
+    /// The part of the settings it belongs to, in its catalogue id (`tank`,
+    /// `minds`, `physics`, `reef`, `learning`, `app`; `aquarium` for the
+    /// aquarium's own words for a tank's fish count).
+    pub section: &'static str,
     /// Its key (`shoal.set` and share links, under the struct's prefix:
     /// `alignment` is `left.alignment`), valid values and what a value that is
     /// not a number clamps to.
     pub range: Range<T>,
     /// How to read and write it on `S`.
     pub access: Access<S, T>,
-    /// Its name on the panel ("Vision distance").
-    pub label: &'static str,
-    /// The hover help of its label and control, as a 12-year-old reads it.
-    pub help: &'static str,
-    /// What the control shows after the number, with its space (" m/s", "°");
-    /// empty for a plain number.
-    pub unit: &'static str,
+    /// What the control shows after the number.
+    pub unit: Unit,
     /// The control that edits it.
     pub widget: Widget,
     /// The name of its control's rectangle in `WidgetRects` (the browser tests
@@ -170,18 +226,12 @@ impl<S, T: Copy + 'static> Copy for NumberSetting<S, T> {}
 impl<S, T: Copy + 'static> NumberSetting<S, T> {
     /// A setting edited on a linear slider ([`Widget::SLIDER`]), without a
     /// unit, its rectangle named by its key; the methods below say otherwise.
-    pub const fn new(
-        range: Range<T>,
-        access: Access<S, T>,
-        label: &'static str,
-        help: &'static str,
-    ) -> Self {
+    pub const fn new(section: &'static str, range: Range<T>, access: Access<S, T>) -> Self {
         Self {
+            section,
             range,
             access,
-            label,
-            help,
-            unit: "",
+            unit: Unit::None,
             widget: Widget::SLIDER,
             rect: range.key,
             named: &[],
@@ -189,7 +239,7 @@ impl<S, T: Copy + 'static> NumberSetting<S, T> {
     }
 
     /// Shown with `unit` after the number (" m/s").
-    pub const fn unit(self, unit: &'static str) -> Self {
+    pub const fn unit(self, unit: Unit) -> Self {
         Self { unit, ..self }
     }
 
@@ -206,6 +256,94 @@ impl<S, T: Copy + 'static> NumberSetting<S, T> {
     /// Offers `named` values as buttons.
     pub const fn named(self, named: &'static [NamedValue<T>]) -> Self {
         Self { named, ..self }
+    }
+}
+
+impl<S, T: 'static> NumberSetting<S, T> {
+    /// Its message's id in the catalogue: `setting-<section>-<key>`, the key
+    /// in kebab-case (`setting-tank-vision-distance-m`).
+    pub fn id(&self) -> &'static str {
+        static_id(format!(
+            "setting-{}-{}",
+            self.section,
+            self.range.key.replace('_', "-")
+        ))
+    }
+
+    /// The id of its message's `attribute` (`<id>.help`).
+    pub fn attribute_id(&self, attribute: &str) -> &'static str {
+        static_id(format!("{}.{attribute}", self.id()))
+    }
+
+    /// Its name on the panel ("Vision distance").
+    pub fn label(&self) -> &'static str {
+        ts(self.id())
+    }
+
+    /// The hover help of its label and control, as a 12-year-old reads it.
+    pub fn help(&self) -> &'static str {
+        ts(self.attribute_id("help"))
+    }
+
+    /// What the control shows after the number, with its space (" m/s",
+    /// "°"); empty for a plain number.
+    pub fn unit_text(&self) -> &'static str {
+        self.unit.text()
+    }
+
+    /// The hover help of a [`Widget::Field`]: its own, or the label's.
+    pub fn field_help(&self) -> &'static str {
+        match self.widget {
+            Widget::Field { own_help: true, .. } => ts(self.attribute_id("field")),
+            _ => self.help(),
+        }
+    }
+
+    /// The hover help of a [`Widget::Count`]'s − button ("Take 10 away").
+    pub fn fewer_help(&self) -> &'static str {
+        ts(self.attribute_id("fewer"))
+    }
+
+    /// The hover help of a [`Widget::Count`]'s + button ("Add 10").
+    pub fn more_help(&self) -> &'static str {
+        ts(self.attribute_id("more"))
+    }
+
+    /// The id of `named`'s message: `<id>-<name>`.
+    pub fn named_id(&self, named: &NamedValue<T>) -> &'static str {
+        static_id(format!("{}-{}", self.id(), named.name))
+    }
+
+    /// `named`'s button text ("Calm").
+    pub fn named_label(&self, named: &NamedValue<T>) -> &'static str {
+        ts(self.named_id(named))
+    }
+
+    /// What `named` means ("p0 = 0.0003 (Shoal's default)").
+    pub fn named_help(&self, named: &NamedValue<T>) -> &'static str {
+        ts(static_id(format!("{}.help", self.named_id(named))))
+    }
+
+    /// Every catalogue id its words come from (the label, its help, its
+    /// widget's, its unit's, its named values' and their help), for the test
+    /// that each exists in every language.
+    pub fn ids(&self) -> Vec<&'static str> {
+        let mut ids = vec![self.id(), self.attribute_id("help")];
+        match self.widget {
+            Widget::Field { own_help: true, .. } => ids.push(self.attribute_id("field")),
+            Widget::Count { .. } => {
+                ids.push(self.attribute_id("fewer"));
+                ids.push(self.attribute_id("more"));
+            }
+            _ => {}
+        }
+        ids.extend(self.unit.id());
+        for named in self.named {
+            let id = self.named_id(named);
+            ids.push(id);
+            ids.push(static_id(format!("{id}.help")));
+        }
+        ids
     }
 }
 
@@ -300,6 +438,11 @@ impl<S> Number<S> {
     /// The setting's key ("alignment").
     pub fn key(&self) -> &'static str {
         with_setting!(self, s => s.range.key)
+    }
+
+    /// See [`NumberSetting::ids`].
+    pub fn ids(&self) -> Vec<&'static str> {
+        with_setting!(self, s => s.ids())
     }
 
     /// See [`NumberSetting::check`].

@@ -5,10 +5,11 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::settings::number::{Number, NumberSetting, Widget, check_all, clamp_all, field};
+use crate::settings::number::{Number, NumberSetting, Unit, Widget, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::PhysicsBehaviour;
 use crate::sim::physics::world::{MAX_PHYSICAL_FISH, MAX_PHYSICAL_SHARKS};
+use crate::tr;
 
 /// Most physical fish the slider offers.
 pub const PHYSICS_FISH_MAX: u32 = MAX_PHYSICAL_FISH as u32;
@@ -83,45 +84,38 @@ impl PhysicsSettings {
     pub const PREFIX: &str = "physics.";
 
     pub const FISH_COUNT: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        "physics",
         Range::new("fish_count", 1, PHYSICS_FISH_MAX),
         field!(fish_count),
-        "Fish",
-        "How many muscle-driven fish swim in the tank. Each one is 23 masses \
-         joined by 91 springs",
     )
     .widget(Widget::LOG_SLIDER)
     .rect("physics_fish");
     pub const SHARKS: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        "physics",
         Range::new("sharks", 0, PHYSICS_SHARKS_MAX),
         field!(sharks),
-        "Sharks",
-        "Sharks are built like the fish, only twice as long and four times heavier",
     )
     .widget(Widget::Count {
         step: 1,
-        fewer: "One shark fewer",
-        more: "One more shark",
         typed: false,
     })
     .rect("physics_sharks");
     pub const CURRENT_M_PER_S: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "physics",
         Range::new("current_m_per_s", 0.0, CURRENT_MAX_M_PER_S),
         field!(current_m_per_s),
-        "Current",
-        "How fast the water flows round the tank. A fish that stops \
-         swimming drifts with it; to stay put it must swim against it",
     )
-    .unit(" m/s")
+    .unit(Unit::MetresPerSecond)
     .widget(Widget::slider(2))
     .rect("physics_current");
     pub const HAND_SPEED: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "physics",
         Range::new("hand_speed", 0.0, 1.0),
         field!(hand_speed),
-        "Swim",
-        "How hard the tail muscles beat: 0 rests, 1 is the fastest swimming",
     )
     .widget(Widget::slider(2));
     pub const HAND_PITCH_DEG: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "physics",
         Range::or_else(
             "hand_pitch_deg",
             -HAND_PITCH_MAX_DEG,
@@ -129,25 +123,20 @@ impl PhysicsSettings {
             0.0,
         ),
         field!(hand_pitch_deg),
-        "Fins",
-        "Tilt the side fins: up makes the fish climb, down makes it dive \
-         (only while it swims)",
     )
-    .unit("°")
+    .unit(Unit::Degrees)
     .widget(Widget::slider(0))
     .rect("hand_pitch");
     /// Typed in beside the *Turn* button that asks for it.
     pub const TURN_ANGLE_DEG: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "physics",
         Range::or_else("turn_angle_deg", -TURN_MAX_DEG, TURN_MAX_DEG, 0.0),
         field!(turn_angle_deg),
-        "Turn",
-        "The turn the button asks for: positive to the fish's left, \
-         negative to its right. Turns above 90° are made of smaller ones",
     )
-    .unit("°")
+    .unit(Unit::Degrees)
     .widget(Widget::Field {
         drag_speed: 1.0,
-        help: None,
+        own_help: false,
     })
     .rect("turn_angle");
     /// Every numeric setting (`selected` depends on the counts), in the order
@@ -169,10 +158,11 @@ impl PhysicsSettings {
         {
             return Err(SettingError {
                 key: format!("{prefix}selected"),
-                reason: format!(
-                    "{selected} is out of range: there are {} animals (0 to {}), or null for none",
-                    self.animal_count(),
-                    self.animal_count() - 1
+                reason: tr!(
+                    "setting-error-selected-animal",
+                    selected = selected,
+                    count = self.animal_count(),
+                    last = self.animal_count() - 1
                 ),
             });
         }

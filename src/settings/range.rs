@@ -3,16 +3,42 @@
 //! that cannot refuse), [`Range::bounds`] is the slider's. Each numeric setting's
 //! entry in its settings struct's table holds its `Range` (`number.rs`).
 
-use std::fmt::Display;
+use std::fmt::{self, Display};
 use std::ops::RangeInclusive;
 
+use crate::i18n::Arg;
+use crate::tr;
+
 /// Why a setting was refused: the setting's full key ("left.cohesion") and the
-/// reason a user reads.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("setting '{key}': {reason}")]
+/// reason a user reads (in the language in force when it was made).
+#[derive(Clone, Debug, PartialEq)]
 pub struct SettingError {
     pub key: String,
     pub reason: String,
+}
+
+impl Display for SettingError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let text = tr!(
+            "setting-error",
+            key = self.key.as_str(),
+            reason = self.reason.as_str()
+        );
+        f.write_str(&text)
+    }
+}
+
+impl std::error::Error for SettingError {}
+
+/// `value` as a message variable: a number written the language's way, with
+/// the digits its own display shows (an `f32`'s shortest form: 0.1, not
+/// 0.10000000149).
+pub fn number_arg(value: impl Display) -> Arg<'static> {
+    let text = value.to_string();
+    match text.parse::<f64>() {
+        Ok(n) => Arg::from(n),
+        Err(_) => Arg::from(text),
+    }
 }
 
 impl SettingError {
@@ -25,7 +51,12 @@ impl SettingError {
     ) -> Self {
         Self {
             key,
-            reason: format!("{value} is out of range: choose from {min} to {max}"),
+            reason: tr!(
+                "setting-error-out-of-range",
+                value = number_arg(value),
+                min = number_arg(min),
+                max = number_arg(max)
+            ),
         }
     }
 }

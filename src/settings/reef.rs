@@ -5,7 +5,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::settings::number::{Number, NumberSetting, check_all, clamp_all, field};
+use crate::i18n::ts;
+use crate::settings::number::{Number, NumberSetting, Unit, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::FishKind;
@@ -38,11 +39,21 @@ pub enum ReefOverlay {
 impl ReefOverlay {
     pub const ALL: [Self; 3] = [Self::None, Self::Light, Self::Temperature];
 
+    /// Its name in rectangle names (`reef_overlay_light`), the same in every
+    /// language.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::None => "none",
+            Self::Light => "light",
+            Self::Temperature => "temperature",
+        }
+    }
+
     pub fn label(self) -> &'static str {
         match self {
-            Self::None => "None",
-            Self::Light => "Light",
-            Self::Temperature => "Temperature",
+            Self::None => ts("setting-reef-overlay-none"),
+            Self::Light => ts("setting-reef-overlay-light"),
+            Self::Temperature => ts("setting-reef-overlay-temperature"),
         }
     }
 }
@@ -133,36 +144,31 @@ impl ReefSettings {
 
     /// Unset, the demo's own number.
     pub const PREY_COUNT: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        "reef",
         Range::new("prey_count", 0, REEF_PREY_MAX),
         field!(prey_count, |r| r.demo.default_prey_count() as u32),
-        "Prey fish",
-        "How many small prey fish live in this reef (they school and flee the shark)",
     )
     .rect("reef_prey");
     /// Unset, the demo's own number.
     pub const FOOD_COUNT: NumberSetting<Self, u32> = NumberSetting::<Self, _>::new(
+        "reef",
         Range::new("food_count", 0, REEF_FOOD_MAX),
         field!(food_count, |r| r.demo.default_food_count() as u32),
-        "Plankton",
-        "How much plankton drifts in the water; eaten plankton is replaced",
     )
     .rect("reef_food");
     pub const VISIBILITY_M: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "reef",
         Range::or_else("visibility_m", VISIBILITY_MIN_M, VISIBILITY_MAX_M, 6.0),
         field!(visibility_m),
-        "Visibility",
-        "How far a fish can see in this water, metres. Murky water: fish see \
-         less, find less food and notice the shark later",
     )
-    .unit(" m")
+    .unit(Unit::Metres)
     .rect("reef_visibility");
     pub const CURRENT_M_PER_S: NumberSetting<Self, f32> = NumberSetting::<Self, _>::new(
+        "reef",
         Range::or_else("current_m_per_s", 0.0, REEF_CURRENT_MAX_M_PER_S, 0.03),
         field!(current_m_per_s),
-        "Current",
-        "How fast the water flows; it carries plankton and sways the seaweed",
     )
-    .unit(" m/s")
+    .unit(Unit::MetresPerSecond)
     .rect("reef_current");
     /// Every numeric setting (each kind's traits have their own table,
     /// [`MindTraits::NUMBERS`], under [`MindTraits::prefix`]; `selected`

@@ -11,7 +11,9 @@
 use base64::Engine as _;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 
+use crate::i18n::tr;
 use crate::settings::{Settings, SettingsError};
+use crate::tr;
 
 /// Version tag at the start of every link's fragment.
 const PREFIX: &str = "v1.";
@@ -27,25 +29,45 @@ const MAX_JSON_BYTES: usize = 65_536;
 /// DEFLATE level. Default 9: links are made rarely and should be short.
 const COMPRESSION_LEVEL: u8 = 9;
 
-/// Why a link could not be opened.
-#[derive(Debug, thiserror::Error, PartialEq)]
+/// Why a link could not be opened (its Display, a sentence for the notice, is
+/// the catalogue's `share-link-error-…`).
+#[derive(Debug, PartialEq)]
 pub enum ShareLinkError {
-    #[error("the link is too long ({0} characters) to be a Shoal link")]
     TooLong(usize),
-    #[error("the link does not start with a Shoal version tag ('{PREFIX}')")]
     UnknownVersion,
-    #[error(
-        "the link is damaged (it is not valid base64 text): perhaps it was cut off when copied"
-    )]
     NotBase64,
-    #[error(
-        "the link is damaged (its data cannot be unpacked): perhaps it was cut off when copied"
-    )]
     NotDeflate,
-    #[error("the link's data is not valid settings text")]
     NotJson,
-    #[error("the link asks for something Shoal cannot do: {0}")]
-    Invalid(#[from] SettingsError),
+    Invalid(SettingsError),
+}
+
+impl From<SettingsError> for ShareLinkError {
+    fn from(err: SettingsError) -> Self {
+        Self::Invalid(err)
+    }
+}
+
+impl std::fmt::Display for ShareLinkError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let text = match self {
+            Self::TooLong(chars) => tr!("setting-link-too-long", count = *chars),
+            Self::UnknownVersion => tr!("setting-link-unknown-version", tag = PREFIX),
+            Self::NotBase64 => tr("setting-link-not-base64"),
+            Self::NotDeflate => tr("setting-link-not-deflate"),
+            Self::NotJson => tr("setting-link-not-json"),
+            Self::Invalid(err) => tr!("setting-link-invalid", reason = err.to_string()),
+        };
+        f.write_str(&text)
+    }
+}
+
+impl std::error::Error for ShareLinkError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::Invalid(err) => Some(err),
+            _ => None,
+        }
+    }
 }
 
 /// The fragment (without `#`) that reopens `settings`.

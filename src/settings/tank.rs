@@ -12,12 +12,14 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::settings::number::{Number, NumberSetting, Widget, check_all, clamp_all, field};
+use crate::i18n::ts;
+use crate::settings::number::{Number, NumberSetting, Unit, Widget, check_all, clamp_all, field};
 use crate::settings::range::{Range, SettingError};
 use crate::sim::boids::control_mode::{self, ControlMode};
 use crate::sim::boids::shark::MAX_SHARKS;
 use crate::sim::boids::stingray::MAX_STINGRAYS;
 use crate::sim::{BoidParams, Tank};
+use crate::tr;
 
 /// Largest fish count a teacher can ask for (per tank).
 pub const FISH_COUNT_MAX: u32 = 20_000;
@@ -53,26 +55,20 @@ impl Preset {
     /// The name on the radio button.
     pub fn label(self) -> &'static str {
         match self {
-            Self::Individual => "Individual (solitary)",
-            Self::Group => "Group (school)",
-            Self::MonteCarloPaper => "Monte Carlo (paper)",
-            Self::Custom => "Custom",
+            Self::Individual => ts("setting-preset-individual"),
+            Self::Group => ts("setting-preset-group"),
+            Self::MonteCarloPaper => ts("setting-preset-monte-carlo-paper"),
+            Self::Custom => ts("setting-preset-custom"),
         }
     }
 
     /// Hover help a 12-year-old understands.
     pub fn help(self) -> &'static str {
         match self {
-            Self::Individual => {
-                "Fish that like to be alone: they keep their distance and do not try to stay together."
-            }
-            Self::Group => {
-                "Fish that live in a school: they stay close, swim the same way and still never bump."
-            }
-            Self::MonteCarloPaper => {
-                "The lottery mode with the chances published in the paper: each moment one urge wins."
-            }
-            Self::Custom => "Your own mix: move any slider and the preset becomes Custom.",
+            Self::Individual => ts("setting-preset-individual.help"),
+            Self::Group => ts("setting-preset-group.help"),
+            Self::MonteCarloPaper => ts("setting-preset-monte-carlo-paper.help"),
+            Self::Custom => ts("setting-preset-custom.help"),
         }
     }
 
@@ -229,48 +225,37 @@ impl TankSettings {
     /// [`WEIGHT_MAX`]: the sliders a preset sets.
     pub const WEIGHTS: [NumberSetting<Self, f32>; 5] = [
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("containment", 0.0, WEIGHT_MAX),
             field!(containment),
-            "Containment",
-            "How strongly a fish stays in the pond: it turns back towards open water before its \
-             path comes near the glass, the sand or the surface.",
         )
         .widget(WHOLE)
         .rect("weight_containment"),
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("alignment", 0.0, WEIGHT_MAX),
             field!(alignment),
-            "Alignment",
-            "How much a fish copies the direction its neighbours are swimming \
-             (close neighbours count more: their heading is easier to see).",
         )
         .widget(WHOLE)
         .rect("weight_alignment"),
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("cohesion", 0.0, WEIGHT_MAX),
             field!(cohesion),
-            "Cohesion",
-            "How much a fish swims towards the middle of the neighbours it can see \
-             (and of the distant school it sees), easing off as it arrives.",
         )
         .widget(WHOLE)
         .rect("weight_cohesion"),
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("separation", 0.0, WEIGHT_MAX),
             field!(separation),
-            "Separation",
-            "How much a fish keeps its own space: it moves away from fish inside its personal \
-             space, harder the closer they are.",
         )
         .widget(WHOLE)
         .rect("weight_separation"),
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("avoidance", 0.0, WEIGHT_MAX),
             field!(avoidance),
-            "Avoidance",
-            "How strongly a fish swerves around obstacles: the glass, sand and surface, rocks, \
-             pillars, stingrays, and fish coming straight at it (three or more close together \
-             count as one obstacle).",
         )
         .widget(WHOLE)
         .rect("weight_avoidance"),
@@ -280,61 +265,50 @@ impl TankSettings {
     pub const SENSES: [NumberSetting<Self, f32>; 6] = [
         // From under two body lengths to the tank's width.
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("vision_distance_m", 0.5, 12.0),
             field!(vision_distance_m),
-            "Vision distance",
-            "How far a fish can see its neighbours, in metres.",
         )
-        .unit(" m")
+        .unit(Unit::Metres)
         .widget(TENTHS),
         // 360: no blind spot.
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("vision_angle_deg", 0.0, 360.0),
             field!(vision_angle_deg),
-            "Vision angle",
-            "How wide a fish sees around itself. At 360° it sees behind too; \
-             at 300° there is a blind spot behind its tail.",
         )
-        .unit("°")
+        .unit(Unit::Degrees)
         .widget(TENTHS),
         // From a crawl (a third of a body length per second) to a sprint (about
         // ten body lengths per second).
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("max_speed_m_per_s", 0.1, 3.0),
             field!(max_speed_m_per_s),
-            "Top speed",
-            "The fastest a fish can swim, in metres per second.",
         )
-        .unit(" m/s")
+        .unit(Unit::MetresPerSecond)
         .widget(TENTHS),
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("max_force_m_per_s2", 0.1, 10.0),
             field!(max_force_m_per_s2),
-            "Turning power",
-            "How hard a fish can turn or speed up at once (the maximum force). \
-             Small values make slow, lazy turns.",
         )
-        .unit(" m/s²")
+        .unit(Unit::MetresPerSecondSquared)
         .widget(TENTHS),
         // From a third of a body length (packed) to ten body lengths (a loner
         // that keeps everybody away).
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("personal_space_m", 0.1, 3.0),
             field!(personal_space_m),
-            "Personal space",
-            "How close another fish may come before separation pushes this one away. \
-             A school settles at about one body length (0.3–0.5 m here).",
         )
-        .unit(" m")
+        .unit(Unit::Metres)
         .widget(TENTHS),
         // On the weights' scale.
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("wander", 0.0, WEIGHT_MAX),
             field!(wander),
-            "Wander",
-            "How much a fish roams about on its own, 0 to 100 (on the urges' scale). \
-             The same for loners and schools: a school's alignment and cohesion \
-             overcome it, loners' do not.",
         )
         .widget(TENTHS),
     ];
@@ -342,39 +316,30 @@ impl TankSettings {
     /// The animals in the tank: fish, sharks, stingrays.
     pub const COUNTS: [NumberSetting<Self, u32>; 3] = [
         NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("fish_count", 0, FISH_COUNT_MAX),
             field!(fish_count),
-            "Fish",
-            "How many fish (the prey) are in the tank.",
         )
         .widget(Widget::Count {
             step: 10,
-            fewer: "Take 10 away",
-            more: "Add 10",
             typed: true,
         })
         .rect("fish"),
+        NumberSetting::<Self, _>::new("tank", Range::new("sharks", 0, SHARKS_MAX), field!(sharks))
+            .widget(ONE_AT_A_TIME),
         NumberSetting::<Self, _>::new(
-            Range::new("sharks", 0, SHARKS_MAX),
-            field!(sharks),
-            "Sharks",
-            "Hunters. A shark chases a fish; fish that see it flee and bunch together.",
-        )
-        .widget(ONE_AT_A_TIME),
-        NumberSetting::<Self, _>::new(
+            "tank",
             Range::new("stingrays", 0, STINGRAYS_MAX),
             field!(stingrays),
-            "Stingrays",
-            "Flat fish that glide over the sand. Other fish swim around them like rocks.",
         )
         .widget(ONE_AT_A_TIME),
     ];
 
     /// The aquarium scene's one control: the fish count of [`Self::COUNTS`] as a
-    /// slider, in the aquarium's words (not in [`Self::NUMBERS`]: the same
-    /// setting).
+    /// slider, in the aquarium's words (`setting-aquarium-fish-count`; not in
+    /// [`Self::NUMBERS`]: the same setting).
     pub const AQUARIUM_FISH_COUNT: NumberSetting<Self, u32> = NumberSetting {
-        help: "How many fish are in the tank",
+        section: "aquarium",
         widget: Widget::LOG_SLIDER,
         rect: "fish_count",
         ..Self::COUNTS[0]
@@ -406,10 +371,11 @@ impl TankSettings {
         {
             return Err(SettingError {
                 key: format!("{prefix}selected"),
-                reason: format!(
-                    "{selected} is out of range: there are {} fish (0 to {}), or null for none",
-                    self.fish_count,
-                    i64::from(self.fish_count) - 1
+                reason: tr!(
+                    "setting-error-selected-fish",
+                    selected = selected,
+                    count = self.fish_count,
+                    last = i64::from(self.fish_count) - 1
                 ),
             });
         }
@@ -417,9 +383,10 @@ impl TankSettings {
             if obstacles.len() > MAX_OBSTACLES {
                 return Err(SettingError {
                     key: format!("{prefix}obstacles"),
-                    reason: format!(
-                        "{} obstacles is too many: at most {MAX_OBSTACLES}",
-                        obstacles.len()
+                    reason: tr!(
+                        "setting-error-too-many-obstacles",
+                        count = obstacles.len(),
+                        max = MAX_OBSTACLES
                     ),
                 });
             }
@@ -458,8 +425,6 @@ const TENTHS: Widget = Widget::slider(1);
 /// Sharks and stingrays come one at a time.
 const ONE_AT_A_TIME: Widget = Widget::Count {
     step: 1,
-    fewer: "Take 1 away",
-    more: "Add 1",
     typed: true,
 };
 

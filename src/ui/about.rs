@@ -43,7 +43,7 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
     let page = scene.class().facts().about;
     let shown = egui::Window::new(tr!(
         "about-window-title",
-        scene = scene.class().facts().label
+        scene = scene.class().facts().label()
     ))
     .id(egui::Id::unique(("about_window", scene.name())))
     .open(&mut open)

@@ -57,13 +57,13 @@ pub fn control_panel_ui(
         ui.horizontal_wrapped(|ui| {
             for scene in Scene::ALL {
                 let response = ui
-                    .selectable_value(&mut settings.scene, scene, scene.class().facts().label)
-                    .on_hover_text(scene.class().facts().description);
+                    .selectable_value(&mut settings.scene, scene, scene.class().facts().label())
+                    .on_hover_text(scene.class().facts().description());
                 rects.insert(&format!("scene_{}", scene.name()), response.rect);
             }
         });
     });
-    ui.label(egui::RichText::new(settings.scene.class().facts().description).weak());
+    ui.label(egui::RichText::new(settings.scene.class().facts().description()).weak());
     ui.horizontal_wrapped(|ui| {
         super::about::about_button(ui, rects);
         super::studio_panel::studio_button(ui, &settings.studio, rects);

@@ -149,10 +149,7 @@ fn reef_sliders_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut Widge
                             let r = ui
                                 .radio_value(&mut reef.overlay, overlay, overlay.label())
                                 .on_hover_text(help);
-                            rects.insert(
-                                &format!("reef_overlay_{}", overlay.label().to_lowercase()),
-                                r.rect,
-                            );
+                            rects.insert(&format!("reef_overlay_{}", overlay.name()), r.rect);
                         }
                     });
                 },

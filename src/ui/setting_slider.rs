@@ -12,6 +12,7 @@ use super::WidgetRects;
 use super::studio_panel::control_row;
 use crate::settings::number::{NumberSetting, Widget};
 use crate::settings::range::SettingValue;
+use crate::tr;
 
 /// Draws `setting`'s row of `settings` (the keys under `prefix`, as in
 /// "left."). Returns whether the control changed the value this frame.
@@ -83,7 +84,7 @@ where
         rects,
         &setting.full_key(prefix),
         |ui| {
-            ui.label(setting.label).on_hover_text(setting.help);
+            ui.label(setting.label()).on_hover_text(setting.help());
         },
         |ui, rects| match more {
             None => edit(ui, rects, settings),
@@ -109,14 +110,10 @@ fn control<S, T>(
 ) where
     T: SettingValue + Numeric,
 {
-    let NumberSetting {
-        range,
-        label,
-        help,
-        unit,
-        rect,
-        ..
-    } = *setting;
+    let NumberSetting { range, rect, .. } = *setting;
+    let label = setting.label();
+    let help = setting.help();
+    let unit = setting.unit_text();
     match setting.widget {
         Widget::Slider {
             logarithmic,
@@ -140,10 +137,7 @@ fn control<S, T>(
             let r = ui.add(slider).on_hover_text(help).accessible_name(label);
             rects.insert(rect, r.rect);
         }
-        Widget::Field {
-            drag_speed,
-            help: field_help,
-        } => {
+        Widget::Field { drag_speed, .. } => {
             let mut field = egui::DragValue::new(value)
                 .range(range.bounds())
                 .speed(drag_speed);
@@ -152,22 +146,17 @@ fn control<S, T>(
             }
             let r = ui
                 .add(field)
-                .on_hover_text(field_help.unwrap_or(help))
+                .on_hover_text(setting.field_help())
                 .accessible_name(label);
             rects.insert(rect, r.rect);
         }
-        Widget::Count {
-            step,
-            fewer,
-            more,
-            typed,
-        } => {
+        Widget::Count { step, typed } => {
             let step = f64::from(step);
             ui.horizontal(|ui| {
                 let minus = ui
                     .add_enabled(*value > range.min, egui::Button::new(" − "))
-                    .on_hover_text(fewer)
-                    .accessible_name(format!("{label}: fewer"));
+                    .on_hover_text(setting.fewer_help())
+                    .accessible_name(tr!("setting-count-fewer", label = label));
                 rects.insert(&format!("{rect}_minus"), minus.rect);
                 if minus.clicked() {
                     // A whole number below zero comes back as zero.
@@ -188,8 +177,8 @@ fn control<S, T>(
                 }
                 let plus = ui
                     .add_enabled(*value < range.max, egui::Button::new(" + "))
-                    .on_hover_text(more)
-                    .accessible_name(format!("{label}: more"));
+                    .on_hover_text(setting.more_help())
+                    .accessible_name(tr!("setting-count-more", label = label));
                 rects.insert(&format!("{rect}_plus"), plus.rect);
                 if plus.clicked() {
                     *value = range.clamp(T::from_f64(value.to_f64() + step));
@@ -214,11 +203,20 @@ where
     ui.horizontal_wrapped(|ui| {
         let mut picked = false;
         for named in setting.named {
+            let name = setting.named_label(named);
             let r = ui
-                .selectable_label(*value == named.value, named.label)
-                .on_hover_text(format!("{}: {}", named.label, named.help))
+                .selectable_label(*value == named.value, name)
+                .on_hover_text(tr!(
+                    "setting-named-value",
+                    name = name,
+                    help = setting.named_help(named)
+                ))
                 // Which setting it is a value of, for a screen reader.
-                .accessible_name(format!("{}: {}", setting.label, named.label));
+                .accessible_name(tr!(
+                    "setting-named-value.name",
+                    setting = setting.label(),
+                    name = name
+                ));
             rects.insert(&named.rect(setting.rect), r.rect);
             if r.clicked() {
                 *value = named.value;

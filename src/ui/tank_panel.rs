@@ -8,6 +8,7 @@ use egui::emath::Numeric;
 use super::WidgetRects;
 use super::setting_slider::setting_row;
 use super::studio_panel::{control, control_block, is_hidden};
+use crate::i18n::ts;
 use crate::settings::Side;
 use crate::settings::number::NumberSetting;
 use crate::settings::range::SettingValue;
@@ -17,10 +18,10 @@ use crate::sim::boids::control_mode::ControlMode;
 /// The name on a mode's radio button.
 pub fn mode_label(mode: ControlMode) -> &'static str {
     match mode {
-        ControlMode::Blended => "Blended (direct)",
-        ControlMode::Classic => "Classic",
-        ControlMode::DirectAlternate => "Direct alternate",
-        ControlMode::MonteCarlo => "Monte Carlo",
+        ControlMode::Blended => ts("setting-mode-blended"),
+        ControlMode::Classic => ts("setting-mode-classic"),
+        ControlMode::DirectAlternate => ts("setting-mode-direct-alternate"),
+        ControlMode::MonteCarlo => ts("setting-mode-monte-carlo"),
     }
 }
 
@@ -45,8 +46,8 @@ fn preset_name(preset: Preset) -> String {
 pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, side: Side, rects: &mut WidgetRects) {
     let prefix = side.prefix();
     let key = |name: &str| format!("{prefix}{name}");
-    ui.label(egui::RichText::new("Preset").strong())
-        .on_hover_text("Ready-made mixes of the five urges, from the paper's Table 1");
+    ui.label(egui::RichText::new(ts("setting-tank-panel-preset")).strong())
+        .on_hover_text(ts("setting-tank-panel-preset.help"));
     control(ui, rects, &key("preset"), |ui, rects| {
         ui.horizontal_wrapped(|ui| {
             for preset in Preset::ALL {
@@ -60,30 +61,33 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, side: Side, rects: &m
 
     ui.add_space(4.0);
     if !is_hidden(ui, &key("mode")) {
-        ui.label(egui::RichText::new("How the urges combine").strong())
-            .on_hover_text("The control mode: how a fish turns five urges into one move");
+        ui.label(egui::RichText::new(ts("setting-tank-panel-mode")).strong())
+            .on_hover_text(ts("setting-tank-panel-mode.help"));
     }
-    control_block(ui, rects, &key("mode"), "control mode", |ui, rects| {
-        for mode in ControlMode::ALL {
-            let response = ui
-                .radio_value(&mut tank.mode, mode, mode_label(mode))
-                .on_hover_text(mode.explanation());
-            rects.insert(&format!("mode_{}", mode_name(mode)), response.rect);
-        }
-        ui.label(egui::RichText::new(tank.mode.explanation()).small().weak());
-    });
+    control_block(
+        ui,
+        rects,
+        &key("mode"),
+        ts("setting-tank-panel-mode.block"),
+        |ui, rects| {
+            for mode in ControlMode::ALL {
+                let response = ui
+                    .radio_value(&mut tank.mode, mode, mode_label(mode))
+                    .on_hover_text(mode.explanation());
+                rects.insert(&format!("mode_{}", mode_name(mode)), response.rect);
+            }
+            ui.label(egui::RichText::new(tank.mode.explanation()).small().weak());
+        },
+    );
     ui.label(
-        egui::RichText::new(
-            "Wander and fleeing from sharks are not urges of the mode: \
-             they act on top of it, in every mode.",
-        )
-        .small()
-        .weak(),
+        egui::RichText::new(ts("setting-tank-panel-mode-note"))
+            .small()
+            .weak(),
     );
 
     ui.add_space(4.0);
-    ui.label(egui::RichText::new("Urges (0–100)").strong())
-        .on_hover_text("How much each urge counts, on the paper's 0 to 100 scale");
+    ui.label(egui::RichText::new(ts("setting-tank-panel-urges")).strong())
+        .on_hover_text(ts("setting-tank-panel-urges.help"));
     rows_grid(
         ui,
         rects,
@@ -94,11 +98,8 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, side: Side, rects: &m
     );
 
     ui.add_space(4.0);
-    ui.label(egui::RichText::new("Senses, body and wander").strong())
-        .on_hover_text(
-            "Not part of the presets: Individual and Group change only the five urges, \
-             so these stay the same when you pick a preset.",
-        );
+    ui.label(egui::RichText::new(ts("setting-tank-panel-senses")).strong())
+        .on_hover_text(ts("setting-tank-panel-senses.help"));
     rows_grid(
         ui,
         rects,
@@ -109,7 +110,7 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, side: Side, rects: &m
     );
 
     ui.add_space(4.0);
-    ui.label(egui::RichText::new("Animals").strong());
+    ui.label(egui::RichText::new(ts("setting-tank-panel-animals")).strong());
     rows_grid(
         ui,
         rects,
