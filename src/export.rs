@@ -30,6 +30,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use crate::i18n::{Lang, with_lang};
 use crate::lab::{Lab, Run};
 use crate::settings::{Scene, Settings};
 use crate::sim::body::MUSCLE_COUNT;
@@ -45,7 +46,16 @@ pub struct CsvExport {
 
 /// The left (or only) tank's scene as a CSV file: the header every file has,
 /// then the scene's own tables ([`crate::scenes::SceneClass::write_csv`]).
+///
+/// The file is in English whatever language the screen shows: spreadsheets,
+/// scripts and the tests read its comment lines by their prefixes
+/// (`# settings link: `) and its numbers with a decimal point, and one file
+/// reads the same on every computer.
 pub fn scene_csv(lab: &Lab) -> CsvExport {
+    with_lang(Lang::En, || english_scene_csv(lab))
+}
+
+fn english_scene_csv(lab: &Lab) -> CsvExport {
     let settings = lab.settings();
     let run = &lab.runs()[0];
     let mut text = header(settings, run);
@@ -69,13 +79,13 @@ pub fn file_name(scene: Scene, time_secs: f64) -> String {
 
 /// The last comment line of the files that hold several tables.
 pub(crate) const FILTER_NOTE: &str =
-    "# filter on the first column: a row leaves the other tables' columns empty\n";
+    "# filter on the first column: a row leaves the other tables' columns empty\n"; // words: a CSV comment line, English like the whole file (see scene_csv)
 
 /// How often the lab samples `run`'s metrics and for how long it keeps them.
 pub(crate) fn sampling(run: &Run) -> String {
     let every = run.sample_every_steps() as f64 * run.scene().dt_secs();
     format!(
-        "every {every:.3} s over the last {:.0} s",
+        "every {every:.3} s over the last {:.0} s", // words: part of a CSV comment line, English like the whole file
         crate::metrics_history::HISTORY_SECS
     )
 }
@@ -87,13 +97,13 @@ fn header(settings: &Settings, run: &Run) -> String {
     // Writing to a String cannot fail.
     let _ = writeln!(
         out,
-        "# Shoal data: {} ({})",
-        scene.class().facts().label(),
+        "# Shoal data: {} ({})", // words: a CSV comment line, English like the whole file
+        crate::i18n::with_lang(crate::i18n::Lang::En, || scene.class().facts().label()),
         scene.name()
     );
     let _ = writeln!(
         out,
-        "# simulated time: {:.3} s ({} steps)",
+        "# simulated time: {:.3} s ({} steps)", // words: a CSV comment line scripts read
         run.time_secs(),
         run.steps()
     );
@@ -102,12 +112,12 @@ fn header(settings: &Settings, run: &Run) -> String {
         // The link holds the values the teacher made a mystery.
         let _ = writeln!(
             out,
-            "# settings link: withheld (this page has mystery values for the class to infer)"
+            "# settings link: withheld (this page has mystery values for the class to infer)" // words: a CSV comment line scripts read
         );
     } else {
         let _ = writeln!(
             out,
-            "# settings link: #{} (put it after Shoal's address to reopen these settings)",
+            "# settings link: #{} (put it after Shoal's address to reopen these settings)", // words: a CSV comment line scripts read
             crate::settings::share_link::encode(settings)
         );
     }

@@ -8,6 +8,7 @@ use glam::Vec3;
 
 use super::WidgetRects;
 use super::scene_panel::{ViewContext, ViewInput};
+use crate::i18n::ts;
 use crate::lab::Run;
 use crate::render::OrbitCamera;
 use crate::sim::body::NODE_COUNT;
@@ -200,10 +201,18 @@ pub fn draw_forces(
             (
                 physics.desired_m_per_s(i),
                 egui::Color32::from_rgb(90, 255, 120),
-                "wants to go",
+                ts("overlay-wants-to-go"),
             ),
-            (animal.point.velocity_m_per_s, egui::Color32::WHITE, "goes"),
-            (water, egui::Color32::from_rgb(80, 220, 255), "current"),
+            (
+                animal.point.velocity_m_per_s,
+                egui::Color32::WHITE,
+                ts("overlay-goes"),
+            ),
+            (
+                water,
+                egui::Color32::from_rgb(80, 220, 255),
+                ts("overlay-current"),
+            ),
         ];
         for (v, color, name) in arrows {
             if v.length() > 1e-3 {

@@ -12,12 +12,14 @@ use glam::Vec3;
 
 use super::WidgetRects;
 use super::boids_panel::{draw_view_fan, screen_point};
-use super::metrics_panel::{URGE_COLORS, URGE_NAMES};
+use super::metrics_panel::{URGE_COLORS, urge_name};
 use super::scene_panel::ViewContext;
+use crate::i18n::{fmt, ts};
 use crate::settings::{Settings, Side};
 use crate::sim::World;
 use crate::sim::boids::attention::Attention;
 use crate::sim::boids::control_mode::ControlMode;
+use crate::tr;
 
 /// Shortest urge arrow on screen, points. 22, chosen: a weak urge still shows
 /// its direction clear of the fish's ring (13 points).
@@ -29,22 +31,33 @@ const MIN_ARROW_PT: f32 = 22.0;
 /// urge a twentieth as strong (a school's alignment) is still about 70 points.
 const ARROW_RANGE_PT: f32 = 200.0;
 
-/// The urges' names in sentences and the table.
+/// The urges' names in sentences and the table (message ids), in
+/// `Force::ALL` order.
 const URGE_WORDS: [&str; 5] = [
-    "containment (stay in the tank)",
-    "alignment (swim like the neighbours)",
-    "cohesion (move to the neighbours' centre)",
-    "separation (keep space)",
-    "avoidance (swerve round obstacles)",
+    "boids-urge-containment.help",
+    "boids-urge-alignment.help",
+    "boids-urge-cohesion.help",
+    "boids-urge-separation.help",
+    "boids-urge-avoidance.help",
 ];
 
-/// Short names for the table.
+/// Short names for the table (message ids).
 const URGE_SHORT: [&str; 5] = [
-    "Containment",
-    "Alignment",
-    "Cohesion",
-    "Separation",
-    "Avoidance",
+    "boids-urge-containment",
+    "boids-urge-alignment",
+    "boids-urge-cohesion",
+    "boids-urge-separation",
+    "boids-urge-avoidance",
+];
+
+/// Each urge's weight's setting name (`left.cohesion`), for the studio's
+/// mystery values.
+const URGE_KEYS: [&str; 5] = [
+    "containment",
+    "alignment",
+    "cohesion",
+    "separation",
+    "avoidance",
 ];
 
 /// The attention of the selected fish of `side`'s tank, if one is selected
@@ -135,7 +148,7 @@ pub fn draw_attention(view: &ViewContext, world: &World, selected: u32, attentio
         label(
             painter,
             tip + dir * 10.0,
-            URGE_NAMES[k],
+            urge_name(k),
             font.clone(),
             color,
         );
@@ -147,7 +160,7 @@ pub fn draw_attention(view: &ViewContext, world: &World, selected: u32, attentio
         label(
             painter,
             tip + dir * 12.0,
-            "result",
+            ts("boids-result-arrow"),
             egui::FontId::proportional(13.0),
             egui::Color32::WHITE,
         );
@@ -172,48 +185,26 @@ fn label(
 pub fn rule_sentence(attention: &Attention) -> String {
     let chosen: Vec<&str> = (0..5)
         .filter(|&k| attention.applied[k])
-        .map(|k| URGE_NAMES[k])
+        .map(urge_name)
         .collect();
     let chosen = if chosen.is_empty() {
-        "none".to_owned()
+        ts("boids-rule-none").to_owned()
     } else {
         chosen.join(", ")
     };
     match attention.mode {
-        ControlMode::Blended => "Blended: every urge with a weight pulls at once, each by its \
-             weight's share (the arrows add up to the result)."
-            .to_owned(),
-        ControlMode::Classic => format!(
-            "Classic: only the most pressing urge acts (its weight × how much it is needed \
-             now). This step: {chosen}."
-        ),
-        ControlMode::DirectAlternate => format!(
-            "Direct alternate: one dice roll, and every urge whose weight beats it acts at \
-             full strength. This step: {chosen}."
-        ),
-        ControlMode::MonteCarlo => format!(
-            "Monte Carlo: one urge is drawn by lottery; bigger weights hold more tickets. \
-             This step: {chosen}."
-        ),
+        ControlMode::Blended => ts("boids-rule-blended").to_owned(),
+        ControlMode::Classic => tr!("boids-rule-classic", chosen = chosen),
+        ControlMode::DirectAlternate => tr!("boids-rule-direct-alternate", chosen = chosen),
+        ControlMode::MonteCarlo => tr!("boids-rule-monte-carlo", chosen = chosen),
     }
 }
 
 /// The answer to "is there a leader?" for this fish.
 pub fn leader_sentence(attention: &Attention) -> String {
-    let n = attention.neighbours.len();
-    match n {
-        0 => format!(
-            "No fish leads: fish {} sees no other fish right now, so only the tank, \
-             the rocks and its own wandering steer it.",
-            attention.fish
-        ),
-        _ => format!(
-            "No fish leads: fish {} reacts only to the {n} neighbour{} it sees, and each of \
-             them to its own neighbours. The school's shape comes from all these small \
-             reactions together.",
-            attention.fish,
-            if n == 1 { "" } else { "s" }
-        ),
+    match attention.neighbours.len() {
+        0 => tr!("boids-leader-alone", fish = attention.fish),
+        n => tr!("boids-leader-neighbours", fish = attention.fish, count = n),
     }
 }
 
@@ -232,32 +223,25 @@ pub fn attention_section_ui(
     };
     ui.separator();
     let title = match tank_name {
-        Some(tank) => format!("What fish {selected} pays attention to ({tank})"),
-        None => format!("What fish {selected} pays attention to"),
+        Some(tank) => tr!("boids-attention-title-tank", fish = selected, tank = tank),
+        None => tr!("boids-attention-title", fish = selected),
     };
     ui.horizontal_wrapped(|ui| {
         ui.label(egui::RichText::new(title).strong());
         let let_go = ui
-            .button("Let go")
-            .on_hover_text("Stop showing this fish (or click open water)");
+            .button(ts("boids-let-go"))
+            .on_hover_text(ts("boids-let-go.help"));
         rects.insert(&format!("attention_let_go_{}", side.name()), let_go.rect);
         if let_go.clicked() {
             settings.tank_mut(side).selected = None;
         }
     });
     let Some(a) = attention else {
-        ui.label(
-            "Press Play or Step: the fish has not swum since the settings changed, so \
-             there is nothing to show yet.",
-        );
+        ui.label(ts("boids-attention-not-yet"));
         return;
     };
     ui.label(
-        egui::RichText::new(
-            "Arrows from the fish (ringed yellow): each urge, longer when stronger; solid \
-             when used this step, dashed when not; white is the result. White rings: the \
-             neighbours it heeds.",
-        )
+        egui::RichText::new(ts("boids-attention-key"))
         .small()
         .weak(),
     );
@@ -266,47 +250,46 @@ pub fn attention_section_ui(
         .spacing([10.0, 3.0])
         .striped(true)
         .show(ui, |ui| {
-            ui.label(egui::RichText::new("Urge").small().strong());
-            ui.label(egui::RichText::new("Strength").small().strong())
-                .on_hover_text(
-                    "How hard the urge pulls, as the control mode weighs it: the \
-                     acceleration it asks for, in metres per second per second",
-                );
-            ui.label(egui::RichText::new("Used?").small().strong());
+            ui.label(egui::RichText::new(ts("boids-urge")).small().strong());
+            ui.label(egui::RichText::new(ts("boids-strength")).small().strong())
+                .on_hover_text(ts("boids-strength.help"));
+            ui.label(egui::RichText::new(ts("boids-used")).small().strong());
             ui.end_row();
             for k in 0..5 {
-                ui.label(egui::RichText::new(format!("■ {}", URGE_SHORT[k])).color(URGE_COLORS[k]))
-                    .on_hover_text(URGE_WORDS[k]);
+                ui.label(
+                    egui::RichText::new(format!("■ {}", ts(URGE_SHORT[k]))).color(URGE_COLORS[k]),
+                )
+                .on_hover_text(ts(URGE_WORDS[k]));
                 // A mystery weight's strength would give it away.
-                let key = format!("{}.{}", side.name(), URGE_SHORT[k].to_lowercase());
+                let key = format!("{}.{}", side.name(), URGE_KEYS[k]);
                 if super::studio_panel::is_mystery(ui, &key) {
                     ui.label("?")
-                        .on_hover_text("A mystery value: your teacher hid it");
+                        .on_hover_text(ts("boids-mystery.help"));
                 } else {
-                    ui.label(format!("{:.2} m/s²", a.urges_m_per_s2[k].length()));
+                    ui.label(acceleration(a.urges_m_per_s2[k].length()));
                 }
-                ui.label(if a.applied[k] { "yes" } else { "–" });
+                ui.label(if a.applied[k] { ts("boids-used-yes") } else { "–" });
                 ui.end_row();
             }
-            ui.label("Wander")
-                .on_hover_text("Its own roaming: acts on top of every control mode");
-            ui.label(format!("{:.2} m/s²", a.wander_m_per_s2.length()));
-            ui.label("always");
+            ui.label(ts("boids-wander"))
+                .on_hover_text(ts("boids-wander.help"));
+            ui.label(acceleration(a.wander_m_per_s2.length()));
+            ui.label(ts("boids-used-always"));
             ui.end_row();
             if a.fleeing {
                 ui.label(
-                    egui::RichText::new("Fleeing a shark")
+                    egui::RichText::new(ts("boids-fleeing"))
                         .color(egui::Color32::from_rgb(255, 160, 60)),
                 );
-                ui.label(format!("{:.2} m/s²", a.escape_m_per_s2.length()));
-                ui.label("always");
+                ui.label(acceleration(a.escape_m_per_s2.length()));
+                ui.label(ts("boids-used-always"));
                 ui.end_row();
             }
-            ui.label(egui::RichText::new("Result").strong())
-                .on_hover_text("The steering the fish got this step (white arrow)");
-            ui.label(format!("{:.2} m/s²", a.steering_m_per_s2.length()));
-            ui.label(format!("{:.2} m/s", a.velocity_m_per_s.length()))
-                .on_hover_text("Its speed after the step");
+            ui.label(egui::RichText::new(ts("boids-result")).strong())
+                .on_hover_text(ts("boids-result.help"));
+            ui.label(acceleration(a.steering_m_per_s2.length()));
+            ui.label(format!("{} m/s", fmt(f64::from(a.velocity_m_per_s.length()), 2)))
+                .on_hover_text(ts("boids-speed-after.help"));
             ui.end_row();
         });
     rects.insert(
@@ -315,11 +298,12 @@ pub fn attention_section_ui(
     );
     ui.label(rule_sentence(a));
     let neighbours = match a.neighbours.len() {
-        0 => "It heeds no neighbour: it sees no other fish.".to_owned(),
-        n => format!(
-            "It heeds {n} neighbour{} (ringed): fish {}.",
-            if n == 1 { "" } else { "s" },
-            a.neighbours
+        0 => ts("boids-heeds-none").to_owned(),
+        n => tr!(
+            "boids-heeds",
+            count = n,
+            fish = a
+                .neighbours
                 .iter()
                 .map(usize::to_string)
                 .collect::<Vec<_>>()
@@ -328,10 +312,15 @@ pub fn attention_section_ui(
     };
     ui.label(neighbours);
     if a.sees_far_school {
-        ui.label("It also sees a distant group of fish and is drawn a little towards it.");
+        ui.label(ts("boids-far-school"));
     }
-    ui.label(egui::RichText::new("Is there a leader?").strong());
+    ui.label(egui::RichText::new(ts("boids-leader")).strong());
     ui.label(leader_sentence(a));
+}
+
+/// An acceleration as the table shows it: "0.42 m/s²".
+fn acceleration(m_per_s2: f32) -> String {
+    format!("{} m/s²", fmt(f64::from(m_per_s2), 2))
 }
 
 #[cfg(test)]

@@ -14,6 +14,7 @@ use super::setting_slider::setting_row;
 use super::show_bottom_panel;
 use super::studio_panel::{control, control_block, is_hidden, is_mystery};
 use super::tank_panel::{mode_label, tank_ui};
+use crate::i18n::{num, tr, ts};
 use crate::lab::Lab;
 use crate::render::OrbitCamera;
 use crate::settings::tank::TankSettings;
@@ -21,6 +22,7 @@ use crate::settings::{Settings, Side};
 use crate::sim::Obstacle;
 use crate::sim::boids::attention::Attention;
 use crate::sim::boids::forces::Perception;
+use crate::tr;
 
 /// Radius of a rock a teacher adds by clicking, metres. Default 0.6 m: clearly
 /// visible, two fish lengths across, small enough to place between others.
@@ -77,10 +79,10 @@ impl EditTool {
 
     fn label(self) -> &'static str {
         match self {
-            Self::Look => "Look",
-            Self::AddRock => "Add rock",
-            Self::MoveRock => "Move rock",
-            Self::RemoveRock => "Remove",
+            Self::Look => ts("boids-tool-look"),
+            Self::AddRock => ts("boids-tool-add-rock"),
+            Self::MoveRock => ts("boids-tool-move-rock"),
+            Self::RemoveRock => ts("boids-tool-remove"),
         }
     }
 
@@ -95,10 +97,10 @@ impl EditTool {
 
     fn help(self) -> &'static str {
         match self {
-            Self::Look => "Drag to turn the tank, scroll to zoom.",
-            Self::AddRock => "Click on the sand to put a rock there.",
-            Self::MoveRock => "Drag a rock or pillar to a new place.",
-            Self::RemoveRock => "Click a rock, pillar or ledge to take it out.",
+            Self::Look => ts("boids-tool-look.help"),
+            Self::AddRock => ts("boids-tool-add-rock.help"),
+            Self::MoveRock => ts("boids-tool-move-rock.help"),
+            Self::RemoveRock => ts("boids-tool-remove.help"),
         }
     }
 }
@@ -150,20 +152,14 @@ impl ScenePanel for BoidsPanel {
         ui.horizontal_wrapped(|ui| {
             control(ui, rects, "compare", |ui, rects| {
                 let compare = ui
-                    .checkbox(&mut settings.compare, "Compare two tanks")
-                    .on_hover_text(
-                        "Show two tanks side by side with the same fish at the same start. \
-                         Give them different urges and see how differently they behave.",
-                    );
+                    .checkbox(&mut settings.compare, ts("boids-compare"))
+                    .on_hover_text(ts("boids-compare.help"));
                 rects.insert("compare", compare.rect);
             });
             control(ui, rects, "show_vision", |ui, rects| {
                 let vision = ui
-                    .checkbox(&mut settings.show_vision, "Show vision")
-                    .on_hover_text(
-                        "Draw what each fish can see: its field of view and lines to the \
-                         neighbours it notices",
-                    );
+                    .checkbox(&mut settings.show_vision, ts("boids-show-vision"))
+                    .on_hover_text(ts("boids-show-vision.help"));
                 rects.insert("show_vision", vision.rect);
             });
         });
@@ -189,12 +185,12 @@ impl ScenePanel for BoidsPanel {
             self.edit_side = Side::Left;
         } else {
             ui.horizontal(|ui| {
-                ui.label("Edit:");
+                ui.label(ts("boids-edit"));
                 for side in Side::BOTH {
                     let label = tank_name(side, self.stacked.get());
                     let response = ui
                         .selectable_value(&mut self.edit_side, side, label)
-                        .on_hover_text("Choose which tank the controls below change");
+                        .on_hover_text(ts("boids-edit.help"));
                     rects.insert(&format!("edit_{}", side.name()), response.rect);
                     if self.edit_side == side {
                         // Which tank the controls change, for the browser tests.
@@ -209,12 +205,12 @@ impl ScenePanel for BoidsPanel {
         ui.add_space(4.0);
         let rocks = format!("{}.obstacles", self.edit_side.name());
         if !is_hidden(ui, &rocks) {
-            ui.label(egui::RichText::new("Rocks").strong())
-                .on_hover_text("Change the rocks in the tank with the mouse");
+            ui.label(egui::RichText::new(ts("boids-rocks")).strong())
+                .on_hover_text(ts("boids-rocks.help"));
         }
         let edit_side = self.edit_side;
         let tool = &mut self.tool;
-        let drawn = control_block(ui, rects, &rocks, "rock tools", |ui, rects| {
+        let drawn = control_block(ui, rects, &rocks, ts("boids-rock-tools"), |ui, rects| {
             ui.horizontal_wrapped(|ui| {
                 for t in EditTool::ALL {
                     let response = ui
@@ -237,9 +233,9 @@ impl ScenePanel for BoidsPanel {
             let restore = ui
                 .add_enabled(
                     settings.tank(edit_side).obstacles.is_some(),
-                    egui::Button::new("Restore the seed's rocks"),
+                    egui::Button::new(ts("boids-restore-rocks")),
                 )
-                .on_hover_text("Undo all rock changes in this tank");
+                .on_hover_text(ts("boids-restore-rocks.help"));
             rects.insert("restore_rocks", restore.rect);
             if restore.clicked() {
                 settings.tank_mut(edit_side).obstacles = None;
@@ -267,7 +263,7 @@ impl ScenePanel for BoidsPanel {
                 let tank = lab.settings().tank(run.side());
                 // A mystery mix keeps its preset's name to itself.
                 let preset = if is_mystery(ui, &format!("{}.preset", run.side().name())) {
-                    "? (mystery)"
+                    ts("boids-preset-mystery")
                 } else {
                     tank.preset.label()
                 };
@@ -427,9 +423,9 @@ impl RockKeys<'_> {
         match self.tool {
             EditTool::Look => return None,
             EditTool::AddRock => {
-                let add = ui.button("Add a rock in the middle").on_hover_text(
-                    "Without a mouse: a new rock on the sand in the middle of the tank",
-                );
+                let add = ui
+                    .button(ts("boids-rock-add-middle"))
+                    .on_hover_text(ts("boids-rock-add-middle.help"));
                 rects.insert("rock_add_middle", add.rect);
                 if add.clicked() {
                     // The free spot nearest the middle of the floor.
@@ -464,33 +460,34 @@ impl RockKeys<'_> {
                             proposal = Some(next);
                         }
                         None => {
-                            return Some(Notice::info("There is no free place for another rock."));
+                            return Some(Notice::info(ts("boids-rock-no-room")));
                         }
                     }
                 }
             }
             EditTool::MoveRock | EditTool::RemoveRock => {
                 if current.is_empty() {
-                    ui.label("No rocks in this tank.");
+                    ui.label(ts("boids-no-rocks"));
                     return None;
                 }
                 let n = current.len();
                 *self.rock = (*self.rock).min(n - 1);
                 let at = current[*self.rock].footprint_center_m();
                 ui.horizontal_wrapped(|ui| {
-                    let previous = ui.button("◀").accessible_name("Previous rock");
+                    let previous = ui.button("◀").accessible_name(ts("boids-rock-previous"));
                     rects.insert("rock_previous", previous.rect);
                     if previous.clicked() {
                         *self.rock = (*self.rock + n - 1) % n;
                     }
                     // Where it is, in words a screen reader reads.
-                    ui.label(format!(
-                        "Rock {} of {n}: {:.1} m from the left, {:.1} m from the front",
-                        *self.rock + 1,
-                        at.x - tank.min_m.x,
-                        tank.max_m.z - at.y,
+                    ui.label(tr!(
+                        "boids-rock-where",
+                        number = *self.rock + 1,
+                        count = n,
+                        left = num(f64::from(at.x - tank.min_m.x), 1),
+                        front = num(f64::from(tank.max_m.z - at.y), 1),
                     ));
-                    let next = ui.button("▶").accessible_name("Next rock");
+                    let next = ui.button("▶").accessible_name(ts("boids-rock-next"));
                     rects.insert("rock_next", next.rect);
                     if next.clicked() {
                         *self.rock = (*self.rock + 1) % n;
@@ -499,15 +496,18 @@ impl RockKeys<'_> {
                 if self.tool == EditTool::MoveRock {
                     ui.horizontal_wrapped(|ui| {
                         for (label, name, dx, dz) in [
-                            ("Left", "rock_left", -ROCK_STEP_M, 0.0),
-                            ("Right", "rock_right", ROCK_STEP_M, 0.0),
-                            ("Back", "rock_back", 0.0, -ROCK_STEP_M),
-                            ("Front", "rock_front", 0.0, ROCK_STEP_M),
+                            ("boids-rock-left", "rock_left", -ROCK_STEP_M, 0.0),
+                            ("boids-rock-right", "rock_right", ROCK_STEP_M, 0.0),
+                            ("boids-rock-back", "rock_back", 0.0, -ROCK_STEP_M),
+                            ("boids-rock-front", "rock_front", 0.0, ROCK_STEP_M),
                         ] {
                             let r = ui
-                                .button(label)
-                                .on_hover_text(format!("Move this rock {ROCK_STEP_M} m"))
-                                .accessible_name(format!("Move the rock {}", label.to_lowercase()));
+                                .button(tr(label))
+                                .on_hover_text(tr!(
+                                    "boids-rock-move-help",
+                                    step = num(f64::from(ROCK_STEP_M), 1)
+                                ))
+                                .accessible_name(tr(&format!("{label}.name")));
                             rects.insert(name, r.rect);
                             if r.clicked() {
                                 let mut next = current.clone();
@@ -518,7 +518,7 @@ impl RockKeys<'_> {
                         }
                     });
                 } else {
-                    let remove = ui.button("Remove this rock");
+                    let remove = ui.button(ts("boids-rock-remove-this"));
                     rects.insert("rock_remove_this", remove.rect);
                     if remove.clicked() {
                         let mut next = current;
@@ -542,7 +542,7 @@ fn propose_obstacles(
     tank: &crate::sim::Tank,
 ) -> Option<Notice> {
     if let Err((_, reason)) = crate::sim::boids::placement::check_obstacles(&obstacles, tank) {
-        return Some(Notice::info(format!("That rock cannot go there: {reason}")));
+        return Some(Notice::info(tr!("boids-rock-cannot-go", reason = reason.to_string())));
     }
     let mut candidate = settings.clone();
     candidate.tank_mut(side).obstacles = Some(obstacles);
@@ -551,7 +551,7 @@ fn propose_obstacles(
             *settings = candidate;
             None
         }
-        Err(err) => Some(Notice::info(format!("That rock cannot go there: {err}"))),
+        Err(err) => Some(Notice::info(tr!("boids-rock-cannot-go", reason = err.to_string()))),
     }
 }
 
@@ -594,10 +594,10 @@ fn picked_obstacle(obstacles: &[Obstacle], origin: Vec3, direction: Vec3) -> Opt
 /// when a tall window stacks them (the settings keep `left` and `right`).
 fn tank_name(side: Side, stacked: bool) -> &'static str {
     match (side, stacked) {
-        (Side::Left, false) => "Left tank",
-        (Side::Right, false) => "Right tank",
-        (Side::Left, true) => "Top tank",
-        (Side::Right, true) => "Bottom tank",
+        (Side::Left, false) => ts("boids-tank-left"),
+        (Side::Right, false) => ts("boids-tank-right"),
+        (Side::Left, true) => ts("boids-tank-top"),
+        (Side::Right, true) => ts("boids-tank-bottom"),
     }
 }
 

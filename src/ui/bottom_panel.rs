@@ -6,6 +6,8 @@
 
 use eframe::egui;
 
+use crate::i18n::{fmt, ts};
+
 /// The largest share of the window's height a panel under the tank takes: the
 /// tank and the control panel keep the rest.
 pub const BOTTOM_PANEL_MAX_SHARE: f32 = 0.3;
@@ -72,7 +74,7 @@ pub fn axis_number(value: f64, step: f64) -> String {
             (scaled - scaled.round()).abs() < 1e-6 * scaled.max(1.0)
         })
         .unwrap_or(3) as usize;
-    format!("{value:.decimals$}")
+    fmt(value, decimals)
 }
 
 /// A plot over time a class reads: `height` points tall, numbered value and
@@ -91,7 +93,7 @@ pub fn time_plot<'a>(
         .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
         .x_grid_spacer(readable_marks)
         .custom_x_axes(vec![readable_x_axis(|mark, _| {
-            format!("{:.0} s", mark.value)
+            format!("{} s", fmt(mark.value, 0))
         })])
 }
 
@@ -128,7 +130,7 @@ pub fn show_bottom_panel<R>(
         });
     rects.insert(&format!("panel_{id}"), response.response.rect);
     // The panel's name for a screen reader.
-    let _ = response.response.accessible_name("Plots and readings");
+    let _ = response.response.accessible_name(ts("metrics-bottom-panel.name"));
     response.inner
 }
 

@@ -5,23 +5,37 @@
 /// `Err` holds why it could not be read).
 pub type PendingFile = std::rc::Rc<std::cell::RefCell<Option<Result<String, String>>>>;
 
+use crate::tr;
+
 /// A file that could not be saved or opened; the message says what the user can
 /// do about it. Nothing in Shoal changes when one of these happens.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum FileError {
     /// The browser refused to start the download.
-    #[error("The download did not start: {0}")]
     Download(String),
     /// The desktop app could not write the file.
-    #[error("Could not save {name}: {reason}")]
     Write { name: String, reason: String },
     /// The browser's file dialog did not open.
-    #[error("The file dialog did not open: {0}")]
     Dialog(String),
     /// The chosen file could not be read.
-    #[error("could not read {name}: {reason}")]
     Read { name: String, reason: String },
 }
+
+impl std::fmt::Display for FileError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let text = match self {
+            Self::Download(reason) => tr!("files-download-failed", reason = reason),
+            Self::Write { name, reason } => {
+                tr!("files-write-failed", name = name, reason = reason)
+            }
+            Self::Dialog(reason) => tr!("files-dialog-failed", reason = reason),
+            Self::Read { name, reason } => tr!("files-read-failed", name = name, reason = reason),
+        };
+        f.write_str(&text)
+    }
+}
+
+impl std::error::Error for FileError {}
 
 /// Saves `text` as `name` and returns the message for the user. `what_next` is
 /// added to it on the web (for example "open it with a spreadsheet").
@@ -35,8 +49,8 @@ pub fn save_text_file(
     {
         crate::web::download_text(name, mime, text)
             .map(|()| match what_next {
-                Some(next) => format!("Downloading {name}: {next}."),
-                None => format!("Downloading {name}."),
+                Some(next) => tr!("files-downloading-next", name = name, next = next),
+                None => tr!("files-downloading", name = name),
             })
             .map_err(FileError::Download)
     }
@@ -44,7 +58,7 @@ pub fn save_text_file(
     {
         let _ = (mime, what_next);
         std::fs::write(name, text)
-            .map(|()| format!("Saved {name} in the folder Shoal was started from."))
+            .map(|()| tr!("files-saved", name = name))
             .map_err(|err| FileError::Write {
                 name: name.to_owned(),
                 reason: err.to_string(),

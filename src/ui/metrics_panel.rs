@@ -8,9 +8,11 @@ use egui_plot::{Line, Plot, PlotPoints};
 
 use super::WidgetRects;
 use super::bottom_panel::{plot_height_under_caption, readable_marks, time_plot};
+use crate::i18n::{fmt, ts};
 use crate::lab::Run;
 use crate::metrics_history::MetricsSample;
 use crate::settings::Side;
+use crate::tr;
 
 /// Line colour of each tank (Okabe–Ito orange and sky blue), also used for its
 /// label over the 3D view; its line style is [`super::palette::side_series`]'s.
@@ -32,7 +34,8 @@ fn caption_value(text: &str, side: Side, comparing: bool) -> String {
     }
 }
 
-/// One plotted metric: title, hover help, how to read it from a sample, fixed y range.
+/// One plotted metric: title, hover help (their message ids), how to read it
+/// from a sample, fixed y range.
 struct Metric {
     title: &'static str,
     help: &'static str,
@@ -42,39 +45,32 @@ struct Metric {
 
 const METRICS: [Metric; 5] = [
     Metric {
-        title: "Polarization",
-        help: "How much the fish all swim the same way: the length of the average of their \
-               headings. 1 when every fish swims the same way, near 0 when they point every \
-               which way (or circle).",
+        title: "metrics-polarization",
+        help: "metrics-polarization.help",
         value: |s| f64::from(s.polarization),
         y_range: Some((0.0, 1.0)),
     },
     Metric {
-        title: "Milling",
-        help: "How much each group swims round and round its own centre like a whirlpool \
-               (measured about the centre of each group, not of the tank, and averaged over \
-               all fish; groups of fewer than 5 count 0). 1 for perfect whirlpools, near 0 \
-               for groups swimming straight or fish milling about at random.",
+        title: "metrics-milling",
+        help: "metrics-milling.help",
         value: |s| f64::from(s.milling),
         y_range: Some((0.0, 1.0)),
     },
     Metric {
-        title: "Nearest neighbour (body lengths)",
-        help: "How far, on average, each fish is from its closest neighbour, measured in fish lengths. \
-               Schooling fish keep about one body length.",
+        title: "metrics-nearest",
+        help: "metrics-nearest.help",
         value: |s| f64::from(s.nnd_body_lengths),
         y_range: None,
     },
     Metric {
-        title: "Groups",
-        help: "How many separate groups there are: fish closer than two body lengths belong \
-               together, so a loner is a group of one.",
+        title: "metrics-groups",
+        help: "metrics-groups.help",
         value: |s| f64::from(s.groups),
         y_range: None,
     },
     Metric {
-        title: "Mean speed (m/s)",
-        help: "How fast the fish swim on average, in metres per second.",
+        title: "metrics-speed",
+        help: "metrics-speed.help",
         value: |s| f64::from(s.mean_speed),
         y_range: None,
     },
@@ -83,9 +79,9 @@ const METRICS: [Metric; 5] = [
 /// A tank's line in words, for hover help: "solid" or "dashed".
 fn line_name(side: Side) -> &'static str {
     match super::palette::side_series(side).line {
-        egui_plot::LineStyle::Solid => "solid",
-        egui_plot::LineStyle::Dashed { .. } => "dashed",
-        egui_plot::LineStyle::Dotted { .. } => "dotted",
+        egui_plot::LineStyle::Solid => ts("metrics-line-solid"),
+        egui_plot::LineStyle::Dashed { .. } => ts("metrics-line-dashed"),
+        egui_plot::LineStyle::Dotted { .. } => ts("metrics-line-dotted"),
     }
 }
 
@@ -94,8 +90,20 @@ fn line_name(side: Side) -> &'static str {
 /// the window). 260: plots a class reads from the back of the room.
 pub const METRICS_PANEL_HEIGHT: f32 = 260.0;
 
-/// The urges by their short names, in `Force::ALL` order (the bar chart's axis).
-pub const URGE_NAMES: [&str; 5] = ["contain", "align", "cohere", "separate", "avoid"];
+/// The urges' short names' message ids, in `Force::ALL` order (the bar
+/// chart's axis); [`urge_name`] gives the words.
+pub const URGE_NAMES: [&str; 5] = [
+    "metrics-urge-contain",
+    "metrics-urge-align",
+    "metrics-urge-cohere",
+    "metrics-urge-separate",
+    "metrics-urge-avoid",
+];
+
+/// The short name of urge `k` (in `Force::ALL` order) in the language in force.
+pub fn urge_name(k: usize) -> &'static str {
+    ts(URGE_NAMES[k])
+}
 
 /// Each urge's colour wherever an urge is drawn on its own (the selected
 /// fish's arrows and table), in [`URGE_NAMES`] order: containment grey-blue,
@@ -139,18 +147,18 @@ pub fn metrics_panel_ui(
                             ui,
                             plot_width,
                             caption_height,
-                            metric.title,
-                            metric.help,
+                            ts(metric.title),
+                            ts(metric.help),
                             |ui| {
                                 // Right to left: the last tank first.
                                 for ((run, sample), label) in
                                     runs.iter().zip(&latest).zip(labels).rev()
                                 {
                                     let value = (metric.value)(sample);
-                                    let text = if metric.title == "Groups" {
-                                        format!("{value:.0}")
+                                    let text = if metric.title == "metrics-groups" {
+                                        fmt(value, 0)
                                     } else {
-                                        format!("{value:.2}")
+                                        fmt(value, 2)
                                     };
                                     ui.label(
                                         egui::RichText::new(caption_value(
@@ -162,9 +170,10 @@ pub fn metrics_panel_ui(
                                         .strong()
                                         .color(side_color(run.side())),
                                     )
-                                    .on_hover_text(format!(
-                                        "{label} ({} line)",
-                                        line_name(run.side())
+                                    .on_hover_text(tr!(
+                                        "metrics-tank-line",
+                                        label = label,
+                                        line = line_name(run.side())
                                     ));
                                 }
                             },
@@ -248,17 +257,12 @@ fn urges_plot_ui(
     plot_height: f32,
     rects: &mut WidgetRects,
 ) {
-    let help = "How often each urge was used over the last second: containment, alignment, \
-                cohesion, separation, avoidance. In Blended mode every urge acts in every \
-                move (100 % each, mixed by its weight); in the one-urge modes the shares \
-                follow the weights. With two tanks, the upper bar of each pair is the left \
-                (or top) tank's, the lower the other's.";
     caption_ui(
         ui,
         ui.available_width(),
         caption_height,
-        "Urges used (% of moves)",
-        help,
+        ts("metrics-urges"),
+        ts("metrics-urges.help"),
         |_| {},
     );
     let bar_width = 0.8 / runs.len().max(1) as f64;
@@ -279,7 +283,7 @@ fn urges_plot_ui(
         .y_axis_min_width(56.0)
         .x_grid_spacer(readable_marks)
         .custom_x_axes(vec![super::bottom_panel::readable_x_axis(|mark, _| {
-            format!("{:.0} %", mark.value)
+            tr!("metrics-percent", value = fmt(mark.value, 0))
         })])
         .y_grid_spacer(|_| {
             (0..URGE_NAMES.len())
@@ -292,7 +296,7 @@ fn urges_plot_ui(
         .y_axis_formatter(move |mark, _| {
             let k = mark.value.round();
             if (0.0..URGE_NAMES.len() as f64).contains(&k) {
-                URGE_NAMES[URGE_NAMES.len() - 1 - k as usize].to_owned()
+                urge_name(URGE_NAMES.len() - 1 - k as usize).to_owned()
             } else {
                 String::new()
             }
@@ -308,7 +312,7 @@ fn urges_plot_ui(
                     .map(|(i, share)| {
                         egui_plot::Bar::new(row(i) + offset, *share * 100.0)
                             .width(bar_width * 0.9)
-                            .name(URGE_NAMES[i])
+                            .name(urge_name(i))
                     })
                     .collect();
                 plot_ui.bar_chart(

@@ -12,12 +12,14 @@ use super::bottom_panel::{plot_height_under_caption, show_bottom_panel};
 use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
 use super::setting_slider::{setting_row, setting_row_with};
 use super::studio_panel::{control, control_block, is_hidden};
+use crate::i18n::{Lang, ts, with_lang};
 use crate::lab::{BODY_TRACE_SECS, Lab, Run};
 use crate::settings::Settings;
 use crate::settings::physics::PhysicsSettings;
 use crate::sim::PhysicsBehaviour;
 use crate::sim::body::body_layout::muscle_index;
 use crate::sim::body::{MuscleSegment, Side};
+use crate::tr;
 
 /// The physics scene's section of the control panel. Returns the turn, degrees,
 /// the teacher asked the selected fish to make.
@@ -28,7 +30,7 @@ fn physics_controls_ui(
 ) -> Option<f32> {
     let mut turn = None;
     ui.separator();
-    ui.label(egui::RichText::new("Physical fish").strong());
+    ui.label(egui::RichText::new(ts("physics-title")).strong());
     egui::Grid::new("physics_grid")
         .num_columns(2)
         .spacing([8.0, 6.0])
@@ -46,22 +48,21 @@ fn physics_controls_ui(
         });
 
     if !is_hidden(ui, "physics.behaviour") {
-        ui.label("The fish…");
+        ui.label(ts("physics-behaviour"));
     }
     control_block(
         ui,
         rects,
         "physics.behaviour",
-        "how they swim",
+        ts("physics-behaviour.block"),
         |ui, rects| {
             for behaviour in PhysicsBehaviour::ALL {
                 let radio = ui
                     .radio_value(&mut physics.behaviour, behaviour, behaviour.label())
                     .on_hover_text(behaviour.explanation());
-                rects.insert(
-                    &format!("physics_{}", behaviour.label().to_lowercase()),
-                    radio.rect,
-                );
+                // The widget's name stays English whatever the screen shows.
+                let name = with_lang(Lang::En, || behaviour.label().to_lowercase());
+                rects.insert(&format!("physics_{name}"), radio.rect);
             }
             ui.label(egui::RichText::new(physics.behaviour.explanation()).weak());
         },
@@ -70,21 +71,14 @@ fn physics_controls_ui(
     ui.add_space(4.0);
     control(ui, rects, "physics.show_body", |ui, rects| {
         let body = ui
-            .checkbox(&mut physics.show_body, "Show masses and springs")
-            .on_hover_text(
-                "Draw each fish's skeleton: white dots are the 23 masses, lines the springs. \
-                 The 12 muscles glow red when they pull and pale blue when they rest",
-            );
+            .checkbox(&mut physics.show_body, ts("physics-show-body"))
+            .on_hover_text(ts("physics-show-body.help"));
         rects.insert("show_body", body.rect);
     });
     control(ui, rects, "physics.show_forces", |ui, rects| {
         let forces = ui
-            .checkbox(&mut physics.show_forces, "Show forces")
-            .on_hover_text(
-                "Yellow: the water pushing on the body (the push on the beating tail drives \
-                 the fish forward). Green: where the fish wants to go. White: where it goes. \
-                 Blue: the current",
-            );
+            .checkbox(&mut physics.show_forces, ts("physics-show-forces"))
+            .on_hover_text(ts("physics-show-forces.help"));
         rects.insert("show_forces", forces.rect);
     });
     ui.add_space(4.0);
@@ -93,31 +87,22 @@ fn physics_controls_ui(
     ui.separator();
     match physics.selected {
         None => {
-            ui.label(egui::RichText::new("Selected fish").strong());
-            ui.label(
-                egui::RichText::new(
-                    "Click a fish in the tank to select it: then you can steer it by hand, \
-                     follow it with the camera and watch its muscles.",
-                )
-                .weak(),
-            );
+            ui.label(egui::RichText::new(ts("physics-selected-fish")).strong());
+            ui.label(egui::RichText::new(ts("physics-selected-fish.help")).weak());
         }
         Some(index) => {
             ui.horizontal(|ui| {
                 ui.label(
-                    egui::RichText::new(format!(
-                        "Selected: {} {index}",
-                        if index < physics.fish_count {
-                            "fish"
-                        } else {
-                            "shark"
-                        }
-                    ))
+                    egui::RichText::new(if index < physics.fish_count {
+                        tr!("physics-selected-a-fish", index = index)
+                    } else {
+                        tr!("physics-selected-a-shark", index = index)
+                    })
                     .strong(),
                 );
                 let clear = ui
-                    .small_button("Deselect")
-                    .on_hover_text("Let go of this fish");
+                    .small_button(ts("physics-deselect"))
+                    .on_hover_text(ts("physics-deselect.help"));
                 rects.insert("deselect", clear.rect);
                 if clear.clicked() {
                     physics.selected = None;
@@ -141,17 +126,14 @@ fn selected_fish_ui(
 ) {
     control(ui, rects, "physics.follow", |ui, rects| {
         let follow = ui
-            .checkbox(&mut physics.follow, "Camera follows it")
-            .on_hover_text("Keep this fish in the middle of the view as it swims");
+            .checkbox(&mut physics.follow, ts("physics-follow"))
+            .on_hover_text(ts("physics-follow.help"));
         rects.insert("follow", follow.rect);
     });
     control(ui, rects, "physics.hand_control", |ui, rects| {
         let hand = ui
-            .checkbox(&mut physics.hand_control, "Steer it by hand")
-            .on_hover_text(
-                "You give the orders: how fast its tail beats and when it turns. \
-                 The other fish keep steering themselves",
-            );
+            .checkbox(&mut physics.hand_control, ts("physics-hand"))
+            .on_hover_text(ts("physics-hand.help"));
         rects.insert("hand_control", hand.rect);
     });
     ui.add_enabled_ui(physics.hand_control, |ui| {
@@ -171,11 +153,12 @@ fn selected_fish_ui(
                     |ui, rects, physics| {
                         let left = physics.turn_angle_deg >= 0.0;
                         let turn = ui
-                            .button(if left { "Turn left" } else { "Turn right" })
-                            .on_hover_text(
-                                "Contract the muscles on one side quickly, then let them \
-                                 go slowly: the fish bends and swims round",
-                            );
+                            .button(if left {
+                                ts("physics-turn-left")
+                            } else {
+                                ts("physics-turn-right")
+                            })
+                            .on_hover_text(ts("physics-turn-help"));
                         rects.insert("turn", turn.rect);
                         if turn.clicked() {
                             *turn_asked = Some(physics.turn_angle_deg);
@@ -201,8 +184,8 @@ fn muscle_side_style(side: Side) -> (egui::Color32, egui_plot::LineStyle) {
 /// "left" or "right".
 fn side_word(side: Side) -> &'static str {
     match side {
-        Side::Left => "left",
-        Side::Right => "right",
+        Side::Left => ts("physics-side-left"),
+        Side::Right => ts("physics-side-right"),
     }
 }
 
@@ -225,10 +208,7 @@ pub fn body_plots_ui(
     let Some(index) = selected else {
         ui.vertical_centered(|ui| {
             ui.label(
-                egui::RichText::new(
-                    "Click a fish to see its twelve muscles at work and how fast it swims.",
-                )
-                .weak(),
+                egui::RichText::new(ts("physics-plots-hint")).weak(),
             );
         });
         return;
@@ -237,12 +217,9 @@ pub fn body_plots_ui(
     let now = trace.back().map_or(0.0, |s| s.time_secs);
     let start = now - BODY_TRACE_SECS;
     let segments = [
-        (MuscleSegment::Anterior, "Front muscles (turning)"),
-        (
-            MuscleSegment::Middle,
-            "Middle muscles (turning and swimming)",
-        ),
-        (MuscleSegment::Posterior, "Tail muscles (swimming)"),
+        (MuscleSegment::Anterior, ts("physics-muscles-front")),
+        (MuscleSegment::Middle, ts("physics-muscles-middle")),
+        (MuscleSegment::Posterior, ts("physics-muscles-tail")),
     ];
     let spacing = ui.spacing().item_spacing;
     let width = (ui.available_width() - 3.0 * spacing.x) / 4.0;
@@ -272,21 +249,17 @@ pub fn body_plots_ui(
                     }
                 })
                 .response
-                .on_hover_text(
-                    "How hard each muscle of this part pulls, from 0 (resting) to 1 (fully \
-                     contracted), over the last seconds. Solid vermillion lines: the fish's \
-                     left side; dashed blue lines: its right side (two muscles each, the top \
-                     one thicker than the bottom one). Left and right take turns: that is the \
-                     tail beat",
-                );
+                .on_hover_text(ts("physics-muscles.help"));
                 let plot = time_plot(("muscles", index, k), plot_height)
                     .include_y(0.0)
                     .include_y(1.0)
                     .include_x(start)
                     .include_x(now)
                     .show(ui, |plot| {
-                        for (side, side_name) in [(Side::Left, "left"), (Side::Right, "right")] {
-                            for (offset, part) in [(0, "top"), (1, "bottom")] {
+                        for side in [Side::Left, Side::Right] {
+                            for (offset, part) in
+                                [(0, "physics-muscle-top"), (1, "physics-muscle-bottom")]
+                            {
                                 let m = muscle_index(segment, side) + offset;
                                 let points: PlotPoints = trace
                                     .iter()
@@ -294,7 +267,7 @@ pub fn body_plots_ui(
                                     .collect();
                                 let (color, line) = muscle_side_style(side);
                                 plot.line(
-                                    Line::new(format!("{side_name} {part}"), points)
+                                    Line::new(tr!(part, side = side_word(side)), points)
                                         .color(color)
                                         .style(line)
                                         .width(if offset == 0 { 2.0 } else { 1.2 }),
@@ -309,8 +282,8 @@ pub fn body_plots_ui(
             ui.set_width(width);
             ui.horizontal(|ui| {
                 ui.set_height(caption_height);
-                ui.label(egui::RichText::new("Speed (m/s)").small())
-                    .on_hover_text("How fast the fish's middle moves, in metres per second");
+                ui.label(egui::RichText::new(ts("physics-speed")).small())
+                    .on_hover_text(ts("physics-speed.help"));
             });
             let plot = time_plot(("speed", index), plot_height)
                 .include_y(0.0)
@@ -321,7 +294,7 @@ pub fn body_plots_ui(
                         .iter()
                         .map(|s| [s.time_secs, f64::from(s.speed_m_per_s)])
                         .collect();
-                    plot.line(Line::new("speed", points).color(egui::Color32::WHITE));
+                    plot.line(Line::new(ts("physics-speed-line"), points).color(egui::Color32::WHITE));
                 });
             rects.insert("speed_plot", plot.response.rect);
         });

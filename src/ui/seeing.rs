@@ -13,6 +13,7 @@ use eframe::egui;
 use serde::Serialize;
 
 use super::WidgetRects;
+use crate::i18n::ts;
 
 /// The view options for people who see differently (`state().seeing`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
@@ -79,19 +80,29 @@ pub fn initial(
     (seeing, seeing.reduce_motion)
 }
 
-/// What the notice says when a page starts paused for reduced motion.
-pub const STARTED_PAUSED: &str = "Reduced motion is on (this computer asks for it, or the \
-     link does): the fish wait, paused, until you press Play (or Space). View → Reduce \
-     motion turns it off.";
+/// What the notice says when a page starts paused for reduced motion: its
+/// words, in the language in force, are what it turns `Into` (a `String`).
+pub const STARTED_PAUSED: StartedPaused = StartedPaused;
+
+/// The notice of a page that starts paused for reduced motion (see
+/// [`STARTED_PAUSED`]).
+#[derive(Clone, Copy, Debug)]
+pub struct StartedPaused;
+
+impl From<StartedPaused> for String {
+    fn from(_: StartedPaused) -> String {
+        ts("seeing-started-paused").to_owned()
+    }
+}
 
 /// Hover help of the two toggles.
-pub const HIGH_CONTRAST_HELP: &str = "White text on black, strong borders round every \
-     control and a thick yellow ring round the one the keyboard is on: easier to read on a \
-     washed-out projector or for weak eyes";
-pub const REDUCE_MOTION_HELP: &str = "Calmer pictures for anyone whom movement on screen \
-     bothers: the light on the sand stops shimmering, a camera following a fish moves only \
-     when the fish nears the edge, and panels open without sliding. The fish still swim: \
-     Pause (Space) stops them";
+pub fn high_contrast_help() -> &'static str {
+    ts("seeing-high-contrast.help")
+}
+
+pub fn reduce_motion_help() -> &'static str {
+    ts("seeing-reduce-motion.help")
+}
 
 /// The two toggles, in the View section of the side panel.
 pub fn seeing_ui(ui: &mut egui::Ui, rects: &mut WidgetRects) {
@@ -99,12 +110,12 @@ pub fn seeing_ui(ui: &mut egui::Ui, rects: &mut WidgetRects) {
     let before = seeing;
     ui.horizontal_wrapped(|ui| {
         let r = ui
-            .checkbox(&mut seeing.high_contrast, "High contrast")
-            .on_hover_text(HIGH_CONTRAST_HELP);
+            .checkbox(&mut seeing.high_contrast, ts("seeing-high-contrast"))
+            .on_hover_text(high_contrast_help());
         rects.insert("high_contrast", r.rect);
         let r = ui
-            .checkbox(&mut seeing.reduce_motion, "Reduce motion")
-            .on_hover_text(REDUCE_MOTION_HELP);
+            .checkbox(&mut seeing.reduce_motion, ts("seeing-reduce-motion"))
+            .on_hover_text(reduce_motion_help());
         rects.insert("reduce_motion", r.rect);
     });
     if seeing != before {
@@ -194,7 +205,8 @@ mod tests {
         output.textures_delta.clear();
         assert!(rects.get("high_contrast").is_some());
         assert!(rects.get("reduce_motion").is_some());
-        assert!(HIGH_CONTRAST_HELP.len() > 40 && REDUCE_MOTION_HELP.len() > 40);
+        assert!(high_contrast_help().len() > 40 && reduce_motion_help().len() > 40);
+        assert!(String::from(STARTED_PAUSED).starts_with("Reduced motion is on"));
     }
 
     #[test]

@@ -1,0 +1,179 @@
+# The schooling lab and the aquarium: the boids panel (src/ui/boids_panel.rs).
+
+boids-tool-look = Look
+    .help = Drag to turn the tank, scroll to zoom.
+boids-tool-add-rock = Add rock
+    .help = Click on the sand to put a rock there.
+boids-tool-move-rock = Move rock
+    .help = Drag a rock or pillar to a new place.
+boids-tool-remove = Remove
+    .help = Click a rock, pillar or ledge to take it out.
+boids-compare = Compare two tanks
+    .help = Show two tanks side by side with the same fish at the same start. Give them different urges and see how differently they behave.
+boids-show-vision = Show vision
+    .help = Draw what each fish can see: its field of view and lines to the neighbours it notices
+boids-edit = Edit:
+    .help = Choose which tank the controls below change
+boids-rocks = Rocks
+    .help = Change the rocks in the tank with the mouse
+boids-rock-tools = rock tools
+boids-restore-rocks = Restore the seed's rocks
+    .help = Undo all rock changes in this tank
+boids-preset-mystery = ? (mystery)
+boids-rock-add-middle = Add a rock in the middle
+    .help = Without a mouse: a new rock on the sand in the middle of the tank
+boids-rock-no-room = There is no free place for another rock.
+boids-no-rocks = No rocks in this tank.
+boids-rock-previous = Previous rock
+boids-rock-next = Next rock
+boids-rock-where = Rock { $number } of { $count }: { $left } m from the left, { $front } m from the front
+boids-rock-left = Left
+    .name = Move the rock left
+boids-rock-right = Right
+    .name = Move the rock right
+boids-rock-back = Back
+    .name = Move the rock back
+boids-rock-front = Front
+    .name = Move the rock front
+boids-rock-move-help = Move this rock { $step } m
+boids-rock-remove-this = Remove this rock
+boids-rock-cannot-go = That rock cannot go there: { $reason }
+boids-tank-left = Left tank
+boids-tank-right = Right tank
+boids-tank-top = Top tank
+boids-tank-bottom = Bottom tank
+
+# The metrics plots under the tank (src/ui/metrics_panel.rs).
+
+metrics-polarization = Polarization
+    .help = How much the fish all swim the same way: the length of the average of their headings. 1 when every fish swims the same way, near 0 when they point every which way (or circle).
+metrics-milling = Milling
+    .help = How much each group swims round and round its own centre like a whirlpool (measured about the centre of each group, not of the tank, and averaged over all fish; groups of fewer than 5 count 0). 1 for perfect whirlpools, near 0 for groups swimming straight or fish milling about at random.
+metrics-nearest = Nearest neighbour (body lengths)
+    .help = How far, on average, each fish is from its closest neighbour, measured in fish lengths. Schooling fish keep about one body length.
+metrics-groups = Groups
+    .help = How many separate groups there are: fish closer than two body lengths belong together, so a loner is a group of one.
+metrics-speed = Mean speed (m/s)
+    .help = How fast the fish swim on average, in metres per second.
+metrics-line-solid = solid
+metrics-line-dashed = dashed
+metrics-line-dotted = dotted
+metrics-tank-line = { $label } ({ $line } line)
+metrics-urge-contain = contain
+metrics-urge-align = align
+metrics-urge-cohere = cohere
+metrics-urge-separate = separate
+metrics-urge-avoid = avoid
+metrics-urges = Urges used (% of moves)
+    .help = How often each urge was used over the last second: containment, alignment, cohesion, separation, avoidance. In Blended mode every urge acts in every move (100 % each, mixed by its weight); in the one-urge modes the shares follow the weights. With two tanks, the upper bar of each pair is the left (or top) tank's, the lower the other's.
+metrics-percent = { $value } %
+
+# What the selected fish pays attention to (src/ui/boids_attention.rs).
+
+boids-urge-containment = Containment
+    .help = containment (stay in the tank)
+boids-urge-alignment = Alignment
+    .help = alignment (swim like the neighbours)
+boids-urge-cohesion = Cohesion
+    .help = cohesion (move to the neighbours' centre)
+boids-urge-separation = Separation
+    .help = separation (keep space)
+boids-urge-avoidance = Avoidance
+    .help = avoidance (swerve round obstacles)
+boids-result-arrow = result
+boids-rule-none = none
+boids-rule-blended = Blended: every urge with a weight pulls at once, each by its weight's share (the arrows add up to the result).
+boids-rule-classic = Classic: only the most pressing urge acts (its weight × how much it is needed now). This step: { $chosen }.
+boids-rule-direct-alternate = Direct alternate: one dice roll, and every urge whose weight beats it acts at full strength. This step: { $chosen }.
+boids-rule-monte-carlo = Monte Carlo: one urge is drawn by lottery; bigger weights hold more tickets. This step: { $chosen }.
+boids-leader-alone = No fish leads: fish { $fish } sees no other fish right now, so only the tank, the rocks and its own wandering steer it.
+boids-leader-neighbours = { $count ->
+    [one] No fish leads: fish { $fish } reacts only to the { $count } neighbour it sees, and each of them to its own neighbours. The school's shape comes from all these small reactions together.
+   *[other] No fish leads: fish { $fish } reacts only to the { $count } neighbours it sees, and each of them to its own neighbours. The school's shape comes from all these small reactions together.
+}
+boids-attention-title = What fish { $fish } pays attention to
+boids-attention-title-tank = What fish { $fish } pays attention to ({ $tank })
+boids-let-go = Let go
+    .help = Stop showing this fish (or click open water)
+boids-attention-not-yet = Press Play or Step: the fish has not swum since the settings changed, so there is nothing to show yet.
+boids-attention-key = Arrows from the fish (ringed yellow): each urge, longer when stronger; solid when used this step, dashed when not; white is the result. White rings: the neighbours it heeds.
+boids-urge = Urge
+boids-strength = Strength
+    .help = How hard the urge pulls, as the control mode weighs it: the acceleration it asks for, in metres per second per second
+boids-used = Used?
+boids-used-yes = yes
+boids-used-always = always
+boids-mystery = ?
+    .help = A mystery value: your teacher hid it
+boids-wander = Wander
+    .help = Its own roaming: acts on top of every control mode
+boids-fleeing = Fleeing a shark
+boids-result = Result
+    .help = The steering the fish got this step (white arrow)
+boids-speed-after = Speed
+    .help = Its speed after the step
+boids-heeds-none = It heeds no neighbour: it sees no other fish.
+boids-heeds = { $count ->
+    [one] It heeds { $count } neighbour (ringed): fish { $fish }.
+   *[other] It heeds { $count } neighbours (ringed): fish { $fish }.
+}
+boids-far-school = It also sees a distant group of fish and is drawn a little towards it.
+boids-leader = Is there a leader?
+
+# The physical fish's controls and plots (src/ui/physics_panel.rs).
+
+physics-title = Physical fish
+physics-behaviour = The fish…
+    .block = how they swim
+physics-show-body = Show masses and springs
+    .help = Draw each fish's skeleton: white dots are the 23 masses, lines the springs. The 12 muscles glow red when they pull and pale blue when they rest
+physics-show-forces = Show forces
+    .help = Yellow: the water pushing on the body (the push on the beating tail drives the fish forward). Green: where the fish wants to go. White: where it goes. Blue: the current
+physics-selected-fish = Selected fish
+    .help = Click a fish in the tank to select it: then you can steer it by hand, follow it with the camera and watch its muscles.
+physics-selected-a-fish = Selected: fish { $index }
+physics-selected-a-shark = Selected: shark { $index }
+physics-deselect = Deselect
+    .help = Let go of this fish
+physics-follow = Camera follows it
+    .help = Keep this fish in the middle of the view as it swims
+physics-hand = Steer it by hand
+    .help = You give the orders: how fast its tail beats and when it turns. The other fish keep steering themselves
+physics-turn-left = Turn left
+physics-turn-right = Turn right
+physics-turn-help = Contract the muscles on one side quickly, then let them go slowly: the fish bends and swims round
+physics-side-left = left
+physics-side-right = right
+physics-plots-hint = Click a fish to see its twelve muscles at work and how fast it swims.
+physics-muscles-front = Front muscles (turning)
+physics-muscles-middle = Middle muscles (turning and swimming)
+physics-muscles-tail = Tail muscles (swimming)
+physics-muscles = Muscles
+    .help = How hard each muscle of this part pulls, from 0 (resting) to 1 (fully contracted), over the last seconds. Solid vermillion lines: the fish's left side; dashed blue lines: its right side (two muscles each, the top one thicker than the bottom one). Left and right take turns: that is the tail beat
+physics-muscle-top = { $side } top
+physics-muscle-bottom = { $side } bottom
+physics-speed = Speed (m/s)
+    .help = How fast the fish's middle moves, in metres per second
+physics-speed-line = speed
+
+# The panels under the tank (src/ui/bottom_panel.rs).
+
+metrics-bottom-panel =
+    .name = Plots and readings
+
+# The status line under the tank (src/ui/status_line.rs).
+
+status-fps = { $fps } FPS
+    .help = Pictures drawn per second
+status-steps = { $steps } steps/s
+    .help = Simulation steps computed per second of real time
+status-tank-pixels = , tank at { $percent } % of the pixels
+status-graphics =
+    .help = The graphics system your browser gave Shoal: WebGPU is the newest, WebGL2 works everywhere else. "tank at N % of the pixels": the graphics cannot keep up, so the tank is drawn with fewer pixels to stay smooth (View › Tank detail)
+status-time = t = { $seconds } s
+    .help = Simulated time since the start
+status-fish-mystery = ? fish
+    .help = Your teacher hid the number of fish: count them, or work it out from what they do
+status-paused = paused
+status-slowed = slowed down
+    .help = This computer cannot keep up with the chosen speed, so the simulation runs slower than asked (nothing is skipped: the fish just move in slow motion). Try fewer fish or a lower speed.
