@@ -291,7 +291,10 @@ impl super::ShoalApp {
                     if class.selected(settings, side).is_some() {
                         self.describe_selection = true;
                     } else {
-                        self.say(crate::tr!("keys-cannot-pick", scene = class.facts().label()));
+                        self.say(crate::tr!(
+                            "keys-cannot-pick",
+                            scene = class.facts().label()
+                        ));
                     }
                 }
                 KeyAction::Describe => panel_actions.push(PanelAction::Describe),

@@ -103,7 +103,7 @@ pub fn learning_csv(learning: &LearningLab, out: &mut String) {
         drill + 1,
         drills.len(),
         if learning.current_drill().is_none() {
-            " (all learned)"
+            " (all learned)" // words: in a CSV comment line, English like the whole file
         } else {
             ""
         }

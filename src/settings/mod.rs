@@ -432,7 +432,7 @@ fn type_hint(err: &serde_json::Error) -> String {
         Some(at) => text[at + 2..].to_owned(),
         None => text,
     }
-    .split(" at line")
+    .split(" at line") // words: cut from serde's message, not shown
     .next()
     .unwrap_or_default()
     .to_owned()

@@ -145,13 +145,7 @@ pub fn draw_attention(view: &ViewContext, world: &World, selected: u32, attentio
                 4.0,
             ));
         }
-        label(
-            painter,
-            tip + dir * 10.0,
-            urge_name(k),
-            font.clone(),
-            color,
-        );
+        label(painter, tip + dir * 10.0, urge_name(k), font.clone(), color);
     }
     let result = attention.steering_m_per_s2;
     if let Some(dir) = screen_dir(result) {
@@ -242,8 +236,8 @@ pub fn attention_section_ui(
     };
     ui.label(
         egui::RichText::new(ts("boids-attention-key"))
-        .small()
-        .weak(),
+            .small()
+            .weak(),
     );
     let table = egui::Grid::new(("attention_table", side.name()))
         .num_columns(3)
@@ -263,12 +257,15 @@ pub fn attention_section_ui(
                 // A mystery weight's strength would give it away.
                 let key = format!("{}.{}", side.name(), URGE_KEYS[k]);
                 if super::studio_panel::is_mystery(ui, &key) {
-                    ui.label("?")
-                        .on_hover_text(ts("boids-mystery.help"));
+                    ui.label("?").on_hover_text(ts("boids-mystery.help"));
                 } else {
                     ui.label(acceleration(a.urges_m_per_s2[k].length()));
                 }
-                ui.label(if a.applied[k] { ts("boids-used-yes") } else { "–" });
+                ui.label(if a.applied[k] {
+                    ts("boids-used-yes")
+                } else {
+                    "–"
+                });
                 ui.end_row();
             }
             ui.label(ts("boids-wander"))
@@ -288,8 +285,11 @@ pub fn attention_section_ui(
             ui.label(egui::RichText::new(ts("boids-result")).strong())
                 .on_hover_text(ts("boids-result.help"));
             ui.label(acceleration(a.steering_m_per_s2.length()));
-            ui.label(format!("{} m/s", fmt(f64::from(a.velocity_m_per_s.length()), 2)))
-                .on_hover_text(ts("boids-speed-after.help"));
+            ui.label(format!(
+                "{} m/s",
+                fmt(f64::from(a.velocity_m_per_s.length()), 2)
+            ))
+            .on_hover_text(ts("boids-speed-after.help"));
             ui.end_row();
         });
     rects.insert(

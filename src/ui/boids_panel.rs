@@ -542,7 +542,10 @@ fn propose_obstacles(
     tank: &crate::sim::Tank,
 ) -> Option<Notice> {
     if let Err((_, reason)) = crate::sim::boids::placement::check_obstacles(&obstacles, tank) {
-        return Some(Notice::info(tr!("boids-rock-cannot-go", reason = reason.to_string())));
+        return Some(Notice::info(tr!(
+            "boids-rock-cannot-go",
+            reason = reason.to_string()
+        )));
     }
     let mut candidate = settings.clone();
     candidate.tank_mut(side).obstacles = Some(obstacles);
@@ -551,7 +554,10 @@ fn propose_obstacles(
             *settings = candidate;
             None
         }
-        Err(err) => Some(Notice::info(tr!("boids-rock-cannot-go", reason = err.to_string()))),
+        Err(err) => Some(Notice::info(tr!(
+            "boids-rock-cannot-go",
+            reason = err.to_string()
+        ))),
     }
 }
 

@@ -130,7 +130,9 @@ pub fn show_bottom_panel<R>(
         });
     rects.insert(&format!("panel_{id}"), response.response.rect);
     // The panel's name for a screen reader.
-    let _ = response.response.accessible_name(ts("metrics-bottom-panel.name"));
+    let _ = response
+        .response
+        .accessible_name(ts("metrics-bottom-panel.name"));
     response.inner
 }
 

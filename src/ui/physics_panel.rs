@@ -207,9 +207,7 @@ pub fn body_plots_ui(
 ) {
     let Some(index) = selected else {
         ui.vertical_centered(|ui| {
-            ui.label(
-                egui::RichText::new(ts("physics-plots-hint")).weak(),
-            );
+            ui.label(egui::RichText::new(ts("physics-plots-hint")).weak());
         });
         return;
     };
@@ -294,7 +292,9 @@ pub fn body_plots_ui(
                         .iter()
                         .map(|s| [s.time_secs, f64::from(s.speed_m_per_s)])
                         .collect();
-                    plot.line(Line::new(ts("physics-speed-line"), points).color(egui::Color32::WHITE));
+                    plot.line(
+                        Line::new(ts("physics-speed-line"), points).color(egui::Color32::WHITE),
+                    );
                 });
             rects.insert("speed_plot", plot.response.rect);
         });

@@ -21,11 +21,8 @@ pub fn status_line_ui(
         ui.label(tr!("status-fps", fps = num(state.fps, 0)))
             .on_hover_text(ts("status-fps.help"));
         ui.separator();
-        ui.label(tr!(
-            "status-steps",
-            steps = num(state.steps_per_sec, 0)
-        ))
-        .on_hover_text(ts("status-steps.help"));
+        ui.label(tr!("status-steps", steps = num(state.steps_per_sec, 0)))
+            .on_hover_text(ts("status-steps.help"));
         ui.separator();
         let aa = if caps.msaa_samples > 1 {
             format!(", {}× MSAA", caps.msaa_samples)
