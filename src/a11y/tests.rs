@@ -356,12 +356,23 @@ fn every_word_of_every_side_panel_changes_with_the_language() {
             .filter(|w| w.chars().count() >= 2)
             .count()
     };
+    // While some files' words are not yet in the catalogue (`NOT_YET`, whose
+    // words the lint does not read yet), only the catalogue's words are held
+    // to this; once it is empty, every word on the panels is.
+    let catalogued: BTreeSet<&String> = en.values().collect();
+    let whole = crate::i18n::tests::NOT_YET.is_empty();
     // A language's name in itself, the same whichever language is shown.
     let own_names: Vec<&str> = Lang::ALL.iter().map(|l| l.native_name()).collect();
+    // A scene whose own panel is still in `NOT_YET` waits for it.
+    let waiting = |scene: &Scene| {
+        crate::i18n::tests::NOT_YET.contains(&format!("ui/{}_panel.rs", scene.name()).as_str())
+    };
     let untranslated: BTreeSet<String> = side_panel_words(Lang::Es)
         .into_iter()
+        .filter(|(scene, _)| !waiting(scene))
         .filter(|(_, w)| {
             english.contains(w)
+                && (whole || catalogued.contains(w))
                 && words(w) > 0
                 && !alike.contains(w)
                 && !own_names.contains(&w.as_str())
