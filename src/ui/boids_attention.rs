@@ -123,8 +123,7 @@ pub fn draw_attention(view: &ViewContext, world: &World, selected: u32, attentio
         (d.length() > 0.5).then(|| d.normalized())
     };
     let font = egui::FontId::proportional(13.0);
-    for k in 0..5 {
-        let v = attention.urges_m_per_s2[k];
+    for (k, &v) in attention.urges_m_per_s2.iter().enumerate() {
         let strength = v.length();
         if strength <= 0.0 {
             continue;
