@@ -93,7 +93,8 @@ pub fn time_plot<'a>(
         .y_axis_formatter(|mark, _| axis_number(mark.value, mark.step_size))
         .x_grid_spacer(readable_marks)
         .custom_x_axes(vec![readable_x_axis(|mark, _| {
-            format!("{} s", fmt(mark.value, 0))
+            // As many decimals as the marks' spacing needs (0.5 s early in a run).
+            format!("{} s", axis_number(mark.value, mark.step_size))
         })])
 }
 
