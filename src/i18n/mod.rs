@@ -356,6 +356,39 @@ pub fn format_number(
     out
 }
 
+/// Whether the language in force writes its decimal point as a comma (egui's
+/// sliders and fields then show and read numbers its way, see
+/// [`localize_decimal`] and [`parse_decimal`]).
+pub fn decimal_comma() -> bool {
+    lang().decimal_separator() == ','
+}
+
+/// A number as egui writes it (`1.25`), written the way of the language in
+/// force (`1,25`).
+pub fn localize_decimal(text: &str) -> String {
+    text.chars()
+        .map(|c| match c {
+            '.' => lang().decimal_separator(),
+            c => c,
+        })
+        .collect()
+}
+
+/// A number typed in either way (`1,25` or `1.25`, `−2`), as a value.
+pub fn parse_decimal(text: &str) -> Option<f64> {
+    let cleaned: String = text
+        .trim()
+        .chars()
+        .filter_map(|c| match c {
+            ',' => Some('.'),
+            '−' => Some('-'),
+            c if c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E') => Some(c),
+            _ => None,
+        })
+        .collect();
+    cleaned.parse().ok()
+}
+
 fn format_value(lang: Lang, value: &FluentValue) -> Option<String> {
     match value {
         FluentValue::Number(n) => Some(format_number(

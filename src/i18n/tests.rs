@@ -423,6 +423,19 @@ fn numbers_are_written_the_language_s_way() {
 }
 
 #[test]
+fn sliders_write_and_read_numbers_the_language_s_way() {
+    with_lang(Lang::Es, || {
+        assert!(decimal_comma());
+        assert_eq!(localize_decimal("1.25"), "1,25");
+    });
+    with_lang(Lang::En, || assert!(!decimal_comma()));
+    assert_eq!(parse_decimal("1,25"), Some(1.25));
+    assert_eq!(parse_decimal("1.25 m"), Some(1.25));
+    assert_eq!(parse_decimal("−2"), Some(-2.0));
+    assert_eq!(parse_decimal("abc"), None);
+}
+
+#[test]
 fn languages_are_known_by_their_codes() {
     assert_eq!(Lang::from_code("es"), Some(Lang::Es));
     assert_eq!(Lang::from_code("es-MX"), Some(Lang::Es));

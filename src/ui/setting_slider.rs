@@ -132,6 +132,11 @@ fn control<S, T>(
             if !unit.is_empty() {
                 slider = slider.suffix(unit);
             }
+            if crate::i18n::decimal_comma() {
+                slider = slider
+                    .custom_formatter(localized_number)
+                    .custom_parser(crate::i18n::parse_decimal);
+            }
             // Named by the row's label (a screen reader reads the hover
             // help after it).
             let r = ui.add(slider).on_hover_text(help).accessible_name(label);
@@ -143,6 +148,11 @@ fn control<S, T>(
                 .speed(drag_speed);
             if !unit.is_empty() {
                 field = field.suffix(unit);
+            }
+            if crate::i18n::decimal_comma() {
+                field = field
+                    .custom_formatter(localized_number)
+                    .custom_parser(crate::i18n::parse_decimal);
             }
             let r = ui
                 .add(field)
@@ -226,6 +236,12 @@ where
         picked
     })
     .inner
+}
+
+/// A slider's or field's number as egui would write it, the way of the
+/// language in force (`0,25` in Spanish).
+fn localized_number(value: f64, decimals: std::ops::RangeInclusive<usize>) -> String {
+    crate::i18n::localize_decimal(&egui::emath::format_with_decimals_in_range(value, decimals))
 }
 
 #[cfg(test)]
