@@ -5,8 +5,10 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 fn main() {
+    // Relative paths throughout: two checkouts sharing one target directory
+    // share this script's output, and each must read its own files.
+    println!("cargo:rerun-if-changed=locales");
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("locales");
-    println!("cargo:rerun-if-changed={}", root.display());
     let mut out = String::from("/// (language code, file name, contents), sorted.\n");
     out.push_str("pub const FILES: &[(&str, &str, &str)] = &[\n");
     let mut entries = Vec::new();
@@ -18,21 +20,24 @@ fn main() {
         for file in std::fs::read_dir(lang.path()).expect("locales/<lang>/ is readable") {
             let path = file.expect("catalogue file").path();
             if path.extension().is_some_and(|e| e == "ftl") {
-                println!("cargo:rerun-if-changed={}", path.display());
-                entries.push((
-                    lang.file_name().to_string_lossy().into_owned(),
-                    path.file_name()
-                        .expect("a file name")
-                        .to_string_lossy()
-                        .into_owned(),
-                    path.display().to_string(),
-                ));
+                let lang = lang.file_name().to_string_lossy().into_owned();
+                let name = path
+                    .file_name()
+                    .expect("a file name")
+                    .to_string_lossy()
+                    .into_owned();
+                println!("cargo:rerun-if-changed=locales/{lang}/{name}");
+                let relative = format!("/locales/{lang}/{name}");
+                entries.push((lang, name, relative));
             }
         }
     }
     entries.sort();
     for (lang, name, path) in entries {
-        writeln!(out, "    ({lang:?}, {name:?}, include_str!({path:?})),")
+        writeln!(
+            out,
+            "    ({lang:?}, {name:?}, include_str!(concat!(env!(\"CARGO_MANIFEST_DIR\"), {path:?}))),"
+        )
             .expect("writing to a String");
     }
     out.push_str("];\n");

@@ -753,4 +753,38 @@ mod tests {
     fn stacked_tanks_are_named_top_and_bottom() {
         assert_eq!(tank_name(Side::Right, true), "Bottom tank");
     }
+
+    #[test]
+    fn the_schooling_lab_speaks_spanish_with_decimal_commas() {
+        use crate::i18n::{Lang, with_lang};
+        with_lang(Lang::Es, || {
+            assert_eq!(tank_name(Side::Left, false), "Tanque izquierdo");
+            assert_eq!(EditTool::AddRock.label(), "Poner roca");
+            let rock = tr!(
+                "boids-rock-where",
+                number = 2,
+                count = 5,
+                left = num(1.5, 1),
+                front = num(12.34, 1)
+            );
+            assert_eq!(
+                rock,
+                "Roca 2 de 5: a 1,5 m de la izquierda, a 12,3 m del frente"
+            );
+            assert_eq!(super::super::bottom_panel::axis_number(0.5, 0.25), "0,50");
+            assert_eq!(tr!("status-time", seconds = num(3.34, 1)), "t = 3,3 s");
+            assert_eq!(
+                tr!("boids-heeds", count = 1, fish = "7"),
+                "Se fija en 1 vecino (con anillo): el pez 7."
+            );
+            let err = crate::ui::FileError::Write {
+                name: "a.csv".to_owned(),
+                reason: "x".to_owned(),
+            };
+            assert_eq!(err.to_string(), "No se pudo guardar a.csv: x");
+        });
+        // English again afterwards, as the tests that read English expect.
+        assert_eq!(tank_name(Side::Left, false), "Left tank");
+        assert_eq!(EditTool::AddRock.label(), "Add rock");
+    }
 }
