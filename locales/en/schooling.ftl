@@ -177,3 +177,11 @@ status-fish-mystery = ? fish
 status-paused = paused
 status-slowed = slowed down
     .help = This computer cannot keep up with the chosen speed, so the simulation runs slower than asked (nothing is skipped: the fish just move in slow motion). Try fewer fish or a lower speed.
+
+## What the physics fish do (src/sim/physics/world.rs).
+physics-behaviour-school = School
+    .explanation = The fish steer with the schooling urges and their muscles follow.
+physics-behaviour-wander = Wander
+    .explanation = Each fish explores on its own.
+physics-behaviour-drift = Drift
+    .explanation = The muscles rest: the fish glide to a stop and the current carries them.

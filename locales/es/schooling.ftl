@@ -177,3 +177,11 @@ status-fish-mystery = ? peces
 status-paused = en pausa
 status-slowed = más lento
     .help = Esta computadora no puede seguir la velocidad elegida, así que la simulación va más lenta de lo pedido (no se salta nada: los peces solo se mueven en cámara lenta). Prueba con menos peces o con una velocidad menor.
+
+## Lo que hacen los peces físicos (src/sim/physics/world.rs).
+physics-behaviour-school = Cardumen
+    .explanation = Los peces se orientan con los impulsos del cardumen y sus músculos los siguen.
+physics-behaviour-wander = Deambular
+    .explanation = Cada pez explora por su cuenta.
+physics-behaviour-drift = A la deriva
+    .explanation = Los músculos descansan: los peces se deslizan hasta detenerse y la corriente los lleva.

@@ -1,189 +1,189 @@
-# The settings' words (src/settings/*.rs, src/ui/setting_slider.rs,
-# src/ui/tank_panel.rs). Each numeric setting's message is
-# setting-<section>-<key> (its key in kebab-case): the label, with .help (hover
-# help), .field (a typed field's own help), .fewer and .more (a count's − and +
-# buttons); a named value is setting-<section>-<key>-<name> with .help.
+# Las palabras de los ajustes (src/settings/*.rs, src/ui/setting_slider.rs,
+# src/ui/tank_panel.rs). El mensaje de cada ajuste numérico es
+# setting-<sección>-<clave>: la etiqueta, con .help (ayuda al pasar el ratón),
+# .field (ayuda propia de un campo), .fewer y .more (los botones − y + de una
+# cantidad); un valor con nombre es setting-<sección>-<clave>-<nombre> con .help.
 
-## Units shown after a number (with their space).
+## Unidades que siguen a un número (con su espacio).
 setting-unit-metres = {" "}m
 setting-unit-metres-per-second = {" "}m/s
 setting-unit-metres-per-second-squared = {" "}m/s²
 setting-unit-degrees = °
 setting-unit-times = ×
-setting-unit-food = {" "}food
-setting-unit-body-lengths = {" "}BL
+setting-unit-food = {" "}de alimento
+setting-unit-body-lengths = {" "}LC
 
-## A row's controls.
-setting-count-fewer = { $label }: fewer
-setting-count-more = { $label }: more
+## Los controles de una fila.
+setting-count-fewer = { $label }: menos
+setting-count-more = { $label }: más
 setting-named-value = { $name }: { $help }
     .name = { $setting }: { $name }
 
-## Why a setting was refused.
-setting-error = setting '{ $key }': { $reason }
-setting-error-out-of-range = { $value } is out of range: choose from { $min } to { $max }
-setting-error-selected-fish = { $selected } is out of range: there are { $count } fish (0 to { $last }), or null for none
-setting-error-selected-animal = { $selected } is out of range: there are { $count } animals (0 to { $last }), or null for none
-setting-error-too-many-obstacles = { $count } obstacles is too many: at most { $max }
-setting-error-not-an-object = set() takes an object such as {"{"}"speed": 2{"}"}, not { $value }
-setting-error-unknown-key = unknown setting '{ $key }'; the settings are: { $known }
-setting-error-wrong-type = { $value } has the wrong type ({ $hint })
+## Por qué se rechazó un ajuste.
+setting-error = ajuste '{ $key }': { $reason }
+setting-error-out-of-range = { $value } está fuera del rango: elige entre { $min } y { $max }
+setting-error-selected-fish = { $selected } está fuera del rango: hay { $count } peces (de 0 a { $last }), o null para ninguno
+setting-error-selected-animal = { $selected } está fuera del rango: hay { $count } animales (de 0 a { $last }), o null para ninguno
+setting-error-too-many-obstacles = { $count } obstáculos son demasiados: como máximo { $max }
+setting-error-not-an-object = set() recibe un objeto como {"{"}"speed": 2{"}"}, no { $value }
+setting-error-unknown-key = ajuste desconocido '{ $key }'; los ajustes son: { $known }
+setting-error-wrong-type = { $value } es del tipo equivocado ({ $hint })
 
-## Why a share link could not be opened.
-setting-link-too-long = the link is too long ({ $count } characters) to be a Shoal link
-setting-link-unknown-version = the link does not start with a Shoal version tag ('{ $tag }')
-setting-link-not-base64 = the link is damaged (it is not valid base64 text): perhaps it was cut off when copied
-setting-link-not-deflate = the link is damaged (its data cannot be unpacked): perhaps it was cut off when copied
-setting-link-not-json = the link's data is not valid settings text
-setting-link-invalid = the link asks for something Shoal cannot do: { $reason }
+## Por qué no se pudo abrir un enlace compartido.
+setting-link-too-long = el enlace es demasiado largo ({ $count } caracteres) para ser un enlace de Shoal
+setting-link-unknown-version = el enlace no empieza con una etiqueta de versión de Shoal ('{ $tag }')
+setting-link-not-base64 = el enlace está dañado (no es texto base64 válido): tal vez se cortó al copiarlo
+setting-link-not-deflate = el enlace está dañado (sus datos no se pueden descomprimir): tal vez se cortó al copiarlo
+setting-link-not-json = los datos del enlace no son un texto de ajustes válido
+setting-link-invalid = el enlace pide algo que Shoal no puede hacer: { $reason }
 
-## The whole app's settings.
-setting-app-speed = Speed
-    .help = How fast time runs: 1× is real time, 2× is twice as fast
-setting-app-seed = Seed
-    .help = The number that decides where everything starts. The same seed always gives the same run, so a class can share it
-    .field = Type a number to start a new run from it
+## Los ajustes de toda la aplicación.
+setting-app-speed = Velocidad
+    .help = Qué tan rápido corre el tiempo: 1× es tiempo real, 2× es el doble de rápido
+setting-app-seed = Semilla
+    .help = El número que decide dónde empieza todo. La misma semilla siempre da la misma simulación, así que una clase puede compartirla
+    .field = Escribe un número para empezar una simulación nueva a partir de él
 
-## One boid tank's settings (schooling lab, aquarium).
-setting-tank-containment = Containment
-    .help = How strongly a fish stays in the pond: it turns back towards open water before its path comes near the glass, the sand or the surface.
-setting-tank-alignment = Alignment
-    .help = How much a fish copies the direction its neighbours are swimming (close neighbours count more: their heading is easier to see).
-setting-tank-cohesion = Cohesion
-    .help = How much a fish swims towards the middle of the neighbours it can see (and of the distant school it sees), easing off as it arrives.
-setting-tank-separation = Separation
-    .help = How much a fish keeps its own space: it moves away from fish inside its personal space, harder the closer they are.
-setting-tank-avoidance = Avoidance
-    .help = How strongly a fish swerves around obstacles: the glass, sand and surface, rocks, pillars, stingrays, and fish coming straight at it (three or more close together count as one obstacle).
-setting-tank-vision-distance-m = Vision distance
-    .help = How far a fish can see its neighbours, in metres.
-setting-tank-vision-angle-deg = Vision angle
-    .help = How wide a fish sees around itself. At 360° it sees behind too; at 300° there is a blind spot behind its tail.
-setting-tank-max-speed-m-per-s = Top speed
-    .help = The fastest a fish can swim, in metres per second.
-setting-tank-max-force-m-per-s2 = Turning power
-    .help = How hard a fish can turn or speed up at once (the maximum force). Small values make slow, lazy turns.
-setting-tank-personal-space-m = Personal space
-    .help = How close another fish may come before separation pushes this one away. A school settles at about one body length (0.3–0.5 m here).
-setting-tank-wander = Wander
-    .help = How much a fish roams about on its own, 0 to 100 (on the urges' scale). The same for loners and schools: a school's alignment and cohesion overcome it, loners' do not.
-setting-tank-fish-count = Fish
-    .help = How many fish (the prey) are in the tank.
-    .fewer = Take 10 away
-    .more = Add 10
-setting-tank-sharks = Sharks
-    .help = Hunters. A shark chases a fish; fish that see it flee and bunch together.
-    .fewer = Take 1 away
-    .more = Add 1
-setting-tank-stingrays = Stingrays
-    .help = Flat fish that glide over the sand. Other fish swim around them like rocks.
-    .fewer = Take 1 away
-    .more = Add 1
-setting-aquarium-fish-count = Fish
-    .help = How many fish are in the tank
+## Los ajustes de un tanque de boids (laboratorio de cardúmenes, acuario).
+setting-tank-containment = Contención
+    .help = Con cuánta fuerza un pez se queda en el estanque: regresa hacia el agua abierta antes de que su camino se acerque al vidrio, la arena o la superficie.
+setting-tank-alignment = Alineación
+    .help = Cuánto copia un pez la dirección en la que nadan sus vecinos (los vecinos cercanos cuentan más: su rumbo se ve mejor).
+setting-tank-cohesion = Cohesión
+    .help = Cuánto nada un pez hacia el centro de los vecinos que puede ver (y del cardumen lejano que ve), frenando al llegar.
+setting-tank-separation = Separación
+    .help = Cuánto cuida un pez su propio espacio: se aleja de los peces que entran en su espacio personal, más fuerte cuanto más cerca están.
+setting-tank-avoidance = Evasión
+    .help = Con cuánta fuerza un pez esquiva los obstáculos: el vidrio, la arena y la superficie, las rocas, los pilares, las rayas y los peces que vienen directo hacia él (tres o más juntos cuentan como un solo obstáculo).
+setting-tank-vision-distance-m = Distancia de visión
+    .help = Hasta qué distancia puede ver un pez a sus vecinos, en metros.
+setting-tank-vision-angle-deg = Ángulo de visión
+    .help = Qué tan amplio ve un pez a su alrededor. A 360° ve también detrás; a 300° tiene un punto ciego detrás de la cola.
+setting-tank-max-speed-m-per-s = Velocidad máxima
+    .help = Lo más rápido que puede nadar un pez, en metros por segundo.
+setting-tank-max-force-m-per-s2 = Fuerza de giro
+    .help = Con cuánta fuerza puede un pez girar o acelerar de golpe (la fuerza máxima). Los valores pequeños dan giros lentos y perezosos.
+setting-tank-personal-space-m = Espacio personal
+    .help = Qué tan cerca puede llegar otro pez antes de que la separación aleje a este. Un cardumen se acomoda a más o menos un largo de cuerpo (aquí 0,3–0,5 m).
+setting-tank-wander = Deambular
+    .help = Cuánto anda un pez de aquí para allá por su cuenta, de 0 a 100 (en la escala de los impulsos). Es igual para solitarios y cardúmenes: la alineación y la cohesión de un cardumen lo vencen, las de los solitarios no.
+setting-tank-fish-count = Peces
+    .help = Cuántos peces (las presas) hay en el tanque.
+    .fewer = Quitar 10
+    .more = Agregar 10
+setting-tank-sharks = Tiburones
+    .help = Cazadores. Un tiburón persigue a un pez; los peces que lo ven huyen y se juntan.
+    .fewer = Quitar 1
+    .more = Agregar 1
+setting-tank-stingrays = Rayas
+    .help = Peces planos que se deslizan sobre la arena. Los otros peces nadan alrededor de ellas como si fueran rocas.
+    .fewer = Quitar 1
+    .more = Agregar 1
+setting-aquarium-fish-count = Peces
+    .help = Cuántos peces hay en el tanque
 
-## A tank's presets.
-setting-preset-individual = Individual (solitary)
-    .help = Fish that like to be alone: they keep their distance and do not try to stay together.
-setting-preset-group = Group (school)
-    .help = Fish that live in a school: they stay close, swim the same way and still never bump.
-setting-preset-monte-carlo-paper = Monte Carlo (paper)
-    .help = The lottery mode with the chances published in the paper: each moment one urge wins.
-setting-preset-custom = Custom
-    .help = Your own mix: move any slider and the preset becomes Custom.
+## Los ajustes predefinidos de un tanque.
+setting-preset-individual = Individual (solitario)
+    .help = Peces a los que les gusta estar solos: guardan su distancia y no intentan mantenerse juntos.
+setting-preset-group = Grupo (cardumen)
+    .help = Peces que viven en cardumen: se mantienen cerca, nadan en la misma dirección y aun así nunca chocan.
+setting-preset-monte-carlo-paper = Monte Carlo (artículo)
+    .help = El modo de lotería con las probabilidades publicadas en el artículo: en cada momento gana un impulso.
+setting-preset-custom = Personalizado
+    .help = Tu propia mezcla: mueve cualquier control deslizante y el ajuste pasa a ser Personalizado.
 
-## A tank's control modes.
-setting-mode-blended = Blended (direct)
-setting-mode-classic = Classic
-setting-mode-direct-alternate = Direct alternate
+## Los modos de control de un tanque.
+setting-mode-blended = Mezcla (directo)
+setting-mode-classic = Clásico
+setting-mode-direct-alternate = Alternancia directa
 setting-mode-monte-carlo = Monte Carlo
 
-## A tank's controls (src/ui/tank_panel.rs).
-setting-tank-panel-preset = Preset
-    .help = Ready-made mixes of the five urges, from the paper's Table 1
-setting-tank-panel-mode = How the urges combine
-    .help = The control mode: how a fish turns five urges into one move
-    .block = control mode
-setting-tank-panel-mode-note = Wander and fleeing from sharks are not urges of the mode: they act on top of it, in every mode.
-setting-tank-panel-urges = Urges (0–100)
-    .help = How much each urge counts, on the paper's 0 to 100 scale
-setting-tank-panel-senses = Senses, body and wander
-    .help = Not part of the presets: Individual and Group change only the five urges, so these stay the same when you pick a preset.
-setting-tank-panel-animals = Animals
+## Los controles de un tanque (src/ui/tank_panel.rs).
+setting-tank-panel-preset = Ajuste predefinido
+    .help = Mezclas ya hechas de los cinco impulsos, de la Tabla 1 del artículo
+setting-tank-panel-mode = Cómo se combinan los impulsos
+    .help = El modo de control: cómo convierte un pez cinco impulsos en un solo movimiento
+    .block = modo de control
+setting-tank-panel-mode-note = Deambular y huir de los tiburones no son impulsos del modo: actúan por encima de él, en todos los modos.
+setting-tank-panel-urges = Impulsos (0–100)
+    .help = Cuánto cuenta cada impulso, en la escala de 0 a 100 del artículo
+setting-tank-panel-senses = Sentidos, cuerpo y deambular
+    .help = No forman parte de los ajustes predefinidos: Individual y Grupo cambian solo los cinco impulsos, así que estos siguen iguales cuando eliges uno.
+setting-tank-panel-animals = Animales
 
-## The physics fish's settings.
-setting-physics-fish-count = Fish
-    .help = How many muscle-driven fish swim in the tank. Each one is 23 masses joined by 91 springs
-setting-physics-sharks = Sharks
-    .help = Sharks are built like the fish, only twice as long and four times heavier
-    .fewer = One shark fewer
-    .more = One more shark
-setting-physics-current-m-per-s = Current
-    .help = How fast the water flows round the tank. A fish that stops swimming drifts with it; to stay put it must swim against it
-setting-physics-hand-speed = Swim
-    .help = How hard the tail muscles beat: 0 rests, 1 is the fastest swimming
-setting-physics-hand-pitch-deg = Fins
-    .help = Tilt the side fins: up makes the fish climb, down makes it dive (only while it swims)
-setting-physics-turn-angle-deg = Turn
-    .help = The turn the button asks for: positive to the fish's left, negative to its right. Turns above 90° are made of smaller ones
+## Los ajustes de los peces físicos.
+setting-physics-fish-count = Peces
+    .help = Cuántos peces movidos por músculos nadan en el tanque. Cada uno tiene 23 masas unidas por 91 resortes
+setting-physics-sharks = Tiburones
+    .help = Los tiburones están hechos como los peces, solo que el doble de largos y cuatro veces más pesados
+    .fewer = Un tiburón menos
+    .more = Un tiburón más
+setting-physics-current-m-per-s = Corriente
+    .help = Qué tan rápido fluye el agua alrededor del tanque. Un pez que deja de nadar se deja llevar; para quedarse quieto tiene que nadar en contra
+setting-physics-hand-speed = Nadar
+    .help = Con cuánta fuerza baten los músculos de la cola: 0 descansa, 1 es el nado más rápido
+setting-physics-hand-pitch-deg = Aletas
+    .help = Inclina las aletas laterales: hacia arriba el pez sube, hacia abajo se sumerge (solo mientras nada)
+setting-physics-turn-angle-deg = Giro
+    .help = El giro que pide el botón: positivo hacia la izquierda del pez, negativo hacia su derecha. Los giros de más de 90° se hacen con giros más pequeños
 
-## The reef's settings.
-setting-reef-prey-count = Prey fish
-    .help = How many small prey fish live in this reef (they school and flee the shark)
-setting-reef-food-count = Plankton
-    .help = How much plankton drifts in the water; eaten plankton is replaced
-setting-reef-visibility-m = Visibility
-    .help = How far a fish can see in this water, metres. Murky water: fish see less, find less food and notice the shark later
-setting-reef-current-m-per-s = Current
-    .help = How fast the water flows; it carries plankton and sways the seaweed
-setting-reef-overlay-none = None
-setting-reef-overlay-light = Light
-setting-reef-overlay-temperature = Temperature
+## Los ajustes del arrecife.
+setting-reef-prey-count = Peces presa
+    .help = Cuántos peces presa pequeños viven en este arrecife (forman cardumen y huyen del tiburón)
+setting-reef-food-count = Plancton
+    .help = Cuánto plancton flota en el agua; el plancton que se comen se repone
+setting-reef-visibility-m = Visibilidad
+    .help = Hasta dónde puede ver un pez en esta agua, en metros. Agua turbia: los peces ven menos, encuentran menos comida y notan al tiburón más tarde
+setting-reef-current-m-per-s = Corriente
+    .help = Qué tan rápido fluye el agua; arrastra el plancton y mece las algas
+setting-reef-overlay-none = Nada
+setting-reef-overlay-light = Luz
+setting-reef-overlay-temperature = Temperatura
 
-## A reef fish's mind (reef.traits.<kind>.<trait>).
-setting-minds-digestion-rate-per-unit = Hunger grows (p0)
-    .help = p0: how fast a meal is digested, so how soon the fish is hungry again, per time unit of 1/40 s. Calm (Shoal's default) 0.0003: hungry again 21 s after a full meal. The paper's nominal 0.00067: after 9 s; ravenous 0.005: after 1 s
-setting-minds-digestion-rate-per-unit-calm = Calm
-    .help = p0 = 0.0003 (Shoal's default)
+## La mente de un pez del arrecife (reef.traits.<tipo>.<rasgo>).
+setting-minds-digestion-rate-per-unit = El hambre crece (p0)
+    .help = p0: qué tan rápido se digiere una comida, o sea, qué tan pronto vuelve a tener hambre el pez, por unidad de tiempo de 1/40 s. Tranquilo (el valor de Shoal) 0,0003: vuelve a tener hambre 21 s después de comer hasta llenarse. El nominal del artículo, 0,00067: después de 9 s; voraz 0,005: después de 1 s
+setting-minds-digestion-rate-per-unit-calm = Tranquilo
+    .help = p0 = 0,0003 (el valor de Shoal)
 setting-minds-digestion-rate-per-unit-nominal = Nominal
-    .help = p0 = 0.00067 (the paper's)
-setting-minds-digestion-rate-per-unit-ravenous = Ravenous
-    .help = p0 = 0.005 (the paper's)
-setting-minds-libido-rate-per-unit = Libido grows (p1)
-    .help = p1: how fast the wish to mate grows after mating, per time unit of 1/40 s. Calm (Shoal's default) 0.0011: a fed fish wants to mate again 6 s after mating. The paper's nominal 0.0025: after 2.5 s; sexual mania 0.01: after 0.6 s
-setting-minds-libido-rate-per-unit-calm = Calm
-    .help = p1 = 0.0011 (Shoal's default)
+    .help = p0 = 0,00067 (el del artículo)
+setting-minds-digestion-rate-per-unit-ravenous = Voraz
+    .help = p0 = 0,005 (el del artículo)
+setting-minds-libido-rate-per-unit = La libido crece (p1)
+    .help = p1: qué tan rápido crece el deseo de aparearse después de aparearse, por unidad de tiempo de 1/40 s. Tranquilo (el valor de Shoal) 0,0011: un pez alimentado quiere aparearse otra vez 6 s después. El nominal del artículo, 0,0025: después de 2,5 s; manía sexual 0,01: después de 0,6 s
+setting-minds-libido-rate-per-unit-calm = Tranquilo
+    .help = p1 = 0,0011 (el valor de Shoal)
 setting-minds-libido-rate-per-unit-nominal = Nominal
-    .help = p1 = 0.0025 (the paper's)
-setting-minds-libido-rate-per-unit-sexual-mania = Sexual mania
-    .help = p1 = 0.01 (the paper's)
-setting-minds-appetite-food-units = Appetite (α)
-    .help = α: how much food fills the fish (a plankton particle is 1, a prey fish 4)
-setting-minds-fear-distance-body-lengths = Fear distance (D0)
-    .help = D0: a shark nearer than this many body lengths frightens the fish as much as it can be (paper: 3.85)
-setting-minds-collision-box-ahead-body-lengths = Collision box
-    .help = How far ahead the fish watches for things in its way
-setting-minds-collision-box-ahead-body-lengths-timid = Timid
-    .help = swerves from anything far ahead (1.5 body lengths)
-setting-minds-collision-box-ahead-body-lengths-ordinary = Ordinary
-    .help = swerves from what is 0.8 body lengths ahead
-setting-minds-collision-box-ahead-body-lengths-courageous = Courageous
-    .help = swerves only at the last moment (0.3 body lengths)
-setting-minds-persistence-body-lengths = Persistence
-    .help = Does the fish stick to the food, prey or partner it chose?
-setting-minds-persistence-body-lengths-fickle = Fickle
-    .help = switches to any target that is a little nearer
-setting-minds-persistence-body-lengths-ordinary = Ordinary
-    .help = switches when another is 2 body lengths nearer
-setting-minds-persistence-body-lengths-devoted = Devoted
-    .help = sticks to its target unless another is 20 body lengths nearer
-setting-minds-fear-threshold = Alarm at fear (f0)
-    .help = f0: fear above this makes the fish take evasive action (paper: between 0.1 and 0.5)
-setting-minds-panic-threshold = Panic at fear (f1)
-    .help = f1: when the nearest shark frightens it more than this, a schooling fish stops schooling and flees alone
-setting-minds-urge-threshold = Acts on urges at (r)
-    .help = r: hunger (or the wish to mate) above this sends the fish looking for food (or a partner) (paper: below 0.5)
+    .help = p1 = 0,0025 (el del artículo)
+setting-minds-libido-rate-per-unit-sexual-mania = Manía sexual
+    .help = p1 = 0,01 (el del artículo)
+setting-minds-appetite-food-units = Apetito (α)
+    .help = α: cuánta comida llena al pez (una partícula de plancton es 1, un pez presa 4)
+setting-minds-fear-distance-body-lengths = Distancia de miedo (D0)
+    .help = D0: un tiburón más cerca que esta cantidad de largos de cuerpo asusta al pez todo lo que puede asustarse (artículo: 3,85)
+setting-minds-collision-box-ahead-body-lengths = Caja de choque
+    .help = Hasta dónde mira el pez hacia adelante en busca de cosas en su camino
+setting-minds-collision-box-ahead-body-lengths-timid = Tímido
+    .help = esquiva cualquier cosa lejana por delante (1,5 largos de cuerpo)
+setting-minds-collision-box-ahead-body-lengths-ordinary = Normal
+    .help = esquiva lo que está a 0,8 largos de cuerpo por delante
+setting-minds-collision-box-ahead-body-lengths-courageous = Valiente
+    .help = esquiva solo en el último momento (0,3 largos de cuerpo)
+setting-minds-persistence-body-lengths = Constancia
+    .help = ¿El pez se queda con la comida, la presa o la pareja que eligió?
+setting-minds-persistence-body-lengths-fickle = Inconstante
+    .help = cambia a cualquier objetivo que esté un poco más cerca
+setting-minds-persistence-body-lengths-ordinary = Normal
+    .help = cambia cuando otro está 2 largos de cuerpo más cerca
+setting-minds-persistence-body-lengths-devoted = Fiel
+    .help = se queda con su objetivo a menos que otro esté 20 largos de cuerpo más cerca
+setting-minds-fear-threshold = Alarma con miedo (f0)
+    .help = f0: un miedo por encima de esto hace que el pez intente escapar (artículo: entre 0,1 y 0,5)
+setting-minds-panic-threshold = Pánico con miedo (f1)
+    .help = f1: cuando el tiburón más cercano lo asusta más que esto, un pez de cardumen deja el cardumen y huye solo
+setting-minds-urge-threshold = Actúa por impulsos desde (r)
+    .help = r: un hambre (o un deseo de aparearse) por encima de esto hace que el pez busque comida (o pareja) (artículo: menos de 0,5)
 
-## The learning lab's settings.
-setting-learning-annealing-steps = Tries per drill
-    .help = How many tries the fish gets for each drill. More tries, better swimming (the paper's best shark had 6840). Changing it starts again
+## Los ajustes del laboratorio de aprendizaje.
+setting-learning-annealing-steps = Intentos por ejercicio
+    .help = Cuántos intentos tiene el pez para cada ejercicio. Más intentos, mejor nado (el mejor tiburón del artículo tuvo 6840). Cambiarlo empieza de nuevo

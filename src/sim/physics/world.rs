@@ -96,22 +96,25 @@ pub enum PhysicsBehaviour {
 impl PhysicsBehaviour {
     pub const ALL: [Self; 3] = [Self::School, Self::Wander, Self::Drift];
 
+    /// Its name on the panel, in the language in force.
     pub fn label(self) -> &'static str {
+        crate::i18n::ts(self.message())
+    }
+
+    /// One sentence for the UI, in the language in force.
+    pub fn explanation(self) -> &'static str {
         match self {
-            Self::School => "School",
-            Self::Wander => "Wander",
-            Self::Drift => "Drift",
+            Self::School => crate::i18n::ts("physics-behaviour-school.explanation"),
+            Self::Wander => crate::i18n::ts("physics-behaviour-wander.explanation"),
+            Self::Drift => crate::i18n::ts("physics-behaviour-drift.explanation"),
         }
     }
 
-    /// One sentence for the UI.
-    pub fn explanation(self) -> &'static str {
+    fn message(self) -> &'static str {
         match self {
-            Self::School => "The fish steer with the schooling urges and their muscles follow.",
-            Self::Wander => "Each fish explores on its own.",
-            Self::Drift => {
-                "The muscles rest: the fish glide to a stop and the current carries them."
-            }
+            Self::School => "physics-behaviour-school",
+            Self::Wander => "physics-behaviour-wander",
+            Self::Drift => "physics-behaviour-drift",
         }
     }
 }
