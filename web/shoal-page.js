@@ -58,3 +58,15 @@
       (gzBytes / 1048576).toFixed(2) + " MiB gzipped");
   });
 })();
+
+// The tank's focus ring shows only to someone using the keyboard: a Tab marks the
+// page as driven by keys, a pointer press unmarks it (index.html's CSS).
+(function () {
+  "use strict";
+  document.addEventListener("keydown", function (e) {
+    if (e.key === "Tab") document.documentElement.classList.add("shoal-keys");
+  }, true);
+  document.addEventListener("pointerdown", function () {
+    document.documentElement.classList.remove("shoal-keys");
+  }, true);
+})();
