@@ -1,8 +1,62 @@
 // Page-level safety net, loaded before the WebAssembly: explains a browser without
 // WebAssembly, a module that fails to load, or a start that takes too long, instead
 // of an endless "Loading…". The app itself replaces this notice once it runs.
+//
+// The string catalogue lives in the WebAssembly, so the few words shown before it
+// loads are copied here from locales/<lang>/page.ftl; a test
+// (src/i18n/tests.rs, `the_page_s_words_before_loading_match_the_catalogue`) checks
+// that every copy equals its message, in every language. `{error}` stands for the
+// message's `{ $error }`.
 (function () {
   "use strict";
+  var WORDS = /* words-begin */ {
+    "en": {
+      "page-loading": "Filling the aquarium…",
+      "page-reload": "Reload Shoal",
+      "page-too-old-title": "This browser is too old for Shoal",
+      "page-too-old-why": "Shoal runs as WebAssembly, which this browser does not support. It works in current Chrome, Edge, Firefox and Safari (15 or later).",
+      "page-load-failed-title": "Shoal could not load",
+      "page-load-failed": "Loading the simulation failed: {error}",
+      "page-unknown-error": "unknown error",
+      "page-slow-title": "Shoal is taking unusually long to start",
+      "page-slow-why": "The aquarium has not started after 60 seconds. A slow network or a busy computer can cause this; reloading usually helps."
+    },
+    "es": {
+      "page-loading": "Llenando el acuario…",
+      "page-reload": "Volver a cargar Shoal",
+      "page-too-old-title": "Este navegador es demasiado antiguo para Shoal",
+      "page-too-old-why": "Shoal funciona con WebAssembly, que este navegador no admite. Funciona en las versiones actuales de Chrome, Edge, Firefox y Safari (15 o posterior).",
+      "page-load-failed-title": "Shoal no pudo cargarse",
+      "page-load-failed": "No se pudo cargar la simulación: {error}",
+      "page-unknown-error": "error desconocido",
+      "page-slow-title": "Shoal está tardando mucho en iniciar",
+      "page-slow-why": "El acuario no ha empezado después de 60 segundos. Una red lenta o una computadora ocupada pueden causarlo; volver a cargar la página suele ayudar."
+    }
+  } /* words-end */;
+
+  // The same choice as the app's (src/ui/language.rs): `?lang=`, else the last
+  // choice on this browser, else the browser's languages, else English.
+  function language() {
+    var codes = [];
+    var m = /[?&]lang=([^&#]*)/.exec(location.search);
+    if (m) codes.push(decodeURIComponent(m[1]));
+    try {
+      var stored = localStorage.getItem("shoal.lang");
+      if (stored) codes.push(stored);
+    } catch (e) { /* storage blocked: no remembered choice */ }
+    codes = codes.concat(navigator.languages || [navigator.language || ""]);
+    for (var i = 0; i < codes.length; i++) {
+      var base = String(codes[i]).toLowerCase().split(/[-_]/)[0];
+      if (WORDS.hasOwnProperty(base)) return base;
+    }
+    return "en";
+  }
+  var lang = language();
+  var words = WORDS[lang];
+  document.documentElement.lang = lang;
+  var loading = document.querySelector("#shoal_notice .loading");
+  if (loading) loading.textContent = words["page-loading"];
+
   function notice(title, text) {
     var box = document.getElementById("shoal_notice");
     // Only while still loading: never over the app or over a message it wrote.
@@ -14,31 +68,25 @@
     var p = document.createElement("p");
     p.textContent = text;
     var b = document.createElement("button");
-    b.textContent = "Reload Shoal";
+    b.textContent = words["page-reload"];
     b.onclick = function () { location.reload(); };
     box.appendChild(h); box.appendChild(p); box.appendChild(b);
   }
+  function failed(reason) {
+    notice(words["page-load-failed-title"], words["page-load-failed"].replace("{error}", reason));
+  }
   if (typeof WebAssembly !== "object") {
-    notice("This browser is too old for Shoal",
-      "Shoal runs as WebAssembly, which this browser does not support. It works in current " +
-      "Chrome, Edge, Firefox and Safari (15 or later).");
+    notice(words["page-too-old-title"], words["page-too-old-why"]);
     return;
   }
   window.addEventListener("error", function (e) {
-    if (e && e.message && /wasm|WebAssembly|import/i.test(e.message)) {
-      notice("Shoal could not load", "Loading the simulation failed: " + e.message);
-    }
+    if (e && e.message && /wasm|WebAssembly|import/i.test(e.message)) failed(e.message);
   });
   window.addEventListener("unhandledrejection", function (e) {
-    var reason = e && e.reason ? (e.reason.message || String(e.reason)) : "unknown error";
-    notice("Shoal could not load", "Loading the simulation failed: " + reason);
+    failed(e && e.reason ? (e.reason.message || String(e.reason)) : words["page-unknown-error"]);
   });
   setTimeout(function () {
-    if (!window.shoal) {
-      notice("Shoal is taking unusually long to start",
-        "The aquarium has not started after 60 seconds. A slow network or a busy computer can " +
-        "cause this; reloading usually helps.");
-    }
+    if (!window.shoal) notice(words["page-slow-title"], words["page-slow-why"]);
   }, 60000);
 })();
 

@@ -16,3 +16,14 @@ page-canvas = The tank. Arrow keys turn the camera, plus and minus zoom, N selec
 page-text-agent = Text you type into the field being edited
 page-file-not-text = the file is not text
 page-file-unreadable = the file could not be read: { $error }
+
+# Before the WebAssembly has loaded (web/shoal-page.js keeps a copy of these,
+# checked against this file by a test).
+page-loading = Filling the aquarium…
+page-too-old-title = This browser is too old for Shoal
+page-too-old-why = Shoal runs as WebAssembly, which this browser does not support. It works in current Chrome, Edge, Firefox and Safari (15 or later).
+page-load-failed-title = Shoal could not load
+page-load-failed = Loading the simulation failed: { $error }
+page-unknown-error = unknown error
+page-slow-title = Shoal is taking unusually long to start
+page-slow-why = The aquarium has not started after 60 seconds. A slow network or a busy computer can cause this; reloading usually helps.

@@ -16,3 +16,14 @@ page-canvas = El tanque. Las flechas giran la cámara, más y menos acercan y al
 page-text-agent = Texto que escribes en el campo que estás editando
 page-file-not-text = el archivo no es de texto
 page-file-unreadable = no se pudo leer el archivo: { $error }
+
+# Antes de que cargue el WebAssembly (web/shoal-page.js guarda una copia de
+# estos mensajes, que una prueba compara con este archivo).
+page-loading = Llenando el acuario…
+page-too-old-title = Este navegador es demasiado antiguo para Shoal
+page-too-old-why = Shoal funciona con WebAssembly, que este navegador no admite. Funciona en las versiones actuales de Chrome, Edge, Firefox y Safari (15 o posterior).
+page-load-failed-title = Shoal no pudo cargarse
+page-load-failed = No se pudo cargar la simulación: { $error }
+page-unknown-error = error desconocido
+page-slow-title = Shoal está tardando mucho en iniciar
+page-slow-why = El acuario no ha empezado después de 60 segundos. Una red lenta o una computadora ocupada pueden causarlo; volver a cargar la página suele ayudar.

@@ -470,3 +470,46 @@ fn messages_take_variables_plurals_and_numbers() {
         "[no-such-message]"
     );
 }
+
+/// The words shown before the WebAssembly loads live in `web/shoal-page.js`
+/// (the catalogue is not there yet): each must equal its message, in every
+/// language, so a translator changes them in one place and this test says
+/// where the copy is stale.
+#[test]
+fn the_page_s_words_before_loading_match_the_catalogue() {
+    let script = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("web/shoal-page.js"),
+    )
+    .unwrap();
+    let table = script
+        .split("/* words-begin */")
+        .nth(1)
+        .and_then(|rest| rest.split("/* words-end */").next())
+        .expect("shoal-page.js marks its words");
+    let copies: BTreeMap<String, BTreeMap<String, String>> =
+        serde_json::from_str(table).expect("the words are JSON");
+    assert_eq!(
+        copies.keys().cloned().collect::<Vec<_>>(),
+        Lang::ALL.iter().map(|l| l.code().to_owned()).collect::<Vec<_>>(),
+        "one table per language of the catalogue"
+    );
+    let mut args = FluentArgs::new();
+    args.set("error", "{error}");
+    for lang in Lang::ALL {
+        let words = &copies[lang.code()];
+        assert_eq!(
+            words.keys().collect::<Vec<_>>(),
+            copies["en"].keys().collect::<Vec<_>>(),
+            "{} has the same words as English",
+            lang.code()
+        );
+        for (id, copy) in words {
+            assert_eq!(
+                &tr_in(lang, id, Some(&args)),
+                copy,
+                "web/shoal-page.js's copy of {id} in {}",
+                lang.code()
+            );
+        }
+    }
+}
