@@ -59,8 +59,9 @@
 
   function notice(title, text) {
     var box = document.getElementById("shoal_notice");
-    // Only while still loading: never over the app or over a message it wrote.
-    if (!box || !box.querySelector(".spinner")) return;
+    // Only while still loading: never over the app (which hides the box) or over
+    // a message it wrote (which replaces the spinner).
+    if (!box || !box.querySelector(".spinner") || box.classList.contains("hidden")) return;
     box.className = "error";
     box.textContent = "";
     var h = document.createElement("h2");
@@ -80,7 +81,9 @@
     return;
   }
   window.addEventListener("error", function (e) {
-    if (e && e.message && /wasm|WebAssembly|import/i.test(e.message)) failed(e.message);
+    // A module that fails to compile or import, or a download that breaks off
+    // (Chrome says "Failed to fetch", Firefox "NetworkError").
+    if (e && e.message && /wasm|WebAssembly|import|fetch|network/i.test(e.message)) failed(e.message);
   });
   window.addEventListener("unhandledrejection", function (e) {
     failed(e && e.reason ? (e.reason.message || String(e.reason)) : words["page-unknown-error"]);

@@ -115,6 +115,26 @@ for (const tier of TIERS) {
       await page.close();
     });
 
+    test("before the WebAssembly loads, the page speaks the chosen language: a module that fails to load is explained in Spanish", async () => {
+      const page = await browser.newPage({ viewport: { width: 800, height: 600 } });
+      // The module never arrives: the page's own safety net must explain it.
+      await page.route("**/*.wasm", (route) => route.abort());
+      await page.goto(`${server.url}?lang=es#`);
+      await page.waitForSelector("#shoal_notice.error h2", { timeout: 60_000 });
+      const notice = await page.evaluate(() => ({
+        lang: document.documentElement.lang,
+        title: document.querySelector("#shoal_notice h2").textContent,
+        text: document.querySelector("#shoal_notice p").textContent,
+        button: document.querySelector("#shoal_notice button").textContent,
+      }));
+      assert.equal(notice.lang, "es");
+      assert.equal(notice.title, "Shoal no pudo cargarse");
+      assert.match(notice.text, /^No se pudo cargar la simulación: /);
+      assert.equal(notice.button, "Volver a cargar Shoal");
+      saveArtifact(`languages-${tier}-load-failed-es.png`, await page.screenshot());
+      await page.close();
+    });
+
     test("a browser set to Spanish opens in Spanish", async () => {
       const page = await browser.newPage({ viewport: { width: 1280, height: 720 }, locale: "es-MX" });
       await page.goto(`${server.url}#`);
