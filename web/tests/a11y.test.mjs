@@ -5,30 +5,7 @@
 // region must say what the tank does.
 import { describe, test, before, after } from "node:test";
 import assert from "node:assert/strict";
-import { serveDist, launch, openShoal, TIERS, walkOnly, saveArtifact, sleep } from "./harness.mjs";
-
-/** The browser's accessibility tree, as a screen reader gets it: the nodes not
- * ignored, each with role, name, value and properties. */
-async function axTree(page) {
-  const cdp = await page.context().newCDPSession(page);
-  await cdp.send("Accessibility.enable");
-  const { nodes } = await cdp.send("Accessibility.getFullAXTree");
-  await cdp.detach();
-  return nodes
-    .filter((n) => !n.ignored)
-    .map((n) => {
-      const props = Object.fromEntries((n.properties || []).map((p) => [p.name, p.value?.value]));
-      return {
-        role: n.role?.value,
-        name: n.name?.value ?? "",
-        value: n.value?.value,
-        description: n.description?.value,
-        ...props,
-      };
-    });
-}
-
-const find = (tree, role, name) => tree.find((n) => n.role === role && n.name === name);
+import { serveDist, launch, openShoal, TIERS, walkOnly, saveArtifact, sleep, axTree, axFind as find } from "./harness.mjs";
 
 /** Waits until the mirror shows an element matching `selector`. */
 async function mirrored(page, selector) {

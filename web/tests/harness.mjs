@@ -313,3 +313,46 @@ export function changedPixels(a, b, rect) {
   }
   return changed;
 }
+
+/** The browser's accessibility tree, as a screen reader gets it (CDP
+ * `Accessibility.getFullAXTree`): the nodes not ignored, each with role, name,
+ * value, description and properties. */
+export async function axTree(page) {
+  const cdp = await page.context().newCDPSession(page);
+  await cdp.send("Accessibility.enable");
+  const { nodes } = await cdp.send("Accessibility.getFullAXTree");
+  await cdp.detach();
+  return nodes
+    .filter((n) => !n.ignored)
+    .map((n) => {
+      const props = Object.fromEntries((n.properties || []).map((p) => [p.name, p.value?.value]));
+      return {
+        role: n.role?.value,
+        name: n.name?.value ?? "",
+        value: n.value?.value,
+        description: n.description?.value,
+        ...props,
+      };
+    });
+}
+
+/** The node of `tree` with `role` and `name`. */
+export const axFind = (tree, role, name) => tree.find((n) => n.role === role && n.name === name);
+
+/** Waits until the accessible mirror has a button named `name`. */
+export async function mirroredButton(page, name) {
+  await page.waitForFunction(
+    (n) => [...document.querySelectorAll("#shoal_a11y button")].some((b) => (b.getAttribute("aria-label") || b.textContent) === n),
+    name,
+    { timeout: 60_000 },
+  );
+}
+
+/** Presses the mirror's button named `name`, as a screen reader does. */
+export async function pressMirrored(page, name) {
+  await mirroredButton(page, name);
+  await page.evaluate((n) => {
+    const b = [...document.querySelectorAll("#shoal_a11y button")].find((b) => (b.getAttribute("aria-label") || b.textContent) === n);
+    b.click();
+  }, name);
+}

@@ -5,40 +5,7 @@
 // carries it.
 import { describe, test, before, after } from "node:test";
 import assert from "node:assert/strict";
-import { serveDist, launch, openShoal, TIERS, saveArtifact, waitFrames } from "./harness.mjs";
-
-async function axTree(page) {
-  const cdp = await page.context().newCDPSession(page);
-  await cdp.send("Accessibility.enable");
-  const { nodes } = await cdp.send("Accessibility.getFullAXTree");
-  await cdp.detach();
-  return nodes
-    .filter((n) => !n.ignored)
-    .map((n) => {
-      const props = Object.fromEntries((n.properties || []).map((p) => [p.name, p.value?.value]));
-      return { role: n.role?.value, name: n.name?.value ?? "", ...props };
-    });
-}
-
-const find = (tree, role, name) => tree.find((n) => n.role === role && n.name === name);
-
-/** Waits until the mirror has a button named `name`. */
-async function mirroredButton(page, name) {
-  await page.waitForFunction(
-    (n) => [...document.querySelectorAll("#shoal_a11y button")].some((b) => (b.getAttribute("aria-label") || b.textContent) === n),
-    name,
-    { timeout: 60_000 },
-  );
-}
-
-/** Presses the mirror's button named `name`, as a screen reader does. */
-async function press(page, name) {
-  await mirroredButton(page, name);
-  await page.evaluate((n) => {
-    const b = [...document.querySelectorAll("#shoal_a11y button")].find((b) => (b.getAttribute("aria-label") || b.textContent) === n);
-    b.click();
-  }, name);
-}
+import { serveDist, launch, openShoal, TIERS, saveArtifact, waitFrames, axTree, axFind as find, mirroredButton, pressMirrored as press } from "./harness.mjs";
 
 for (const tier of TIERS) {
   describe(`languages (${tier})`, () => {
