@@ -352,7 +352,8 @@ fn prose_literals(code: &str) -> Vec<(usize, String)> {
                     }
                     i += 1;
                 }
-                let literal = &code[start..i.min(code.len())];
+                let literal = continued(&code[start..i.min(code.len())], raw);
+                let literal = literal.as_str();
                 let source_line = code.lines().nth(start_line - 1).unwrap_or_default();
                 // A CSV file's comment lines are English like the whole file
                 // (README, Languages): programs read its column names.
@@ -365,6 +366,22 @@ fn prose_literals(code: &str) -> Vec<(usize, String)> {
         }
         i += 1;
     }
+    out
+}
+
+/// A string literal's text as Rust reads it across lines: a `\` at the end of
+/// a line drops the line break and the next line's indent (not in a raw string).
+fn continued(literal: &str, raw: bool) -> String {
+    if raw {
+        return literal.to_owned();
+    }
+    let mut out = String::new();
+    let mut rest = literal;
+    while let Some(at) = rest.find("\\\n") {
+        out.push_str(&rest[..at]);
+        rest = rest[at + 2..].trim_start();
+    }
+    out.push_str(rest);
     out
 }
 
@@ -381,6 +398,9 @@ fn the_lint_sees_words_and_not_keys() {
     assert!(is_prose("{} and {} spawned"));
     let code = "fn f() {\n    ui.button(\"Hide\");\n    log::info!(\"a b c\");\n    tr!(\"hide\");\n}\n#[cfg(test)]\nmod tests { \"Ignored words\" }";
     assert_eq!(prose_literals(code), vec![(2, "Hide".to_owned())]);
+    // A literal continued over lines reads as one line.
+    let code = "fn f() {\n    ui.label(\"Hide \\\n        this\");\n}\n";
+    assert_eq!(prose_literals(code), vec![(2, "Hide this".to_owned())]);
 }
 
 #[test]
