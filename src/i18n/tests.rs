@@ -497,10 +497,9 @@ fn messages_take_variables_plurals_and_numbers() {
 /// where the copy is stale.
 #[test]
 fn the_page_s_words_before_loading_match_the_catalogue() {
-    let script = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("web/shoal-page.js"),
-    )
-    .unwrap();
+    let script =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("web/shoal-page.js"))
+            .unwrap();
     let table = script
         .split("/* words-begin */")
         .nth(1)
@@ -510,7 +509,10 @@ fn the_page_s_words_before_loading_match_the_catalogue() {
         serde_json::from_str(table).expect("the words are JSON");
     assert_eq!(
         copies.keys().cloned().collect::<Vec<_>>(),
-        Lang::ALL.iter().map(|l| l.code().to_owned()).collect::<Vec<_>>(),
+        Lang::ALL
+            .iter()
+            .map(|l| l.code().to_owned())
+            .collect::<Vec<_>>(),
         "one table per language of the catalogue"
     );
     let mut args = FluentArgs::new();

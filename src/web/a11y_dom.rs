@@ -32,19 +32,9 @@ const ROOT_ID: &str = "shoal_a11y";
 const RING_ID: &str = "shoal_focus_ring";
 const LIVE_ID: &str = "shoal_live";
 
-/// The style of the mirror: invisible elements over the canvas that never
-/// take a mouse click from it, and a focus ring that shows on any colour.
-const STYLE: &str = concat!(
-    "#shoal_a11y { position: fixed; inset: 0; overflow: hidden; pointer-events: none; z-index: 1; }\n", // words: CSS
-    "#shoal_a11y [data-node] { position: absolute; box-sizing: border-box; margin: 0; padding: 0;\n", // words: CSS
-    "  border: 0; opacity: 0; pointer-events: none; overflow: hidden; white-space: nowrap;\n", // words: CSS
-    "  font-size: 12px; min-width: 1px; min-height: 1px; }\n", // words: CSS
-    "#shoal_a11y section[data-node] { position: static; opacity: 1; overflow: visible; }\n", // words: CSS
-    "#shoal_focus_ring { position: fixed; display: none; pointer-events: none; z-index: 2;\n", // words: CSS
-    "  border-radius: 4px; box-shadow: 0 0 0 2px #0b1118, 0 0 0 5px #ffd24a, 0 0 0 7px #0b1118; }\n", // words: CSS
-    ".shoal_sr_only { position: absolute; width: 1px; height: 1px; margin: -1px; padding: 0;\n", // words: CSS
-    "  overflow: hidden; clip: rect(0 0 0 0); white-space: nowrap; border: 0; }\n", // words: CSS
-);
+// The mirror's style (invisible elements over the canvas, the focus ring) is in
+// web/shoal-page.css: a school's Content Security Policy refuses a <style>
+// element made here.
 
 thread_local! {
     static MIRROR: RefCell<Option<DomMirror>> = const { RefCell::new(None) };
@@ -179,9 +169,6 @@ impl DomMirror {
             .and_then(|w| w.document())
             .ok_or("no document")?; // words: a developer's error, logged
         let body = document.body().ok_or("no body")?; // words: a developer's error, logged
-        let style = document.create_element("style")?;
-        style.set_text_content(Some(STYLE));
-        document.head().ok_or("no head")?.append_child(&style)?; // words: a developer's error, logged
 
         // Before the canvas: Tab reaches the controls first, the tank after.
         let root = html(document.create_element("div")?)?;

@@ -4,6 +4,7 @@
 use std::cell::RefCell;
 
 use wasm_bindgen::JsCast;
+use wasm_bindgen::closure::Closure;
 
 use crate::i18n::ts;
 use crate::tr;
@@ -120,7 +121,15 @@ fn show(title: &str, paragraphs: &[&str], class: &str, reload: &str) {
     }
     if let Ok(button) = document.create_element("button") {
         button.set_text_content(Some(reload));
-        let _ = button.set_attribute("onclick", "location.reload()");
+        // A listener, not an `onclick` attribute: a Content Security Policy
+        // without 'unsafe-inline' refuses inline handlers.
+        let reload = Closure::<dyn Fn()>::new(|| {
+            if let Some(window) = web_sys::window() {
+                let _ = window.location().reload();
+            }
+        });
+        let _ = button.add_event_listener_with_callback("click", reload.as_ref().unchecked_ref());
+        reload.forget(); // One button per page load.
         let _ = notice.append_child(&button);
     }
 }

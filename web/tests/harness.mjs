@@ -18,11 +18,14 @@ const MIME = {
   ".wasm": "application/wasm",
   ".css": "text/css",
   ".png": "image/png",
+  ".svg": "image/svg+xml",
+  ".webmanifest": "application/manifest+json",
   ".json": "application/json",
 };
 
-/** Serves dist/ on a free loopback port. */
-export async function serveDist() {
+/** Serves dist/ on a free loopback port, with `headers` on every answer (a
+ * school's Content-Security-Policy, say). */
+export async function serveDist({ headers = {} } = {}) {
   if (!fs.existsSync(path.join(distDir, "index.html"))) {
     throw new Error("dist/index.html is missing: build the web app first (trunk build --release)");
   }
@@ -39,7 +42,7 @@ export async function serveDist() {
         res.writeHead(404).end("not found");
         return;
       }
-      res.writeHead(200, { "Content-Type": MIME[path.extname(file)] || "application/octet-stream" });
+      res.writeHead(200, { "Content-Type": MIME[path.extname(file)] || "application/octet-stream", ...headers });
       res.end(data);
     });
   });
