@@ -121,3 +121,16 @@
     document.documentElement.classList.remove("shoal-keys");
   }, true);
 })();
+
+// Offline: after the first visit, a service worker keeps the app's files, so a
+// class whose network fails (or filters) mid-lesson can reload and go on
+// (web/shoal-sw.js). Not from a file:// page, where browsers allow none.
+(function () {
+  "use strict";
+  if (!("serviceWorker" in navigator) || location.protocol === "file:") return;
+  window.addEventListener("load", function () {
+    navigator.serviceWorker.register("shoal-sw.js").catch(function (e) {
+      console.warn("Shoal works online only here: " + e.message);
+    });
+  });
+})();

@@ -48,7 +48,12 @@ export async function serveDist({ headers = {} } = {}) {
   });
   await new Promise((resolve) => server.listen(0, "127.0.0.1", resolve));
   const { port } = server.address();
-  return { url: `http://127.0.0.1:${port}/`, close: () => new Promise((r) => server.close(r)) };
+  return {
+    url: `http://127.0.0.1:${port}/`,
+    close: () => new Promise((r) => server.close(r)),
+    /** Drops every open connection at once, as a network that fails does. */
+    closeAll: () => server.closeAllConnections(),
+  };
 }
 
 const BASE_FLAGS = [

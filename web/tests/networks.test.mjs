@@ -1,6 +1,7 @@
 // Every classroom: Shoal starts behind a district's strict Content Security
 // Policy (no inline script or style, WebAssembly allowed), and nothing on the
-// page breaks that policy while it runs.
+// page breaks that policy while it runs; it installs as an app, and after one
+// visit it reloads and runs with no network at all.
 import { describe, test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { serveDist, launch, TIERS, saveArtifact, pressMirrored, mirroredButton } from "./harness.mjs";
@@ -52,6 +53,55 @@ for (const tier of TIERS) {
       assert.deepEqual(await page.evaluate(() => window.__cspViolations), []);
       assert.deepEqual(errors, []);
       await page.close();
+    });
+
+    test("installable, and after one visit it reloads and runs with the network gone", async () => {
+      const own = await serveDist();
+      const context = await browser.newContext({ viewport: { width: 1024, height: 640 } });
+      try {
+        const page = await context.newPage();
+        const errors = [];
+        page.on("pageerror", (e) => errors.push(`pageerror: ${e.message}`));
+        await page.goto(`${own.url}?lang=es#`);
+        await page.waitForFunction(() => window.shoal && window.shoal.state().steps > 30, null, { timeout: 120_000 });
+        // The app's manifest, as Chrome reads it (a test's private window cannot
+        // install, so the manifest is checked rather than the install prompt).
+        const cdp = await context.newCDPSession(page);
+        const manifest = await cdp.send("Page.getAppManifest");
+        assert.deepEqual(manifest.errors, [], "the manifest parses without errors");
+        const parsed = JSON.parse(manifest.data);
+        assert.equal(parsed.display, "standalone");
+        assert.ok(["192x192", "512x512"].every((s) => parsed.icons.some((i) => i.sizes === s)), "icons Chrome needs to install");
+        for (const icon of parsed.icons) {
+          const response = await page.request.get(new URL(icon.src, own.url).href);
+          assert.equal(response.status(), 200, icon.src);
+        }
+        // The service worker has kept every file of this version.
+        await page.waitForFunction(
+          async () => {
+            const reg = await navigator.serviceWorker.getRegistration();
+            if (!reg || !reg.active || !navigator.serviceWorker.controller) return false;
+            const cache = await caches.open("shoal-app");
+            const urls = (await cache.keys()).map((r) => new URL(r.url).pathname);
+            return urls.some((u) => u.endsWith("_bg.wasm")) && urls.includes("/") && urls.includes("/shoal-start.js");
+          },
+          null,
+          { timeout: 120_000, polling: 1000 },
+        );
+        // The school's network fails: no server, and the browser offline.
+        own.closeAll();
+        await own.close();
+        await context.setOffline(true);
+        await page.reload();
+        await page.waitForFunction(() => window.shoal && window.shoal.state().steps > 30, null, { timeout: 120_000 });
+        assert.equal(await page.evaluate(() => window.shoal.state().lang), "es", "the link's language survives");
+        saveArtifact(`networks-${tier}-offline.png`, await page.screenshot());
+        assert.deepEqual(errors, []);
+      } finally {
+        await context.close();
+        own.closeAll();
+        await own.close();
+      }
     });
   });
 }
