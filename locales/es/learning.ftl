@@ -11,12 +11,12 @@ learning-train-start = Empezar a entrenar
     .help = El pez practica un poco en cada cuadro: cambia al azar el ritmo de sus músculos, se queda con los cambios que lo llevan más lejos y a veces se queda con uno peor para explorar (recocido simulado)
 learning-train-pause = Pausar el entrenamiento
 learning-reset = Reiniciar el entrenamiento
-    .help = Olvidarlo todo: el pez vuelve a no saber nadar, como si no tuviera cerebro
+    .help = Borra todo lo aprendido: el pez vuelve a no saber nadar, como si no tuviera cerebro
 learning-swimmer-uses = El nadador entre las boyas usa
     .help = Qué controladores hacen nadar al pez entre las dos boyas naranjas: los ajustados a mano que escribieron sus diseñadores, o los que aprendió por sí mismo
 learning-learned = Aprendidos
 learning-hand-tuned = Ajustados a mano
-learning-race = Hacer la carrera
+learning-race = Empezar la carrera
     .help = Copias del pez, guardadas después de más y más intentos del primer ejercicio, compiten desde la misma línea de salida (la Fig. 7 del artículo). Practicar ayuda mucho al principio y luego casi nada: las dos últimas copias llegan casi juntas
 learning-save = Guardar controladores
     .help = Descarga como archivo lo que aprendió el pez
@@ -25,7 +25,7 @@ learning-load = Cargar controladores
 
 ## Los ejercicios.
 learning-drill-swim-far = nadar lo más lejos que pueda
-learning-drill-hold-speed = nadar derecho a { $speed } largos de cuerpo/s
+learning-drill-hold-speed = nadar en línea recta a { $speed } largos de cuerpo/s
 learning-drill-turn-left = girar a la izquierda a { $rate }°/s
 learning-drill-turn-right = girar a la derecha a { $rate }°/s
 
@@ -45,7 +45,7 @@ learning-swimmer-on-its-way = Nadador: en camino a la primera boya
 learning-swimmer-first-buoy = Nadador: primera boya a los { $first } s
 learning-swimmer-buoys = Nadador: boyas a los { $first } s y a los { $second } s
 learning-race-after = Carrera después de { $seconds } s (la Fig. 7 del artículo):
-learning-race-racer = corredor
+learning-race-racer = competidor
 learning-race-practice = práctica (intentos)
 learning-race-distance = distancia
 learning-race-metres = { $distance } m
@@ -75,7 +75,7 @@ learning-save-failed = no se pudieron escribir los controladores: { $reason }
 learning-race-not-ready = la carrera necesita que termine el primer ejercicio ({ $done } de { $needed } pasos de recocido simulado hechos)
 
 ## Por qué no se puede usar un archivo de controladores.
-learning-map-no-straight = no se aprendió ningún controlador para nadar derecho que haga avanzar al pez
+learning-map-no-straight = no se aprendió ningún controlador para nadar en línea recta que haga avanzar al pez
 learning-map-invalid = un controlador aprendido contiene un número no finito o demasiados modos
 learning-set-too-large = el archivo pesa más de { $max } bytes
 learning-set-not-a-set = el archivo no es un conjunto de controladores aprendidos: { $reason }
@@ -87,7 +87,7 @@ learning-set-map = el conjunto no puede hacer nadar a un pez: { $reason }
 
 ## Las negativas del laboratorio (src/lab.rs): órdenes de la API shoal.* y de los paneles.
 lab-error-learning-lab-only = { $command }() solo funciona en el laboratorio de aprendizaje
-lab-error-physics-scene-only = turn() solo funciona en la escena de peces físicos
+lab-error-physics-scene-only = turn() solo funciona en la escena de los peces físicos
 lab-error-no-fish-selected = turn(): primero selecciona un pez (physics.selected)
 lab-error-turn-out-of-range = turn(): { $angle } está fuera de rango: elige de -{ $max } a { $max } grados
 lab-error-no-moment = skip(): esta escena no tiene un momento al que saltar (las demostraciones del arrecife sí lo tienen)

@@ -698,7 +698,7 @@ mod tests {
                 drill_label(&Task::HoldSpeed {
                     speed_body_lengths_per_sec: 0.25
                 }),
-                "nadar derecho a 0,25 largos de cuerpo/s"
+                "nadar en línea recta a 0,25 largos de cuerpo/s"
             );
             assert_eq!(
                 tr!("learning-swimmer-first-buoy", first = num(3.34, 1)),
