@@ -7,12 +7,14 @@
 use glam::Vec3;
 
 use crate::clock::{FixedStepClock, RateMeter};
+use crate::i18n::{arg, tr};
 use crate::settings::physics::TURN_MAX_DEG;
 use crate::settings::{Scene, Settings, Side};
 use crate::sim::World;
 use crate::sim::learning::learning_lab::LearningLab;
 use crate::sim::learning::learning_lab::RaceNotReady;
 use crate::sim::scene::SceneWorld;
+use crate::tr;
 
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod census;
@@ -22,22 +24,50 @@ pub use run::{BODY_TRACE_SECS, BodySample, Run};
 pub use skip::{SKIP_FRAME_BUDGET_SECS, SKIP_LIMIT_SECS, SkipOutcome, SkipProgress};
 
 /// Why the lab refused a command (`shoal.turn`, `shoal.train`, `shoal.race`).
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+/// In the language in force: English unless the page asks for another.
+#[derive(Clone, Debug, PartialEq)]
 pub enum LabError {
     /// The command (named without its parentheses) needs the learning lab.
-    #[error("{0}() works in the learning lab only")]
     LearningLabOnly(&'static str),
-    #[error("turn() works in the physics fish scene only")]
     PhysicsSceneOnly,
-    #[error("turn(): select a fish first (physics.selected)")]
     NoFishSelected,
-    #[error("turn(): {0} is out of range: choose from -{TURN_MAX_DEG} to {TURN_MAX_DEG} degrees")]
     TurnOutOfRange(f32),
-    #[error(transparent)]
-    RaceNotReady(#[from] RaceNotReady),
-    #[error("skip(): this scene has no moment to skip to (the reef's demos have)")]
+    RaceNotReady(RaceNotReady),
     NoMoment,
 }
+
+impl From<RaceNotReady> for LabError {
+    fn from(e: RaceNotReady) -> Self {
+        Self::RaceNotReady(e)
+    }
+}
+
+impl std::fmt::Display for LabError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let text = match self {
+            Self::LearningLabOnly(command) => {
+                tr!("lab-error-learning-lab-only", command = *command)
+            }
+            Self::PhysicsSceneOnly => tr("lab-error-physics-scene-only"),
+            Self::NoFishSelected => tr("lab-error-no-fish-selected"),
+            Self::TurnOutOfRange(angle) => tr!(
+                "lab-error-turn-out-of-range",
+                // NaN and infinity as Rust writes them, not as symbols.
+                angle = if angle.is_finite() {
+                    arg(*angle)
+                } else {
+                    arg(angle.to_string())
+                },
+                max = TURN_MAX_DEG
+            ),
+            Self::RaceNotReady(e) => return std::fmt::Display::fmt(e, f),
+            Self::NoMoment => tr("lab-error-no-moment"),
+        };
+        f.write_str(&text)
+    }
+}
+
+impl std::error::Error for LabError {}
 
 /// The running experiment: one tank, or two side by side, sharing one clock.
 pub struct Lab {

@@ -12,6 +12,7 @@ use super::files::{FileError, PendingFile, open_text_file, save_text_file};
 use super::scene_panel::{Notice, ScenePanel};
 use super::setting_slider::setting_row;
 use super::studio_panel::{control, control_row};
+use crate::i18n::{num, tr, ts};
 use crate::lab::{Lab, LabError, Run};
 use crate::render::Framing;
 use crate::settings::Settings;
@@ -22,6 +23,7 @@ use crate::sim::body::{MuscleSegment, Side};
 use crate::sim::learning::learned_set::LearnedSetError;
 use crate::sim::learning::learning_lab::{ControllerChoice, LearningLab, SetSource};
 use crate::sim::learning::{Abstraction, Task};
+use crate::tr;
 
 /// The learning lab's one-off actions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -44,24 +46,24 @@ fn learning_controls_ui(
 ) -> Vec<LearningAction> {
     let mut actions = Vec::new();
     ui.separator();
-    ui.label(egui::RichText::new("Learning to swim").strong());
+    ui.label(egui::RichText::new(ts("learning-heading")).strong());
     egui::Grid::new("learning_grid")
         .num_columns(2)
         .spacing([8.0, 6.0])
         .show(ui, |ui| {
-            let help = "Who learns. A shark is the same body, twice as long";
+            let help = ts("learning-learner.help");
             control_row(
                 ui,
                 rects,
                 "learning.species",
                 |ui| {
-                    ui.label("Learner").on_hover_text(help);
+                    ui.label(ts("learning-learner")).on_hover_text(help);
                 },
                 |ui, rects| {
                     ui.horizontal(|ui| {
                         for (species, label, name) in [
-                            (BodySpecies::Fish, "Fish", "learning_fish"),
-                            (BodySpecies::Shark, "Shark", "learning_shark"),
+                            (BodySpecies::Fish, ts("learning-fish"), "learning_fish"),
+                            (BodySpecies::Shark, ts("learning-shark"), "learning_shark"),
                         ] {
                             let r = ui
                                 .radio_value(&mut learning.species, species, label)
@@ -82,41 +84,41 @@ fn learning_controls_ui(
         });
     ui.horizontal(|ui| {
         let label = if learning.training {
-            "Pause training"
+            ts("learning-train-pause")
         } else {
-            "Start training"
+            ts("learning-train-start")
         };
         control(ui, rects, "learning.training", |ui, rects| {
-            let r = ui.button(label).on_hover_text(
-                "The fish practises a little every frame: it changes its muscle timing at \
-                 random, keeps changes that take it farther, and sometimes keeps a worse one \
-                 to explore",
-            );
+            let r = ui
+                .button(label)
+                .on_hover_text(ts("learning-train-start.help"));
             rects.insert("learning_train", r.rect);
             if r.clicked() {
                 learning.training = !learning.training;
             }
         });
         let r = ui
-            .button("Reset training")
-            .on_hover_text("Forget everything: the fish is brain-dead again");
+            .button(ts("learning-reset"))
+            .on_hover_text(ts("learning-reset.help"));
         rects.insert("learning_reset", r.rect);
         if r.clicked() {
             actions.push(LearningAction::ResetTraining);
             learning.training = false;
         }
     });
-    let help = "Which controllers swim the fish between the two orange buoys: the hand-tuned \
-                ones its designers wrote, or the ones it learned by itself";
-    ui.label("The swimmer between the buoys uses")
-        .on_hover_text(help);
+    let help = ts("learning-swimmer-uses.help");
+    ui.label(ts("learning-swimmer-uses")).on_hover_text(help);
     control(ui, rects, "learning.controller", |ui, rects| {
         ui.horizontal(|ui| {
             for (choice, label, name) in [
-                (ControllerChoice::Learned, "Learned", "learning_learned"),
+                (
+                    ControllerChoice::Learned,
+                    ts("learning-learned"),
+                    "learning_learned",
+                ),
                 (
                     ControllerChoice::HandTuned,
-                    "Hand-tuned",
+                    ts("learning-hand-tuned"),
                     "learning_hand_tuned",
                 ),
             ] {
@@ -128,11 +130,9 @@ fn learning_controls_ui(
         })
     });
     ui.horizontal(|ui| {
-        let r = ui.button("Run the race").on_hover_text(
-            "Copies of the fish, saved after more and more tries of the first drill, race \
-             from the same start line (the paper's Fig. 7). Practice helps a lot at first \
-             and then hardly at all: the last two copies finish almost together",
-        );
+        let r = ui
+            .button(ts("learning-race"))
+            .on_hover_text(ts("learning-race.help"));
         rects.insert("learning_race", r.rect);
         if r.clicked() {
             actions.push(LearningAction::StartRace);
@@ -140,15 +140,15 @@ fn learning_controls_ui(
     });
     ui.horizontal(|ui| {
         let r = ui
-            .button("Save controllers")
-            .on_hover_text("Download what the fish learned as a file");
+            .button(ts("learning-save"))
+            .on_hover_text(ts("learning-save.help"));
         rects.insert("learning_save", r.rect);
         if r.clicked() {
             actions.push(LearningAction::SaveControllers);
         }
         let r = ui
-            .button("Load controllers")
-            .on_hover_text("Open a file saved before; the swimmer then uses it");
+            .button(ts("learning-load"))
+            .on_hover_text(ts("learning-load.help"));
         rects.insert("learning_load", r.rect);
         if r.clicked() {
             actions.push(LearningAction::LoadControllers);
@@ -201,12 +201,13 @@ pub fn learning_plots_ui(
 fn progress_ui(ui: &mut egui::Ui, lab: &LearningLab, rects: &mut WidgetRects) {
     let drills = lab.drills().len();
     let title = match lab.current_drill() {
-        Some(k) => format!(
-            "Drill {} of {drills}: {}",
-            k + 1,
-            Task::label(&lab.drills()[k])
+        Some(k) => tr!(
+            "learning-drill-title",
+            number = k + 1,
+            count = drills,
+            drill = drill_label(&lab.drills()[k])
         ),
-        None => format!("All {drills} drills learned"),
+        None => tr!("learning-all-drills", count = drills),
     };
     ui.label(egui::RichText::new(title).strong());
     let r = ui.add(
@@ -217,58 +218,61 @@ fn progress_ui(ui: &mut egui::Ui, lab: &LearningLab, rects: &mut WidgetRects) {
     rects.insert("learning_progress", r.rect);
     let t = lab.trainer();
     if lab.current_drill().is_some() {
-        ui.label(format!(
-            "{} of {} tries · best E {:.3} · temperature {:.4}",
-            t.evaluations(),
-            lab.annealing_steps(),
-            t.best_evaluation().objective,
-            t.temperature()
+        ui.label(tr!(
+            "learning-tries",
+            tries = t.evaluations(),
+            total = lab.annealing_steps(),
+            best = num(f64::from(t.best_evaluation().objective), 3),
+            temperature = num(f64::from(t.temperature()), 4)
         ))
-        .on_hover_text(
-            "E is what the fish tries to make small: how far it ended from its goal, plus a \
-             little for jerky muscles. The temperature is how willing it still is to try worse \
-             moves; it cools down as training goes on",
-        );
+        .on_hover_text(ts("learning-tries.help"));
     }
     let (_, source) = lab.learned_set();
-    ui.label(format!(
-        "Learned controllers in use: {}",
-        match source {
-            SetSource::Shipped => "the shipped set (trained before)",
-            SetSource::TrainedHere => "trained here",
-            SetSource::Loaded => "loaded from a file",
-        }
+    ui.label(tr!(
+        "learning-in-use",
+        source = ts(match source {
+            SetSource::Shipped => "learning-source-shipped",
+            SetSource::TrainedHere => "learning-source-here",
+            SetSource::Loaded => "learning-source-loaded",
+        })
     ));
     let times = lab.buoy_times_secs();
     ui.label(match times.as_slice() {
-        [] => "Swimmer: on its way to the first buoy".to_owned(),
-        [a] => format!("Swimmer: first buoy at {a:.1} s"),
-        [a, b, ..] => format!("Swimmer: buoys at {a:.1} s and {b:.1} s"),
+        [] => tr("learning-swimmer-on-its-way"),
+        [a] => tr!("learning-swimmer-first-buoy", first = num(f64::from(*a), 1)),
+        [a, b, ..] => tr!(
+            "learning-swimmer-buoys",
+            first = num(f64::from(*a), 1),
+            second = num(f64::from(*b), 1)
+        ),
     });
     if let Some(race) = lab.race() {
         let distances = race.distances_m();
         let leader = race.leader();
         let r = ui
             .vertical(|ui| {
-                ui.label(format!(
-                    "Race after {:.1} s (the paper's Fig. 7):",
-                    race.time_secs()
+                ui.label(tr!(
+                    "learning-race-after",
+                    seconds = num(f64::from(race.time_secs()), 1)
                 ));
                 egui::Grid::new("race_results")
                     .num_columns(3)
                     .spacing([12.0, 2.0])
                     .striped(true)
                     .show(ui, |ui| {
-                        ui.strong("racer");
-                        ui.strong("practice (tries)");
-                        ui.strong("distance");
+                        ui.strong(ts("learning-race-racer"));
+                        ui.strong(ts("learning-race-practice"));
+                        ui.strong(ts("learning-race-distance"));
                         ui.end_row();
                         for (k, (e, d)) in race.entrants().zip(&distances).enumerate() {
                             let first = Some(k) == leader;
                             let name = format!("{}{}", if first { "★ " } else { "" }, k + 1);
                             ui.label(name);
                             ui.label(e.annealing_steps.to_string());
-                            ui.label(format!("{d:.2} m"));
+                            ui.label(tr!(
+                                "learning-race-metres",
+                                distance = num(f64::from(*d), 2)
+                            ));
                             ui.end_row();
                         }
                     });
@@ -280,7 +284,7 @@ fn progress_ui(ui: &mut egui::Ui, lab: &LearningLab, rects: &mut WidgetRects) {
 
 fn objective_plot_ui(ui: &mut egui::Ui, lab: &LearningLab, height: f32, rects: &mut WidgetRects) {
     // One line, as `height` assumes: a narrow window cuts the caption short.
-    ui.add(egui::Label::new("How well it swims (E, lower is better)").truncate());
+    ui.add(egui::Label::new(ts("learning-objective-caption")).truncate());
     let history = lab.trainer().history();
     // At most ~600 points drawn.
     let every = (history.len() / 600).max(1);
@@ -303,17 +307,17 @@ fn objective_plot_ui(ui: &mut egui::Ui, lab: &LearningLab, height: f32, rects: &
         .allow_scroll(false)
         .allow_drag(false)
         .legend(Legend::default())
-        .x_axis_label("tries")
+        .x_axis_label(ts("learning-axis-tries"))
         .show(ui, |plot| {
             // Named in the legend, and told apart by the line as well as the
             // colour: the try now dotted grey, the best so far solid green.
             plot.line(
-                Line::new("now", series(false))
+                Line::new(ts("learning-line-now"), series(false))
                     .color(super::palette::GREY)
                     .style(egui_plot::LineStyle::dotted_dense()),
             );
             plot.line(
-                Line::new("best", series(true))
+                Line::new(ts("learning-line-best"), series(true))
                     .color(super::palette::BLUISH_GREEN)
                     .width(2.0),
             );
@@ -322,53 +326,87 @@ fn objective_plot_ui(ui: &mut egui::Ui, lab: &LearningLab, height: f32, rects: &
 }
 
 /// The four muscles of the left side that swim and turn (middle and tail
-/// segments, dorsal), the ones Fig. 8 shows.
-fn shown_muscles() -> [(usize, &'static str); 2] {
+/// segments, dorsal), the ones Fig. 8 shows: each muscle, its name in the
+/// legend, and whether it is the tail's.
+fn shown_muscles() -> [(usize, &'static str, bool); 2] {
     [
-        (muscle_index(MuscleSegment::Middle, Side::Left), "middle"),
-        (muscle_index(MuscleSegment::Posterior, Side::Left), "tail"),
+        (
+            muscle_index(MuscleSegment::Middle, Side::Left),
+            ts("learning-muscle-middle"),
+            false,
+        ),
+        (
+            muscle_index(MuscleSegment::Posterior, Side::Left),
+            ts("learning-muscle-tail"),
+            true,
+        ),
     ]
 }
 
+/// A drill in words ("swim as far as it can", "turn left at 15°/s").
+fn drill_label(task: &Task) -> String {
+    match *task {
+        Task::ReachTarget { .. } => tr("learning-drill-swim-far"),
+        Task::HoldSpeed {
+            speed_body_lengths_per_sec,
+        } => tr!(
+            "learning-drill-hold-speed",
+            speed = speed_body_lengths_per_sec
+        ),
+        Task::TurnHeading {
+            turn_rate_deg_per_sec,
+            ..
+        } => tr!(
+            if turn_rate_deg_per_sec >= 0.0 {
+                "learning-drill-turn-left"
+            } else {
+                "learning-drill-turn-right"
+            },
+            rate = turn_rate_deg_per_sec.abs()
+        ),
+    }
+}
+
 fn fig8_ui(ui: &mut egui::Ui, a: &Abstraction, width: f32, height: f32, rects: &mut WidgetRects) {
-    let rows: [(&str, &str, &str); 3] = [
-        ("learning_raw_plot", "What it learned (left muscles)", "raw"),
+    let rows: [(&str, &str, &str, &str); 3] = [
+        (
+            "learning_raw_plot",
+            ts("learning-fig8-raw"),
+            ts("learning-fig8-raw.help"),
+            "raw",
+        ),
         (
             "learning_modes_plot",
-            "Main rhythms (Fourier modes)",
+            ts("learning-fig8-modes"),
+            ts("learning-fig8-modes.help"),
             "modes",
         ),
         (
             "learning_abstract_plot",
-            "Simplified controller",
+            ts("learning-fig8-abstract"),
+            ts("learning-fig8-abstract.help"),
             "abstract",
         ),
     ];
-    for (name, title, kind) in rows {
+    for (name, title, help, kind) in rows {
         ui.separator();
         ui.vertical(|ui| {
             ui.set_width(width);
             ui.add(egui::Label::new(title).truncate())
-                .on_hover_text(match kind {
-                "raw" => "How hard each muscle pulls over the practice swim, as learned",
-                "modes" => "The few waves (frequencies) that carry most of the learned pattern",
-                _ => {
-                    "The learned pattern rebuilt from those few waves: this is what the fish keeps"
-                }
-            });
+                .on_hover_text(help);
             let r = Plot::new(name)
                 .height(height)
                 .include_y(0.0)
                 .include_y(1.0)
                 .allow_scroll(false)
                 .allow_drag(false)
-                .x_axis_label("time (s)")
+                .x_axis_label(ts("learning-axis-time"))
                 .legend(Legend::default())
                 .show(ui, |plot| {
-                    for (m, label) in shown_muscles() {
+                    for (m, label, tail) in shown_muscles() {
                         // The tail solid vermillion, the middle dashed sky blue,
                         // each named in the legend.
-                        let (color, line) = if label == "tail" {
+                        let (color, line) = if tail {
                             (super::palette::VERMILLION, egui_plot::LineStyle::Solid)
                         } else {
                             (
@@ -480,10 +518,10 @@ impl ScenePanel for LearningPanel {
                 }
                 LearningAction::StartRace => lab
                     .learning_mut()
-                    .ok_or_else(|| "Open the learning lab first.".to_owned())
+                    .ok_or_else(|| tr("learning-open-first"))
                     .and_then(|l| l.start_race().map_err(|e| e.to_string()))
                     .err()
-                    .map(|reason| Notice::info(format!("No race yet: {reason}."))),
+                    .map(|reason| Notice::info(tr!("learning-no-race", reason = reason))),
                 LearningAction::SaveControllers => Some(
                     match controllers_json(lab).and_then(|json| {
                         Ok(save_text_file(
@@ -571,30 +609,62 @@ impl LearningPanel {
         let text = self.pending_load.borrow_mut().take()?;
         let result = text.and_then(|text| {
             lab.learning_mut()
-                .ok_or_else(|| "open the learning lab first".to_owned())
+                .ok_or_else(|| tr("learning-open-first-reason"))
                 .and_then(|l| l.load_json(&text).map_err(|e| e.to_string()))
         });
         Some(match result {
-            Ok(()) => Notice::info("Controllers loaded: the swimmer now uses them."),
-            Err(reason) => Notice::error(format!(
-                "That file cannot be used, nothing was changed: {reason}"
-            )),
+            Ok(()) => Notice::info(tr("learning-loaded")),
+            Err(reason) => Notice::error(tr!("learning-load-refused", reason = reason)),
         })
     }
 }
 
 /// Why the learned controllers could not be saved.
-#[derive(Debug, thiserror::Error)]
+#[derive(Debug)]
 pub enum SaveControllersError {
     /// Not in the learning lab.
-    #[error(transparent)]
-    NotHere(#[from] LabError),
+    NotHere(LabError),
     /// The controllers could not be written as JSON.
-    #[error("the controllers could not be written: {0}")]
-    Set(#[from] LearnedSetError),
+    Set(LearnedSetError),
     /// The file could not be saved.
-    #[error(transparent)]
-    File(#[from] FileError),
+    File(FileError),
+}
+
+impl From<LabError> for SaveControllersError {
+    fn from(e: LabError) -> Self {
+        Self::NotHere(e)
+    }
+}
+
+impl From<LearnedSetError> for SaveControllersError {
+    fn from(e: LearnedSetError) -> Self {
+        Self::Set(e)
+    }
+}
+
+impl From<FileError> for SaveControllersError {
+    fn from(e: FileError) -> Self {
+        Self::File(e)
+    }
+}
+
+impl std::fmt::Display for SaveControllersError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NotHere(e) => std::fmt::Display::fmt(e, f),
+            Self::Set(e) => f.write_str(&tr!("learning-save-failed", reason = e.to_string())),
+            Self::File(e) => std::fmt::Display::fmt(e, f),
+        }
+    }
+}
+
+impl std::error::Error for SaveControllersError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::Set(e) => Some(e),
+            _ => None,
+        }
+    }
 }
 
 /// The learned controllers in use, as JSON (`shoal.save_controllers()`).
@@ -604,4 +674,71 @@ pub fn controllers_json(lab: &Lab) -> Result<String, SaveControllersError> {
         .learning()
         .ok_or(LabError::LearningLabOnly("save_controllers"))?
         .save_json()?)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::i18n::{Lang, with_lang};
+    use crate::sim::common::obstacle::ObstacleError;
+    use crate::sim::learning::learning_lab::RaceNotReady;
+
+    #[test]
+    fn the_learning_lab_and_the_rocks_speak_spanish() {
+        with_lang(Lang::Es, || {
+            assert_eq!(ts("learning-train-start"), "Empezar a entrenar");
+            assert_eq!(
+                drill_label(&Task::TurnHeading {
+                    turn_rate_deg_per_sec: -22.5,
+                    speed_body_lengths_per_sec: 0.5,
+                }),
+                "girar a la derecha a 22,5°/s"
+            );
+            assert_eq!(
+                drill_label(&Task::HoldSpeed {
+                    speed_body_lengths_per_sec: 0.25
+                }),
+                "nadar en línea recta a 0,25 largos de cuerpo/s"
+            );
+            assert_eq!(
+                tr!("learning-swimmer-first-buoy", first = num(3.34, 1)),
+                "Nadador: primera boya a los 3,3 s"
+            );
+            let race = RaceNotReady {
+                done: 12,
+                needed: 6840,
+            }
+            .to_string();
+            assert!(race.contains("recocido simulado"), "{race}");
+            let glass = ObstacleError::NearTheGlass {
+                x_m: 1.5,
+                z_m: -2.25,
+            }
+            .to_string();
+            assert_eq!(
+                glass,
+                "debe quedar al menos a 1 m del vidrio (está en (1,50; −2,25) m)"
+            );
+            assert_eq!(
+                LabError::LearningLabOnly("train").to_string(),
+                "train() solo funciona en el laboratorio de aprendizaje"
+            );
+        });
+        // English stays the default, as the automation API's scripts read it.
+        assert_eq!(
+            LabError::LearningLabOnly("train").to_string(),
+            "train() works in the learning lab only"
+        );
+        assert_eq!(
+            drill_label(&Task::TurnHeading {
+                turn_rate_deg_per_sec: 15.0,
+                speed_body_lengths_per_sec: 0.5,
+            }),
+            Task::TurnHeading {
+                turn_rate_deg_per_sec: 15.0,
+                speed_body_lengths_per_sec: 0.5,
+            }
+            .label()
+        );
+    }
 }

@@ -15,10 +15,12 @@ use super::hard_rules::push_shark_clear;
 use super::params::{SharkParams, StingrayParams};
 use super::shark::{self, Shark};
 use super::stingray::{self, Stingray};
+use crate::i18n::tr;
 use crate::sim::common::fish::Fish;
 use crate::sim::common::obstacle::{Obstacle, ObstacleError, ObstacleSet, WALL_CLEARANCE_M};
 use crate::sim::common::steering::SteeringParams;
 use crate::sim::common::tank::Tank;
+use crate::tr;
 
 /// Smallest gap between the footprints of two obstacles, in metres.
 /// Default 0.8 m: wide enough for fish (with their avoidance clearance) to
@@ -75,19 +77,39 @@ pub fn check_obstacles(
 }
 
 /// Why a teacher's obstacle edit was refused (nothing changed).
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum ObstacleEditError {
-    #[error(transparent)]
-    Invalid(#[from] ObstacleError),
-    #[error("there is no obstacle number {index} (there are {count})")]
+    Invalid(ObstacleError),
     NoSuchObstacle { index: usize, count: usize },
-    #[error("the new place must be a pair of numbers")]
     PlaceNotANumber,
-    #[error(
-        "it is too close to obstacle {0}: keep at least {EDITED_OBSTACLE_GAP_M} m between them"
-    )]
     TooClose(usize),
 }
+
+impl From<ObstacleError> for ObstacleEditError {
+    fn from(e: ObstacleError) -> Self {
+        Self::Invalid(e)
+    }
+}
+
+impl std::fmt::Display for ObstacleEditError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let text = match self {
+            Self::Invalid(e) => return std::fmt::Display::fmt(e, f),
+            Self::NoSuchObstacle { index, count } => {
+                tr!("boids-obstacle-no-such", index = *index, count = *count)
+            }
+            Self::PlaceNotANumber => tr("boids-obstacle-place-not-a-number"),
+            Self::TooClose(other) => tr!(
+                "boids-obstacle-too-close",
+                other = *other,
+                gap = EDITED_OBSTACLE_GAP_M
+            ),
+        };
+        f.write_str(&text)
+    }
+}
+
+impl std::error::Error for ObstacleEditError {}
 
 /// Is `obstacle` at least [`EDITED_OBSTACLE_GAP_M`] from each of `others`
 /// (except number `skip`)? Judged on the floor footprints: each footprint's

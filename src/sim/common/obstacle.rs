@@ -13,7 +13,9 @@
 use glam::{Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 
+use crate::i18n::{num, tr};
 use crate::sim::common::tank::Tank;
+use crate::tr;
 
 /// Smallest radius of a rock or pillar, in metres. Default 0.1 m: about a
 /// third of a fish; anything smaller would not be seen as an obstacle.
@@ -46,47 +48,80 @@ pub const WALL_CLEARANCE_M: f32 = 1.0;
 pub const SURFACE_CLEARANCE_M: f32 = 0.5;
 
 /// Why an obstacle cannot be put in the tank, in words a teacher understands.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum ObstacleError {
-    #[error("the radius must be between {MIN_RADIUS_M} m and {MAX_RADIUS_M} m (got {0} m)")]
     Radius(f32),
-    #[error(
-        "it must stay at least {WALL_CLEARANCE_M} m away from the glass (at ({x_m:.2}, {z_m:.2}) m)"
-    )]
     NearTheGlass { x_m: f32, z_m: f32 },
-    #[error("its position and height must be numbers")]
     HeightNotANumber,
-    #[error("it must stand on the sand (base at y = {floor_y_m} m, got {base_y_m} m)")]
     OffTheSand { floor_y_m: f32, base_y_m: f32 },
-    #[error(
-        "its height must be above 0 m and its top at least {SURFACE_CLEARANCE_M} m below the surface (height {0} m)"
-    )]
     Height(f32),
-    #[error("the rock's position must be numbers")]
     RockNotANumber,
-    #[error("the rock is buried in the sand: raise its centre")]
     RockBuried,
-    #[error("the rock floats: it must touch the sand")]
     RockFloats,
-    #[error("the rock's top must be at least {SURFACE_CLEARANCE_M} m below the surface")]
     RockTooHigh,
-    #[error("the pillar's position must be numbers")]
     PillarNotANumber,
-    #[error(
-        "a polygon needs {min} to {max} corners (got {0})",
-        min = POLYGON_VERTICES.start(),
-        max = POLYGON_VERTICES.end()
-    )]
     Corners(usize),
-    #[error("every corner must be a pair of numbers")]
     CornerNotANumber,
-    #[error("corners {0} and {1} are closer than {MIN_POLYGON_EDGE_M} m")]
     CornersTooClose(usize, usize),
-    #[error("the polygon is flat: its area is below {MIN_POLYGON_AREA_M2} m²")]
     Flat,
-    #[error("the polygon must be convex (it bends inwards at corner {0})")]
     NotConvex(usize),
 }
+
+impl std::fmt::Display for ObstacleError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let text = match *self {
+            Self::Radius(radius) => tr!(
+                "boids-obstacle-radius",
+                min = MIN_RADIUS_M,
+                max = MAX_RADIUS_M,
+                radius = radius
+            ),
+            Self::NearTheGlass { x_m, z_m } => tr!(
+                "boids-obstacle-near-the-glass",
+                gap = WALL_CLEARANCE_M,
+                x = num(f64::from(x_m), 2),
+                z = num(f64::from(z_m), 2)
+            ),
+            Self::HeightNotANumber => tr("boids-obstacle-height-not-a-number"),
+            Self::OffTheSand {
+                floor_y_m,
+                base_y_m,
+            } => tr!(
+                "boids-obstacle-off-the-sand",
+                floor = floor_y_m,
+                base = base_y_m
+            ),
+            Self::Height(height) => tr!(
+                "boids-obstacle-height",
+                gap = SURFACE_CLEARANCE_M,
+                height = height
+            ),
+            Self::RockNotANumber => tr("boids-obstacle-rock-not-a-number"),
+            Self::RockBuried => tr("boids-obstacle-rock-buried"),
+            Self::RockFloats => tr("boids-obstacle-rock-floats"),
+            Self::RockTooHigh => tr!("boids-obstacle-rock-too-high", gap = SURFACE_CLEARANCE_M),
+            Self::PillarNotANumber => tr("boids-obstacle-pillar-not-a-number"),
+            Self::Corners(count) => tr!(
+                "boids-obstacle-corners",
+                min = *POLYGON_VERTICES.start(),
+                max = *POLYGON_VERTICES.end(),
+                count = count
+            ),
+            Self::CornerNotANumber => tr("boids-obstacle-corner-not-a-number"),
+            Self::CornersTooClose(first, second) => tr!(
+                "boids-obstacle-corners-too-close",
+                first = first,
+                second = second,
+                min = MIN_POLYGON_EDGE_M
+            ),
+            Self::Flat => tr!("boids-obstacle-flat", min = MIN_POLYGON_AREA_M2),
+            Self::NotConvex(corner) => tr!("boids-obstacle-not-convex", corner = corner),
+        };
+        f.write_str(&text)
+    }
+}
+
+impl std::error::Error for ObstacleError {}
 
 /// A solid obstacle. Sizes in metres.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

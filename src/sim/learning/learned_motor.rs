@@ -199,13 +199,22 @@ fn side_role(x: f32) -> Role {
 }
 
 /// Why a map could not be built.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum LearnedMapError {
-    #[error("no straight-swimming controller that moves the fish forward was learned")]
     NoStraightController,
-    #[error("a learned controller contains a non-finite number or too many modes")]
     InvalidController,
 }
+
+impl std::fmt::Display for LearnedMapError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(crate::i18n::ts(match self {
+            Self::NoStraightController => "learning-map-no-straight",
+            Self::InvalidController => "learning-map-invalid",
+        }))
+    }
+}
+
+impl std::error::Error for LearnedMapError {}
 
 /// A point of one axis of the map: a controller (phases normalised) and where it
 /// sits (speed or |turn rate|).

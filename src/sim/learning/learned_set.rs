@@ -14,6 +14,7 @@ use crate::sim::learning::learned_motor::{
 };
 use crate::sim::learning::muscle_spline::MuscleSpline;
 use crate::sim::learning::objective::{Task, TrainingSetup};
+use crate::tr;
 
 /// Version written by this code and the only one read.
 pub const FORMAT_VERSION: u32 = 1;
@@ -118,26 +119,60 @@ pub struct LearnedControllerSet {
 }
 
 /// Why a file could not be loaded.
-#[derive(Debug, thiserror::Error)]
+#[derive(Debug)]
 pub enum LearnedSetError {
-    #[error("the file is larger than {MAX_FILE_BYTES} bytes")]
     TooLarge,
-    #[error("the file is not a learned controller set: {0}")]
-    Json(#[from] serde_json::Error),
-    #[error("the file has format version {found}; this Shoal reads version {expected}")]
+    Json(serde_json::Error),
     WrongVersion { found: u32, expected: u32 },
-    #[error(
-        "drill {drill}: the learned controls are damaged (wrong size, or a value outside [0, 1] or not a number)"
-    )]
     BadControls { drill: usize },
-    #[error(
-        "drill {drill}: the abstracted controller is damaged (a value that is not a number, or more than {MAX_MODES} modes)"
-    )]
     BadController { drill: usize },
-    #[error("drill {drill}: a measured speed, rate or objective is not a number")]
     NonFinite { drill: usize },
-    #[error("the set cannot drive a fish: {0}")]
-    Map(#[from] LearnedMapError),
+    Map(LearnedMapError),
+}
+
+impl From<serde_json::Error> for LearnedSetError {
+    fn from(e: serde_json::Error) -> Self {
+        Self::Json(e)
+    }
+}
+
+impl From<LearnedMapError> for LearnedSetError {
+    fn from(e: LearnedMapError) -> Self {
+        Self::Map(e)
+    }
+}
+
+impl std::fmt::Display for LearnedSetError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let text = match self {
+            Self::TooLarge => tr!("learning-set-too-large", max = MAX_FILE_BYTES),
+            Self::Json(e) => tr!("learning-set-not-a-set", reason = e.to_string()),
+            Self::WrongVersion { found, expected } => tr!(
+                "learning-set-wrong-version",
+                found = *found,
+                expected = *expected
+            ),
+            Self::BadControls { drill } => tr!("learning-set-bad-controls", drill = *drill),
+            Self::BadController { drill } => tr!(
+                "learning-set-bad-controller",
+                drill = *drill,
+                max = MAX_MODES
+            ),
+            Self::NonFinite { drill } => tr!("learning-set-non-finite", drill = *drill),
+            Self::Map(e) => tr!("learning-set-map", reason = e.to_string()),
+        };
+        f.write_str(&text)
+    }
+}
+
+impl std::error::Error for LearnedSetError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::Json(e) => Some(e),
+            Self::Map(e) => Some(e),
+            _ => None,
+        }
+    }
 }
 
 impl LearnedControllerSet {

@@ -82,12 +82,23 @@ enum Demo {
 
 /// Why the race cannot start yet: the sharks it races are snapshotted during the
 /// first drill.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("the race needs the first drill to finish ({done} of {needed} annealing steps done)")]
+#[derive(Clone, Debug, PartialEq)]
 pub struct RaceNotReady {
     pub done: u64,
     pub needed: u64,
 }
+
+impl std::fmt::Display for RaceNotReady {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&crate::tr!(
+            "learning-race-not-ready",
+            done = self.done,
+            needed = self.needed
+        ))
+    }
+}
+
+impl std::error::Error for RaceNotReady {}
 
 /// The learning lab.
 #[derive(Clone, Debug)]
