@@ -190,9 +190,6 @@ fn every_message_the_code_asks_for_exists() {
 
 /// Files whose words are not yet in the catalogue. Empty when every word is.
 pub(crate) const NOT_YET: &[&str] = &[
-    "experiment/csv.rs",
-    "experiment/design.rs",
-    "experiment/link.rs",
     "investigation/catalogue.rs",
     "investigation/link.rs",
     "investigation/measure.rs",
