@@ -78,6 +78,7 @@ experiment-seed-button = seed { $seed }
 
 # Why a design is refused: the field, then the reason.
 experiment-error = { $field }: { $reason }
+experiment-error-json-place = (file, line { $line }, column { $column })
 experiment-error-too-many-factors = { $count } factors: at most { $max }
 experiment-error-factor-twice = '{ $key }' is already a factor
 experiment-error-no-sample = { $secs } s holds no metrics sample: measure for at least { $min } s

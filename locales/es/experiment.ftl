@@ -96,6 +96,7 @@ experiment-seed-button = semilla { $seed }
 
 # Por qué se rechaza un diseño: el campo y luego la razón.
 experiment-error = { $field }: { $reason }
+experiment-error-json-place = (archivo, línea { $line }, columna { $column })
 experiment-error-too-many-factors = { $count } factores: como máximo { $max }
 experiment-error-factor-twice = '{ $key }' ya es un factor
 experiment-error-no-sample = en { $secs } s no cabe ninguna muestra de las métricas: mide al menos { $min } s

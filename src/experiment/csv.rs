@@ -227,34 +227,64 @@ fn write_rows(plan: &Plan, result: &RunResult, out: &mut String) {
     }
 }
 
-/// Why shard files could not be merged.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+/// Why shard files could not be merged (`shoal-lab merge`'s errors, English
+/// like the command line's reports and the files themselves).
+#[derive(Clone, Debug, PartialEq)]
 pub enum MergeError {
-    #[error("{file}: not a Shoal experiment CSV (it must start with '{FIRST_LINE_PREFIX}')")]
-    // words: shoal-lab merge's error, English like its reports
-    NotAnExperiment { file: String },
-    #[error("{file}: a different experiment from {first} (their '#' lines or columns differ)")]
-    // words: shoal-lab merge's error, English like its reports
-    DifferentExperiment { file: String, first: String },
-    #[error("{file}, line {line}: {reason}")]
+    NotAnExperiment {
+        file: String,
+    },
+    DifferentExperiment {
+        file: String,
+        first: String,
+    },
     BadRow {
         file: String,
         line: usize,
         reason: String,
     },
-    #[error("run(s) {runs} appear in more than one file ({files})")]
-    // words: shoal-lab merge's error, English like its reports
-    Duplicate { runs: String, files: String },
-    #[error("run(s) {runs} are in no file ({missing} of {total} runs missing)")]
-    // words: shoal-lab merge's error, English like its reports
+    Duplicate {
+        runs: String,
+        files: String,
+    },
     Missing {
         runs: String,
         missing: usize,
         total: usize,
     },
-    #[error("no files to merge")] // words: shoal-lab merge's error, English like its reports
     NoFiles,
 }
+
+impl std::fmt::Display for MergeError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NotAnExperiment { file } => write!(
+                f,
+                "{file}: not a Shoal experiment CSV (it must start with '{FIRST_LINE_PREFIX}')" // words: shoal-lab merge's error
+            ),
+            Self::DifferentExperiment { file, first } => write!(
+                f,
+                "{file}: a different experiment from {first} (their '#' lines or columns differ)" // words: shoal-lab merge's error
+            ),
+            Self::BadRow { file, line, reason } => write!(f, "{file}, line {line}: {reason}"),
+            Self::Duplicate { runs, files } => write!(
+                f,
+                "run(s) {runs} appear in more than one file ({files})" // words: shoal-lab merge's error
+            ),
+            Self::Missing {
+                runs,
+                missing,
+                total,
+            } => write!(
+                f,
+                "run(s) {runs} are in no file ({missing} of {total} runs missing)" // words: shoal-lab merge's error
+            ),
+            Self::NoFiles => f.write_str("no files to merge"), // words: shoal-lab merge's error
+        }
+    }
+}
+
+impl std::error::Error for MergeError {}
 
 /// "3, 7, 12" (the first 20, then "… and 14 more").
 fn list_runs(runs: &[usize]) -> String {
@@ -386,4 +416,53 @@ pub fn merge_csv(files: &[(String, String)]) -> Result<String, MergeError> {
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use serde_json::json;
+
+    use super::*;
+    use crate::experiment::design::Design;
+    use crate::experiment::runner::ExperimentRun;
+
+    #[test]
+    fn the_csv_is_the_same_in_every_language_of_the_interface() {
+        let design = json!({
+            "name": "tiny",
+            "settings": {"scene": "boids", "left": {"fish_count": 12}},
+            "factors": [{"key": "left.alignment", "levels": [20.5, 60]}],
+            "replicates": {"count": 2, "first_seed": 5},
+            "warmup_secs": 0.5,
+            "measure_secs": 1.0,
+            "measures": [{"measure": "polarization"}]
+        });
+        let plan = Design::from_json(&design.to_string())
+            .and_then(|d| d.validate())
+            .expect("a valid design");
+        let results: Vec<RunResult> = plan
+            .runs()
+            .iter()
+            .map(|spec| ExperimentRun::new(&plan, spec).run_to_end())
+            .collect();
+        let english = with_lang(Lang::En, || experiment_csv(&plan, &results, None));
+        for lang in Lang::ALL {
+            let csv = with_lang(lang, || experiment_csv(&plan, &results, None));
+            assert_eq!(csv, english, "{}", lang.code());
+            let shard = with_lang(lang, || experiment_csv(&plan, &results[..1], Some((0, 4))));
+            assert_eq!(
+                shard,
+                with_lang(Lang::En, || experiment_csv(
+                    &plan,
+                    &results[..1],
+                    Some((0, 4))
+                ))
+            );
+        }
+        assert!(english.contains("warm-up steps"), "{english}");
+        assert!(
+            english.contains("\n0,5,20.5,polarization,mean,,"),
+            "{english}"
+        );
+    }
 }

@@ -183,11 +183,17 @@ impl Design {
         serde_json::from_str(text).map_err(|err| {
             let message = err.to_string();
             // serde names an unknown or missing field between backquotes.
-            let field = ["unknown field `", "missing field `"]
+            let field = ["unknown field `", "missing field `"] // words: serde's words, matched
                 .iter()
                 .find_map(|start| message.strip_prefix(start)?.split('`').next())
                 .map_or_else(
-                    || format!("(file, line {}, column {})", err.line(), err.column()),
+                    || {
+                        tr!(
+                            "experiment-error-json-place",
+                            line = err.line(),
+                            column = err.column()
+                        )
+                    },
                     str::to_owned,
                 );
             DesignError::new(field, message)

@@ -208,8 +208,6 @@ pub(crate) const NOT_YET: &[&str] = &[
     "sim/reef/feeding.rs",
     "sim/reef/school_watch.rs",
     "ui/boids_panel.rs",
-    "ui/experiment_panel.rs",
-    "ui/experiment_plot.rs",
     "ui/investigation_panel.rs",
     "ui/investigation_plot.rs",
     "ui/learning_panel.rs",
