@@ -196,7 +196,6 @@ pub(crate) const NOT_YET: &[&str] = &[
     "investigation/outcome.rs",
     "investigation/record.rs",
     "lab.rs",
-    "settings/studio.rs",
     "sim/boids/placement.rs",
     "sim/common/obstacle.rs",
     "sim/learning/learned_motor.rs",
@@ -216,7 +215,6 @@ pub(crate) const NOT_YET: &[&str] = &[
     "ui/reef_overlay.rs",
     "ui/reef_panel.rs",
     "ui/reef_skip.rs",
-    "ui/studio_panel.rs",
 ];
 
 /// Files that show nothing to a student: the simulation's own diagnostics,
