@@ -218,6 +218,8 @@ pub struct LabCost {
 struct Checked {
     design: Design,
     result: Result<Sizing, DesignError>,
+    /// The language its error was written in (checked again on a change).
+    lang: crate::i18n::Lang,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -448,11 +450,17 @@ impl ExperimentPanel {
         };
         ui.add_enabled_ui(!running, |ui| form_ui(ui, form, settings, keys, rects));
         let design = form.design(settings);
-        if self.checked.as_ref().is_none_or(|c| c.design != design) {
+        let lang = crate::i18n::lang();
+        if self
+            .checked
+            .as_ref()
+            .is_none_or(|c| c.design != design || c.lang != lang)
+        {
             let result = design.validate().map(|plan| Sizing::of(&plan, cost));
             self.checked = Some(Checked {
                 design: design.clone(),
                 result,
+                lang,
             });
         }
         ui.separator();
