@@ -23,6 +23,7 @@ use serde_json::Value;
 
 use crate::experiment::design::{Plan, Summary, settings_value};
 use crate::experiment::runner::RunResult;
+use crate::i18n::{Lang, with_lang};
 
 /// The first line of every experiment CSV.
 const FIRST_LINE_PREFIX: &str = "# Shoal experiment: ";
@@ -34,20 +35,29 @@ const COMPLETED_LINE_PREFIX: &str = "# completed: ";
 
 /// The CSV of `results` (any order; written in run order). `shard` (`i`, `n`)
 /// marks a shard's file; a file with fewer runs than the plan says how many it
-/// holds.
+/// holds. English in every language of the interface, like the scene's CSV
+/// (programs read its column names; the scene's name in it is English too).
 pub fn experiment_csv(plan: &Plan, results: &[RunResult], shard: Option<(usize, usize)>) -> String {
+    with_lang(Lang::En, || english_experiment_csv(plan, results, shard))
+}
+
+fn english_experiment_csv(
+    plan: &Plan,
+    results: &[RunResult],
+    shard: Option<(usize, usize)>,
+) -> String {
     let mut out = header_lines(plan);
     let total = plan.run_count();
     if let Some((i, n)) = shard {
         let _ = writeln!(
             out,
-            "{SHARD_LINE_PREFIX}{i}/{n} (runs {i}, {}, … every {n}th; merge the shards with shoal-lab merge)",
+            "{SHARD_LINE_PREFIX}{i}/{n} (runs {i}, {}, … every {n}th; merge the shards with shoal-lab merge)", // words: a CSV comment line, English like the whole file
             i + n
         );
     } else if results.len() < total {
         let _ = writeln!(
             out,
-            "{COMPLETED_LINE_PREFIX}{} of {total} runs (cancelled or unfinished)",
+            "{COMPLETED_LINE_PREFIX}{} of {total} runs (cancelled or unfinished)", // words: a CSV comment line, English like the whole file
             results.len()
         );
     }
@@ -78,12 +88,12 @@ fn header_lines(plan: &Plan) -> String {
     let mut shape: Vec<String> = plan
         .factors
         .iter()
-        .map(|f| format!("{} levels of {}", f.levels.len(), f.key))
+        .map(|f| format!("{} levels of {}", f.levels.len(), f.key)) // words: in a CSV comment line, English like the whole file
         .collect();
     shape.push(format!("{} seeds", plan.seeds.len()));
     let _ = writeln!(
         out,
-        "{RUNS_LINE_PREFIX}{} ({}), each {} warm-up steps + {} measured steps of {:.4} s in the {} ({})",
+        "{RUNS_LINE_PREFIX}{} ({}), each {} warm-up steps + {} measured steps of {:.4} s in the {} ({})", // words: a CSV comment line, English like the whole file
         plan.run_count(),
         shape.join(" × "),
         plan.warmup_steps,
@@ -217,30 +227,64 @@ fn write_rows(plan: &Plan, result: &RunResult, out: &mut String) {
     }
 }
 
-/// Why shard files could not be merged.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+/// Why shard files could not be merged (`shoal-lab merge`'s errors, English
+/// like the command line's reports and the files themselves).
+#[derive(Clone, Debug, PartialEq)]
 pub enum MergeError {
-    #[error("{file}: not a Shoal experiment CSV (it must start with '{FIRST_LINE_PREFIX}')")]
-    NotAnExperiment { file: String },
-    #[error("{file}: a different experiment from {first} (their '#' lines or columns differ)")]
-    DifferentExperiment { file: String, first: String },
-    #[error("{file}, line {line}: {reason}")]
+    NotAnExperiment {
+        file: String,
+    },
+    DifferentExperiment {
+        file: String,
+        first: String,
+    },
     BadRow {
         file: String,
         line: usize,
         reason: String,
     },
-    #[error("run(s) {runs} appear in more than one file ({files})")]
-    Duplicate { runs: String, files: String },
-    #[error("run(s) {runs} are in no file ({missing} of {total} runs missing)")]
+    Duplicate {
+        runs: String,
+        files: String,
+    },
     Missing {
         runs: String,
         missing: usize,
         total: usize,
     },
-    #[error("no files to merge")]
     NoFiles,
 }
+
+impl std::fmt::Display for MergeError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NotAnExperiment { file } => write!(
+                f,
+                "{file}: not a Shoal experiment CSV (it must start with '{FIRST_LINE_PREFIX}')" // words: shoal-lab merge's error
+            ),
+            Self::DifferentExperiment { file, first } => write!(
+                f,
+                "{file}: a different experiment from {first} (their '#' lines or columns differ)" // words: shoal-lab merge's error
+            ),
+            Self::BadRow { file, line, reason } => write!(f, "{file}, line {line}: {reason}"),
+            Self::Duplicate { runs, files } => write!(
+                f,
+                "run(s) {runs} appear in more than one file ({files})" // words: shoal-lab merge's error
+            ),
+            Self::Missing {
+                runs,
+                missing,
+                total,
+            } => write!(
+                f,
+                "run(s) {runs} are in no file ({missing} of {total} runs missing)" // words: shoal-lab merge's error
+            ),
+            Self::NoFiles => f.write_str("no files to merge"), // words: shoal-lab merge's error
+        }
+    }
+}
+
+impl std::error::Error for MergeError {}
 
 /// "3, 7, 12" (the first 20, then "… and 14 more").
 fn list_runs(runs: &[usize]) -> String {
@@ -251,7 +295,7 @@ fn list_runs(runs: &[usize]) -> String {
         .collect::<Vec<_>>()
         .join(", ");
     if runs.len() > 20 {
-        let _ = write!(text, " … and {} more", runs.len() - 20);
+        let _ = write!(text, " … and {} more", runs.len() - 20); // words: shoal-lab merge's error
     }
     text
 }
@@ -293,7 +337,7 @@ fn parse<'a>(name: &str, text: &'a str) -> Result<Parsed<'a>, MergeError> {
             .ok_or_else(|| MergeError::BadRow {
                 file: name.into(),
                 line: n + 1,
-                reason: "a row starts with its run index".into(),
+                reason: "a row starts with its run index".into(), // words: shoal-lab merge's error
             })?;
         rows.entry(run).or_default().push(line);
     }
@@ -355,7 +399,7 @@ pub fn merge_csv(files: &[(String, String)]) -> Result<String, MergeError> {
         return Err(MergeError::BadRow {
             file: files[owner[&run]].0.clone(),
             line: 0,
-            reason: format!("run {run} is beyond the experiment's {total} runs"),
+            reason: format!("run {run} is beyond the experiment's {total} runs"), // words: shoal-lab merge's error
         });
     }
     if !missing.is_empty() {
@@ -372,4 +416,53 @@ pub fn merge_csv(files: &[(String, String)]) -> Result<String, MergeError> {
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use serde_json::json;
+
+    use super::*;
+    use crate::experiment::design::Design;
+    use crate::experiment::runner::ExperimentRun;
+
+    #[test]
+    fn the_csv_is_the_same_in_every_language_of_the_interface() {
+        let design = json!({
+            "name": "tiny",
+            "settings": {"scene": "boids", "left": {"fish_count": 12}},
+            "factors": [{"key": "left.alignment", "levels": [20.5, 60]}],
+            "replicates": {"count": 2, "first_seed": 5},
+            "warmup_secs": 0.5,
+            "measure_secs": 1.0,
+            "measures": [{"measure": "polarization"}]
+        });
+        let plan = Design::from_json(&design.to_string())
+            .and_then(|d| d.validate())
+            .expect("a valid design");
+        let results: Vec<RunResult> = plan
+            .runs()
+            .iter()
+            .map(|spec| ExperimentRun::new(&plan, spec).run_to_end())
+            .collect();
+        let english = with_lang(Lang::En, || experiment_csv(&plan, &results, None));
+        for lang in Lang::ALL {
+            let csv = with_lang(lang, || experiment_csv(&plan, &results, None));
+            assert_eq!(csv, english, "{}", lang.code());
+            let shard = with_lang(lang, || experiment_csv(&plan, &results[..1], Some((0, 4))));
+            assert_eq!(
+                shard,
+                with_lang(Lang::En, || experiment_csv(
+                    &plan,
+                    &results[..1],
+                    Some((0, 4))
+                ))
+            );
+        }
+        assert!(english.contains("warm-up steps"), "{english}");
+        assert!(
+            english.contains("\n0,5,20.5,polarization,mean,,"),
+            "{english}"
+        );
+    }
 }

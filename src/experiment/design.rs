@@ -12,7 +12,9 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 pub use crate::experiment::measure::{Measure, Summary};
+use crate::i18n::{localize_decimal, num};
 use crate::settings::{Scene, Settings, SettingsError};
+use crate::tr;
 
 /// Most runs in one experiment. Default 10,000: a day of a 64-core node at a few
 /// seconds per run, and a CSV a spreadsheet still opens.
@@ -27,12 +29,23 @@ pub const MAX_SECS: f64 = 36_000.0;
 
 /// Why a design was refused: the field (`factors[0].levels[2]`,
 /// `replicates.count`, `measures[1].measure`) and a sentence a student reads.
-#[derive(Clone, Debug, PartialEq, Serialize, thiserror::Error)]
-#[error("{field}: {reason}")]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct DesignError {
     pub field: String,
     pub reason: String,
 }
+
+impl std::fmt::Display for DesignError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&tr!(
+            "experiment-error",
+            field = self.field.as_str(),
+            reason = self.reason.as_str()
+        ))
+    }
+}
+
+impl std::error::Error for DesignError {}
 
 impl DesignError {
     fn new(field: impl Into<String>, reason: impl Into<String>) -> Self {
@@ -170,11 +183,17 @@ impl Design {
         serde_json::from_str(text).map_err(|err| {
             let message = err.to_string();
             // serde names an unknown or missing field between backquotes.
-            let field = ["unknown field `", "missing field `"]
+            let field = ["unknown field `", "missing field `"] // words: serde's words, matched
                 .iter()
                 .find_map(|start| message.strip_prefix(start)?.split('`').next())
                 .map_or_else(
-                    || format!("(file, line {}, column {})", err.line(), err.column()),
+                    || {
+                        tr!(
+                            "experiment-error-json-place",
+                            line = err.line(),
+                            column = err.column()
+                        )
+                    },
                     str::to_owned,
                 );
             DesignError::new(field, message)
@@ -194,7 +213,11 @@ impl Design {
         if self.factors.len() > MAX_FACTORS {
             return Err(DesignError::new(
                 "factors",
-                format!("{} factors: at most {MAX_FACTORS}", self.factors.len()),
+                tr!(
+                    "experiment-error-too-many-factors",
+                    count = self.factors.len(),
+                    max = MAX_FACTORS
+                ),
             ));
         }
         let base_value = settings_value(&base);
@@ -204,7 +227,7 @@ impl Design {
             if factors.iter().any(|f| f.key == planned.key) {
                 return Err(DesignError::new(
                     format!("factors[{i}].key"),
-                    format!("'{}' is already a factor", planned.key),
+                    tr!("experiment-error-factor-twice", key = planned.key.as_str()),
                 ));
             }
             factors.push(planned);
@@ -219,10 +242,10 @@ impl Design {
         if first_sample > warmup_steps + measure_steps {
             return Err(DesignError::new(
                 "measure_secs",
-                format!(
-                    "{} s holds no metrics sample: measure for at least {:.3} s",
-                    self.measure_secs,
-                    sample_every_steps as f64 * dt_secs
+                tr!(
+                    "experiment-error-no-sample",
+                    secs = self.measure_secs,
+                    min = num(sample_every_steps as f64 * dt_secs, 3)
                 ),
             ));
         }
@@ -234,7 +257,12 @@ impl Design {
         if runs > MAX_RUNS {
             return Err(DesignError::new(
                 "factors",
-                format!("{runs} runs (levels × seeds): at most {MAX_RUNS}"),
+                // As written (10000), like the file's numbers.
+                tr!(
+                    "experiment-error-too-many-runs",
+                    runs = runs.to_string(),
+                    max = MAX_RUNS.to_string()
+                ),
             ));
         }
         Ok(Plan {
@@ -258,7 +286,7 @@ impl Design {
                 let fragment = link.rsplit_once('#').map_or(link.as_str(), |(_, f)| f);
                 crate::settings::share_link::decode(fragment)
                     .map_err(|err| DesignError::new("link", err.to_string()))?
-                    .ok_or_else(|| DesignError::new("link", "the link is empty"))?
+                    .ok_or_else(|| DesignError::new("link", tr!("experiment-error-link-empty")))?
             }
             None => Settings::default(),
         };
@@ -279,14 +307,14 @@ impl Design {
             (Some(_), Some(_)) => {
                 return Err(DesignError::new(
                     "replicates",
-                    "give either seeds (a list) or count (and first_seed), not both",
+                    tr!("experiment-error-seeds-and-count"),
                 ));
             }
             (Some(seeds), None) => {
                 if r.first_seed.is_some() {
                     return Err(DesignError::new(
                         "replicates.first_seed",
-                        "goes with count, not with a list of seeds",
+                        tr!("experiment-error-first-seed-with-list"),
                     ));
                 }
                 seeds.clone()
@@ -298,7 +326,7 @@ impl Design {
             (None, None) => {
                 return Err(DesignError::new(
                     "replicates",
-                    "say how many seeds (count) or which (seeds)",
+                    tr!("experiment-error-how-many-seeds"),
                 ));
             }
         };
@@ -308,12 +336,19 @@ impl Design {
             "replicates.count"
         };
         if seeds.is_empty() {
-            return Err(DesignError::new(field, "no replicates: at least one seed"));
+            return Err(DesignError::new(
+                field,
+                tr!("experiment-error-no-replicates"),
+            ));
         }
         if seeds.len() > MAX_RUNS {
             return Err(DesignError::new(
                 field,
-                format!("{} seeds: at most {MAX_RUNS}", seeds.len()),
+                tr!(
+                    "experiment-error-too-many-seeds",
+                    count = seeds.len().to_string(),
+                    max = MAX_RUNS.to_string()
+                ),
             ));
         }
         for (k, &seed) in seeds.iter().enumerate() {
@@ -325,16 +360,17 @@ impl Design {
                 };
                 return Err(DesignError::new(
                     field,
-                    format!(
-                        "seed {seed} is out of range: choose from 0 to {}",
-                        crate::settings::SEED_MAX
+                    tr!(
+                        "experiment-error-seed-range",
+                        seed = seed.to_string(),
+                        max = crate::settings::SEED_MAX.to_string()
                     ),
                 ));
             }
             if seeds[..k].contains(&seed) {
                 return Err(DesignError::new(
                     format!("replicates.seeds[{k}]"),
-                    format!("seed {seed} appears twice: a replicate would repeat a run"),
+                    tr!("experiment-error-seed-twice", seed = seed.to_string()),
                 ));
             }
         }
@@ -345,7 +381,7 @@ impl Design {
         if self.measures.is_empty() {
             return Err(DesignError::new(
                 "measures",
-                "nothing to measure: name at least one measure",
+                tr!("experiment-error-no-measures"),
             ));
         }
         let mut out: Vec<(Measure, Summary)> = Vec::new();
@@ -354,10 +390,10 @@ impl Design {
                 let known: Vec<&str> = Measure::ALL.iter().map(|m| m.name()).collect();
                 return Err(DesignError::new(
                     format!("measures[{i}].measure"),
-                    format!(
-                        "unknown measure '{}'; the measures are: {}",
-                        choice.measure,
-                        known.join(", ")
+                    tr!(
+                        "experiment-error-unknown-measure",
+                        name = choice.measure.as_str(),
+                        known = known.join(", ")
                     ),
                 ));
             };
@@ -369,13 +405,13 @@ impl Design {
                     .collect();
                 return Err(DesignError::new(
                     format!("measures[{i}].measure"),
-                    format!(
-                        "'{}' is not measured in the {} ({}); there: {}",
-                        measure.name(),
-                        scene.class().facts().label(),
-                        scene.name(),
-                        if known.is_empty() {
-                            "nothing".to_owned()
+                    tr!(
+                        "experiment-error-measure-not-here",
+                        name = measure.name(),
+                        scene = scene.class().facts().label(),
+                        id = scene.name(),
+                        known = if known.is_empty() {
+                            tr!("experiment-error-nothing")
                         } else {
                             known.join(", ")
                         }
@@ -385,19 +421,19 @@ impl Design {
             let Some(summary) = Summary::from_name(&choice.summary) else {
                 return Err(DesignError::new(
                     format!("measures[{i}].summary"),
-                    format!(
-                        "unknown summary '{}': choose mean, final or series",
-                        choice.summary
+                    tr!(
+                        "experiment-error-unknown-summary",
+                        name = choice.summary.as_str()
                     ),
                 ));
             };
             if out.contains(&(measure, summary)) {
                 return Err(DesignError::new(
                     format!("measures[{i}]"),
-                    format!(
-                        "{} ({}) is already measured",
-                        measure.name(),
-                        summary.name()
+                    tr!(
+                        "experiment-error-measured-twice",
+                        name = measure.name(),
+                        summary = summary.name()
                     ),
                 ));
             }
@@ -415,7 +451,10 @@ fn settings_error(field: &str, err: &SettingsError) -> DesignError {
         }
         SettingsError::UnknownKey { key, known } => DesignError::new(
             format!("{field}.{key}"),
-            format!("unknown setting; the settings there are: {known}"),
+            tr!(
+                "experiment-error-unknown-setting-there",
+                known = known.as_str()
+            ),
         ),
         other => DesignError::new(field, other.to_string()),
     }
@@ -448,24 +487,22 @@ pub fn patch_for(key: &str, value: Value) -> Value {
 fn inert_reason(key: &str, scene: Scene) -> Option<String> {
     let section = scene.class().facts().settings_section;
     match key {
-        "seed" => return Some("seeds are the replicates: set them in replicates".into()),
+        "seed" => return Some(tr!("experiment-error-seed-factor")),
         "speed" | "paused" | "show_vision" | "compare" => {
-            return Some(format!(
-                "'{key}' changes how a run is shown, not what happens in it"
-            ));
+            return Some(tr!("experiment-error-display-only", key = key));
         }
         _ if key.ends_with(".selected") || key.ends_with(".follow") => {
-            return Some(format!(
-                "'{key}' chooses the fish shown in detail, not what happens in a run"
-            ));
+            return Some(tr!("experiment-error-selection", key = key));
         }
         _ => {}
     }
     (!scene.class().acts(key)).then(|| {
-        format!(
-            "'{key}' does not act in the {} ({}); its settings there are under '{section}.'",
-            scene.class().facts().label(),
-            scene.name()
+        tr!(
+            "experiment-error-does-not-act",
+            key = key,
+            scene = scene.class().facts().label(),
+            id = scene.name(),
+            section = section
         )
     })
 }
@@ -485,7 +522,10 @@ fn plan_factor(
                 .clone()
                 .apply_patch(&patch_for(&factor.key, Value::Null))
                 .err()
-                .map_or_else(|| "unknown setting".to_owned(), |e| e.to_string());
+                .map_or_else(
+                    || tr!("experiment-error-unknown-setting"),
+                    |e| e.to_string(),
+                );
             return Err(DesignError::new(key_field, err));
         }
     };
@@ -497,10 +537,7 @@ fn plan_factor(
         _ => {
             return Err(DesignError::new(
                 key_field,
-                format!(
-                    "'{}' is not a number or an on/off setting: a factor varies one slider or switch",
-                    factor.key
-                ),
+                tr!("experiment-error-not-a-slider", key = factor.key.as_str()),
             ));
         }
     };
@@ -510,12 +547,19 @@ fn plan_factor(
     let levels_field = format!("factors[{i}].levels");
     let raw = raw_levels(&levels_field, &factor.levels)?;
     if raw.is_empty() {
-        return Err(DesignError::new(levels_field, "no levels: at least one"));
+        return Err(DesignError::new(
+            levels_field,
+            tr!("experiment-error-no-levels"),
+        ));
     }
     if raw.len() > MAX_LEVELS {
         return Err(DesignError::new(
             levels_field,
-            format!("{} levels: at most {MAX_LEVELS}", raw.len()),
+            tr!(
+                "experiment-error-too-many-levels",
+                count = raw.len().to_string(),
+                max = MAX_LEVELS.to_string()
+            ),
         ));
     }
     let mut levels: Vec<Value> = Vec::new();
@@ -534,10 +578,14 @@ fn plan_factor(
             _ => {
                 return Err(DesignError::new(
                     field,
-                    format!(
-                        "{level} is not a level of '{}': it takes {}",
-                        factor.key,
-                        if is_bool { "true or false" } else { "numbers" }
+                    tr!(
+                        if is_bool {
+                            "experiment-error-level-not-switch"
+                        } else {
+                            "experiment-error-level-not-number"
+                        },
+                        level = level.to_string(),
+                        key = factor.key.as_str()
                     ),
                 ));
             }
@@ -557,7 +605,7 @@ fn plan_factor(
         if levels.contains(&held) {
             return Err(DesignError::new(
                 field,
-                format!("level {held} appears twice"),
+                tr!("experiment-error-level-twice", level = held.to_string()),
             ));
         }
         levels.push(held);
@@ -578,7 +626,7 @@ fn raw_levels(field: &str, levels: &Value) -> Result<Vec<(Option<String>, Value)
                 if !["from", "to", "steps"].contains(&key.as_str()) {
                     return Err(DesignError::new(
                         format!("{field}.{key}"),
-                        "unknown field: a range has from, to and steps",
+                        tr!("experiment-error-range-field"),
                     ));
                 }
             }
@@ -587,29 +635,36 @@ fn raw_levels(field: &str, levels: &Value) -> Result<Vec<(Option<String>, Value)
                     .and_then(Value::as_f64)
                     .filter(|x| x.is_finite())
                     .ok_or_else(|| {
-                        DesignError::new(format!("{field}.{name}"), "missing, or not a number")
+                        DesignError::new(
+                            format!("{field}.{name}"),
+                            tr!("experiment-error-not-a-number"),
+                        )
                     })
             };
             let (from, to) = (number("from")?, number("to")?);
             let steps = map.get("steps").and_then(Value::as_u64).ok_or_else(|| {
-                DesignError::new(format!("{field}.steps"), "missing, or not a whole number")
+                DesignError::new(format!("{field}.steps"), tr!("experiment-error-not-whole"))
             })?;
             if steps == 0 {
                 return Err(DesignError::new(
                     format!("{field}.steps"),
-                    "no levels: at least one",
+                    tr!("experiment-error-no-levels"),
                 ));
             }
             if steps > MAX_LEVELS as u64 {
                 return Err(DesignError::new(
                     format!("{field}.steps"),
-                    format!("{steps} levels: at most {MAX_LEVELS}"),
+                    tr!(
+                        "experiment-error-too-many-levels",
+                        count = steps.to_string(),
+                        max = MAX_LEVELS.to_string()
+                    ),
                 ));
             }
             if steps == 1 && from != to {
                 return Err(DesignError::new(
                     format!("{field}.steps"),
-                    "one step cannot go from one value to another: at least 2",
+                    tr!("experiment-error-one-step"),
                 ));
             }
             Ok((0..steps)
@@ -630,7 +685,7 @@ fn raw_levels(field: &str, levels: &Value) -> Result<Vec<(Option<String>, Value)
         }
         _ => Err(DesignError::new(
             field,
-            "give a list ([0, 50, 100]) or a range ({\"from\": 0, \"to\": 100, \"steps\": 3})",
+            tr!("experiment-error-levels-shape"),
         )),
     }
 }
@@ -640,11 +695,15 @@ fn steps_of(field: &str, secs: f64, dt_secs: f64, zero_ok: bool) -> Result<u64, 
     if !secs.is_finite() || !(0.0..=MAX_SECS).contains(&secs) {
         return Err(DesignError::new(
             field,
-            format!("{secs} is out of range: choose from 0 to {MAX_SECS} s"),
+            tr!(
+                "experiment-error-secs-range",
+                secs = localize_decimal(&secs.to_string()),
+                max = MAX_SECS.to_string()
+            ),
         ));
     }
     if !zero_ok && secs == 0.0 {
-        return Err(DesignError::new(field, "0 s measures nothing"));
+        return Err(DesignError::new(field, tr!("experiment-error-zero-secs")));
     }
     Ok((secs / dt_secs).round() as u64)
 }

@@ -14,19 +14,51 @@ use super::design::{Design, DesignError, Plan};
 use crate::settings::share_link::{
     ShareLinkError, pack_json, query_value, unpack_json, with_query, without_query,
 };
+use crate::tr;
 
 /// The query parameter that carries an experiment.
 pub const KEY: &str = "experiment";
 
 /// Why an experiment link could not be opened.
-#[derive(Debug, PartialEq, thiserror::Error)]
+#[derive(Debug, PartialEq)]
 pub enum ExperimentLinkError {
-    #[error("{0}")]
-    Damaged(#[from] ShareLinkError),
-    #[error("the link holds no experiment")]
+    Damaged(ShareLinkError),
     Empty,
-    #[error("its experiment cannot run: {0}")]
-    Refused(#[from] DesignError),
+    Refused(DesignError),
+}
+
+impl std::fmt::Display for ExperimentLinkError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Damaged(err) => err.fmt(f),
+            Self::Empty => f.write_str(&tr!("experiment-link-empty")),
+            Self::Refused(err) => {
+                f.write_str(&tr!("experiment-link-refused", reason = err.to_string()))
+            }
+        }
+    }
+}
+
+impl std::error::Error for ExperimentLinkError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::Damaged(err) => Some(err),
+            Self::Empty => None,
+            Self::Refused(err) => Some(err),
+        }
+    }
+}
+
+impl From<ShareLinkError> for ExperimentLinkError {
+    fn from(err: ShareLinkError) -> Self {
+        Self::Damaged(err)
+    }
+}
+
+impl From<DesignError> for ExperimentLinkError {
+    fn from(err: DesignError) -> Self {
+        Self::Refused(err)
+    }
 }
 
 /// The link text (the value of `?experiment=`) that reopens `design`.

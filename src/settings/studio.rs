@@ -28,6 +28,8 @@ use serde_json::Value;
 use super::range::SettingError;
 use super::tank::TankSettings;
 use super::{Scene, Settings, Side};
+use crate::i18n::tr;
+use crate::tr;
 
 /// Longest question, in characters (default 1,000: a paragraph or two; the
 /// link, and the QR code drawn from it, stay small enough to scan).
@@ -208,9 +210,7 @@ impl Studio {
         if after.studio != before.studio {
             return Err(SettingError {
                 key: "studio".to_owned(),
-                reason: "this is the student view of a teacher's link: its studio cannot be \
-                         changed here (open Shoal without the link to edit)"
-                    .to_owned(),
+                reason: tr("studio-error-student-view"),
             });
         }
         let (Ok(old), Ok(new)) = (serde_json::to_value(before), serde_json::to_value(after)) else {
@@ -220,16 +220,13 @@ impl Studio {
             let path: Vec<&str> = key.split('.').collect();
             if value_at(&old, &path) != value_at(&new, &path) {
                 let how = match self.effective(&key) {
-                    r if r.mystery => "a mystery value",
+                    r if r.mystery => "mystery",
                     r if r.hidden => "hidden",
                     _ => "locked",
                 };
                 return Err(SettingError {
                     key,
-                    reason: format!(
-                        "{how} by the teacher's studio: students cannot change it \
-                         (changing it would change it through another control)"
-                    ),
+                    reason: tr!("studio-error-kept", how = how),
                 });
             }
         }
@@ -308,15 +305,21 @@ impl Studio {
         if chars > QUESTION_MAX_CHARS {
             return Err(SettingError {
                 key: "studio.question".to_owned(),
-                reason: format!(
-                    "the question is {chars} characters long: at most {QUESTION_MAX_CHARS}"
+                reason: tr!(
+                    "studio-error-question-long",
+                    count = chars,
+                    max = QUESTION_MAX_CHARS
                 ),
             });
         }
         if self.rules.len() > RULES_MAX {
             return Err(SettingError {
                 key: "studio.rules".to_owned(),
-                reason: format!("{} rules: at most {RULES_MAX}", self.rules.len()),
+                reason: tr!(
+                    "studio-error-too-many-rules",
+                    count = self.rules.len(),
+                    max = RULES_MAX
+                ),
             });
         }
         for key in self.rules.keys() {
@@ -337,10 +340,7 @@ impl Studio {
         let Value::Object(fields) = patch else {
             return Err(bad(
                 "studio",
-                format!(
-                    "expected an object such as {{\"question\": \"…\", \"rules\": \
-                     {{\"left.alignment\": {{\"mystery\": true}}}}}}, got {patch}"
-                ),
+                tr!("studio-error-not-an-object", value = patch.to_string()),
             ));
         };
         let mut next = self.clone();
@@ -350,13 +350,16 @@ impl Studio {
                     next.student_view = value.as_bool().ok_or_else(|| {
                         bad(
                             "studio.student_view",
-                            format!("expected true or false, got {value}"),
+                            tr!("studio-error-expected-bool", value = value.to_string()),
                         )
                     })?;
                 }
                 "question" => {
                     value.as_str().ok_or_else(|| {
-                        bad("studio.question", format!("expected text, got {value}"))
+                        bad(
+                            "studio.question",
+                            tr!("studio-error-expected-text", value = value.to_string()),
+                        )
                     })?;
                     next.question = value.as_str().unwrap_or_default().to_owned();
                 }
@@ -364,9 +367,9 @@ impl Studio {
                     let Value::Object(rules) = value else {
                         return Err(bad(
                             "studio.rules",
-                            format!(
-                                "expected an object of rules by control, such as \
-                                 {{\"left.alignment\": {{\"locked\": true}}}}, got {value}"
+                            tr!(
+                                "studio-error-rules-not-an-object",
+                                value = value.to_string()
                             ),
                         ));
                     };
@@ -384,8 +387,7 @@ impl Studio {
                 other => {
                     return Err(bad(
                         &format!("studio.{other}"),
-                        "unknown: the studio's settings are student_view, question and rules"
-                            .to_owned(),
+                        tr("studio-error-unknown-field"),
                     ));
                 }
             }
@@ -399,8 +401,9 @@ impl Studio {
 /// One rule's object, with a message a teacher reads.
 fn parse_rule(value: &Value) -> Result<ControlRule, String> {
     let Value::Object(flags) = value else {
-        return Err(format!(
-            "expected a rule such as {{\"hidden\": true}} (or null to remove it), got {value}"
+        return Err(tr!(
+            "studio-error-rule-not-an-object",
+            value = value.to_string()
         ));
     };
     let mut rule = ControlRule::default();
@@ -410,14 +413,16 @@ fn parse_rule(value: &Value) -> Result<ControlRule, String> {
             "locked" => &mut rule.locked,
             "mystery" => &mut rule.mystery,
             other => {
-                return Err(format!(
-                    "unknown flag '{other}': a rule has hidden, locked and mystery"
-                ));
+                return Err(tr!("studio-error-unknown-flag", flag = other));
             }
         };
-        *slot = on
-            .as_bool()
-            .ok_or_else(|| format!("'{flag}' must be true or false, got {on}"))?;
+        *slot = on.as_bool().ok_or_else(|| {
+            tr!(
+                "studio-error-flag-not-bool",
+                flag = flag.as_str(),
+                value = on.to_string()
+            )
+        })?;
     }
     Ok(rule)
 }
@@ -435,10 +440,7 @@ fn check_control_key(key: &str) -> Result<(), SettingError> {
     } else {
         Err(SettingError {
             key: format!("studio.rules.{key}"),
-            reason: format!(
-                "no control is named '{key}': rules name a control by its setting, as in \
-                 settings(), e.g. left.alignment, speed or physics.current_m_per_s"
-            ),
+            reason: tr!("studio-error-no-control", key = key),
         })
     }
 }

@@ -25,7 +25,9 @@ use crate::experiment::session::{FRAME_BUDGET_SECS, frame_budget_secs};
 use crate::experiment::{
     Design, DesignError, ExperimentReport, ExperimentSession, Measure, Plan, RunSpec, Summary,
 };
+use crate::i18n::{num, tr, ts};
 use crate::settings::{Scene, Settings};
+use crate::tr;
 
 /// A browser is slower than the native core the engine's estimate is for:
 /// about 2.5× (docs/benchmarks.md), used until the lab's own cost is measured.
@@ -55,10 +57,9 @@ pub fn experiment_button(ui: &mut egui::Ui, rects: &mut WidgetRects) {
     if super::studio_panel::has_mystery(ui) {
         return;
     }
-    let r = ui.button("Experiment…").on_hover_text(
-        "Run the tank many times: vary a setting over levels and seeds, measure the school, \
-         and plot the answer",
-    );
+    let r = ui
+        .button(ts("experiment-open"))
+        .on_hover_text(ts("experiment-open.help"));
     rects.insert("experiment", r.rect);
     if r.clicked() {
         let open = ui.data(|d| d.get_temp::<bool>(open_id()).unwrap_or(false));
@@ -217,6 +218,8 @@ pub struct LabCost {
 struct Checked {
     design: Design,
     result: Result<Sizing, DesignError>,
+    /// The language its error was written in (checked again on a change).
+    lang: crate::i18n::Lang,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -288,13 +291,13 @@ pub fn duration_text(secs: f64) -> String {
     if !secs.is_finite() {
         "–".into()
     } else if secs < 1.0 {
-        "under a second".into()
+        tr("experiment-duration-under-second")
     } else if secs < 90.0 {
-        format!("about {:.0} s", secs)
+        tr!("experiment-duration-secs", value = num(secs, 0))
     } else if secs < 90.0 * 60.0 {
-        format!("about {:.0} min", secs / 60.0)
+        tr!("experiment-duration-min", value = num(secs / 60.0, 0))
     } else {
-        format!("about {:.1} h", secs / 3600.0)
+        tr!("experiment-duration-hours", value = num(secs / 3600.0, 1))
     }
 }
 
@@ -385,7 +388,7 @@ impl ExperimentPanel {
         }
         let screen = ctx.content_rect();
         let width = (screen.width() - 24.0).clamp(200.0, 560.0);
-        let shown = egui::Window::new("Experiment")
+        let shown = egui::Window::new(ts("experiment-window"))
             .id(egui::Id::unique("experiment_window"))
             .open(&mut open)
             .collapsible(true)
@@ -425,22 +428,16 @@ impl ExperimentPanel {
             .session
             .as_ref()
             .is_some_and(ExperimentSession::running);
-        ui.label(
-            egui::RichText::new(
-                "Run this tank many times: vary a setting, repeat each level with other \
-                 seeds, and measure the school. The tank on screen keeps swimming.",
-            )
-            .weak(),
-        );
+        ui.label(egui::RichText::new(ts("experiment-intro")).weak());
         if let Some(session) = &self.session {
             // The design is put away while it runs and while its results show.
             let plan = session.plan();
             let r = ui.label(
-                egui::RichText::new(format!(
-                    "{}: {} runs of {:.0} s",
-                    plan.design.name,
-                    plan.run_count(),
-                    plan.steps_per_run() as f64 * plan.dt_secs
+                egui::RichText::new(tr!(
+                    "experiment-running-design",
+                    name = plan.design.name.as_str(),
+                    runs = plan.run_count(),
+                    secs = num(plan.steps_per_run() as f64 * plan.dt_secs, 0)
                 ))
                 .strong(),
             );
@@ -453,11 +450,17 @@ impl ExperimentPanel {
         };
         ui.add_enabled_ui(!running, |ui| form_ui(ui, form, settings, keys, rects));
         let design = form.design(settings);
-        if self.checked.as_ref().is_none_or(|c| c.design != design) {
+        let lang = crate::i18n::lang();
+        if self
+            .checked
+            .as_ref()
+            .is_none_or(|c| c.design != design || c.lang != lang)
+        {
             let result = design.validate().map(|plan| Sizing::of(&plan, cost));
             self.checked = Some(Checked {
                 design: design.clone(),
                 result,
+                lang,
             });
         }
         ui.separator();
@@ -469,7 +472,11 @@ impl ExperimentPanel {
             Some(Err(err)) => {
                 let r = ui.colored_label(
                     ui.visuals().warn_fg_color,
-                    format!("Cannot start: {}: {}", err.field, err.reason),
+                    tr!(
+                        "experiment-cannot-start",
+                        field = err.field.as_str(),
+                        reason = err.reason.as_str()
+                    ),
                 );
                 rects.insert("experiment_error", r.rect);
                 false
@@ -478,8 +485,8 @@ impl ExperimentPanel {
         };
         ui.horizontal_wrapped(|ui| {
             let start = ui
-                .add_enabled(valid && !running, egui::Button::new("Start"))
-                .on_hover_text("Run every level with every seed, a little each frame");
+                .add_enabled(valid && !running, egui::Button::new(ts("experiment-start")))
+                .on_hover_text(ts("experiment-start.help"));
             rects.insert("experiment_start", start.rect);
             if start.clicked()
                 && let Err(err) = self.start(ui.ctx(), &design, cost)
@@ -487,8 +494,8 @@ impl ExperimentPanel {
                 out.push(ExperimentOutcome::Notice(Notice::error(err.to_string())));
             }
             let save = ui
-                .button("Save design")
-                .on_hover_text("Download this design as a file: shoal-lab runs it on many cores");
+                .button(ts("experiment-save-design"))
+                .on_hover_text(ts("experiment-save-design.help"));
             rects.insert("experiment_save_design", save.rect);
             if save.clicked() {
                 let text = serde_json::to_string_pretty(&design).unwrap_or_default();
@@ -496,7 +503,7 @@ impl ExperimentPanel {
                     &format!("shoal-experiment-{}.json", file_stem(&design.name)),
                     "application/json",
                     &text,
-                    "run it with shoal-lab run, or keep it for next time",
+                    &tr("experiment-save-design-next"),
                 ));
             }
             copy_link_button(ui, &design, rects, out);
@@ -518,30 +525,41 @@ impl ExperimentPanel {
         if session.running() {
             let left = session
                 .secs_left()
-                .map_or_else(|| "measuring the pace…".to_owned(), duration_text);
-            let text = format!(
-                "{} of {} runs · {}{}",
-                p.runs_done,
-                p.runs_total,
-                if session.paused() { "paused · " } else { "" },
-                if session.paused() { "" } else { &left },
-            );
+                .map_or_else(|| tr("experiment-measuring-pace"), duration_text);
+            let text = if session.paused() {
+                tr!(
+                    "experiment-progress-paused",
+                    done = p.runs_done,
+                    total = p.runs_total
+                )
+            } else {
+                tr!(
+                    "experiment-progress",
+                    done = p.runs_done,
+                    total = p.runs_total,
+                    left = left
+                )
+            };
             let bar = ui.add(
                 egui::ProgressBar::new(p.steps_done as f32 / p.steps_total.max(1) as f32)
                     .text(text),
             );
             rects.insert("experiment_progress", bar.rect);
             ui.horizontal(|ui| {
-                let label = if session.paused() { "Resume" } else { "Pause" };
-                let pause = ui.button(label).on_hover_text("Stop the runs for now");
+                let label = if session.paused() {
+                    ts("experiment-resume")
+                } else {
+                    ts("experiment-pause")
+                };
+                let pause = ui.button(label).on_hover_text(ts("experiment-pause.help"));
                 rects.insert("experiment_pause", pause.rect);
                 if pause.clicked() {
                     let paused = session.paused();
                     session.set_paused(!paused);
                 }
                 let cancel = ui
-                    .button("Cancel")
-                    .on_hover_text("Stop for good; the runs already finished are kept");
+                    .button(ts("experiment-cancel"))
+                    .on_hover_text(ts("experiment-cancel.help"));
                 rects.insert("experiment_cancel", cancel.rect);
                 if cancel.clicked() {
                     session.cancel();
@@ -551,12 +569,13 @@ impl ExperimentPanel {
         }
         let plan = session.plan().clone();
         let heading = if session.cancelled() {
-            format!(
-                "Cancelled: the {} completed runs of {} are kept below.",
-                p.runs_done, p.runs_total
+            tr!(
+                "experiment-cancelled",
+                done = p.runs_done,
+                total = p.runs_total
             )
         } else {
-            format!("Done: {} runs.", p.runs_done)
+            tr!("experiment-done", count = p.runs_done)
         };
         let r = ui.label(egui::RichText::new(heading).strong());
         rects.insert("experiment_results", r.rect);
@@ -576,28 +595,29 @@ impl ExperimentPanel {
                 .zip(&levels)
                 .map(|(f, l)| format!("{} = {}", f.key, level_text(l)))
                 .collect();
-            out.push(ExperimentOutcome::Notice(Notice::info(format!(
-                "Watching the run with {}, seed {seed}, from its start.",
-                what.join(", ")
+            out.push(ExperimentOutcome::Notice(Notice::info(tr!(
+                "experiment-watching",
+                levels = what.join(", "),
+                seed = seed.to_string()
             ))));
         }
         let mut clear = false;
         ui.horizontal_wrapped(|ui| {
             let csv = ui
-                .button("Download CSV")
-                .on_hover_text("Every run's numbers, one row per run and measure");
+                .button(ts("experiment-download-csv"))
+                .on_hover_text(ts("experiment-download-csv.help"));
             rects.insert("experiment_csv", csv.rect);
             if csv.clicked() {
                 out.push(save_file(
                     &format!("shoal-experiment-{}.csv", file_stem(&plan.design.name)),
                     "text/csv",
                     &session.experiment().csv(),
-                    "open it with a spreadsheet",
+                    &tr("experiment-download-csv-next"),
                 ));
             }
             let clear_button = ui
-                .button("New experiment")
-                .on_hover_text("Put these results away and design another (download them first)");
+                .button(ts("experiment-new"))
+                .on_hover_text(ts("experiment-new.help"));
             rects.insert("experiment_clear", clear_button.rect);
             clear = clear_button.clicked();
             copy_link_button(ui, &plan.design, rects, out);
@@ -615,10 +635,9 @@ fn copy_link_button(
     rects: &mut WidgetRects,
     out: &mut Vec<ExperimentOutcome>,
 ) {
-    let r = ui.button("Copy link").on_hover_text(
-        "Copy a link that opens Shoal on this experiment and runs it again: the same runs, \
-         the same numbers",
-    );
+    let r = ui
+        .button(ts("experiment-copy-link"))
+        .on_hover_text(ts("experiment-copy-link.help"));
     rects.insert("experiment_link", r.rect);
     if r.clicked() {
         out.push(ExperimentOutcome::CopyLink(Box::new(design.clone())));
@@ -637,13 +656,13 @@ fn form_ui(
         .num_columns(2)
         .spacing([8.0, 6.0])
         .show(ui, |ui| {
-            ui.label("Name");
+            ui.label(ts("experiment-name"));
             let r = ui.add(egui::TextEdit::singleline(&mut form.name).desired_width(160.0));
             rects.insert("experiment_name", r.rect);
             ui.end_row();
             factor_ui(
                 ui,
-                "Vary",
+                ts("experiment-vary"),
                 "experiment_factor",
                 &mut form.factor,
                 settings,
@@ -653,8 +672,8 @@ fn form_ui(
             ui.label("");
             let mut two = form.second.is_some();
             let r = ui
-                .checkbox(&mut two, "and a second setting")
-                .on_hover_text("One curve per level of a second setting");
+                .checkbox(&mut two, ts("experiment-second"))
+                .on_hover_text(ts("experiment-second.help"));
             rects.insert("experiment_second_on", r.rect);
             ui.end_row();
             if two && form.second.is_none() {
@@ -672,7 +691,7 @@ fn form_ui(
             if let Some(second) = &mut form.second {
                 factor_ui(
                     ui,
-                    "Then",
+                    ts("experiment-then"),
                     "experiment_factor2",
                     second,
                     settings,
@@ -680,20 +699,20 @@ fn form_ui(
                     rects,
                 );
             }
-            ui.label("Seeds")
-                .on_hover_text("Each level is run once per seed: the same fish, a different start");
+            ui.label(ts("experiment-seeds"))
+                .on_hover_text(ts("experiment-seeds.help"));
             ui.horizontal(|ui| {
                 let r = ui.add(egui::DragValue::new(&mut form.seeds).range(1..=1000));
                 rects.insert("experiment_seeds", r.rect);
-                ui.label("from seed");
+                ui.label(ts("experiment-from-seed"));
                 let r = ui.add(
                     egui::DragValue::new(&mut form.first_seed).range(0..=crate::settings::SEED_MAX),
                 );
                 rects.insert("experiment_first_seed", r.rect);
             });
             ui.end_row();
-            ui.label("Warm-up")
-                .on_hover_text("Seconds of each run before measuring: the school forms");
+            ui.label(ts("experiment-warmup"))
+                .on_hover_text(ts("experiment-warmup.help"));
             let r = ui.add(
                 egui::DragValue::new(&mut form.warmup_secs)
                     .range(0.0..=3600.0)
@@ -702,8 +721,8 @@ fn form_ui(
             );
             rects.insert("experiment_warmup", r.rect);
             ui.end_row();
-            ui.label("Measure for")
-                .on_hover_text("Seconds of each run measured after the warm-up");
+            ui.label(ts("experiment-measure-for"))
+                .on_hover_text(ts("experiment-measure-for.help"));
             let r = ui.add(
                 egui::DragValue::new(&mut form.measure_secs)
                     .range(0.0..=3600.0)
@@ -713,7 +732,7 @@ fn form_ui(
             rects.insert("experiment_measure", r.rect);
             ui.end_row();
         });
-    ui.label(egui::RichText::new("Measures").strong());
+    ui.label(egui::RichText::new(ts("experiment-measures")).strong());
     egui::Grid::new("experiment_measures")
         .num_columns(2)
         .spacing([8.0, 2.0])
@@ -722,10 +741,10 @@ fn form_ui(
                 let r = ui.checkbox(&mut m.on, m.measure.name());
                 rects.insert(&format!("experiment_measure_{}", m.measure.name()), r.rect);
                 ui.horizontal(|ui| {
-                    ui.selectable_value(&mut m.last, false, "mean")
-                        .on_hover_text("The mean over the measuring time");
-                    ui.selectable_value(&mut m.last, true, "final")
-                        .on_hover_text("The value at the end of the run");
+                    ui.selectable_value(&mut m.last, false, ts("experiment-mean"))
+                        .on_hover_text(ts("experiment-mean.help"));
+                    ui.selectable_value(&mut m.last, true, ts("experiment-final"))
+                        .on_hover_text(ts("experiment-final.help"));
                 });
                 ui.end_row();
             }
@@ -742,8 +761,7 @@ fn factor_ui(
     keys: &[String],
     rects: &mut WidgetRects,
 ) {
-    ui.label(label)
-        .on_hover_text("The setting that changes from run to run");
+    ui.label(label).on_hover_text(ts("experiment-vary.help"));
     let before = factor.key.clone();
     let r = egui::ComboBox::from_id_salt(id)
         .selected_text(&factor.key)
@@ -761,19 +779,19 @@ fn factor_ui(
     ui.end_row();
     ui.label("");
     if is_switch(settings, &factor.key) {
-        ui.label("off and on");
+        ui.label(ts("experiment-off-and-on"));
     } else {
         ui.horizontal_wrapped(|ui| {
-            ui.label("from");
+            ui.label(ts("experiment-range-from"));
             let r = ui.add(egui::DragValue::new(&mut factor.from).speed(0.5));
             rects.insert(&format!("{id}_from"), r.rect);
-            ui.label("to");
+            ui.label(ts("experiment-range-to"));
             let r = ui.add(egui::DragValue::new(&mut factor.to).speed(0.5));
             rects.insert(&format!("{id}_to"), r.rect);
-            ui.label("in");
+            ui.label(ts("experiment-range-in"));
             let r = ui.add(egui::DragValue::new(&mut factor.steps).range(1..=1000));
             rects.insert(&format!("{id}_steps"), r.rect);
-            ui.label("levels");
+            ui.label(ts("experiment-range-levels"));
         });
     }
     ui.end_row();
@@ -793,25 +811,28 @@ fn sizing_ui(
         .num_columns(2)
         .striped(true)
         .show(ui, |ui| {
-            ui.label("Runs");
-            ui.label(format!(
-                "{levels} levels × {} seeds = {}",
-                form.seeds, sizing.runs
+            ui.label(ts("experiment-runs"));
+            ui.label(tr!(
+                "experiment-runs-value",
+                levels = levels,
+                seeds = form.seeds,
+                runs = sizing.runs
             ));
             ui.end_row();
-            ui.label("Steps per run");
-            ui.label(format!(
-                "{} warm-up + {} measured ({:.3} s each)",
-                sizing.warmup_steps, sizing.measure_steps, dt
+            ui.label(ts("experiment-steps-per-run"));
+            ui.label(tr!(
+                "experiment-steps-value",
+                warmup = sizing.warmup_steps,
+                measured = sizing.measure_steps,
+                dt = num(dt, 3)
             ));
             ui.end_row();
-            ui.label("Time");
+            ui.label(ts("experiment-time"));
             ui.label(duration_text(sizing.wall_secs()))
-                .on_hover_text(format!(
-                    "{} of computing, done {:.0} ms a frame while the tank keeps swimming \
-                     (more on a computer that draws under 30 frames a second)",
-                    duration_text(sizing.compute_secs()),
-                    FRAME_BUDGET_SECS * 1000.0
+                .on_hover_text(tr!(
+                    "experiment-time-help",
+                    compute = duration_text(sizing.compute_secs()),
+                    ms = num(FRAME_BUDGET_SECS * 1000.0, 0)
                 ));
             ui.end_row();
         });
@@ -973,6 +994,35 @@ mod tests {
             };
             assert!(one.validate().is_ok(), "{key}: {:?}", one.validate().err());
         }
+    }
+
+    #[test]
+    fn the_window_speaks_spanish_with_decimal_commas() {
+        use crate::i18n::{Lang, with_lang};
+        with_lang(Lang::Es, || {
+            assert_eq!(duration_text(7200.0), "unas 2,0 h");
+            assert_eq!(duration_text(0.2), "menos de un segundo");
+            assert_eq!(tr!("experiment-done", count = 1), "Listo: 1 corrida.");
+            assert_eq!(
+                tr!("experiment-runs-value", levels = 3, seeds = 1, runs = 3),
+                "3 niveles × 1 semilla = 3"
+            );
+            assert_eq!(level_text(&json!(0.5)), "0,5");
+            assert_eq!(level_text(&json!(true)), "encendido");
+            let mut design = DesignForm::new(&boids(), &factor_keys(&boids())).design(&boids());
+            design.measure_secs = 0.1;
+            let err = design.validate().expect_err("too short").to_string();
+            assert!(
+                err.starts_with("measure_secs: en 0,1 s no cabe ninguna muestra"),
+                "{err}"
+            );
+            assert!(err.contains("mide al menos 0,"), "{err}");
+            let err = crate::experiment::link::decode("").expect_err("empty");
+            assert_eq!(err.to_string(), "el enlace no contiene ningún experimento");
+        });
+        // English stays as it was.
+        assert_eq!(duration_text(7200.0), "about 2.0 h");
+        assert_eq!(level_text(&json!(0.5)), "0.5");
     }
 
     #[test]

@@ -11,6 +11,8 @@ use serde_json::Value;
 use super::WidgetRects;
 use crate::experiment::summary::significant;
 use crate::experiment::{Plan, SummaryRow};
+use crate::i18n::{localize_decimal, tr, ts};
+use crate::tr;
 
 /// Height of one dose–response plot, points. Default 150: two plots and the
 /// table fit a laptop's window; a phone scrolls.
@@ -31,14 +33,16 @@ fn level_x(level: &Value) -> f64 {
     }
 }
 
-/// A level as a person reads it (`80`, not `80.0`; `on`, `off`).
+/// A level as a person reads it (`80`, not `80.0`; `on`, `off`), in the
+/// language in force (`0,5` in Spanish).
 pub fn level_text(level: &Value) -> String {
     match level {
-        Value::Bool(true) => "on".into(),
-        Value::Bool(false) => "off".into(),
-        Value::Number(n) => n
-            .as_f64()
-            .map_or_else(|| n.to_string(), |x| format!("{}", (x * 1e6).round() / 1e6)),
+        Value::Bool(true) => tr("experiment-level-on"),
+        Value::Bool(false) => tr("experiment-level-off"),
+        Value::Number(n) => localize_decimal(
+            &n.as_f64()
+                .map_or_else(|| n.to_string(), |x| format!("{}", (x * 1e6).round() / 1e6)),
+        ),
         other => other.to_string(),
     }
 }
@@ -53,23 +57,30 @@ pub fn results_ui(
 ) -> Option<WatchRequest> {
     let mut watch = None;
     if rows.is_empty() {
-        ui.label("No run has finished yet.");
+        ui.label(ts("experiment-no-run-yet"));
         return None;
     }
     for (m, &(measure, summary)) in plan.measures.iter().enumerate() {
         let summary_name = if summary == crate::experiment::Summary::Final {
-            "final"
+            ts("experiment-final")
         } else {
-            "mean"
+            ts("experiment-mean")
         };
-        ui.label(egui::RichText::new(format!("{} ({summary_name})", measure.name())).strong());
+        ui.label(
+            egui::RichText::new(tr!(
+                "experiment-plot-title",
+                measure = measure.name(),
+                summary = summary_name
+            ))
+            .strong(),
+        );
         let mine: Vec<&SummaryRow> = rows.iter().filter(|r| r.measure == measure).collect();
         if let Some(w) = dose_response_plot(ui, plan, m, &mine, rects) {
             watch = Some(w);
         }
     }
     ui.add_space(4.0);
-    ui.label(egui::RichText::new("Mean over seeds [95 % interval]").strong());
+    ui.label(egui::RichText::new(ts("experiment-table-title")).strong());
     egui::ScrollArea::horizontal()
         .id_salt("experiment_table_scroll")
         .show(ui, |ui| {
@@ -83,7 +94,7 @@ pub fn results_ui(
                     for &(measure, _) in &plan.measures {
                         ui.strong(measure.name());
                     }
-                    ui.strong("watch a run");
+                    ui.strong(ts("experiment-table-watch"));
                     ui.end_row();
                     for (r, chunk) in rows.chunks(plan.measures.len().max(1)).enumerate() {
                         let Some(first) = chunk.first() else {
@@ -95,22 +106,24 @@ pub fn results_ui(
                         ui.label(first.n.to_string());
                         for row in chunk {
                             ui.label(if row.ci95_low.is_finite() {
-                                format!(
-                                    "{} [{}, {}]",
-                                    significant(row.mean),
-                                    significant(row.ci95_low),
-                                    significant(row.ci95_high)
+                                tr!(
+                                    "experiment-interval",
+                                    mean = localize_decimal(&significant(row.mean)),
+                                    low = localize_decimal(&significant(row.ci95_low)),
+                                    high = localize_decimal(&significant(row.ci95_high))
                                 )
                             } else {
-                                significant(row.mean)
+                                localize_decimal(&significant(row.mean))
                             });
                         }
                         ui.horizontal(|ui| {
                             for (k, &seed) in plan.seeds.iter().take(first.n).enumerate() {
-                                let b = ui.small_button(format!("seed {seed}")).on_hover_text(
-                                    "Set the tank to this level and seed, from the start: \
-                                     watch this very run",
-                                );
+                                let b = ui
+                                    .small_button(tr!(
+                                        "experiment-seed-button",
+                                        seed = seed.to_string()
+                                    ))
+                                    .on_hover_text(ts("experiment-seed-button.help"));
                                 rects.insert(&format!("experiment_watch_{r}_{k}"), b.rect);
                                 if b.clicked() {
                                     watch = Some(WatchRequest {
@@ -146,7 +159,7 @@ fn dose_response_plot(
     let x_name = plan
         .factors
         .first()
-        .map_or_else(|| "(no factor)".to_owned(), |f| f.key.clone());
+        .map_or_else(|| tr("experiment-no-factor"), |f| f.key.clone());
     let mut points_all: Vec<([f64; 2], Vec<Value>)> = Vec::new();
     let response = Plot::new(("experiment_plot", m))
         .height(PLOT_HEIGHT)

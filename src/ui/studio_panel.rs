@@ -15,8 +15,10 @@ use eframe::egui;
 
 use super::WidgetRects;
 use super::scene_panel::Notice;
+use crate::i18n::ts;
 use crate::settings::Settings;
 use crate::settings::studio::{ControlRule, Studio};
+use crate::tr;
 
 /// The rules of this frame, kept in egui's memory so every panel reaches them
 /// without a new argument.
@@ -155,11 +157,8 @@ fn student_control<R>(
     }
     if rule.mystery {
         let r = ui
-            .label(egui::RichText::new("? (mystery value)").italics())
-            .on_hover_text(
-                "Your teacher hid this number. Watch what the fish do and work out what \
-                 it must be.",
-            );
+            .label(egui::RichText::new(ts("studio-mystery-value")).italics())
+            .on_hover_text(ts("studio-mystery-value.help"));
         rects.insert(&format!("mystery_{key}"), r.rect);
         return None;
     }
@@ -167,7 +166,7 @@ fn student_control<R>(
         let r = ui
             .add_enabled_ui(false, |ui| add(ui, rects))
             .response
-            .on_disabled_hover_text("Locked by your teacher for this lesson");
+            .on_disabled_hover_text(ts("studio-locked"));
         rects.insert(&format!("locked_{key}"), r.rect);
         return None;
     }
@@ -182,26 +181,26 @@ fn toggles(ui: &mut egui::Ui, rects: &mut WidgetRects, key: &str, studio: &Studi
     for (flag, text, help, what) in [
         (
             &mut next.hidden,
-            "H",
-            "Hide: students do not see this control",
+            ts("studio-toggle-hide"),
+            ts("studio-toggle-hide.help"),
             "hide",
         ),
         (
             &mut next.locked,
-            "L",
-            "Lock: students see it greyed and cannot change it",
+            ts("studio-toggle-lock"),
+            ts("studio-toggle-lock.help"),
             "lock",
         ),
         (
             &mut next.mystery,
-            "?",
-            "Mystery: students see the fish but not this number (it is locked too)",
+            ts("studio-toggle-mystery"),
+            ts("studio-toggle-mystery.help"),
             "mystery",
         ),
     ] {
         let r = ui
             .add(egui::Button::selectable(*flag, text).small())
-            .on_hover_text(format!("{help} ({key})"));
+            .on_hover_text(tr!("studio-toggle-help", help = help, key = key));
         rects.insert(&format!("studio_{what}_{name}"), r.rect);
         if r.clicked() {
             *flag = !*flag;
@@ -223,11 +222,8 @@ pub fn studio_button(ui: &mut egui::Ui, studio: &Studio, rects: &mut WidgetRects
     }
     let open = ui.data(|d| d.get_temp::<bool>(open_id()) == Some(true));
     let r = ui
-        .add(egui::Button::selectable(open, "Teacher's studio"))
-        .on_hover_text(
-            "Hide, lock or make a mystery of any control, write your own question, and \
-             share the result with your class as a link and a QR code",
-        );
+        .add(egui::Button::selectable(open, ts("studio-button")))
+        .on_hover_text(ts("studio-button.help"));
     rects.insert("studio_open", r.rect);
     if r.clicked() {
         ui.data_mut(|d| d.insert_temp(open_id(), !open));
@@ -244,7 +240,7 @@ pub fn question_card(ui: &mut egui::Ui, studio: &Studio, rects: &mut WidgetRects
         .fill(ui.visuals().faint_bg_color)
         .show(ui, |ui| {
             ui.set_width(ui.available_width());
-            ui.label(egui::RichText::new("Your teacher asks").strong());
+            ui.label(egui::RichText::new(ts("studio-teacher-asks")).strong());
             ui.add(egui::Label::new(egui::RichText::new(question).size(15.0)).wrap());
         });
     rects.insert("studio_question_card", r.response.rect);
@@ -287,7 +283,7 @@ impl StudioPanel {
         if open {
             let screen = ctx.content_rect();
             let width = (screen.width() - 24.0).clamp(220.0, 420.0);
-            let shown = egui::Window::new("Teacher's studio")
+            let shown = egui::Window::new(ts("studio-button"))
                 .id(egui::Id::unique("studio_window"))
                 .open(&mut open)
                 .collapsible(false)
@@ -308,7 +304,7 @@ impl StudioPanel {
             let mut share_open = true;
             let screen = ctx.content_rect();
             let side = (screen.height() - 260.0).clamp(160.0, 520.0);
-            let shown = egui::Window::new("Share with class")
+            let shown = egui::Window::new(ts("studio-share"))
                 .id(egui::Id::unique("studio_share_window"))
                 .open(&mut share_open)
                 .collapsible(false)
@@ -317,10 +313,7 @@ impl StudioPanel {
                 .constrain(true)
                 .show(ctx, |ui| {
                     ui.set_max_width(side.max(260.0));
-                    ui.label(
-                        "Project this QR code or send the link: it opens Shoal as it is now, \
-                         in the student view (your rules in force, your question shown).",
-                    );
+                    ui.label(ts("studio-share-intro"));
                     match self.qr.as_ref().map(|(_, qr)| qr) {
                         Some(Ok(code)) => {
                             let r = super::qr::draw(ui, code, side);
@@ -337,25 +330,22 @@ impl StudioPanel {
                     .on_hover_text(&link);
                     ui.horizontal(|ui| {
                         let copy = ui
-                            .button("Copy link")
-                            .on_hover_text("Put the students' link on the clipboard");
+                            .button(ts("studio-copy-link"))
+                            .on_hover_text(ts("studio-copy-link.help"));
                         rects.insert("studio_copy_link", copy.rect);
                         if copy.clicked() {
                             ui.ctx().copy_text(link.clone());
-                            notice = Some(Notice::info(
-                                "Students' link copied. It opens the student view: your \
-                                 rules in force and your question shown.",
-                            ));
+                            notice = Some(Notice::info(ts("studio-link-copied")));
                         }
                         let try_it = ui
                             .add(
                                 egui::Hyperlink::from_label_and_url(
-                                    "Open the student view in a new tab",
+                                    ts("studio-open-student-view"),
                                     &link,
                                 )
                                 .open_in_new_tab(true),
                             )
-                            .on_hover_text("Check what your students will see");
+                            .on_hover_text(ts("studio-open-student-view.help"));
                         rects.insert("studio_try_link", try_it.rect);
                     });
                 });
@@ -368,34 +358,23 @@ impl StudioPanel {
     }
 
     fn studio_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
-        ui.label(
-            "Beside every control in the side panel: H hides it from your students, \
-             L locks it (they see it greyed), ? makes its value a mystery (they see the \
-             fish, not the number, and must work it out; it is locked too).",
-        );
-        ui.label(
-            egui::RichText::new(
-                "The students' page starts from the settings you have now: choose the scene, \
-                 the sliders and the seed first.",
-            )
-            .small()
-            .weak(),
-        );
+        ui.label(ts("studio-intro"));
+        ui.label(egui::RichText::new(ts("studio-intro-note")).small().weak());
         ui.add_space(4.0);
-        ui.label(egui::RichText::new("Your question for the class").strong());
+        ui.label(egui::RichText::new(ts("studio-question")).strong());
         let question = ui.add(
             egui::TextEdit::multiline(&mut settings.studio.question)
                 .char_limit(crate::settings::studio::QUESTION_MAX_CHARS)
                 .desired_rows(3)
                 .desired_width(f32::INFINITY)
-                .hint_text("e.g. How strongly do these fish copy their neighbours?"),
+                .hint_text(ts("studio-question-hint")),
         );
         rects.insert("studio_question", question.rect);
 
         ui.add_space(4.0);
-        ui.label(egui::RichText::new("Rules").strong());
+        ui.label(egui::RichText::new(ts("studio-rules")).strong());
         if settings.studio.rules.is_empty() {
-            ui.label(egui::RichText::new("None yet: every control is free.").weak());
+            ui.label(egui::RichText::new(ts("studio-no-rules")).weak());
         }
         let mut remove = None;
         egui::Grid::new("studio_rules")
@@ -405,16 +384,16 @@ impl StudioPanel {
                 for (key, rule) in &settings.studio.rules {
                     let mut what = Vec::new();
                     if rule.hidden {
-                        what.push("hidden");
+                        what.push(ts("studio-rule-hidden"));
                     }
                     if rule.locked {
-                        what.push("locked");
+                        what.push(ts("studio-rule-locked"));
                     }
                     if rule.mystery {
-                        what.push("mystery");
+                        what.push(ts("studio-rule-mystery"));
                     }
-                    ui.label(format!("{key}: {}", what.join(", ")));
-                    let r = ui.small_button("Remove");
+                    ui.label(tr!("studio-rule", key = key, what = what.join(", ")));
+                    let r = ui.small_button(ts("studio-remove"));
                     rects.insert(&format!("studio_remove_{}", key.replace('.', "_")), r.rect);
                     if r.clicked() {
                         remove = Some(key.clone());
@@ -428,9 +407,9 @@ impl StudioPanel {
         ui.add_space(6.0);
         let share = ui
             .add(egui::Button::new(
-                egui::RichText::new("Share with class").strong(),
+                egui::RichText::new(ts("studio-share")).strong(),
             ))
-            .on_hover_text("A link and a QR code that open this setting in the student view");
+            .on_hover_text(ts("studio-share.help"));
         rects.insert("studio_share", share.rect);
         if share.clicked() {
             self.share_open = true;
@@ -546,6 +525,43 @@ mod tests {
         // A student's page never shows the toggles, even with the flag set.
         let (student, _) = draw_tank(&lesson(true), true);
         assert!(student.get("studio_hide_left_stingrays").is_none());
+    }
+
+    #[test]
+    fn the_studio_speaks_spanish() {
+        use crate::i18n::{Lang, with_lang};
+        with_lang(Lang::Es, || {
+            assert_eq!(ts("studio-mystery-value"), "? (valor misterioso)");
+            assert_eq!(
+                tr!(
+                    "studio-rule",
+                    key = "left.alignment",
+                    what = "oculto, bloqueado"
+                ),
+                "left.alignment: oculto, bloqueado"
+            );
+            let mut settings = Settings::default();
+            let err = settings
+                .apply_patch(&json!({"studio": {"rules": {"speed": {"secret": true}}}}))
+                .expect_err("an unknown flag")
+                .to_string();
+            assert!(err.contains("marca desconocida 'secret'"), "{err}");
+            let studio = lesson(true);
+            let before = Settings {
+                studio: studio.clone(),
+                ..Settings::default()
+            };
+            let mut after = before.clone();
+            after.left.wander = 0.25;
+            let err = studio
+                .check_unchanged(&before, &after)
+                .expect_err("locked")
+                .to_string();
+            assert!(
+                err.contains("está bloqueado por el estudio del maestro"),
+                "{err}"
+            );
+        });
     }
 
     #[test]
