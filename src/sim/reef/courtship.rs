@@ -137,7 +137,7 @@ impl Courtship {
         } else {
             "nearer"
         };
-        let text = Line::new("event-chose")
+        let text = Line::new("reef-event-chose")
             .animal("female", animals, female as usize)
             .animal("male", animals, male as usize)
             .number("male_length", f64::from(length(male)), 2)
@@ -193,7 +193,7 @@ impl Courtship {
                 );
                 self.suitor_mut(pair.male as usize).rejected_by =
                     Some((pair.female, REJECTED_SECS));
-                let text = Line::new("event-left-for-larger")
+                let text = Line::new("reef-event-left-for-larger")
                     .animal("female", animals, pair.female as usize)
                     .animal("old", animals, pair.male as usize)
                     .animal("new", animals, new as usize);
@@ -230,7 +230,7 @@ impl Courtship {
                     j,
                     animals[j as usize].body.heading(),
                 ));
-                let text = Line::new("event-began-courting")
+                let text = Line::new("reef-event-began-courting")
                     .animal("male", animals, i)
                     .animal("female", animals, j as usize);
                 log.push(
@@ -273,14 +273,14 @@ impl Courtship {
                 };
                 (p, entered)
             };
-            let names = Line::new("event-stopped-courting")
+            let names = Line::new("reef-event-stopped-courting")
                 .animal("male", animals, pair.male as usize)
                 .animal("female", animals, pair.female as usize);
             if let Some(phase) = entered {
                 let text = if phase == Phase::Spawned {
-                    Line::new("event-spawned")
+                    Line::new("reef-event-spawned")
                 } else {
-                    Line::new("event-courtship-phase").key("phase", phase_key(phase))
+                    Line::new("reef-event-courtship-phase").key("phase", phase_key(phase))
                 }
                 .animal("male", animals, pair.male as usize)
                 .animal("female", animals, pair.female as usize);

@@ -3,15 +3,16 @@
 //! run. Every stage that logs takes the [`EventLog`] as an explicit input.
 //!
 //! A line's words come from the catalogue (`locales/*/reef.ftl`, ids
-//! `event-…`): each event keeps its [`Line`] (the message and what fills it)
-//! so the screen can write it again in the language in force
-//! ([`ReefEvent::words`]); `text` is the line as written when it happened.
+//! `reef-event-…`): each event keeps its [`Line`] (the message and what
+//! fills it) so the screen and the narration write it in the language in
+//! force ([`ReefEvent::words`]); `text` is the line in English, for what
+//! programs read (`shoal.state()`, the CSV export, *Skip*'s outcome).
 
 use std::collections::VecDeque;
 
 use serde::{Deserialize, Serialize};
 
-use crate::i18n::{Args, arg, num, tr_with};
+use crate::i18n::{Args, Lang, arg, num, tr_with, with_lang};
 use crate::sim::reef::animal::{ReefAnimal, animal_name};
 use crate::sim::reef::mind::{FishKind, Focus, Intention, Target};
 use crate::sim::reef::pair::Phase;
@@ -21,7 +22,8 @@ use crate::sim::reef::pair::Phase;
 pub struct ReefEvent {
     pub time_secs: f64,
     pub kind: ReefEventKind,
-    /// The line in the language in force when it was logged.
+    /// The line in English whatever the screen's language: `shoal.state()`,
+    /// the CSV export and test scripts read it.
     pub text: String,
     /// The line's message and values, to write it again.
     #[serde(skip)]
@@ -29,7 +31,8 @@ pub struct ReefEvent {
 }
 
 impl ReefEvent {
-    /// The line in the language in force now.
+    /// The line in the language in force now, for the screen and the
+    /// narration.
     pub fn words(&self) -> String {
         if self.line.id.is_empty() {
             self.text.clone()
@@ -291,7 +294,7 @@ impl EventLog {
 
     /// Logs what happened at `time_secs`.
     pub(super) fn push(&mut self, time_secs: f64, kind: ReefEventKind, line: Line) {
-        let text = line.render();
+        let text = with_lang(Lang::En, || line.render());
         self.logged += 1;
         if self.lines.len() == EVENT_LOG_LEN {
             self.lines.pop_front();
@@ -325,7 +328,7 @@ impl EventLog {
                         .is_none_or(|t| time_secs - t >= ESCAPE_LOG_EVERY_SECS) =>
             {
                 self.last_escape_logged_secs[i] = Some(time_secs);
-                let text = Line::new("event-fled")
+                let text = Line::new("reef-event-fled")
                     .animal("fish", animals, i)
                     .animal("predator", animals, p as usize);
                 self.push(

@@ -213,7 +213,7 @@ impl Feeding {
         prey.drive_mut().dart(away * top);
         self.strike_recovery_secs[i] = params.missed_strike_recovery_secs;
         io.counts.missed_strikes += 1;
-        let text = Line::new("event-missed")
+        let text = Line::new("reef-event-missed")
             .animal("predator", animals, i)
             .animal("prey", animals, j)
             .count("crowd", crowd as u32);
@@ -281,7 +281,7 @@ impl Feeding {
                             let before = a.mental.hunger;
                             a.mental.eat(&a.habits.mental, 1.0);
                             io.counts.food_eaten += 1;
-                            let text = Line::new("event-ate-plankton")
+                            let text = Line::new("reef-event-ate-plankton")
                                 .animal_of("fish", a.habits.kind, i)
                                 .number("before", f64::from(before), 2)
                                 .number("after", f64::from(a.mental.hunger), 2);
@@ -326,7 +326,7 @@ impl Feeding {
                             if schooling {
                                 io.counts.schooling_prey_eaten += 1;
                             }
-                            let text = Line::new("event-ate")
+                            let text = Line::new("reef-event-ate")
                                 .animal("predator", animals, i)
                                 .animal("prey", animals, j);
                             io.log.push(

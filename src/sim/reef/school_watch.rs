@@ -130,11 +130,11 @@ impl SchoolWatch {
                 }
                 let fish = prey[groups[1][0]].0 as u32;
                 let text = Line::new(if at_pillar {
-                    "event-school-split-at-pillar"
+                    "reef-event-school-split-at-pillar"
                 } else {
-                    "event-school-split"
+                    "reef-event-school-split"
                 })
-                .count("groups", n as u32);
+                .count("groups", n);
                 log.push(now, ReefEventKind::SchoolSplit { fish, groups: n }, text);
             }
             // The first state the watch sees is not news: a school that
@@ -145,7 +145,7 @@ impl SchoolWatch {
                 log.push(
                     now,
                     ReefEventKind::SchoolJoined { fish },
-                    Line::new("event-school-joined"),
+                    Line::new("reef-event-school-joined"),
                 );
             }
             _ => {}
@@ -181,7 +181,7 @@ impl SchoolWatch {
                 log.push(
                     inputs.time_secs,
                     ReefEventKind::SchoolAtPillar { fish: i as u32 },
-                    Line::new("event-school-at-pillar"),
+                    Line::new("reef-event-school-at-pillar"),
                 );
             }
             return;
@@ -198,7 +198,7 @@ impl SchoolWatch {
                     ReefEventKind::SchoolPassedWhole {
                         fish: prey[0].0 as u32,
                     },
-                    Line::new("event-school-passed-whole"),
+                    Line::new("reef-event-school-passed-whole"),
                 );
             }
         }
