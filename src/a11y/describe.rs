@@ -307,12 +307,13 @@ pub fn full(state: &StateReport, histories: &[(&str, &MetricsHistory)]) -> Strin
     if let Some(reef) = &state.scene_report.reef
         && !reef.events.is_empty()
     {
-        let latest: Vec<&str> = reef
+        // Each line in the language in force (`text` is English, for programs).
+        let latest: Vec<String> = reef
             .events
             .iter()
             .rev()
             .take(3)
-            .map(|e| e.text.as_str())
+            .map(|e| e.words())
             .collect();
         words.push(tr!("describe-latest", events = latest.join("; ")));
     }
@@ -333,7 +334,9 @@ struct Glance {
     groups: u32,
     aligned: bool,
     catches: u64,
-    last_reef_event: Option<(u64, String)>,
+    /// The latest reef event: its time (ms) and English line (which tell it
+    /// apart whatever the language), and its line in the language in force.
+    last_reef_event: Option<(u64, String, String)>,
 }
 
 impl Glance {
@@ -348,7 +351,7 @@ impl Glance {
             last_reef_event: state.scene_report.reef.as_ref().and_then(|r| {
                 r.events
                     .last()
-                    .map(|e| ((e.time_secs * 1000.0) as u64, e.text.clone()))
+                    .map(|e| ((e.time_secs * 1000.0) as u64, e.text.clone(), e.words()))
             }),
         }
     }
@@ -381,10 +384,15 @@ fn news(before: &Glance, now: &Glance, state: &StateReport) -> Vec<String> {
         let new = now.catches - before.catches;
         said.push(tr!("describe-caught", count = new, total = now.catches));
     }
-    if now.last_reef_event != before.last_reef_event
-        && let Some((_, text)) = &now.last_reef_event
+    let event = |g: &Glance| {
+        g.last_reef_event
+            .as_ref()
+            .map(|(t, text, _)| (*t, text.clone()))
+    };
+    if event(now) != event(before)
+        && let Some((_, _, words)) = &now.last_reef_event
     {
-        said.push(text.clone());
+        said.push(words.clone());
     }
     said
 }

@@ -195,18 +195,8 @@ pub(crate) const NOT_YET: &[&str] = &[
     "investigation/measure.rs",
     "investigation/outcome.rs",
     "investigation/record.rs",
-    "sim/reef/courtship.rs",
-    "sim/reef/demos.rs",
-    "sim/reef/events.rs",
-    "sim/reef/feeding.rs",
-    "sim/reef/school_watch.rs",
     "ui/investigation_panel.rs",
     "ui/investigation_plot.rs",
-    "ui/reef_inspector.rs",
-    "ui/reef_minds.rs",
-    "ui/reef_overlay.rs",
-    "ui/reef_panel.rs",
-    "ui/reef_skip.rs",
 ];
 
 /// Files that show nothing to a student: the simulation's own diagnostics,

@@ -146,6 +146,7 @@ impl SceneWorld {
                 subject: e.kind.subject(),
                 follow: w.config().scene.moment().follow,
                 text: e.text.clone(),
+                words: e.words(),
             }),
             Self::Boids(_) | Self::Physics(_) | Self::Learning(_) => None,
         }

@@ -9,11 +9,14 @@ use super::WidgetRects;
 use super::bottom_panel::plot_height_under_caption;
 use super::bottom_panel::time_plot;
 use super::reef_panel::{
-    FEAR_COLOR, HUNGER_COLOR, LIBIDO_COLOR, intention_color, intention_sentence,
+    FEAR_COLOR, HUNGER_COLOR, LIBIDO_COLOR, intention_color, intention_sentence, intention_word,
 };
+use crate::i18n::{fmt, localize_decimal, num, ts};
 use crate::lab::Run;
+use crate::sim::reef::events::phase_key;
 use crate::sim::reef::mind::{FishKind, Intention, Liking, Sex, Target};
 use crate::sim::reef::world::{ReefAnimal, ReefBody, ReefWorld};
+use crate::tr;
 
 /// What the fish-eye panel shows (made by the app from `ReefWorld::retina`).
 pub struct FishEyeView<'a> {
@@ -146,10 +149,10 @@ impl InspectorTab {
 
     fn label(self) -> &'static str {
         match self {
-            Self::Mind => "Mind",
-            Self::History => "Last 2 min",
-            Self::Sees => "Sees",
-            Self::Log => "Events",
+            Self::Mind => ts("reef-tab-mind"),
+            Self::History => ts("reef-tab-history"),
+            Self::Sees => ts("reef-tab-sees"),
+            Self::Log => ts("reef-tab-log"),
         }
     }
 
@@ -198,17 +201,15 @@ impl Columns<'_> {
                     .max_height(self.content_height)
                     .show(ui, |ui| {
                         let counts = reef.counts();
-                        ui.label(egui::RichText::new("Reef").strong());
-                        ui.label(format!(
-                            "{} animals alive · {} plankton · {} prey eaten · {} spawnings",
-                            reef.alive_count(),
-                            reef.food().len(),
-                            counts.prey_eaten,
-                            counts.spawnings
+                        ui.label(egui::RichText::new(ts("reef-heading")).strong());
+                        ui.label(tr!(
+                            "reef-summary",
+                            animals = reef.alive_count(),
+                            plankton = reef.food().len(),
+                            eaten = counts.prey_eaten,
+                            spawnings = counts.spawnings,
                         ));
-                        ui.label(
-                            "Click a fish to see its hunger, fear and plans, and what it sees.",
-                        );
+                        ui.label(ts("reef-summary-hint"));
                     });
             }
         }
@@ -224,20 +225,23 @@ impl Columns<'_> {
         let Some((_, a)) = self.animal else {
             return;
         };
-        ui.label(egui::RichText::new("What it sees").strong())
-            .on_hover_text(
-                "The world through this fish's eye: it sees almost all around, squeezed into \
-                 a circle. Its brain only uses how bright it is",
-            );
+        ui.label(egui::RichText::new(ts("reef-sees")).strong())
+            .on_hover_text(ts("reef-sees.help"));
         if let Some(view) = self.fish_eye {
             // The eye and the two lines under it fit under the caption.
             let side = (self.under_caption - 2.0 * (self.line + self.spacing)).clamp(0.0, 150.0);
             let r =
                 ui.add(egui::Image::new(view.texture).fit_to_exact_size(egui::vec2(side, side)));
             rects.insert("fish_eye", r.rect);
-            ui.label(format!("Brightness {:.2}", view.mean_brightness));
+            ui.label(tr!(
+                "reef-brightness",
+                value = num(f64::from(view.mean_brightness), 2)
+            ));
         }
-        ui.label(format!("Water {:.1} °C", a.temperature_c));
+        ui.label(tr!(
+            "reef-water",
+            value = num(f64::from(a.temperature_c), 1)
+        ));
     }
 
     fn log(&self, ui: &mut egui::Ui, rects: &mut WidgetRects) -> Option<u32> {
@@ -253,49 +257,59 @@ fn mind_summary_ui(
     rects: &mut WidgetRects,
 ) {
     let h = &a.habits;
+    // Selectors of the catalogue's messages, not words.
     let sex = match h.sex {
         Sex::Male => "male",
         Sex::Female => "female",
     };
     let title = if a.alive {
-        format!("{} · {} {}", a.name(i), sex, h.kind.label())
+        // (`FishKind::label` is an id: "predator", "prey", "pacifist".)
+        tr!(
+            "reef-inspector-title",
+            name = a.name(i),
+            sex = sex,
+            kind = h.kind.label()
+        )
     } else {
-        format!("{} · eaten", a.name(i))
+        tr!("reef-inspector-eaten", name = a.name(i))
     };
     let r = ui.label(egui::RichText::new(title).strong());
     rects.insert("reef_inspector", r.rect);
-    let liking = |l: Liking, high: &str, low: &str| match l {
-        Liking::Indifferent => "any".to_owned(),
-        Liking::High => high.to_owned(),
-        Liking::Low => low.to_owned(),
+    let liking = |l: Liking, high: &'static str, low: &'static str| match l {
+        Liking::Indifferent => "any",
+        Liking::High => high,
+        Liking::Low => low,
     };
-    ui.label(format!(
-        "Species {} · {:.2} m · likes {} light, {} water{}",
-        h.species,
-        a.body.body_length_m(),
-        liking(h.light, "bright", "dim"),
-        liking(h.temperature, "warm", "cool"),
-        if h.schools { " · schools" } else { "" }
+    ui.label(tr!(
+        "reef-inspector-habits",
+        species = h.species,
+        length = num(f64::from(a.body.body_length_m()), 2),
+        light = liking(h.light, "bright", "dim"),
+        temperature = liking(h.temperature, "warm", "cool"),
+        schools = if h.schools { "yes" } else { "no" },
     ))
-    .on_hover_text("Habits: what this fish was born liking. They never change.");
-    for (name, value, color, help) in [
+    .on_hover_text(ts("reef-inspector-habits.help"));
+    for (name, key, value, color, help) in [
         (
-            "Hunger",
+            ts("reef-inspector-hunger"),
+            "hunger",
             a.mental.hunger,
             HUNGER_COLOR,
-            "Grows as food digests; drops when it eats",
+            ts("reef-inspector-hunger.help"),
         ),
         (
-            "Libido",
+            ts("reef-inspector-libido"),
+            "libido",
             a.mental.libido,
             LIBIDO_COLOR,
-            "Grows with time since mating, unless it is hungry",
+            ts("reef-inspector-libido.help"),
         ),
         (
-            "Fear",
+            ts("reef-inspector-fear"),
+            "fear",
             a.mental.fear,
             FEAR_COLOR,
-            "High when it sees a predator close by",
+            ts("reef-inspector-fear.help"),
         ),
     ] {
         ui.horizontal(|ui| {
@@ -306,32 +320,35 @@ fn mind_summary_ui(
                 .fill(color)
                 .desired_width(180.0);
             let r = ui.add(bar).on_hover_text(help);
-            ui.label(egui::RichText::new(format!("{value:.2}")).monospace());
-            rects.insert(&format!("reef_bar_{}", name.to_lowercase()), r.rect);
+            ui.label(egui::RichText::new(fmt(f64::from(value), 2)).monospace());
+            rects.insert(&format!("reef_bar_{key}"), r.rect);
         });
     }
     let focus = a.focus;
     let sentence = match (focus.intention, h.kind) {
-        (Intention::Eat, FishKind::Predator) => "it is hungry: it hunts",
+        (Intention::Eat, FishKind::Predator) => ts("reef-intention-hunt"),
         (intention, _) => intention_sentence(intention),
     };
     let r = ui.label(
-        egui::RichText::new(format!(
-            "Intends to {}: {}",
-            focus.intention.label(),
-            sentence
+        egui::RichText::new(tr!(
+            "reef-inspector-intends",
+            intention = intention_word(focus.intention),
+            sentence = sentence
         ))
         .color(intention_color(focus.intention)),
     );
     rects.insert("reef_intention", r.rect);
-    ui.label(format!("Focus: {}", target_text(reef, focus.target)));
+    ui.label(tr!(
+        "reef-inspector-focus",
+        target = target_text(reef, focus.target)
+    ));
     match a.generator.memory {
-        Some(m) => ui.label(format!(
-            "Remembers: {} {} (resumes it after swerving)",
-            m.intention.label(),
-            target_text(reef, m.target)
+        Some(m) => ui.label(tr!(
+            "reef-inspector-remembers",
+            intention = intention_word(m.intention),
+            target = target_text(reef, m.target)
         )),
-        None => ui.label("Remembers: nothing"),
+        None => ui.label(ts("reef-inspector-remembers-nothing")),
     };
     if let Some(pair) = reef.pair_of(i) {
         let partner = if pair.male as usize == i {
@@ -339,49 +356,52 @@ fn mind_summary_ui(
         } else {
             pair.male
         };
-        ui.label(format!(
-            "Courting: {} with {} ({})",
-            pair.phase.label(),
-            target_text(reef, Some(Target::Animal(partner))),
-            pair.count
+        ui.label(tr!(
+            "reef-inspector-courting",
+            phase = phase_key(pair.phase),
+            partner = target_text(reef, Some(Target::Animal(partner))),
+            count = pair.count
         ));
     }
     if let ReefBody::Physical(p) = &a.body {
         let m = p.motor();
-        ui.label(format!(
-            "Muscles: swim {:.0} %{}, fins {:+.0}°",
-            100.0 * m.speed_fraction,
-            if m.turning { ", turning" } else { "" },
-            (m.fins.left_angle_rad - std::f32::consts::FRAC_PI_2).to_degrees()
+        ui.label(tr!(
+            "reef-inspector-muscles",
+            speed = num(f64::from(100.0 * m.speed_fraction), 0),
+            turning = if m.turning { "yes" } else { "no" },
+            // A whole number with its sign: the same in every language.
+            fins = format!(
+                "{:+.0}",
+                (m.fins.left_angle_rad - std::f32::consts::FRAC_PI_2).to_degrees()
+            )
         ))
-        .on_hover_text("What the brain tells the muscles this moment");
+        .on_hover_text(ts("reef-inspector-muscles.help"));
     } else {
-        ui.label(format!(
-            "Speed {:.2} m/s (point body)",
-            a.body.velocity_m_per_s().length()
+        ui.label(tr!(
+            "reef-inspector-speed",
+            speed = num(f64::from(a.body.velocity_m_per_s().length()), 2)
         ));
     }
 }
 
-/// "plankton 12", "animal 3 (shark 3)", "the glass", "rock 1", "nothing".
+/// "plankton 12", "shark 3", "the glass", "rock 1", "nothing in
+/// particular", in the language in force.
 pub fn target_text(reef: &ReefWorld, target: Option<Target>) -> String {
     match target {
-        None => "nothing in particular".to_owned(),
-        Some(Target::Food(id)) => format!("plankton {id}"),
-        Some(Target::Animal(j)) => reef
-            .animals()
-            .get(j as usize)
-            .map_or_else(|| format!("animal {j}"), |o| o.name(j as usize)),
-        Some(Target::Obstacle(k)) => format!("rock {k}"),
-        Some(Target::Glass) => "the glass".to_owned(),
+        None => tr!("reef-target-nothing"),
+        // Ids as written, not as numbers (no thousands separator).
+        Some(Target::Food(id)) => tr!("reef-target-plankton", id = id.to_string()),
+        Some(Target::Animal(j)) => reef.animals().get(j as usize).map_or_else(
+            || tr!("reef-animal-number", index = j),
+            |o| o.name(j as usize),
+        ),
+        Some(Target::Obstacle(k)) => tr!("reef-target-rock", id = k.to_string()),
+        Some(Target::Glass) => tr!("reef-target-glass"),
     }
 }
 
 fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, height: f32, rects: &mut WidgetRects) {
-    ui.add(
-        egui::Label::new(egui::RichText::new("Its mind over the last two minutes").strong())
-            .truncate(),
-    );
+    ui.add(egui::Label::new(egui::RichText::new(ts("reef-inspector-history")).strong()).truncate());
     let series = |f: fn(&crate::sim::reef::world::MindSample) -> f32| -> PlotPoints {
         a.history
             .iter()
@@ -396,18 +416,18 @@ fn history_plot_ui(ui: &mut egui::Ui, a: &ReefAnimal, height: f32, rects: &mut W
             // Named in the legend and told apart by the line as well as the
             // colour: hunger solid, libido dashed, fear dotted.
             plot.line(
-                Line::new("hunger", series(|s| s.hunger))
+                Line::new(ts("reef-inspector-hunger.plot"), series(|s| s.hunger))
                     .color(HUNGER_COLOR)
                     .width(2.0),
             );
             plot.line(
-                Line::new("libido", series(|s| s.libido))
+                Line::new(ts("reef-inspector-libido.plot"), series(|s| s.libido))
                     .color(LIBIDO_COLOR)
                     .style(egui_plot::LineStyle::dashed_dense())
                     .width(2.0),
             );
             plot.line(
-                Line::new("fear", series(|s| s.fear))
+                Line::new(ts("reef-inspector-fear.plot"), series(|s| s.fear))
                     .color(FEAR_COLOR)
                     .style(egui_plot::LineStyle::dotted_dense())
                     .width(2.0),
@@ -424,30 +444,33 @@ fn event_log_ui(
     height: f32,
     rects: &mut WidgetRects,
 ) -> Option<u32> {
-    ui.label(egui::RichText::new("What happened").strong())
-        .on_hover_text("Newest first: meals, chases, courtship. Click a line to follow who did it");
+    ui.label(egui::RichText::new(ts("reef-log")).strong())
+        .on_hover_text(ts("reef-log.help"));
     let mut clicked = None;
     let r = egui::ScrollArea::vertical()
         .id_salt("reef_events")
         .max_height(height)
         .show(ui, |ui| {
             if reef.events().is_empty() {
-                ui.label("Nothing yet.");
+                ui.label(ts("reef-log-empty"));
             }
             for (k, e) in reef.events().iter().rev().take(60).enumerate() {
                 let minutes = (e.time_secs / 60.0).floor();
                 let secs = e.time_secs - 60.0 * minutes;
                 let subject = e.kind.subject();
-                let who = reef
-                    .animals()
-                    .get(subject as usize)
-                    .map_or_else(|| format!("animal {subject}"), |a| a.name(subject as usize));
+                let who = reef.animals().get(subject as usize).map_or_else(
+                    || tr!("reef-animal-number", index = subject),
+                    |a| a.name(subject as usize),
+                );
+                // The time with the language's decimal mark, the line in
+                // the language in force.
+                let time = localize_decimal(&format!("{minutes:.0}:{secs:04.1}"));
                 let line = ui
                     .add(
-                        egui::Label::new(format!("{minutes:.0}:{secs:04.1}  {}", e.text))
+                        egui::Label::new(format!("{time}  {}", e.words()))
                             .sense(egui::Sense::click()),
                     )
-                    .on_hover_text(format!("Click to select and follow {who}"));
+                    .on_hover_text(tr!("reef-log-follow", who = who));
                 if k == 0 {
                     rects.insert("reef_event_0", line.rect);
                 }

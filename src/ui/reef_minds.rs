@@ -7,6 +7,7 @@ use eframe::egui;
 
 use super::WidgetRects;
 use super::setting_slider::setting_row;
+use crate::i18n::ts;
 use crate::settings::reef::ReefSettings;
 use crate::sim::reef::mind::habits::{KindTraits, MindTraits};
 use crate::sim::reef::mind::{FishKind, Habits};
@@ -23,17 +24,11 @@ pub fn minds_ui(
     rects: &mut WidgetRects,
 ) {
     ui.separator();
-    let header = egui::CollapsingHeader::new(egui::RichText::new("Minds").strong())
+    let header = egui::CollapsingHeader::new(egui::RichText::new(ts("reef-minds")).strong())
         .id_salt("reef_minds")
         .default_open(false)
         .show(ui, |ui| {
-            ui.label(
-                egui::RichText::new(
-                    "How fast each kind of fish gets hungry or wants to mate, how far away a \
-                     shark frightens it, and its character. Changes apply at once.",
-                )
-                .small(),
-            );
+            ui.label(egui::RichText::new(ts("reef-minds.help")).small());
             if !demo_habits.iter().any(|h| h.kind == *kind)
                 && let Some(first) = demo_habits.first()
             {
@@ -41,19 +36,19 @@ pub fn minds_ui(
             }
             ui.horizontal(|ui| {
                 for (k, label) in [
-                    (FishKind::Predator, "Sharks"),
-                    (FishKind::Prey, "Prey fish"),
-                    (FishKind::Pacifist, "Pacifists"),
+                    (FishKind::Predator, ts("reef-minds-sharks")),
+                    (FishKind::Prey, ts("reef-minds-prey")),
+                    (FishKind::Pacifist, ts("reef-minds-pacifists")),
                 ] {
                     let present = demo_habits.iter().any(|h| h.kind == k);
                     let r = ui
                         .add_enabled(present, egui::Button::selectable(*kind == k, label))
                         .on_hover_text(match k {
-                            FishKind::Predator => "The hunters: they eat prey fish",
-                            FishKind::Prey => "Small fish that school and flee the shark",
-                            FishKind::Pacifist => "Fish that graze on plankton and court",
+                            FishKind::Predator => ts("reef-minds-sharks.help"),
+                            FishKind::Prey => ts("reef-minds-prey.help"),
+                            FishKind::Pacifist => ts("reef-minds-pacifists.help"),
                         })
-                        .on_disabled_hover_text("None of these in this demo");
+                        .on_disabled_hover_text(ts("reef-minds-none-here"));
                     rects.insert(&format!("reef_minds_{}", k.label()), r.rect);
                     if r.clicked() {
                         *kind = k;
@@ -61,7 +56,7 @@ pub fn minds_ui(
                 }
             });
             let Some(demo) = demo_habits.iter().find(|h| h.kind == *kind).copied() else {
-                ui.label("No fish in this reef.");
+                ui.label(ts("reef-minds-no-fish"));
                 return;
             };
             let t = traits.of_mut(*kind);
@@ -81,8 +76,8 @@ pub fn minds_ui(
                 });
             let changed = *t != MindTraits::default();
             let r = ui
-                .add_enabled(changed, egui::Button::new("The demo's own values"))
-                .on_hover_text("Undo every change to this kind of fish");
+                .add_enabled(changed, egui::Button::new(ts("reef-minds-reset")))
+                .on_hover_text(ts("reef-minds-reset.help"));
             rects.insert("reef_minds_reset", r.rect);
             if r.clicked() {
                 *t = MindTraits::default();

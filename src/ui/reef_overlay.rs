@@ -6,7 +6,8 @@
 use eframe::egui;
 use glam::Vec3;
 
-use super::reef_panel::intention_color;
+use super::reef_panel::{intention_color, intention_word};
+use crate::i18n::ts;
 use crate::lab::Run;
 use crate::render::OrbitCamera;
 use crate::settings::reef::ReefOverlay;
@@ -107,7 +108,7 @@ pub fn draw_vision(
             painter.text(
                 t + egui::vec2(9.0, -9.0),
                 egui::Align2::LEFT_BOTTOM,
-                focus.intention.label(),
+                intention_word(focus.intention),
                 egui::FontId::proportional(14.0),
                 color,
             );
@@ -269,7 +270,7 @@ pub fn draw_choices(
         painter.text(
             he + egui::vec2(0.0, -14.0),
             egui::Align2::CENTER_BOTTOM,
-            "her choice",
+            ts("reef-her-choice"),
             egui::FontId::proportional(13.0),
             color,
         );

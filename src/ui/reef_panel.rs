@@ -14,6 +14,7 @@ use super::scene_panel::{Notice, ScenePanel, ViewContext, ViewInput};
 use super::setting_slider::setting_row;
 use super::studio_panel::{control, control_row};
 use super::{body_overlay, reef_overlay};
+use crate::i18n::ts;
 use crate::lab::{Lab, Run};
 use crate::render::Framing;
 use crate::render::orbit_camera::{DEFAULT_PITCH_RAD, DEFAULT_YAW_RAD};
@@ -22,6 +23,7 @@ use crate::settings::reef::{ReefOverlay, ReefSettings};
 use crate::sim::reef::demos::ReefScene;
 use crate::sim::reef::mind::{FishKind, Habits, Intention};
 use crate::sim::reef::world::{ReefBodyKind, ReefWorld};
+use crate::tr;
 
 /// Colours of the three urges, used by the bars, the plot and the focus line
 /// (Okabe–Ito orange, reddish purple and sky blue; the plot also draws them
@@ -33,13 +35,26 @@ pub const FEAR_COLOR: egui::Color32 = super::palette::SKY_BLUE;
 /// One sentence per intention, for the inspector.
 pub fn intention_sentence(intention: Intention) -> &'static str {
     match intention {
-        Intention::Avoid => "something is in its way: it swerves",
-        Intention::Escape => "a predator is close: it flees",
-        Intention::School => "it swims with the others of its kind",
-        Intention::Eat => "it is hungry: it looks for food",
-        Intention::Mate => "it wants to mate: it courts",
-        Intention::Leave => "it does not like the water here: it leaves",
-        Intention::Wander => "all is well: it wanders",
+        Intention::Avoid => ts("reef-intention-avoid"),
+        Intention::Escape => ts("reef-intention-escape"),
+        Intention::School => ts("reef-intention-school"),
+        Intention::Eat => ts("reef-intention-eat"),
+        Intention::Mate => ts("reef-intention-mate"),
+        Intention::Leave => ts("reef-intention-leave"),
+        Intention::Wander => ts("reef-intention-wander"),
+    }
+}
+
+/// An intention in one word ("escape"), in the language in force.
+pub fn intention_word(intention: Intention) -> &'static str {
+    match intention {
+        Intention::Avoid => ts("reef-intention-avoid.word"),
+        Intention::Escape => ts("reef-intention-escape.word"),
+        Intention::School => ts("reef-intention-school.word"),
+        Intention::Eat => ts("reef-intention-eat.word"),
+        Intention::Mate => ts("reef-intention-mate.word"),
+        Intention::Leave => ts("reef-intention-leave.word"),
+        Intention::Wander => ts("reef-intention-wander.word"),
     }
 }
 
@@ -58,7 +73,7 @@ pub fn intention_color(intention: Intention) -> egui::Color32 {
 /// The demo buttons and what the demo shows.
 fn demo_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut WidgetRects) {
     ui.separator();
-    ui.label(egui::RichText::new("Reef").strong());
+    ui.label(egui::RichText::new(ts("reef-heading")).strong());
     control(ui, rects, "reef.demo", |ui, rects| {
         ui.horizontal_wrapped(|ui| {
             for demo in ReefScene::ALL {
@@ -88,21 +103,27 @@ fn reef_sliders_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut Widge
         .num_columns(2)
         .spacing([8.0, 6.0])
         .show(ui, |ui| {
-            let help = "Muscles: each fish is a body of springs that swims by bending (slower to \
-                        compute, true to the paper). Points: each fish is a dot that steers \
-                        directly (fast, for big scenes). The mind is the same.";
+            let help = ts("reef-body.help");
             control_row(
                 ui,
                 rects,
                 "reef.body",
                 |ui| {
-                    ui.label("Body").on_hover_text(help);
+                    ui.label(ts("reef-body")).on_hover_text(help);
                 },
                 |ui, rects| {
                     ui.horizontal(|ui| {
                         for (kind, label, name) in [
-                            (ReefBodyKind::Physical, "Muscles", "reef_body_physical"),
-                            (ReefBodyKind::PointMass, "Points", "reef_body_point"),
+                            (
+                                ReefBodyKind::Physical,
+                                ts("reef-body-muscles"),
+                                "reef_body_physical",
+                            ),
+                            (
+                                ReefBodyKind::PointMass,
+                                ts("reef-body-points"),
+                                "reef_body_point",
+                            ),
                         ] {
                             let r = ui
                                 .radio_value(&mut reef.body, kind, label)
@@ -134,14 +155,13 @@ fn reef_sliders_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut Widge
                 setting_row(ui, rects, ReefSettings::PREFIX, &water, reef);
             }
 
-            let help = "Colour the water by how bright or how warm it is. Some fish like light \
-                        or warmth and leave water they do not like";
+            let help = ts("reef-show-water.help");
             control_row(
                 ui,
                 rects,
                 "reef.overlay",
                 |ui| {
-                    ui.label("Show water").on_hover_text(help);
+                    ui.label(ts("reef-show-water")).on_hover_text(help);
                 },
                 |ui, rects| {
                     ui.horizontal(|ui| {
@@ -157,11 +177,8 @@ fn reef_sliders_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut Widge
         });
     control(ui, rects, "reef.show_vision", |ui, rects| {
         let r = ui
-            .checkbox(&mut reef.show_vision, "Show what the selected fish sees")
-            .on_hover_text(
-                "A fish sees all around except a narrow blind cone behind, as far as the \
-                 water is clear. The coloured line points at what it is thinking about",
-            );
+            .checkbox(&mut reef.show_vision, ts("reef-show-vision"))
+            .on_hover_text(ts("reef-show-vision.help"));
         rects.insert("reef_show_vision", r.rect);
     });
 }
@@ -173,32 +190,34 @@ fn selection_ui(
     selected_name: Option<&str>,
     rects: &mut WidgetRects,
 ) {
-    let r = ui.checkbox(&mut reef.name_tags, "Name tags").on_hover_text(
-        "Write each animal's name over it, as the event log calls it (\"shark 10\", \
-             \"fish 5\"): click a line of the log to follow that fish",
-    );
+    let r = ui
+        .checkbox(&mut reef.name_tags, ts("reef-name-tags"))
+        .on_hover_text(ts("reef-name-tags.help"));
     rects.insert("reef_name_tags", r.rect);
     match reef.selected {
         Some(i) => {
             ui.horizontal(|ui| {
                 control(ui, rects, "reef.follow", |ui, rects| {
                     let r = ui
-                        .checkbox(&mut reef.follow, "Camera follows it")
-                        .on_hover_text("Keep the selected fish in the middle of the view");
+                        .checkbox(&mut reef.follow, ts("reef-follow"))
+                        .on_hover_text(ts("reef-follow.help"));
                     rects.insert("reef_follow", r.rect);
                 });
-                let r = ui.button("Deselect").on_hover_text("Let go of the fish");
+                let r = ui
+                    .button(ts("reef-deselect"))
+                    .on_hover_text(ts("reef-deselect.help"));
                 rects.insert("reef_deselect", r.rect);
                 if r.clicked() {
                     reef.selected = None;
                     reef.follow = false;
                 }
             });
-            let name = selected_name.map_or_else(|| format!("animal {i}"), str::to_owned);
-            ui.label(format!("Selected: {name} (its mind is shown below)"));
+            let name =
+                selected_name.map_or_else(|| tr!("reef-animal-number", index = i), str::to_owned);
+            ui.label(tr!("reef-selected", name = name));
         }
         None => {
-            ui.label("Click a fish in the tank to look inside its head.");
+            ui.label(ts("reef-select-hint"));
         }
     }
 }
@@ -517,6 +536,115 @@ mod tests {
                     assert!(camera.distance_m < 0.8 * whole.distance_m);
                 }
                 _ => assert!(camera.distance_m <= whole.distance_m * 1.01),
+            }
+        }
+    }
+
+    /// The reef's words in Spanish: demo names, an intention, the inspector's
+    /// readings with a decimal comma, and a real event-log line, which the
+    /// screen writes in Spanish while `text` (for programs) stays English.
+    #[test]
+    fn the_reef_speaks_spanish() {
+        use crate::i18n::{Lang, num, with_lang};
+        use crate::sim::reef::events::ReefEventKind;
+        use crate::sim::reef::mind::Target;
+        use crate::sim::reef::world::ReefConfig;
+        use crate::tr;
+        use crate::ui::reef_inspector::target_text;
+
+        // A reef logged in Spanish: the feeding demo's first meals.
+        let mut w = ReefWorld::new(ReefConfig {
+            seed: 3,
+            scene: ReefScene::Feeding,
+            body: ReefBodyKind::PointMass,
+            ..ReefConfig::default()
+        });
+        with_lang(Lang::Es, || {
+            while !w
+                .events()
+                .iter()
+                .any(|e| matches!(e.kind, ReefEventKind::AteFood { .. }))
+            {
+                assert!(w.time_secs() < 120.0, "no meal in two minutes");
+                w.step();
+            }
+        });
+        let meal = w
+            .events()
+            .iter()
+            .find(|e| matches!(e.kind, ReefEventKind::AteFood { .. }))
+            .unwrap();
+        assert!(
+            meal.text.contains(" ate plankton (hunger 1.00 → 0."),
+            "{}",
+            meal.text
+        );
+        assert_eq!(meal.words(), meal.text, "in English, as logged");
+
+        with_lang(Lang::Es, || {
+            let words = meal.words();
+            assert!(words.starts_with("pacífico "), "{words}");
+            assert!(
+                words.contains(" comió plancton (hambre 1,00 → 0,"),
+                "{words}"
+            );
+            assert_eq!(ReefScene::Courtship.label(), "Cortejo");
+            assert_eq!(ReefScene::Feeding.moment().words(), "el próximo bocado");
+            // `shoal.state()` reads the moment in English.
+            assert_eq!(ReefScene::Feeding.moment().what, "the next bite");
+            assert_eq!(
+                intention_sentence(Intention::Escape),
+                "hay un depredador cerca: huye"
+            );
+            assert_eq!(target_text(&w, Some(Target::Glass)), "el vidrio");
+            assert_eq!(target_text(&w, Some(Target::Animal(1))), "pacífico 1");
+            let habits = tr!(
+                "reef-inspector-habits",
+                species = 2,
+                length = num(0.456, 2),
+                light = "bright",
+                temperature = "any",
+                schools = "yes",
+            );
+            assert_eq!(
+                habits,
+                "Especie 2 · 0,46 m · le gusta la luz intensa y el agua a cualquier \
+                 temperatura · forma bancos"
+            );
+            assert_eq!(tr!("reef-water", value = num(24.31, 1)), "Agua a 24,3 °C");
+            assert_eq!(
+                tr!(
+                    "reef-summary",
+                    animals = 1,
+                    plankton = 12,
+                    eaten = 0,
+                    spawnings = 2
+                ),
+                "1 animal vivo · 12 partículas de plancton · 0 presas comidas · 2 desoves"
+            );
+        });
+    }
+
+    /// Every event line the reef logs is in the catalogue (the log's
+    /// `Line::new` ids are not `tr!` calls, which the i18n tests check).
+    #[test]
+    fn every_event_line_is_in_the_catalogue() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/sim/reef");
+        let mut ids = Vec::new();
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_some_and(|e| e == "rs") {
+                let text = std::fs::read_to_string(&path).unwrap();
+                for (at, _) in text.match_indices("\"reef-event-") {
+                    let id = text[at + 1..].split('"').next().unwrap().to_owned();
+                    ids.push(id);
+                }
+            }
+        }
+        assert!(ids.len() >= 15, "{ids:?}");
+        for lang in crate::i18n::Lang::ALL {
+            for id in &ids {
+                assert!(crate::i18n::has(lang, id), "{id} in {}", lang.code());
             }
         }
     }

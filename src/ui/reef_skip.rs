@@ -7,8 +7,10 @@ use eframe::egui;
 
 use super::WidgetRects;
 use super::scene_panel::Notice;
+use crate::i18n::ts;
 use crate::lab::{Lab, SkipOutcome, SkipProgress};
 use crate::settings::Settings;
+use crate::tr;
 
 /// What the user asked for this frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -33,7 +35,7 @@ pub struct SkipUi {
 impl SkipUi {
     /// Reads the search's progress; a notice when a skip has just ended.
     pub fn before_frame(&mut self, lab: &Lab) -> Option<Notice> {
-        self.moment = lab.scene().moment().map(|m| m.what);
+        self.moment = lab.scene().moment().map(|m| m.words());
         self.progress = lab.skipping();
         if lab.skips_finished() == self.seen_finished {
             return None;
@@ -46,20 +48,21 @@ impl SkipUi {
             } => {
                 self.follow = moment.follow.then_some(moment.subject);
                 let wait = (moment.time_secs - resumed_at_secs).round();
-                Notice::info(format!(
-                    "Skipped ahead to {}. Watch: in about {wait:.0} s the log will say \
-                     “{}”.",
-                    clock(*resumed_at_secs),
-                    moment.text
+                Notice::info(tr!(
+                    "reef-skip-found",
+                    time = clock(*resumed_at_secs),
+                    seconds = wait as i64,
+                    line = &moment.words
                 ))
             }
             SkipOutcome::NotFound {
                 what,
                 searched_secs,
-            } => Notice::info(format!(
-                "No sign of {what} in the next {} of this run: it carries on from \
-                 there. Try another seed.",
-                clock(*searched_secs)
+            } => Notice::info(tr!(
+                "reef-skip-not-found",
+                // The moment of this scene, in the language in force.
+                what = self.moment.unwrap_or(what),
+                time = clock(*searched_secs)
             )),
         };
         // It speaks of this run's moment: another demo or seed makes it wrong.
@@ -80,11 +83,9 @@ impl SkipUi {
         };
         match self.progress {
             None => {
-                let r = ui.button(format!("Skip to {what} »")).on_hover_text(
-                    "Run ahead as fast as this computer can until it happens, then go \
-                         back a few seconds so you can watch it. The run is the same one: \
-                         skipping only changes when you see it",
-                );
+                let r = ui
+                    .button(tr!("reef-skip", what = what))
+                    .on_hover_text(ts("reef-skip.help"));
                 rects.insert("reef_skip", r.rect);
                 if r.clicked() {
                     self.request = Some(Request::Start);
@@ -96,9 +97,9 @@ impl SkipUi {
                     ui.add(
                         egui::ProgressBar::new((p.searched_secs / p.limit_secs) as f32)
                             .desired_width(140.0)
-                            .text(format!("looked {} ahead", clock(p.searched_secs))),
+                            .text(tr!("reef-skip-looked", time = clock(p.searched_secs))),
                     );
-                    let r = ui.button("Cancel");
+                    let r = ui.button(ts("reef-skip-cancel"));
                     rects.insert("reef_skip_cancel", r.rect);
                     if r.clicked() {
                         self.request = Some(Request::Cancel);
@@ -136,7 +137,11 @@ impl SkipUi {
             return;
         };
         let galley = painter.layout_no_wrap(
-            format!("Looking ahead for {what}… {}", clock(p.searched_secs)),
+            tr!(
+                "reef-skip-banner",
+                what = what,
+                time = clock(p.searched_secs)
+            ),
             egui::FontId::proportional(16.0),
             egui::Color32::WHITE,
         );

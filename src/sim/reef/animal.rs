@@ -70,6 +70,17 @@ pub struct ReefAnimal {
     drive: Drive,
 }
 
+/// An animal of `kind` numbered `index`: "shark 3", "fish 7", "pacifist 2",
+/// in the language in force.
+pub fn animal_name(kind: FishKind, index: usize) -> String {
+    let kind = match kind {
+        FishKind::Predator => "shark",
+        FishKind::Prey => "fish",
+        FishKind::Pacifist => "pacifist",
+    };
+    crate::tr!("reef-animal", kind = kind, index = index)
+}
+
 /// What the others see of one animal this step, read before anyone moves:
 /// the input of every animal's perception and behaviour.
 #[derive(Clone, Copy, Debug)]
@@ -157,14 +168,9 @@ impl ReefAnimal {
         }
     }
 
-    /// "shark 3", "prey 7", "pacifist 2".
+    /// "shark 3", "fish 7", "pacifist 2", in the language in force.
     pub fn name(&self, index: usize) -> String {
-        let kind = match self.habits.kind {
-            FishKind::Predator => "shark",
-            FishKind::Prey => "fish",
-            FishKind::Pacifist => "pacifist",
-        };
-        format!("{kind} {index}")
+        animal_name(self.habits.kind, index)
     }
 
     /// What the body keeps between steps for moving.

@@ -19,7 +19,7 @@
 //! bodies stage (`reef/bodies.rs`) moves the partners.
 
 use crate::sim::reef::animal::ReefAnimal;
-use crate::sim::reef::events::{EventLog, ReefCounts, ReefEventKind};
+use crate::sim::reef::events::{EventLog, Line, ReefCounts, ReefEventKind, phase_key};
 use crate::sim::reef::mind::{FishKind, Focus, Intention, IntentionGenerator, Sex, Target};
 use crate::sim::reef::params::CourtshipParams;
 
@@ -121,7 +121,6 @@ impl Courtship {
         male: u32,
     ) {
         let length = |i: u32| animals[i as usize].body.body_length_m();
-        let name = |i: u32| animals[i as usize].name(i as usize);
         let Some(over) = self
             .suitors
             .get(female as usize)
@@ -134,18 +133,17 @@ impl Courtship {
             return;
         };
         let why = if length(male) >= length(over) {
-            "she prefers bigger males"
+            "bigger"
         } else {
-            "she weighs size against distance, and the bigger one was farther away"
+            "nearer"
         };
-        let text = format!(
-            "{} chose {} ({:.2} m long) over {} ({:.2} m): {why}",
-            name(female),
-            name(male),
-            length(male),
-            name(over),
-            length(over)
-        );
+        let text = Line::new("reef-event-chose")
+            .animal("female", animals, female as usize)
+            .animal("male", animals, male as usize)
+            .number("male_length", f64::from(length(male)), 2)
+            .animal("over", animals, over as usize)
+            .number("over_length", f64::from(length(over)), 2)
+            .key("why", why);
         log.push(time_secs, ReefEventKind::Chose { female, male, over }, text);
     }
 
@@ -195,12 +193,10 @@ impl Courtship {
                 );
                 self.suitor_mut(pair.male as usize).rejected_by =
                     Some((pair.female, REJECTED_SECS));
-                let text = format!(
-                    "{} left {} for the larger {}",
-                    animals[pair.female as usize].name(pair.female as usize),
-                    animals[pair.male as usize].name(pair.male as usize),
-                    animals[new as usize].name(new as usize)
-                );
+                let text = Line::new("reef-event-left-for-larger")
+                    .animal("female", animals, pair.female as usize)
+                    .animal("old", animals, pair.male as usize)
+                    .animal("new", animals, new as usize);
                 log.push(
                     now,
                     ReefEventKind::LeftForLarger {
@@ -234,11 +230,9 @@ impl Courtship {
                     j,
                     animals[j as usize].body.heading(),
                 ));
-                let text = format!(
-                    "{} and {} began courting: looping",
-                    animals[i].name(i),
-                    animals[j as usize].name(j as usize)
-                );
+                let text = Line::new("reef-event-began-courting")
+                    .animal("male", animals, i)
+                    .animal("female", animals, j as usize);
                 log.push(
                     now,
                     ReefEventKind::Courtship {
@@ -279,16 +273,17 @@ impl Courtship {
                 };
                 (p, entered)
             };
-            let names = (
-                animals[pair.male as usize].name(pair.male as usize),
-                animals[pair.female as usize].name(pair.female as usize),
-            );
+            let names = Line::new("reef-event-stopped-courting")
+                .animal("male", animals, pair.male as usize)
+                .animal("female", animals, pair.female as usize);
             if let Some(phase) = entered {
                 let text = if phase == Phase::Spawned {
-                    format!("{} and {} spawned", names.0, names.1)
+                    Line::new("reef-event-spawned")
                 } else {
-                    format!("{} and {} began {}", names.0, names.1, phase.label())
-                };
+                    Line::new("reef-event-courtship-phase").key("phase", phase_key(phase))
+                }
+                .animal("male", animals, pair.male as usize)
+                .animal("female", animals, pair.female as usize);
                 log.push(
                     now,
                     ReefEventKind::Courtship {
@@ -323,7 +318,7 @@ impl Courtship {
                         male: pair.male,
                         female: pair.female,
                     },
-                    format!("{} and {} stopped courting", names.0, names.1),
+                    names,
                 );
                 continue;
             }

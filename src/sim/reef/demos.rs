@@ -7,6 +7,7 @@ use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
+use crate::i18n::{Lang, ts, with_lang};
 use crate::sim::body::motor_bridge::TOP_SPEED_BODY_LENGTHS_PER_SEC;
 use crate::sim::body::physical_fish::{BodySpecies, PhysicalFish};
 use crate::sim::common::fish::Fish;
@@ -47,11 +48,11 @@ impl ReefScene {
 
     pub fn label(self) -> &'static str {
         match self {
-            Self::Reef => "Reef",
-            Self::PredatorAndSchool => "Predator and school",
-            Self::Courtship => "Courtship",
-            Self::Feeding => "Feeding",
-            Self::SchoolMeetsObstacle => "School meets obstacle",
+            Self::Reef => ts("reef-demo-reef"),
+            Self::PredatorAndSchool => ts("reef-demo-predator-and-school"),
+            Self::Courtship => ts("reef-demo-courtship"),
+            Self::Feeding => ts("reef-demo-feeding"),
+            Self::SchoolMeetsObstacle => ts("reef-demo-school-meets-obstacle"),
         }
     }
 
@@ -97,15 +98,11 @@ impl ReefScene {
     /// One sentence for the UI.
     pub fn explanation(self) -> &'static str {
         match self {
-            Self::Reef => {
-                "A whole reef: fish feed on plankton, a shark hunts a school, pairs court."
-            }
-            Self::PredatorAndSchool => "A hungry shark and a school of prey: who gets caught?",
-            Self::Courtship => "Two males court one female; she prefers the bigger one.",
-            Self::Feeding => "Hungry fish find plankton and suck it in.",
-            Self::SchoolMeetsObstacle => {
-                "A school meets a pillar: does it split around it and join up again?"
-            }
+            Self::Reef => ts("reef-demo-reef.help"),
+            Self::PredatorAndSchool => ts("reef-demo-predator-and-school.help"),
+            Self::Courtship => ts("reef-demo-courtship.help"),
+            Self::Feeding => ts("reef-demo-feeding.help"),
+            Self::SchoolMeetsObstacle => ts("reef-demo-school-meets-obstacle.help"),
         }
     }
 }
@@ -114,15 +111,17 @@ impl ReefScene {
     /// The moment the scene is about, which *Skip to the moment* looks ahead
     /// for.
     pub fn moment(self) -> Moment {
-        let (what, lead_secs) = match self {
-            Self::Reef => ("the next catch or spawning", 6.0),
-            Self::PredatorAndSchool => ("the shark's next catch", 8.0),
-            Self::Courtship => ("the spawning", 12.0),
-            Self::Feeding => ("the next bite", 4.0),
-            Self::SchoolMeetsObstacle => ("what the school does next", 4.0),
+        let (what_id, lead_secs) = match self {
+            Self::Reef => ("reef-demo-reef.moment", 6.0),
+            Self::PredatorAndSchool => ("reef-demo-predator-and-school.moment", 8.0),
+            Self::Courtship => ("reef-demo-courtship.moment", 12.0),
+            Self::Feeding => ("reef-demo-feeding.moment", 4.0),
+            Self::SchoolMeetsObstacle => ("reef-demo-school-meets-obstacle.moment", 4.0),
         };
         Moment {
-            what,
+            // English for `shoal.state()`; the button asks for `words()`.
+            what: with_lang(Lang::En, || ts(what_id)),
+            what_id,
             lead_secs,
             // The school is the subject at the pillar: the demo's view from
             // above shows it whole, a camera on one fish would not.

@@ -1,13 +1,20 @@
 //! The reef's event log: readable lines ("shark 12 ate fish 3") a student can
 //! follow, the intention changes worth logging, and the counters over the
 //! run. Every stage that logs takes the [`EventLog`] as an explicit input.
+//!
+//! A line's words come from the catalogue (`locales/*/reef.ftl`, ids
+//! `reef-event-…`): each event keeps its [`Line`] (the message and what
+//! fills it) so the screen and the narration write it in the language in
+//! force ([`ReefEvent::words`]); `text` is the line in English, for what
+//! programs read (`shoal.state()`, the CSV export, *Skip*'s outcome).
 
 use std::collections::VecDeque;
 
 use serde::{Deserialize, Serialize};
 
-use crate::sim::reef::animal::ReefAnimal;
-use crate::sim::reef::mind::{Focus, Intention, Target};
+use crate::i18n::{Args, Lang, arg, num, tr_with, with_lang};
+use crate::sim::reef::animal::{ReefAnimal, animal_name};
+use crate::sim::reef::mind::{FishKind, Focus, Intention, Target};
 use crate::sim::reef::pair::Phase;
 
 /// Something a student can read.
@@ -15,7 +22,111 @@ use crate::sim::reef::pair::Phase;
 pub struct ReefEvent {
     pub time_secs: f64,
     pub kind: ReefEventKind,
+    /// The line in English whatever the screen's language: `shoal.state()`,
+    /// the CSV export and test scripts read it.
     pub text: String,
+    /// The line's message and values, to write it again.
+    #[serde(skip)]
+    pub line: Line,
+}
+
+impl ReefEvent {
+    /// The line in the language in force now, for the screen and the
+    /// narration.
+    pub fn words(&self) -> String {
+        if self.line.id.is_empty() {
+            self.text.clone()
+        } else {
+            self.line.render()
+        }
+    }
+}
+
+/// A value that fills an event's line.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Word {
+    /// An animal, named by its kind and index ("shark 3").
+    Animal(FishKind, u32),
+    /// A number shown with this many decimals.
+    Number(f64, usize),
+    /// A whole number.
+    Count(u32),
+    /// A key a message chooses its words by (a courtship phase).
+    Key(&'static str),
+}
+
+/// An event's line: a catalogue message and the values that fill it.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Line {
+    id: &'static str,
+    args: Vec<(&'static str, Word)>,
+}
+
+impl Line {
+    /// The message `id` of `locales/*/reef.ftl`.
+    pub fn new(id: &'static str) -> Self {
+        Self {
+            id,
+            args: Vec::new(),
+        }
+    }
+
+    /// `$name` is animal `i` of `animals`.
+    pub fn animal(mut self, name: &'static str, animals: &[ReefAnimal], i: usize) -> Self {
+        self.args
+            .push((name, Word::Animal(animals[i].habits.kind, i as u32)));
+        self
+    }
+
+    /// `$name` is an animal of `kind` numbered `i`.
+    pub fn animal_of(mut self, name: &'static str, kind: FishKind, i: usize) -> Self {
+        self.args.push((name, Word::Animal(kind, i as u32)));
+        self
+    }
+
+    /// `$name` is `value` with `decimals` decimals.
+    pub fn number(mut self, name: &'static str, value: f64, decimals: usize) -> Self {
+        self.args.push((name, Word::Number(value, decimals)));
+        self
+    }
+
+    /// `$name` is the whole number `n`.
+    pub fn count(mut self, name: &'static str, n: u32) -> Self {
+        self.args.push((name, Word::Count(n)));
+        self
+    }
+
+    /// `$name` is the key `key` (a message's selector).
+    pub fn key(mut self, name: &'static str, key: &'static str) -> Self {
+        self.args.push((name, Word::Key(key)));
+        self
+    }
+
+    /// The line in the language in force.
+    pub fn render(&self) -> String {
+        let mut args = Args::new();
+        for (name, word) in &self.args {
+            let value = match *word {
+                Word::Animal(kind, i) => arg(animal_name(kind, i as usize)),
+                Word::Number(x, decimals) => num(x, decimals),
+                Word::Count(n) => arg(n),
+                Word::Key(k) => arg(k),
+            };
+            args.set(*name, value);
+        }
+        tr_with(self.id, &args)
+    }
+}
+
+/// The key of a courtship phase in the catalogue's messages.
+pub fn phase_key(phase: Phase) -> &'static str {
+    match phase {
+        Phase::Looping => "looping",
+        Phase::Circling => "circling",
+        Phase::Ascending => "ascending",
+        Phase::Nuzzling => "nuzzling",
+        Phase::Spawned => "spawned",
+    }
 }
 
 /// What happened.
@@ -182,7 +293,8 @@ impl EventLog {
     }
 
     /// Logs what happened at `time_secs`.
-    pub(super) fn push(&mut self, time_secs: f64, kind: ReefEventKind, text: String) {
+    pub(super) fn push(&mut self, time_secs: f64, kind: ReefEventKind, line: Line) {
+        let text = with_lang(Lang::En, || line.render());
         self.logged += 1;
         if self.lines.len() == EVENT_LOG_LEN {
             self.lines.pop_front();
@@ -191,6 +303,7 @@ impl EventLog {
             time_secs,
             kind,
             text,
+            line,
         });
     }
 
@@ -208,7 +321,6 @@ impl EventLog {
         if self.last_escape_logged_secs.len() <= i {
             self.last_escape_logged_secs.resize(i + 1, None);
         }
-        let name = animals[i].name(i);
         match (before.intention, after.intention, after.target) {
             (b, Intention::Escape, Some(Target::Animal(p)))
                 if b != Intention::Escape
@@ -216,7 +328,9 @@ impl EventLog {
                         .is_none_or(|t| time_secs - t >= ESCAPE_LOG_EVERY_SECS) =>
             {
                 self.last_escape_logged_secs[i] = Some(time_secs);
-                let text = format!("{name} fled from {}", animals[p as usize].name(p as usize));
+                let text = Line::new("reef-event-fled")
+                    .animal("fish", animals, i)
+                    .animal("predator", animals, p as usize);
                 self.push(
                     time_secs,
                     ReefEventKind::BeganEscape {

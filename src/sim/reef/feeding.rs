@@ -13,7 +13,7 @@ use crate::sim::common::tank::Tank;
 use crate::sim::common::water_current::WaterCurrent;
 use crate::sim::reef::animal::ReefAnimal;
 use crate::sim::reef::demos::random_free_point;
-use crate::sim::reef::events::{EventLog, ReefCounts, ReefEventKind};
+use crate::sim::reef::events::{EventLog, Line, ReefCounts, ReefEventKind};
 use crate::sim::reef::mind::{FishKind, Intention, Target};
 use crate::sim::reef::params::ReefParams;
 
@@ -213,12 +213,10 @@ impl Feeding {
         prey.drive_mut().dart(away * top);
         self.strike_recovery_secs[i] = params.missed_strike_recovery_secs;
         io.counts.missed_strikes += 1;
-        let text = format!(
-            "{} missed {}: {} other prey around it confused it",
-            animals[i].name(i),
-            animals[j].name(j),
-            crowd
-        );
+        let text = Line::new("reef-event-missed")
+            .animal("predator", animals, i)
+            .animal("prey", animals, j)
+            .count("crowd", crowd as u32);
         io.log.push(
             io.time_secs,
             ReefEventKind::Missed {
@@ -283,12 +281,10 @@ impl Feeding {
                             let before = a.mental.hunger;
                             a.mental.eat(&a.habits.mental, 1.0);
                             io.counts.food_eaten += 1;
-                            let text = format!(
-                                "{} ate plankton (hunger {:.2} → {:.2})",
-                                a.name(i),
-                                before,
-                                a.mental.hunger
-                            );
+                            let text = Line::new("reef-event-ate-plankton")
+                                .animal_of("fish", a.habits.kind, i)
+                                .number("before", f64::from(before), 2)
+                                .number("after", f64::from(a.mental.hunger), 2);
                             io.log.push(
                                 io.time_secs,
                                 ReefEventKind::AteFood { fish: i as u32 },
@@ -330,7 +326,9 @@ impl Feeding {
                             if schooling {
                                 io.counts.schooling_prey_eaten += 1;
                             }
-                            let text = format!("{} ate {}", animals[i].name(i), animals[j].name(j));
+                            let text = Line::new("reef-event-ate")
+                                .animal("predator", animals, i)
+                                .animal("prey", animals, j);
                             io.log.push(
                                 io.time_secs,
                                 ReefEventKind::AtePrey {

@@ -15,7 +15,7 @@ use crate::sim::common::school_metrics::group_labels;
 use crate::sim::common::tank::Tank;
 use crate::sim::reef::animal::ReefAnimal;
 use crate::sim::reef::demos::ReefScene;
-use crate::sim::reef::events::{EventLog, ReefEventKind};
+use crate::sim::reef::events::{EventLog, Line, ReefEventKind};
 use crate::sim::reef::mind::FishKind;
 
 /// Seconds between two looks at the school (0.5, chosen: a school of fish a
@@ -129,10 +129,12 @@ impl SchoolWatch {
                     self.split_at_pillar = true;
                 }
                 let fish = prey[groups[1][0]].0 as u32;
-                let text = format!(
-                    "The school split into {n} groups{}",
-                    if at_pillar { " at the pillar" } else { "" }
-                );
+                let text = Line::new(if at_pillar {
+                    "reef-event-school-split-at-pillar"
+                } else {
+                    "reef-event-school-split"
+                })
+                .count("groups", n);
                 log.push(now, ReefEventKind::SchoolSplit { fish, groups: n }, text);
             }
             // The first state the watch sees is not news: a school that
@@ -143,7 +145,7 @@ impl SchoolWatch {
                 log.push(
                     now,
                     ReefEventKind::SchoolJoined { fish },
-                    "The school joined up again".to_owned(),
+                    Line::new("reef-event-school-joined"),
                 );
             }
             _ => {}
@@ -179,7 +181,7 @@ impl SchoolWatch {
                 log.push(
                     inputs.time_secs,
                     ReefEventKind::SchoolAtPillar { fish: i as u32 },
-                    "The school reached the pillar".to_owned(),
+                    Line::new("reef-event-school-at-pillar"),
                 );
             }
             return;
@@ -196,7 +198,7 @@ impl SchoolWatch {
                     ReefEventKind::SchoolPassedWhole {
                         fish: prey[0].0 as u32,
                     },
-                    "The whole school went by on one side of the pillar".to_owned(),
+                    Line::new("reef-event-school-passed-whole"),
                 );
             }
         }
