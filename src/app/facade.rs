@@ -145,11 +145,16 @@ impl ShoalApp {
 
     /// What `shoal.state()` reports.
     pub fn state_report(&self) -> StateReport {
-        let mut report = StateReport::new(
-            &self.lab,
-            self.caps.tier.name(),
-            self.fps_meter.rate_per_sec(),
-        );
+        // The world's part (names of fish, events) in English whatever the
+        // interface speaks: scripts read it. What the person was shown and
+        // told (`notice`, `said`) stays in their language.
+        let mut report = crate::i18n::with_lang(crate::i18n::Lang::En, || {
+            StateReport::new(
+                &self.lab,
+                self.caps.tier.name(),
+                self.fps_meter.rate_per_sec(),
+            )
+        });
         report.bench = self.benchmark.as_ref().map(Benchmark::report);
         report.frames = self.frames_drawn;
         report.camera = Some(CameraReport {
