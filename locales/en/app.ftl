@@ -63,3 +63,9 @@ notice-experiment-link-copied = Link copied: it opens Shoal on this experiment a
 notice-investigation-link-error = This link could not open its investigation: { $error }. The rest of the link was opened.
 notice-experiment-link-error = This link could not open its experiment: { $error }. The rest of the link was opened.
 notice-experiment-reopened = This link reopened the experiment '{ $name }': its runs start now, the same runs and numbers as when the link was made.
+
+# The graphics device was lost (the computer slept, or changed screens) and
+# Shoal started drawing again on a new one.
+app-gpu-recovered = The graphics were lost for a moment (the computer slept or changed screens). Shoal drew the tank again; the fish, the clock and your settings carried on.
+app-gpu-lost-title = Shoal lost its graphics and could not get them back
+app-gpu-lost-why = The computer slept, changed screens or reset its graphics. Reloading the page starts Shoal again with the same settings (they are in the page's address).

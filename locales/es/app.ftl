@@ -63,3 +63,9 @@ notice-experiment-link-copied = Enlace copiado: abre Shoal en este experimento y
 notice-investigation-link-error = Este enlace no pudo abrir su investigación: { $error }. Se abrió el resto del enlace.
 notice-experiment-link-error = Este enlace no pudo abrir su experimento: { $error }. Se abrió el resto del enlace.
 notice-experiment-reopened = Este enlace volvió a abrir el experimento «{ $name }»: sus simulaciones empiezan ahora, las mismas y con los mismos números que cuando se hizo el enlace.
+
+# Se perdió el dispositivo gráfico (la computadora se suspendió o cambió de
+# pantalla) y Shoal volvió a dibujar con uno nuevo.
+app-gpu-recovered = Los gráficos se perdieron por un momento (la computadora se suspendió o cambió de pantalla). Shoal volvió a dibujar el tanque; los peces, el reloj y tus ajustes siguieron igual.
+app-gpu-lost-title = Shoal perdió sus gráficos y no pudo recuperarlos
+app-gpu-lost-why = La computadora se suspendió, cambió de pantalla o reinició sus gráficos. Si vuelves a cargar la página, Shoal empieza de nuevo con los mismos ajustes (están en la dirección de la página).

@@ -155,6 +155,8 @@ impl ShoalApp {
                 self.fps_meter.rate_per_sec(),
             )
         });
+        // ...but the language reported is the one the person sees.
+        report.lang = crate::i18n::lang();
         report.bench = self.benchmark.as_ref().map(Benchmark::report);
         report.frames = self.frames_drawn;
         report.camera = Some(CameraReport {

@@ -6,6 +6,8 @@
 //! 3D view, and hand the renderer a freshly built frame per view.
 
 mod facade;
+mod recover;
+pub use recover::Session;
 pub mod keys;
 mod views;
 

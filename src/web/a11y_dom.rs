@@ -51,6 +51,21 @@ pub fn install(ctx: &egui::Context) -> Result<(), JsValue> {
     Ok(())
 }
 
+/// Takes the mirror out of the page (the app it mirrors is gone: a lost
+/// graphics device, see `super::recover`); [`install`] puts a new one in.
+pub fn uninstall() {
+    MIRROR.with(|m| {
+        if let Ok(mut mirror) = m.try_borrow_mut()
+            && let Some(mirror) = mirror.take()
+        {
+            mirror.root.remove();
+            mirror.ring.remove();
+            mirror.live.remove();
+        }
+    });
+    PENDING.with(|p| p.borrow_mut().clear());
+}
+
 /// Says `text` through the polite live region (a screen reader reads it when
 /// the student is not busy). The same words twice are said twice.
 pub fn announce(text: &str) {

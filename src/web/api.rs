@@ -15,7 +15,7 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 25] = [
+    let methods: [(&str, Box<Method>); 26] = [
         (
             "state",
             Box::new(|app, _| {
@@ -34,6 +34,12 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
                 }
                 Ok(state)
             }),
+        ),
+        (
+            // Destroys the WebGPU device, as a sleeping computer loses it (on
+            // WebGL2 a test uses WEBGL_lose_context instead): true if there was one.
+            "lose_gpu",
+            Box::new(|_, _| Ok(serde_json::Value::Bool(super::recover::lose_device()))),
         ),
         (
             "experiment",

@@ -4,6 +4,7 @@
 mod a11y_dom;
 mod api;
 mod page;
+mod recover;
 
 use crate::ShoalApp;
 use crate::settings::Settings;
@@ -104,6 +105,7 @@ pub async fn start() {
             eframe::WebOptions::default(),
             Box::new(move |cc| {
                 crate::ui::seeing::set(&cc.egui_ctx, seeing);
+                recover::watch_device(cc);
                 let mut app = ShoalApp::new(cc, settings)?;
                 // Every control as a real element for screen readers and Tab.
                 if let Err(err) = a11y_dom::install(&cc.egui_ctx) {
@@ -131,6 +133,7 @@ pub async fn start() {
             if let Err(err) = api::install(&runner) {
                 log::error!("could not install window.shoal: {err:?}");
             }
+            recover::keep(runner);
         }
         Err(err) => {
             let detail = err

@@ -1,0 +1,68 @@
+// A sim that never dies: a Chromebook that sleeps or changes screens takes the
+// GPU away from the page. On WebGL2 the canvas's context is lost (and later
+// given back); on WebGPU the device is destroyed. Shoal must draw again on a new
+// renderer with the same fish, clock and settings, say what happened, and keep
+// its controls for a screen reader.
+import { describe, test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import { serveDist, launch, openShoal, TIERS, saveArtifact, decode, fishPixels, mirroredButton } from "./harness.mjs";
+
+for (const tier of TIERS) {
+  describe(`a lost graphics device (${tier})`, () => {
+    let server, browser;
+    before(async () => {
+      server = await serveDist();
+      browser = await launch(tier);
+    });
+    after(async () => {
+      await browser?.close();
+      await server?.close();
+    });
+
+    test("the tank is drawn again with the same fish, clock and settings, and the notice says why", async () => {
+      const { page, errors } = await openShoal(browser, `${server.url}#`, { width: 1024, height: 640 });
+      // A setting a teacher changed, to find again after the loss.
+      await page.evaluate(() => window.shoal.set({ seed: 7, left: { fish_count: 120 } }));
+      await page.waitForFunction(() => window.shoal.state().fish_count === 120 && window.shoal.state().time_secs > 2, null, { timeout: 60_000 });
+      const before = await page.evaluate(() => window.shoal.state());
+      if (tier === "webgl2") {
+        // What the browser does when the GPU goes: the context is lost, then given back.
+        await page.evaluate(() => {
+          const ext = document.getElementById("shoal_canvas").getContext("webgl2").getExtension("WEBGL_lose_context");
+          ext.loseContext();
+          setTimeout(() => ext.restoreContext(), 1000);
+        });
+      } else {
+        assert.equal(await page.evaluate(() => window.shoal.lose_gpu()), true);
+      }
+      await page.waitForFunction(
+        () => /graphics were lost/.test(window.shoal.state().notice || ""),
+        null,
+        { timeout: 90_000 },
+      );
+      // It runs on: the clock goes on from where it was, not from zero.
+      await page.waitForFunction(
+        (t) => window.shoal.state().time_secs > t + 1,
+        before.time_secs,
+        { timeout: 90_000 },
+      );
+      const after = await page.evaluate(() => window.shoal.state());
+      assert.equal(after.fish_count, 120, "the fish count set before the loss");
+      assert.equal(after.scene, before.scene);
+      assert.equal(after.seed, 7);
+      assert.ok(after.time_secs > before.time_secs, "the clock carried on");
+      // The address holds the settings: a reload would open the same tank.
+      assert.match(await page.evaluate(() => location.hash), /^#.+/);
+      // Drawn again: fish on the screen.
+      const shot = await page.screenshot();
+      saveArtifact(`gpu-loss-${tier}.png`, shot);
+      const png = decode(shot);
+      assert.ok(fishPixels(png, { x: 300, y: 100, width: png.width - 300, height: png.height - 200 }).size > 200, "fish are drawn again");
+      // The accessible controls are back, once.
+      await mirroredButton(page, "Reset");
+      assert.equal(await page.evaluate(() => document.querySelectorAll("#shoal_a11y").length), 1);
+      assert.deepEqual(errors.filter((e) => !/lost|context/i.test(e)), []);
+      await page.close();
+    });
+  });
+}
