@@ -8,6 +8,8 @@ use std::fmt::Write as _;
 use super::Progress;
 use super::catalogue::PredictionKind;
 use super::outcome::{Chart, CurvePoint, Outcome, x_span};
+use crate::i18n::{fmt, lang, num, tr, ts};
+use crate::tr;
 
 /// Text made safe inside HTML (element content and attribute values).
 pub fn escape(text: &str) -> String {
@@ -33,19 +35,21 @@ table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:.2em .6em;tex
 td.n{text-align:right}.ref{font-size:.9em;color:#555}svg{max-width:100%;height:auto}\
 .answer{white-space:pre-wrap;background:#fafafa;padding:.3em .6em;border:1px solid #ddd}";
 
-/// The HTML file of `done` (the investigations with a committed prediction).
+/// The HTML file of `done` (the investigations with a committed prediction),
+/// in the language in force.
 pub fn html(done: &[Progress]) -> String {
     let mut out = String::new();
+    let title = escape(ts("inv-record-title"));
     let _ = write!(
         out,
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
-         <title>My Shoal investigations</title><style>{STYLE}</style></head><body>\n\
-         <h1>My Shoal investigations</h1>\n<p>Predict, observe, explain: each prediction was \
-         locked before its run started. Every number below was measured by Shoal's \
-         simulation during the run.</p>\n"
+        "<!DOCTYPE html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\">\
+         <title>{title}</title><style>{STYLE}</style></head><body>\n\
+         <h1>{title}</h1>\n<p>{}</p>\n",
+        lang().code(),
+        escape(ts("inv-record-intro"))
     );
     if done.is_empty() {
-        out.push_str("<p>No investigation has been done yet.</p>\n");
+        let _ = writeln!(out, "<p>{}</p>", escape(ts("inv-record-none")));
     }
     for p in done {
         section(&mut out, p);
@@ -58,22 +62,28 @@ fn section(out: &mut String, p: &Progress) {
     let inv = p.investigation;
     let _ = write!(
         out,
-        "<section>\n<h2>{}</h2>\n<p>{}</p>\n<p class=\"q\">{}</p>\n<h3>My prediction</h3>\n",
-        escape(inv.title),
-        escape(inv.intro),
-        escape(inv.question)
+        "<section>\n<h2>{}</h2>\n<p>{}</p>\n<p class=\"q\">{}</p>\n<h3>{}</h3>\n",
+        escape(inv.title.text()),
+        escape(inv.intro.text()),
+        escape(inv.question.text()),
+        escape(ts("inv-record-my-prediction"))
     );
     match p.prediction {
         Some(pred) => {
             let _ = writeln!(
                 out,
-                "<p class=\"locked\">{} (locked before the run)</p>",
-                escape(p.answer_text(pred.choice))
+                "<p class=\"locked\">{}</p>",
+                escape(&tr!(
+                    "inv-record-locked",
+                    prediction = p.answer_text(pred.choice)
+                ))
             );
         }
-        None => out.push_str("<p>No prediction yet.</p>\n"),
+        None => {
+            let _ = writeln!(out, "<p>{}</p>", escape(ts("inv-record-no-prediction")));
+        }
     }
-    out.push_str("<h3>What was measured</h3>\n");
+    let _ = writeln!(out, "<h3>{}</h3>", escape(ts("inv-record-measured")));
     match &p.outcome {
         Some(outcome) => {
             let _ = writeln!(out, "<p>{}</p>", escape(&outcome.summary));
@@ -85,17 +95,19 @@ fn section(out: &mut String, p: &Progress) {
             }
             let _ = writeln!(out, "\n<p>{}</p>", escape(&outcome.verdict));
         }
-        None => out.push_str("<p>The run has not finished.</p>\n"),
+        None => {
+            let _ = writeln!(out, "<p>{}</p>", escape(ts("inv-record-not-finished")));
+        }
     }
     if p.explanations.iter().any(|e| !e.trim().is_empty()) {
-        out.push_str("<h3>My explanations</h3>\n");
+        let _ = writeln!(out, "<h3>{}</h3>", escape(ts("inv-record-my-explanations")));
         for (prompt, answer) in inv.prompts.iter().zip(&p.explanations) {
             let _ = writeln!(
                 out,
                 "<p><b>{}</b></p><p class=\"answer\">{}</p>",
-                escape(prompt),
+                escape(prompt.text()),
                 if answer.trim().is_empty() {
-                    "(no answer)".to_owned()
+                    escape(ts("inv-record-no-answer"))
                 } else {
                     escape(answer)
                 }
@@ -105,16 +117,23 @@ fn section(out: &mut String, p: &Progress) {
     if p.step == super::Step::Reveal {
         let _ = writeln!(
             out,
-            "<h3>What scientists found</h3>\n<p>{}</p>\n<p class=\"ref\">{}</p>",
-            escape(inv.reveal),
-            escape(inv.reference)
+            "<h3>{}</h3>\n<p>{}</p>\n<p class=\"ref\">{}</p>",
+            escape(ts("inv-found")),
+            escape(inv.reveal.text()),
+            escape(inv.reference.text())
         );
     }
     out.push_str("</section>\n");
 }
 
 fn table(out: &mut String, outcome: &Outcome) {
-    out.push_str("<table><tr><th>measured</th><th>value</th><th>unit</th></tr>\n");
+    let _ = writeln!(
+        out,
+        "<table><tr><th>{}</th><th>{}</th><th>{}</th></tr>",
+        escape(ts("inv-record-table-measured")),
+        escape(ts("inv-record-table-value")),
+        escape(ts("inv-record-table-unit"))
+    );
     for row in &outcome.rows {
         let _ = writeln!(
             out,
@@ -127,12 +146,13 @@ fn table(out: &mut String, outcome: &Outcome) {
     out.push_str("</table>\n");
 }
 
-/// A number as the record prints it: whole numbers bare, others to 3 decimals.
+/// A number as the record prints it, the language's way: whole numbers bare,
+/// others to 3 decimals.
 pub fn number(v: f64) -> String {
     if v.fract() == 0.0 && v.abs() < 1e12 {
-        format!("{v:.0}")
+        fmt(v, 0)
     } else {
-        format!("{v:.3}")
+        fmt(v, 3)
     }
 }
 
@@ -194,9 +214,9 @@ fn axes(s: &mut String, y_max: f64, y_label: &str) {
 
 fn tick(v: f64) -> String {
     if v >= 10.0 || v == 0.0 {
-        format!("{v:.0}")
+        fmt(v, 0)
     } else {
-        format!("{v:.2}")
+        fmt(v, 2)
     }
 }
 
@@ -300,15 +320,16 @@ fn curve(
     let _ = write!(
         s,
         "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>\
-         <text x=\"{:.1}\" y=\"{TOP}\" text-anchor=\"end\" fill=\"#e07a1f\">measured \
-         (bars: 95 % interval)</text><text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\" \
-         fill=\"#2a6f97\">my prediction (dashed)</text>",
+         <text x=\"{:.1}\" y=\"{TOP}\" text-anchor=\"end\" fill=\"#e07a1f\">{}</text>\
+         <text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\" fill=\"#2a6f97\">{}</text>",
         (LEFT + W - RIGHT) / 2.0,
         H - 6.0,
         escape(x_label),
         W - RIGHT,
+        escape(ts("inv-record-svg-measured")),
         W - RIGHT,
-        TOP + 14.0
+        TOP + 14.0,
+        escape(ts("inv-record-svg-prediction"))
     );
 }
 
@@ -323,7 +344,7 @@ pub fn timelines_svg(outcome: &Outcome) -> String {
     let all = outcome.timelines.iter().flat_map(|t| t.points.iter());
     let x_max = all.clone().map(|p| p[0]).fold(1.0, f64::max);
     let y_top = all.map(|p| p[1]).fold(0.0, f64::max).max(1.0) * 1.15;
-    axes(&mut s, y_top, "fish caught");
+    axes(&mut s, y_top, ts("inv-unit-fish-caught"));
     let px = |x: f64| LEFT + (W - LEFT - RIGHT) * x / x_max;
     let py = |y: f64| H - BOTTOM - (H - BOTTOM - TOP) * y / y_top;
     for (k, t) in outcome.timelines.iter().enumerate() {
@@ -345,29 +366,34 @@ pub fn timelines_svg(outcome: &Outcome) -> String {
     }
     let _ = write!(
         s,
-        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">simulated seconds (0 to \
-         {x_max:.0})</text></svg>",
+        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text></svg>",
         (LEFT + W - RIGHT) / 2.0,
-        H - 6.0
+        H - 6.0,
+        escape(&tr!("inv-record-svg-seconds", secs = num(x_max, 0)))
     );
     s
 }
 
-/// The CSV of every measured number of `done`: one row per number.
+/// The CSV of every measured number of `done`: one row per number. Its
+/// comment lines and labels are in the language in force; its column names
+/// and numbers are the same in every language (programs read them).
 pub fn csv(done: &[Progress]) -> String {
-    let mut out =
-        String::from("# Shoal: the measured numbers of my investigations (one row per number)\n");
+    let mut out = tr("inv-record-csv-title");
+    out.push('\n');
     for p in done {
         if let Some(pred) = p.prediction {
             let _ = writeln!(
                 out,
-                "# {}: predicted \"{}\"",
-                p.investigation.id,
-                p.answer_text(pred.choice).replace('\n', " ")
+                "{}",
+                tr!(
+                    "inv-record-csv-predicted",
+                    id = p.investigation.id,
+                    prediction = p.answer_text(pred.choice).replace('\n', " ")
+                )
             );
         }
     }
-    out.push_str("investigation,label,value,unit\n");
+    out.push_str("investigation,label,value,unit\n"); // words: the CSV's column names, read by programs
     for p in done {
         if let Some(outcome) = &p.outcome {
             outcome.csv_lines(p.investigation.id, &mut out);
