@@ -96,7 +96,13 @@ inv-csv-curve-low = curva x={ $x } 95% inferior
 inv-csv-curve-high = curva x={ $x } 95% superior
 inv-loners = solitarios (izquierda)
 inv-school = cardumen (derecha)
-inv-catches-summary = En { $secs } segundos simulados el tiburón atrapó { $loners -> [one] { $loners } pez solitario *[other] { $loners } peces solitarios } y { $school -> [one] { $school } pez *[other] { $school } peces } del cardumen.
+inv-catches-summary = En { $secs } segundos simulados el tiburón atrapó { $loners ->
+        [one] { $loners } pez solitario
+       *[other] { $loners } peces solitarios
+    } y { $school ->
+        [one] { $school } pez
+       *[other] { $school } peces
+    } del cardumen.
 inv-row-caught-loners = peces atrapados, solitarios (izquierda)
 inv-row-caught-school = peces atrapados, cardumen (derecha)
 inv-unit-fish = peces
@@ -129,7 +135,10 @@ inv-experiment-refused = el experimento de la investigación: { $error }
 
 inv-error-no-prediction = primero confirma una predicción: la ejecución empieza solo después de que hayas predicho
 inv-error-locked = la predicción está bloqueada: se confirmó antes de la ejecución
-inv-error-no-such-answer = la respuesta { $choice } no existe: hay { $count -> [one] { $count } respuesta *[other] { $count } respuestas }
+inv-error-no-such-answer = la respuesta { $choice } no existe: hay { $count ->
+        [one] { $count } respuesta
+       *[other] { $count } respuestas
+    }
 inv-error-wrong-step = ahora no: este es el paso de { $step }
 inv-error-no-result = la ejecución aún no ha terminado
 inv-step-name-intro = introducción

@@ -42,11 +42,15 @@ pub fn html(done: &[Progress]) -> String {
     let title = escape(ts("inv-record-title"));
     let _ = write!(
         out,
-        "<!DOCTYPE html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\">\
-         <title>{title}</title><style>{STYLE}</style></head><body>\n\
-         <h1>{title}</h1>\n<p>{}</p>\n",
+        concat!(
+            "<!DOCTYPE html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\">", // words: HTML markup
+            "<title>{title}</title><style>{STYLE}</style></head><body>\n", // words: HTML markup
+            "<h1>{title}</h1>\n<p>{}</p>\n"                                // words: HTML markup
+        ),
         lang().code(),
-        escape(ts("inv-record-intro"))
+        escape(ts("inv-record-intro")),
+        title = title,
+        STYLE = STYLE,
     );
     if done.is_empty() {
         let _ = writeln!(out, "<p>{}</p>", escape(ts("inv-record-none")));
@@ -62,7 +66,7 @@ fn section(out: &mut String, p: &Progress) {
     let inv = p.investigation;
     let _ = write!(
         out,
-        "<section>\n<h2>{}</h2>\n<p>{}</p>\n<p class=\"q\">{}</p>\n<h3>{}</h3>\n",
+        "<section>\n<h2>{}</h2>\n<p>{}</p>\n<p class=\"q\">{}</p>\n<h3>{}</h3>\n", // words: HTML markup
         escape(inv.title.text()),
         escape(inv.intro.text()),
         escape(inv.question.text()),
@@ -72,7 +76,7 @@ fn section(out: &mut String, p: &Progress) {
         Some(pred) => {
             let _ = writeln!(
                 out,
-                "<p class=\"locked\">{}</p>",
+                "<p class=\"locked\">{}</p>", // words: HTML markup
                 escape(&tr!(
                     "inv-record-locked",
                     prediction = p.answer_text(pred.choice)
@@ -104,7 +108,7 @@ fn section(out: &mut String, p: &Progress) {
         for (prompt, answer) in inv.prompts.iter().zip(&p.explanations) {
             let _ = writeln!(
                 out,
-                "<p><b>{}</b></p><p class=\"answer\">{}</p>",
+                "<p><b>{}</b></p><p class=\"answer\">{}</p>", // words: HTML markup
                 escape(prompt.text()),
                 if answer.trim().is_empty() {
                     escape(ts("inv-record-no-answer"))
@@ -117,7 +121,7 @@ fn section(out: &mut String, p: &Progress) {
     if p.step == super::Step::Reveal {
         let _ = writeln!(
             out,
-            "<h3>{}</h3>\n<p>{}</p>\n<p class=\"ref\">{}</p>",
+            "<h3>{}</h3>\n<p>{}</p>\n<p class=\"ref\">{}</p>", // words: HTML markup
             escape(ts("inv-found")),
             escape(inv.reveal.text()),
             escape(inv.reference.text())
@@ -137,7 +141,7 @@ fn table(out: &mut String, outcome: &Outcome) {
     for row in &outcome.rows {
         let _ = writeln!(
             out,
-            "<tr><td>{}</td><td class=\"n\">{}</td><td>{}</td></tr>",
+            "<tr><td>{}</td><td class=\"n\">{}</td><td>{}</td></tr>", // words: HTML markup
             escape(&row.label),
             number(row.value),
             escape(row.unit)
@@ -163,13 +167,22 @@ const BOTTOM: f64 = 40.0;
 const TOP: f64 = 14.0;
 const RIGHT: f64 = 16.0;
 
+/// An SVG picture's opening, on a white ground.
+fn svg_open() -> String {
+    format!(
+        concat!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {W} {H}\" width=\"{W}\" ", // words: HTML markup
+            "height=\"{H}\" role=\"img\" font-family=\"sans-serif\" font-size=\"11\">", // words: HTML markup
+            "<rect width=\"{W}\" height=\"{H}\" fill=\"#fff\"/>" // words: HTML markup
+        ),
+        W = W,
+        H = H
+    )
+}
+
 /// The result's chart as an inline SVG picture.
 pub fn svg(p: &Progress, outcome: &Outcome) -> String {
-    let mut s = format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {W} {H}\" width=\"{W}\" \
-         height=\"{H}\" role=\"img\" font-family=\"sans-serif\" font-size=\"11\">\
-         <rect width=\"{W}\" height=\"{H}\" fill=\"#fff\"/>"
-    );
+    let mut s = svg_open();
     match &outcome.chart {
         Chart::Bars { unit } => bars(&mut s, outcome, unit),
         Chart::Curve {
@@ -187,16 +200,21 @@ fn axes(s: &mut String, y_max: f64, y_label: &str) {
     let (x0, y0, y1) = (LEFT, H - BOTTOM, TOP);
     let _ = write!(
         s,
-        "<line x1=\"{x0}\" y1=\"{y0}\" x2=\"{}\" y2=\"{y0}\" stroke=\"#333\"/>\
-         <line x1=\"{x0}\" y1=\"{y0}\" x2=\"{x0}\" y2=\"{y1}\" stroke=\"#333\"/>",
-        W - RIGHT
+        concat!(
+            "<line x1=\"{x0}\" y1=\"{y0}\" x2=\"{}\" y2=\"{y0}\" stroke=\"#333\"/>", // words: HTML markup
+            "<line x1=\"{x0}\" y1=\"{y0}\" x2=\"{x0}\" y2=\"{y1}\" stroke=\"#333\"/>" // words: HTML markup
+        ),
+        W - RIGHT,
+        x0 = x0,
+        y0 = y0,
+        y1 = y1,
     );
     for k in 0..=4 {
         let v = y_max * f64::from(k) / 4.0;
         let y = y0 - (y0 - y1) * f64::from(k) / 4.0;
         let _ = write!(
             s,
-            "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>",
+            "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>", // words: HTML markup
             x0 - 4.0,
             y + 4.0,
             tick(v)
@@ -204,8 +222,10 @@ fn axes(s: &mut String, y_max: f64, y_label: &str) {
     }
     let _ = write!(
         s,
-        "<text x=\"12\" y=\"{:.1}\" transform=\"rotate(-90 12 {:.1})\" \
-         text-anchor=\"middle\">{}</text>",
+        concat!(
+            "<text x=\"12\" y=\"{:.1}\" transform=\"rotate(-90 12 {:.1})\" ", // words: HTML markup
+            "text-anchor=\"middle\">{}</text>"                                // words: HTML markup
+        ),
         (y0 + y1) / 2.0,
         (y0 + y1) / 2.0,
         escape(y_label)
@@ -232,9 +252,11 @@ fn bars(s: &mut String, outcome: &Outcome, unit: &str) {
         let x = LEFT + slot * k as f64 + slot * 0.2;
         let _ = write!(
             s,
-            "<rect x=\"{x:.1}\" y=\"{:.1}\" width=\"{:.1}\" height=\"{h:.1}\" fill=\"#2a6f97\"/>\
-             <text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>\
-             <text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\" font-size=\"9\">{}</text>",
+            concat!(
+                "<rect x=\"{x:.1}\" y=\"{:.1}\" width=\"{:.1}\" height=\"{h:.1}\" fill=\"#2a6f97\"/>", // words: HTML markup
+                "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>", // words: HTML markup
+                "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\" font-size=\"9\">{}</text>" // words: HTML markup
+            ),
             H - BOTTOM - h,
             slot * 0.6,
             x + slot * 0.3,
@@ -242,7 +264,9 @@ fn bars(s: &mut String, outcome: &Outcome, unit: &str) {
             number(row.value),
             x + slot * 0.3,
             H - BOTTOM + 14.0,
-            escape(&short(&row.label))
+            escape(&short(&row.label)),
+            x = x,
+            h = h,
         );
     }
 }
@@ -274,8 +298,10 @@ fn curve(
     for q in points {
         let _ = write!(
             s,
-            "<line x1=\"{0:.1}\" y1=\"{1:.1}\" x2=\"{0:.1}\" y2=\"{2:.1}\" stroke=\"#e07a1f\" \
-             stroke-width=\"2\"/><text x=\"{0:.1}\" y=\"{3:.1}\" text-anchor=\"middle\">{4}</text>",
+            concat!(
+                "<line x1=\"{0:.1}\" y1=\"{1:.1}\" x2=\"{0:.1}\" y2=\"{2:.1}\" stroke=\"#e07a1f\" ", // words: HTML markup
+                "stroke-width=\"2\"/><text x=\"{0:.1}\" y=\"{3:.1}\" text-anchor=\"middle\">{4}</text>" // words: HTML markup
+            ),
             px(q.x),
             py(q.low),
             py(q.high),
@@ -289,13 +315,13 @@ fn curve(
         .collect();
     let _ = write!(
         s,
-        "<polyline points=\"{}\" fill=\"none\" stroke=\"#e07a1f\" stroke-width=\"2.5\"/>",
+        "<polyline points=\"{}\" fill=\"none\" stroke=\"#e07a1f\" stroke-width=\"2.5\"/>", // words: HTML markup
         path.join(" ")
     );
     for q in points {
         let _ = write!(
             s,
-            "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"3.5\" fill=\"#e07a1f\"/>",
+            "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"3.5\" fill=\"#e07a1f\"/>", // words: HTML markup
             px(q.x),
             py(q.mean)
         );
@@ -312,16 +338,20 @@ fn curve(
             .collect();
         let _ = write!(
             s,
-            "<polyline points=\"{}\" fill=\"none\" stroke=\"#2a6f97\" stroke-width=\"2\" \
-             stroke-dasharray=\"6 4\"/>",
+            concat!(
+                "<polyline points=\"{}\" fill=\"none\" stroke=\"#2a6f97\" stroke-width=\"2\" ", // words: HTML markup
+                "stroke-dasharray=\"6 4\"/>" // words: HTML markup
+            ),
             sketch.join(" ")
         );
     }
     let _ = write!(
         s,
-        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>\
-         <text x=\"{:.1}\" y=\"{TOP}\" text-anchor=\"end\" fill=\"#e07a1f\">{}</text>\
-         <text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\" fill=\"#2a6f97\">{}</text>",
+        concat!(
+            "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>", // words: HTML markup
+            "<text x=\"{:.1}\" y=\"{TOP}\" text-anchor=\"end\" fill=\"#e07a1f\">{}</text>", // words: HTML markup
+            "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\" fill=\"#2a6f97\">{}</text>" // words: HTML markup
+        ),
         (LEFT + W - RIGHT) / 2.0,
         H - 6.0,
         escape(x_label),
@@ -329,18 +359,15 @@ fn curve(
         escape(ts("inv-record-svg-measured")),
         W - RIGHT,
         TOP + 14.0,
-        escape(ts("inv-record-svg-prediction"))
+        escape(ts("inv-record-svg-prediction")),
+        TOP = TOP,
     );
 }
 
 /// The counts over the run (the catches plot) as an inline SVG picture.
 pub fn timelines_svg(outcome: &Outcome) -> String {
     const COLORS: [&str; 2] = ["#e07a1f", "#2a8fc7"];
-    let mut s = format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {W} {H}\" width=\"{W}\" \
-         height=\"{H}\" role=\"img\" font-family=\"sans-serif\" font-size=\"11\">\
-         <rect width=\"{W}\" height=\"{H}\" fill=\"#fff\"/>"
-    );
+    let mut s = svg_open();
     let all = outcome.timelines.iter().flat_map(|t| t.points.iter());
     let x_max = all.clone().map(|p| p[0]).fold(1.0, f64::max);
     let y_top = all.map(|p| p[1]).fold(0.0, f64::max).max(1.0) * 1.15;
@@ -356,17 +383,20 @@ pub fn timelines_svg(outcome: &Outcome) -> String {
             .collect();
         let _ = write!(
             s,
-            "<polyline points=\"{}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"/>\
-             <text x=\"{:.1}\" y=\"{:.1}\" fill=\"{color}\">{}</text>",
+            concat!(
+                "<polyline points=\"{}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"/>", // words: HTML markup
+                "<text x=\"{:.1}\" y=\"{:.1}\" fill=\"{color}\">{}</text>" // words: HTML markup
+            ),
             path.join(" "),
             LEFT + 8.0,
             TOP + 12.0 + 14.0 * k as f64,
-            escape(&t.label)
+            escape(&t.label),
+            color = color,
         );
     }
     let _ = write!(
         s,
-        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text></svg>",
+        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text></svg>", // words: HTML markup
         (LEFT + W - RIGHT) / 2.0,
         H - 6.0,
         escape(&tr!("inv-record-svg-seconds", secs = num(x_max, 0)))
