@@ -479,6 +479,10 @@ fn an_investigation_speaks_spanish() {
     ];
     with_lang(Lang::Es, || {
         assert_eq!(inv.title.text(), "¿Qué impulso forma un cardumen?");
+        assert_eq!(
+            crate::tr!("inv-curve-point", value = crate::i18n::num(0.25, 2), x = 20),
+            "0,25 en 20"
+        );
         let verdict = super::outcome::curve_verdict(&SHAPES, 0, &points, 1.0);
         assert!(verdict.starts_with("Tu dibujo, «Plana"), "{verdict}");
         let err = from_url("http://x/?investigation=nope")
