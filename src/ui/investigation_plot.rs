@@ -171,9 +171,11 @@ fn short_label(label: &str, race: bool) -> String {
     let tail = label.rsplit_once(", ").map_or(label, |(_, tail)| tail);
     // "distance after 6840 tries": the number of tries is what tells the bars
     // apart, and six longer names overlap (the plot then shows none).
-    let tries = tail
-        .split(' ')
-        .find(|w| !w.is_empty() && w.chars().all(|c| c.is_ascii_digit() || c == '.'));
+    let tries = tail.split(' ').find(|w| {
+        !w.is_empty()
+            && w.chars()
+                .all(|c| c.is_ascii_digit() || c == '.' || c == ',')
+    });
     match tries {
         Some(tries) if race => tries.to_owned(),
         _ => tail.to_owned(),
