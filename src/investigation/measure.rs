@@ -133,7 +133,7 @@ impl Measurement {
         now_secs: f64,
     ) -> Option<Outcome> {
         let choice = progress.prediction.map_or(0, |p| p.choice);
-        let outcome = match self {
+        let mut outcome = match self {
             Self::Catches { secs } => catches_outcome(lab, *secs, progress, choice),
             Self::Alignment(run) => run.advance(lab, progress, choice),
             Self::Sweep(session) => {
@@ -147,12 +147,40 @@ impl Measurement {
                 measured,
             } => learning_advance(lab, *secs, raced, measured, progress, choice),
         };
+        if let Some(outcome) = &mut outcome {
+            // The same result in the other languages, from the same numbers.
+            let here = crate::i18n::lang();
+            for other in crate::i18n::Lang::ALL {
+                if other != here
+                    && let Some(t) =
+                        crate::i18n::with_lang(other, || self.rebuild(progress, lab, choice))
+                {
+                    outcome.translations.push((other, t));
+                }
+            }
+        }
         if outcome.is_some() && matches!(self, Self::Catches { .. }) {
             let mut s = lab.settings().clone();
             s.paused = true;
             lab.apply_settings(s);
         }
         outcome
+    }
+
+    /// The result of a run that has ended, made again (in another language):
+    /// from the same numbers, measuring nothing more.
+    fn rebuild(&mut self, progress: &Progress, lab: &mut Lab, choice: usize) -> Option<Outcome> {
+        match self {
+            Self::Catches { secs } => catches_outcome(lab, *secs, progress, choice),
+            Self::Alignment(run) => run.advance(lab, progress, choice),
+            Self::Sweep(session) => Some(sweep_outcome(session, progress, choice)),
+            Self::TailBeat(run) => Some(run.outcome(progress, choice)),
+            Self::Learning {
+                secs,
+                raced,
+                measured,
+            } => learning_advance(lab, *secs, raced, measured, progress, choice),
+        }
     }
 
     /// How far the run is, 0 to 1, and what it is doing, in words.
@@ -320,6 +348,7 @@ fn catches_outcome(lab: &Lab, secs: f64, progress: &Progress, choice: usize) -> 
             unit: ts("inv-unit-fish-caught"),
         },
         timelines: catches_timelines(lab, secs),
+        translations: Vec::new(),
     })
 }
 
@@ -444,6 +473,7 @@ impl AlignmentRun {
                 unit: ts("inv-unit-polarization"),
             },
             timelines: Vec::new(),
+            translations: Vec::new(),
         })
     }
 }
@@ -525,6 +555,7 @@ fn curve_outcome(
             y_max,
         },
         timelines: Vec::new(),
+        translations: Vec::new(),
     }
 }
 
@@ -711,5 +742,6 @@ fn learning_advance(
             unit: ts("inv-unit-metres-swum"),
         },
         timelines: Vec::new(),
+        translations: Vec::new(),
     })
 }

@@ -6,7 +6,7 @@
 use serde::Serialize;
 
 use super::catalogue::Shape;
-use crate::i18n::num;
+use crate::i18n::{Lang, lang, num};
 use crate::tr;
 
 /// One measured number.
@@ -62,9 +62,24 @@ pub struct Outcome {
     pub chart: Chart,
     /// How the measured counts grew during the run (may be empty).
     pub timelines: Vec<Timeline>,
+    /// The same result in the catalogue's other languages (its words made
+    /// when the run ended), so a student who changes language reads it, and
+    /// saves it, in the new one.
+    #[serde(skip)]
+    pub translations: Vec<(Lang, Outcome)>,
 }
 
 impl Outcome {
+    /// The result in the language in force (this one where it has no
+    /// translation).
+    pub fn localized(&self) -> &Outcome {
+        let here = lang();
+        self.translations
+            .iter()
+            .find(|(l, _)| *l == here)
+            .map_or(self, |(_, o)| o)
+    }
+
     /// The rows as CSV lines `investigation,label,value,unit` (no header).
     pub fn csv_lines(&self, id: &str, out: &mut String) {
         use std::fmt::Write as _;

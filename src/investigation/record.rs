@@ -88,7 +88,7 @@ fn section(out: &mut String, p: &Progress) {
         }
     }
     let _ = writeln!(out, "<h3>{}</h3>", escape(ts("inv-record-measured")));
-    match &p.outcome {
+    match p.outcome.as_ref().map(|o| o.localized()) {
         Some(outcome) => {
             let _ = writeln!(out, "<p>{}</p>", escape(&outcome.summary));
             table(out, outcome);
@@ -426,7 +426,7 @@ pub fn csv(done: &[Progress]) -> String {
     out.push_str("investigation,label,value,unit\n"); // words: the CSV's column names, read by programs
     for p in done {
         if let Some(outcome) = &p.outcome {
-            outcome.csv_lines(p.investigation.id, &mut out);
+            outcome.localized().csv_lines(p.investigation.id, &mut out);
         }
     }
     out

@@ -36,6 +36,7 @@ fn outcome() -> Outcome {
             label: "a".into(),
             points: vec![[0.0, 0.0], [90.0, 2.0], [180.0, 3.0]],
         }],
+        translations: Vec::new(),
     }
 }
 
@@ -512,6 +513,7 @@ fn an_investigation_speaks_spanish() {
             rows,
             chart: Chart::Bars { unit: "0-1" },
             timelines: Vec::new(),
+            translations: Vec::new(),
         });
         let html = record::html(std::slice::from_ref(&p));
         assert!(html.contains("<html lang=\"es\">"));
@@ -524,5 +526,35 @@ fn an_investigation_speaks_spanish() {
         );
         // The CSV's numbers stay machine-readable.
         assert!(csv.contains("which-urge,polarización,0.5,0-1"), "{csv}");
+    });
+}
+
+#[test]
+fn a_result_follows_the_language_it_is_read_in() {
+    use crate::i18n::{Lang, with_lang};
+    let mut lab = Lab::new(setup_settings(find("how-swim").unwrap()).unwrap());
+    let mut p = progress("how-swim");
+    p.choose(1).unwrap();
+    p.commit().unwrap();
+    let mut m = Measurement::TailBeat(Box::new(TailBeatRun::new(&[1.0, 2.0], 2.0)));
+    let o = with_lang(Lang::En, || run_on_lab(&mut m, &p, &mut lab, 10_000));
+    assert!(
+        o.localized().summary.starts_with("Measured speed"),
+        "{}",
+        o.summary
+    );
+    with_lang(Lang::Es, || {
+        let es = o.localized();
+        assert!(
+            es.summary.starts_with("Se midió la velocidad"),
+            "{}",
+            es.summary
+        );
+        assert!(es.verdict.starts_with("Tu dibujo"), "{}", es.verdict);
+        assert!(
+            es.rows[0].label.contains("coletazos por segundo (Hz) 1"),
+            "{:?}",
+            es.rows[0]
+        );
     });
 }

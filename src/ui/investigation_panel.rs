@@ -444,7 +444,7 @@ impl InvestigationPanel {
             (PredictionKind::Curve { shapes, .. }, Some(pred)) => shapes.get(pred.choice),
             _ => None,
         };
-        let Some(outcome) = &p.outcome else {
+        let Some(outcome) = p.outcome.as_ref().map(|o| o.localized()) else {
             if let (
                 Some(shape),
                 PredictionKind::Curve {
@@ -478,7 +478,7 @@ impl InvestigationPanel {
         };
         let inv = p.investigation;
         if let Some(outcome) = &p.outcome {
-            ui.label(egui::RichText::new(&outcome.summary).weak());
+            ui.label(egui::RichText::new(&outcome.localized().summary).weak());
         }
         ui.label(tr!(
             "inv-question-of",
@@ -523,7 +523,10 @@ impl InvestigationPanel {
         rects.insert("investigation_reveal", r.rect);
         ui.label(egui::RichText::new(inv.reference.text()).small().weak());
         if let Some(outcome) = &p.outcome {
-            ui.label(egui::RichText::new(tr!("inv-your-run", summary = &outcome.summary)).weak());
+            ui.label(
+                egui::RichText::new(tr!("inv-your-run", summary = &outcome.localized().summary))
+                    .weak(),
+            );
         }
         ui.separator();
         ui.label(ts("inv-sandbox"));
