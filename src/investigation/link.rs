@@ -7,18 +7,31 @@ use serde_json::Value;
 
 use super::catalogue::{Investigation, find, known_ids};
 use crate::settings::share_link::{query_value, with_query, without_query};
+use crate::tr;
 
 /// The query parameter (and `set()` key) that opens an investigation.
 pub const KEY: &str = "investigation";
 
 /// Why an investigation could not be opened.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum LinkError {
-    #[error("there is no investigation '{id}'; the investigations are: {known}")]
+    /// No investigation has this id; `known` lists those there are.
     UnknownId { id: String, known: String },
-    #[error("investigation: expected an id such as \"why-school\" (or null to close it), got {0}")]
+    /// The value is not an id (nor null).
     NotAnId(String),
 }
+
+impl std::fmt::Display for LinkError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let text = match self {
+            Self::UnknownId { id, known } => tr!("inv-link-unknown", id = id, known = known),
+            Self::NotAnId(got) => tr!("inv-link-not-an-id", got = got),
+        };
+        f.write_str(&text)
+    }
+}
+
+impl std::error::Error for LinkError {}
 
 fn lookup(id: &str) -> Result<&'static Investigation, LinkError> {
     find(id).ok_or_else(|| LinkError::UnknownId {

@@ -18,10 +18,12 @@ use super::catalogue::{MeasurementKind, PredictionKind};
 use super::outcome::{Chart, CurvePoint, Outcome, Row, Timeline, curve_verdict};
 use super::{Investigation, Progress};
 use crate::experiment::{Design, ExperimentSession};
+use crate::i18n::{num, tr, ts};
 use crate::lab::Lab;
 use crate::sim::body::motor_controller::{SwimMc, SwimParams};
 use crate::sim::body::physical_fish::BodySpecies;
 use crate::sim::body::{FishBody, PectoralFins};
+use crate::tr;
 
 /// A run under way.
 pub enum Measurement {
@@ -98,7 +100,7 @@ impl Measurement {
             MeasurementKind::Sweep { design } => {
                 let plan = Design::from_json(design)
                     .and_then(|d| d.validate())
-                    .map_err(|err| format!("the investigation's experiment: {err}"))?;
+                    .map_err(|err| tr!("inv-experiment-refused", error = err.to_string()))?;
                 let guess =
                     plan.estimate().secs_one_core / plan.estimate().total_steps.max(1) as f64;
                 Self::Sweep(Box::new(ExperimentSession::new(plan, guess)))
@@ -131,7 +133,7 @@ impl Measurement {
         now_secs: f64,
     ) -> Option<Outcome> {
         let choice = progress.prediction.map_or(0, |p| p.choice);
-        let outcome = match self {
+        let mut outcome = match self {
             Self::Catches { secs } => catches_outcome(lab, *secs, progress, choice),
             Self::Alignment(run) => run.advance(lab, progress, choice),
             Self::Sweep(session) => {
@@ -145,6 +147,18 @@ impl Measurement {
                 measured,
             } => learning_advance(lab, *secs, raced, measured, progress, choice),
         };
+        if let Some(outcome) = &mut outcome {
+            // The same result in the other languages, from the same numbers.
+            let here = crate::i18n::lang();
+            for other in crate::i18n::Lang::ALL {
+                if other != here
+                    && let Some(t) =
+                        crate::i18n::with_lang(other, || self.rebuild(progress, lab, choice))
+                {
+                    outcome.translations.push((other, t));
+                }
+            }
+        }
         if outcome.is_some() && matches!(self, Self::Catches { .. }) {
             let mut s = lab.settings().clone();
             s.paused = true;
@@ -153,23 +167,39 @@ impl Measurement {
         outcome
     }
 
+    /// The result of a run that has ended, made again (in another language):
+    /// from the same numbers, measuring nothing more.
+    fn rebuild(&mut self, progress: &Progress, lab: &mut Lab, choice: usize) -> Option<Outcome> {
+        match self {
+            Self::Catches { secs } => catches_outcome(lab, *secs, progress, choice),
+            Self::Alignment(run) => run.advance(lab, progress, choice),
+            Self::Sweep(session) => Some(sweep_outcome(session, progress, choice)),
+            Self::TailBeat(run) => Some(run.outcome(progress, choice)),
+            Self::Learning {
+                secs,
+                raced,
+                measured,
+            } => learning_advance(lab, *secs, raced, measured, progress, choice),
+        }
+    }
+
     /// How far the run is, 0 to 1, and what it is doing, in words.
     pub fn status(&self, lab: &Lab) -> (f32, String) {
         let t = lab.runs()[0].time_secs();
         match self {
             Self::Catches { secs } => (
                 (t / secs) as f32,
-                format!("{t:.0} of {secs:.0} simulated seconds"),
+                tr!("inv-status-catches", t = num(t, 0), secs = num(*secs, 0)),
             ),
             Self::Alignment(run) => run.status(),
             Self::Sweep(session) => {
                 let p = session.progress();
                 (
                     p.steps_done as f32 / p.steps_total.max(1) as f32,
-                    format!(
-                        "run {} of {} of the experiment",
-                        (p.runs_done + 1).min(p.runs_total),
-                        p.runs_total
+                    tr!(
+                        "inv-status-sweep",
+                        run = (p.runs_done + 1).min(p.runs_total),
+                        runs = p.runs_total
                     ),
                 )
             }
@@ -178,28 +208,33 @@ impl Measurement {
                 let k = run.speeds.len().min(total - 1);
                 (
                     run.speeds.len() as f32 / total as f32,
-                    format!(
-                        "swimming at {} beats a second ({} of {total})",
-                        run.frequencies_hz[k],
-                        k + 1
+                    tr!(
+                        "inv-status-tail-beat",
+                        hz = run.frequencies_hz[k],
+                        k = k + 1,
+                        total = total
                     ),
                 )
             }
             Self::Learning { secs, raced, .. } => {
                 let Some(l) = lab.runs()[0].scene().learning() else {
-                    return (0.0, "open the learning lab".into());
+                    return (0.0, tr("inv-status-open-learning"));
                 };
                 match (raced, l.race()) {
                     (true, Some(race)) => (
                         0.5 + 0.5 * (f64::from(race.time_secs()) / secs) as f32,
-                        format!("the race: {:.1} of {secs:.1} s", race.time_secs()),
+                        tr!(
+                            "inv-status-race",
+                            t = num(f64::from(race.time_secs()), 1),
+                            secs = num(*secs, 1)
+                        ),
                     ),
                     _ => (
                         0.5 * l.trainer().evaluations() as f32 / l.annealing_steps().max(1) as f32,
-                        format!(
-                            "practising the first drill: {} of {} tries",
-                            l.trainer().evaluations().min(l.annealing_steps()),
-                            l.annealing_steps()
+                        tr!(
+                            "inv-status-practising",
+                            tries = l.trainer().evaluations().min(l.annealing_steps()),
+                            total = l.annealing_steps()
                         ),
                     ),
                 }
@@ -231,15 +266,17 @@ fn choice_text(progress: &Progress, choice: usize) -> &'static str {
 /// The verdict of a choice: does the measurement support the answer chosen?
 fn choice_verdict(progress: &Progress, choice: usize, supported: usize, numbers: &str) -> String {
     if choice == supported {
-        format!(
-            "You predicted \"{}\". {numbers} The measurement agrees with your prediction.",
-            choice_text(progress, choice)
+        tr!(
+            "inv-verdict-agrees",
+            prediction = choice_text(progress, choice),
+            numbers = numbers
         )
     } else {
-        format!(
-            "You predicted \"{}\". {numbers} The measurement points to \"{}\" instead.",
-            choice_text(progress, choice),
-            choice_text(progress, supported)
+        tr!(
+            "inv-verdict-instead",
+            prediction = choice_text(progress, choice),
+            numbers = numbers,
+            supported = choice_text(progress, supported)
         )
     }
 }
@@ -256,7 +293,7 @@ fn catches_at(run: &crate::lab::Run, secs: f64) -> Option<u64> {
 /// Each tank's catches over the run's first `secs` simulated seconds, from its
 /// metrics samples (what the window plots while the run goes on).
 pub fn catches_timelines(lab: &Lab, secs: f64) -> Vec<Timeline> {
-    let names = ["loners (left)", "school (right)"];
+    let names = [ts("inv-loners"), ts("inv-school")];
     lab.runs()
         .iter()
         .zip(names)
@@ -286,29 +323,32 @@ fn catches_outcome(lab: &Lab, secs: f64, progress: &Progress, choice: usize) -> 
     } else {
         1
     };
-    let numbers = format!(
-        "In {secs:.0} simulated seconds the shark caught {loners} loners and {school} fish \
-         of the school."
+    let numbers = tr!(
+        "inv-catches-summary",
+        secs = num(secs, 0),
+        loners = loners,
+        school = school
     );
     Some(Outcome {
         summary: numbers.clone(),
         verdict: choice_verdict(progress, choice, supported, &numbers),
         rows: vec![
             Row {
-                label: "fish caught, loners (left)".into(),
+                label: tr("inv-row-caught-loners"),
                 value: loners as f64,
-                unit: "fish",
+                unit: ts("inv-unit-fish"),
             },
             Row {
-                label: "fish caught, school (right)".into(),
+                label: tr("inv-row-caught-school"),
                 value: school as f64,
-                unit: "fish",
+                unit: ts("inv-unit-fish"),
             },
         ],
         chart: Chart::Bars {
-            unit: "fish caught",
+            unit: ts("inv-unit-fish-caught"),
         },
         timelines: catches_timelines(lab, secs),
+        translations: Vec::new(),
     })
 }
 
@@ -326,12 +366,11 @@ impl AlignmentRun {
         // clicked are named on the line under it.
         (
             (on + off) as f32 / (2 * n) as f32,
-            format!(
-                "alignment on {:.0}/{:.0} s, off {:.0}/{:.0} s",
-                on as f64 / 4.0,
-                self.secs,
-                off as f64 / 4.0,
-                self.secs
+            tr!(
+                "inv-status-alignment",
+                on = num(on as f64 / 4.0, 0),
+                off = num(off as f64 / 4.0, 0),
+                secs = num(self.secs, 0)
             ),
         )
     }
@@ -392,44 +431,49 @@ impl AlignmentRun {
         let fish: Vec<String> = self
             .inspected
             .iter()
-            .map(|(f, k)| format!("fish {f} (heeded {k})"))
+            .map(|&(f, k)| tr!("inv-fish-heeded", fish = f, count = k))
             .collect();
         let most_heeded = self.inspected.iter().map(|&(_, k)| k).max().unwrap_or(0);
         // No fish leads: every fish inspected reacted to a few neighbours only,
         // and the order vanished without alignment.
         let supported = usize::from(most_heeded <= 7 && on > off);
-        let numbers = format!(
-            "You inspected {}: each reacted only to the few neighbours it saw. Polarization \
-             with alignment on (weight {:.0}): {on:.2}; off: {off:.2} (means over {:.0} s).",
-            fish.join(", "),
-            self.on_weight,
-            self.secs
+        let numbers = tr!(
+            "inv-alignment-summary",
+            fish = fish.join(", "),
+            weight = num(f64::from(self.on_weight), 0),
+            on = num(on, 2),
+            off = num(off, 2),
+            secs = num(self.secs, 0)
         );
         let mut rows = vec![
             Row {
-                label: format!("polarization, alignment on ({:.0})", self.on_weight),
+                label: tr!(
+                    "inv-row-alignment-on",
+                    weight = num(f64::from(self.on_weight), 0)
+                ),
                 value: on,
                 unit: "0-1",
             },
             Row {
-                label: "polarization, alignment off (0)".into(),
+                label: tr("inv-row-alignment-off"),
                 value: off,
                 unit: "0-1",
             },
         ];
         rows.extend(self.inspected.iter().map(|&(f, k)| Row {
-            label: format!("neighbours fish {f} heeded"),
+            label: tr!("inv-row-heeded", fish = f),
             value: k as f64,
-            unit: "fish",
+            unit: ts("inv-unit-fish"),
         }));
         Some(Outcome {
             summary: numbers.clone(),
             verdict: choice_verdict(progress, choice, supported, &numbers),
             rows,
             chart: Chart::Bars {
-                unit: "polarization (0-1)",
+                unit: ts("inv-unit-polarization"),
             },
             timelines: Vec::new(),
+            translations: Vec::new(),
         })
     }
 }
@@ -449,7 +493,7 @@ fn sweep_outcome(session: &ExperimentSession, progress: &Progress, choice: usize
             })
         })
         .collect();
-    curve_outcome(progress, choice, points, 1.0, "the polarization")
+    curve_outcome(progress, choice, points, 1.0, ts("inv-what-polarization"))
 }
 
 /// A measured curve against a sketched prediction.
@@ -468,26 +512,34 @@ fn curve_outcome(
     else {
         unreachable!("curve outcomes belong to curve predictions")
     };
-    let describe = |p: &CurvePoint| format!("{:.2} at {}", p.mean, p.x);
+    let (x_label, y_label) = (x_label.text(), y_label.text());
+    let describe = |p: &CurvePoint| tr!("inv-curve-point", value = num(p.mean, 2), x = p.x);
     let summary = match (points.first(), points.last()) {
         (Some(first), Some(last)) => {
             let peak = points
                 .iter()
                 .max_by(|a, b| a.mean.total_cmp(&b.mean))
                 .unwrap_or(last);
-            format!(
-                "Measured {what}: {} ({x_label}), {} at the top, highest {}.",
-                describe(first),
-                describe(last),
-                describe(peak)
+            tr!(
+                "inv-curve-summary",
+                what = what,
+                first = describe(first),
+                x_label = x_label,
+                last = describe(last),
+                peak = describe(peak)
             )
         }
-        _ => format!("No point of {what} was measured."),
+        _ => tr!("inv-curve-none", what = what),
     };
     let rows = points
         .iter()
         .map(|p| Row {
-            label: format!("{y_label} at {x_label} {}", p.x),
+            label: tr!(
+                "inv-row-curve",
+                y_label = y_label,
+                x_label = x_label,
+                x = p.x
+            ),
             value: p.mean,
             unit: "",
         })
@@ -503,6 +555,7 @@ fn curve_outcome(
             y_max,
         },
         timelines: Vec::new(),
+        translations: Vec::new(),
     }
 }
 
@@ -592,7 +645,13 @@ impl TailBeatRun {
             .collect();
         let top = points.iter().map(|p| p.mean).fold(0.0, f64::max);
         // The sketches' top (0.9 of the height) at the fastest measured speed.
-        curve_outcome(progress, choice, points, (top / 0.9).max(1e-6), "speed")
+        curve_outcome(
+            progress,
+            choice,
+            points,
+            (top / 0.9).max(1e-6),
+            ts("inv-what-speed"),
+        )
     }
 
     /// The speeds measured so far, body lengths per second.
@@ -651,14 +710,21 @@ fn learning_advance(
     } else {
         2
     };
-    let numbers = format!(
-        "After {:.1} s the copy that practised {} tries swam {last:.2} m; the best of the \
-         others {best_other:.2} m ({:+.1} %). The copy with {} tries swam {:.2} m.",
-        time_secs,
-        steps.last().copied().unwrap_or(0),
-        100.0 * margin,
-        steps.first().copied().unwrap_or(0),
-        distances.first().copied().unwrap_or(0.0)
+    let percent = crate::i18n::fmt(100.0 * margin, 1);
+    let margin_text = if percent.starts_with('−') {
+        percent
+    } else {
+        format!("+{percent}")
+    };
+    let numbers = tr!(
+        "inv-race-summary",
+        secs = num(f64::from(*time_secs), 1),
+        tries = steps.last().copied().unwrap_or(0),
+        last = num(last, 2),
+        best = num(best_other, 2),
+        margin = margin_text,
+        first_tries = steps.first().copied().unwrap_or(0),
+        first = num(distances.first().copied().unwrap_or(0.0), 2)
     );
     Some(Outcome {
         summary: numbers.clone(),
@@ -667,14 +733,15 @@ fn learning_advance(
             .iter()
             .zip(&distances)
             .map(|(s, d)| Row {
-                label: format!("distance after {s} tries"),
+                label: tr!("inv-row-distance", tries = *s),
                 value: *d,
                 unit: "m",
             })
             .collect(),
         chart: Chart::Bars {
-            unit: "metres swum",
+            unit: ts("inv-unit-metres-swum"),
         },
         timelines: Vec::new(),
+        translations: Vec::new(),
     })
 }

@@ -27,7 +27,9 @@ mod tests;
 
 use serde::Serialize;
 
-pub use self::catalogue::{INVESTIGATIONS, Investigation, MeasurementKind, PredictionKind, Shape};
+pub use self::catalogue::{
+    INVESTIGATIONS, Investigation, MeasurementKind, PredictionKind, Shape, Text,
+};
 pub use self::measure::Measurement;
 pub use self::outcome::{Chart, Outcome};
 
@@ -67,19 +69,48 @@ pub struct Prediction {
 }
 
 /// Why a step was refused.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum StepError {
-    #[error("commit a prediction first: the run starts only after you have predicted")]
+    /// Commit a prediction first.
     NoPrediction,
-    #[error("the prediction is locked: it was committed before the run")]
+    /// The prediction is locked.
     Locked,
-    #[error("answer {choice} does not exist: there are {count} answers")]
+    /// That answer does not exist.
     NoSuchAnswer { choice: usize, count: usize },
-    #[error("not now: this is the {0} step")]
+    /// Not now: this is the step named.
     WrongStep(&'static str),
-    #[error("the run has not finished yet")]
+    /// The run has not finished yet.
     NoResult,
 }
+
+impl std::fmt::Display for StepError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        use crate::i18n::tr;
+        use crate::tr;
+        let text = match self {
+            Self::NoPrediction => tr("inv-error-no-prediction"),
+            Self::Locked => tr("inv-error-locked"),
+            Self::NoSuchAnswer { choice, count } => {
+                tr!("inv-error-no-such-answer", choice = *choice, count = *count)
+            }
+            Self::WrongStep(step) => {
+                let name = match *step {
+                    "intro" => tr("inv-step-name-intro"),
+                    "predict" => tr("inv-step-name-predict"),
+                    "run" => tr("inv-step-name-run"),
+                    "explain" => tr("inv-step-name-explain"),
+                    "reveal" => tr("inv-step-name-reveal"),
+                    other => other.to_owned(),
+                };
+                tr!("inv-error-wrong-step", step = name)
+            }
+            Self::NoResult => tr("inv-error-no-result"),
+        };
+        f.write_str(&text)
+    }
+}
+
+impl std::error::Error for StepError {}
 
 /// One student's progress through one investigation.
 #[derive(Clone, Debug, PartialEq)]
@@ -125,8 +156,10 @@ impl Progress {
     /// The prediction in words.
     pub fn answer_text(&self, choice: usize) -> &'static str {
         match self.investigation.prediction {
-            PredictionKind::Choice(options) => options.get(choice).copied().unwrap_or("?"),
-            PredictionKind::Curve { shapes, .. } => shapes.get(choice).map_or("?", |s| s.name),
+            PredictionKind::Choice(options) => options.get(choice).map_or("?", |o| o.text()),
+            PredictionKind::Curve { shapes, .. } => {
+                shapes.get(choice).map_or("?", |s| s.name.text())
+            }
         }
     }
 
@@ -267,9 +300,9 @@ pub fn list() -> Vec<ListEntry> {
         .iter()
         .map(|i| ListEntry {
             id: i.id,
-            title: i.title,
+            title: i.title.text(),
             minutes: i.minutes,
-            teaser: i.teaser,
+            teaser: i.teaser.text(),
         })
         .collect()
 }

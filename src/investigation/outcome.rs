@@ -6,6 +6,8 @@
 use serde::Serialize;
 
 use super::catalogue::Shape;
+use crate::i18n::{Lang, lang, num};
+use crate::tr;
 
 /// One measured number.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -60,9 +62,24 @@ pub struct Outcome {
     pub chart: Chart,
     /// How the measured counts grew during the run (may be empty).
     pub timelines: Vec<Timeline>,
+    /// The same result in the catalogue's other languages (its words made
+    /// when the run ended), so a student who changes language reads it, and
+    /// saves it, in the new one.
+    #[serde(skip)]
+    pub translations: Vec<(Lang, Outcome)>,
 }
 
 impl Outcome {
+    /// The result in the language in force (this one where it has no
+    /// translation).
+    pub fn localized(&self) -> &Outcome {
+        let here = lang();
+        self.translations
+            .iter()
+            .find(|(l, _)| *l == here)
+            .map_or(self, |(_, o)| o)
+    }
+
     /// The rows as CSV lines `investigation,label,value,unit` (no header).
     pub fn csv_lines(&self, id: &str, out: &mut String) {
         use std::fmt::Write as _;
@@ -78,8 +95,10 @@ impl Outcome {
         }
         if let Chart::Curve { points, .. } = &self.chart {
             for p in points {
-                let _ = writeln!(out, "{id},curve x={} 95% low,{},", p.x, p.low);
-                let _ = writeln!(out, "{id},curve x={} 95% high,{},", p.x, p.high);
+                let low = tr!("inv-csv-curve-low", x = p.x);
+                let high = tr!("inv-csv-curve-high", x = p.x);
+                let _ = writeln!(out, "{id},{},{},", csv_field(&low), p.low);
+                let _ = writeln!(out, "{id},{},{},", csv_field(&high), p.high);
             }
         }
     }
@@ -132,22 +151,20 @@ pub fn curve_verdict(shapes: &[Shape], chosen: usize, points: &[CurvePoint], y_m
         .min_by(|a, b| a.1.total_cmp(b.1))
         .map_or(0, |(k, _)| k);
     let mine = distances.get(chosen).copied().unwrap_or(f64::NAN);
-    let name = |k: usize| shapes.get(k).map_or("?", |s| s.name);
+    let name = |k: usize| shapes.get(k).map_or("?", |s| s.name.text());
     if closest == chosen {
-        format!(
-            "Your sketch, \"{}\", is the closest of the shapes to the measured curve \
-             (on average {:.0} % of the plot's height away).",
-            name(chosen),
-            100.0 * mine
+        tr!(
+            "inv-curve-verdict-closest",
+            sketch = name(chosen),
+            percent = num(100.0 * mine, 0)
         )
     } else {
-        format!(
-            "Your sketch, \"{}\", lies on average {:.0} % of the plot's height from the \
-             measured curve; the closest shape is \"{}\" ({:.0} %).",
-            name(chosen),
-            100.0 * mine,
-            name(closest),
-            100.0 * distances[closest]
+        tr!(
+            "inv-curve-verdict-other",
+            sketch = name(chosen),
+            percent = num(100.0 * mine, 0),
+            closest = name(closest),
+            closest_percent = num(100.0 * distances[closest], 0)
         )
     }
 }

@@ -8,6 +8,8 @@ use std::fmt::Write as _;
 use super::Progress;
 use super::catalogue::PredictionKind;
 use super::outcome::{Chart, CurvePoint, Outcome, x_span};
+use crate::i18n::{fmt, lang, num, tr, ts};
+use crate::tr;
 
 /// Text made safe inside HTML (element content and attribute values).
 pub fn escape(text: &str) -> String {
@@ -33,19 +35,25 @@ table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:.2em .6em;tex
 td.n{text-align:right}.ref{font-size:.9em;color:#555}svg{max-width:100%;height:auto}\
 .answer{white-space:pre-wrap;background:#fafafa;padding:.3em .6em;border:1px solid #ddd}";
 
-/// The HTML file of `done` (the investigations with a committed prediction).
+/// The HTML file of `done` (the investigations with a committed prediction),
+/// in the language in force.
 pub fn html(done: &[Progress]) -> String {
     let mut out = String::new();
+    let title = escape(ts("inv-record-title"));
     let _ = write!(
         out,
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
-         <title>My Shoal investigations</title><style>{STYLE}</style></head><body>\n\
-         <h1>My Shoal investigations</h1>\n<p>Predict, observe, explain: each prediction was \
-         locked before its run started. Every number below was measured by Shoal's \
-         simulation during the run.</p>\n"
+        concat!(
+            "<!DOCTYPE html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\">", // words: HTML markup
+            "<title>{title}</title><style>{STYLE}</style></head><body>\n", // words: HTML markup
+            "<h1>{title}</h1>\n<p>{}</p>\n"                                // words: HTML markup
+        ),
+        lang().code(),
+        escape(ts("inv-record-intro")),
+        title = title,
+        STYLE = STYLE,
     );
     if done.is_empty() {
-        out.push_str("<p>No investigation has been done yet.</p>\n");
+        let _ = writeln!(out, "<p>{}</p>", escape(ts("inv-record-none")));
     }
     for p in done {
         section(&mut out, p);
@@ -58,23 +66,29 @@ fn section(out: &mut String, p: &Progress) {
     let inv = p.investigation;
     let _ = write!(
         out,
-        "<section>\n<h2>{}</h2>\n<p>{}</p>\n<p class=\"q\">{}</p>\n<h3>My prediction</h3>\n",
-        escape(inv.title),
-        escape(inv.intro),
-        escape(inv.question)
+        "<section>\n<h2>{}</h2>\n<p>{}</p>\n<p class=\"q\">{}</p>\n<h3>{}</h3>\n", // words: HTML markup
+        escape(inv.title.text()),
+        escape(inv.intro.text()),
+        escape(inv.question.text()),
+        escape(ts("inv-record-my-prediction"))
     );
     match p.prediction {
         Some(pred) => {
             let _ = writeln!(
                 out,
-                "<p class=\"locked\">{} (locked before the run)</p>",
-                escape(p.answer_text(pred.choice))
+                "<p class=\"locked\">{}</p>", // words: HTML markup
+                escape(&tr!(
+                    "inv-record-locked",
+                    prediction = p.answer_text(pred.choice)
+                ))
             );
         }
-        None => out.push_str("<p>No prediction yet.</p>\n"),
+        None => {
+            let _ = writeln!(out, "<p>{}</p>", escape(ts("inv-record-no-prediction")));
+        }
     }
-    out.push_str("<h3>What was measured</h3>\n");
-    match &p.outcome {
+    let _ = writeln!(out, "<h3>{}</h3>", escape(ts("inv-record-measured")));
+    match p.outcome.as_ref().map(|o| o.localized()) {
         Some(outcome) => {
             let _ = writeln!(out, "<p>{}</p>", escape(&outcome.summary));
             table(out, outcome);
@@ -85,17 +99,19 @@ fn section(out: &mut String, p: &Progress) {
             }
             let _ = writeln!(out, "\n<p>{}</p>", escape(&outcome.verdict));
         }
-        None => out.push_str("<p>The run has not finished.</p>\n"),
+        None => {
+            let _ = writeln!(out, "<p>{}</p>", escape(ts("inv-record-not-finished")));
+        }
     }
     if p.explanations.iter().any(|e| !e.trim().is_empty()) {
-        out.push_str("<h3>My explanations</h3>\n");
+        let _ = writeln!(out, "<h3>{}</h3>", escape(ts("inv-record-my-explanations")));
         for (prompt, answer) in inv.prompts.iter().zip(&p.explanations) {
             let _ = writeln!(
                 out,
-                "<p><b>{}</b></p><p class=\"answer\">{}</p>",
-                escape(prompt),
+                "<p><b>{}</b></p><p class=\"answer\">{}</p>", // words: HTML markup
+                escape(prompt.text()),
                 if answer.trim().is_empty() {
-                    "(no answer)".to_owned()
+                    escape(ts("inv-record-no-answer"))
                 } else {
                     escape(answer)
                 }
@@ -105,20 +121,27 @@ fn section(out: &mut String, p: &Progress) {
     if p.step == super::Step::Reveal {
         let _ = writeln!(
             out,
-            "<h3>What scientists found</h3>\n<p>{}</p>\n<p class=\"ref\">{}</p>",
-            escape(inv.reveal),
-            escape(inv.reference)
+            "<h3>{}</h3>\n<p>{}</p>\n<p class=\"ref\">{}</p>", // words: HTML markup
+            escape(ts("inv-found")),
+            escape(inv.reveal.text()),
+            escape(inv.reference.text())
         );
     }
     out.push_str("</section>\n");
 }
 
 fn table(out: &mut String, outcome: &Outcome) {
-    out.push_str("<table><tr><th>measured</th><th>value</th><th>unit</th></tr>\n");
+    let _ = writeln!(
+        out,
+        "<table><tr><th>{}</th><th>{}</th><th>{}</th></tr>",
+        escape(ts("inv-record-table-measured")),
+        escape(ts("inv-record-table-value")),
+        escape(ts("inv-record-table-unit"))
+    );
     for row in &outcome.rows {
         let _ = writeln!(
             out,
-            "<tr><td>{}</td><td class=\"n\">{}</td><td>{}</td></tr>",
+            "<tr><td>{}</td><td class=\"n\">{}</td><td>{}</td></tr>", // words: HTML markup
             escape(&row.label),
             number(row.value),
             escape(row.unit)
@@ -127,12 +150,13 @@ fn table(out: &mut String, outcome: &Outcome) {
     out.push_str("</table>\n");
 }
 
-/// A number as the record prints it: whole numbers bare, others to 3 decimals.
+/// A number as the record prints it, the language's way: whole numbers bare,
+/// others to 3 decimals.
 pub fn number(v: f64) -> String {
     if v.fract() == 0.0 && v.abs() < 1e12 {
-        format!("{v:.0}")
+        fmt(v, 0)
     } else {
-        format!("{v:.3}")
+        fmt(v, 3)
     }
 }
 
@@ -143,13 +167,22 @@ const BOTTOM: f64 = 40.0;
 const TOP: f64 = 14.0;
 const RIGHT: f64 = 16.0;
 
+/// An SVG picture's opening, on a white ground.
+fn svg_open() -> String {
+    format!(
+        concat!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {W} {H}\" width=\"{W}\" ", // words: HTML markup
+            "height=\"{H}\" role=\"img\" font-family=\"sans-serif\" font-size=\"11\">", // words: HTML markup
+            "<rect width=\"{W}\" height=\"{H}\" fill=\"#fff\"/>" // words: HTML markup
+        ),
+        W = W,
+        H = H
+    )
+}
+
 /// The result's chart as an inline SVG picture.
 pub fn svg(p: &Progress, outcome: &Outcome) -> String {
-    let mut s = format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {W} {H}\" width=\"{W}\" \
-         height=\"{H}\" role=\"img\" font-family=\"sans-serif\" font-size=\"11\">\
-         <rect width=\"{W}\" height=\"{H}\" fill=\"#fff\"/>"
-    );
+    let mut s = svg_open();
     match &outcome.chart {
         Chart::Bars { unit } => bars(&mut s, outcome, unit),
         Chart::Curve {
@@ -167,16 +200,21 @@ fn axes(s: &mut String, y_max: f64, y_label: &str) {
     let (x0, y0, y1) = (LEFT, H - BOTTOM, TOP);
     let _ = write!(
         s,
-        "<line x1=\"{x0}\" y1=\"{y0}\" x2=\"{}\" y2=\"{y0}\" stroke=\"#333\"/>\
-         <line x1=\"{x0}\" y1=\"{y0}\" x2=\"{x0}\" y2=\"{y1}\" stroke=\"#333\"/>",
-        W - RIGHT
+        concat!(
+            "<line x1=\"{x0}\" y1=\"{y0}\" x2=\"{}\" y2=\"{y0}\" stroke=\"#333\"/>", // words: HTML markup
+            "<line x1=\"{x0}\" y1=\"{y0}\" x2=\"{x0}\" y2=\"{y1}\" stroke=\"#333\"/>" // words: HTML markup
+        ),
+        W - RIGHT,
+        x0 = x0,
+        y0 = y0,
+        y1 = y1,
     );
     for k in 0..=4 {
         let v = y_max * f64::from(k) / 4.0;
         let y = y0 - (y0 - y1) * f64::from(k) / 4.0;
         let _ = write!(
             s,
-            "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>",
+            "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>", // words: HTML markup
             x0 - 4.0,
             y + 4.0,
             tick(v)
@@ -184,8 +222,10 @@ fn axes(s: &mut String, y_max: f64, y_label: &str) {
     }
     let _ = write!(
         s,
-        "<text x=\"12\" y=\"{:.1}\" transform=\"rotate(-90 12 {:.1})\" \
-         text-anchor=\"middle\">{}</text>",
+        concat!(
+            "<text x=\"12\" y=\"{:.1}\" transform=\"rotate(-90 12 {:.1})\" ", // words: HTML markup
+            "text-anchor=\"middle\">{}</text>"                                // words: HTML markup
+        ),
         (y0 + y1) / 2.0,
         (y0 + y1) / 2.0,
         escape(y_label)
@@ -194,9 +234,9 @@ fn axes(s: &mut String, y_max: f64, y_label: &str) {
 
 fn tick(v: f64) -> String {
     if v >= 10.0 || v == 0.0 {
-        format!("{v:.0}")
+        fmt(v, 0)
     } else {
-        format!("{v:.2}")
+        fmt(v, 2)
     }
 }
 
@@ -212,9 +252,11 @@ fn bars(s: &mut String, outcome: &Outcome, unit: &str) {
         let x = LEFT + slot * k as f64 + slot * 0.2;
         let _ = write!(
             s,
-            "<rect x=\"{x:.1}\" y=\"{:.1}\" width=\"{:.1}\" height=\"{h:.1}\" fill=\"#2a6f97\"/>\
-             <text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>\
-             <text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\" font-size=\"9\">{}</text>",
+            concat!(
+                "<rect x=\"{x:.1}\" y=\"{:.1}\" width=\"{:.1}\" height=\"{h:.1}\" fill=\"#2a6f97\"/>", // words: HTML markup
+                "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>", // words: HTML markup
+                "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\" font-size=\"9\">{}</text>" // words: HTML markup
+            ),
             H - BOTTOM - h,
             slot * 0.6,
             x + slot * 0.3,
@@ -222,7 +264,9 @@ fn bars(s: &mut String, outcome: &Outcome, unit: &str) {
             number(row.value),
             x + slot * 0.3,
             H - BOTTOM + 14.0,
-            escape(&short(&row.label))
+            escape(&short(&row.label)),
+            x = x,
+            h = h,
         );
     }
 }
@@ -254,8 +298,10 @@ fn curve(
     for q in points {
         let _ = write!(
             s,
-            "<line x1=\"{0:.1}\" y1=\"{1:.1}\" x2=\"{0:.1}\" y2=\"{2:.1}\" stroke=\"#e07a1f\" \
-             stroke-width=\"2\"/><text x=\"{0:.1}\" y=\"{3:.1}\" text-anchor=\"middle\">{4}</text>",
+            concat!(
+                "<line x1=\"{0:.1}\" y1=\"{1:.1}\" x2=\"{0:.1}\" y2=\"{2:.1}\" stroke=\"#e07a1f\" ", // words: HTML markup
+                "stroke-width=\"2\"/><text x=\"{0:.1}\" y=\"{3:.1}\" text-anchor=\"middle\">{4}</text>" // words: HTML markup
+            ),
             px(q.x),
             py(q.low),
             py(q.high),
@@ -269,13 +315,13 @@ fn curve(
         .collect();
     let _ = write!(
         s,
-        "<polyline points=\"{}\" fill=\"none\" stroke=\"#e07a1f\" stroke-width=\"2.5\"/>",
+        "<polyline points=\"{}\" fill=\"none\" stroke=\"#e07a1f\" stroke-width=\"2.5\"/>", // words: HTML markup
         path.join(" ")
     );
     for q in points {
         let _ = write!(
             s,
-            "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"3.5\" fill=\"#e07a1f\"/>",
+            "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"3.5\" fill=\"#e07a1f\"/>", // words: HTML markup
             px(q.x),
             py(q.mean)
         );
@@ -292,38 +338,40 @@ fn curve(
             .collect();
         let _ = write!(
             s,
-            "<polyline points=\"{}\" fill=\"none\" stroke=\"#2a6f97\" stroke-width=\"2\" \
-             stroke-dasharray=\"6 4\"/>",
+            concat!(
+                "<polyline points=\"{}\" fill=\"none\" stroke=\"#2a6f97\" stroke-width=\"2\" ", // words: HTML markup
+                "stroke-dasharray=\"6 4\"/>" // words: HTML markup
+            ),
             sketch.join(" ")
         );
     }
     let _ = write!(
         s,
-        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>\
-         <text x=\"{:.1}\" y=\"{TOP}\" text-anchor=\"end\" fill=\"#e07a1f\">measured \
-         (bars: 95 % interval)</text><text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\" \
-         fill=\"#2a6f97\">my prediction (dashed)</text>",
+        concat!(
+            "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text>", // words: HTML markup
+            "<text x=\"{:.1}\" y=\"{TOP}\" text-anchor=\"end\" fill=\"#e07a1f\">{}</text>", // words: HTML markup
+            "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\" fill=\"#2a6f97\">{}</text>" // words: HTML markup
+        ),
         (LEFT + W - RIGHT) / 2.0,
         H - 6.0,
         escape(x_label),
         W - RIGHT,
+        escape(ts("inv-record-svg-measured")),
         W - RIGHT,
-        TOP + 14.0
+        TOP + 14.0,
+        escape(ts("inv-record-svg-prediction")),
+        TOP = TOP,
     );
 }
 
 /// The counts over the run (the catches plot) as an inline SVG picture.
 pub fn timelines_svg(outcome: &Outcome) -> String {
     const COLORS: [&str; 2] = ["#e07a1f", "#2a8fc7"];
-    let mut s = format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {W} {H}\" width=\"{W}\" \
-         height=\"{H}\" role=\"img\" font-family=\"sans-serif\" font-size=\"11\">\
-         <rect width=\"{W}\" height=\"{H}\" fill=\"#fff\"/>"
-    );
+    let mut s = svg_open();
     let all = outcome.timelines.iter().flat_map(|t| t.points.iter());
     let x_max = all.clone().map(|p| p[0]).fold(1.0, f64::max);
     let y_top = all.map(|p| p[1]).fold(0.0, f64::max).max(1.0) * 1.15;
-    axes(&mut s, y_top, "fish caught");
+    axes(&mut s, y_top, ts("inv-unit-fish-caught"));
     let px = |x: f64| LEFT + (W - LEFT - RIGHT) * x / x_max;
     let py = |y: f64| H - BOTTOM - (H - BOTTOM - TOP) * y / y_top;
     for (k, t) in outcome.timelines.iter().enumerate() {
@@ -335,42 +383,50 @@ pub fn timelines_svg(outcome: &Outcome) -> String {
             .collect();
         let _ = write!(
             s,
-            "<polyline points=\"{}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"/>\
-             <text x=\"{:.1}\" y=\"{:.1}\" fill=\"{color}\">{}</text>",
+            concat!(
+                "<polyline points=\"{}\" fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"/>", // words: HTML markup
+                "<text x=\"{:.1}\" y=\"{:.1}\" fill=\"{color}\">{}</text>" // words: HTML markup
+            ),
             path.join(" "),
             LEFT + 8.0,
             TOP + 12.0 + 14.0 * k as f64,
-            escape(&t.label)
+            escape(&t.label),
+            color = color,
         );
     }
     let _ = write!(
         s,
-        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">simulated seconds (0 to \
-         {x_max:.0})</text></svg>",
+        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">{}</text></svg>", // words: HTML markup
         (LEFT + W - RIGHT) / 2.0,
-        H - 6.0
+        H - 6.0,
+        escape(&tr!("inv-record-svg-seconds", secs = num(x_max, 0)))
     );
     s
 }
 
-/// The CSV of every measured number of `done`: one row per number.
+/// The CSV of every measured number of `done`: one row per number. Its
+/// comment lines and labels are in the language in force; its column names
+/// and numbers are the same in every language (programs read them).
 pub fn csv(done: &[Progress]) -> String {
-    let mut out =
-        String::from("# Shoal: the measured numbers of my investigations (one row per number)\n");
+    let mut out = tr("inv-record-csv-title");
+    out.push('\n');
     for p in done {
         if let Some(pred) = p.prediction {
             let _ = writeln!(
                 out,
-                "# {}: predicted \"{}\"",
-                p.investigation.id,
-                p.answer_text(pred.choice).replace('\n', " ")
+                "{}",
+                tr!(
+                    "inv-record-csv-predicted",
+                    id = p.investigation.id,
+                    prediction = p.answer_text(pred.choice).replace('\n', " ")
+                )
             );
         }
     }
-    out.push_str("investigation,label,value,unit\n");
+    out.push_str("investigation,label,value,unit\n"); // words: the CSV's column names, read by programs
     for p in done {
         if let Some(outcome) = &p.outcome {
-            outcome.csv_lines(p.investigation.id, &mut out);
+            outcome.localized().csv_lines(p.investigation.id, &mut out);
         }
     }
     out

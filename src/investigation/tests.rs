@@ -36,6 +36,7 @@ fn outcome() -> Outcome {
             label: "a".into(),
             points: vec![[0.0, 0.0], [90.0, 2.0], [180.0, 3.0]],
         }],
+        translations: Vec::new(),
     }
 }
 
@@ -96,7 +97,7 @@ fn every_investigation_sets_up_through_the_settings_and_has_what_a_lesson_needs(
         assert!(settings.validate().is_ok(), "{}", inv.id);
         assert!((5..=15).contains(&inv.minutes), "{}", inv.id);
         assert!((2..=3).contains(&inv.prompts.len()), "{}", inv.id);
-        assert!(!inv.reveal.is_empty() && !inv.reference.is_empty());
+        assert!(!inv.reveal.text().is_empty() && !inv.reference.text().is_empty());
         if let MeasurementKind::Sweep { design } = inv.measurement {
             let plan = crate::experiment::Design::from_json(design)
                 .and_then(|d| d.validate())
@@ -189,7 +190,7 @@ fn a_sketch_is_closest_to_a_curve_of_its_own_shape() {
         "{d:?}"
     );
     let verdict = super::outcome::curve_verdict(&SHAPES, 0, &points, 1.0);
-    assert!(verdict.contains(SHAPES[2].name), "{verdict}");
+    assert!(verdict.contains(SHAPES[2].name.text()), "{verdict}");
 }
 
 /// Steps `lab` and advances `m` until it ends (at most `max_steps`).
@@ -281,7 +282,7 @@ fn which_urge_runs_the_experiment_engine_and_overlays_the_sketch() {
         points[5].mean > points[0].mean + 0.2,
         "alignment orders the school: {points:?}"
     );
-    assert!(o.verdict.contains(SHAPES[2].name), "{}", o.verdict);
+    assert!(o.verdict.contains(SHAPES[2].name.text()), "{}", o.verdict);
     eprintln!("which-urge: {points:?}\n{}", o.verdict);
 }
 
@@ -436,4 +437,124 @@ fn leader_measures_polarization_with_alignment_on_and_off_and_the_fish_inspected
     assert_eq!(o.rows[2].label, "neighbours fish 5 heeded");
     assert!((1.0..=7.0).contains(&o.rows[2].value), "{:?}", o.rows[2]);
     assert!(o.verdict.contains("agrees"), "{}", o.verdict);
+}
+
+#[test]
+fn every_text_an_investigation_names_exists_in_every_language() {
+    use crate::i18n::{Lang, has};
+    let mut count = 0;
+    for inv in &INVESTIGATIONS {
+        for text in inv.texts() {
+            for lang in Lang::ALL {
+                assert!(
+                    has(lang, text.id()),
+                    "{}: {} is not in locales/{}",
+                    inv.id,
+                    text.id(),
+                    lang.code()
+                );
+            }
+            count += 1;
+        }
+    }
+    assert!(count > 50, "{count} texts");
+}
+
+#[test]
+fn an_investigation_speaks_spanish() {
+    use crate::i18n::{Lang, with_lang};
+    let inv = find("which-urge").unwrap();
+    let points = [
+        CurvePoint {
+            x: 0.0,
+            mean: 0.25,
+            low: 0.2,
+            high: 0.3,
+        },
+        CurvePoint {
+            x: 100.0,
+            mean: 0.9,
+            low: 0.85,
+            high: 0.95,
+        },
+    ];
+    with_lang(Lang::Es, || {
+        assert_eq!(inv.title.text(), "¿Qué impulso forma un cardumen?");
+        assert_eq!(
+            crate::tr!("inv-curve-point", value = crate::i18n::num(0.25, 2), x = 20),
+            "0,25 en 20"
+        );
+        let verdict = super::outcome::curve_verdict(&SHAPES, 0, &points, 1.0);
+        assert!(verdict.starts_with("Tu dibujo, «Plana"), "{verdict}");
+        let err = from_url("http://x/?investigation=nope")
+            .unwrap()
+            .unwrap_err();
+        assert!(
+            err.to_string().contains("no existe la investigación"),
+            "{err}"
+        );
+        let mut p = Progress::new(inv);
+        assert!(
+            p.start_run()
+                .unwrap_err()
+                .to_string()
+                .starts_with("primero confirma")
+        );
+        p.choose(1).unwrap();
+        p.commit().unwrap();
+        let rows = vec![Row {
+            label: "polarización".into(),
+            value: 0.5,
+            unit: "0-1",
+        }];
+        p.finish_run(Outcome {
+            summary: "x".into(),
+            verdict: "y".into(),
+            rows,
+            chart: Chart::Bars { unit: "0-1" },
+            timelines: Vec::new(),
+            translations: Vec::new(),
+        });
+        let html = record::html(std::slice::from_ref(&p));
+        assert!(html.contains("<html lang=\"es\">"));
+        assert!(html.contains("Mi predicción"), "{html}");
+        assert!(html.contains("<td class=\"n\">0,500</td>"), "{html}");
+        let csv = record::csv(std::slice::from_ref(&p));
+        assert!(
+            csv.contains("predicción \"Una línea recta hacia arriba\""),
+            "{csv}"
+        );
+        // The CSV's numbers stay machine-readable.
+        assert!(csv.contains("which-urge,polarización,0.5,0-1"), "{csv}");
+    });
+}
+
+#[test]
+fn a_result_follows_the_language_it_is_read_in() {
+    use crate::i18n::{Lang, with_lang};
+    let mut lab = Lab::new(setup_settings(find("how-swim").unwrap()).unwrap());
+    let mut p = progress("how-swim");
+    p.choose(1).unwrap();
+    p.commit().unwrap();
+    let mut m = Measurement::TailBeat(Box::new(TailBeatRun::new(&[1.0, 2.0], 2.0)));
+    let o = with_lang(Lang::En, || run_on_lab(&mut m, &p, &mut lab, 10_000));
+    assert!(
+        o.localized().summary.starts_with("Measured speed"),
+        "{}",
+        o.summary
+    );
+    with_lang(Lang::Es, || {
+        let es = o.localized();
+        assert!(
+            es.summary.starts_with("Se midió la velocidad"),
+            "{}",
+            es.summary
+        );
+        assert!(es.verdict.starts_with("Tu dibujo"), "{}", es.verdict);
+        assert!(
+            es.rows[0].label.contains("coletazos por segundo (Hz) 1"),
+            "{:?}",
+            es.rows[0]
+        );
+    });
 }

@@ -16,12 +16,14 @@ use eframe::egui;
 use super::WidgetRects;
 use super::investigation_plot::{outcome_ui, sketch_ui, timelines_ui};
 use super::scene_panel::Notice;
+use crate::i18n::{num, tr, ts};
 use crate::investigation::{
     INVESTIGATIONS, Investigation, InvestigationReport, Measurement, PredictionKind, Progress,
     Step, record,
 };
 use crate::lab::Lab;
 use crate::settings::Settings;
+use crate::tr;
 
 /// Widest the window gets, points. Default 380: beside the tank on a laptop,
 /// and on a phone it is the screen's width less a margin.
@@ -35,15 +37,10 @@ fn list_id() -> egui::Id {
 pub fn investigations_button(ui: &mut egui::Ui, rects: &mut WidgetRects) {
     let r = ui
         .add(
-            egui::Button::new(
-                egui::RichText::new("Investigations: predict, run, explain").strong(),
-            )
-            .min_size(egui::vec2(ui.available_width(), 30.0)),
+            egui::Button::new(egui::RichText::new(ts("inv-button")).strong())
+                .min_size(egui::vec2(ui.available_width(), 30.0)),
         )
-        .on_hover_text(
-            "Guided lessons: predict what will happen, run it, explain what you saw, and find \
-             out what scientists found",
-        );
+        .on_hover_text(ts("inv-button.help"));
     rects.insert("investigations", r.rect);
     if r.clicked() {
         let open = ui.data(|d| d.get_temp::<bool>(list_id()).unwrap_or(false));
@@ -138,7 +135,7 @@ impl InvestigationPanel {
     /// Starts the run on `lab` (the app calls it for [`InvestigationAction::Run`]).
     pub fn start_run(&mut self, lab: &mut Lab) -> Result<(), String> {
         let Some(p) = &mut self.current else {
-            return Err("no investigation is open".into());
+            return Err(tr("inv-error-no-investigation"));
         };
         p.start_run().map_err(|e| e.to_string())?;
         self.measurement = Some(Measurement::start(p.investigation, lab)?);
@@ -175,8 +172,11 @@ impl InvestigationPanel {
             return actions;
         }
         let mut open = self.window_open;
-        let title = self.current.as_ref().map_or("", |p| p.investigation.title);
-        let shown = egui::Window::new(format!("Investigation: {title}"))
+        let title = self
+            .current
+            .as_ref()
+            .map_or("", |p| p.investigation.title.text());
+        let shown = egui::Window::new(tr!("inv-window-title", title = title))
             .id(egui::Id::unique("investigation_window"))
             .open(&mut open)
             .collapsible(true)
@@ -220,8 +220,8 @@ impl InvestigationPanel {
             .current
             .as_ref()
             .filter(|_| !self.window_open)
-            .map(|p| p.investigation.title);
-        let shown = egui::Window::new("Investigations")
+            .map(|p| p.investigation.title.text());
+        let shown = egui::Window::new(ts("inv-list-title"))
             .id(egui::Id::unique("investigations_list"))
             .open(&mut open)
             .collapsible(false)
@@ -231,17 +231,11 @@ impl InvestigationPanel {
             .default_pos(screen.left_top() + egui::vec2(12.0, 44.0))
             .constrain(true)
             .show(ctx, |ui| {
-                ui.label(
-                    egui::RichText::new(
-                        "Predict, run, explain. Each takes one lesson's part; the tank stays \
-                         yours to explore afterwards.",
-                    )
-                    .weak(),
-                );
+                ui.label(egui::RichText::new(ts("inv-list-intro")).weak());
                 if let Some(title) = paused_title {
                     let r = ui
-                        .button(format!("Continue: {title} »"))
-                        .on_hover_text("Back to the investigation you were doing");
+                        .button(tr!("inv-continue", title = title))
+                        .on_hover_text(ts("inv-continue.help"));
                     rects.insert("investigation_continue", r.rect);
                     resume = r.clicked();
                 }
@@ -253,15 +247,15 @@ impl InvestigationPanel {
                         for inv in &INVESTIGATIONS {
                             ui.separator();
                             let r = ui
-                                .button(egui::RichText::new(inv.title).strong())
-                                .on_hover_text(inv.question);
+                                .button(egui::RichText::new(inv.title.text()).strong())
+                                .on_hover_text(inv.question.text());
                             rects.insert(&format!("investigation_{}", inv.id), r.rect);
                             if r.clicked() {
                                 chosen = Some(inv);
                             }
-                            ui.label(inv.teaser);
+                            ui.label(inv.teaser.text());
                             ui.label(
-                                egui::RichText::new(format!("about {} minutes", inv.minutes))
+                                egui::RichText::new(tr!("inv-minutes", minutes = inv.minutes))
                                     .small()
                                     .weak(),
                             );
@@ -295,14 +289,13 @@ impl InvestigationPanel {
         actions: &mut Vec<InvestigationAction>,
     ) {
         ui.horizontal_wrapped(|ui| {
-            let r = ui.button("Download my record").on_hover_text(
-                "One web page with your predictions, the measured numbers, the plots and your \
-                 explanations, for your teacher; it opens without Shoal",
-            );
+            let r = ui
+                .button(ts("inv-record"))
+                .on_hover_text(ts("inv-record.help"));
             rects.insert("investigation_record", r.rect);
             let csv = ui
-                .button("Numbers (CSV)")
-                .on_hover_text("The measured numbers of your runs, for a spreadsheet");
+                .button(ts("inv-record-csv"))
+                .on_hover_text(ts("inv-record-csv.help"));
             rects.insert("investigation_record_csv", csv.rect);
             let (html, table) = if r.clicked() || csv.clicked() {
                 self.record_files()
@@ -314,14 +307,14 @@ impl InvestigationPanel {
                     "shoal-my-investigations.html",
                     "text/html",
                     &html,
-                    Some("open it in any web browser"),
+                    Some(ts("inv-record-next")),
                 )
             } else {
                 super::save_text_file(
                     "shoal-my-investigations.csv",
                     "text/csv",
                     &table,
-                    Some("open it with a spreadsheet"),
+                    Some(ts("inv-record-csv-next")),
                 )
             };
             actions.push(InvestigationAction::Notice(match saved {
@@ -347,8 +340,8 @@ impl InvestigationPanel {
         match p.step {
             Step::Intro => {
                 let inv = p.investigation;
-                ui.label(inv.intro);
-                let r = ui.button("Next: predict »");
+                ui.label(inv.intro.text());
+                let r = ui.button(ts("inv-next-predict"));
                 rects.insert("investigation_next", r.rect);
                 if r.clicked()
                     && let Some(p) = &mut self.current
@@ -368,7 +361,7 @@ impl InvestigationPanel {
             return;
         };
         let inv = p.investigation;
-        ui.label(egui::RichText::new(inv.question).strong());
+        ui.label(egui::RichText::new(inv.question.text()).strong());
         for k in 0..p.answer_count() {
             let r = ui.selectable_label(p.pending == Some(k), p.answer_text(k));
             rects.insert(&format!("investigation_choice_{k}"), r.rect);
@@ -387,23 +380,20 @@ impl InvestigationPanel {
         ) = (inv.prediction, p.pending)
             && let Some(shape) = shapes.get(k)
         {
-            sketch_ui(ui, shape, x_label, y_label);
+            sketch_ui(ui, shape, x_label.text(), y_label.text());
         }
         ui.horizontal(|ui| {
             let commit = ui
-                .add_enabled(
-                    p.pending.is_some(),
-                    egui::Button::new("Commit my prediction (it locks)"),
-                )
-                .on_hover_text("Once committed, your prediction is locked: it cannot change")
-                .on_disabled_hover_text("Choose an answer first");
+                .add_enabled(p.pending.is_some(), egui::Button::new(ts("inv-commit")))
+                .on_hover_text(ts("inv-commit.help"))
+                .on_disabled_hover_text(ts("inv-commit.disabled"));
             rects.insert("investigation_commit", commit.rect);
             if commit.clicked() {
                 let _ = p.commit();
             }
             let run = ui
-                .add_enabled(false, egui::Button::new("Run »"))
-                .on_disabled_hover_text("Commit a prediction first");
+                .add_enabled(false, egui::Button::new(ts("inv-run")))
+                .on_disabled_hover_text(ts("inv-run.disabled"));
             rects.insert("investigation_run", run.rect);
         });
     }
@@ -420,19 +410,19 @@ impl InvestigationPanel {
             return;
         };
         let inv = p.investigation;
-        ui.label(egui::RichText::new(inv.question).strong());
+        ui.label(egui::RichText::new(inv.question.text()).strong());
         if let Some(pred) = p.prediction {
-            let r = ui.label(format!(
-                "Your prediction (locked): {}",
-                p.answer_text(pred.choice)
+            let r = ui.label(tr!(
+                "inv-your-prediction",
+                prediction = p.answer_text(pred.choice)
             ));
             rects.insert("investigation_prediction", r.rect);
         }
-        ui.label(egui::RichText::new(inv.run_hint).weak());
+        ui.label(egui::RichText::new(inv.run_hint.text()).weak());
         if !p.run_started {
             let r = ui
-                .add_enabled(p.can_run(), egui::Button::new("Run »"))
-                .on_hover_text("Start the run: the measurement begins now");
+                .add_enabled(p.can_run(), egui::Button::new(ts("inv-run")))
+                .on_hover_text(ts("inv-run.help"));
             rects.insert("investigation_run", r.rect);
             if r.clicked() {
                 actions.push(InvestigationAction::Run);
@@ -454,7 +444,7 @@ impl InvestigationPanel {
             (PredictionKind::Curve { shapes, .. }, Some(pred)) => shapes.get(pred.choice),
             _ => None,
         };
-        let Some(outcome) = &p.outcome else {
+        let Some(outcome) = p.outcome.as_ref().map(|o| o.localized()) else {
             if let (
                 Some(shape),
                 PredictionKind::Curve {
@@ -462,7 +452,7 @@ impl InvestigationPanel {
                 },
             ) = (sketch, inv.prediction)
             {
-                sketch_ui(ui, shape, x_label, y_label);
+                sketch_ui(ui, shape, x_label.text(), y_label.text());
             }
             return;
         };
@@ -473,7 +463,7 @@ impl InvestigationPanel {
             timelines_ui(ui, &outcome.timelines, last[0]);
         }
         ui.label(egui::RichText::new(&outcome.verdict).strong());
-        let next = ui.button("Next: explain »");
+        let next = ui.button(ts("inv-next-explain"));
         rects.insert("investigation_next", next.rect);
         if next.clicked()
             && let Some(p) = &mut self.current
@@ -488,29 +478,29 @@ impl InvestigationPanel {
         };
         let inv = p.investigation;
         if let Some(outcome) = &p.outcome {
-            ui.label(egui::RichText::new(&outcome.summary).weak());
+            ui.label(egui::RichText::new(&outcome.localized().summary).weak());
         }
-        ui.label(format!(
-            "Question {} of {}",
-            p.prompt + 1,
-            inv.prompts.len()
+        ui.label(tr!(
+            "inv-question-of",
+            number = p.prompt + 1,
+            count = inv.prompts.len()
         ));
-        let prompt = ui.label(egui::RichText::new(inv.prompts[p.prompt]).strong());
+        let prompt = ui.label(egui::RichText::new(inv.prompts[p.prompt].text()).strong());
         let answer = ui
             .add(
                 egui::TextEdit::multiline(&mut p.explanations[p.prompt])
                     .desired_rows(3)
                     .desired_width(f32::INFINITY)
-                    .hint_text("Your answer (it goes in your record)"),
+                    .hint_text(ts("inv-answer-hint")),
             )
             // A screen reader names the box by its question.
             .labelled_by(prompt.id);
         rects.insert("investigation_answer", answer.rect);
         let last = p.prompt + 1 == inv.prompts.len();
         let next = ui.button(if last {
-            "What did scientists find? »"
+            ts("inv-to-reveal")
         } else {
-            "Next question »"
+            ts("inv-next-question")
         });
         rects.insert("investigation_next", next.rect);
         if next.clicked() {
@@ -528,20 +518,20 @@ impl InvestigationPanel {
             return;
         };
         let inv = p.investigation;
-        ui.label(egui::RichText::new("What scientists found").strong());
-        let r = ui.label(inv.reveal);
+        ui.label(egui::RichText::new(ts("inv-found")).strong());
+        let r = ui.label(inv.reveal.text());
         rects.insert("investigation_reveal", r.rect);
-        ui.label(egui::RichText::new(inv.reference).small().weak());
+        ui.label(egui::RichText::new(inv.reference.text()).small().weak());
         if let Some(outcome) = &p.outcome {
-            ui.label(egui::RichText::new(format!("Your run: {}", outcome.summary)).weak());
+            ui.label(
+                egui::RichText::new(tr!("inv-your-run", summary = &outcome.localized().summary))
+                    .weak(),
+            );
         }
         ui.separator();
-        ui.label(
-            "The tank is yours now: every control works. Change something and watch what it \
-             does.",
-        );
+        ui.label(ts("inv-sandbox"));
         self.record_buttons(ui, rects, actions);
-        let other = ui.button("Other investigations");
+        let other = ui.button(ts("inv-others"));
         rects.insert("investigation_others", other.rect);
         if other.clicked() {
             ui.data_mut(|d| d.insert_temp(list_id(), true));
@@ -554,11 +544,11 @@ fn steps_line(ui: &mut egui::Ui, step: Step) {
     ui.horizontal_wrapped(|ui| {
         ui.spacing_mut().item_spacing.x = 4.0;
         let steps = [
-            (Step::Intro, "1 Look"),
-            (Step::Predict, "2 Predict"),
-            (Step::Run, "3 Run"),
-            (Step::Explain, "4 Explain"),
-            (Step::Reveal, "5 Found"),
+            (Step::Intro, ts("inv-step-look")),
+            (Step::Predict, ts("inv-step-predict")),
+            (Step::Run, ts("inv-step-run")),
+            (Step::Explain, ts("inv-step-explain")),
+            (Step::Reveal, ts("inv-step-found")),
         ];
         for (k, (s, name)) in steps.iter().enumerate() {
             if k > 0 {
@@ -590,12 +580,12 @@ fn alignment_controls(
     ui.horizontal(|ui| {
         let on = settings.left.alignment > 0.0;
         let off_button = ui
-            .add_enabled(on, egui::Button::new("Alignment off"))
-            .on_hover_text("Set the alignment urge to 0: fish stop copying their neighbours");
+            .add_enabled(on, egui::Button::new(ts("inv-alignment-off")))
+            .on_hover_text(ts("inv-alignment-off.help"));
         rects.insert("investigation_alignment_off", off_button.rect);
         let on_button = ui
-            .add_enabled(!on, egui::Button::new("Alignment on"))
-            .on_hover_text("Put the alignment urge back");
+            .add_enabled(!on, egui::Button::new(ts("inv-alignment-on")))
+            .on_hover_text(ts("inv-alignment-on.help"));
         rects.insert("investigation_alignment_on", on_button.rect);
         let mut changed = settings.clone();
         if off_button.clicked() {
@@ -613,13 +603,13 @@ fn alignment_controls(
         actions.push(InvestigationAction::Settings(Box::new(changed)));
     });
     let (on, off) = run.means();
-    let fmt = |v: Option<f64>| v.map_or("–".to_owned(), |v| format!("{v:.2}"));
-    ui.label(format!(
-        "Polarization so far: alignment on {}, off {}. Fish clicked: {}",
-        fmt(on),
-        fmt(off),
-        if run.inspected.is_empty() {
-            "none yet (click a fish in the tank)".to_owned()
+    let value = |v: Option<f64>| v.map_or_else(|| "–".into(), |v| num(v, 2));
+    ui.label(tr!(
+        "inv-alignment-so-far",
+        on = value(on),
+        off = value(off),
+        fish = if run.inspected.is_empty() {
+            tr("inv-none-clicked")
         } else {
             run.inspected
                 .iter()

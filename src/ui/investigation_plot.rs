@@ -5,6 +5,7 @@
 use eframe::egui;
 use egui_plot::{Bar, BarChart, Legend, Line, LineStyle, Plot, PlotPoints, Points};
 
+use crate::i18n::ts;
 use crate::investigation::outcome::{Timeline, x_span};
 use crate::investigation::{Chart, Outcome, Shape};
 use crate::settings::Side;
@@ -42,9 +43,12 @@ pub fn sketch_ui(ui: &mut egui::Ui, shape: &Shape, x_label: &str, y_label: &str)
         .allow_scroll(false)
         .show(ui, |plot| {
             plot.line(
-                Line::new("your sketch", sketch_points(shape, 0.0, 1.0, 1.0))
-                    .color(PREDICTED)
-                    .width(2.5),
+                Line::new(
+                    ts("inv-plot-your-sketch"),
+                    sketch_points(shape, 0.0, 1.0, 1.0),
+                )
+                .color(PREDICTED)
+                .width(2.5),
             );
         });
 }
@@ -66,18 +70,16 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
                 })
                 .collect();
             let labels: Vec<String> = outcome.rows.iter().map(|r| r.label.clone()).collect();
-            // The race's bars are named by their tries alone (see `short_label`).
-            let x_title = if labels.iter().all(|l| l.starts_with("distance after ")) {
-                "tries practised"
-            } else {
-                ""
-            };
+            // The race's bars (in metres) are named by their tries alone (see
+            // `short_label`).
+            let race = outcome.rows.iter().all(|r| r.unit == "m");
+            let x_title = if race { ts("inv-plot-tries") } else { "" };
             let names = move |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
                 let k = mark.value.round();
                 if (mark.value - k).abs() < 1e-6 && k >= 0.0 {
                     labels
                         .get(k as usize)
-                        .map(|l| short_label(l))
+                        .map(|l| short_label(l, race))
                         .unwrap_or_default()
                 } else {
                     String::new()
@@ -109,7 +111,7 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
                         .label_spacing(24.0..=32.0),
                 ])
                 .show(ui, |plot| {
-                    plot.bar_chart(BarChart::new("measured", bars));
+                    plot.bar_chart(BarChart::new(ts("inv-plot-measured"), bars));
                 });
         }
         Chart::Curve {
@@ -131,24 +133,31 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
                 .show(ui, |plot| {
                     for p in points {
                         plot.line(
-                            Line::new("95 % interval", vec![[p.x, p.low], [p.x, p.high]])
+                            Line::new(ts("inv-plot-interval"), vec![[p.x, p.low], [p.x, p.high]])
                                 .color(MEASURED)
                                 .width(1.5),
                         );
                     }
                     let mean: Vec<[f64; 2]> = points.iter().map(|p| [p.x, p.mean]).collect();
                     plot.line(
-                        Line::new("measured", mean.clone())
+                        Line::new(ts("inv-plot-measured"), mean.clone())
                             .color(MEASURED)
                             .width(2.5),
                     );
-                    plot.points(Points::new("measured", mean).color(MEASURED).radius(3.5));
+                    plot.points(
+                        Points::new(ts("inv-plot-measured"), mean)
+                            .color(MEASURED)
+                            .radius(3.5),
+                    );
                     if let Some(shape) = sketch {
                         plot.line(
-                            Line::new("your prediction", sketch_points(shape, x0, x1, *y_max))
-                                .color(PREDICTED)
-                                .style(LineStyle::dashed_loose())
-                                .width(2.0),
+                            Line::new(
+                                ts("inv-plot-your-prediction"),
+                                sketch_points(shape, x0, x1, *y_max),
+                            )
+                            .color(PREDICTED)
+                            .style(LineStyle::dashed_loose())
+                            .width(2.0),
                         );
                     }
                 });
@@ -156,14 +165,21 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
     }
 }
 
-/// The end of a long label, to sit under a bar.
-fn short_label(label: &str) -> String {
+/// The end of a long label, to sit under a bar; a race's bar by its number
+/// of tries alone.
+fn short_label(label: &str, race: bool) -> String {
     let tail = label.rsplit_once(", ").map_or(label, |(_, tail)| tail);
     // "distance after 6840 tries": the number of tries is what tells the bars
     // apart, and six longer names overlap (the plot then shows none).
-    tail.strip_prefix("distance after ")
-        .map_or(tail, |t| t.trim_end_matches(" tries"))
-        .to_owned()
+    let tries = tail.split(' ').find(|w| {
+        !w.is_empty()
+            && w.chars()
+                .all(|c| c.is_ascii_digit() || c == '.' || c == ',')
+    });
+    match tries {
+        Some(tries) if race => tries.to_owned(),
+        _ => tail.to_owned(),
+    }
 }
 
 /// Counts over the run (each tank's catches), in the tanks' colours, over the
@@ -174,8 +190,8 @@ pub fn timelines_ui(ui: &mut egui::Ui, timelines: &[Timeline], secs: f64) {
     }
     Plot::new("investigation_timelines")
         .height(PLOT_HEIGHT * 0.8)
-        .x_axis_label("simulated seconds")
-        .y_axis_label("fish caught")
+        .x_axis_label(ts("inv-plot-simulated-seconds"))
+        .y_axis_label(ts("inv-unit-fish-caught"))
         .include_x(0.0)
         .include_x(secs)
         .include_y(0.0)
