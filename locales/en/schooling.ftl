@@ -185,3 +185,9 @@ physics-behaviour-wander = Wander
     .explanation = Each fish explores on its own.
 physics-behaviour-drift = Drift
     .explanation = The muscles rest: the fish glide to a stop and the current carries them.
+
+# What each control mode does, under the mode's name (ControlMode::explanation).
+boids-mode-blended-explanation = Every urge pulls a little, all at once, mixed by its weight.
+boids-mode-classic-explanation = Each moment the fish follows only its most pressing urge.
+boids-mode-direct-alternate-explanation = Each moment every urge gets a dice roll; urges with big weights win the roll more often.
+boids-mode-monte-carlo-explanation = Each moment the fish picks one urge by lottery; bigger weights get more tickets.

@@ -185,3 +185,9 @@ physics-behaviour-wander = Deambular
     .explanation = Cada pez explora por su cuenta.
 physics-behaviour-drift = A la deriva
     .explanation = Los músculos descansan: los peces se deslizan hasta detenerse y la corriente los lleva.
+
+# Lo que hace cada modo de control, bajo su nombre (ControlMode::explanation).
+boids-mode-blended-explanation = Todos los impulsos tiran un poco a la vez, mezclados según su peso.
+boids-mode-classic-explanation = En cada momento el pez sigue solo su impulso más urgente.
+boids-mode-direct-alternate-explanation = En cada momento cada impulso tira un dado; los impulsos con pesos grandes ganan la tirada más a menudo.
+boids-mode-monte-carlo-explanation = En cada momento el pez elige un impulso por lotería; los pesos más grandes tienen más boletos.

@@ -208,6 +208,7 @@ fn not_shown(path: &str) -> bool {
         "sim/learning/learned_set.rs",
         "sim/learning/learned_motor.rs",
         "sim/learning/learning_lab.rs",
+        "sim/boids/control_mode.rs",
     ];
     (path.contains("/sim/") && !shown_from_sim.iter().any(|s| path.ends_with(s)))
         || path.ends_with("census.rs")

@@ -98,16 +98,12 @@ impl ControlMode {
 
     /// One sentence a student understands.
     pub fn explanation(self) -> &'static str {
-        match self {
-            Self::Blended => "Every urge pulls a little, all at once, mixed by its weight.",
-            Self::Classic => "Each moment the fish follows only its most pressing urge.",
-            Self::DirectAlternate => {
-                "Each moment every urge gets a dice roll; urges with big weights win the roll more often."
-            }
-            Self::MonteCarlo => {
-                "Each moment the fish picks one urge by lottery; bigger weights get more tickets."
-            }
-        }
+        crate::i18n::ts(match self {
+            Self::Blended => "boids-mode-blended-explanation",
+            Self::Classic => "boids-mode-classic-explanation",
+            Self::DirectAlternate => "boids-mode-direct-alternate-explanation",
+            Self::MonteCarlo => "boids-mode-monte-carlo-explanation",
+        })
     }
 }
 
