@@ -874,7 +874,7 @@ pub fn default_levels(base: &Settings, key: &str, steps: u32) -> Option<(f64, f6
     let mut steps = steps.max(1);
     if slider.whole && steps > 1 {
         let span = (to - from).round() as u64;
-        let divides = |steps: u32| span % u64::from(steps - 1) == 0;
+        let divides = |steps: u32| span.is_multiple_of(u64::from(steps - 1));
         if let Some(more) = (steps..=steps + 2).find(|&k| divides(k)) {
             steps = more;
         } else if span < 6 {
@@ -888,8 +888,9 @@ pub fn default_levels(base: &Settings, key: &str, steps: u32) -> Option<(f64, f6
 
 /// Round numbers: 1, 2 and 5 times a power of ten.
 fn round_numbers(x: f64) -> impl Iterator<Item = f64> {
-    let start = x.abs().max(1e-9).log10().floor() as i32 - 1;
-    (start..start + 3).flat_map(|e| [1.0, 2.0, 5.0].map(|m| m * 10f64.powi(e)))
+    use crate::sim::common::fmath::{log10_f64, powi_f64};
+    let start = log10_f64(x.abs().max(1e-9)).floor() as i32 - 1;
+    (start..start + 3).flat_map(|e| [1.0, 2.0, 5.0].map(|m| m * powi_f64(10.0, e)))
 }
 
 /// The largest round number at or below `x` (`x` > 0).

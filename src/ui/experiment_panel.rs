@@ -1001,7 +1001,8 @@ mod tests {
         if x == 0.0 {
             return true;
         }
-        let scale = 10f64.powi(x.abs().log10().floor() as i32 - 1);
+        use crate::sim::common::fmath::{log10_f64, powi_f64};
+        let scale = powi_f64(10.0, log10_f64(x.abs()).floor() as i32 - 1);
         ((x / scale).round() * scale - x).abs() <= 1e-9 * x.abs()
     }
 
@@ -1041,7 +1042,7 @@ mod tests {
                     }
                     let design = Design {
                         factors: vec![f.factor(&base)],
-                        ..DesignForm::new(&base, &[key.clone()]).design(&base)
+                        ..DesignForm::new(&base, std::slice::from_ref(&key)).design(&base)
                     };
                     assert!(design.validate().is_ok(), "{key}: {:?}", design.validate());
                     checked += 1;

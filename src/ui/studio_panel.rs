@@ -541,13 +541,18 @@ mod tests {
         use crate::i18n::{Lang, with_lang};
         with_lang(Lang::Es, || {
             assert_eq!(ts("studio-mystery-value"), "? (valor misterioso)");
+            // A rule names its control as the panel does, with its tank.
             assert_eq!(
                 tr!(
                     "studio-rule",
-                    key = "left.alignment",
+                    key = setting_text("left.alignment", true),
                     what = "oculto, bloqueado"
                 ),
-                "left.alignment: oculto, bloqueado"
+                "Alineación (tanque izquierdo): oculto, bloqueado"
+            );
+            assert_eq!(
+                setting_text("physics.show_body", true),
+                "Mostrar masas y resortes"
             );
             let mut settings = Settings::default();
             let err = settings
