@@ -782,12 +782,30 @@ fn factor_ui(
     if is_switch(settings, &factor.key) {
         ui.label(ts("experiment-off-and-on"));
     } else {
+        // Within the slider's range, with its unit, whole for a count.
+        let name = crate::settings::names::setting_name(&factor.key);
+        let unit = name.map_or("", |n| n.unit);
+        let slider = name.and_then(|n| n.slider);
+        fn level<'a>(
+            value: &'a mut f64,
+            unit: &str,
+            slider: Option<crate::settings::names::Slider>,
+        ) -> egui::DragValue<'a> {
+            let mut drag = egui::DragValue::new(value).speed(0.5).suffix(unit);
+            if let Some(s) = slider {
+                drag = drag.range(s.min..=s.max);
+                if s.whole {
+                    drag = drag.max_decimals(0);
+                }
+            }
+            drag
+        }
         ui.horizontal_wrapped(|ui| {
             ui.label(ts("experiment-range-from"));
-            let r = ui.add(egui::DragValue::new(&mut factor.from).speed(0.5));
+            let r = ui.add(level(&mut factor.from, unit, slider));
             rects.insert(&format!("{id}_from"), r.rect);
             ui.label(ts("experiment-range-to"));
-            let r = ui.add(egui::DragValue::new(&mut factor.to).speed(0.5));
+            let r = ui.add(level(&mut factor.to, unit, slider));
             rects.insert(&format!("{id}_to"), r.rect);
             ui.label(ts("experiment-range-in"));
             let r = ui.add(egui::DragValue::new(&mut factor.steps).range(1..=1000));
