@@ -469,13 +469,10 @@ impl ExperimentPanel {
                 true
             }
             Some(Err(err)) => {
+                let (field, reason) = error_in_words(err, &design, shows_side(settings.scene));
                 let r = ui.colored_label(
                     ui.visuals().warn_fg_color,
-                    tr!(
-                        "experiment-cannot-start",
-                        field = err.field.as_str(),
-                        reason = err.reason.as_str()
-                    ),
+                    tr!("experiment-cannot-start", field = field, reason = reason),
                 );
                 rects.insert("experiment_error", r.rect);
                 false
@@ -814,6 +811,36 @@ fn factor_ui(
         });
     }
     ui.end_row();
+}
+
+/// A refused form's field in the form's words (the factor's setting as the
+/// side panel names it, *Seeds*, *Measure for*), and its reason with the
+/// factors' keys named so too; the design file's field and the keys stay in
+/// [`DesignError`] (the API and `shoal-lab` report them).
+fn error_in_words(err: &DesignError, design: &Design, side: bool) -> (String, String) {
+    let mut reason = err.reason.clone();
+    for factor in &design.factors {
+        reason = reason.replace(
+            &format!("'{}'", factor.key),
+            &format!("'{}'", factor_text(&factor.key, side)),
+        );
+    }
+    let field = err.field.as_str();
+    let factor = design
+        .factors
+        .iter()
+        .enumerate()
+        .find(|(i, _)| field.starts_with(&format!("factors[{i}]")));
+    let field = match factor {
+        Some((_, f)) => factor_text(&f.key, side),
+        None if field.starts_with("replicates") => tr("experiment-seeds"),
+        None if field.starts_with("measures") => tr("experiment-measures"),
+        None if field == "warmup_secs" => tr("experiment-warmup"),
+        None if field == "measure_secs" => tr("experiment-measure-for"),
+        None if field == "factors" => tr("experiment-runs"),
+        None => field.to_owned(),
+    };
+    (field, reason)
 }
 
 /// The design's size and time, before it starts.
@@ -1159,6 +1186,25 @@ mod tests {
         // English stays as it was.
         assert_eq!(duration_text(7200.0), "about 2.0 h");
         assert_eq!(level_text(&json!(0.5)), "0.5");
+    }
+
+    #[test]
+    fn a_refused_form_names_its_field_in_the_forms_words() {
+        let base = boids();
+        let keys = factor_keys(&base);
+        let mut form = DesignForm::new(&base, &keys);
+        form.second = Some(FactorForm::new(&base, "left.alignment", 2));
+        let design = form.design(&base);
+        let err = design.validate().expect_err("the same factor twice");
+        assert_eq!(err.field, "factors[1].key", "the API's field stays");
+        let (field, reason) = error_in_words(&err, &design, true);
+        assert_eq!(field, "Alignment (left tank)");
+        assert_eq!(reason, "'Alignment (left tank)' is already a factor");
+        form.second = None;
+        form.measure_secs = 0.0;
+        let design = form.design(&base);
+        let err = design.validate().expect_err("0 s");
+        assert_eq!(error_in_words(&err, &design, true).0, "Measure for");
     }
 
     #[test]
