@@ -64,11 +64,28 @@ experiment-duration-secs = about { $value } s
 experiment-duration-min = about { $value } min
 experiment-duration-hours = about { $value } h
 
+# The measures that are not the plots' own (those keep the metrics plots'
+# names): src/experiment/measure.rs.
+experiment-measure-distance-swum = Distance swum (m)
+    .help = How far the average fish swam while it was measured, in metres
+experiment-measure-catches = Prey caught
+    .help = How many fish the sharks (or the predators) caught while it was measured
+experiment-measure-food-eaten = Plankton eaten
+    .help = How many bits of plankton the fish ate while it was measured
+experiment-measure-spawnings = Spawnings
+    .help = How many times a pair spawned (laid and fertilised eggs) while it was measured
+experiment-measure-missed-strikes = Missed attacks
+    .help = How many times a predator attacked and missed, confused by the crowd of prey
+experiment-measure-fish-collisions = Fish collisions
+    .help = How many times two fish bumped into each other while it was measured
+experiment-measure-prey-alive = Prey alive
+    .help = How many prey fish are still alive
+
 # The results: plots and table.
 experiment-level-on = on
 experiment-level-off = off
 experiment-no-run-yet = No run has finished yet.
-experiment-plot-title = { $measure } ({ $summary })
+experiment-plot-title = { $measure } · { $summary }
 experiment-no-factor = (no factor)
 experiment-table-title = Mean over seeds [95 % interval]
 experiment-table-watch = watch a run

@@ -187,3 +187,19 @@ setting-minds-urge-threshold = Acts on urges at (r)
 ## The learning lab's settings.
 setting-learning-annealing-steps = Tries per drill
     .help = How many tries the fish gets for each drill. More tries, better swimming (the paper's best shark had 6840). Changing it starts again
+
+## A setting named out of its panel (the Experiment window, the studio's
+## rules): src/settings/names.rs.
+setting-name-kind = { $kind } · { $label }
+setting-name-unit = { $label } ({ $unit })
+setting-name-left = { $label } (left tank)
+setting-name-right = { $label } (right tank)
+setting-name-left-unit = { $label } ({ $unit }, left tank)
+setting-name-right-unit = { $label } ({ $unit }, right tank)
+setting-name-selected = Selected fish
+setting-name-paused = Play and pause
+setting-name-scene = Scene
+setting-name-physics-behaviour = How the fish swim
+setting-name-reef-demo = Reef demo
+setting-name-learning-training = Training
+setting-name-learning-controller = The swimmer's controls

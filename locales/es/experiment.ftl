@@ -82,11 +82,28 @@ experiment-duration-secs = unos { $value } s
 experiment-duration-min = unos { $value } min
 experiment-duration-hours = unas { $value } h
 
+# Las medidas que no son las de las gráficas (esas conservan los nombres de
+# las gráficas de métricas): src/experiment/measure.rs.
+experiment-measure-distance-swum = Distancia nadada (m)
+    .help = Qué tan lejos nadó el pez promedio mientras se medía, en metros
+experiment-measure-catches = Presas atrapadas
+    .help = Cuántos peces atraparon los tiburones (o los depredadores) mientras se medía
+experiment-measure-food-eaten = Plancton comido
+    .help = Cuántas partículas de plancton comieron los peces mientras se medía
+experiment-measure-spawnings = Desoves
+    .help = Cuántas veces una pareja desovó (puso y fecundó huevos) mientras se medía
+experiment-measure-missed-strikes = Ataques fallidos
+    .help = Cuántas veces un depredador atacó y falló, confundido por el montón de presas
+experiment-measure-fish-collisions = Choques entre peces
+    .help = Cuántas veces chocaron dos peces mientras se medía
+experiment-measure-prey-alive = Presas vivas
+    .help = Cuántos peces presa siguen vivos
+
 # Los resultados: gráficas y tabla.
 experiment-level-on = encendido
 experiment-level-off = apagado
 experiment-no-run-yet = Todavía no ha terminado ninguna corrida.
-experiment-plot-title = { $measure } ({ $summary })
+experiment-plot-title = { $measure } · { $summary }
 experiment-no-factor = (ningún factor)
 experiment-table-title = Promedio de las semillas [intervalo del 95 %]
 experiment-table-watch = ver una corrida

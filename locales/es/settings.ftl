@@ -187,3 +187,19 @@ setting-minds-urge-threshold = Actúa por impulsos desde (r)
 ## Los ajustes del laboratorio de aprendizaje.
 setting-learning-annealing-steps = Intentos por ejercicio
     .help = Cuántos intentos tiene el pez para cada ejercicio. Más intentos, mejor nado (el mejor tiburón del artículo tuvo 6840). Cambiarlo empieza de nuevo
+
+## A setting named out of its panel (the Experiment window, the studio's
+## rules): src/settings/names.rs.
+setting-name-kind = { $kind } · { $label }
+setting-name-unit = { $label } ({ $unit })
+setting-name-left = { $label } (tanque izquierdo)
+setting-name-right = { $label } (tanque derecho)
+setting-name-left-unit = { $label } ({ $unit }, tanque izquierdo)
+setting-name-right-unit = { $label } ({ $unit }, tanque derecho)
+setting-name-selected = Pez seleccionado
+setting-name-paused = Reproducir y pausar
+setting-name-scene = Escena
+setting-name-physics-behaviour = Cómo nadan los peces
+setting-name-reef-demo = Demostración del arrecife
+setting-name-learning-training = Entrenamiento
+setting-name-learning-controller = Los controles del nadador

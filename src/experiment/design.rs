@@ -829,9 +829,13 @@ pub fn factor_keys(base: &Settings) -> Vec<String> {
     all.into_iter()
         .filter(|(key, _)| inert_reason(key, base.scene).is_none())
         .filter(|(key, current)| {
-            // An unset optional setting (null) is offered if it takes a count.
+            // An unset optional setting (null) is offered if it takes a
+            // number: its slider's least.
             let level = if current.is_null() {
-                Value::from(1)
+                crate::settings::names::setting_name(key)
+                    .and_then(|n| n.slider)
+                    .and_then(|s| serde_json::Number::from_f64(s.min))
+                    .map_or(Value::from(1), Value::Number)
             } else {
                 current.clone()
             };
@@ -843,6 +847,64 @@ pub fn factor_keys(base: &Settings) -> Vec<String> {
         })
         .map(|(key, _)| key)
         .collect()
+}
+
+/// The levels a new factor on `key` starts with, as `(from, to, steps)`: the
+/// slider's whole range ([`crate::settings::names::Slider`]), or, for a
+/// slider over orders of magnitude (the fish count, the annealing steps), a
+/// round part of it around `base`'s value (half to twice it, to round
+/// numbers), so the runs stay short. A whole-number setting gets levels that
+/// are whole: `steps` grows by one or two, or the range ends a little lower,
+/// if its steps would fall between two numbers. `None` for a key that is not
+/// a number's.
+pub fn default_levels(base: &Settings, key: &str, steps: u32) -> Option<(f64, f64, u32)> {
+    let slider = crate::settings::names::setting_name(key)?.slider?;
+    let (mut from, mut to) = (slider.min, slider.max);
+    if slider.wide {
+        let current = value_at(&settings_value(base), key)
+            .and_then(Value::as_f64)
+            .filter(|c| *c > 0.0)
+            .unwrap_or_else(|| slider.min.max(1.0));
+        from = round_below(current / 2.0).clamp(slider.min, slider.max);
+        to = round_above(current * 2.0).clamp(slider.min, slider.max);
+        if to <= from {
+            (from, to) = (slider.min, slider.max);
+        }
+    }
+    let mut steps = steps.max(1);
+    if slider.whole && steps > 1 {
+        let span = (to - from).round() as u64;
+        let divides = |steps: u32| span.is_multiple_of(u64::from(steps - 1));
+        if let Some(more) = (steps..=steps + 2).find(|&k| divides(k)) {
+            steps = more;
+        } else if span < 6 {
+            steps = span as u32 + 1;
+        } else {
+            to = from + (span - span % u64::from(steps - 1)) as f64;
+        }
+    }
+    Some((from, to, steps))
+}
+
+/// Round numbers: 1, 2 and 5 times a power of ten.
+fn round_numbers(x: f64) -> impl Iterator<Item = f64> {
+    use crate::sim::common::fmath::{log10_f64, powi_f64};
+    let start = log10_f64(x.abs().max(1e-9)).floor() as i32 - 1;
+    (start..start + 3).flat_map(|e| [1.0, 2.0, 5.0].map(|m| m * powi_f64(10.0, e)))
+}
+
+/// The largest round number at or below `x` (`x` > 0).
+fn round_below(x: f64) -> f64 {
+    round_numbers(x)
+        .filter(|&r| r <= x * (1.0 + 1e-9))
+        .fold(0.0, f64::max)
+}
+
+/// The smallest round number at or above `x` (`x` > 0).
+fn round_above(x: f64) -> f64 {
+    round_numbers(x)
+        .filter(|&r| r >= x * (1.0 - 1e-9))
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// Is `key` an on/off setting in `base` (its levels are then `false` and `true`)?

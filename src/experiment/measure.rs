@@ -2,7 +2,9 @@
 //! show, the reef's census) and how a run's samples become numbers
 //! ([`Summary`]).
 
+use crate::i18n::ts;
 use crate::settings::Scene;
+use crate::settings::number::static_id;
 
 /// Measures and summaries travel by name (`"polarization"`, `"mean"`), as in
 /// experiment files and the CSV.
@@ -77,6 +79,37 @@ impl Measure {
 
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|m| m.name() == name)
+    }
+
+    /// The catalogue's message of its words: the plots' own for the school's
+    /// metrics (the side panel names them so), `experiment-measure-…` for the
+    /// counts; each with `.help`.
+    pub fn label_id(self) -> &'static str {
+        match self {
+            Self::Polarization => "metrics-polarization",
+            Self::Milling => "metrics-milling",
+            Self::NndBodyLengths => "metrics-nearest",
+            Self::Groups => "metrics-groups",
+            Self::MeanSpeed => "metrics-speed",
+            Self::DistanceSwum => "experiment-measure-distance-swum",
+            Self::Catches => "experiment-measure-catches",
+            Self::FoodEaten => "experiment-measure-food-eaten",
+            Self::Spawnings => "experiment-measure-spawnings",
+            Self::MissedStrikes => "experiment-measure-missed-strikes",
+            Self::FishCollisions => "experiment-measure-fish-collisions",
+            Self::PreyAlive => "experiment-measure-prey-alive",
+        }
+    }
+
+    /// Its name on screen, in the language in force ("Nearest neighbour
+    /// (body lengths)"); [`Self::name`] is the files' and the CSV's.
+    pub fn label(self) -> &'static str {
+        ts(self.label_id())
+    }
+
+    /// What it measures, as a 12-year-old reads it (hover help).
+    pub fn help(self) -> &'static str {
+        ts(static_id(format!("{}.help", self.label_id())))
     }
 
     /// Counters of events (and the distance swum): their values count from the

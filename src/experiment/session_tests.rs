@@ -145,6 +145,36 @@ fn the_browser_tests_experiment_gives_the_committed_csv() {
     check_fixture("tiny");
 }
 
+/// The window speaks Spanish, the CSV does not: the tiny design run with the
+/// interface in Spanish gives the committed file, byte for byte, its columns
+/// and measures the codes programs read (`left.alignment`,
+/// `nnd_body_lengths`), never the words on screen.
+#[test]
+fn the_csv_keeps_the_codes_whatever_the_window_speaks() {
+    use crate::i18n::{Lang, with_lang};
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/web/tests/fixtures");
+    let committed =
+        std::fs::read_to_string(format!("{dir}/experiment-tiny.csv")).expect("the committed CSV");
+    let csv = with_lang(Lang::Es, || run_in_one_go(tiny_plan()));
+    assert_eq!(csv, committed, "the same bytes in Spanish");
+    let plan = tiny_plan();
+    let header = csv
+        .lines()
+        .find(|l| !l.starts_with('#'))
+        .expect("a header line");
+    for factor in &plan.factors {
+        assert!(header.contains(&factor.key), "{header}");
+    }
+    for (measure, _) in &plan.measures {
+        assert!(
+            csv.contains(&format!(",{},", measure.name())),
+            "{}",
+            measure.name()
+        );
+        with_lang(Lang::Es, || assert!(!csv.contains(measure.label())));
+    }
+}
+
 /// The physics tank's design (`experiment-physics`): muscle bodies, the
 /// current, glam's rotations, the distance swum, the same bytes in the browser.
 #[test]

@@ -7,6 +7,7 @@
 
 pub mod learning;
 pub mod minds;
+pub mod names;
 pub mod number;
 pub mod physics;
 pub mod range;

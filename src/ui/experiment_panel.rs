@@ -16,10 +16,10 @@ use eframe::egui;
 use serde_json::{Value, json};
 
 use super::WidgetRects;
-use super::experiment_plot::{WatchRequest, level_text, results_ui};
+use super::experiment_plot::{WatchRequest, factor_text, level_text, results_ui, shows_side};
 use super::scene_panel::Notice;
 use crate::experiment::design::{
-    Factor, MeasureChoice, Replicates, factor_keys, is_switch, settings_value,
+    Factor, MeasureChoice, Replicates, default_levels, factor_keys, is_switch, settings_value,
 };
 use crate::experiment::session::{FRAME_BUDGET_SECS, frame_budget_secs};
 use crate::experiment::{
@@ -78,16 +78,15 @@ pub struct FactorForm {
 }
 
 impl FactorForm {
-    /// `key` from 0 to about twice its current value, in 3 levels.
-    fn new(base: &Settings, key: &str) -> Self {
-        let current = crate::experiment::design::value_at(&settings_value(base), key)
-            .and_then(Value::as_f64)
-            .unwrap_or(1.0);
+    /// `key` over its slider's range, or a round part of it, in about `steps`
+    /// levels ([`default_levels`]).
+    fn new(base: &Settings, key: &str, steps: u32) -> Self {
+        let (from, to, steps) = default_levels(base, key, steps).unwrap_or((0.0, 1.0, steps));
         Self {
             key: key.to_owned(),
-            from: 0.0,
-            to: if current > 0.0 { 2.0 * current } else { 1.0 },
-            steps: 3,
+            from,
+            to,
+            steps,
         }
     }
 
@@ -149,7 +148,7 @@ impl DesignForm {
             .collect();
         Self {
             name: format!("{}-sweep", key.rsplit('.').next().unwrap_or("my")),
-            factor: FactorForm::new(base, &key),
+            factor: FactorForm::new(base, &key, 3),
             second: None,
             seeds: 3,
             first_seed: 1,
@@ -470,13 +469,10 @@ impl ExperimentPanel {
                 true
             }
             Some(Err(err)) => {
+                let (field, reason) = error_in_words(err, &design, shows_side(settings.scene));
                 let r = ui.colored_label(
                     ui.visuals().warn_fg_color,
-                    tr!(
-                        "experiment-cannot-start",
-                        field = err.field.as_str(),
-                        reason = err.reason.as_str()
-                    ),
+                    tr!("experiment-cannot-start", field = field, reason = reason),
                 );
                 rects.insert("experiment_error", r.rect);
                 false
@@ -589,11 +585,12 @@ impl ExperimentPanel {
             let mut watched = plan.settings_for(&spec);
             watched.paused = false;
             out.push(ExperimentOutcome::Watch(Box::new(watched)));
+            let side = shows_side(plan.base.scene);
             let what: Vec<String> = plan
                 .factors
                 .iter()
                 .zip(&levels)
-                .map(|(f, l)| format!("{} = {}", f.key, level_text(l)))
+                .map(|(f, l)| format!("{} = {}", factor_text(&f.key, side), level_text(l)))
                 .collect();
             out.push(ExperimentOutcome::Notice(Notice::info(tr!(
                 "experiment-watching",
@@ -682,9 +679,7 @@ fn form_ui(
                     .find(|k| **k != form.factor.key)
                     .cloned()
                     .unwrap_or_default();
-                let mut second = FactorForm::new(settings, &key);
-                second.steps = 2;
-                form.second = Some(second);
+                form.second = Some(FactorForm::new(settings, &key, 2));
             } else if !two {
                 form.second = None;
             }
@@ -738,7 +733,9 @@ fn form_ui(
         .spacing([8.0, 2.0])
         .show(ui, |ui| {
             for m in &mut form.measures {
-                let r = ui.checkbox(&mut m.on, m.measure.name());
+                let r = ui
+                    .checkbox(&mut m.on, m.measure.label())
+                    .on_hover_text(m.measure.help());
                 rects.insert(&format!("experiment_measure_{}", m.measure.name()), r.rect);
                 ui.horizontal(|ui| {
                     ui.selectable_value(&mut m.last, false, ts("experiment-mean"))
@@ -763,30 +760,49 @@ fn factor_ui(
 ) {
     ui.label(label).on_hover_text(ts("experiment-vary.help"));
     let before = factor.key.clone();
+    let side = shows_side(settings.scene);
     let r = egui::ComboBox::from_id_salt(id)
-        .selected_text(&factor.key)
+        .selected_text(factor_text(&factor.key, side))
         .height(320.0)
         .show_ui(ui, |ui| {
             for key in keys {
-                let r = ui.selectable_value(&mut factor.key, key.clone(), key);
+                let r = ui.selectable_value(&mut factor.key, key.clone(), factor_text(key, side));
                 rects.insert(&format!("{id}_{key}"), r.rect);
             }
         });
     rects.insert(id, r.response.rect);
     if factor.key != before {
-        *factor = FactorForm::new(settings, &factor.key.clone());
+        *factor = FactorForm::new(settings, &factor.key.clone(), factor.steps);
     }
     ui.end_row();
     ui.label("");
     if is_switch(settings, &factor.key) {
         ui.label(ts("experiment-off-and-on"));
     } else {
+        // Within the slider's range, with its unit, whole for a count.
+        let name = crate::settings::names::setting_name(&factor.key);
+        let unit = name.map_or("", |n| n.unit);
+        let slider = name.and_then(|n| n.slider);
+        fn level<'a>(
+            value: &'a mut f64,
+            unit: &str,
+            slider: Option<crate::settings::names::Slider>,
+        ) -> egui::DragValue<'a> {
+            let mut drag = egui::DragValue::new(value).speed(0.5).suffix(unit);
+            if let Some(s) = slider {
+                drag = drag.range(s.min..=s.max);
+                if s.whole {
+                    drag = drag.max_decimals(0);
+                }
+            }
+            drag
+        }
         ui.horizontal_wrapped(|ui| {
             ui.label(ts("experiment-range-from"));
-            let r = ui.add(egui::DragValue::new(&mut factor.from).speed(0.5));
+            let r = ui.add(level(&mut factor.from, unit, slider));
             rects.insert(&format!("{id}_from"), r.rect);
             ui.label(ts("experiment-range-to"));
-            let r = ui.add(egui::DragValue::new(&mut factor.to).speed(0.5));
+            let r = ui.add(level(&mut factor.to, unit, slider));
             rects.insert(&format!("{id}_to"), r.rect);
             ui.label(ts("experiment-range-in"));
             let r = ui.add(egui::DragValue::new(&mut factor.steps).range(1..=1000));
@@ -795,6 +811,36 @@ fn factor_ui(
         });
     }
     ui.end_row();
+}
+
+/// A refused form's field in the form's words (the factor's setting as the
+/// side panel names it, *Seeds*, *Measure for*), and its reason with the
+/// factors' keys named so too; the design file's field and the keys stay in
+/// [`DesignError`] (the API and `shoal-lab` report them).
+fn error_in_words(err: &DesignError, design: &Design, side: bool) -> (String, String) {
+    let mut reason = err.reason.clone();
+    for factor in &design.factors {
+        reason = reason.replace(
+            &format!("'{}'", factor.key),
+            &format!("'{}'", factor_text(&factor.key, side)),
+        );
+    }
+    let field = err.field.as_str();
+    let factor = design
+        .factors
+        .iter()
+        .enumerate()
+        .find(|(i, _)| field.starts_with(&format!("factors[{i}]")));
+    let field = match factor {
+        Some((_, f)) => factor_text(&f.key, side),
+        None if field.starts_with("replicates") => tr("experiment-seeds"),
+        None if field.starts_with("measures") => tr("experiment-measures"),
+        None if field == "warmup_secs" => tr("experiment-warmup"),
+        None if field == "measure_secs" => tr("experiment-measure-for"),
+        None if field == "factors" => tr("experiment-runs"),
+        None => field.to_owned(),
+    };
+    (field, reason)
 }
 
 /// The design's size and time, before it starts.
@@ -910,7 +956,7 @@ mod tests {
         assert_eq!(again.expect("valid again"), plan);
         // A second factor, a switch measured at its end.
         let switch = keys.iter().find(|k| is_switch(&base, k)).cloned();
-        let mut second = FactorForm::new(&base, "left.fish_count");
+        let mut second = FactorForm::new(&base, "left.fish_count", 2);
         second.from = 10.0;
         second.to = 20.0;
         second.steps = 2;
@@ -922,7 +968,7 @@ mod tests {
         assert_eq!(plan.factors[1].levels, vec![json!(10), json!(20)]);
         assert_eq!(plan.measures[1].1, Summary::Final);
         if let Some(key) = switch {
-            form.second = Some(FactorForm::new(&base, &key));
+            form.second = Some(FactorForm::new(&base, &key, 2));
             let plan = form.design(&base).validate().expect("valid");
             assert_eq!(plan.factors[1].levels, vec![json!(false), json!(true)]);
         }
@@ -969,31 +1015,148 @@ mod tests {
             ]
         );
         for key in &keys {
-            let f = FactorForm::new(&base, key);
+            let f = FactorForm::new(&base, key, 3);
             let design = Design {
                 factors: vec![f.factor(&base)],
                 ..form.design(&base)
             };
-            // Every offered setting is accepted at some levels (its own range
-            // may refuse the form's default "0 to twice").
-            let one = Design {
-                factors: vec![Factor {
-                    key: key.clone(),
-                    levels: if is_switch(&base, key) {
-                        json!([false, true])
-                    } else {
-                        json!([
-                            crate::experiment::design::value_at(&settings_value(&base), key)
-                                .cloned()
-                                .filter(|v| !v.is_null())
-                                .unwrap_or(json!(1))
-                        ])
-                    },
-                }],
-                ..design
-            };
-            assert!(one.validate().is_ok(), "{key}: {:?}", one.validate().err());
+            // Every offered setting is accepted at its default levels.
+            assert!(
+                design.validate().is_ok(),
+                "{key}: {:?}",
+                design.validate().err()
+            );
         }
+    }
+
+    /// Every scene that has the Experiment button, with its base settings.
+    fn bases() -> Vec<Settings> {
+        Scene::ALL
+            .into_iter()
+            .filter(|&s| s != Scene::Learning)
+            .map(|scene| Settings {
+                scene,
+                ..Settings::default()
+            })
+            .collect()
+    }
+
+    /// A number with at most two significant digits (0, 5, 20, 250, 0.05).
+    fn is_round(x: f64) -> bool {
+        if x == 0.0 {
+            return true;
+        }
+        use crate::sim::common::fmath::{log10_f64, powi_f64};
+        let scale = powi_f64(10.0, log10_f64(x.abs()).floor() as i32 - 1);
+        ((x / scale).round() * scale - x).abs() <= 1e-9 * x.abs()
+    }
+
+    #[test]
+    fn a_new_factor_spans_its_slider_or_a_round_part_of_it() {
+        use crate::settings::names::setting_name;
+        let mut checked = 0;
+        for base in bases() {
+            for key in factor_keys(&base) {
+                for steps in [2, 3] {
+                    let f = FactorForm::new(&base, &key, steps);
+                    if is_switch(&base, &key) {
+                        continue;
+                    }
+                    let slider = setting_name(&key)
+                        .and_then(|n| n.slider)
+                        .unwrap_or_else(|| panic!("{key}: a number has a slider"));
+                    assert!(
+                        slider.min <= f.from && f.from < f.to && f.to <= slider.max,
+                        "{key}: {} to {} within {} to {}",
+                        f.from,
+                        f.to,
+                        slider.min,
+                        slider.max
+                    );
+                    let whole_range = (f.from, f.to) == (slider.min, slider.max);
+                    assert!(
+                        whole_range || (is_round(f.from) && is_round(f.to)),
+                        "{key}: {} to {} is the slider's range or round",
+                        f.from,
+                        f.to
+                    );
+                    assert!((2..=5).contains(&f.steps), "{key}: {} levels", f.steps);
+                    if slider.whole {
+                        let step = (f.to - f.from) / f64::from(f.steps - 1);
+                        assert_eq!(step.fract(), 0.0, "{key}: whole levels, {f:?}");
+                    }
+                    let design = Design {
+                        factors: vec![f.factor(&base)],
+                        ..DesignForm::new(&base, std::slice::from_ref(&key)).design(&base)
+                    };
+                    assert!(design.validate().is_ok(), "{key}: {:?}", design.validate());
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 40, "{checked}");
+        // Never 0 to 52 (twice the Individual preset's 26): the slider's 0 to 100.
+        let base = boids();
+        let f = FactorForm::new(&base, "left.alignment", 3);
+        assert_eq!((f.from, f.to, f.steps), (0.0, 100.0, 3));
+        // The fish count: a round part around the 200 fish, not 0 to 20,000.
+        let f = FactorForm::new(&base, "left.fish_count", 3);
+        assert_eq!((f.from, f.to, f.steps), (100.0, 500.0, 3));
+    }
+
+    #[test]
+    fn factors_and_measures_are_named_in_words_in_every_language() {
+        use crate::i18n::{Lang, has, with_lang};
+        for lang in Lang::ALL {
+            with_lang(lang, || {
+                for base in bases() {
+                    let side = shows_side(base.scene);
+                    for key in factor_keys(&base) {
+                        let text = factor_text(&key, side);
+                        assert!(
+                            !text.contains(&key) && !text.contains('_') && !text.contains('['),
+                            "{lang:?} {key}: {text}"
+                        );
+                    }
+                }
+                for measure in Measure::ALL {
+                    for id in [
+                        measure.label_id().to_owned(),
+                        format!("{}.help", measure.label_id()),
+                    ] {
+                        assert!(has(lang, &id), "{lang:?}: {id}");
+                    }
+                    let label = measure.label();
+                    assert!(
+                        !label.contains(measure.name()) && !label.contains('_'),
+                        "{lang:?}: {label}"
+                    );
+                }
+            });
+        }
+        assert_eq!(
+            factor_text("left.alignment", shows_side(Scene::Boids)),
+            "Alignment (left tank)"
+        );
+        assert_eq!(
+            factor_text("left.fish_count", shows_side(Scene::Aquarium)),
+            "Fish"
+        );
+        assert_eq!(
+            Measure::NndBodyLengths.label(),
+            "Nearest neighbour (body lengths)"
+        );
+        with_lang(Lang::Es, || {
+            assert_eq!(
+                factor_text("left.alignment", true),
+                "Alineación (tanque izquierdo)"
+            );
+            assert_eq!(Measure::Catches.label(), "Presas atrapadas");
+            assert_eq!(
+                Measure::NndBodyLengths.label(),
+                "Vecino más cercano (largos de cuerpo)"
+            );
+        });
     }
 
     #[test]
@@ -1023,6 +1186,25 @@ mod tests {
         // English stays as it was.
         assert_eq!(duration_text(7200.0), "about 2.0 h");
         assert_eq!(level_text(&json!(0.5)), "0.5");
+    }
+
+    #[test]
+    fn a_refused_form_names_its_field_in_the_forms_words() {
+        let base = boids();
+        let keys = factor_keys(&base);
+        let mut form = DesignForm::new(&base, &keys);
+        form.second = Some(FactorForm::new(&base, "left.alignment", 2));
+        let design = form.design(&base);
+        let err = design.validate().expect_err("the same factor twice");
+        assert_eq!(err.field, "factors[1].key", "the API's field stays");
+        let (field, reason) = error_in_words(&err, &design, true);
+        assert_eq!(field, "Alignment (left tank)");
+        assert_eq!(reason, "'Alignment (left tank)' is already a factor");
+        form.second = None;
+        form.measure_secs = 0.0;
+        let design = form.design(&base);
+        let err = design.validate().expect_err("0 s");
+        assert_eq!(error_in_words(&err, &design, true).0, "Measure for");
     }
 
     #[test]

@@ -12,6 +12,8 @@ use super::WidgetRects;
 use crate::experiment::summary::significant;
 use crate::experiment::{Plan, SummaryRow};
 use crate::i18n::{localize_decimal, tr, ts};
+use crate::settings::names::setting_name;
+use crate::settings::{Scene, Settings};
 use crate::tr;
 
 /// Height of one dose–response plot, points. Default 150: two plots and the
@@ -31,6 +33,31 @@ fn level_x(level: &Value) -> f64 {
         Value::Bool(b) => f64::from(u8::from(*b)),
         other => other.as_f64().unwrap_or(f64::NAN),
     }
+}
+
+/// Does `scene` ever show two tanks (the schooling lab's comparison)? Its
+/// factors then name their tank ("Alignment (left tank)"): an experiment
+/// runs the left one.
+pub fn shows_side(scene: Scene) -> bool {
+    let comparing = Settings {
+        scene,
+        compare: true,
+        ..Settings::default()
+    };
+    scene.class().tanks(&comparing) > 1
+}
+
+/// A factor's setting as the side panel names it, with its tank when
+/// `with_side` ([`shows_side`]): "Alignment (left tank)". The key stays the
+/// design's and the CSV's.
+pub fn factor_text(key: &str, with_side: bool) -> String {
+    crate::settings::names::setting_text(key, with_side)
+}
+
+/// [`factor_text`] with the setting's unit, for an axis or a column:
+/// "Vision distance (m)".
+fn factor_text_with_unit(key: &str, with_side: bool) -> String {
+    setting_name(key).map_or_else(|| key.to_owned(), |n| n.text_with_unit(with_side))
 }
 
 /// A level as a person reads it (`80`, not `80.0`; `on`, `off`), in the
@@ -56,6 +83,7 @@ pub fn results_ui(
     rects: &mut WidgetRects,
 ) -> Option<WatchRequest> {
     let mut watch = None;
+    let side = shows_side(plan.base.scene);
     if rows.is_empty() {
         ui.label(ts("experiment-no-run-yet"));
         return None;
@@ -69,7 +97,7 @@ pub fn results_ui(
         ui.label(
             egui::RichText::new(tr!(
                 "experiment-plot-title",
-                measure = measure.name(),
+                measure = measure.label(),
                 summary = summary_name
             ))
             .strong(),
@@ -88,11 +116,11 @@ pub fn results_ui(
                 .striped(true)
                 .show(ui, |ui| {
                     for factor in &plan.factors {
-                        ui.strong(&factor.key);
+                        ui.strong(factor_text_with_unit(&factor.key, side));
                     }
                     ui.strong("n");
                     for &(measure, _) in &plan.measures {
-                        ui.strong(measure.name());
+                        ui.strong(measure.label()).on_hover_text(measure.help());
                     }
                     ui.strong(ts("experiment-table-watch"));
                     ui.end_row();
@@ -151,15 +179,16 @@ fn dose_response_plot(
     rects: &mut WidgetRects,
 ) -> Option<WatchRequest> {
     let (measure, _) = plan.measures[m];
+    let side = shows_side(plan.base.scene);
     // The lines: one per level of the second factor (or one).
     let second_levels: Vec<Option<&Value>> = match plan.factors.get(1) {
         Some(f) => f.levels.iter().map(Some).collect(),
         None => vec![None],
     };
-    let x_name = plan
-        .factors
-        .first()
-        .map_or_else(|| tr("experiment-no-factor"), |f| f.key.clone());
+    let x_name = plan.factors.first().map_or_else(
+        || tr("experiment-no-factor"),
+        |f| factor_text_with_unit(&f.key, side),
+    );
     let mut points_all: Vec<([f64; 2], Vec<Value>)> = Vec::new();
     let response = Plot::new(("experiment_plot", m))
         .height(PLOT_HEIGHT)
@@ -171,8 +200,10 @@ fn dose_response_plot(
         .show(ui, |plot| {
             for (k, second) in second_levels.iter().enumerate() {
                 let name = match (plan.factors.get(1), second) {
-                    (Some(f), Some(level)) => format!("{} = {}", f.key, level_text(level)),
-                    _ => measure.name().to_owned(),
+                    (Some(f), Some(level)) => {
+                        format!("{} = {}", factor_text(&f.key, side), level_text(level))
+                    }
+                    _ => measure.label().to_owned(),
                 };
                 // Each level of the second factor in its own colour, line
                 // style and marker (Okabe–Ito; never colour alone), named in

@@ -17,6 +17,7 @@ use super::WidgetRects;
 use super::scene_panel::Notice;
 use crate::i18n::ts;
 use crate::settings::Settings;
+use crate::settings::names::setting_text;
 use crate::settings::studio::{ControlRule, Studio};
 use crate::tr;
 
@@ -200,7 +201,11 @@ fn toggles(ui: &mut egui::Ui, rects: &mut WidgetRects, key: &str, studio: &Studi
     ] {
         let r = ui
             .add(egui::Button::selectable(*flag, text).small())
-            .on_hover_text(tr!("studio-toggle-help", help = help, key = key));
+            .on_hover_text(tr!(
+                "studio-toggle-help",
+                help = help,
+                key = setting_text(key, true)
+            ));
         rects.insert(&format!("studio_{what}_{name}"), r.rect);
         if r.clicked() {
             *flag = !*flag;
@@ -392,7 +397,11 @@ impl StudioPanel {
                     if rule.mystery {
                         what.push(ts("studio-rule-mystery"));
                     }
-                    ui.label(tr!("studio-rule", key = key, what = what.join(", ")));
+                    ui.label(tr!(
+                        "studio-rule",
+                        key = setting_text(key, true),
+                        what = what.join(", ")
+                    ));
                     let r = ui.small_button(ts("studio-remove"));
                     rects.insert(&format!("studio_remove_{}", key.replace('.', "_")), r.rect);
                     if r.clicked() {
@@ -532,13 +541,18 @@ mod tests {
         use crate::i18n::{Lang, with_lang};
         with_lang(Lang::Es, || {
             assert_eq!(ts("studio-mystery-value"), "? (valor misterioso)");
+            // A rule names its control as the panel does, with its tank.
             assert_eq!(
                 tr!(
                     "studio-rule",
-                    key = "left.alignment",
+                    key = setting_text("left.alignment", true),
                     what = "oculto, bloqueado"
                 ),
-                "left.alignment: oculto, bloqueado"
+                "Alineación (tanque izquierdo): oculto, bloqueado"
+            );
+            assert_eq!(
+                setting_text("physics.show_body", true),
+                "Mostrar masas y resortes"
             );
             let mut settings = Settings::default();
             let err = settings
