@@ -115,14 +115,17 @@ pub fn results_ui(
             let grid = egui::Grid::new("experiment_table")
                 .striped(true)
                 .show(ui, |ui| {
+                    // The watch buttons next to their level, before the
+                    // numbers: long measure names must not push them out of
+                    // the window.
                     for factor in &plan.factors {
                         ui.strong(factor_text_with_unit(&factor.key, side));
                     }
+                    ui.strong(ts("experiment-table-watch"));
                     ui.strong("n");
                     for &(measure, _) in &plan.measures {
                         ui.strong(measure.label()).on_hover_text(measure.help());
                     }
-                    ui.strong(ts("experiment-table-watch"));
                     ui.end_row();
                     for (r, chunk) in rows.chunks(plan.measures.len().max(1)).enumerate() {
                         let Some(first) = chunk.first() else {
@@ -130,19 +133,6 @@ pub fn results_ui(
                         };
                         for level in &first.levels {
                             ui.label(level_text(level));
-                        }
-                        ui.label(first.n.to_string());
-                        for row in chunk {
-                            ui.label(if row.ci95_low.is_finite() {
-                                tr!(
-                                    "experiment-interval",
-                                    mean = localize_decimal(&significant(row.mean)),
-                                    low = localize_decimal(&significant(row.ci95_low)),
-                                    high = localize_decimal(&significant(row.ci95_high))
-                                )
-                            } else {
-                                localize_decimal(&significant(row.mean))
-                            });
                         }
                         ui.horizontal(|ui| {
                             for (k, &seed) in plan.seeds.iter().take(first.n).enumerate() {
@@ -161,6 +151,19 @@ pub fn results_ui(
                                 }
                             }
                         });
+                        ui.label(first.n.to_string());
+                        for row in chunk {
+                            ui.label(if row.ci95_low.is_finite() {
+                                tr!(
+                                    "experiment-interval",
+                                    mean = localize_decimal(&significant(row.mean)),
+                                    low = localize_decimal(&significant(row.ci95_low)),
+                                    high = localize_decimal(&significant(row.ci95_high))
+                                )
+                            } else {
+                                localize_decimal(&significant(row.mean))
+                            });
+                        }
                         ui.end_row();
                     }
                 });
