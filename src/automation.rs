@@ -25,7 +25,7 @@ use serde_json::Value;
 
 use crate::lab::{Lab, LabError};
 use crate::metrics_history::MetricsSample;
-use crate::settings::{SEED_MAX, SettingsError, Side};
+use crate::settings::{SEED_MAX, Settings, SettingsError, Side};
 use crate::sim::boids::attention::AttentionReport;
 
 /// Most steps one `shoal.step(n)` call may ask for (about 28 simulated minutes),
@@ -145,14 +145,7 @@ impl Command {
     pub fn execute(self, lab: &mut Lab) -> Result<(), AutomationError> {
         match self {
             Self::Set(patch) => {
-                let before = lab.settings();
-                let mut settings = before.clone();
-                settings.apply_patch(&patch)?;
-                // A student view refuses what the teacher's studio keeps.
-                before
-                    .studio
-                    .check_unchanged(before, &settings)
-                    .map_err(SettingsError::from)?;
+                let settings = patched_settings(lab.settings(), &patch)?;
                 lab.apply_settings(settings);
             }
             Self::Step(n) => lab.step(n),
@@ -188,6 +181,19 @@ impl Command {
         }
         Ok(())
     }
+}
+
+/// What `shoal.set(patch)` makes of `before`: the whole patch applied, or
+/// why not (then nothing changes). A student view refuses what the teacher's
+/// studio keeps.
+pub fn patched_settings(before: &Settings, patch: &Value) -> Result<Settings, AutomationError> {
+    let mut settings = before.clone();
+    settings.apply_patch(patch)?;
+    before
+        .studio
+        .check_unchanged(before, &settings)
+        .map_err(SettingsError::from)?;
+    Ok(settings)
 }
 
 /// Why an argument is not a whole number in its range.

@@ -19,6 +19,9 @@ pub mod census;
 pub mod clock;
 pub mod experiment;
 pub mod export;
+/// Damaged links and `set()` patches as property tests (issue 35).
+#[cfg(test)]
+mod fuzz_tests;
 pub mod i18n;
 pub mod investigation;
 pub mod lab;

@@ -320,8 +320,24 @@ impl Design {
                 seeds.clone()
             }
             (None, Some(count)) => {
+                // Refused before counting: a damaged count (four billion) would
+                // fill the memory first.
+                if count as usize > MAX_RUNS {
+                    return Err(DesignError::new(
+                        "replicates.count",
+                        tr!(
+                            "experiment-error-too-many-seeds",
+                            count = count.to_string(),
+                            max = MAX_RUNS.to_string()
+                        ),
+                    ));
+                }
+                // Saturating: a first seed near 2^64 is refused below as out of
+                // range, not overflowed.
                 let first = r.first_seed.unwrap_or(1);
-                (0..u64::from(count)).map(|k| first + k).collect()
+                (0..u64::from(count))
+                    .map(|k| first.saturating_add(k))
+                    .collect()
             }
             (None, None) => {
                 return Err(DesignError::new(
