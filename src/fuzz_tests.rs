@@ -951,15 +951,7 @@ fn check_set(before: &Settings, patch: &Value) {
             let mut lab = crate::lab::Lab::new(before.clone());
             let set = crate::automation::Command::Set(rest.clone()).execute(&mut lab);
             assert_eq!(set, Ok(()), "{case}");
-            // One gap, left open (docs/reliability.md): the physics scene's
-            // hand control and camera follow need a selected fish; `set`
-            // accepts them without one, and the lab lets them go.
-            let mut held = after.clone();
-            if held.physics.selected.is_none() {
-                held.physics.hand_control = false;
-                held.physics.follow = false;
-            }
-            assert_eq!(lab.settings(), &held, "the lab holds what was set: {case}");
+            assert_eq!(lab.settings(), &after, "the lab holds what was set: {case}");
             lab.step(1);
             assert_eq!(lab.settings().validate(), Ok(()), "{case}");
         }

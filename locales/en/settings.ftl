@@ -24,6 +24,7 @@ setting-error = setting '{ $key }': { $reason }
 setting-error-out-of-range = { $value } is out of range: choose from { $min } to { $max }
 setting-error-selected-fish = { $selected } is out of range: there are { $count } fish (0 to { $last }), or null for none
 setting-error-selected-animal = { $selected } is out of range: there are { $count } animals (0 to { $last }), or null for none
+setting-error-needs-selected-fish = it needs a selected fish: set selected too
 setting-error-too-many-obstacles = { $count } obstacles is too many: at most { $max }
 setting-error-not-an-object = set() takes an object such as {"{"}"speed": 2{"}"}, not { $value }
 setting-error-unknown-key = unknown setting '{ $key }'; the settings are: { $known }

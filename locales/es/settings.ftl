@@ -24,6 +24,7 @@ setting-error = ajuste '{ $key }': { $reason }
 setting-error-out-of-range = { $value } está fuera del rango: elige entre { $min } y { $max }
 setting-error-selected-fish = { $selected } está fuera del rango: hay { $count } peces (de 0 a { $last }), o null para ninguno
 setting-error-selected-animal = { $selected } está fuera del rango: hay { $count } animales (de 0 a { $last }), o null para ninguno
+setting-error-needs-selected-fish = necesita un pez seleccionado: indica también selected
 setting-error-too-many-obstacles = { $count } obstáculos son demasiados: como máximo { $max }
 setting-error-not-an-object = set() recibe un objeto como {"{"}"speed": 2{"}"}, no { $value }
 setting-error-unknown-key = ajuste desconocido '{ $key }'; los ajustes son: { $known }

@@ -236,6 +236,8 @@ fn runs_come_in_a_fixed_order_and_shards_hold_each_run_once() {
         ..Settings::default()
     };
     linked.physics.fish_count = 3;
+    // Steering by hand acts on the selected fish (without one it is refused).
+    linked.physics.selected = Some(0);
     let mut physics = tiny();
     physics["link"] = json!(format!(
         "https://example.org/shoal/#{}",

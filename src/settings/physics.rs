@@ -166,6 +166,18 @@ impl PhysicsSettings {
                 ),
             });
         }
+        // Steering by hand and the following camera act on the selected fish:
+        // without one they would be dropped, so they are refused instead.
+        if self.selected.is_none() {
+            for (on, key) in [(self.hand_control, "hand_control"), (self.follow, "follow")] {
+                if on {
+                    return Err(SettingError {
+                        key: format!("{prefix}{key}"),
+                        reason: tr!("setting-error-needs-selected-fish"),
+                    });
+                }
+            }
+        }
         Ok(())
     }
 
