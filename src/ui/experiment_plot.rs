@@ -109,6 +109,10 @@ pub fn results_ui(
     }
     ui.add_space(4.0);
     ui.label(egui::RichText::new(ts("experiment-table-title")).strong());
+    // A solid scroll bar, under the table: a floating one would lie over the
+    // last row's watch buttons and take their clicks.
+    let floating = ui.spacing().scroll;
+    ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
     egui::ScrollArea::horizontal()
         .id_salt("experiment_table_scroll")
         .show(ui, |ui| {
@@ -136,11 +140,17 @@ pub fn results_ui(
                         }
                         ui.horizontal(|ui| {
                             for (k, &seed) in plan.seeds.iter().take(first.n).enumerate() {
+                                // An id of its own: a press and its release
+                                // must meet the same button, whatever else the
+                                // window drew this frame.
                                 let b = ui
-                                    .small_button(tr!(
-                                        "experiment-seed-button",
-                                        seed = seed.to_string()
-                                    ))
+                                    .push_id(("experiment_watch", r, k), |ui| {
+                                        ui.small_button(tr!(
+                                            "experiment-seed-button",
+                                            seed = seed.to_string()
+                                        ))
+                                    })
+                                    .inner
                                     .on_hover_text(ts("experiment-seed-button.help"));
                                 rects.insert(&format!("experiment_watch_{r}_{k}"), b.rect);
                                 if b.clicked() {
@@ -169,6 +179,7 @@ pub fn results_ui(
                 });
             rects.insert("experiment_table", grid.response.rect);
         });
+    ui.spacing_mut().scroll = floating;
     watch
 }
 
