@@ -379,6 +379,7 @@ impl eframe::App for ShoalApp {
                         &mut view,
                         &mut self.widget_rects,
                     ));
+                    crate::ui::focus_view::keep_focus_in_view(ui, "controls");
                 });
             });
         if let Some(controls) = controls {

@@ -405,6 +405,7 @@ impl ExperimentPanel {
                     .min_scrolled_height(tall.min(720.0))
                     .show(ui, |ui| {
                         self.contents_ui(ui, settings, &keys, cost, rects, &mut out);
+                        crate::ui::focus_view::keep_focus_in_view(ui, "experiment");
                     });
             });
         if let Some(shown) = shown {

@@ -193,6 +193,7 @@ impl InvestigationPanel {
                     .min_scrolled_height(tall.min(700.0))
                     .show(ui, |ui| {
                         self.contents_ui(ui, lab, settings, rects, &mut actions);
+                        crate::ui::focus_view::keep_focus_in_view(ui, "investigation");
                     });
             });
         if let Some(shown) = shown {

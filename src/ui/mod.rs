@@ -15,6 +15,7 @@ mod control_panel;
 mod experiment_panel;
 mod experiment_plot;
 mod files;
+pub mod focus_view;
 mod investigation_panel;
 mod investigation_plot;
 pub mod language;

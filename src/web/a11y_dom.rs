@@ -347,6 +347,13 @@ impl DomMirror {
 
     /// The ring round the focused element, or none.
     fn place_ring(&self) {
+        // The browser scrolls the mirror to show an element that Tab focused
+        // below the fold; the mirror must stay over the canvas, where egui
+        // drew each control (egui scrolls its own panel).
+        if self.root.scroll_top() != 0 || self.root.scroll_left() != 0 {
+            self.root.set_scroll_top(0);
+            self.root.set_scroll_left(0);
+        }
         let style = self.ring.style();
         let focused = self
             .document
