@@ -333,18 +333,7 @@ impl Settings {
             key: "?".to_owned(),
             reason: err.to_string(),
         })?;
-        // A selected fish that a smaller count leaves out is let go, unless
-        // the patch names it.
-        for side in Side::BOTH {
-            if patch
-                .get(side.name())
-                .and_then(|tank| tank.get("selected"))
-                .is_none()
-            {
-                let tank = candidate.tank_mut(side);
-                tank.selected = tank.selected.filter(|&i| i < tank.fish_count);
-            }
-        }
+        candidate.let_go_of_unnamed(&base, patch);
         if let Some(studio) = &studio_patch {
             candidate.studio.apply_patch(studio)?;
         }
@@ -352,6 +341,72 @@ impl Settings {
         candidate.settle(&base);
         *self = candidate;
         Ok(())
+    }
+}
+
+impl Settings {
+    /// After a patch: what the patch changed brings along what the panel
+    /// would change with it, for the values the patch does not name. A fish
+    /// selected in a tank, or among the physics fish, that a smaller count
+    /// leaves out is let go (and with it the hand control and the camera on
+    /// it); a new reef demo is chosen as its button chooses it (its own
+    /// counts, its own selection), so a demo can be chosen whatever was
+    /// selected before.
+    fn let_go_of_unnamed(
+        &mut self,
+        before: &Self,
+        patch: &serde_json::Map<String, serde_json::Value>,
+    ) {
+        let named =
+            |part: &str, key: &str| patch.get(part).and_then(|part| part.get(key)).is_some();
+        for side in Side::BOTH {
+            if !named(side.name(), "selected") {
+                let tank = self.tank_mut(side);
+                tank.selected = tank.selected.filter(|&i| i < tank.fish_count);
+            }
+        }
+        let physics = &mut self.physics;
+        if !named("physics", "selected")
+            && physics
+                .selected
+                .is_some_and(|i| i >= physics.animal_count())
+        {
+            physics.selected = None;
+            if !named("physics", "hand_control") {
+                physics.hand_control = false;
+            }
+            if !named("physics", "follow") {
+                physics.follow = false;
+            }
+        }
+        if self.reef.demo != before.reef.demo {
+            let mut chosen = before.reef.clone();
+            chosen.choose_demo(self.reef.demo);
+            let reef = &mut self.reef;
+            if !named("reef", "prey_count") {
+                reef.prey_count = chosen.prey_count;
+            }
+            if !named("reef", "food_count") {
+                reef.food_count = chosen.food_count;
+            }
+            if !named("reef", "selected") {
+                reef.selected = chosen.selected;
+            }
+            if !named("reef", "follow") {
+                reef.follow = chosen.follow;
+            }
+        }
+        let reef = &mut self.reef;
+        if !named("reef", "selected")
+            && reef
+                .selected
+                .is_some_and(|i| i as usize >= reef.animal_count())
+        {
+            reef.selected = None;
+            if !named("reef", "follow") {
+                reef.follow = false;
+            }
+        }
     }
 }
 
@@ -594,6 +649,47 @@ mod tests {
             settings.apply_patch(&json!([1, 2])),
             Err(SettingsError::NotAnObject(_))
         ));
+    }
+
+    #[test]
+    fn a_demo_is_chosen_through_set_whatever_fish_was_selected() {
+        // After a skip the reef's moment fish stays selected and followed;
+        // choosing another demo with fewer animals let go of it, as the
+        // demo's button does, instead of refusing the demo.
+        let mut settings = Settings::default();
+        settings
+            .apply_patch(&json!({"scene": "reef", "reef": {"demo": "predator_and_school"}}))
+            .unwrap();
+        let last = settings.reef.animal_count() as u32 - 1;
+        settings
+            .apply_patch(&json!({"reef": {"selected": last, "follow": true, "prey_count": 30}}))
+            .unwrap();
+        for demo in ["courtship", "feeding", "school_meets_obstacle", "reef"] {
+            let mut s = settings.clone();
+            s.apply_patch(&json!({"reef": {"demo": demo}})).unwrap();
+            let mut by_button = settings.reef.clone();
+            by_button.choose_demo(s.reef.demo);
+            assert_eq!(s.reef, by_button, "{demo}");
+        }
+        // What the patch names, it keeps; a selection the new demo has no
+        // fish for is still refused, by name.
+        let mut s = settings.clone();
+        s.apply_patch(&json!({"reef": {"demo": "reef", "prey_count": 12, "selected": 3}}))
+            .unwrap();
+        assert_eq!((s.reef.prey_count, s.reef.selected), (Some(12), Some(3)));
+        let err = settings
+            .clone()
+            .apply_patch(&json!({"reef": {"demo": "courtship", "selected": 90}}))
+            .unwrap_err();
+        assert!(err.to_string().contains("reef.selected"), "{err}");
+        // The physics fish: a smaller count lets go of the fish and of the
+        // hand control on it.
+        let mut s = Settings::default();
+        s.apply_patch(&json!({"physics": {"fish_count": 6, "selected": 5, "hand_control": true}}))
+            .unwrap();
+        s.apply_patch(&json!({"physics": {"fish_count": 3}}))
+            .unwrap();
+        assert_eq!((s.physics.selected, s.physics.hand_control), (None, false));
     }
 
     #[test]

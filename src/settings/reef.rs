@@ -126,6 +126,22 @@ impl ReefSettings {
         }
     }
 
+    /// Chooses `demo` as its button in the panel does: the demo's own fish
+    /// and food counts, and no fish selected, except in *Feeding*, which is
+    /// about bites too small to see from across the tank and so opens
+    /// following its first fish.
+    pub fn choose_demo(&mut self, demo: ReefScene) {
+        if self.demo == demo {
+            return;
+        }
+        self.demo = demo;
+        self.prey_count = None;
+        self.food_count = None;
+        let feeding = demo == ReefScene::Feeding;
+        self.selected = feeding.then_some(0);
+        self.follow = feeding;
+    }
+
     /// Animals in the reef these settings build.
     pub fn animal_count(&self) -> usize {
         let prey = self

@@ -81,15 +81,8 @@ fn demo_ui(ui: &mut egui::Ui, reef: &mut ReefSettings, rects: &mut WidgetRects) 
                     .selectable_label(reef.demo == demo, demo.label())
                     .on_hover_text(demo.explanation());
                 rects.insert(&format!("reef_demo_{}", demo_name(demo)), button.rect);
-                if button.clicked() && reef.demo != demo {
-                    reef.demo = demo;
-                    reef.prey_count = None;
-                    reef.food_count = None;
-                    // The feeding demo is about bites, too small to see from across
-                    // the tank: it opens following its first fish.
-                    let feeding = demo == ReefScene::Feeding;
-                    reef.selected = feeding.then_some(0);
-                    reef.follow = feeding;
+                if button.clicked() {
+                    reef.choose_demo(demo);
                 }
             }
         })

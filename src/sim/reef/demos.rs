@@ -143,10 +143,12 @@ impl ReefScene {
             Self::PredatorAndSchool => matches!(kind, ReefEventKind::AtePrey { .. }),
             Self::Courtship => spawned,
             Self::Feeding => matches!(kind, ReefEventKind::AteFood { .. }),
+            // What its question asks: does the school split, join up
+            // again, or go by whole? Reaching the pillar is only the
+            // approach (a skip that stopped there answered nothing).
             Self::SchoolMeetsObstacle => matches!(
                 kind,
-                ReefEventKind::SchoolAtPillar { .. }
-                    | ReefEventKind::SchoolSplit { .. }
+                ReefEventKind::SchoolSplit { .. }
                     | ReefEventKind::SchoolJoined { .. }
                     | ReefEventKind::SchoolPassedWhole { .. }
             ),
