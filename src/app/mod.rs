@@ -330,6 +330,8 @@ impl eframe::App for ShoalApp {
             let hidden_count = settings.studio.count_is_mystery_for_student(settings.scene);
             status_line_ui(ui, &status, self.caps, hidden_count);
         });
+        self.widget_rects
+            .insert("status_line", status_panel.response.rect);
         let _ = status_panel.response.accessible_name(ts("app-status"));
 
         // The scene's panel: refreshed from the simulation, then the panel under
@@ -370,7 +372,12 @@ impl eframe::App for ShoalApp {
             .show_collapsible(ui, &mut self.panel_open, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| {
                     ui.add_space(6.0);
-                    crate::ui::investigations_button(ui, &mut self.widget_rects);
+                    // The two ways into a lesson, on the first screen.
+                    let experiment = self
+                        .scene_panel
+                        .for_scene(settings.scene)
+                        .offers_experiment();
+                    crate::ui::investigations_button(ui, experiment, &mut self.widget_rects);
                     actions.extend(control_panel_ui(
                         ui,
                         &mut settings,

@@ -41,6 +41,26 @@ pub enum Framing {
     /// This point from this distance, from the default direction.
     Target { target_m: Vec3, distance_m: f32 },
 }
+/// How a portrait view (narrower than tall: a phone held upright) sees a box
+/// that is longer than it is deep: from its end (yaw −90°, so its length
+/// runs up the screen) and from well above (at least 0.9 rad, about 52°), so
+/// its floor fills the height the side view would leave empty. Measured on
+/// the 12 × 4.5 × 8 m tank in a phone's 390 × 550 view: 60 % of the view
+/// against 22 % from the front.
+pub const PORTRAIT_PITCH_RAD: f32 = 0.9;
+
+/// The direction `fitting` looks from: the one asked for, or in a portrait
+/// view the end-on view from above (see [`PORTRAIT_PITCH_RAD`]).
+fn direction_for(size: Vec3, yaw_rad: f32, pitch_rad: f32, aspect: f32) -> (f32, f32) {
+    if aspect < 1.0 && size.x > size.z {
+        (
+            -std::f32::consts::FRAC_PI_2,
+            pitch_rad.max(PORTRAIT_PITCH_RAD),
+        )
+    } else {
+        (yaw_rad, pitch_rad)
+    }
+}
 const MIN_DISTANCE_M: f32 = 1.0;
 const MAX_DISTANCE_M: f32 = 60.0;
 
@@ -64,8 +84,22 @@ impl OrbitCamera {
     /// A camera looking at the box `min_m`–`max_m` from `yaw_rad` and
     /// `pitch_rad` (radians; pitch up from level), as close as it can be with
     /// every corner in a view of `aspect` (a small margin kept), its target at
-    /// the box's centre plus `target_offset_m`.
+    /// the box's centre plus `target_offset_m`. A portrait view looks at a
+    /// long box from its end and above instead ([`PORTRAIT_PITCH_RAD`]).
     pub fn fitting(
+        min_m: Vec3,
+        max_m: Vec3,
+        yaw_rad: f32,
+        pitch_rad: f32,
+        target_offset_m: Vec3,
+        aspect: f32,
+    ) -> Self {
+        let (yaw_rad, pitch_rad) = direction_for(max_m - min_m, yaw_rad, pitch_rad, aspect);
+        Self::fitting_from(min_m, max_m, yaw_rad, pitch_rad, target_offset_m, aspect)
+    }
+
+    /// [`Self::fitting`] from exactly `yaw_rad` and `pitch_rad`.
+    fn fitting_from(
         min_m: Vec3,
         max_m: Vec3,
         yaw_rad: f32,
@@ -234,6 +268,75 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// The share of a view of `aspect` that the tank's outline covers.
+    fn tank_share(camera: &OrbitCamera, lo: Vec3, hi: Vec3, aspect: f32) -> f32 {
+        let m = camera.world_to_clip(aspect);
+        let mut points: Vec<glam::Vec2> = (0..8)
+            .map(|i| {
+                let corner = vec3(
+                    if i & 1 == 0 { lo.x } else { hi.x },
+                    if i & 2 == 0 { lo.y } else { hi.y },
+                    if i & 4 == 0 { lo.z } else { hi.z },
+                );
+                let clip = m * corner.extend(1.0);
+                clip.truncate().truncate() / clip.w
+            })
+            .collect();
+        // The convex hull (monotone chain), then its area; the view is 2 × 2.
+        points.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+        let cross = |o: glam::Vec2, a: glam::Vec2, b: glam::Vec2| (a - o).perp_dot(b - o);
+        let mut hull: Vec<glam::Vec2> = Vec::new();
+        for pass in [points.clone(), points.iter().rev().copied().collect()] {
+            let start = hull.len();
+            for p in pass {
+                while hull.len() >= start + 2
+                    && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
+                {
+                    hull.pop();
+                }
+                hull.push(p);
+            }
+            hull.pop();
+        }
+        let area: f32 = (0..hull.len())
+            .map(|i| hull[i].perp_dot(hull[(i + 1) % hull.len()]))
+            .sum::<f32>()
+            .abs()
+            * 0.5;
+        area / 4.0
+    }
+
+    #[test]
+    fn a_phone_held_upright_sees_the_tank_from_its_end_and_above_filling_the_view() {
+        let (lo, hi) = (vec3(-6.0, 0.0, -4.0), vec3(6.0, 4.5, 4.0));
+        // The schooling lab's view on a 390 × 844 phone (plots below it),
+        // and the whole phone screen.
+        for aspect in [390.0 / 550.0, 390.0 / 804.0] {
+            let upright = OrbitCamera::framing(lo, hi, aspect);
+            let front = OrbitCamera::fitting_from(
+                lo,
+                hi,
+                DEFAULT_YAW_RAD,
+                DEFAULT_PITCH_RAD,
+                Vec3::ZERO,
+                aspect,
+            );
+            let share = tank_share(&upright, lo, hi, aspect);
+            assert!(share >= 0.45, "aspect {aspect}: the tank covers {share}");
+            assert!(
+                share > 2.0 * tank_share(&front, lo, hi, aspect),
+                "aspect {aspect}: {share}"
+            );
+            assert!(upright.pitch_rad >= PORTRAIT_PITCH_RAD);
+        }
+        // A laptop's landscape view keeps the front view.
+        let laptop = OrbitCamera::framing(lo, hi, 950.0 / 560.0);
+        assert_eq!(
+            (laptop.yaw_rad, laptop.pitch_rad),
+            (DEFAULT_YAW_RAD, DEFAULT_PITCH_RAD)
+        );
     }
 
     #[test]

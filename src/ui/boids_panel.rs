@@ -128,6 +128,10 @@ pub struct BoidsPanel {
 }
 
 impl ScenePanel for BoidsPanel {
+    fn offers_experiment(&self) -> bool {
+        true
+    }
+
     fn before_frame(
         &mut self,
         lab: &mut Lab,
@@ -245,8 +249,6 @@ impl ScenePanel for BoidsPanel {
             // Locked or hidden rocks: the mouse only looks.
             self.tool = EditTool::Look;
         }
-        ui.add_space(4.0);
-        super::experiment_panel::experiment_button(ui, rects);
     }
 
     fn bottom_ui(

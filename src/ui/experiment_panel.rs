@@ -58,7 +58,7 @@ pub fn experiment_button(ui: &mut egui::Ui, rects: &mut WidgetRects) {
         return;
     }
     let r = ui
-        .button(ts("experiment-open"))
+        .add(egui::Button::new(ts("experiment-open")).min_size(egui::vec2(0.0, 30.0)))
         .on_hover_text(ts("experiment-open.help"));
     rects.insert("experiment", r.rect);
     if r.clicked() {

@@ -33,19 +33,25 @@ fn list_id() -> egui::Id {
     egui::Id::unique("investigations_list_open")
 }
 
-/// The side panel's *Investigations* button (at its top, on the first screen).
-pub fn investigations_button(ui: &mut egui::Ui, rects: &mut WidgetRects) {
-    let r = ui
-        .add(
-            egui::Button::new(egui::RichText::new(ts("inv-button")).strong())
-                .min_size(egui::vec2(ui.available_width(), 30.0)),
-        )
-        .on_hover_text(ts("inv-button.help"));
-    rects.insert("investigations", r.rect);
-    if r.clicked() {
-        let open = ui.data(|d| d.get_temp::<bool>(list_id()).unwrap_or(false));
-        ui.data_mut(|d| d.insert_temp(list_id(), !open));
-    }
+/// The side panel's *Investigations* button (at its top, on the first
+/// screen), and beside it *Experiment…* where the scene offers one.
+pub fn investigations_button(ui: &mut egui::Ui, experiment: bool, rects: &mut WidgetRects) {
+    ui.horizontal(|ui| {
+        let r = ui
+            .add(
+                egui::Button::new(egui::RichText::new(ts("inv-button")).strong())
+                    .min_size(egui::vec2(0.0, 30.0)),
+            )
+            .on_hover_text(ts("inv-button.help"));
+        rects.insert("investigations", r.rect);
+        if r.clicked() {
+            let open = ui.data(|d| d.get_temp::<bool>(list_id()).unwrap_or(false));
+            ui.data_mut(|d| d.insert_temp(list_id(), !open));
+        }
+        if experiment {
+            super::experiment_panel::experiment_button(ui, rects);
+        }
+    });
 }
 
 /// What the window asks of the app.

@@ -38,6 +38,8 @@ fn caption_value(text: &str, side: Side, comparing: bool) -> String {
 /// from a sample, fixed y range.
 struct Metric {
     title: &'static str,
+    /// The title's short form, if it has one (`.short`: without its unit).
+    short: Option<&'static str>,
     help: &'static str,
     value: fn(&MetricsSample) -> f64,
     y_range: Option<(f64, f64)>,
@@ -46,30 +48,35 @@ struct Metric {
 const METRICS: [Metric; 5] = [
     Metric {
         title: "metrics-polarization",
+        short: None,
         help: "metrics-polarization.help",
         value: |s| f64::from(s.polarization),
         y_range: Some((0.0, 1.0)),
     },
     Metric {
         title: "metrics-milling",
+        short: None,
         help: "metrics-milling.help",
         value: |s| f64::from(s.milling),
         y_range: Some((0.0, 1.0)),
     },
     Metric {
         title: "metrics-nearest",
+        short: Some("metrics-nearest.short"),
         help: "metrics-nearest.help",
         value: |s| f64::from(s.nnd_body_lengths),
         y_range: None,
     },
     Metric {
         title: "metrics-groups",
+        short: None,
         help: "metrics-groups.help",
         value: |s| f64::from(s.groups),
         y_range: None,
     },
     Metric {
         title: "metrics-speed",
+        short: Some("metrics-speed.short"),
         help: "metrics-speed.help",
         value: |s| f64::from(s.mean_speed),
         y_range: None,
@@ -148,6 +155,7 @@ pub fn metrics_panel_ui(
                             plot_width,
                             caption_height,
                             ts(metric.title),
+                            metric.short.map(ts),
                             ts(metric.help),
                             |ui| {
                                 // Right to left: the last tank first.
@@ -223,14 +231,18 @@ pub fn metrics_panel_ui(
 
 /// A caption row of `height` points: the title in strong text (hover: `help`),
 /// then `values`.
-/// The values come first (at the right) and the title takes what is left,
-/// shortened with "…" if it must (its hover shows it whole): a caption never
-/// widens its plot's column, so the panel never grows wider than the window.
+/// The values come first (at the right) and the title takes what is left:
+/// the whole title if it fits, else its short form `short` ("Nearest
+/// neighbour" for "Nearest neighbour (body lengths)"), else the short form cut
+/// with "…". Its hover (and its name for a screen reader) is always the
+/// whole title: a caption never widens its plot's column, so the panel never
+/// grows wider than the window.
 fn caption_ui(
     ui: &mut egui::Ui,
     width: f32,
     height: f32,
     title: &str,
+    short: Option<&str>,
     help: &str,
     values: impl FnOnce(&mut egui::Ui),
 ) {
@@ -240,8 +252,24 @@ fn caption_ui(
         |ui| {
             ui.set_width(width);
             values(ui);
-            ui.add(egui::Label::new(egui::RichText::new(title).strong()).truncate())
-                .on_hover_text(format!("{title}: {help}"));
+            let text_width = |text: &str| {
+                egui::WidgetText::from(egui::RichText::new(text).strong())
+                    .into_galley(
+                        ui,
+                        Some(egui::TextWrapMode::Extend),
+                        f32::INFINITY,
+                        egui::TextStyle::Body,
+                    )
+                    .size()
+                    .x
+            };
+            let shown = match short {
+                Some(short) if text_width(title) > ui.available_width() => short,
+                _ => title,
+            };
+            ui.add(egui::Label::new(egui::RichText::new(shown).strong()).truncate())
+                .on_hover_text(format!("{title}: {help}"))
+                .accessible_name(title);
         },
     );
 }
@@ -262,6 +290,7 @@ fn urges_plot_ui(
         ui.available_width(),
         caption_height,
         ts("metrics-urges"),
+        Some(ts("metrics-urges.short")),
         ts("metrics-urges.help"),
         |_| {},
     );

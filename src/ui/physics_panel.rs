@@ -81,8 +81,6 @@ fn physics_controls_ui(
             .on_hover_text(ts("physics-show-forces.help"));
         rects.insert("show_forces", forces.rect);
     });
-    ui.add_space(4.0);
-    super::experiment_panel::experiment_button(ui, rects);
 
     ui.separator();
     match physics.selected {
@@ -310,6 +308,10 @@ pub struct PhysicsPanel {
 }
 
 impl ScenePanel for PhysicsPanel {
+    fn offers_experiment(&self) -> bool {
+        true
+    }
+
     fn controls_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings, rects: &mut WidgetRects) {
         self.turn_asked = physics_controls_ui(ui, &mut settings.physics, rects);
     }

@@ -268,6 +268,10 @@ impl Default for ReefPanel {
 }
 
 impl ScenePanel for ReefPanel {
+    fn offers_experiment(&self) -> bool {
+        true
+    }
+
     fn before_frame(
         &mut self,
         lab: &mut Lab,
@@ -295,8 +299,6 @@ impl ScenePanel for ReefPanel {
         demo_ui(ui, &mut settings.reef, rects);
         self.skip.controls_ui(ui, settings, rects);
         reef_sliders_ui(ui, &mut settings.reef, rects);
-        ui.add_space(4.0);
-        super::experiment_panel::experiment_button(ui, rects);
         selection_ui(ui, &mut settings.reef, self.selected_name.as_deref(), rects);
         minds_ui(
             ui,

@@ -153,6 +153,12 @@ pub trait ScenePanel {
         None
     }
 
+    /// Does the side panel offer *Experiment…* in this scene (at its top,
+    /// beside *Investigations*, where a laptop's first screen shows it)?
+    fn offers_experiment(&self) -> bool {
+        false
+    }
+
     /// True while a drag on the view belongs to the scene (a rock being moved),
     /// not to the camera.
     fn holds_drag(&self) -> bool {

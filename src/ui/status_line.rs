@@ -18,10 +18,9 @@ pub fn status_line_ui(
     count_is_mystery: bool,
 ) {
     ui.horizontal_wrapped(|ui| {
-        ui.label(tr!("status-fps", fps = num(state.fps, 0)))
-            .on_hover_text(ts("status-fps.help"));
+        item(ui, tr!("status-fps", fps = num(state.fps, 0))).on_hover_text(ts("status-fps.help"));
         ui.separator();
-        ui.label(tr!("status-steps", steps = num(state.steps_per_sec, 0)))
+        item(ui, tr!("status-steps", steps = num(state.steps_per_sec, 0)))
             .on_hover_text(ts("status-steps.help"));
         ui.separator();
         let aa = if caps.msaa_samples > 1 {
@@ -39,26 +38,34 @@ pub fn status_line_ui(
                     percent = num(f64::from(d.scale * d.scale * 100.0), 0)
                 )
             });
-        ui.label(format!("{}{aa}{detail}", caps.tier.label()))
+        item(ui, format!("{}{aa}{detail}", caps.tier.label()))
             .on_hover_text(ts("status-graphics.help"));
         ui.separator();
-        ui.label(tr!("status-time", seconds = num(state.time_secs, 1)))
+        item(ui, tr!("status-time", seconds = num(state.time_secs, 1)))
             .on_hover_text(ts("status-time.help"));
         ui.separator();
         if count_is_mystery {
-            ui.label(ts("status-fish-mystery"))
-                .on_hover_text(ts("status-fish-mystery.help"));
+            item(ui, ts("status-fish-mystery")).on_hover_text(ts("status-fish-mystery.help"));
         } else {
-            ui.label(tr!("fish-count", count = state.fish_count));
+            item(ui, tr!("fish-count", count = state.fish_count));
         }
         if state.paused {
             ui.separator();
-            ui.label(egui::RichText::new(ts("status-paused")).strong());
+            item(ui, egui::RichText::new(ts("status-paused")).strong());
         }
         if state.slowed_down {
             ui.separator();
-            ui.label(egui::RichText::new(ts("status-slowed")).color(ui.visuals().warn_fg_color))
-                .on_hover_text(ts("status-slowed.help"));
+            item(
+                ui,
+                egui::RichText::new(ts("status-slowed")).color(ui.visuals().warn_fg_color),
+            )
+            .on_hover_text(ts("status-slowed.help"));
         }
     });
+}
+
+/// One item of the status line, kept whole: a narrow window moves it to the
+/// next line rather than breaking it in two ("tank at 25 % of the / pixels").
+fn item(ui: &mut egui::Ui, text: impl Into<egui::WidgetText>) -> egui::Response {
+    ui.add(egui::Label::new(text).wrap_mode(egui::TextWrapMode::Extend))
 }

@@ -52,6 +52,21 @@ describe("phone, laptop and projector (WebGL2 tier)", () => {
       assert.ok(w.aquarium.width > 350, `the tank is visible: ${JSON.stringify(w.aquarium)}`);
       assert.ok(w.show_panel, "a Controls button opens the drawer");
       assert.equal(w.compare, undefined, "the side panel starts closed");
+      // Nothing overlaps: Controls and Reset view sit apart over the tank.
+      const apart = (a, b) =>
+        a.x + a.width <= b.x || b.x + b.width <= a.x || a.y + a.height <= b.y || b.y + b.height <= a.y;
+      assert.ok(apart(w.show_panel, w.reset_view), `${JSON.stringify(w.show_panel)} / ${JSON.stringify(w.reset_view)}`);
+      // The tank's view takes more than half the screen, and the phone held
+      // upright sees the tank from its end and above, so the tank fills it
+      // (src/render/orbit_camera.rs measures the share natively).
+      assert.ok(w.aquarium.width * w.aquarium.height >= 0.5 * 390 * 844, `view ${JSON.stringify(w.aquarium)}`);
+      const camera = (await page.evaluate(() => window.shoal.state())).camera;
+      assert.ok(camera.pitch_deg >= 50, `seen from above: ${JSON.stringify(camera)}`);
+      assert.ok(Math.abs(Math.abs(camera.yaw_deg) - 90) < 1, `from the tank's end: ${JSON.stringify(camera)}`);
+      // The status line sits below the tank, on the screen (its items wrap
+      // whole onto a second line rather than run off the edge).
+      const status = await page.evaluate(() => window.shoal.widgets().status_line);
+      assert.ok(status.y >= w.aquarium.y + w.aquarium.height && status.y + status.height <= 844, JSON.stringify(status));
       saveArtifact("screen-phone.png", await page.screenshot());
 
       await clickUntil(page, "show_panel", () => window.shoal.widgets().hide_panel);
@@ -128,6 +143,12 @@ describe("phone, laptop and projector (WebGL2 tier)", () => {
         assert.ok(w.plot_0.height >= minPlot, `plot height ${w.plot_0.height} CSS px`);
         assert.ok(w.plot_urges, "the urges are a plot of their own");
         assert.ok(w.reset_view.y + w.reset_view.height <= w.view_left.y + w.view_left.height, "Reset view is in sight");
+        // The two ways into a lesson are on the first screen, no scrolling.
+        for (const name of ["investigations", "experiment"]) {
+          assert.ok(w[name] && w[name].y + w[name].height <= height / 3, `${name}: ${JSON.stringify(w[name])}`);
+        }
+        const camera = (await page.evaluate(() => window.shoal.state())).camera;
+        assert.ok(camera.pitch_deg < 20, `a landscape screen keeps the front view: ${JSON.stringify(camera)}`);
         // The bug this guards against (issue 14) grew the panel a pixel a frame.
         const seen = await heightsOver(page, 40);
         assert.equal(seen.size, 1, `panel/tank heights over 40 frames: ${[...seen]}`);
