@@ -186,7 +186,6 @@ impl Lab {
         }
         let rebuild = before.seed != self.settings.seed
             || before.scene != self.settings.scene
-            || before.learning.training_key() != self.settings.learning.training_key()
             || self
                 .settings
                 .scene
@@ -670,6 +669,39 @@ mod tests {
             let now = run.scene().reef().unwrap().animals()[i].body.position_m();
             assert!(c.distance(now) < 0.1);
         }
+    }
+
+    #[test]
+    fn a_learning_setting_changed_while_another_scene_shows_leaves_that_scene_alone() {
+        // The schooling lab runs; a script (or a link) changes the learning
+        // lab's training. The fish on show are not started again: the new
+        // training waits for the learning lab's next visit.
+        let mut lab = Lab::new(Settings::default());
+        lab.step(30);
+        let generation = lab.world_generation();
+        let mut s = lab.settings().clone();
+        s.learning.annealing_steps += 10;
+        lab.apply_settings(s);
+        assert_eq!(lab.world_generation(), generation);
+        assert_eq!(lab.runs()[0].steps(), 30);
+        // In the learning lab the same change starts a new training.
+        let mut s = lab.settings().clone();
+        s.scene = Scene::Learning;
+        lab.apply_settings(s);
+        let annealing = |lab: &Lab| lab.runs()[0].scene().learning().unwrap().annealing_steps();
+        assert_eq!(
+            annealing(&lab),
+            u64::from(lab.settings().learning.annealing_steps)
+        );
+        let generation = lab.world_generation();
+        let mut s = lab.settings().clone();
+        s.learning.annealing_steps += 10;
+        lab.apply_settings(s);
+        assert_ne!(lab.world_generation(), generation);
+        assert_eq!(
+            annealing(&lab),
+            u64::from(lab.settings().learning.annealing_steps)
+        );
     }
 
     #[test]

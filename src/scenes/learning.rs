@@ -39,6 +39,11 @@ impl SceneClass for LearningScene {
         Scene::Learning
     }
 
+    /// A new species or number of annealing steps is a new training.
+    fn needs_rebuild(&self, before: &Settings, after: &Settings) -> bool {
+        before.learning.training_key() != after.learning.training_key()
+    }
+
     fn build(
         &self,
         settings: &Settings,
