@@ -498,7 +498,7 @@ mod tests {
             .unwrap_err();
         assert!(err.to_string().contains("speed"), "{err}");
         assert_eq!(lab.settings(), &Settings::default());
-        assert_eq!(lab.boids().unwrap().fish().len(), 200);
+        assert_eq!(lab.scene().boids().unwrap().fish().len(), 200);
     }
 
     #[test]

@@ -282,7 +282,7 @@ mod tests {
                 .iter()
                 .all(|r| r.sim_steps_per_sec > 0.0 && r.frame_ms > 0.0)
         );
-        assert_eq!(lab.boids().unwrap().fish().len(), 200);
+        assert_eq!(lab.scene().boids().unwrap().fish().len(), 200);
         let e = report.experiment.expect("the experiment is timed");
         assert_eq!((e.name.as_str(), e.runs), ("alignment-sweep", 1));
         assert!(e.runs_per_sec > 0.0 && e.steps_per_sec > e.runs_per_sec);

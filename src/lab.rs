@@ -9,7 +9,7 @@ use glam::Vec3;
 use crate::clock::{FixedStepClock, RateMeter};
 use crate::i18n::{arg, tr};
 use crate::settings::physics::TURN_MAX_DEG;
-use crate::settings::{Scene, Settings, Side};
+use crate::settings::{Settings, Side};
 use crate::sim::World;
 use crate::sim::learning::learning_lab::LearningLab;
 use crate::sim::learning::learning_lab::RaceNotReady;
@@ -133,19 +133,10 @@ impl Lab {
         &self.runs[0].scene
     }
 
-    /// The left (or only) tank's boid world, in the aquarium and the schooling
-    /// lab.
-    pub fn boids(&self) -> Option<&World> {
-        self.runs[0].scene.boids()
-    }
-
     /// The left (or only) tank's learning lab, for the app's actions (race,
     /// save, load) and training.
     pub fn learning_mut(&mut self) -> Option<&mut LearningLab> {
-        match &mut self.runs[0].scene {
-            SceneWorld::Learning(l) => Some(l),
-            _ => None,
-        }
+        self.runs[0].scene.learning_mut()
     }
 
     /// The tanks shown: one, or two while comparing.
@@ -217,8 +208,8 @@ impl Lab {
         self.skip_outcome = None;
         let mut learning = self.parked_learning.take();
         for run in std::mem::take(&mut self.runs) {
-            if let SceneWorld::Learning(l) = run.scene {
-                learning = Some(*l);
+            if let Some(l) = run.scene.into_learning() {
+                learning = Some(l);
             }
         }
         self.runs = Side::BOTH[..self.wanted_runs()]
@@ -247,7 +238,7 @@ impl Lab {
 
     /// Starts the learning lab's training again from a brain-dead fish.
     pub fn reset_training(&mut self) {
-        if self.settings.scene == Scene::Learning {
+        if self.learning_mut().is_some() {
             self.parked_learning = None;
             self.runs.clear();
             self.rebuild();
@@ -426,6 +417,7 @@ impl Lab {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::settings::Scene;
 
     #[test]
     fn every_scene_draws_its_animals_between_their_last_two_states() {
@@ -463,7 +455,8 @@ mod tests {
     }
 
     fn positions(lab: &Lab) -> Vec<Vec3> {
-        lab.boids()
+        lab.scene()
+            .boids()
             .unwrap()
             .fish()
             .iter()
@@ -478,9 +471,9 @@ mod tests {
             ..Settings::default()
         });
         assert_eq!(lab.advance_frame(0.1, 0.1), 0);
-        assert_eq!(lab.boids().unwrap().steps(), 0);
+        assert_eq!(lab.scene().boids().unwrap().steps(), 0);
         lab.step(3);
-        assert_eq!(lab.boids().unwrap().steps(), 3);
+        assert_eq!(lab.scene().boids().unwrap().steps(), 3);
     }
 
     #[test]
@@ -494,7 +487,11 @@ mod tests {
             seed: 99,
             ..b.settings().clone()
         });
-        assert_eq!(b.boids().unwrap().steps(), 0, "a new seed starts a new run");
+        assert_eq!(
+            b.scene().boids().unwrap().steps(),
+            0,
+            "a new seed starts a new run"
+        );
         b.step(120);
         assert_ne!(positions(&a), positions(&b));
         b.reset(Some(1));
@@ -509,8 +506,8 @@ mod tests {
         let mut settings = lab.settings().clone();
         settings.left.fish_count = 37;
         lab.apply_settings(settings);
-        assert_eq!(lab.boids().unwrap().fish().len(), 37);
-        assert_eq!(lab.boids().unwrap().steps(), 10);
+        assert_eq!(lab.scene().boids().unwrap().fish().len(), 37);
+        assert_eq!(lab.scene().boids().unwrap().steps(), 10);
     }
 
     #[test]
@@ -529,14 +526,14 @@ mod tests {
             fast.advance_frame(1.0 / 60.0, now);
         }
         assert!(
-            (14..=15).contains(&slow.boids().unwrap().steps()),
+            (14..=15).contains(&slow.scene().boids().unwrap().steps()),
             "{}",
-            slow.boids().unwrap().steps()
+            slow.scene().boids().unwrap().steps()
         );
         assert!(
-            (479..=480).contains(&fast.boids().unwrap().steps()),
+            (479..=480).contains(&fast.scene().boids().unwrap().steps()),
             "{}",
-            fast.boids().unwrap().steps()
+            fast.scene().boids().unwrap().steps()
         );
     }
 
@@ -546,7 +543,7 @@ mod tests {
         lab.advance_frame(1.5 / 60.0, 0.0);
         let alpha = lab.clock.alpha();
         assert!(alpha > 0.0 && alpha < 1.0);
-        for (i, fish) in lab.boids().unwrap().fish().iter().enumerate() {
+        for (i, fish) in lab.scene().boids().unwrap().fish().iter().enumerate() {
             let drawn = lab.drawn_position_m(i);
             let previous = lab.runs[0].previous_positions_m[i];
             let total = previous.distance(fish.position_m);
@@ -570,7 +567,10 @@ mod tests {
         let mut lab = physics_lab();
         let run = &lab.runs()[0];
         assert_eq!(run.scene().physics().unwrap().animals().len(), 5);
-        assert!(lab.boids().is_none(), "no boids in the physics tank");
+        assert!(
+            lab.scene().boids().is_none(),
+            "no boids in the physics tank"
+        );
         assert!(
             !lab.scene().obstacles().is_empty(),
             "the seed's rocks are there"
@@ -712,7 +712,7 @@ mod tests {
         };
         settings.learning.annealing_steps = 90;
         let mut lab = Lab::new(settings);
-        assert!(lab.boids().is_none() && lab.scene().obstacles().is_empty());
+        assert!(lab.scene().boids().is_none() && lab.scene().obstacles().is_empty());
         assert_eq!(lab.train(30), Ok(30));
         lab.step(10);
         assert_eq!(lab.runs()[0].steps(), 10, "the swimmer swims");
@@ -761,7 +761,7 @@ mod tests {
         s.speed = 2.0;
         s.left.fish_count = 500;
         lab.apply_settings(s);
-        assert!(lab.boids().is_none() && lab.scene().obstacles().is_empty());
+        assert!(lab.scene().boids().is_none() && lab.scene().obstacles().is_empty());
         // A different length, or Reset training, starts from a brain-dead fish.
         lab.reset_training();
         assert_eq!(

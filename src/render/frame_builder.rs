@@ -285,7 +285,7 @@ mod tests {
         );
         let mut builder = FrameBuilder::default();
         let first = builder.build(&lab.runs()[0], 1.0, &camera, [800, 450], 0.0, 0);
-        assert_eq!(first.fish.len(), lab.boids().unwrap().fish().len());
+        assert_eq!(first.fish.len(), lab.scene().boids().unwrap().fish().len());
         assert!(
             first
                 .fish

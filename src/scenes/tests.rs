@@ -197,12 +197,6 @@ const MAY_NAME_A_SCENE: &[(&str, &str)] = &[
     ("src/ui/reef_skip.rs", "the reef's panel"),
     ("src/ui/learning_panel.rs", "the learning lab's panel"),
     (
-        "src/lab.rs",
-        "the lab keeps the learning lab's training while another scene shows, trains it \
-         between frames and runs its window.shoal commands (train, race, reset); and hands \
-         the tests the boid world (Lab::boids)",
-    ),
-    (
         "src/investigation/measure.rs",
         "the Learning to swim investigation races the learning lab's fish",
     ),

@@ -583,6 +583,23 @@ impl SceneWorld {
             _ => None,
         }
     }
+
+    /// The learning lab, to train, race, save or load it.
+    pub fn learning_mut(&mut self) -> Option<&mut LearningLab> {
+        match self {
+            Self::Learning(w) => Some(w),
+            _ => None,
+        }
+    }
+
+    /// The learning lab this world is, to keep while another scene shows
+    /// (its training is minutes of work); `None` for every other world.
+    pub fn into_learning(self) -> Option<LearningLab> {
+        match self {
+            Self::Learning(w) => Some(*w),
+            _ => None,
+        }
+    }
 }
 
 /// The centre of a body's nodes.
