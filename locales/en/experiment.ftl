@@ -87,6 +87,11 @@ experiment-level-off = off
 experiment-no-run-yet = No run has finished yet.
 experiment-plot-title = { $measure } · { $summary }
 experiment-no-factor = (no factor)
+experiment-interval-about = Bars and [brackets]: a 95 % interval. Run many more seeds and their average would very likely fall inside it. It is worked out by drawing again from the seeds you ran (a bootstrap), so it never goes past what the measure can be.
+experiment-few-seeds = { $count ->
+    [one] Only { $count } seed per level: these intervals are rough. Use 5 or more seeds for a surer answer.
+   *[other] Only { $count } seeds per level: these intervals are rough. Use 5 or more seeds for a surer answer.
+}
 experiment-table-title = Mean over seeds [95 % interval]
 experiment-table-watch = watch a run
 experiment-interval = { $mean } [{ $low }, { $high }]

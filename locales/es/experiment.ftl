@@ -105,6 +105,11 @@ experiment-level-off = apagado
 experiment-no-run-yet = Todavía no ha terminado ninguna corrida.
 experiment-plot-title = { $measure } · { $summary }
 experiment-no-factor = (ningún factor)
+experiment-interval-about = Barras y [corchetes]: un intervalo del 95 %. Si corrieras muchas más semillas, su promedio caería casi seguro dentro de él. Se calcula volviendo a sortear entre las semillas que corriste (un bootstrap), así que nunca se sale de lo que la medida puede valer.
+experiment-few-seeds = { $count ->
+    [one] Solo { $count } semilla por nivel: estos intervalos son aproximados. Usa 5 semillas o más para una respuesta más segura.
+   *[other] Solo { $count } semillas por nivel: estos intervalos son aproximados. Usa 5 semillas o más para una respuesta más segura.
+}
 experiment-table-title = Promedio de las semillas [intervalo del 95 %]
 experiment-table-watch = ver una corrida
 experiment-interval = { $mean } [{ $low }; { $high }]

@@ -108,6 +108,13 @@ pub fn results_ui(
         }
     }
     ui.add_space(4.0);
+    ui.label(egui::RichText::new(ts("experiment-interval-about")).small());
+    let fewest = rows.iter().map(|r| r.n).min().unwrap_or(0);
+    if fewest < crate::experiment::summary::FEW_SEEDS {
+        let warning = tr!("experiment-few-seeds", count = fewest);
+        ui.label(egui::RichText::new(warning).color(ui.visuals().warn_fg_color));
+    }
+    ui.add_space(4.0);
     ui.label(egui::RichText::new(ts("experiment-table-title")).strong());
     // A solid scroll bar, under the table: a floating one would lie over the
     // last row's watch buttons and take their clicks.
