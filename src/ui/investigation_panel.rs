@@ -99,6 +99,18 @@ const FRAME_SIDES: f32 = 16.0;
 /// Height of a window's title bar and frame, points.
 const TITLE_AND_FRAME: f32 = 48.0;
 
+/// The student's name this browser remembers (none natively).
+fn stored_student_name() -> String {
+    #[cfg(target_arch = "wasm32")]
+    {
+        crate::web::stored_student_name()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        String::new()
+    }
+}
+
 /// The side panel's *Investigations* button (at its top, on the first screen).
 pub fn investigations_button(ui: &mut egui::Ui, rects: &mut WidgetRects) {
     let r = ui
@@ -200,23 +212,14 @@ impl InvestigationPanel {
 
     /// The student's name (read once from this browser's memory).
     fn student(&mut self) -> &mut String {
-        self.student.get_or_insert_with(|| {
-            #[cfg(target_arch = "wasm32")]
-            {
-                crate::web::stored_student_name()
-            }
-            #[cfg(not(target_arch = "wasm32"))]
-            {
-                String::new()
-            }
-        })
+        self.student.get_or_insert_with(stored_student_name)
     }
 
     /// Who, when and where, for the record (`page`: the page's address).
     fn record_info(&self, page: &str) -> record::RecordInfo {
         let (date, time) = record::local_now();
         record::RecordInfo {
-            student: self.student.clone().unwrap_or_default(),
+            student: self.student.clone().unwrap_or_else(stored_student_name),
             date,
             time,
             page: page.to_owned(),
