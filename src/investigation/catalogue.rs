@@ -338,7 +338,10 @@ pub const INVESTIGATIONS: [Investigation; 5] = [
                                 "training": false, "controller": "learned"}}"#,
         run_hint: Text("inv-learning.run-hint"),
         measurement: MeasurementKind::LearningRace { secs: 7.4 },
-        prompts: &[prompt("inv-learning.prompt-1", Shows::Result), prompt("inv-learning.prompt-2", Shows::Result)],
+        prompts: &[
+            prompt("inv-learning.prompt-1", Shows::Result),
+            prompt("inv-learning.prompt-2", Shows::Result),
+        ],
         reveal: Text("inv-learning.reveal"),
         reference: Text("inv-learning.reference"),
     },

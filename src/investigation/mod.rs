@@ -271,7 +271,10 @@ impl Progress {
             && let Ok(design) = serde_json::from_str::<serde_json::Value>(design)
             && let Some(replicates) = design.get("replicates")
         {
-            let count = replicates.get("count").and_then(|c| c.as_u64()).unwrap_or(1);
+            let count = replicates
+                .get("count")
+                .and_then(|c| c.as_u64())
+                .unwrap_or(1);
             let first = replicates
                 .get("first_seed")
                 .and_then(|c| c.as_u64())

@@ -60,7 +60,7 @@ pub fn html(done: &[Progress], info: &RecordInfo) -> String {
         concat!(
             "<!DOCTYPE html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\">", // words: HTML markup
             "<title>{title}</title><style>{STYLE}</style></head><body>\n", // words: HTML markup
-            "<h1>{title}</h1>\n<p class=\"who\">{}</p>\n<p>{}</p>\n"     // words: HTML markup
+            "<h1>{title}</h1>\n<p class=\"who\">{}</p>\n<p>{}</p>\n"       // words: HTML markup
         ),
         lang().code(),
         escape(&byline(info)),
@@ -266,7 +266,11 @@ fn axes(s: &mut String, y_max: f64, y_label: &str, whole: bool) -> f64 {
     } else {
         (0..=4).map(|k| y_max * f64::from(k) / 4.0).collect()
     };
-    let top = marks.last().copied().unwrap_or(y_max).max(f64::MIN_POSITIVE);
+    let top = marks
+        .last()
+        .copied()
+        .unwrap_or(y_max)
+        .max(f64::MIN_POSITIVE);
     for &v in &marks {
         let y = y0 - (y0 - y1) * v / top;
         let _ = write!(

@@ -40,7 +40,10 @@ fn outcome() -> Outcome {
                 unit: "fish",
             },
         ],
-        chart: Chart::Bars { unit: "fish", whole: true },
+        chart: Chart::Bars {
+            unit: "fish",
+            whole: true,
+        },
         timelines: vec![super::outcome::Timeline {
             label: "a".into(),
             points: vec![[0.0, 0.0], [90.0, 2.0], [180.0, 3.0]],
@@ -520,7 +523,10 @@ fn an_investigation_speaks_spanish() {
             summary: "x".into(),
             verdict: "y".into(),
             rows,
-            chart: Chart::Bars { unit: "0-1", whole: false },
+            chart: Chart::Bars {
+                unit: "0-1",
+                whole: false,
+            },
             timelines: Vec::new(),
             translations: Vec::new(),
         });
@@ -586,7 +592,8 @@ fn a_name_becomes_a_file_name_safe_on_every_system() {
     for name in ["Zoë O'Brien", "Łukasz", "名前 Ann", "tab\there"] {
         let s = slug(name);
         assert!(
-            s.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'),
+            s.chars()
+                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'),
             "{name}: {s}"
         );
     }
@@ -687,7 +694,10 @@ fn the_record_names_the_student_the_date_the_seed_and_a_link_that_reruns_it() {
     assert_ne!(q.rerun_link(&info.page), p.rerun_link(&info.page));
 
     let csv = record::csv(std::slice::from_ref(&p), &info);
-    assert!(csv.contains("# Ana <b>Pérez</b> & co, 2026-11-28 at 14:05"), "{csv}");
+    assert!(
+        csv.contains("# Ana <b>Pérez</b> & co, 2026-11-28 at 14:05"),
+        "{csv}"
+    );
     assert!(
         csv.contains(&format!("# why-school: seed 17; run it again: {href}")),
         "{csv}"
@@ -711,7 +721,10 @@ fn a_count_s_axis_is_marked_in_whole_numbers() {
     assert_eq!(whole_ticks(9.49, 5), vec![0.0, 2.0, 4.0, 6.0, 8.0, 10.0]);
     assert_eq!(whole_ticks(3.0, 5), vec![0.0, 1.0, 2.0, 3.0]);
     assert_eq!(whole_ticks(0.2, 5), vec![0.0, 1.0]);
-    assert_eq!(whole_ticks(47.0, 5), vec![0.0, 10.0, 20.0, 30.0, 40.0, 50.0]);
+    assert_eq!(
+        whole_ticks(47.0, 5),
+        vec![0.0, 10.0, 20.0, 30.0, 40.0, 50.0]
+    );
     for max in [0.5, 1.0, 2.7, 9.49, 12.6, 33.0, 101.0, 999.0] {
         let ticks = whole_ticks(max, 5);
         assert!(ticks.iter().all(|t| t.fract() == 0.0), "{max}: {ticks:?}");
@@ -747,7 +760,8 @@ fn a_count_s_axis_is_marked_in_whole_numbers() {
 fn an_explain_prompt_shows_the_plot_it_refers_to() {
     for inv in &INVESTIGATIONS {
         for prompt in inv.prompts {
-            let words = crate::i18n::with_lang(crate::i18n::Lang::En, || prompt.text().to_lowercase());
+            let words =
+                crate::i18n::with_lang(crate::i18n::Lang::En, || prompt.text().to_lowercase());
             let names_plot = ["plot", "curve", "sketch", "bars", "copies"]
                 .iter()
                 .any(|w| words.contains(w));
@@ -787,5 +801,9 @@ fn an_explain_prompt_shows_the_plot_it_refers_to() {
     c.start_run().unwrap();
     c.finish_run(outcome());
     c.advance().unwrap();
-    assert_eq!(c.explain_shows(), Shows::Result, "the curve with the sketch");
+    assert_eq!(
+        c.explain_shows(),
+        Shows::Result,
+        "the curve with the sketch"
+    );
 }

@@ -86,7 +86,10 @@ pub fn dock(aquarium: egui::Rect, width: f32) -> Option<Dock> {
                 egui::pos2(aquarium.left() + DOCK_GAP, top),
                 egui::pos2(aquarium.right() - DOCK_GAP, aquarium.bottom() - DOCK_GAP),
             ),
-            tanks: egui::Rect::from_min_max(aquarium.min, egui::pos2(aquarium.right(), top - DOCK_GAP)),
+            tanks: egui::Rect::from_min_max(
+                aquarium.min,
+                egui::pos2(aquarium.right(), top - DOCK_GAP),
+            ),
         });
     }
     None
@@ -305,18 +308,17 @@ impl InvestigationPanel {
             .constrain(true);
         // Docked beside (or under) the tanks, never over them; floating where
         // there is no room to dock.
-        let (window, width, tall) = match self.dock {
+        let (window, tall) = match self.dock {
             Some(dock) => {
-                let width = dock.window.width() - FRAME_SIDES;
+                let inner = dock.window.width() - FRAME_SIDES;
                 let tall = (dock.window.height() - TITLE_AND_FRAME).max(120.0);
                 (
                     window
                         .fixed_pos(dock.window.min)
                         .movable(false)
-                        .min_width(width)
-                        .max_width(width)
+                        .min_width(inner)
+                        .max_width(inner)
                         .max_height(tall),
-                    width,
                     tall,
                 )
             }
@@ -326,20 +328,18 @@ impl InvestigationPanel {
                     .max_width(width)
                     .max_height((screen.height() - 40.0).max(200.0))
                     .default_pos(screen.right_top() + egui::vec2(-width - 16.0, 44.0)),
-                width,
                 (screen.height() - 110.0).max(150.0),
             ),
         };
-        let _ = width;
         let shown = window.show(ctx, |ui| {
-                egui::ScrollArea::vertical()
-                    .max_height(tall)
-                    .min_scrolled_height(tall.min(700.0))
-                    .show(ui, |ui| {
-                        self.contents_ui(ui, lab, settings, page, rects, &mut actions);
-                        crate::ui::focus_view::keep_focus_in_view(ui, "investigation");
-                    });
-            });
+            egui::ScrollArea::vertical()
+                .max_height(tall)
+                .min_scrolled_height(tall.min(700.0))
+                .show(ui, |ui| {
+                    self.contents_ui(ui, lab, settings, page, rects, &mut actions);
+                    crate::ui::focus_view::keep_focus_in_view(ui, "investigation");
+                });
+        });
         if let Some(shown) = shown {
             rects.insert("investigation_window", shown.response.rect);
         }
@@ -833,15 +833,28 @@ mod tests {
                 d.window,
                 d.tanks
             );
-            assert!(a.contains_rect(d.window) && a.contains_rect(d.tanks), "{w}×{h}");
+            assert!(
+                a.contains_rect(d.window) && a.contains_rect(d.tanks),
+                "{w}×{h}"
+            );
             // Two tanks laid out in the room left, side by side or stacked,
             // each lies in it.
-            assert!(d.tanks.width() >= 200.0 && d.tanks.height() >= 150.0, "{w}×{h}: {:?}", d.tanks);
+            assert!(
+                d.tanks.width() >= 200.0 && d.tanks.height() >= 150.0,
+                "{w}×{h}: {:?}",
+                d.tanks
+            );
             if w >= 700.0 {
-                assert!(d.window.left() > d.tanks.right(), "beside the tanks at {w}×{h}");
+                assert!(
+                    d.window.left() > d.tanks.right(),
+                    "beside the tanks at {w}×{h}"
+                );
                 assert!(d.window.width() >= width, "the full width at {w}×{h}");
             } else {
-                assert!(d.window.top() > d.tanks.bottom(), "under the tanks on a phone");
+                assert!(
+                    d.window.top() > d.tanks.bottom(),
+                    "under the tanks on a phone"
+                );
             }
         }
         // A phone with its side panel open leaves no room: the window floats.

@@ -107,8 +107,7 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
             if *whole {
                 plot = plot.y_grid_spacer(whole_marks);
             }
-            plot
-                .y_axis_label(*unit)
+            plot.y_axis_label(*unit)
                 .include_y(0.0)
                 .allow_drag(false)
                 .allow_zoom(false)
