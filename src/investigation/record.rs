@@ -34,7 +34,7 @@ font-weight:600}.locked{background:#eef5fa;padding:.3em .6em;border-left:4px sol
 table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:.2em .6em;text-align:left}\
 td.n{text-align:right}.ref{font-size:.9em;color:#555}svg{max-width:100%;height:auto}\
 .answer{white-space:pre-wrap;background:#fafafa;padding:.3em .6em;border:1px solid #ddd}\
-.who{font-size:1.1em;font-weight:600}.run a{word-break:break-all}";
+.who{font-size:1.1em;font-weight:600}.run>a{overflow-wrap:anywhere}";
 
 /// Who made the record, when, and where Shoal runs: what makes it ready to
 /// hand in.
