@@ -49,7 +49,7 @@ const DOCK_MIN_TANK_HEIGHT: f32 = 160.0;
 
 /// Where the investigation window sits while open, and the room left to the
 /// tanks: the window never covers a tank, so what a prompt asks the student
-/// to watch ("the right shark near the school") stays in sight.
+/// to watch ("the shark near the school") stays in sight.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Dock {
     /// The window's outer rectangle (title bar and frame included).
