@@ -5,7 +5,7 @@
 // plot shows it again; the record names the student (asked once, remembered by
 // this browser only), the date, the seed and a link that opens the same run
 // again, in a file named by the investigation, the name and the date.
-// WebGL2 (SwiftShader).
+// Each tier (WebGL2, then WebGPU).
 import { test, describe, before, after } from "node:test";
 import assert from "node:assert/strict";
 import fs from "node:fs";
@@ -92,9 +92,7 @@ async function predict(page, choice) {
   await clickInWindow(page, "investigation_commit", () => window.shoal.state().investigation.step === "run");
 }
 
-const tier = TIERS.includes("webgl2") ? "webgl2" : TIERS[0];
-
-describe(`investigations a class can follow (${tier})`, () => {
+for (const tier of TIERS) describe(`investigations a class can follow (${tier})`, () => {
   let server, browser;
 
   before(async () => {
