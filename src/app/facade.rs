@@ -15,8 +15,11 @@ impl ShoalApp {
     /// `?investigation=<id>` in it opens that investigation, an
     /// `?experiment=…` reopens that experiment (its scene set up, its runs
     /// started); a link that cannot be opened is explained in a notice, and
-    /// the rest of the link stays as it was opened.
-    pub fn set_page_url(&mut self, url: String) {
+    /// the rest of the link stays as it was opened. `link_settings`: the
+    /// page opened with a share link's settings (`#v1.…`), which an
+    /// investigation then keeps instead of its own setup (the record's link
+    /// that runs an investigation again, its seed and all).
+    pub fn set_page_url(&mut self, url: String, link_settings: bool) {
         use crate::experiment::link as experiment_link;
         use crate::investigation::link as investigation_link;
         let investigation = investigation_link::from_url(&url);
@@ -27,7 +30,12 @@ impl ShoalApp {
         ));
         match investigation {
             Some(Ok(investigation)) => {
-                if let Err(err) = self.open_investigation(investigation, None) {
+                let opened = if link_settings {
+                    self.open_investigation_as_linked(investigation)
+                } else {
+                    self.open_investigation(investigation, None)
+                };
+                if let Err(err) = opened {
                     self.notice = Some(Notice::error(err.to_string()));
                 }
             }
@@ -101,6 +109,21 @@ impl ShoalApp {
         Ok(())
     }
 
+    /// Opens `investigation` on the settings the page's link set (not its
+    /// setup): the link that runs a recorded investigation again.
+    pub(super) fn open_investigation_as_linked(
+        &mut self,
+        investigation: &'static crate::investigation::Investigation,
+    ) -> Result<(), AutomationError> {
+        let settings = self.lab.settings().clone();
+        self.investigations
+            .open(&self.ctx, investigation)
+            .map_err(AutomationError::BadArgument)?;
+        self.lab.apply_settings(settings);
+        self.ctx.request_repaint();
+        Ok(())
+    }
+
     /// `shoal.set(patch)`, where the patch may name an `investigation` to open
     /// (or `null` to close it). All or nothing: an unknown id or a bad setting
     /// changes nothing.
@@ -127,9 +150,10 @@ impl ShoalApp {
         self.investigations.report()
     }
 
-    /// The student's record as `(html, csv)` (`shoal.investigation_record()`).
-    pub fn investigation_record(&self) -> (String, String) {
-        self.investigations.record_files()
+    /// The student's record as `(html, csv, the HTML file's name)`
+    /// (`shoal.investigation_record()`).
+    pub fn investigation_record(&self) -> (String, String, String) {
+        self.investigations.record_files(&self.page())
     }
 
     /// Shows an explanation at the top of the view (e.g. a share link that could not

@@ -451,10 +451,13 @@ impl eframe::App for ShoalApp {
             self.notice = Some(notice);
         }
         let mut run_investigation = false;
-        for action in
-            self.investigations
-                .windows_ui(ui.ctx(), &self.lab, &settings, &mut self.widget_rects)
-        {
+        for action in self.investigations.windows_ui(
+            ui.ctx(),
+            &self.lab,
+            &settings,
+            &page_url,
+            &mut self.widget_rects,
+        ) {
             match action {
                 crate::ui::InvestigationAction::Settings(s) => settings = *s,
                 crate::ui::InvestigationAction::Run => run_investigation = true,

@@ -106,8 +106,11 @@ impl ShoalApp {
         self.widget_rects.insert("aquarium", full);
         let frame_secs = ui.input(|i| i.stable_dt).min(0.5);
         self.follow_selected(settings, frame_secs);
+        // The investigation window docks beside (or under) the tanks: they are
+        // laid out in the room it leaves, so it never covers them.
+        let tanks = self.investigations.tanks_area(ui.ctx(), full);
         let count = self.lab.runs().len();
-        let rects = compare_layout(full, count);
+        let rects = compare_layout(tanks, count);
         self.views_stacked = rects.len() > 1 && rects[0].left() == rects[1].left();
         let aspect = rects[0].width() / rects[0].height().max(1.0);
         if self.camera_is_default && (aspect - self.framed_aspect).abs() > 0.01 {

@@ -80,6 +80,40 @@ pub const SHAPES: [Shape; 5] = [
     },
 ];
 
+/// What an explain prompt refers to, so the window shows it beside the
+/// question (the result shrinks to its summary line otherwise).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shows {
+    /// The question needs no picture (or looks at the tank, which the
+    /// investigation window never covers: see `ui::investigation_panel::dock`).
+    Words,
+    /// The result's chart: the bars, or the measured curve with the sketch.
+    Result,
+    /// The counts over the run (the catches plot).
+    Timelines,
+}
+
+/// One explain prompt: its words and what it asks the student to look at.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Prompt {
+    pub words: Text,
+    pub shows: Shows,
+}
+
+impl Prompt {
+    /// The question, in the language in force.
+    pub fn text(self) -> &'static str {
+        self.words.text()
+    }
+}
+
+const fn prompt(id: &'static str, shows: Shows) -> Prompt {
+    Prompt {
+        words: Text(id),
+        shows,
+    }
+}
+
 /// What a run measures (see `measure.rs`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum MeasurementKind {
@@ -125,7 +159,7 @@ pub struct Investigation {
     pub run_hint: Text,
     pub measurement: MeasurementKind,
     /// Two or three prompts to explain, one at a time.
-    pub prompts: &'static [Text],
+    pub prompts: &'static [Prompt],
     /// What scientists found, and how our model compares.
     pub reveal: Text,
     /// The references, in one line.
@@ -156,7 +190,7 @@ impl Investigation {
                 out.extend(shapes.iter().map(|s| s.name));
             }
         }
-        out.extend_from_slice(self.prompts);
+        out.extend(self.prompts.iter().map(|p| p.words));
         out
     }
 }
@@ -184,9 +218,9 @@ pub const INVESTIGATIONS: [Investigation; 5] = [
         run_hint: Text("inv-why-school.run-hint"),
         measurement: MeasurementKind::CatchesInBothTanks { secs: 180.0 },
         prompts: &[
-            Text("inv-why-school.prompt-1"),
-            Text("inv-why-school.prompt-2"),
-            Text("inv-why-school.prompt-3"),
+            prompt("inv-why-school.prompt-1", Shows::Timelines),
+            prompt("inv-why-school.prompt-2", Shows::Words),
+            prompt("inv-why-school.prompt-3", Shows::Words),
         ],
         reveal: Text("inv-why-school.reveal"),
         reference: Text("inv-why-school.reference"),
@@ -212,9 +246,9 @@ pub const INVESTIGATIONS: [Investigation; 5] = [
             secs: 10.0,
         },
         prompts: &[
-            Text("inv-leader.prompt-1"),
-            Text("inv-leader.prompt-2"),
-            Text("inv-leader.prompt-3"),
+            prompt("inv-leader.prompt-1", Shows::Words),
+            prompt("inv-leader.prompt-2", Shows::Result),
+            prompt("inv-leader.prompt-3", Shows::Words),
         ],
         reveal: Text("inv-leader.reveal"),
         reference: Text("inv-leader.reference"),
@@ -251,9 +285,9 @@ pub const INVESTIGATIONS: [Investigation; 5] = [
             ),
         },
         prompts: &[
-            Text("inv-which-urge.prompt-1"),
-            Text("inv-which-urge.prompt-2"),
-            Text("inv-which-urge.prompt-3"),
+            prompt("inv-which-urge.prompt-1", Shows::Result),
+            prompt("inv-which-urge.prompt-2", Shows::Result),
+            prompt("inv-which-urge.prompt-3", Shows::Words),
         ],
         reveal: Text("inv-which-urge.reveal"),
         reference: Text("inv-which-urge.reference"),
@@ -280,9 +314,9 @@ pub const INVESTIGATIONS: [Investigation; 5] = [
             secs: 30.0,
         },
         prompts: &[
-            Text("inv-how-swim.prompt-1"),
-            Text("inv-how-swim.prompt-2"),
-            Text("inv-how-swim.prompt-3"),
+            prompt("inv-how-swim.prompt-1", Shows::Result),
+            prompt("inv-how-swim.prompt-2", Shows::Result),
+            prompt("inv-how-swim.prompt-3", Shows::Words),
         ],
         reveal: Text("inv-how-swim.reveal"),
         reference: Text("inv-how-swim.reference"),
@@ -304,7 +338,10 @@ pub const INVESTIGATIONS: [Investigation; 5] = [
                                 "training": false, "controller": "learned"}}"#,
         run_hint: Text("inv-learning.run-hint"),
         measurement: MeasurementKind::LearningRace { secs: 7.4 },
-        prompts: &[Text("inv-learning.prompt-1"), Text("inv-learning.prompt-2")],
+        prompts: &[
+            prompt("inv-learning.prompt-1", Shows::Result),
+            prompt("inv-learning.prompt-2", Shows::Result),
+        ],
         reveal: Text("inv-learning.reveal"),
         reference: Text("inv-learning.reference"),
     },

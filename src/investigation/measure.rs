@@ -346,6 +346,7 @@ fn catches_outcome(lab: &Lab, secs: f64, progress: &Progress, choice: usize) -> 
         ],
         chart: Chart::Bars {
             unit: ts("inv-unit-fish-caught"),
+            whole: true,
         },
         timelines: catches_timelines(lab, secs),
         translations: Vec::new(),
@@ -471,6 +472,7 @@ impl AlignmentRun {
             rows,
             chart: Chart::Bars {
                 unit: ts("inv-unit-polarization"),
+                whole: false,
             },
             timelines: Vec::new(),
             translations: Vec::new(),
@@ -740,6 +742,7 @@ fn learning_advance(
             .collect(),
         chart: Chart::Bars {
             unit: ts("inv-unit-metres-swum"),
+            whole: false,
         },
         timelines: Vec::new(),
         translations: Vec::new(),

@@ -28,7 +28,7 @@ mod tests;
 use serde::Serialize;
 
 pub use self::catalogue::{
-    INVESTIGATIONS, Investigation, MeasurementKind, PredictionKind, Shape, Text,
+    INVESTIGATIONS, Investigation, MeasurementKind, PredictionKind, Prompt, Shape, Shows, Text,
 };
 pub use self::measure::Measurement;
 pub use self::outcome::{Chart, Outcome};
@@ -129,6 +129,9 @@ pub struct Progress {
     pub explanations: Vec<String>,
     /// The prompt on show in the explain step.
     pub prompt: usize,
+    /// The settings the run started from (its seed among them), for the
+    /// record's link that runs it again.
+    pub run_settings: Option<crate::settings::Settings>,
 }
 
 impl Progress {
@@ -142,6 +145,7 @@ impl Progress {
             run_started: false,
             explanations: vec![String::new(); investigation.prompts.len()],
             prompt: 0,
+            run_settings: None,
         }
     }
 
@@ -241,6 +245,55 @@ impl Progress {
             Step::Reveal => {}
         }
         Ok(())
+    }
+
+    /// What the explain step shows beside the prompt on show: the plot it
+    /// refers to ([`Shows::Words`] outside the explain step, or when the run
+    /// measured no such plot: then there is nothing to show).
+    pub fn explain_shows(&self) -> Shows {
+        if self.step != Step::Explain {
+            return Shows::Words;
+        }
+        let Some(outcome) = &self.outcome else {
+            return Shows::Words;
+        };
+        match self.investigation.prompts.get(self.prompt).map(|p| p.shows) {
+            Some(Shows::Timelines) if outcome.timelines.is_empty() => Shows::Result,
+            Some(shows) => shows,
+            None => Shows::Words,
+        }
+    }
+
+    /// The run's seeds: the seed it started from, or an experiment's
+    /// replicate seeds (empty before the run).
+    pub fn seeds(&self) -> Vec<u64> {
+        if let MeasurementKind::Sweep { design } = self.investigation.measurement
+            && let Ok(design) = serde_json::from_str::<serde_json::Value>(design)
+            && let Some(replicates) = design.get("replicates")
+        {
+            let count = replicates
+                .get("count")
+                .and_then(|c| c.as_u64())
+                .unwrap_or(1);
+            let first = replicates
+                .get("first_seed")
+                .and_then(|c| c.as_u64())
+                .unwrap_or(1);
+            return (first..first + count).collect();
+        }
+        self.run_settings.iter().map(|s| s.seed).collect()
+    }
+
+    /// The full link that opens this investigation with the settings its run
+    /// started from (`page` is the page's address): open it and press Run to
+    /// run it again. `None` before the run.
+    pub fn rerun_link(&self, page: &str) -> Option<String> {
+        let settings = self.run_settings.as_ref()?;
+        Some(format!(
+            "{}#{}",
+            link::with_investigation(page, self.investigation.id),
+            crate::settings::share_link::encode(settings)
+        ))
     }
 
     /// `state().investigation`.

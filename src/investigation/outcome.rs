@@ -31,8 +31,9 @@ pub struct CurvePoint {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Chart {
-    /// One bar per measured number (the rows).
-    Bars { unit: &'static str },
+    /// One bar per measured number (the rows); `whole` when they count
+    /// something (fish caught), so the axis is marked in whole numbers.
+    Bars { unit: &'static str, whole: bool },
     /// A measured curve, with the student's sketch over it: the sketch's height
     /// 1 is `y_max`.
     Curve {
@@ -129,6 +130,32 @@ pub fn shape_distance(shape: &Shape, points: &[CurvePoint], y_max: f64) -> f64 {
         })
         .sum();
     (sum / points.len() as f64).sqrt()
+}
+
+/// The step of whole-number axis marks over `0..=span`: 1, 2, 5, 10, 20,
+/// 50 … the smallest giving at most `most` steps.
+pub fn whole_step(span: f64, most: usize) -> f64 {
+    let most = most.max(1) as f64;
+    let mut unit = 1.0;
+    loop {
+        for factor in [1.0, 2.0, 5.0] {
+            let step = unit * factor;
+            if !span.is_finite() || span / step <= most || step >= 1e15 {
+                return step;
+            }
+        }
+        unit *= 10.0;
+    }
+}
+
+/// Whole-number marks from 0 to a mark at or above `max` (at least 1), at
+/// most `most` steps apart: for 9.49 and 5, 0 2 4 6 8 10. The axis of a
+/// count (fish caught) reads whole numbers only, never 3.16.
+pub fn whole_ticks(max: f64, most: usize) -> Vec<f64> {
+    let max = if max.is_finite() { max.max(1.0) } else { 1.0 };
+    let step = whole_step(max, most);
+    let steps = (max / step - 1e-9).ceil().max(1.0) as usize;
+    (0..=steps).map(|k| k as f64 * step).collect()
 }
 
 /// The first and last x of a curve.

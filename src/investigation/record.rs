@@ -33,11 +33,26 @@ padding:0 1em;color:#1d2733;line-height:1.45}h1{font-size:1.6em}section{border-t
 font-weight:600}.locked{background:#eef5fa;padding:.3em .6em;border-left:4px solid #2a6f97}\
 table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:.2em .6em;text-align:left}\
 td.n{text-align:right}.ref{font-size:.9em;color:#555}svg{max-width:100%;height:auto}\
-.answer{white-space:pre-wrap;background:#fafafa;padding:.3em .6em;border:1px solid #ddd}";
+.answer{white-space:pre-wrap;background:#fafafa;padding:.3em .6em;border:1px solid #ddd}\
+.who{font-size:1.1em;font-weight:600}.run>a{overflow-wrap:anywhere}";
+
+/// Who made the record, when, and where Shoal runs: what makes it ready to
+/// hand in.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RecordInfo {
+    /// The student's name as typed (may be empty).
+    pub student: String,
+    /// The local date, `2026-11-28`.
+    pub date: String,
+    /// The local time, `14:05`.
+    pub time: String,
+    /// The page's address, for the links that run each investigation again.
+    pub page: String,
+}
 
 /// The HTML file of `done` (the investigations with a committed prediction),
 /// in the language in force.
-pub fn html(done: &[Progress]) -> String {
+pub fn html(done: &[Progress], info: &RecordInfo) -> String {
     let mut out = String::new();
     let title = escape(ts("inv-record-title"));
     let _ = write!(
@@ -45,9 +60,10 @@ pub fn html(done: &[Progress]) -> String {
         concat!(
             "<!DOCTYPE html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\">", // words: HTML markup
             "<title>{title}</title><style>{STYLE}</style></head><body>\n", // words: HTML markup
-            "<h1>{title}</h1>\n<p>{}</p>\n"                                // words: HTML markup
+            "<h1>{title}</h1>\n<p class=\"who\">{}</p>\n<p>{}</p>\n"       // words: HTML markup
         ),
         lang().code(),
+        escape(&byline(info)),
         escape(ts("inv-record-intro")),
         title = title,
         STYLE = STYLE,
@@ -56,13 +72,38 @@ pub fn html(done: &[Progress]) -> String {
         let _ = writeln!(out, "<p>{}</p>", escape(ts("inv-record-none")));
     }
     for p in done {
-        section(&mut out, p);
+        section(&mut out, p, &info.page);
     }
     out.push_str("</body></html>\n");
     out
 }
 
-fn section(out: &mut String, p: &Progress) {
+/// "Ana Pérez, 2026-11-28 at 14:05" (or "No name given, …").
+fn byline(info: &RecordInfo) -> String {
+    let name = info.student.trim();
+    let name = if name.is_empty() {
+        tr("inv-record-no-name")
+    } else {
+        name.to_owned()
+    };
+    tr!(
+        "inv-record-byline",
+        name = name,
+        date = info.date.as_str(),
+        time = info.time.as_str()
+    )
+}
+
+/// The seeds of `p`'s run, "6" or "1, 2, 3".
+fn seeds_text(p: &Progress) -> String {
+    p.seeds()
+        .iter()
+        .map(u64::to_string)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn section(out: &mut String, p: &Progress, page: &str) {
     let inv = p.investigation;
     let _ = write!(
         out,
@@ -88,6 +129,15 @@ fn section(out: &mut String, p: &Progress) {
         }
     }
     let _ = writeln!(out, "<h3>{}</h3>", escape(ts("inv-record-measured")));
+    if let Some(link) = p.rerun_link(page) {
+        let _ = writeln!(
+            out,
+            "<p class=\"run\">{} <a href=\"{}\">{}</a></p>", // words: HTML markup
+            escape(&tr!("inv-record-seeds", seeds = seeds_text(p))),
+            escape(&link),
+            escape(ts("inv-record-rerun"))
+        );
+    }
     match p.outcome.as_ref().map(|o| o.localized()) {
         Some(outcome) => {
             let _ = writeln!(out, "<p>{}</p>", escape(&outcome.summary));
@@ -184,7 +234,7 @@ fn svg_open() -> String {
 pub fn svg(p: &Progress, outcome: &Outcome) -> String {
     let mut s = svg_open();
     match &outcome.chart {
-        Chart::Bars { unit } => bars(&mut s, outcome, unit),
+        Chart::Bars { unit, whole } => bars(&mut s, outcome, unit, *whole),
         Chart::Curve {
             x_label,
             y_label,
@@ -196,7 +246,9 @@ pub fn svg(p: &Progress, outcome: &Outcome) -> String {
     s
 }
 
-fn axes(s: &mut String, y_max: f64, y_label: &str) {
+/// The axes, marked 0 to `y_max` in quarters, or (`whole`) in whole numbers
+/// up to the first mark at or above `y_max`: returns the axis's top.
+fn axes(s: &mut String, y_max: f64, y_label: &str, whole: bool) -> f64 {
     let (x0, y0, y1) = (LEFT, H - BOTTOM, TOP);
     let _ = write!(
         s,
@@ -209,15 +261,24 @@ fn axes(s: &mut String, y_max: f64, y_label: &str) {
         y0 = y0,
         y1 = y1,
     );
-    for k in 0..=4 {
-        let v = y_max * f64::from(k) / 4.0;
-        let y = y0 - (y0 - y1) * f64::from(k) / 4.0;
+    let marks: Vec<f64> = if whole {
+        super::outcome::whole_ticks(y_max, 5)
+    } else {
+        (0..=4).map(|k| y_max * f64::from(k) / 4.0).collect()
+    };
+    let top = marks
+        .last()
+        .copied()
+        .unwrap_or(y_max)
+        .max(f64::MIN_POSITIVE);
+    for &v in &marks {
+        let y = y0 - (y0 - y1) * v / top;
         let _ = write!(
             s,
             "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>", // words: HTML markup
             x0 - 4.0,
             y + 4.0,
-            tick(v)
+            if whole { fmt(v, 0) } else { tick(v) }
         );
     }
     let _ = write!(
@@ -230,6 +291,7 @@ fn axes(s: &mut String, y_max: f64, y_label: &str) {
         (y0 + y1) / 2.0,
         escape(y_label)
     );
+    top
 }
 
 fn tick(v: f64) -> String {
@@ -240,10 +302,10 @@ fn tick(v: f64) -> String {
     }
 }
 
-fn bars(s: &mut String, outcome: &Outcome, unit: &str) {
+fn bars(s: &mut String, outcome: &Outcome, unit: &str, whole: bool) {
     let top = outcome.rows.iter().map(|r| r.value).fold(0.0, f64::max);
     let y_max = if top > 0.0 { top * 1.15 } else { 1.0 };
-    axes(s, y_max, unit);
+    let y_max = axes(s, y_max, unit, whole);
     let n = outcome.rows.len().max(1) as f64;
     let slot = (W - LEFT - RIGHT) / n;
     let plot_h = H - BOTTOM - TOP;
@@ -290,7 +352,7 @@ fn curve(
     y_label: &str,
 ) {
     let top = points.iter().map(|q| q.high).fold(y_max, f64::max);
-    axes(s, top, y_label);
+    axes(s, top, y_label, false);
     let (x0, x1) = x_span(points);
     let span = if x1 > x0 { x1 - x0 } else { 1.0 };
     let px = |x: f64| LEFT + (W - LEFT - RIGHT) * (x - x0) / span;
@@ -371,7 +433,7 @@ pub fn timelines_svg(outcome: &Outcome) -> String {
     let all = outcome.timelines.iter().flat_map(|t| t.points.iter());
     let x_max = all.clone().map(|p| p[0]).fold(1.0, f64::max);
     let y_top = all.map(|p| p[1]).fold(0.0, f64::max).max(1.0) * 1.15;
-    axes(&mut s, y_top, ts("inv-unit-fish-caught"));
+    let y_top = axes(&mut s, y_top, ts("inv-unit-fish-caught"), true);
     let px = |x: f64| LEFT + (W - LEFT - RIGHT) * x / x_max;
     let py = |y: f64| H - BOTTOM - (H - BOTTOM - TOP) * y / y_top;
     for (k, t) in outcome.timelines.iter().enumerate() {
@@ -407,10 +469,23 @@ pub fn timelines_svg(outcome: &Outcome) -> String {
 /// The CSV of every measured number of `done`: one row per number. Its
 /// comment lines and labels are in the language in force; its column names
 /// and numbers are the same in every language (programs read them).
-pub fn csv(done: &[Progress]) -> String {
+pub fn csv(done: &[Progress], info: &RecordInfo) -> String {
     let mut out = tr("inv-record-csv-title");
     out.push('\n');
+    let _ = writeln!(out, "# {}", byline(info).replace('\n', " "));
     for p in done {
+        if let Some(link) = p.rerun_link(&info.page) {
+            let _ = writeln!(
+                out,
+                "{}",
+                tr!(
+                    "inv-record-csv-run",
+                    id = p.investigation.id,
+                    seeds = seeds_text(p),
+                    link = link
+                )
+            );
+        }
         if let Some(pred) = p.prediction {
             let _ = writeln!(
                 out,
@@ -430,4 +505,116 @@ pub fn csv(done: &[Progress]) -> String {
         }
     }
     out
+}
+
+/// A name made safe for a file name on every system: ASCII letters and digits
+/// in lower case, accents dropped from their letters (é → e, ñ → n), anything
+/// else a single dash, no dash at either end, at most 40 characters. Empty
+/// when nothing of the name is left.
+pub fn slug(name: &str) -> String {
+    let mut out = String::new();
+    for c in name.chars().flat_map(fold_accent) {
+        if c.is_ascii_alphanumeric() {
+            if out.len() >= 40 {
+                break;
+            }
+            out.push(c.to_ascii_lowercase());
+        } else if !out.is_empty() && !out.ends_with('-') {
+            out.push('-');
+        }
+    }
+    out.trim_end_matches('-').to_owned()
+}
+
+/// A letter without its accent (the Latin letters of the catalogue's
+/// languages and their neighbours); other characters as they are.
+fn fold_accent(c: char) -> Vec<char> {
+    let plain = match c {
+        'á' | 'à' | 'â' | 'ä' | 'ã' | 'å' | 'ā' => 'a',
+        'Á' | 'À' | 'Â' | 'Ä' | 'Ã' | 'Å' | 'Ā' => 'A',
+        'é' | 'è' | 'ê' | 'ë' | 'ē' => 'e',
+        'É' | 'È' | 'Ê' | 'Ë' | 'Ē' => 'E',
+        'í' | 'ì' | 'î' | 'ï' | 'ī' => 'i',
+        'Í' | 'Ì' | 'Î' | 'Ï' | 'Ī' => 'I',
+        'ó' | 'ò' | 'ô' | 'ö' | 'õ' | 'ø' | 'ō' => 'o',
+        'Ó' | 'Ò' | 'Ô' | 'Ö' | 'Õ' | 'Ø' | 'Ō' => 'O',
+        'ú' | 'ù' | 'û' | 'ü' | 'ū' => 'u',
+        'Ú' | 'Ù' | 'Û' | 'Ü' | 'Ū' => 'U',
+        'ñ' => 'n',
+        'Ñ' => 'N',
+        'ç' => 'c',
+        'Ç' => 'C',
+        'ý' | 'ÿ' => 'y',
+        'Ý' => 'Y',
+        'ß' => return vec!['s', 's'],
+        'æ' => return vec!['a', 'e'],
+        'Æ' => return vec!['A', 'E'],
+        other => other,
+    };
+    vec![plain]
+}
+
+/// The record's file name: `shoal-<investigation>-<name>-<date>.<ext>`; the
+/// investigation is the one `done` holds (`investigations` when it holds
+/// several), the name is [`slug`]ged (left out when empty).
+pub fn file_name(done: &[Progress], info: &RecordInfo, ext: &str) -> String {
+    let what = match done {
+        [one] => one.investigation.id,
+        _ => "investigations", // words: a file name's part, the same in every language
+    };
+    let mut parts = vec!["shoal".to_owned(), what.to_owned()];
+    let name = slug(&info.student);
+    if !name.is_empty() {
+        parts.push(name);
+    }
+    let date = slug(&info.date);
+    if !date.is_empty() {
+        parts.push(date);
+    }
+    format!("{}.{ext}", parts.join("-"))
+}
+
+/// The local date and time now: `("2026-11-28", "14:05")` (the browser's
+/// clock and time zone; natively the system clock in UTC).
+pub fn local_now() -> (String, String) {
+    #[cfg(target_arch = "wasm32")]
+    {
+        let d = js_sys::Date::new_0();
+        (
+            format!(
+                "{:04}-{:02}-{:02}",
+                d.get_full_year(),
+                d.get_month() + 1,
+                d.get_date()
+            ),
+            format!("{:02}:{:02}", d.get_hours(), d.get_minutes()),
+        )
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let secs = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_secs());
+        let (y, m, d) = civil_from_days((secs / 86_400) as i64);
+        let s = secs % 86_400;
+        (
+            format!("{y:04}-{m:02}-{d:02}"),
+            format!("{:02}:{:02}", s / 3600, (s / 60) % 60),
+        )
+    }
+}
+
+/// The date of day `days` since 1970-01-01 (Howard Hinnant's algorithm).
+#[cfg(not(target_arch = "wasm32"))]
+fn civil_from_days(days: i64) -> (i64, u32, u32) {
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = (doy - (153 * mp + 2) / 5 + 1) as u32;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    (y, m, d)
 }

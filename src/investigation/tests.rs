@@ -15,6 +15,15 @@ fn progress(id: &str) -> Progress {
     Progress::new(find(id).expect("known id"))
 }
 
+fn info() -> record::RecordInfo {
+    record::RecordInfo {
+        student: String::new(),
+        date: "2026-11-28".into(),
+        time: "14:05".into(),
+        page: "https://example.org/shoal/".into(),
+    }
+}
+
 fn outcome() -> Outcome {
     Outcome {
         summary: "measured 3 and 1".into(),
@@ -31,7 +40,10 @@ fn outcome() -> Outcome {
                 unit: "fish",
             },
         ],
-        chart: Chart::Bars { unit: "fish" },
+        chart: Chart::Bars {
+            unit: "fish",
+            whole: true,
+        },
         timelines: vec![super::outcome::Timeline {
             label: "a".into(),
             points: vec![[0.0, 0.0], [90.0, 2.0], [180.0, 3.0]],
@@ -295,7 +307,7 @@ fn the_record_holds_the_prediction_the_numbers_and_escaped_answers() {
     p.finish_run(outcome());
     p.explanations[0] = "the shark <script>alert(1)</script> & \"friends\"".into();
     p.advance().unwrap();
-    let html = record::html(std::slice::from_ref(&p));
+    let html = record::html(std::slice::from_ref(&p), &info());
     assert!(html.starts_with("<!DOCTYPE html>"));
     assert!(html.contains("The school (right) (locked before the run)"));
     assert!(html.contains("measured 3 and 1"));
@@ -311,7 +323,7 @@ fn the_record_holds_the_prediction_the_numbers_and_escaped_answers() {
         "self-contained"
     );
     assert!(!html.contains("What scientists found"), "not revealed yet");
-    let csv = record::csv(std::slice::from_ref(&p));
+    let csv = record::csv(std::slice::from_ref(&p), &info());
     assert!(
         csv.contains("investigation,label,value,unit\nwhy-school,a,3,fish\nwhy-school,b,1,fish\n")
     );
@@ -511,15 +523,18 @@ fn an_investigation_speaks_spanish() {
             summary: "x".into(),
             verdict: "y".into(),
             rows,
-            chart: Chart::Bars { unit: "0-1" },
+            chart: Chart::Bars {
+                unit: "0-1",
+                whole: false,
+            },
             timelines: Vec::new(),
             translations: Vec::new(),
         });
-        let html = record::html(std::slice::from_ref(&p));
+        let html = record::html(std::slice::from_ref(&p), &info());
         assert!(html.contains("<html lang=\"es\">"));
         assert!(html.contains("Mi predicción"), "{html}");
         assert!(html.contains("<td class=\"n\">0,500</td>"), "{html}");
-        let csv = record::csv(std::slice::from_ref(&p));
+        let csv = record::csv(std::slice::from_ref(&p), &info());
         assert!(
             csv.contains("predicción \"Una línea recta hacia arriba\""),
             "{csv}"
@@ -557,4 +572,238 @@ fn a_result_follows_the_language_it_is_read_in() {
             es.rows[0]
         );
     });
+}
+
+#[test]
+fn a_name_becomes_a_file_name_safe_on_every_system() {
+    use record::slug;
+    assert_eq!(slug("Ana Pérez"), "ana-perez");
+    assert_eq!(slug("  José   Ñúñez-Díaz  "), "jose-nunez-diaz");
+    assert_eq!(slug("Ærøskøbing Straße"), "aeroskobing-strasse");
+    assert_eq!(slug("../../etc/passwd"), "etc-passwd");
+    assert_eq!(slug("a:b*c?d\"e<f>g|h"), "a-b-c-d-e-f-g-h");
+    assert_eq!(slug("李小龙"), "", "nothing of it left");
+    assert_eq!(slug(""), "");
+    assert_eq!(slug("---"), "");
+    let long = slug(&"x".repeat(500));
+    assert_eq!(long.len(), 40, "bounded");
+    let long = slug(&"ab ".repeat(100));
+    assert!(long.len() <= 40 && !long.ends_with('-'), "{long}");
+    for name in ["Zoë O'Brien", "Łukasz", "名前 Ann", "tab\there"] {
+        let s = slug(name);
+        assert!(
+            s.chars()
+                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'),
+            "{name}: {s}"
+        );
+    }
+}
+
+#[test]
+fn the_record_file_is_named_by_investigation_student_and_date() {
+    let mut one = progress("why-school");
+    one.choose(1).unwrap();
+    one.commit().unwrap();
+    let mut info = info();
+    info.student = "Ana Pérez".into();
+    assert_eq!(
+        record::file_name(std::slice::from_ref(&one), &info, "html"),
+        "shoal-why-school-ana-perez-2026-11-28.html"
+    );
+    let mut two = progress("leader");
+    two.choose(0).unwrap();
+    two.commit().unwrap();
+    assert_eq!(
+        record::file_name(&[one.clone(), two], &info, "csv"),
+        "shoal-investigations-ana-perez-2026-11-28.csv"
+    );
+    // Another student's file differs by the name alone.
+    info.student = "Luis".into();
+    assert_eq!(
+        record::file_name(std::slice::from_ref(&one), &info, "html"),
+        "shoal-why-school-luis-2026-11-28.html"
+    );
+    info.student = "   ".into();
+    assert_eq!(
+        record::file_name(std::slice::from_ref(&one), &info, "html"),
+        "shoal-why-school-2026-11-28.html"
+    );
+}
+
+#[test]
+fn the_local_date_reads_as_a_date() {
+    let (date, time) = record::local_now();
+    let d: Vec<&str> = date.split('-').collect();
+    assert_eq!(d.len(), 3, "{date}");
+    assert!(d[0].parse::<u32>().unwrap() >= 2024, "{date}");
+    assert!((1..=12).contains(&d[1].parse::<u32>().unwrap()), "{date}");
+    assert!((1..=31).contains(&d[2].parse::<u32>().unwrap()), "{date}");
+    let t: Vec<u32> = time.split(':').map(|x| x.parse().unwrap()).collect();
+    assert!(t[0] < 24 && t[1] < 60, "{time}");
+}
+
+/// The record is ready to hand in: the student's name (escaped), the date
+/// and time, the seed and the link that opens the same run again; the link
+/// read back through the links' parsers gives the investigation and the very
+/// settings the run started from.
+#[test]
+fn the_record_names_the_student_the_date_the_seed_and_a_link_that_reruns_it() {
+    let inv = find("why-school").unwrap();
+    let mut lab = Lab::new(setup_settings(inv).unwrap());
+    let mut settings = lab.settings().clone();
+    settings.seed = 17;
+    settings.speed = 8.0;
+    lab.apply_settings(settings);
+    let mut p = Progress::new(inv);
+    p.choose(1).unwrap();
+    p.commit().unwrap();
+    p.start_run().unwrap();
+    // As the window starts it (ui/investigation_panel.rs: start_run).
+    let _m = Measurement::start(inv, &mut lab).unwrap();
+    p.run_settings = Some(lab.settings().clone());
+    p.finish_run(outcome());
+    let mut info = info();
+    info.student = "Ana <b>Pérez</b> & co".into();
+    let html = record::html(std::slice::from_ref(&p), &info);
+    assert!(
+        html.contains("Ana &lt;b&gt;Pérez&lt;/b&gt; &amp; co, 2026-11-28 at 14:05"),
+        "{html}"
+    );
+    assert!(!html.contains("<b>Pérez"), "the name escaped");
+    assert!(html.contains("Seed: 17."), "{html}");
+    let href = html
+        .split("<a href=\"")
+        .nth(1)
+        .and_then(|rest| rest.split('"').next())
+        .expect("a link in the record")
+        .replace("&amp;", "&");
+    assert!(href.starts_with("https://example.org/shoal/?investigation=why-school#v1."));
+    // The link reruns: the same investigation on the same settings.
+    assert_eq!(from_url(&href), Some(Ok(inv)));
+    let fragment = href.split_once('#').unwrap().1;
+    let reopened = crate::settings::share_link::decode(fragment)
+        .unwrap()
+        .expect("settings in the link");
+    assert_eq!(&reopened, p.run_settings.as_ref().unwrap());
+    assert_eq!(reopened.seed, 17);
+    // A second run on another seed gives another link: the link carries it.
+    let mut q = p.clone();
+    let mut other = reopened.clone();
+    other.seed = 18;
+    q.run_settings = Some(other);
+    assert_ne!(q.rerun_link(&info.page), p.rerun_link(&info.page));
+
+    let csv = record::csv(std::slice::from_ref(&p), &info);
+    assert!(
+        csv.contains("# Ana <b>Pérez</b> & co, 2026-11-28 at 14:05"),
+        "{csv}"
+    );
+    assert!(
+        csv.contains(&format!("# why-school: seed 17; run it again: {href}")),
+        "{csv}"
+    );
+    // No name: said so.
+    let anonymous = record::html(std::slice::from_ref(&p), &super::tests::info());
+    assert!(anonymous.contains("No name given, 2026-11-28 at 14:05"));
+}
+
+#[test]
+fn an_experiment_records_its_replicate_seeds() {
+    let p = progress("which-urge");
+    assert_eq!(p.seeds(), vec![1, 2, 3]);
+    let q = progress("how-swim");
+    assert!(q.seeds().is_empty(), "no run yet");
+}
+
+#[test]
+fn a_count_s_axis_is_marked_in_whole_numbers() {
+    use super::outcome::whole_ticks;
+    assert_eq!(whole_ticks(9.49, 5), vec![0.0, 2.0, 4.0, 6.0, 8.0, 10.0]);
+    assert_eq!(whole_ticks(3.0, 5), vec![0.0, 1.0, 2.0, 3.0]);
+    assert_eq!(whole_ticks(0.2, 5), vec![0.0, 1.0]);
+    assert_eq!(
+        whole_ticks(47.0, 5),
+        vec![0.0, 10.0, 20.0, 30.0, 40.0, 50.0]
+    );
+    for max in [0.5, 1.0, 2.7, 9.49, 12.6, 33.0, 101.0, 999.0] {
+        let ticks = whole_ticks(max, 5);
+        assert!(ticks.iter().all(|t| t.fract() == 0.0), "{max}: {ticks:?}");
+        assert!(*ticks.last().unwrap() >= max, "{max}: {ticks:?}");
+        assert!(ticks.len() <= 6, "{max}: {ticks:?}");
+    }
+    // The record's bars of fish caught: whole marks, not quarters of 9.49.
+    let mut p = progress("why-school");
+    p.choose(1).unwrap();
+    p.commit().unwrap();
+    let mut o = outcome();
+    o.rows[0].value = 8.0;
+    let svg = record::svg(&p, &o);
+    let marks: Vec<&str> = svg
+        .split("text-anchor=\"end\">")
+        .skip(1)
+        .map(|t| t.split('<').next().unwrap())
+        .collect();
+    assert_eq!(marks, ["0", "2", "4", "6", "8", "10"], "{svg}");
+    // The same bars in metres keep their quarter marks (a length, not a count).
+    o.chart = Chart::Bars {
+        unit: "m",
+        whole: false,
+    };
+    let svg = record::svg(&p, &o);
+    assert!(svg.contains(">2.30<"), "{svg}");
+}
+
+/// Every explain prompt that names a plot ("the catches plot", "the
+/// measured curve", "your sketch") is shown with it, and a prompt shows the
+/// plot it names, not another one.
+#[test]
+fn an_explain_prompt_shows_the_plot_it_refers_to() {
+    for inv in &INVESTIGATIONS {
+        for prompt in inv.prompts {
+            let words =
+                crate::i18n::with_lang(crate::i18n::Lang::En, || prompt.text().to_lowercase());
+            let names_plot = ["plot", "curve", "sketch", "bars", "copies"]
+                .iter()
+                .any(|w| words.contains(w));
+            if names_plot {
+                assert_ne!(prompt.shows, Shows::Words, "{}: {words}", inv.id);
+            }
+            if words.contains("catches plot") {
+                assert_eq!(prompt.shows, Shows::Timelines, "{}: {words}", inv.id);
+            }
+        }
+    }
+    // The cause: the same result, the prompt on show decides.
+    let mut p = progress("why-school");
+    p.choose(1).unwrap();
+    p.commit().unwrap();
+    p.start_run().unwrap();
+    assert_eq!(p.explain_shows(), Shows::Words, "not explaining yet");
+    p.finish_run(outcome());
+    p.advance().unwrap();
+    assert_eq!(p.step, Step::Explain);
+    assert_eq!(p.explain_shows(), Shows::Timelines, "the catches plot");
+    p.advance().unwrap();
+    assert_eq!(p.explain_shows(), Shows::Words);
+    // No timelines measured: the result's chart instead of nothing.
+    let mut q = progress("why-school");
+    q.choose(1).unwrap();
+    q.commit().unwrap();
+    q.start_run().unwrap();
+    let mut o = outcome();
+    o.timelines.clear();
+    q.finish_run(o);
+    q.advance().unwrap();
+    assert_eq!(q.explain_shows(), Shows::Result);
+    let mut c = progress("which-urge");
+    c.choose(0).unwrap();
+    c.commit().unwrap();
+    c.start_run().unwrap();
+    c.finish_run(outcome());
+    c.advance().unwrap();
+    assert_eq!(
+        c.explain_shows(),
+        Shows::Result,
+        "the curve with the sketch"
+    );
 }

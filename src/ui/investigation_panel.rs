@@ -19,7 +19,7 @@ use super::scene_panel::Notice;
 use crate::i18n::{num, tr, ts};
 use crate::investigation::{
     INVESTIGATIONS, Investigation, InvestigationReport, Measurement, PredictionKind, Progress,
-    Step, record,
+    Shows, Step, record,
 };
 use crate::lab::Lab;
 use crate::settings::Settings;
@@ -31,6 +31,87 @@ const WINDOW_WIDTH: f32 = 380.0;
 
 fn list_id() -> egui::Id {
     egui::Id::unique("investigations_list_open")
+}
+
+fn window_id() -> egui::Id {
+    egui::Id::unique("investigation_window")
+}
+
+/// Gap between the docked window and the tanks, and the screen's edge, points.
+const DOCK_GAP: f32 = 6.0;
+
+/// The narrowest the tanks get beside the docked window, points; narrower
+/// aquariums (a phone) put the window under the tanks instead.
+const DOCK_MIN_TANKS: f32 = 320.0;
+
+/// The least height of tank kept above the window docked at the bottom.
+const DOCK_MIN_TANK_HEIGHT: f32 = 160.0;
+
+/// Where the investigation window sits while open, and the room left to the
+/// tanks: the window never covers a tank, so what a prompt asks the student
+/// to watch ("the shark near the school") stays in sight.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dock {
+    /// The window's outer rectangle (title bar and frame included).
+    pub window: egui::Rect,
+    /// The tanks' area (the aquarium less the window's strip).
+    pub tanks: egui::Rect,
+}
+
+/// The dock in `aquarium` (the area the tanks are drawn in) for a window at
+/// most `width` points wide: a column at the aquarium's right when the tanks
+/// keep [`DOCK_MIN_TANKS`] beside it, else a strip along its bottom (a phone:
+/// the tanks above it). `None` when the aquarium is too small for either (a
+/// phone with the side panel open): the window then floats as before.
+pub fn dock(aquarium: egui::Rect, width: f32) -> Option<Dock> {
+    let (w, h) = (aquarium.width(), aquarium.height());
+    if w >= width + DOCK_GAP * 2.0 + DOCK_MIN_TANKS {
+        let left = aquarium.right() - width - DOCK_GAP;
+        return Some(Dock {
+            window: egui::Rect::from_min_max(
+                egui::pos2(left, aquarium.top() + DOCK_GAP),
+                egui::pos2(aquarium.right() - DOCK_GAP, aquarium.bottom() - DOCK_GAP),
+            ),
+            tanks: egui::Rect::from_min_max(
+                aquarium.min,
+                egui::pos2(left - DOCK_GAP, aquarium.bottom()),
+            ),
+        });
+    }
+    if w >= 200.0 && h >= DOCK_MIN_TANK_HEIGHT + 240.0 {
+        let window_h = (h * 0.5).clamp(240.0, h - DOCK_MIN_TANK_HEIGHT);
+        let top = aquarium.bottom() - window_h;
+        return Some(Dock {
+            window: egui::Rect::from_min_max(
+                egui::pos2(aquarium.left() + DOCK_GAP, top),
+                egui::pos2(aquarium.right() - DOCK_GAP, aquarium.bottom() - DOCK_GAP),
+            ),
+            tanks: egui::Rect::from_min_max(
+                aquarium.min,
+                egui::pos2(aquarium.right(), top - DOCK_GAP),
+            ),
+        });
+    }
+    None
+}
+
+/// Inner margin and stroke of a window's frame, each side, points: what
+/// the outer rectangle adds to the content's width.
+const FRAME_SIDES: f32 = 16.0;
+
+/// Height of a window's title bar and frame, points.
+const TITLE_AND_FRAME: f32 = 48.0;
+
+/// The student's name this browser remembers (none natively).
+fn stored_student_name() -> String {
+    #[cfg(target_arch = "wasm32")]
+    {
+        crate::web::stored_student_name()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        String::new()
+    }
 }
 
 /// The side panel's *Investigations* button (at its top, on the first
@@ -72,6 +153,12 @@ pub struct InvestigationPanel {
     window_open: bool,
     /// Earlier investigations of this session (for the record).
     done: Vec<Progress>,
+    /// Where the window sits this frame (see [`dock`]), set when the tanks
+    /// are laid out.
+    dock: Option<Dock>,
+    /// The student's name for the record, as typed; `None` until read from
+    /// this browser's memory.
+    student: Option<String>,
 }
 
 impl InvestigationPanel {
@@ -132,10 +219,45 @@ impl InvestigationPanel {
         all
     }
 
-    /// The record as `(html, csv)`.
-    pub fn record_files(&self) -> (String, String) {
+    /// The student's name (read once from this browser's memory).
+    fn student(&mut self) -> &mut String {
+        self.student.get_or_insert_with(stored_student_name)
+    }
+
+    /// Who, when and where, for the record (`page`: the page's address).
+    fn record_info(&self, page: &str) -> record::RecordInfo {
+        let (date, time) = record::local_now();
+        record::RecordInfo {
+            student: self.student.clone().unwrap_or_else(stored_student_name),
+            date,
+            time,
+            page: page.to_owned(),
+        }
+    }
+
+    /// The record as `(html, csv, the HTML file's name)`; `page` is the page's
+    /// address, for the links that run each investigation again.
+    pub fn record_files(&self, page: &str) -> (String, String, String) {
         let all = self.record();
-        (record::html(&all), record::csv(&all))
+        let info = self.record_info(page);
+        (
+            record::html(&all, &info),
+            record::csv(&all, &info),
+            record::file_name(&all, &info, "html"),
+        )
+    }
+
+    /// The tanks' area in `aquarium` this frame: all of it, or what the docked
+    /// investigation window leaves (the app lays the tanks out in it).
+    pub fn tanks_area(&mut self, ctx: &egui::Context, aquarium: egui::Rect) -> egui::Rect {
+        let expanded =
+            egui::collapsing_header::CollapsingState::load(ctx, window_id().with("collapsing"))
+                .is_none_or(|c| c.is_open());
+        let width = (ctx.content_rect().width() - 24.0).clamp(200.0, WINDOW_WIDTH);
+        self.dock = (self.current.is_some() && self.window_open && expanded)
+            .then(|| dock(aquarium, width + FRAME_SIDES))
+            .flatten();
+        self.dock.map_or(aquarium, |d| d.tanks)
     }
 
     /// Starts the run on `lab` (the app calls it for [`InvestigationAction::Run`]).
@@ -145,6 +267,7 @@ impl InvestigationPanel {
         };
         p.start_run().map_err(|e| e.to_string())?;
         self.measurement = Some(Measurement::start(p.investigation, lab)?);
+        p.run_settings = Some(lab.settings().clone());
         Ok(())
     }
 
@@ -168,12 +291,13 @@ impl InvestigationPanel {
         ctx: &egui::Context,
         lab: &Lab,
         settings: &Settings,
+        page: &str,
         rects: &mut WidgetRects,
     ) -> Vec<InvestigationAction> {
         let mut actions = Vec::new();
         let screen = ctx.content_rect();
         let width = (screen.width() - 24.0).clamp(200.0, WINDOW_WIDTH);
-        self.list_ui(ctx, width, rects, &mut actions);
+        self.list_ui(ctx, width, page, rects, &mut actions);
         if self.current.is_none() || !self.window_open {
             return actions;
         }
@@ -182,26 +306,46 @@ impl InvestigationPanel {
             .current
             .as_ref()
             .map_or("", |p| p.investigation.title.text());
-        let shown = egui::Window::new(tr!("inv-window-title", title = title))
-            .id(egui::Id::unique("investigation_window"))
+        let window = egui::Window::new(tr!("inv-window-title", title = title))
+            .id(window_id())
             .open(&mut open)
             .collapsible(true)
             .resizable(false)
-            .default_width(width)
-            .max_width(width)
-            .max_height((screen.height() - 40.0).max(200.0))
-            .default_pos(screen.right_top() + egui::vec2(-width - 16.0, 44.0))
-            .constrain(true)
-            .show(ctx, |ui| {
-                let tall = (screen.height() - 110.0).max(150.0);
-                egui::ScrollArea::vertical()
-                    .max_height(tall)
-                    .min_scrolled_height(tall.min(700.0))
-                    .show(ui, |ui| {
-                        self.contents_ui(ui, lab, settings, rects, &mut actions);
-                        crate::ui::focus_view::keep_focus_in_view(ui, "investigation");
-                    });
-            });
+            .constrain(true);
+        // Docked beside (or under) the tanks, never over them; floating where
+        // there is no room to dock.
+        let (window, tall) = match self.dock {
+            Some(dock) => {
+                let inner = dock.window.width() - FRAME_SIDES;
+                let tall = (dock.window.height() - TITLE_AND_FRAME).max(120.0);
+                (
+                    window
+                        .fixed_pos(dock.window.min)
+                        .movable(false)
+                        .min_width(inner)
+                        .max_width(inner)
+                        .max_height(tall),
+                    tall,
+                )
+            }
+            None => (
+                window
+                    .default_width(width)
+                    .max_width(width)
+                    .max_height((screen.height() - 40.0).max(200.0))
+                    .default_pos(screen.right_top() + egui::vec2(-width - 16.0, 44.0)),
+                (screen.height() - 110.0).max(150.0),
+            ),
+        };
+        let shown = window.show(ctx, |ui| {
+            egui::ScrollArea::vertical()
+                .max_height(tall)
+                .min_scrolled_height(tall.min(700.0))
+                .show(ui, |ui| {
+                    self.contents_ui(ui, lab, settings, page, rects, &mut actions);
+                    crate::ui::focus_view::keep_focus_in_view(ui, "investigation");
+                });
+        });
         if let Some(shown) = shown {
             rects.insert("investigation_window", shown.response.rect);
         }
@@ -213,6 +357,7 @@ impl InvestigationPanel {
         &mut self,
         ctx: &egui::Context,
         width: f32,
+        page: &str,
         rects: &mut WidgetRects,
         actions: &mut Vec<InvestigationAction>,
     ) {
@@ -269,7 +414,7 @@ impl InvestigationPanel {
                         }
                         if !self.record().is_empty() {
                             ui.separator();
-                            self.record_buttons(ui, rects, actions);
+                            self.record_buttons(ui, page, rects, actions);
                         }
                     });
             });
@@ -290,11 +435,29 @@ impl InvestigationPanel {
     }
 
     fn record_buttons(
-        &self,
+        &mut self,
         ui: &mut egui::Ui,
+        page: &str,
         rects: &mut WidgetRects,
         actions: &mut Vec<InvestigationAction>,
     ) {
+        // The name, asked once: this browser remembers it (and only this one).
+        let label = ui.label(ts("inv-student-name"));
+        let before = self.student().clone();
+        let name = ui
+            .add(
+                egui::TextEdit::singleline(self.student())
+                    .desired_width(f32::INFINITY)
+                    .char_limit(80)
+                    .hint_text(ts("inv-student-name.hint")),
+            )
+            .labelled_by(label.id)
+            .on_hover_text(ts("inv-student-name.help"));
+        rects.insert("investigation_student", name.rect);
+        if *self.student() != before {
+            #[cfg(target_arch = "wasm32")]
+            crate::web::store_student_name(self.student().trim());
+        }
         ui.horizontal_wrapped(|ui| {
             let r = ui
                 .button(ts("inv-record"))
@@ -304,21 +467,16 @@ impl InvestigationPanel {
                 .button(ts("inv-record-csv"))
                 .on_hover_text(ts("inv-record-csv.help"));
             rects.insert("investigation_record_csv", csv.rect);
-            let (html, table) = if r.clicked() || csv.clicked() {
-                self.record_files()
+            let (html, table, file) = if r.clicked() || csv.clicked() {
+                self.record_files(page)
             } else {
                 return;
             };
             let saved = if r.clicked() {
-                super::save_text_file(
-                    "shoal-my-investigations.html",
-                    "text/html",
-                    &html,
-                    Some(ts("inv-record-next")),
-                )
+                super::save_text_file(&file, "text/html", &html, Some(ts("inv-record-next")))
             } else {
                 super::save_text_file(
-                    "shoal-my-investigations.csv",
+                    &format!("{}.csv", file.trim_end_matches(".html")),
                     "text/csv",
                     &table,
                     Some(ts("inv-record-csv-next")),
@@ -336,6 +494,7 @@ impl InvestigationPanel {
         ui: &mut egui::Ui,
         lab: &Lab,
         settings: &Settings,
+        page: &str,
         rects: &mut WidgetRects,
         actions: &mut Vec<InvestigationAction>,
     ) {
@@ -359,7 +518,7 @@ impl InvestigationPanel {
             Step::Predict => self.predict_ui(ui, rects),
             Step::Run => self.run_ui(ui, lab, settings, rects, actions),
             Step::Explain => self.explain_ui(ui, rects),
-            Step::Reveal => self.reveal_ui(ui, rects, actions),
+            Step::Reveal => self.reveal_ui(ui, page, rects, actions),
         }
     }
 
@@ -493,6 +652,31 @@ impl InvestigationPanel {
             count = inv.prompts.len()
         ));
         let prompt = ui.label(egui::RichText::new(inv.prompts[p.prompt].text()).strong());
+        // The plot the question refers to, back beside it.
+        let shows = p.explain_shows();
+        if let Some(outcome) = p.outcome.as_ref().map(|o| o.localized()) {
+            match shows {
+                Shows::Words => {}
+                Shows::Result => {
+                    let sketch = match (inv.prediction, p.prediction) {
+                        (PredictionKind::Curve { shapes, .. }, Some(pred)) => {
+                            shapes.get(pred.choice)
+                        }
+                        _ => None,
+                    };
+                    let r = ui.scope(|ui| outcome_ui(ui, outcome, sketch)).response;
+                    rects.insert("investigation_explain_plot", r.rect);
+                }
+                Shows::Timelines => {
+                    if let Some(last) = outcome.timelines.first().and_then(|t| t.points.last()) {
+                        let r = ui
+                            .scope(|ui| timelines_ui(ui, &outcome.timelines, last[0]))
+                            .response;
+                        rects.insert("investigation_explain_plot", r.rect);
+                    }
+                }
+            }
+        }
         let answer = ui
             .add(
                 egui::TextEdit::multiline(&mut p.explanations[p.prompt])
@@ -518,6 +702,7 @@ impl InvestigationPanel {
     fn reveal_ui(
         &mut self,
         ui: &mut egui::Ui,
+        page: &str,
         rects: &mut WidgetRects,
         actions: &mut Vec<InvestigationAction>,
     ) {
@@ -537,7 +722,7 @@ impl InvestigationPanel {
         }
         ui.separator();
         ui.label(ts("inv-sandbox"));
-        self.record_buttons(ui, rects, actions);
+        self.record_buttons(ui, page, rects, actions);
         let other = ui.button(ts("inv-others"));
         rects.insert("investigation_others", other.rect);
         if other.clicked() {
@@ -625,4 +810,60 @@ fn alignment_controls(
                 .join(", ")
         }
     ));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The aquarium (the area right of the side panel, between the status
+    /// line and the panel under the tank) at three screen sizes.
+    fn aquarium(w: f32, h: f32, side_panel: f32) -> egui::Rect {
+        egui::Rect::from_min_max(egui::pos2(side_panel, 0.0), egui::pos2(w, h - 60.0))
+    }
+
+    #[test]
+    fn the_docked_window_never_covers_a_tank() {
+        for (w, h, panel) in [
+            (1920.0, 1080.0, 270.0),
+            (1280.0, 800.0, 270.0),
+            (1024.0, 700.0, 270.0),
+            (390.0, 844.0, 0.0),
+        ] {
+            let a = aquarium(w, h, panel);
+            let width = (w - 24.0).clamp(200.0, WINDOW_WIDTH) + FRAME_SIDES;
+            let d = dock(a, width).expect("room to dock");
+            assert!(
+                !d.window.intersects(d.tanks),
+                "{w}×{h}: {:?} {:?}",
+                d.window,
+                d.tanks
+            );
+            assert!(
+                a.contains_rect(d.window) && a.contains_rect(d.tanks),
+                "{w}×{h}"
+            );
+            // Two tanks laid out in the room left, side by side or stacked,
+            // each lies in it.
+            assert!(
+                d.tanks.width() >= 200.0 && d.tanks.height() >= 150.0,
+                "{w}×{h}: {:?}",
+                d.tanks
+            );
+            if w >= 700.0 {
+                assert!(
+                    d.window.left() > d.tanks.right(),
+                    "beside the tanks at {w}×{h}"
+                );
+                assert!(d.window.width() >= width, "the full width at {w}×{h}");
+            } else {
+                assert!(
+                    d.window.top() > d.tanks.bottom(),
+                    "under the tanks on a phone"
+                );
+            }
+        }
+        // A phone with its side panel open leaves no room: the window floats.
+        assert_eq!(dock(aquarium(390.0, 844.0, 334.0), 380.0), None);
+    }
 }

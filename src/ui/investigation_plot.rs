@@ -6,7 +6,7 @@ use eframe::egui;
 use egui_plot::{Bar, BarChart, Legend, Line, LineStyle, Plot, PlotPoints, Points};
 
 use crate::i18n::ts;
-use crate::investigation::outcome::{Timeline, x_span};
+use crate::investigation::outcome::{Timeline, whole_step, x_span};
 use crate::investigation::{Chart, Outcome, Shape};
 use crate::settings::Side;
 
@@ -24,6 +24,24 @@ fn sketch_points(shape: &Shape, x0: f64, x1: f64, y_max: f64) -> PlotPoints<'sta
         .map(|k| {
             let u = f64::from(k) / 40.0;
             [x0 + u * (x1 - x0), shape.at(u) * y_max]
+        })
+        .collect()
+}
+
+/// Marks of a count's axis (fish caught) at whole numbers only: steps of 1,
+/// 2, 5, 10 … with at most five over the visible range, never 3.16.
+pub fn whole_marks(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
+    let (low, high) = input.bounds;
+    if !(low.is_finite() && high.is_finite()) || high <= low {
+        return Vec::new();
+    }
+    let step = whole_step(high - low.max(0.0), 5).max(input.base_step_size.ceil());
+    let first = (low / step).ceil() as i64;
+    let last = (high / step).floor() as i64;
+    (first..=last)
+        .map(|k| egui_plot::GridMark {
+            value: k as f64 * step,
+            step_size: step,
         })
         .collect()
 }
@@ -56,7 +74,7 @@ pub fn sketch_ui(ui: &mut egui::Ui, shape: &Shape, x_label: &str, y_label: &str)
 /// The measured result, with the sketch over a curve.
 pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) {
     match &outcome.chart {
-        Chart::Bars { unit } => {
+        Chart::Bars { unit, whole } => {
             let bars: Vec<Bar> = outcome
                 .rows
                 .iter()
@@ -85,9 +103,11 @@ pub fn outcome_ui(ui: &mut egui::Ui, outcome: &Outcome, sketch: Option<&Shape>) 
                     String::new()
                 }
             };
-            Plot::new("investigation_bars")
-                .height(PLOT_HEIGHT)
-                .y_axis_label(*unit)
+            let mut plot = Plot::new("investigation_bars").height(PLOT_HEIGHT);
+            if *whole {
+                plot = plot.y_grid_spacer(whole_marks);
+            }
+            plot.y_axis_label(*unit)
                 .include_y(0.0)
                 .allow_drag(false)
                 .allow_zoom(false)
@@ -196,6 +216,7 @@ pub fn timelines_ui(ui: &mut egui::Ui, timelines: &[Timeline], secs: f64) {
         .include_x(secs)
         .include_y(0.0)
         .include_y(4.0)
+        .y_grid_spacer(whole_marks)
         .legend(Legend::default())
         .allow_drag(false)
         .allow_zoom(false)

@@ -62,8 +62,8 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
         (
             "investigation_record",
             Box::new(|app, _| {
-                let (html, csv) = app.investigation_record();
-                Ok(serde_json::json!({"html": html, "csv": csv}))
+                let (html, csv, file) = app.investigation_record();
+                Ok(serde_json::json!({"html": html, "csv": csv, "file": file}))
             }),
         ),
         (

@@ -15,6 +15,29 @@ pub use page::{download_text, pick_text_file};
 /// Where this browser remembers the language last chosen.
 const LANGUAGE_STORE_KEY: &str = "shoal.lang";
 
+/// Where this browser remembers the student's name for the record (only
+/// here: it never leaves the browser).
+const STUDENT_STORE_KEY: &str = "shoal.student";
+
+/// The student's name this browser remembers (empty if none).
+pub fn stored_student_name() -> String {
+    web_sys::window()
+        .and_then(|w| w.local_storage().ok().flatten())
+        .and_then(|s| s.get_item(STUDENT_STORE_KEY).ok().flatten())
+        .unwrap_or_default()
+}
+
+/// Remembers the student's name in this browser (forgets it when empty).
+pub fn store_student_name(name: &str) {
+    if let Some(storage) = web_sys::window().and_then(|w| w.local_storage().ok().flatten()) {
+        let _ = if name.is_empty() {
+            storage.remove_item(STUDENT_STORE_KEY)
+        } else {
+            storage.set_item(STUDENT_STORE_KEY, name)
+        };
+    }
+}
+
 /// Puts `lang` on the page: `<html lang>` (what a screen reader speaks in),
 /// the names the page gives the canvas and its text box, the page's own
 /// notices, and, if `remember`, this browser's memory of the choice.
@@ -85,7 +108,9 @@ pub async fn start() {
         page::media_matches("(prefers-contrast: more)"),
     );
     // A share link's settings, or the defaults and a notice saying why not.
-    let (settings, link_error) = match crate::settings::share_link::decode(&page::fragment()) {
+    let decoded = crate::settings::share_link::decode(&page::fragment());
+    let link_settings = matches!(decoded, Ok(Some(_)));
+    let (settings, link_error) = match decoded {
         Ok(settings) => (settings.unwrap_or_default(), None),
         Err(err) => (
             Settings::default(),
@@ -115,7 +140,7 @@ pub async fn start() {
                     app.show_info_notice(crate::ui::seeing::STARTED_PAUSED);
                 }
                 if let Some(url) = page::url_without_fragment() {
-                    app.set_page_url(url);
+                    app.set_page_url(url, link_settings);
                 }
                 if let Some(message) = link_error {
                     app.show_error_notice(message);

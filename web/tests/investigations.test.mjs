@@ -73,7 +73,7 @@ async function clickInWindow(page, name, predicate, arg) {
  * answer numbered `typed` is typed key by key; the others are entered as one
  * input event (`enterText`: a key costs frames on a software GPU). `onSecond`
  * runs while the second answer shows (a screenshot). */
-async function explain(page, answers, { typed = -1, onSecond = null } = {}) {
+async function explain(page, answers, { typed = -1, onSecond = null, firstPlot = false } = {}) {
   for (const [k, answer] of answers.entries()) {
     await scrollWindowTo(page, "investigation_answer");
     await clickWidget(page, "investigation_answer");
@@ -81,6 +81,10 @@ async function explain(page, answers, { typed = -1, onSecond = null } = {}) {
     else await enterText(page, answer);
     await page.waitForFunction((a) => window.shoal.state().investigation.explanations.includes(a), answer);
     if (k === 1 && onSecond) await onSecond();
+    if (k === 0 && firstPlot) {
+      // The prompt names a plot: it is back in the window beside the question.
+      assert.ok((await page.evaluate(() => window.shoal.widgets())).investigation_explain_plot, "the plot the first prompt names");
+    }
     await clickUntil(
       page,
       "investigation_next",
@@ -244,6 +248,7 @@ for (const tier of TIERS) {
       await clickInWindow(page, "investigation_next", () => window.shoal.state().investigation.step === "explain");
       await explain(page, ["Steadily on the left", "It <switched>", "Too many targets"], {
         typed: 1,
+        firstPlot: true,
         onSecond: () => shot(page, tier, "6-explain"),
       });
       await waitForWidget(page, "investigation_reveal");
@@ -258,7 +263,8 @@ for (const tier of TIERS) {
       await scrollWindowTo(page, "investigation_record");
       await clickWidget(page, "investigation_record");
       const file = await download;
-      assert.equal(file.suggestedFilename(), "shoal-my-investigations.html");
+      // Named by the investigation and the date (no name typed: none in it).
+      assert.match(file.suggestedFilename(), /^shoal-why-school-\d{4}-\d\d-\d\d\.html$/);
       const html = fs.readFileSync(await file.path(), "utf8");
       saveArtifact(`investigation-${tier}-record.html`, html);
       assert.ok(html.includes("The school (right) (locked before the run)"));
