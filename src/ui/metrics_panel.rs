@@ -194,6 +194,10 @@ pub fn metrics_panel_ui(
                         } else {
                             plot = plot.include_y(0.0);
                         }
+                        if metric.title == "metrics-groups" {
+                            // A count: marks at whole groups (1, 2, 5 …), never 1.5.
+                            plot = plot.y_grid_spacer(super::investigation_plot::whole_marks);
+                        }
                         let response = plot.show(ui, |plot_ui| {
                             for (run, label) in runs.iter().zip(labels) {
                                 let points: PlotPoints = run
