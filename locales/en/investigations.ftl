@@ -16,8 +16,8 @@ inv-why-school = Why do fish school?
     .teaser = A shark hunts loners in one tank and a school in the other. Who loses fewer fish?
     .intro = Two tanks with the same 40 fish and one shark each. On the left the fish are loners (the Individual urges); on the right they school (the Group urges). Nothing else differs.
     .question = In 3 minutes, which tank will lose fewer fish to its shark?
-    .choice-loners = The loners (left)
-    .choice-school = The school (right)
+    .choice-loners = The loners (Individual tank)
+    .choice-school = The school (Group tank)
     .choice-same = About the same
     .run-hint = Run starts both tanks again from the same start and counts for 3 simulated minutes. Watch each shark: does it chase one fish to the end, or switch? Raise the Speed slider to get there sooner. The plot in this window counts each tank's catches.
     .prompt-1 = Look at the catches plot in this window. When did each shark catch its fish: steadily, or in bursts?
@@ -94,11 +94,11 @@ inv-curve-verdict-closest = Your sketch, "{ $sketch }", is the closest of the sh
 inv-curve-verdict-other = Your sketch, "{ $sketch }", lies on average { $percent } % of the plot's height from the measured curve; the closest shape is "{ $closest }" ({ $closest_percent } %).
 inv-csv-curve-low = curve x={ $x } 95% low
 inv-csv-curve-high = curve x={ $x } 95% high
-inv-loners = loners (left)
-inv-school = school (right)
+inv-loners = loners (Individual tank)
+inv-school = school (Group tank)
 inv-catches-summary = In { $secs } simulated seconds the shark caught { $loners } loners and { $school } fish of the school.
-inv-row-caught-loners = fish caught, loners (left)
-inv-row-caught-school = fish caught, school (right)
+inv-row-caught-loners = fish caught, loners (Individual tank)
+inv-row-caught-school = fish caught, school (Group tank)
 inv-unit-fish = fish
 inv-unit-fish-caught = fish caught
 inv-fish-heeded = fish { $fish } (heeded { $count })

@@ -16,8 +16,8 @@ inv-why-school = ¿Por qué los peces forman cardúmenes?
     .teaser = Un tiburón caza peces solitarios en un tanque y un cardumen en el otro. ¿Quién pierde menos peces?
     .intro = Dos tanques con los mismos 40 peces y un tiburón cada uno. A la izquierda los peces son solitarios (los impulsos Individual); a la derecha forman un cardumen (los impulsos Grupo). Nada más cambia.
     .question = En 3 minutos, ¿qué tanque perderá menos peces ante su tiburón?
-    .choice-loners = Los solitarios (izquierda)
-    .choice-school = El cardumen (derecha)
+    .choice-loners = Los solitarios (tanque Individual)
+    .choice-school = El cardumen (tanque Grupo)
     .choice-same = Más o menos igual
     .run-hint = Ejecutar vuelve a empezar los dos tanques desde el mismo inicio y cuenta durante 3 minutos simulados. Observa cada tiburón: ¿persigue a un pez hasta el final, o cambia de presa? Sube el control de Velocidad para llegar antes. La gráfica de esta ventana cuenta las capturas de cada tanque.
     .prompt-1 = Mira la gráfica de capturas de esta ventana. ¿Cuándo atrapó cada tiburón a sus peces: de forma constante o a rachas?
@@ -94,8 +94,8 @@ inv-curve-verdict-closest = Tu dibujo, «{ $sketch }», es la forma más cercana
 inv-curve-verdict-other = Tu dibujo, «{ $sketch }», queda en promedio a { $percent } % de la altura de la gráfica de la curva medida; la forma más cercana es «{ $closest }» ({ $closest_percent } %).
 inv-csv-curve-low = curva x={ $x } 95% inferior
 inv-csv-curve-high = curva x={ $x } 95% superior
-inv-loners = solitarios (izquierda)
-inv-school = cardumen (derecha)
+inv-loners = solitarios (tanque Individual)
+inv-school = cardumen (tanque Grupo)
 inv-catches-summary = En { $secs } segundos simulados el tiburón atrapó { $loners ->
         [one] { $loners } pez solitario
        *[other] { $loners } peces solitarios
@@ -103,8 +103,8 @@ inv-catches-summary = En { $secs } segundos simulados el tiburón atrapó { $lon
         [one] { $school } pez
        *[other] { $school } peces
     } del cardumen.
-inv-row-caught-loners = peces atrapados, solitarios (izquierda)
-inv-row-caught-school = peces atrapados, cardumen (derecha)
+inv-row-caught-loners = peces atrapados, solitarios (tanque Individual)
+inv-row-caught-school = peces atrapados, cardumen (tanque Grupo)
 inv-unit-fish = peces
 inv-unit-fish-caught = peces atrapados
 inv-fish-heeded = pez { $fish } (atendió a { $count })

@@ -97,7 +97,7 @@ fn the_run_waits_for_a_committed_prediction_and_the_prediction_then_stays() {
     let report = serde_json::to_value(p.report()).unwrap();
     assert_eq!(report["id"], "why-school");
     assert_eq!(report["step"], "reveal");
-    assert_eq!(report["prediction"]["text"], "The school (right)");
+    assert_eq!(report["prediction"]["text"], "The school (Group tank)");
     assert_eq!(report["result"]["rows"][0]["value"], 3.0);
 }
 
@@ -309,7 +309,7 @@ fn the_record_holds_the_prediction_the_numbers_and_escaped_answers() {
     p.advance().unwrap();
     let html = record::html(std::slice::from_ref(&p), &info());
     assert!(html.starts_with("<!DOCTYPE html>"));
-    assert!(html.contains("The school (right) (locked before the run)"));
+    assert!(html.contains("The school (Group tank) (locked before the run)"));
     assert!(html.contains("measured 3 and 1"));
     assert!(html.contains("<td class=\"n\">3</td>"));
     assert!(html.contains("&lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;friends&quot;"));
@@ -327,7 +327,7 @@ fn the_record_holds_the_prediction_the_numbers_and_escaped_answers() {
     assert!(
         csv.contains("investigation,label,value,unit\nwhy-school,a,3,fish\nwhy-school,b,1,fish\n")
     );
-    assert!(csv.contains("# why-school: predicted \"The school (right)\""));
+    assert!(csv.contains("# why-school: predicted \"The school (Group tank)\""));
 }
 
 /// The cause behind *Why do fish school?*: the same two tanks (40 fish, one

@@ -153,9 +153,9 @@ for (const tier of TIERS) {
       await press("Next: predict »");
       await page.waitForFunction(() => window.shoal.state().investigation.step === "predict", null, { timeout: 30_000 });
       // The choices are buttons that say which one is chosen.
-      await press("The school (right)");
+      await press("The school (Group tank)");
       await page.waitForFunction(() => window.shoal.state().investigation.chosen === 1, null, { timeout: 30_000 });
-      const chosen = await mirrored(page, 'button:text-is("The school (right)")');
+      const chosen = await mirrored(page, 'button:text-is("The school (Group tank)")');
       assert.equal(await chosen.getAttribute("aria-pressed"), "true");
       await press("Commit my prediction (it locks)");
       await page.waitForFunction(() => window.shoal.state().investigation.step === "run", null, { timeout: 30_000 });

@@ -210,7 +210,7 @@ for (const tier of TIERS) {
       await clickInWindow(page, "investigation_commit", () => window.shoal.state().investigation.step === "run");
       i = await inv(page);
       assert.equal(i.prediction.choice, 1);
-      assert.equal(i.prediction.text, "The school (right)");
+      assert.equal(i.prediction.text, "The school (Group tank)");
       // Locked: the choices are gone (once the next frame is drawn).
       await waitFrames(page, 2);
       assert.equal((await page.evaluate(() => window.shoal.widgets())).investigation_choice_0, undefined);
@@ -238,7 +238,7 @@ for (const tier of TIERS) {
       assert.ok(Number.isInteger(loners) && loners <= st.metrics.catches, `${loners} vs ${st.metrics.catches}`);
       assert.ok(Number.isInteger(school) && school <= st.metrics_right.catches);
       assert.ok(i.result.summary.includes(`${loners} loners`) && i.result.summary.includes(`${school} fish`));
-      assert.ok(i.result.verdict.includes("The school (right)"), "the prediction beside the result");
+      assert.ok(i.result.verdict.includes("The school (Group tank)"), "the prediction beside the result");
       // The investigation's seed shows what it is about (docs/investigations.md).
       assert.ok(school < loners, `the school lost fewer: ${school} against ${loners}`);
       await waitForWidget(page, "investigation_result");
@@ -267,13 +267,13 @@ for (const tier of TIERS) {
       assert.match(file.suggestedFilename(), /^shoal-why-school-\d{4}-\d\d-\d\d\.html$/);
       const html = fs.readFileSync(await file.path(), "utf8");
       saveArtifact(`investigation-${tier}-record.html`, html);
-      assert.ok(html.includes("The school (right) (locked before the run)"));
+      assert.ok(html.includes("The school (Group tank) (locked before the run)"));
       assert.ok(html.includes(`<td class="n">${loners}</td>`) && html.includes(`<td class="n">${school}</td>`));
       assert.ok(html.includes("It &lt;switched&gt;"), "student text, typed key by key, escaped");
       assert.ok(html.includes("<svg") && !html.includes("<script"), "inline plot, no script");
       assert.ok(html.includes("What scientists found"));
       const record = await page.evaluate(() => window.shoal.investigation_record());
-      assert.ok(record.csv.includes(`why-school,"fish caught, loners (left)",${loners},fish`), record.csv);
+      assert.ok(record.csv.includes(`why-school,"fish caught, loners (Individual tank)",${loners},fish`), record.csv);
       assert.deepEqual(errors, []);
       await page.close();
     });
