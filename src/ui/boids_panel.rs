@@ -643,9 +643,13 @@ fn draw_tank_label(view: &ViewContext, settings: &Settings) {
     };
     let at = view.rect.left_top() + egui::vec2(10.0, top);
     let color = side_color(view.side);
+    // Within the view, and clear of *Reset view* at the top right of the
+    // right (or bottom) tank: a narrow view (a phone) wraps the label.
+    let reserved = if view.side == Side::Right { 136.0 } else { 0.0 };
+    let wrap_width = (view.rect.width() - 20.0 - reserved).max(80.0);
     let galley = view
         .painter
-        .layout_no_wrap(label, egui::FontId::proportional(15.0), color);
+        .layout(label, egui::FontId::proportional(15.0), color, wrap_width);
     view.painter.rect_filled(
         egui::Rect::from_min_size(at, galley.size()).expand(4.0),
         4.0,
