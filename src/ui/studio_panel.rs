@@ -174,38 +174,52 @@ fn student_control<R>(
     Some(add(ui, rects))
 }
 
-/// The H / L / ? toggles of `key`, which edit the frame's studio.
+/// Smallest side of an H / L / ? toggle, in points (24: WCAG 2.5.8's
+/// smallest target for a pointer).
+pub const TOGGLE_MIN_SIDE: f32 = 24.0;
+
+/// The H / L / ? toggles of `key`, which edit the frame's studio. Each is at
+/// least [`TOGGLE_MIN_SIDE`] square, and its accessible name says which rule
+/// on which control ("Hide Alignment (left tank)").
 fn toggles(ui: &mut egui::Ui, rects: &mut WidgetRects, key: &str, studio: &Studio) {
     let rule = studio.rule(key);
     let mut next = rule;
     let name = key.replace('.', "_");
-    for (flag, text, help, what) in [
+    let setting = setting_text(key, true);
+    for (flag, text, help, what, accessible) in [
         (
             &mut next.hidden,
             ts("studio-toggle-hide"),
             ts("studio-toggle-hide.help"),
             "hide",
+            tr!("studio-toggle-hide-name", key = setting.as_str()),
         ),
         (
             &mut next.locked,
             ts("studio-toggle-lock"),
             ts("studio-toggle-lock.help"),
             "lock",
+            tr!("studio-toggle-lock-name", key = setting.as_str()),
         ),
         (
             &mut next.mystery,
             ts("studio-toggle-mystery"),
             ts("studio-toggle-mystery.help"),
             "mystery",
+            tr!("studio-toggle-mystery-name", key = setting.as_str()),
         ),
     ] {
         let r = ui
-            .add(egui::Button::selectable(*flag, text).small())
+            .add(
+                egui::Button::selectable(*flag, text)
+                    .min_size(egui::vec2(TOGGLE_MIN_SIDE, TOGGLE_MIN_SIDE)),
+            )
             .on_hover_text(tr!(
                 "studio-toggle-help",
                 help = help,
-                key = setting_text(key, true)
-            ));
+                key = setting.as_str()
+            ))
+            .accessible_name(accessible);
         rects.insert(&format!("studio_{what}_{name}"), r.rect);
         if r.clicked() {
             *flag = !*flag;
@@ -295,7 +309,15 @@ impl StudioPanel {
                 .default_width(width)
                 .default_pos(screen.right_top() + egui::vec2(-width - 12.0, 48.0))
                 .constrain(true)
-                .show(ctx, |ui| self.studio_ui(ui, settings, rects));
+                .show(ctx, |ui| {
+                    // However many rules, every row can be scrolled to: the
+                    // window never runs past the bottom of the screen.
+                    egui::ScrollArea::vertical()
+                        .id_salt("studio_window_scroll")
+                        .max_height((screen.height() - 140.0).max(160.0))
+                        .auto_shrink([false, true])
+                        .show(ui, |ui| self.studio_ui(ui, settings, rects));
+                });
             if let Some(shown) = shown {
                 rects.insert("studio_window", shown.response.rect);
             }
