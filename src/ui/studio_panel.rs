@@ -286,6 +286,9 @@ pub struct StudioPanel {
     share_open: bool,
     /// The link the QR code was made for, and the code (or why none).
     qr: Option<(String, Result<qrcodegen::QrCode, String>)>,
+    /// The settings and page the last student link was made from, and the link (made
+    /// again only when they change: making one checks that it reopens them).
+    link: Option<(Settings, String, String)>,
 }
 
 impl StudioPanel {
@@ -342,7 +345,19 @@ impl StudioPanel {
             ctx.data_mut(|d| d.insert_temp(open_id(), open));
         }
         if self.share_open {
-            let link = student_link(settings, page_url);
+            if self
+                .link
+                .as_ref()
+                .is_none_or(|(s, p, _)| s != settings || p != page_url)
+            {
+                let link = student_link(settings, page_url);
+                self.link = Some((settings.clone(), page_url.to_owned(), link));
+            }
+            let link = self
+                .link
+                .as_ref()
+                .map(|(_, _, l)| l.clone())
+                .unwrap_or_default();
             if self.qr.as_ref().is_none_or(|(l, _)| *l != link) {
                 self.qr = Some((link.clone(), super::qr::encode(&link)));
             }
