@@ -169,7 +169,7 @@ const CHECK_BYTES: usize = 3;
 
 /// The constant mixed into the scramble's key (changing it would stop every
 /// shared link with a mystery value from opening).
-const SEAL_CONSTANT: &[u8] = b"shoal studio mystery values, v1";
+const SEAL_CONSTANT: &[u8] = b"shoal studio mystery values, v1"; // words: a key for the scramble, never shown
 
 /// `patch` (a link's JSON for `settings`) with the studio's mystery values
 /// moved out of their places into one sealed field (all of them, even those
