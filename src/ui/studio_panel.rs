@@ -21,10 +21,6 @@ use crate::settings::names::setting_text;
 use crate::settings::studio::{ControlRule, Studio};
 use crate::tr;
 
-/// Screens narrower than this (points; default 600: phones) get the studio
-/// window at the bottom, clear of the side panel's toggles.
-const NARROW_SCREEN_WIDTH: f32 = 600.0;
-
 /// The rules of this frame, kept in egui's memory so every panel reaches them
 /// without a new argument.
 #[derive(Clone, Debug, Default)]
@@ -309,27 +305,14 @@ impl StudioPanel {
         if open {
             let screen = ctx.content_rect();
             let width = (screen.width() - 24.0).clamp(220.0, 420.0);
-            // Beside a side panel the window sits at the right; on a narrow
-            // screen (a phone), where it would cover the panel's toggles, it
-            // stays at the bottom, at most 40 % of the screen high, and the
-            // panel above scrolls every toggle into reach.
-            let narrow = screen.width() < NARROW_SCREEN_WIDTH;
-            let max_height = if narrow {
-                (screen.height() * 0.4 - 60.0).max(120.0)
-            } else {
-                (screen.height() - 140.0).max(160.0)
-            };
-            let mut window = egui::Window::new(ts("studio-button"))
+            let max_height = (screen.height() - 140.0).max(160.0);
+            let window = egui::Window::new(ts("studio-button"))
                 .id(egui::Id::unique("studio_window"))
                 .open(&mut open)
                 .collapsible(false)
                 .default_width(width)
+                .default_pos(screen.right_top() + egui::vec2(-width - 12.0, 48.0))
                 .constrain(true);
-            window = if narrow {
-                window.anchor(egui::Align2::CENTER_BOTTOM, egui::vec2(0.0, -40.0))
-            } else {
-                window.default_pos(screen.right_top() + egui::vec2(-width - 12.0, 48.0))
-            };
             let shown = window.show(ctx, |ui| {
                 // However many rules, every row can be scrolled to: the
                 // window never runs past the bottom of the screen.

@@ -163,39 +163,6 @@ for (const tier of TIERS) {
       assert.deepEqual(errors, []);
     });
 
-    test("on a phone every toggle can be scrolled into reach and clicked", walkOnly(tier), async () => {
-      const context = await browser.newContext({ viewport: { width: 390, height: 844 }, hasTouch: true });
-      const { page: phone } = await openShoal(context, server.url, { width: 390, height: 844 });
-      await clickUntil(phone, "show_panel", () => !!window.shoal.widgets().hide_panel);
-      await clickUntil(phone, "studio_open", () => !!window.shoal.widgets().studio_window);
-      await waitFrames(phone, 2);
-      saveArtifact(`studio-phone-${tier}.png`, await phone.screenshot());
-      // The window stays clear of the panel's upper part: a toggle scrolled
-      // there is not under it, and a click on it takes effect.
-      const studioWindow = (await widgets(phone)).studio_window;
-      assert.ok(studioWindow.height <= 844 * 0.5, `the studio window is ${studioWindow.height} px high`);
-      for (const [name, rule] of [
-        ["studio_lock_speed", () => window.shoal.settings().studio.rules.speed?.locked === true],
-        ["studio_hide_paused", () => window.shoal.settings().studio.rules.paused?.hidden === true],
-      ]) {
-        const r = await scrollPanelTo(phone, name);
-        assert.ok(r.width >= 24 && r.height >= 24, `${name}: ${r.width}x${r.height}`);
-        const isUnder = (w) =>
-          w[name].y + w[name].height > w.studio_window.y && w[name].y < w.studio_window.y + w.studio_window.height;
-        let w = await widgets(phone);
-        for (let i = 0; i < 10 && isUnder(w); i++) {
-          await phone.mouse.move(120, 200);
-          await phone.mouse.wheel(0, 100);
-          await waitFrames(phone, 2);
-          w = await widgets(phone);
-        }
-        const under = isUnder(w);
-        assert.ok(!under || w[name].x > w.studio_window.x + w.studio_window.width, `${name} is under the studio window`);
-        await clickUntil(phone, name, rule);
-      }
-      await context.close();
-    });
-
     test("the link opens the student view with the rules in force", walkOnly(tier), async () => {
       assert.ok(link, "the first test made the link");
       // The teacher's page has handed over its link; closed, it no longer shares
