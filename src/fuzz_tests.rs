@@ -643,6 +643,7 @@ fn link_error_kind(err: &share_link::ShareLinkError) -> &'static str {
         E::NotBase64 => "not base64",
         E::NotDeflate => "not deflate",
         E::NotJson => "not JSON",
+        E::Sealed(_) => "sealed values damaged",
         E::Invalid(_) => "invalid",
     }
 }
@@ -692,6 +693,7 @@ fn studio_paths() -> Vec<String> {
         "studio.rules",
         "studio.question",
         "studio.student_view",
+        "sealed",
     ]
     .iter()
     .map(|s| (*s).to_owned())

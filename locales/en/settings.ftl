@@ -37,6 +37,11 @@ setting-link-not-base64 = the link is damaged (it is not valid base64 text): per
 setting-link-not-deflate = the link is damaged (its data cannot be unpacked): perhaps it was cut off when copied
 setting-link-not-json = the link's data is not valid settings text
 setting-link-invalid = the link asks for something Shoal cannot do: { $reason }
+setting-link-sealed-damaged = the link's mystery values are damaged ({ $why }): perhaps the link was cut off or edited when copied
+setting-link-sealed-not-base64 = they are not valid base64 text
+setting-link-sealed-short = they are too short
+setting-link-sealed-checksum = they do not unscramble to what the teacher set
+setting-link-sealed-mismatch = they do not match the controls the studio makes a mystery
 
 ## The whole app's settings.
 setting-app-speed = Speed

@@ -37,6 +37,11 @@ setting-link-not-base64 = el enlace está dañado (no es texto base64 válido): 
 setting-link-not-deflate = el enlace está dañado (sus datos no se pueden descomprimir): tal vez se cortó al copiarlo
 setting-link-not-json = los datos del enlace no son un texto de ajustes válido
 setting-link-invalid = el enlace pide algo que Shoal no puede hacer: { $reason }
+setting-link-sealed-damaged = los valores misteriosos del enlace están dañados ({ $why }): tal vez el enlace se cortó o se editó al copiarlo
+setting-link-sealed-not-base64 = no son texto base64 válido
+setting-link-sealed-short = son demasiado cortos
+setting-link-sealed-checksum = al descifrarlos no dan lo que puso el maestro
+setting-link-sealed-mismatch = no corresponden a los controles que el estudio convierte en misterio
 
 ## Los ajustes de toda la aplicación.
 setting-app-speed = Velocidad

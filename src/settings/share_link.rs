@@ -3,16 +3,30 @@
 //! class exactly what is on the screen.
 //!
 //! Format: `#v1.` followed by URL-safe base64 (no padding) of the DEFLATE-compressed
-//! JSON of [`Settings`]. Decoding never trusts the link: size limits on both the
-//! text and the inflated JSON, then the same all-or-nothing validation as
-//! `shoal.set()`; any failure is a [`ShareLinkError`] with a sentence for the notice,
-//! and the caller falls back to the defaults.
+//! JSON of a patch of [`Settings`]: only the settings that differ from the
+//! defaults (the shorter the link, the coarser and easier to scan its QR code).
+//! The patch is applied to the defaults, as `shoal.set()` applies one, so the
+//! first links, which carried every setting, open as they did.
+//!
+//! A teacher's studio with mystery values (`settings/studio.rs`) keeps them out
+//! of the readable JSON: they travel in one field, `"sealed"`, scrambled (see
+//! [`seal`]). This is a classroom convention, not cryptography: the scramble's
+//! key is made from the link's own text and a constant in Shoal's source, so a
+//! student with developer tools and this file can undo it.
+//!
+//! Decoding never trusts the link: size limits on both the text and the
+//! inflated JSON, a checksum on the sealed values, then the same all-or-nothing
+//! validation as `shoal.set()`; any failure is a [`ShareLinkError`] with a
+//! sentence for the notice, and the caller falls back to the defaults.
 
 use base64::Engine as _;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 
 use crate::i18n::tr;
-use crate::settings::{Settings, SettingsError};
+use serde_json::{Map, Value};
+
+use crate::settings::studio::Studio;
+use crate::settings::{Settings, SettingsError, Side};
 use crate::tr;
 
 /// Version tag at the start of every link's fragment.
@@ -38,6 +52,9 @@ pub enum ShareLinkError {
     NotBase64,
     NotDeflate,
     NotJson,
+    /// The sealed mystery values do not unscramble (the link was cut or
+    /// edited): the catalogue id of the reason.
+    Sealed(&'static str),
     Invalid(SettingsError),
 }
 
@@ -55,6 +72,7 @@ impl std::fmt::Display for ShareLinkError {
             Self::NotBase64 => tr("setting-link-not-base64"),
             Self::NotDeflate => tr("setting-link-not-deflate"),
             Self::NotJson => tr("setting-link-not-json"),
+            Self::Sealed(why) => tr!("setting-link-sealed-damaged", why = tr(why)),
             Self::Invalid(err) => tr!("setting-link-invalid", reason = err.to_string()),
         };
         f.write_str(&text)
@@ -70,11 +88,269 @@ impl std::error::Error for ShareLinkError {
     }
 }
 
-/// The fragment (without `#`) that reopens `settings`.
+/// The fragment (without `#`) that reopens `settings`: the settings that
+/// differ from the defaults, the studio's mystery values sealed.
 pub fn encode(settings: &Settings) -> String {
-    // Serialising plain data to a String cannot fail; an empty object is a safe
-    // fallback that decodes to the defaults.
-    pack_json(&serde_json::to_string(settings).unwrap_or_else(|_| "{}".to_owned()))
+    // Serialising plain data cannot fail; an empty object is a safe fallback
+    // that decodes to the defaults.
+    let full = serde_json::to_value(settings).unwrap_or_else(|_| Value::Object(Map::new()));
+    let short = pack_json(&sealed(settings, short_patch(settings, &full)).to_string());
+    if decode(&short).ok().flatten().as_ref() == Some(settings) {
+        return short;
+    }
+    // A setting the short patch could not carry exactly (none is known): every
+    // setting, as the first links did, the mystery values still sealed.
+    pack_json(&sealed(settings, full).to_string())
+}
+
+/// The settings of `full` (the JSON of `settings`) that differ from the
+/// defaults, as a patch. A tank whose preset is not the default's names it,
+/// and differs from that preset's values (a patch loads a preset it names
+/// before its other values).
+fn short_patch(settings: &Settings, full: &Value) -> Value {
+    let mut base = Settings::default();
+    for side in Side::BOTH {
+        let preset = settings.tank(side).preset;
+        if preset != base.tank(side).preset {
+            base.tank_mut(side).load_preset(preset);
+        }
+    }
+    let mut base = serde_json::to_value(&base).unwrap_or_default();
+    // The defaults leave the (empty) studio out; its fields differ one by one.
+    if let Value::Object(base) = &mut base {
+        base.insert(
+            "studio".to_owned(),
+            serde_json::to_value(Studio::default()).unwrap_or_default(),
+        );
+    }
+    let mut patch = difference(&base, full).unwrap_or_else(|| Value::Object(Map::new()));
+    for side in Side::BOTH {
+        let preset = settings.tank(side).preset;
+        if preset != Settings::default().tank(side).preset
+            && let Value::Object(patch) = &mut patch
+        {
+            let tank = patch
+                .entry(side.name())
+                .or_insert_with(|| Value::Object(Map::new()));
+            if let (Value::Object(tank), Ok(name)) = (tank, serde_json::to_value(preset)) {
+                tank.insert("preset".to_owned(), name);
+            }
+        }
+    }
+    patch
+}
+
+/// What of `full` differs from `base`: objects compared key by key, other
+/// values whole (a list of obstacles is one value). `None` when nothing does.
+fn difference(base: &Value, full: &Value) -> Option<Value> {
+    match (base, full) {
+        (Value::Object(base), Value::Object(full)) => {
+            let out: Map<String, Value> = full
+                .iter()
+                .filter_map(|(key, value)| {
+                    let differs = match base.get(key) {
+                        Some(was) => difference(was, value),
+                        None => Some(value.clone()),
+                    };
+                    differs.map(|d| (key.clone(), d))
+                })
+                .collect();
+            (!out.is_empty()).then_some(Value::Object(out))
+        }
+        _ => (base != full).then(|| full.clone()),
+    }
+}
+
+/// The top-level field that carries a studio's mystery values, scrambled.
+const SEALED: &str = "sealed";
+
+/// Bytes of checksum before the sealed values (3: four base64 characters).
+const CHECK_BYTES: usize = 3;
+
+/// The constant mixed into the scramble's key (changing it would stop every
+/// shared link with a mystery value from opening).
+const SEAL_CONSTANT: &[u8] = b"shoal studio mystery values, v1"; // words: a key for the scramble, never shown
+
+/// `patch` (a link's JSON for `settings`) with the studio's mystery values
+/// moved out of their places into one sealed field (all of them, even those
+/// equal to the defaults: a value missing from the link would say it is the
+/// default). Without mystery values, `patch` unchanged.
+fn sealed(settings: &Settings, mut patch: Value) -> Value {
+    let keys = settings.studio.sealed_keys();
+    if keys.is_empty() {
+        return patch;
+    }
+    let full = serde_json::to_value(settings).unwrap_or_default();
+    let mut values = Vec::new();
+    for key in &keys {
+        let path: Vec<&str> = key.split('.').collect();
+        values.push(value_at(&full, &path).cloned().unwrap_or(Value::Null));
+        remove_at(&mut patch, &path);
+    }
+    // A preset that is a mystery because a weight is would name the mix: it
+    // is left out, and follows the weights when the link opens.
+    for key in settings.studio.mystery_keys() {
+        remove_at(&mut patch, &key.split('.').collect::<Vec<_>>());
+    }
+    if let Value::Object(map) = &mut patch {
+        let key = seal_key(&settings.studio.question, &keys);
+        map.insert(
+            SEALED.to_owned(),
+            Value::String(seal(&Value::Array(values).to_string(), key)),
+        );
+    }
+    patch
+}
+
+/// The scramble of a studio's mystery values: `text` (the JSON list of their
+/// values, in the order of [`Studio::sealed_keys`]) after a 3-byte checksum
+/// (the low bytes of FNV-1a, 32 bits: a damaged value passes one time in 16
+/// million; the link's base64 and DEFLATE catch most damage first), XORed with a stream of bytes (SplitMix64) seeded with
+/// `key`, in URL-safe base64. Enough that decoding the link as far as its
+/// JSON shows no number; no secret.
+pub fn seal(text: &str, key: u64) -> String {
+    let mut bytes = fnv1a32(text.as_bytes()).to_le_bytes()[..CHECK_BYTES].to_vec();
+    bytes.extend_from_slice(text.as_bytes());
+    scramble(&mut bytes, key);
+    URL_SAFE_NO_PAD.encode(bytes)
+}
+
+/// [`seal`] undone; the reason (a catalogue id) when `sealed` does not
+/// unscramble to what was sealed with `key`.
+pub fn unseal(sealed: &str, key: u64) -> Result<String, &'static str> {
+    let mut bytes = URL_SAFE_NO_PAD
+        .decode(sealed)
+        .map_err(|_| "setting-link-sealed-not-base64")?;
+    if bytes.len() < CHECK_BYTES {
+        return Err("setting-link-sealed-short");
+    }
+    scramble(&mut bytes, key);
+    let (sum, text) = bytes.split_at(CHECK_BYTES);
+    if sum != &fnv1a32(text).to_le_bytes()[..CHECK_BYTES] {
+        return Err("setting-link-sealed-checksum");
+    }
+    String::from_utf8(text.to_vec()).map_err(|_| "setting-link-sealed-checksum")
+}
+
+/// The scramble's key: the constant, the teacher's question and the controls
+/// whose values are mysteries, so that two lessons with the same number
+/// scramble it differently.
+fn seal_key(question: &str, mysteries: &[String]) -> u64 {
+    let mut text = SEAL_CONSTANT.to_vec();
+    text.push(0);
+    text.extend_from_slice(question.as_bytes());
+    for key in mysteries {
+        text.push(0);
+        text.extend_from_slice(key.as_bytes());
+    }
+    fnv1a64(&text)
+}
+
+/// XORs `bytes` with SplitMix64's stream from `seed` (its own inverse).
+fn scramble(bytes: &mut [u8], seed: u64) {
+    let mut state = seed;
+    for chunk in bytes.chunks_mut(8) {
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        for (byte, k) in chunk.iter_mut().zip(z.to_le_bytes()) {
+            *byte ^= k;
+        }
+    }
+}
+
+fn fnv1a64(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xCBF2_9CE4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01B3)
+    })
+}
+
+fn fnv1a32(bytes: &[u8]) -> u32 {
+    bytes.iter().fold(0x811C_9DC5, |h, &b| {
+        (h ^ u32::from(b)).wrapping_mul(0x0100_0193)
+    })
+}
+
+/// A link's JSON with its sealed mystery values put back in their places
+/// (the link's studio says which controls they belong to).
+fn unsealed(mut value: Value) -> Result<Value, ShareLinkError> {
+    let Value::Object(map) = &mut value else {
+        return Ok(value);
+    };
+    let Some(sealed) = map.remove(SEALED) else {
+        return Ok(value);
+    };
+    let sealed = sealed
+        .as_str()
+        .ok_or(ShareLinkError::Sealed("setting-link-sealed-not-base64"))?;
+    let mut studio = Studio::default();
+    if let Some(patch) = map.get("studio") {
+        studio
+            .apply_patch(patch)
+            .map_err(|err| ShareLinkError::Invalid(err.into()))?;
+    }
+    let keys = studio.sealed_keys();
+    let text = unseal(sealed, seal_key(&studio.question, &keys)).map_err(ShareLinkError::Sealed)?;
+    let values = match serde_json::from_str::<Value>(&text) {
+        Ok(Value::Array(values)) if values.len() == keys.len() => values,
+        _ => return Err(ShareLinkError::Sealed("setting-link-sealed-mismatch")),
+    };
+    for (key, v) in keys.iter().zip(values) {
+        let path: Vec<&str> = key.split('.').collect();
+        if !insert_at(&mut value, &path, v) {
+            return Err(ShareLinkError::Sealed("setting-link-sealed-mismatch"));
+        }
+    }
+    Ok(value)
+}
+
+fn value_at<'a>(root: &'a Value, path: &[&str]) -> Option<&'a Value> {
+    path.iter()
+        .try_fold(root, |v, key| v.as_object()?.get(*key))
+}
+
+/// Removes the value at `path`, and the objects it leaves empty.
+fn remove_at(root: &mut Value, path: &[&str]) {
+    let Value::Object(map) = root else {
+        return;
+    };
+    match path {
+        [] => {}
+        [last] => {
+            map.remove(*last);
+        }
+        [first, rest @ ..] => {
+            if let Some(inner) = map.get_mut(*first) {
+                remove_at(inner, rest);
+                if inner.as_object().is_some_and(Map::is_empty) {
+                    map.remove(*first);
+                }
+            }
+        }
+    }
+}
+
+/// Puts `value` at `path`, making objects on the way; `false` if a value
+/// that is not an object stands in the way.
+fn insert_at(root: &mut Value, path: &[&str], value: Value) -> bool {
+    let Value::Object(map) = root else {
+        return false;
+    };
+    match path {
+        [] => false,
+        [last] => {
+            map.insert((*last).to_owned(), value);
+            true
+        }
+        [first, rest @ ..] => insert_at(
+            map.entry(*first)
+                .or_insert_with(|| Value::Object(Map::new())),
+            rest,
+            value,
+        ),
+    }
 }
 
 /// `json` packed as a link's text: the version tag, then URL-safe base64 of its
@@ -114,6 +390,7 @@ pub fn decode(fragment: &str) -> Result<Option<Settings>, ShareLinkError> {
     let Some(value) = unpack_json(fragment)? else {
         return Ok(None);
     };
+    let value = unsealed(value)?;
     let mut settings = Settings::default();
     settings.apply_patch(&value)?;
     Ok(Some(settings))

@@ -18,7 +18,9 @@
 //! `shoal.set` try ([`Studio::enforce`], [`Studio::check_unchanged`]).
 //!
 //! The rules are a classroom convention, not a secret: the link itself carries
-//! the values (compressed), as it must for the fish to use them.
+//! the values, as it must for the fish to use them. The mystery values travel
+//! scrambled (`share_link::seal`), so decoding the link shows no number, but a
+//! student with developer tools and Shoal's source can still unscramble them.
 
 use std::collections::BTreeMap;
 
@@ -164,12 +166,21 @@ impl Studio {
 
     /// Every key whose value a student does not see (a preset included when
     /// one of its weights is a mystery).
-    fn mystery_keys(&self) -> Vec<String> {
+    pub fn mystery_keys(&self) -> Vec<String> {
         let mut keys = self.kept_keys();
         keys.extend(Side::BOTH.map(|side| format!("{}.preset", side.name())));
         keys.sort();
         keys.dedup();
         keys.retain(|k| self.effective(k).mystery);
+        keys
+    }
+
+    /// The mystery values a link carries sealed (`share_link`): every
+    /// [`Self::mystery_keys`] but a preset that is a mystery only because one
+    /// of its weights is (its label follows the weights the link carries).
+    pub fn sealed_keys(&self) -> Vec<String> {
+        let mut keys = self.mystery_keys();
+        keys.retain(|k| !k.ends_with(".preset") || self.rule(k).mystery);
         keys
     }
 
@@ -457,4 +468,4 @@ fn value_at_mut<'a>(root: &'a mut Value, path: &[&str]) -> Option<&'a mut Value>
 
 #[cfg(test)]
 #[path = "studio_tests.rs"]
-mod tests;
+pub(crate) mod tests;

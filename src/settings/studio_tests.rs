@@ -358,3 +358,166 @@ fn a_mystery_count_is_masked_in_its_own_scene_only() {
     assert!(!pupil.studio.count_is_mystery_for_student(Scene::Boids));
     assert!(!pupil.studio.count_is_mystery_for_student(Scene::Learning));
 }
+
+/// A link's JSON as a curious student reads it: the text after `#v1.`,
+/// base64 decoded, inflated, parsed.
+fn as_a_student_reads_it(link: &str) -> serde_json::Value {
+    use base64::Engine as _;
+    let body = link.trim_start_matches('#').strip_prefix("v1.").unwrap();
+    let packed = base64::engine::general_purpose::URL_SAFE_NO_PAD
+        .decode(body)
+        .unwrap();
+    let json = miniz_oxide::inflate::decompress_to_vec(&packed).unwrap();
+    serde_json::from_slice(&json).unwrap()
+}
+
+/// Every number in a JSON value, wherever it sits.
+fn numbers_in(value: &serde_json::Value, out: &mut Vec<f64>) {
+    match value {
+        serde_json::Value::Number(n) => out.extend(n.as_f64()),
+        serde_json::Value::Array(list) => list.iter().for_each(|v| numbers_in(v, out)),
+        serde_json::Value::Object(map) => map.values().for_each(|v| numbers_in(v, out)),
+        _ => {}
+    }
+}
+
+/// A typical lesson: a few locks and two mysteries with values no other
+/// setting has (63 and 29), in the schooling lab.
+pub(crate) fn two_mysteries(student_view: bool) -> Settings {
+    let mut settings = Settings::default();
+    settings
+        .apply_patch(&json!({
+            "scene": "boids",
+            "left": {"alignment": 63, "cohesion": 29, "fish_count": 80, "sharks": 1},
+            "studio": {
+                "student_view": student_view,
+                "question": "Which urge keeps this school together?",
+                "rules": {
+                    "left.alignment": {"mystery": true},
+                    "left.cohesion": {"mystery": true},
+                    "speed": {"locked": true},
+                    "left.fish_count": {"locked": true},
+                    "left.stingrays": {"hidden": true}
+                }
+            }
+        }))
+        .unwrap();
+    settings
+}
+
+#[test]
+fn decoding_a_student_link_shows_no_mystery_number_and_the_link_round_trips() {
+    let settings = two_mysteries(true);
+    let link = share_link::encode(&settings);
+    let json = as_a_student_reads_it(&link);
+    let mut numbers = Vec::new();
+    numbers_in(&json, &mut numbers);
+    for mystery in [63.0, 29.0] {
+        assert!(!numbers.contains(&mystery), "{mystery} readable in {json}");
+        let text = json.to_string();
+        assert!(
+            !text.contains(&format!(":{mystery}"))
+                && !text.contains(&format!(":{}", mystery as i32)),
+            "{text}"
+        );
+    }
+    assert!(json["left"].get("alignment").is_none(), "{json}");
+    assert!(
+        json["left"].get("preset").is_none(),
+        "the preset would name the mix"
+    );
+    assert!(json["sealed"].is_string(), "{json}");
+    // The same lesson without the mystery rules carries the numbers in the
+    // clear: the rule is what hides them.
+    let mut open = settings.clone();
+    open.studio.rules.remove("left.alignment");
+    open.studio.rules.remove("left.cohesion");
+    let mut numbers = Vec::new();
+    numbers_in(
+        &as_a_student_reads_it(&share_link::encode(&open)),
+        &mut numbers,
+    );
+    assert!(
+        numbers.contains(&63.0) && numbers.contains(&29.0),
+        "{numbers:?}"
+    );
+    // The student's page holds exactly the teacher's values.
+    let back = share_link::decode(&link).unwrap().unwrap();
+    assert_eq!(back, settings);
+    assert_eq!(back.left.alignment, 63.0);
+    assert_eq!(back.left.cohesion, 29.0);
+}
+
+#[test]
+fn a_mystery_equal_to_the_default_is_sealed_too() {
+    let mut settings = two_mysteries(true);
+    let default = Settings::default();
+    settings.left.alignment = default.left.alignment;
+    settings.left.cohesion = default.left.cohesion;
+    settings.left.preset = settings.left.matching_preset();
+    let link = share_link::encode(&settings);
+    let json = as_a_student_reads_it(&link);
+    assert!(json["left"].get("alignment").is_none(), "{json}");
+    assert!(json["sealed"].is_string(), "{json}");
+    assert_eq!(share_link::decode(&link).unwrap().unwrap(), settings);
+}
+
+#[test]
+fn the_same_number_scrambles_differently_for_another_question() {
+    let one = two_mysteries(true);
+    let mut two = one.clone();
+    two.studio.question = "What do the fish copy?".to_owned();
+    let sealed = |s: &Settings| as_a_student_reads_it(&share_link::encode(s))["sealed"].clone();
+    assert_ne!(sealed(&one), sealed(&two));
+}
+
+#[test]
+fn a_damaged_sealed_value_is_refused_with_the_reason_named() {
+    let link = share_link::encode(&two_mysteries(true));
+    let json = as_a_student_reads_it(&link);
+    let repack = |json: &serde_json::Value| share_link::pack_json(&json.to_string());
+    let sealed = json["sealed"].as_str().unwrap().to_owned();
+    // One character of the scramble changed.
+    let mut flipped = json.clone();
+    let mut chars: Vec<char> = sealed.chars().collect();
+    chars[10] = if chars[10] == 'A' { 'B' } else { 'A' };
+    flipped["sealed"] = json!(chars.into_iter().collect::<String>());
+    // The question edited: the key no longer fits.
+    let mut asked = json.clone();
+    asked["studio"]["question"] = json!("Something else?");
+    // Not base64, cut short, not text.
+    let mut junk = json.clone();
+    junk["sealed"] = json!("***");
+    let mut short = json.clone();
+    short["sealed"] = json!("AAA");
+    let mut number = json.clone();
+    number["sealed"] = json!(63);
+    for (damaged, reason) in [
+        (&flipped, "unscramble"),
+        (&asked, "unscramble"),
+        (&junk, "base64"),
+        (&short, "too short"),
+        (&number, "base64"),
+    ] {
+        let err = share_link::decode(&repack(damaged)).unwrap_err();
+        assert!(
+            matches!(err, share_link::ShareLinkError::Sealed(_)),
+            "{err:?}"
+        );
+        let text = err.to_string();
+        assert!(text.contains("mystery values are damaged"), "{text}");
+        assert!(text.contains(reason), "{text}");
+    }
+}
+
+#[test]
+fn old_links_with_every_setting_and_plain_mystery_numbers_still_open() {
+    // A link as the first studio made it: every setting, the number in clear.
+    let settings = two_mysteries(true);
+    let old = share_link::pack_json(&serde_json::to_string(&settings).unwrap());
+    assert_eq!(share_link::decode(&old).unwrap().unwrap(), settings);
+    assert!(
+        old.len() > share_link::encode(&settings).len() * 2,
+        "the new link is shorter"
+    );
+}

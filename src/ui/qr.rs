@@ -68,4 +68,43 @@ mod tests {
         };
         assert!(err.contains("too long"), "{err}");
     }
+
+    /// The student link's QR code at the studio's defaults and at a typical
+    /// lesson, before (every setting in the link, the first format) and now
+    /// (only what differs from the defaults, the mystery values sealed): the
+    /// figures in docs/reliability.md (`cargo test --lib qr:: -- --nocapture`).
+    #[test]
+    fn student_links_are_short_enough_for_a_coarse_qr_code() {
+        use crate::settings::Settings;
+        use crate::settings::share_link::{decode, pack_json};
+        let page = "https://example.org/shoal/";
+        let version = |link: &str| (encode(link).unwrap().size() - 17) / 4;
+        let lesson = crate::settings::studio::tests::two_mysteries(false);
+        let mut no_question = lesson.clone();
+        no_question.studio.question.clear();
+        for (what, settings, max_version) in [
+            ("the defaults", Settings::default(), 4),
+            ("three locks, two mysteries", no_question, 10),
+            ("three locks, two mysteries, a question", lesson, 11),
+        ] {
+            let link = crate::ui::studio_panel::student_link(&settings, page);
+            let mut student = settings.clone();
+            student.studio.student_view = true;
+            let before = format!(
+                "{page}#{}",
+                pack_json(&serde_json::to_string(&student).unwrap())
+            );
+            eprintln!(
+                "student link, {what}: before {} characters, QR version {}; now {} characters, QR version {}",
+                before.len(),
+                version(&before),
+                link.len(),
+                version(&link),
+            );
+            assert!(version(&link) <= max_version, "{what}: {link}");
+            assert!(version(&link) < version(&before), "{what}: shorter");
+            let opened = decode(link.split_once('#').unwrap().1).unwrap().unwrap();
+            assert_eq!(opened, student, "{what}");
+        }
+    }
 }

@@ -174,38 +174,52 @@ fn student_control<R>(
     Some(add(ui, rects))
 }
 
-/// The H / L / ? toggles of `key`, which edit the frame's studio.
+/// Smallest side of an H / L / ? toggle, in points (24: WCAG 2.5.8's
+/// smallest target for a pointer).
+pub const TOGGLE_MIN_SIDE: f32 = 24.0;
+
+/// The H / L / ? toggles of `key`, which edit the frame's studio. Each is at
+/// least [`TOGGLE_MIN_SIDE`] square, and its accessible name says which rule
+/// on which control ("Hide Alignment (left tank)").
 fn toggles(ui: &mut egui::Ui, rects: &mut WidgetRects, key: &str, studio: &Studio) {
     let rule = studio.rule(key);
     let mut next = rule;
     let name = key.replace('.', "_");
-    for (flag, text, help, what) in [
+    let setting = setting_text(key, true);
+    for (flag, text, help, what, accessible) in [
         (
             &mut next.hidden,
             ts("studio-toggle-hide"),
             ts("studio-toggle-hide.help"),
             "hide",
+            tr!("studio-toggle-hide-name", key = setting.as_str()),
         ),
         (
             &mut next.locked,
             ts("studio-toggle-lock"),
             ts("studio-toggle-lock.help"),
             "lock",
+            tr!("studio-toggle-lock-name", key = setting.as_str()),
         ),
         (
             &mut next.mystery,
             ts("studio-toggle-mystery"),
             ts("studio-toggle-mystery.help"),
             "mystery",
+            tr!("studio-toggle-mystery-name", key = setting.as_str()),
         ),
     ] {
         let r = ui
-            .add(egui::Button::selectable(*flag, text).small())
+            .add(
+                egui::Button::selectable(*flag, text)
+                    .min_size(egui::vec2(TOGGLE_MIN_SIDE, TOGGLE_MIN_SIDE)),
+            )
             .on_hover_text(tr!(
                 "studio-toggle-help",
                 help = help,
-                key = setting_text(key, true)
-            ));
+                key = setting.as_str()
+            ))
+            .accessible_name(accessible);
         rects.insert(&format!("studio_{what}_{name}"), r.rect);
         if r.clicked() {
             *flag = !*flag;
@@ -268,6 +282,9 @@ pub struct StudioPanel {
     share_open: bool,
     /// The link the QR code was made for, and the code (or why none).
     qr: Option<(String, Result<qrcodegen::QrCode, String>)>,
+    /// The settings and page the last student link was made from, and the link (made
+    /// again only when they change: making one checks that it reopens them).
+    link: Option<(Settings, String, String)>,
 }
 
 impl StudioPanel {
@@ -288,21 +305,42 @@ impl StudioPanel {
         if open {
             let screen = ctx.content_rect();
             let width = (screen.width() - 24.0).clamp(220.0, 420.0);
-            let shown = egui::Window::new(ts("studio-button"))
+            let max_height = (screen.height() - 140.0).max(160.0);
+            let window = egui::Window::new(ts("studio-button"))
                 .id(egui::Id::unique("studio_window"))
                 .open(&mut open)
                 .collapsible(false)
                 .default_width(width)
                 .default_pos(screen.right_top() + egui::vec2(-width - 12.0, 48.0))
-                .constrain(true)
-                .show(ctx, |ui| self.studio_ui(ui, settings, rects));
+                .constrain(true);
+            let shown = window.show(ctx, |ui| {
+                // However many rules, every row can be scrolled to: the
+                // window never runs past the bottom of the screen.
+                egui::ScrollArea::vertical()
+                    .id_salt("studio_window_scroll")
+                    .max_height(max_height)
+                    .auto_shrink([false, true])
+                    .show(ui, |ui| self.studio_ui(ui, settings, rects));
+            });
             if let Some(shown) = shown {
                 rects.insert("studio_window", shown.response.rect);
             }
             ctx.data_mut(|d| d.insert_temp(open_id(), open));
         }
         if self.share_open {
-            let link = student_link(settings, page_url);
+            if self
+                .link
+                .as_ref()
+                .is_none_or(|(s, p, _)| s != settings || p != page_url)
+            {
+                let link = student_link(settings, page_url);
+                self.link = Some((settings.clone(), page_url.to_owned(), link));
+            }
+            let link = self
+                .link
+                .as_ref()
+                .map(|(_, _, l)| l.clone())
+                .unwrap_or_default();
             if self.qr.as_ref().is_none_or(|(l, _)| *l != link) {
                 self.qr = Some((link.clone(), super::qr::encode(&link)));
             }

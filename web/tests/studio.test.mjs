@@ -8,6 +8,7 @@
 import { test, describe, before, after } from "node:test";
 import assert from "node:assert/strict";
 import zlib from "node:zlib";
+import jsQR from "jsqr";
 import {
   serveDist,
   launch,
@@ -23,6 +24,7 @@ import {
   TIERS,
   walkOnly,
   enterText,
+  pressMirrored,
 } from "./harness.mjs";
 
 const QUESTION = "How strongly do these fish copy their neighbours? Guess the number.";
@@ -37,6 +39,22 @@ function linkSettings(link) {
   assert.ok(fragment.startsWith("v1."), fragment);
   const packed = Buffer.from(fragment.slice(3), "base64url");
   return JSON.parse(zlib.inflateRawSync(packed).toString("utf8"));
+}
+
+/** The text of the QR code drawn in `rect` (CSS pixels) of a screenshot,
+ * read by a QR decoder as a phone would read it. */
+function readQr(png, rect, scale) {
+  const margin = 8;
+  const x0 = Math.max(0, Math.floor((rect.x - margin) * scale));
+  const y0 = Math.max(0, Math.floor((rect.y - margin) * scale));
+  const w = Math.min(png.width - x0, Math.ceil((rect.width + 2 * margin) * scale));
+  const h = Math.min(png.height - y0, Math.ceil((rect.height + 2 * margin) * scale));
+  const data = new Uint8ClampedArray(w * h * 4);
+  for (let y = 0; y < h; y++) {
+    const from = ((y0 + y) * png.width + x0) * 4;
+    data.set(png.data.subarray(from, from + w * 4), y * w * 4);
+  }
+  return jsQR(data, w, h)?.data ?? null;
 }
 
 /** A number that is the mystery value, anywhere in a JSON text. */
@@ -78,12 +96,21 @@ for (const tier of TIERS) {
         "studio_mystery_left_alignment",
         () => window.shoal.settings().studio.rules["left.alignment"]?.mystery === true,
       );
-      await scrollPanelTo(page, "studio_lock_speed");
-      await clickUntil(
-        page,
-        "studio_lock_speed",
-        () => window.shoal.settings().studio.rules.speed?.locked === true,
+      // Far down the panel, Speed's lock is reached as a screen reader or the
+      // keyboard reaches it: by its name in the accessible mirror, which says
+      // which rule on which control.
+      await pressMirrored(page, "Lock Speed");
+      await page.waitForFunction(() => window.shoal.settings().studio.rules.speed?.locked === true, null, {
+        timeout: 60_000,
+      });
+      // Every toggle on screen is a target of at least 24 px (WCAG 2.5.8).
+      const toggles = Object.entries(await widgets(page)).filter(([n]) =>
+        /^studio_(hide|lock|mystery)_/.test(n),
       );
+      assert.ok(toggles.length >= 9, `${toggles.length} toggles`);
+      for (const [n, r] of toggles) {
+        assert.ok(r.width >= 24 && r.height >= 24, `${n}: ${r.width}x${r.height}`);
+      }
       // The question, typed into the studio window.
       await clickWidget(page, "studio_question");
       await enterText(page, QUESTION);
@@ -124,8 +151,15 @@ for (const tier of TIERS) {
       assert.equal(carried.studio.student_view, true);
       assert.equal(carried.studio.question, QUESTION);
       assert.deepEqual(carried.studio.rules, s.studio.rules);
-      assert.equal(carried.left.alignment, MYSTERY, "the fish use the value");
-      assert.equal(carried.scene, "boids");
+      // Decoded as far as its JSON, the link shows no mystery number: the value
+      // travels scrambled in "sealed".
+      assert.equal(carried.left?.alignment, undefined, "no alignment in the clear");
+      assert.equal(typeof carried.sealed, "string");
+      assert.ok(!holdsMystery(JSON.stringify(carried)), JSON.stringify(carried));
+      // The QR code on screen, read by a decoder, is exactly the link.
+      const png = decode(shot);
+      const read = readQr(png, qr, png.width / 1280);
+      assert.equal(read, link, "the QR code reads as the students' link");
       assert.deepEqual(errors, []);
     });
 
@@ -141,6 +175,9 @@ for (const tier of TIERS) {
       });
       const state = await pupil.evaluate(() => window.shoal.state());
       assert.equal(state.student_view, true);
+      // The hidden value is applied exactly: the student's page holds settings
+      // whose own link, mystery value sealed in it, is the teacher's link.
+      assert.equal(await pupil.evaluate(() => window.shoal.student_link()), link);
       assert.equal(state.scene, "boids");
       assert.equal(state.notice, undefined, "the link opened without complaint");
       // The question, and no studio.
