@@ -305,14 +305,26 @@ impl StudioPanel {
         if open {
             let screen = ctx.content_rect();
             let width = (screen.width() - 24.0).clamp(220.0, 420.0);
-            let max_height = (screen.height() - 140.0).max(160.0);
-            let window = egui::Window::new(ts("studio-button"))
+            // On a phone the window would cover the side panel whose H / L / ?
+            // toggles it explains: it sits at the bottom, at most 40 % of the
+            // screen high, and the panel above scrolls each toggle into reach.
+            let narrow = super::screen::is_narrow(screen.width());
+            let max_height = if narrow {
+                (screen.height() * 0.4 - 60.0).max(120.0)
+            } else {
+                (screen.height() - 140.0).max(160.0)
+            };
+            let mut window = egui::Window::new(ts("studio-button"))
                 .id(egui::Id::unique("studio_window"))
                 .open(&mut open)
                 .collapsible(false)
                 .default_width(width)
-                .default_pos(screen.right_top() + egui::vec2(-width - 12.0, 48.0))
                 .constrain(true);
+            window = if narrow {
+                window.anchor(egui::Align2::CENTER_BOTTOM, egui::vec2(0.0, -8.0))
+            } else {
+                window.default_pos(screen.right_top() + egui::vec2(-width - 12.0, 48.0))
+            };
             let shown = window.show(ctx, |ui| {
                 // However many rules, every row can be scrolled to: the
                 // window never runs past the bottom of the screen.

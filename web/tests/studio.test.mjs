@@ -254,3 +254,45 @@ for (const tier of TIERS) {
     });
   });
 }
+
+describe("teacher's studio on a phone (WebGL2)", () => {
+  let server, browser;
+  before(async () => {
+    server = await serveDist();
+    browser = await launch("webgl2");
+  });
+  after(async () => {
+    await browser?.close();
+    await server?.close();
+  });
+
+  test("the studio window sits at the bottom and every toggle above it can be scrolled to and pressed", async () => {
+    const { page, errors } = await openShoal(browser, server.url, { width: 390, height: 844 });
+    await page.evaluate(() => window.shoal.set({ scene: "boids" }));
+    await clickUntil(page, "show_panel", () => !!window.shoal.widgets().hide_panel);
+    await clickUntil(page, "studio_open", () => !!window.shoal.widgets().studio_window);
+    await waitFrames(page, 3);
+    let w = await page.evaluate(() => window.shoal.widgets());
+    const win = w.studio_window;
+    assert.ok(win.y >= 844 * 0.5, `the window keeps to the lower half: ${JSON.stringify(win)}`);
+    assert.ok(win.y + win.height <= 844 && win.x >= 0 && win.x + win.width <= 390, JSON.stringify(win));
+    // A toggle far down the panel: scrolled until it is above the window,
+    // then pressed by its effect.
+    const name = "studio_lock_left_separation";
+    let r;
+    for (let attempt = 0; attempt < 60; attempt++) {
+      w = await page.evaluate(() => window.shoal.widgets());
+      r = w[name];
+      if (r && r.y >= 0 && r.y + r.height <= w.studio_window.y - 4) break;
+      await page.mouse.move(120, 200);
+      await page.mouse.wheel(0, r && r.y < 0 ? -80 : 80);
+      await waitFrames(page, 2);
+    }
+    assert.ok(r && r.y + r.height <= w.studio_window.y - 4, `${name} reached above the window: ${JSON.stringify(r)}`);
+    assert.ok(r.width >= 24 && r.height >= 24, JSON.stringify(r));
+    await clickUntil(page, name, () => window.shoal.settings().studio.rules["left.separation"]?.locked === true);
+    saveArtifact("studio-phone.png", await page.screenshot());
+    assert.deepEqual(errors, []);
+    await page.close();
+  });
+});
