@@ -49,7 +49,8 @@ fn a_short_soak_of_every_scene_breaks_no_rule() {
             report.line()
         );
         refused += report.changes_refused;
-        assert!(report.animal_checks > report.steps, "{}", report.line());
+        // Every animal after every step (the learning lab has one swimmer).
+        assert!(report.animal_checks >= report.steps, "{}", report.line());
         // The extremes came: the most animals the (lowered) counts allow.
         let seen = changes.iter().filter(|c| c.contains("extreme:")).count();
         assert_eq!(seen, 7, "{scene:?}:\n{}", changes.join("\n"));
