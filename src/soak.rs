@@ -413,7 +413,9 @@ fn slider_value(rng: &mut ChaCha8Rng, slider: &Slider, cap: f64) -> Value {
         max
     } else if slider.wide {
         let lo = slider.min.max(1.0);
-        (lo.ln() + rng.random::<f64>() * (max.max(lo).ln() - lo.ln())).exp()
+        // libm: the page draws the same values (`sim::common::fmath`).
+        let (a, b) = (libm::log(lo), libm::log(max.max(lo)));
+        libm::exp(a + rng.random::<f64>() * (b - a))
     } else {
         slider.min + rng.random::<f64>() * (max - slider.min)
     };
@@ -889,12 +891,15 @@ fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
         .unwrap_or_else(|| "a panic without a message".to_owned())
 }
 
+/// Hears each change: simulated seconds, what, and the refusal if refused.
+pub type OnChange<'a> = dyn FnMut(f64, &str, &Result<(), String>) + 'a;
+
 /// A soak in progress: the lab, the changes' random numbers and the tally.
 struct Soaker<'a> {
     lab: Lab,
     states: Vec<AnimalState>,
     report: SoakReport,
-    on_change: &'a mut dyn FnMut(f64, &str, &Result<(), String>),
+    on_change: &'a mut OnChange<'a>,
 }
 
 impl Soaker<'_> {
@@ -968,7 +973,7 @@ pub fn first_settings(scene: Scene, seed: u64) -> Settings {
 pub fn soak(
     config: &SoakConfig,
     heap_bytes: &dyn Fn() -> Option<u64>,
-    on_change: &mut dyn FnMut(f64, &str, &Result<(), String>),
+    on_change: &mut OnChange<'_>,
 ) -> SoakReport {
     let started = web_time::Instant::now();
     let base = first_settings(config.scene, config.seed);
