@@ -215,7 +215,7 @@ impl ShoalApp {
         let request: crate::soak::ChangeRequest =
             serde_json::from_value(request.unwrap_or_default()).map_err(|err| {
                 AutomationError::BadArgument(format!(
-                    "soak_change(request): expected {{scene, seed, index}}: {err}"
+                    "soak_change(request): expected {{scene, seed, index}}: {err}" // words: the automation API's error, for test scripts
                 ))
             })?;
         Ok(request.change(&self.lab))
