@@ -31,6 +31,8 @@ pub mod render;
 pub mod scenes;
 pub mod settings;
 pub mod sim;
+/// The soak: a scene for a long simulated time under random changes (issue 35).
+pub mod soak;
 #[allow(clippy::disallowed_methods)] // drawing only (see `app`)
 pub mod ui;
 

@@ -230,6 +230,26 @@ impl ShoalApp {
         self.lab.settings()
     }
 
+    /// `shoal.soak_change(request)`: the soak's change number `index` for the
+    /// tank as it is now (`crate::soak::ChangeRequest`; `web/tests/soak.mjs`).
+    pub fn soak_change(
+        &self,
+        request: Option<serde_json::Value>,
+    ) -> Result<serde_json::Value, AutomationError> {
+        let request: crate::soak::ChangeRequest =
+            serde_json::from_value(request.unwrap_or_default()).map_err(|err| {
+                AutomationError::BadArgument(format!(
+                    "soak_change(request): expected {{scene, seed, index}}: {err}" // words: the automation API's error, for test scripts
+                ))
+            })?;
+        Ok(request.change(&self.lab))
+    }
+
+    /// `shoal.soak_check()`: the soak's rules checked on every animal now.
+    pub fn soak_check(&self) -> serde_json::Value {
+        crate::soak::check_json(&self.lab)
+    }
+
     /// `shoal.settings()`: the current settings as JSON, with the mystery
     /// values masked in the student view.
     pub fn settings_json(&self) -> serde_json::Value {

@@ -4,7 +4,16 @@
 //! shoal-lab experiment.json [--shard I/N] [--out file.csv] [--threads N]
 //! shoal-lab merge a.csv b.csv … [--out all.csv]
 //! shoal-lab bench experiment.json [--runs K]
+//! shoal-lab soak [--scene NAME] [--minutes M] [--seed N] [--verbose]
 //! ```
+//!
+//! `soak` runs every scene (or one) for `M` simulated minutes (default 60)
+//! under a random change every simulated 10 s and the extremes (`shoal::soak`),
+//! one scene after the other, and prints one line of figures per scene: steps,
+//! changes applied and refused, rule violations, the wall time and the heap in
+//! use (counted by this binary's global allocator) at the start, after the
+//! warm-up and at the end, and its peak. Exit code 1 if any scene broke a
+//! rule.
 //!
 //! The runs are the library's (`shoal::experiment`), the same the browser runs
 //! one slice per frame; here rayon spreads them over the cores and indicatif
@@ -15,6 +24,11 @@
 
 #[cfg(target_arch = "wasm32")]
 fn main() {}
+
+/// Counts the heap in use, for `shoal-lab soak`'s memory figures.
+#[cfg(not(target_arch = "wasm32"))]
+#[global_allocator]
+static ALLOCATOR: cap::Cap<std::alloc::System> = cap::Cap::new(std::alloc::System, usize::MAX);
 
 #[cfg(not(target_arch = "wasm32"))]
 fn main() -> std::process::ExitCode {
@@ -36,7 +50,8 @@ mod native {
     const USAGE: &str =
         "usage: shoal-lab experiment.json [--shard I/N] [--out file.csv] [--threads N]
        shoal-lab merge a.csv b.csv ... [--out all.csv]
-       shoal-lab bench experiment.json [--runs K] [--threads N]";
+       shoal-lab bench experiment.json [--runs K] [--threads N]
+       shoal-lab soak [--scene NAME] [--minutes M] [--seed N] [--verbose]";
 
     /// Steps a worker runs between two updates of the progress bar. Default
     /// 600 (10 simulated seconds of the schooling lab): a few updates a second.
@@ -142,6 +157,7 @@ mod native {
         match args.first().map(String::as_str) {
             None => Err(bad(USAGE)),
             Some("merge") => merge(&parse(&args[1..])?),
+            Some("soak") => soak(&args[1..]),
             Some("bench") => {
                 let mut parsed = parse(&args[1..])?;
                 parsed.bench = true;
@@ -324,5 +340,94 @@ mod native {
             eprintln!("merged {} files into {out}", files.len());
         }
         Ok(())
+    }
+
+    /// `shoal-lab soak`: see the module doc.
+    fn soak(args: &[String]) -> Result<(), Failure> {
+        use shoal::settings::Scene;
+        use shoal::soak::{SoakConfig, soak};
+        let mut scenes: Vec<Scene> = Scene::ALL.to_vec();
+        let (mut minutes, mut seed, mut verbose) = (60.0, 1u64, false);
+        let mut it = args.iter();
+        while let Some(arg) = it.next() {
+            let mut value = |name: &str| {
+                it.next()
+                    .cloned()
+                    .ok_or_else(|| bad(format!("{name} needs a value\n{USAGE}")))
+            };
+            match arg.as_str() {
+                "--scene" => {
+                    let name = value("--scene")?;
+                    let scene = Scene::ALL
+                        .into_iter()
+                        .find(|s| s.name() == name)
+                        .ok_or_else(|| {
+                            let names: Vec<&str> = Scene::ALL.iter().map(|s| s.name()).collect();
+                            bad(format!(
+                                "--scene: '{name}' is not a scene: {}",
+                                names.join(", ")
+                            ))
+                        })?;
+                    scenes = vec![scene];
+                }
+                "--minutes" => {
+                    let text = value("--minutes")?;
+                    minutes = text
+                        .parse()
+                        .ok()
+                        .filter(|m: &f64| m.is_finite() && *m > 0.0)
+                        .ok_or_else(|| bad(format!("--minutes: '{text}' is not above 0")))?;
+                }
+                "--seed" => {
+                    let text = value("--seed")?;
+                    seed = text
+                        .parse()
+                        .map_err(|_| bad(format!("--seed: '{text}' is not a whole number")))?;
+                }
+                "--verbose" | "-v" => verbose = true,
+                other => return Err(bad(format!("unknown option '{other}'\n{USAGE}"))),
+            }
+        }
+        let heap = || Some(crate::ALLOCATOR.allocated() as u64);
+        // One scene after the other, so each one's heap figures are its own
+        // (run one process per scene, `--scene`, to use more cores).
+        let reports: Vec<shoal::soak::SoakReport> = scenes
+            .iter()
+            .map(|&scene| {
+                let config = SoakConfig::new(scene, minutes, seed);
+                let name = scene.name();
+                soak(&config, &heap, &mut |t, what, outcome| {
+                    if verbose {
+                        match outcome {
+                            Ok(()) => eprintln!("{name} {t:.0} s {what}"),
+                            Err(e) => eprintln!("{name} {t:.0} s {what}: refused: {e}"),
+                        }
+                    }
+                })
+            })
+            .collect();
+        let mut sound = true;
+        for report in &reports {
+            println!("{}", report.line());
+            sound &= report.is_sound();
+            if verbose {
+                for (kind, n) in &report.refusals {
+                    println!("  refused {n} x {kind}");
+                }
+            }
+        }
+        println!(
+            "heap peak {:.2} MiB, in use now {:.2} MiB",
+            crate::ALLOCATOR.max_allocated() as f64 / 1048576.0,
+            crate::ALLOCATOR.allocated() as f64 / 1048576.0
+        );
+        if sound {
+            Ok(())
+        } else {
+            Err(Failure {
+                message: "the soak broke a rule (see above)".to_owned(),
+                bad_input: false,
+            })
+        }
     }
 }

@@ -192,7 +192,7 @@ fn every_message_the_code_asks_for_exists() {
 pub(crate) const NOT_YET: &[&str] = &[];
 
 /// Files that show nothing to a student: the simulation's own diagnostics,
-/// the benchmarks, the command-line lab (its reports are for whoever runs a
+/// the benchmarks, the soak's report (for whoever runs it), the command-line lab (its reports are for whoever runs a
 /// cluster, in English), the departures census (a document), the browser
 /// automation API (for test scripts) and the catalogue itself.
 fn not_shown(path: &str) -> bool {
@@ -214,6 +214,7 @@ fn not_shown(path: &str) -> bool {
         || path.ends_with("census.rs")
         || path.contains("/bin/")
         || path.ends_with("bench.rs")
+        || path.ends_with("soak.rs")
         || path.contains("/i18n/")
         || path.ends_with("tests.rs")
         || path.contains("/tests/")

@@ -105,6 +105,19 @@ pub struct SceneReport {
     pub learning: Option<crate::sim::learning::report::LearningReport>,
 }
 
+/// One living animal's state ([`SceneWorld::living_states`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AnimalState {
+    /// Its index in the scene (see the module doc).
+    pub index: usize,
+    /// Its centre, metres.
+    pub position_m: Vec3,
+    /// Its velocity, m/s, where the body keeps one.
+    pub velocity_m_per_s: Option<Vec3>,
+    /// A muscle body's nodes, metres.
+    pub nodes_m: Option<[Vec3; NODE_COUNT]>,
+}
+
 /// The simulated world of one tank.
 #[derive(Clone)]
 pub enum SceneWorld {
@@ -349,6 +362,63 @@ impl SceneWorld {
                 let mut nodes = Vec::new();
                 self.nodes_m(&mut nodes);
                 out.extend(nodes.iter().map(centre));
+            }
+        }
+    }
+
+    /// The state of every living animal, for checks that a run stays sound
+    /// (the soak, `crate::soak`): its index, its centre, its velocity where
+    /// the body has one (the learning lab's swimmers report none) and its
+    /// nodes for a muscle body. Eaten reef animals are left out: they are
+    /// neither drawn nor stepped.
+    pub fn living_states(&self, out: &mut Vec<AnimalState>) {
+        out.clear();
+        let point = |index: usize, f: &Fish| AnimalState {
+            index,
+            position_m: f.position_m,
+            velocity_m_per_s: Some(f.velocity_m_per_s),
+            nodes_m: None,
+        };
+        match self {
+            Self::Boids(w) => out.extend(
+                w.fish()
+                    .iter()
+                    .chain(w.sharks().iter().map(|s| &s.body))
+                    .chain(w.stingrays().iter().map(|r| &r.body))
+                    .enumerate()
+                    .map(|(i, f)| point(i, f)),
+            ),
+            Self::Physics(w) => {
+                out.extend(
+                    w.animals()
+                        .iter()
+                        .enumerate()
+                        .map(|(index, a)| AnimalState {
+                            index,
+                            position_m: a.point.position_m,
+                            velocity_m_per_s: Some(a.point.velocity_m_per_s),
+                            nodes_m: Some(a.nodes_m()),
+                        }),
+                )
+            }
+            Self::Reef(w) => out.extend(w.living().map(|(index, a)| match &a.body {
+                ReefBody::Physical(p) => AnimalState {
+                    index,
+                    position_m: a.body.position_m(),
+                    velocity_m_per_s: Some(a.body.velocity_m_per_s()),
+                    nodes_m: Some(p.nodes_m()),
+                },
+                ReefBody::Point(f) => point(index, f),
+            })),
+            Self::Learning(_) => {
+                let mut nodes = Vec::new();
+                self.nodes_m(&mut nodes);
+                out.extend(nodes.into_iter().enumerate().map(|(index, n)| AnimalState {
+                    index,
+                    position_m: centre(&n),
+                    velocity_m_per_s: None,
+                    nodes_m: Some(n),
+                }));
             }
         }
     }

@@ -15,7 +15,7 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 26] = [
+    let methods: [(&str, Box<Method>); 29] = [
         (
             "state",
             Box::new(|app, _| {
@@ -84,6 +84,9 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
         ),
         ("export_csv", Box::new(|app, _| to_json(&app.export_csv()))),
         ("settings", Box::new(|app, _| Ok(app.settings_json()))),
+        ("memory", Box::new(|_, _| Ok(memory_json()))),
+        ("soak_change", Box::new(|app, arg| app.soak_change(arg))),
+        ("soak_check", Box::new(|app, _| Ok(app.soak_check()))),
         (
             "student_link",
             Box::new(|app, _| Ok(serde_json::Value::String(app.student_link()))),
@@ -274,6 +277,26 @@ fn widgets_json(app: &ShoalApp) -> serde_json::Value {
         })
         .collect::<serde_json::Map<_, _>>()
         .into()
+}
+
+/// `shoal.memory()`: `{wasm_bytes, js_heap_bytes}`, the module's linear
+/// memory and, where the browser tells (Chromium's `performance.memory`), the
+/// JavaScript heap in use (`null` elsewhere).
+fn memory_json() -> serde_json::Value {
+    let number = |object: &JsValue, key: &str| {
+        Reflect::get(object, &key.into())
+            .ok()
+            .and_then(|v| v.as_f64())
+    };
+    let wasm_bytes = Reflect::get(&wasm_bindgen::memory(), &"buffer".into())
+        .ok()
+        .and_then(|buffer| number(&buffer, "byteLength"));
+    let js_heap_bytes = web_sys::window()
+        .and_then(|w| Reflect::get(&w, &"performance".into()).ok())
+        .and_then(|p| Reflect::get(&p, &"memory".into()).ok())
+        .filter(|m| m.is_object())
+        .and_then(|m| number(&m, "usedJSHeapSize"));
+    serde_json::json!({"wasm_bytes": wasm_bytes, "js_heap_bytes": js_heap_bytes})
 }
 
 fn to_json(value: &impl serde::Serialize) -> Result<serde_json::Value, AutomationError> {
