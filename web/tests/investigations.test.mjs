@@ -75,11 +75,24 @@ async function clickInWindow(page, name, predicate, arg) {
  * runs while the second answer shows (a screenshot). */
 async function explain(page, answers, { typed = -1, onSecond = null, firstPlot = false } = {}) {
   for (const [k, answer] of answers.entries()) {
-    await scrollWindowTo(page, "investigation_answer");
-    await clickWidget(page, "investigation_answer");
-    if (k === typed) await page.keyboard.type(answer, { delay: 10 });
-    else await enterText(page, answer);
-    await page.waitForFunction((a) => window.shoal.state().investigation.explanations.includes(a), answer);
+    // On a loaded machine a click can land while the window still moves (the
+    // plot a prompt names comes back above the box): then the box has no
+    // focus and the text goes nowhere, so click and enter it again.
+    for (let attempt = 0; ; attempt++) {
+      await scrollWindowTo(page, "investigation_answer");
+      await clickWidget(page, "investigation_answer");
+      await waitFrames(page, 2);
+      if (k === typed && attempt === 0) await page.keyboard.type(answer, { delay: 10 });
+      else await enterText(page, answer);
+      try {
+        await page.waitForFunction((a) => window.shoal.state().investigation.explanations.includes(a), answer, {
+          timeout: 30_000,
+        });
+        break;
+      } catch (err) {
+        if (attempt >= 2) throw err;
+      }
+    }
     if (k === 1 && onSecond) await onSecond();
     if (k === 0 && firstPlot) {
       // The prompt names a plot: it is back in the window beside the question.
