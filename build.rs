@@ -8,7 +8,10 @@ fn main() {
     // Relative paths throughout: two checkouts sharing one target directory
     // share this script's output, and each must read its own files.
     println!("cargo:rerun-if-changed=locales");
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("locales");
+    // Read at run time, not `env!`: a build script compiled for one checkout
+    // is reused by another that shares the target directory.
+    let manifest = std::env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR");
+    let root = Path::new(&manifest).join("locales");
     let mut out = String::from("/// (language code, file name, contents), sorted.\n");
     out.push_str("pub const FILES: &[(&str, &str, &str)] = &[\n");
     let mut entries = Vec::new();

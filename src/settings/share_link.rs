@@ -454,6 +454,9 @@ mod tests {
             tank.max_force_m_per_s2 = rng.random_range(0.1..=10.0);
             tank.personal_space_m = rng.random_range(0.1..=3.0);
             tank.wander = f32::from(rng.random_range(0u8..=100));
+            tank.clear_sight_m = rng.random_range(0.0..=12.0);
+            tank.distant_pull = f32::from(rng.random_range(0u8..=100));
+            tank.min_speed_m_per_s = rng.random_range(0.0..=1.0);
             tank.preset = tank.matching_preset();
         }
         tank.mode = ControlMode::ALL[rng.random_range(0..4)];

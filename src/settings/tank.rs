@@ -114,6 +114,18 @@ pub struct TankSettings {
     pub personal_space_m: f32,
     /// Urge to roam on its own (a wander steering force), 0–100.
     pub wander: f32,
+    /// Within this distance a neighbour's heading is read in full, metres
+    /// (`Perception::clear_sight_m`). Links made before it was a control lack
+    /// it and get the value the fish had then.
+    #[serde(default = "default_clear_sight_m")]
+    pub clear_sight_m: f32,
+    /// Pull towards the distant fish seen, as a percentage of the pull towards
+    /// the close neighbours (`Perception::far_pull` × 100).
+    #[serde(default = "default_distant_pull")]
+    pub distant_pull: f32,
+    /// The speed a fish never drops below, m/s.
+    #[serde(default = "default_min_speed_m_per_s")]
+    pub min_speed_m_per_s: f32,
     pub fish_count: u32,
     pub sharks: u32,
     pub stingrays: u32,
@@ -148,6 +160,9 @@ impl TankSettings {
             max_force_m_per_s2: p.max_force_m_per_s2,
             personal_space_m: p.separation_distance_m,
             wander: defaults.wander_weight,
+            clear_sight_m: p.clear_sight_m,
+            distant_pull: p.far_pull * 100.0,
+            min_speed_m_per_s: p.min_speed_m_per_s,
             fish_count: 200,
             sharks: 0,
             stingrays: 0,
@@ -180,6 +195,9 @@ impl TankSettings {
         params.perception.max_force_m_per_s2 = self.max_force_m_per_s2;
         params.perception.separation_distance_m = self.personal_space_m;
         params.wander_weight = self.wander;
+        params.perception.clear_sight_m = self.clear_sight_m;
+        params.perception.far_pull = self.distant_pull / 100.0;
+        params.perception.min_speed_m_per_s = self.min_speed_m_per_s;
         params
     }
 
@@ -262,7 +280,7 @@ impl TankSettings {
     ];
 
     /// The senses, the body and the urge to roam: the same whatever the preset.
-    pub const SENSES: [NumberSetting<Self, f32>; 6] = [
+    pub const SENSES: [NumberSetting<Self, f32>; 9] = [
         // From under two body lengths to the tank's width.
         NumberSetting::<Self, _>::new(
             "tank",
@@ -311,6 +329,31 @@ impl TankSettings {
             field!(wander),
         )
         .widget(TENTHS),
+        // From reading no heading at all to reading every fish seen across the
+        // tank's width in full.
+        NumberSetting::<Self, _>::new(
+            "tank",
+            Range::new("clear_sight_m", 0.0, 12.0),
+            field!(clear_sight_m),
+        )
+        .unit(Unit::Metres)
+        .widget(TENTHS),
+        // From none (only the close neighbours attract) to as strong as the
+        // close neighbours' pull.
+        NumberSetting::<Self, _>::new(
+            "tank",
+            Range::new("distant_pull", 0.0, WEIGHT_MAX),
+            field!(distant_pull),
+        )
+        .widget(WHOLE),
+        // From drifting to a stop to faster than a crawl.
+        NumberSetting::<Self, _>::new(
+            "tank",
+            Range::new("min_speed_m_per_s", 0.0, 1.0),
+            field!(min_speed_m_per_s),
+        )
+        .unit(Unit::MetresPerSecond)
+        .widget(Widget::slider(2)),
     ];
 
     /// The animals in the tank: fish, sharks, stingrays.
@@ -346,7 +389,7 @@ impl TankSettings {
     };
 
     /// Every numeric setting, in the order validation reports them.
-    pub const NUMBERS: [Number<Self>; 14] = [
+    pub const NUMBERS: [Number<Self>; 17] = [
         Number::F32(Self::WEIGHTS[0]),
         Number::F32(Self::WEIGHTS[1]),
         Number::F32(Self::WEIGHTS[2]),
@@ -358,6 +401,9 @@ impl TankSettings {
         Number::F32(Self::SENSES[3]),
         Number::F32(Self::SENSES[4]),
         Number::F32(Self::SENSES[5]),
+        Number::F32(Self::SENSES[6]),
+        Number::F32(Self::SENSES[7]),
+        Number::F32(Self::SENSES[8]),
         Number::U32(Self::COUNTS[0]),
         Number::U32(Self::COUNTS[1]),
         Number::U32(Self::COUNTS[2]),
@@ -411,6 +457,18 @@ impl TankSettings {
             obstacles.truncate(MAX_OBSTACLES);
         }
     }
+}
+
+fn default_clear_sight_m() -> f32 {
+    BoidParams::group().perception.clear_sight_m
+}
+
+fn default_distant_pull() -> f32 {
+    BoidParams::group().perception.far_pull * 100.0
+}
+
+fn default_min_speed_m_per_s() -> f32 {
+    BoidParams::group().perception.min_speed_m_per_s
 }
 
 /// Most obstacles a tank may hold: plenty for a lesson, bounded for share links.

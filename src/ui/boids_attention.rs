@@ -175,6 +175,28 @@ fn label(
 }
 
 /// The control mode's rule in one sentence, with what it chose this step.
+/// What a fright does to the weights: a fleeing fish's cohesion and
+/// separation weights (the world's fear factors), shown beside the urges so
+/// that no change of weight is hidden. Without the numbers when `hidden` (a
+/// mystery weight would be given away).
+pub fn fear_sentence(attention: &Attention, hidden: bool) -> String {
+    let fear = crate::sim::boids::params::BoidWorldParams::default();
+    if hidden {
+        return tr!(
+            "boids-fear-weights-hidden",
+            cohesion_factor = fmt(f64::from(fear.fear_cohesion_factor), 1),
+            separation_factor = fmt(f64::from(fear.fear_separation_factor), 1)
+        );
+    }
+    tr!(
+        "boids-fear-weights",
+        cohesion = fmt(f64::from(attention.weights[2]), 0),
+        separation = fmt(f64::from(attention.weights[3]), 0),
+        cohesion_factor = fmt(f64::from(fear.fear_cohesion_factor), 1),
+        separation_factor = fmt(f64::from(fear.fear_separation_factor), 1)
+    )
+}
+
 pub fn rule_sentence(attention: &Attention) -> String {
     let chosen: Vec<&str> = (0..5)
         .filter(|&k| attention.applied[k])
@@ -276,7 +298,8 @@ pub fn attention_section_ui(
                 ui.label(
                     egui::RichText::new(ts("boids-fleeing"))
                         .color(egui::Color32::from_rgb(255, 160, 60)),
-                );
+                )
+                .on_hover_text(ts("boids-fleeing.help"));
                 ui.label(acceleration(a.escape_m_per_s2.length()));
                 ui.label(ts("boids-used-always"));
                 ui.end_row();
@@ -295,6 +318,13 @@ pub fn attention_section_ui(
         &format!("attention_table_{}", side.name()),
         table.response.rect,
     );
+    if a.fleeing {
+        // The weights a fright changes, unless the teacher hid one.
+        let hidden = [2, 3].iter().any(|&k| {
+            super::studio_panel::is_mystery(ui, &format!("{}.{}", side.name(), URGE_KEYS[k]))
+        });
+        ui.label(fear_sentence(a, hidden));
+    }
     ui.label(rule_sentence(a));
     let neighbours = match a.neighbours.len() {
         0 => ts("boids-heeds-none").to_owned(),

@@ -8,7 +8,7 @@
 mod about;
 pub mod about_text;
 pub mod body_overlay;
-mod boids_attention;
+pub(crate) mod boids_attention;
 pub mod boids_panel;
 pub mod bottom_panel;
 mod control_panel;

@@ -47,6 +47,24 @@ pub struct Perception {
     /// Time in which a steering force would reach its desired velocity, seconds:
     /// each force is `(desired − current) / response_time`, then limited.
     pub response_time_s: f32,
+    /// Distance within which a fish reads a neighbour's heading in full, metres;
+    /// beyond it the neighbour counts for `clear_sight / distance` in alignment
+    /// (the angle a neighbour's body fills falls as 1/distance, so a far fish's
+    /// heading is harder to read). `f32::INFINITY`: every heeded neighbour
+    /// counts in full; 0: no heading is read, alignment has nothing to copy.
+    /// The schooling lab's *Clear sight* slider (default 0.3 m, about one body
+    /// length; `docs/boids.md` measures what it does).
+    pub clear_sight_m: f32,
+    /// Strength of the pull towards the distant fish a fish sees (the far
+    /// field, part of cohesion), as a share of the near neighbours' pull, 0–1.
+    /// The schooling lab's *Distant fish* slider (default 0.5: two schools that
+    /// see each other merge within a minute, while a fish inside a school follows
+    /// its neighbours). 0: only the heeded neighbours attract.
+    pub far_pull: f32,
+    /// Lowest speed, m/s: a fish never stops (a slow fish keeps its heading and
+    /// swims at this speed). The schooling lab's *Slowest speed* slider (default
+    /// 0.15 m/s, half a body length per second).
+    pub min_speed_m_per_s: f32,
 }
 
 /// The school seen from afar: fish bucketed into coarse cells (count and
@@ -418,11 +436,8 @@ pub fn forces_from_neighbours(
         }
         // A near neighbour's heading is read in full, a far one's less
         // (its silhouette shrinks with distance).
-        let clarity = if tuning.alignment_clear_sight_m > 0.0 {
-            (tuning.alignment_clear_sight_m / distance_m.max(1e-3)).min(1.0)
-        } else {
-            1.0
-        };
+        // Infinite clear sight reads every heading in full, 0 none.
+        let clarity = (perception.clear_sight_m / distance_m.max(1e-3)).clamp(0.0, 1.0);
         velocity_sum += velocities_m_per_s[j].normalize_or_zero() * clarity;
         align_strength += clarity;
         position_sum += positions_m[j];
@@ -452,7 +467,7 @@ pub fn forces_from_neighbours(
     let far = far_centre_m.map_or(Vec3::ZERO, |c| {
         let to_far_m = c - position_m;
         let far_arrival = (to_far_m.length() / tuning.far_field_arrival_m.max(1e-3)).min(1.0);
-        to_far_m.normalize_or_zero() * tuning.far_field_share * far_arrival
+        to_far_m.normalize_or_zero() * perception.far_pull * far_arrival
     });
     let pull = near + far;
     let cohesion_m_per_s2 = if pull == Vec3::ZERO {
@@ -569,14 +584,15 @@ mod tests {
         max_force_m_per_s2: 1.5,
         separation_distance_m: 1.0,
         response_time_s: 1.0,
+        // Every heeded neighbour's heading read in full.
+        clear_sight_m: f32::INFINITY,
+        far_pull: 0.5,
+        min_speed_m_per_s: 0.15,
     };
 
-    /// The default tuning, every heeded neighbour's heading read in full.
+    /// The default tuning.
     fn tuning() -> SteeringTuning {
-        SteeringTuning {
-            alignment_clear_sight_m: 0.0,
-            ..SteeringTuning::default()
-        }
+        SteeringTuning::default()
     }
 
     fn positions(fish: &[Fish]) -> Vec<Vec3> {
@@ -697,7 +713,7 @@ mod tests {
             &tuning(),
         );
         assert!(
-            (f.cohesion_need - tuning().far_field_share).abs() < 1e-5,
+            (f.cohesion_need - PERCEPTION.far_pull).abs() < 1e-5,
             "{f:?}"
         );
         assert_eq!(f.separation_need, 0.0);

@@ -383,6 +383,9 @@ impl Predators {
             max_force_m_per_s2: species.max_force_m_per_s2,
             separation_distance_m: 0.0,
             response_time_s: 1.0,
+            clear_sight_m: 0.0,
+            far_pull: 0.0,
+            min_speed_m_per_s: species.min_m_per_s,
         };
         let hunt = world.shark.clone();
         let tuning = world.steering;

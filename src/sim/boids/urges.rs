@@ -181,6 +181,7 @@ pub(super) fn boid_steering_params(
     SteeringParams {
         max_speed_m_per_s: perception.max_speed_m_per_s,
         max_force_m_per_s2: perception.max_force_m_per_s2,
+        min_speed_m_per_s: perception.min_speed_m_per_s,
         ..*params
     }
 }

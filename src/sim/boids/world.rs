@@ -136,6 +136,9 @@ impl BoidParams {
                 max_force_m_per_s2: 8.0,
                 separation_distance_m: 0.8,
                 response_time_s: 0.1,
+                clear_sight_m: 0.3,
+                far_pull: 0.5,
+                min_speed_m_per_s: 0.15,
             },
             wander_weight: DEFAULT_WANDER,
         }
@@ -299,6 +302,13 @@ impl World {
     /// The world's tuning (walls, the pond's edge, fear; see [`BoidWorldParams`]).
     pub fn world_params(&self) -> &BoidWorldParams {
         &self.world_params
+    }
+
+    /// Change the world's tuning: the ablations of `docs/boids.md`
+    /// (`examples/boid_contrast.rs`) switch its constants off one at a time.
+    /// Any values are safe, as with [`World::params_mut`].
+    pub fn world_params_mut(&mut self) -> &mut BoidWorldParams {
+        &mut self.world_params
     }
 
     /// The steering tuning in use.

@@ -54,20 +54,6 @@ pub struct SteeringTuning {
     /// Default 7: the upper end of the 6–7 nearest neighbours starlings interact
     /// with whatever the flock's density (Ballerini et al. 2008, PNAS 105:1232).
     pub topological_neighbours: usize,
-    /// Distance within which a fish reads a neighbour's heading in full, metres;
-    /// beyond it the neighbour counts for `clear_sight / distance` in alignment
-    /// (the angle a neighbour's body subtends falls as 1/distance, so a far
-    /// fish's heading is harder to read). 0 or less: every heeded neighbour
-    /// counts in full. Default 0.3 m (tuned on seeds 1–12, `docs/boids.md`;
-    /// about one body length): a school's close neighbours are read almost in
-    /// full, loners a few body lengths apart copy each other's heading only
-    /// weakly. The physics tank uses 0 (its muscle fish are few and far apart).
-    pub alignment_clear_sight_m: f32,
-    /// Strength of the far field's pull relative to the near neighbours'
-    /// (0–1). Default 0.5 (tuned): strong enough to merge schools that see each
-    /// other within a minute, weak enough that a fish in a school follows its
-    /// neighbours.
-    pub far_field_share: f32,
     /// Distance within which the far field's pull fades out (its arrival
     /// distance), metres. Default 1.6 m (tuned on seeds 1–12, `docs/boids.md`):
     /// a fish inside the school it sees feels little of it, a straggler or a
@@ -97,8 +83,6 @@ impl Default for SteeringTuning {
             wall_along_gain: 1.0,
             min_wall_gap_m: 0.1,
             topological_neighbours: 7,
-            alignment_clear_sight_m: 0.3,
-            far_field_share: 0.5,
             far_field_arrival_m: 1.6,
             fish_avoid_look_ahead_s: 1.0,
             fish_avoid_clearance_m: 0.3,

@@ -54,9 +54,9 @@ pub struct PhysicsParams {
     /// The shared "steer a muscle fish within its body's reach" recipe, with the
     /// physics tank's containment (10 s ahead, 2 body lengths).
     pub drive: DriveParams,
-    /// The shared steering layer's recipe ([`SteeringTuning`]) with every heeded
-    /// neighbour's heading read in full (`alignment_clear_sight_m` 0: the muscle
-    /// fish are few and far apart).
+    /// The shared steering layer's recipe ([`SteeringTuning`]). The fish read
+    /// every heeded neighbour's heading in full (their `Perception::clear_sight_m`
+    /// is infinite: the muscle fish are few and far apart).
     pub steering: SteeringTuning,
     /// A fish sees a shark and flees within this many shark lengths (2, chosen: 3 m
     /// for the default shark, a few seconds of the fish's swimming).
@@ -70,10 +70,7 @@ impl Default for PhysicsParams {
     fn default() -> Self {
         Self {
             drive: DriveParams::physics_tank(),
-            steering: SteeringTuning {
-                alignment_clear_sight_m: 0.0,
-                ..SteeringTuning::default()
-            },
+            steering: SteeringTuning::default(),
             flee_shark_lengths: 2.0,
             wander_jitter_rad: 0.36,
         }
@@ -409,6 +406,11 @@ impl PhysicsWorld {
             max_force_m_per_s2: a.top_speed_m_per_s() / response_time_secs,
             separation_distance_m: 1.2 * a.body_length_m(),
             response_time_s: response_time_secs,
+            clear_sight_m: f32::INFINITY,
+            // No far field here (`neighbour_forces` gets none).
+            far_pull: 0.0,
+            // The body's own floor (`SteeringParams` below) governs.
+            min_speed_m_per_s: 0.0,
         };
         self.grid.rebuild(
             self.tank.min_m,

@@ -193,3 +193,38 @@ fn asking_changes_nothing_and_a_change_of_the_school_withdraws_the_report() {
     asked.step();
     assert_eq!(asked.attention(10), None, "wandering fish have no urges");
 }
+
+/// No hidden hand: a fleeing fish's changed weights are in its report, and the
+/// attention panel's sentence says them (cohesion up, separation down, by the
+/// world's fear factors), while a calm fish's weights are the sliders'.
+#[test]
+fn a_frightened_fishs_changed_weights_are_shown() {
+    let w = school(ControlMode::Blended, 2, 240);
+    let fear = w.world_params().clone();
+    let group = BoidParams::group().weights;
+    let (mut calm, mut frightened) = (0, 0);
+    for i in 0..w.fish().len() {
+        let a = w.attention(i).unwrap();
+        if a.fleeing {
+            frightened += 1;
+            assert!(
+                (a.weights[2] - (group[2] * fear.fear_cohesion_factor).min(100.0)).abs() < 1e-4
+            );
+            assert!((a.weights[3] - group[3] * fear.fear_separation_factor).abs() < 1e-4);
+            let sentence = crate::i18n::with_lang(crate::i18n::Lang::En, || {
+                crate::ui::boids_attention::fear_sentence(&a, false)
+            });
+            assert!(
+                sentence.contains("cohesion 58") && sentence.contains("separation 13"),
+                "{sentence}"
+            );
+        } else {
+            calm += 1;
+            assert_eq!(a.weights, group);
+        }
+    }
+    assert!(
+        frightened > 0 && calm > 0,
+        "{frightened} frightened, {calm} calm"
+    );
+}
