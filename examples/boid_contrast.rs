@@ -51,6 +51,8 @@ struct Options {
     /// `--weights c,a,co,s,av`: these weights instead of the presets' (a probe).
     weights: Option<[f32; 5]>,
     wander: Option<f32>,
+    vision: Option<f32>,
+    k: Option<usize>,
 }
 
 fn parse() -> Options {
@@ -88,6 +90,8 @@ fn parse() -> Options {
             [w[0], w[1], w[2], w[3], w[4]]
         }),
         wander: value("--wander").map(|s| s.parse().expect("a number")),
+        vision: value("--vision").map(|s| s.parse().expect("a number")),
+        k: value("--k").map(|s| s.parse().expect("a number")),
         presets: match value("--presets").as_deref() {
             Some("group") => vec!["Group"],
             Some("individual") => vec!["Individual"],
@@ -141,6 +145,9 @@ fn run(fish: usize, seed: u64, p: BoidParams, o: &Options) -> (Vec<Sample>, f64)
             }
             other => panic!("unknown ablation {other}"),
         }
+    }
+    if let Some(k) = o.k {
+        world.world_params_mut().steering.topological_neighbours = k;
     }
     world.set_boids(Some(p));
     let steps = (o.secs * 60.0).round() as u64;
@@ -217,6 +224,9 @@ fn main() {
             }
             if let Some(w) = o.wander {
                 p.wander_weight = w;
+            }
+            if let Some(v) = o.vision {
+                p.perception.vision_distance_m = v;
             }
             let jobs: Vec<u64> = o.seeds.clone();
             let results: Vec<(u64, Vec<Sample>, f64)> = thread::scope(|scope| {

@@ -87,6 +87,28 @@ describe("schooling lab", () => {
     assert.ok(social > solitary + 0.4, `polarization ${solitary} → ${social}`);
   });
 
+  test("clear sight, distant fish and slowest speed are sliders of the tank, and clear sight feeds alignment", async () => {
+    await page.evaluate(() => window.shoal.set({ left: { preset: "group" }, paused: true }));
+    for (const name of ["clear_sight_m", "distant_pull", "min_speed_m_per_s"]) await waitForWidget(page, name);
+    const r = await scrollPanelTo(page, "min_speed_m_per_s");
+    await page.mouse.move(700, 400);
+    await waitFrames(page, 2);
+    saveArtifact("boids-senses.png", await page.screenshot({ clip: { x: 0, y: Math.max(0, r.y - 300), width: 420, height: 340 } }));
+    // Dragging clear sight to its left end: the fish read no heading.
+    await dragSlider(page, "clear_sight_m", 0.0);
+    await page.waitForFunction(() => window.shoal.settings().left.clear_sight_m < 0.3, null, { timeout: 30_000 });
+    const blind = await polarizationAfter(page, 2400);
+    await page.evaluate(() => window.shoal.set({ left: { clear_sight_m: 0.3 } }));
+    const sighted = await polarizationAfter(page, 2400);
+    assert.ok(sighted > blind + 0.2, `polarization with clear sight ${sighted}, without ${blind}`);
+    // The screen reader's view: named, with range and help.
+    const slider = page.locator('#shoal_a11y input[type=range][aria-label="Distant fish"]').first();
+    await slider.waitFor({ state: "attached", timeout: 60_000 });
+    assert.equal(await slider.getAttribute("max"), "100");
+    await page.evaluate(() => window.shoal.set({ left: { preset: "individual", distant_pull: 50, min_speed_m_per_s: 0.15 }, paused: false }));
+    assert.deepEqual(errors, []);
+  });
+
   test("preset and control-mode buttons switch what the fish do", async () => {
     await clickUntil(page, "preset_group", () => window.shoal.settings().left.preset === "group");
     const group = await settings(page);
