@@ -66,7 +66,9 @@ fn parse() -> Options {
     let list = |s: String| -> Vec<u64> {
         s.split(',')
             .flat_map(|part| match part.split_once('-') {
-                Some((a, b)) => (a.parse().expect("a seed or size")..=b.parse().expect("a seed or size")).collect::<Vec<u64>>(),
+                Some((a, b)) => (a.parse().expect("a seed or size")
+                    ..=b.parse().expect("a seed or size"))
+                    .collect::<Vec<u64>>(),
                 None => vec![part.parse().expect("a seed or size")],
             })
             .collect()

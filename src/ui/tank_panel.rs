@@ -119,7 +119,27 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, side: Side, rects: &m
         &TankSettings::COUNTS,
         tank,
     );
+    if let Some(note) = school_size_note(tank.fish_count) {
+        ui.label(egui::RichText::new(note).small().weak());
+    }
 }
+
+/// Where Table 1's weights alone do not give the schooling contrast: a word
+/// beside the *Fish* slider at the school sizes where the measurements of
+/// `docs/boids.md` (`examples/boid_contrast.rs`, 20 seeds no tuning used)
+/// show it fading, so that a class reads what it sees for what it is.
+pub fn school_size_note(fish_count: u32) -> Option<&'static str> {
+    match fish_count {
+        1..=SMALL_SCHOOL_MAX => Some(ts("setting-tank-fish-count.few")),
+        CROWDED_MIN.. => Some(ts("setting-tank-fish-count.crowded")),
+        _ => None,
+    }
+}
+
+/// Up to this many fish, loners that meet line up in pairs (docs/boids.md).
+const SMALL_SCHOOL_MAX: u32 = 50;
+/// From this many fish on, the tank is crowded (docs/boids.md).
+const CROWDED_MIN: u32 = 1000;
 
 /// A two-column grid of `settings`' rows (label, control) of `tank`.
 fn rows_grid<T>(
@@ -140,4 +160,25 @@ fn rows_grid<T>(
                 setting_row(ui, rects, prefix, setting, tank);
             }
         });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::school_size_note;
+
+    /// The note appears exactly at the sizes `docs/boids.md` measured the
+    /// contrast fading at, and says which.
+    #[test]
+    fn the_fish_slider_warns_where_the_contrast_fades() {
+        crate::i18n::with_lang(crate::i18n::Lang::En, || {
+            assert!(school_size_note(20).is_some_and(|n| n.contains("50 fish or fewer")));
+            assert!(school_size_note(50).is_some());
+            assert_eq!(school_size_note(0), None, "no fish, nothing to compare");
+            assert_eq!(school_size_note(51), None);
+            assert_eq!(school_size_note(200), None, "the default");
+            assert_eq!(school_size_note(999), None);
+            assert!(school_size_note(1000).is_some_and(|n| n.contains("crowded")));
+            assert!(school_size_note(20_000).is_some());
+        });
+    }
 }
