@@ -58,6 +58,14 @@ pub fn tank_ui(ui: &mut egui::Ui, tank: &mut TankSettings, side: Side, rects: &m
             }
         });
     });
+    if tank.preset == Preset::MonteCarloPaper {
+        // Why its bodies overlap, measured (docs/boids.md).
+        ui.label(
+            egui::RichText::new(ts("setting-preset-monte-carlo-paper.note"))
+                .small()
+                .weak(),
+        );
+    }
 
     ui.add_space(4.0);
     if !is_hidden(ui, &key("mode")) {
