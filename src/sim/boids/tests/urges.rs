@@ -17,7 +17,10 @@ fn the_weights_alone_make_a_school_of_the_group_and_loners_of_the_individuals() 
         group,
         "the presets differ only in their weights"
     );
-    let seeds = [1, 2, 3];
+    // Seeds no figure of the docs rests on (they quote 1–4 and 31–60). Eight,
+    // because single loner tanks vary: on 61–63 alone the loners read 0.51
+    // (docs/boids.md, "Does the contrast hold at every school size?").
+    let seeds = [61, 62, 63, 64, 65, 66, 67, 68];
     let g = measure_minute(group, &seeds);
     let i = measure_minute(individual, &seeds);
     assert!(g.polarization > 0.8, "group {g:?}");
@@ -35,8 +38,8 @@ fn the_weights_alone_make_a_school_of_the_group_and_loners_of_the_individuals() 
 #[test]
 fn more_alignment_gives_higher_polarization() {
     let (lo, hi) = (
-        measure_minute(group_with(1, 0.0), &[1, 2]),
-        measure_minute(group_with(1, 50.0), &[1, 2]),
+        measure_minute(group_with(1, 0.0), &[69, 70]),
+        measure_minute(group_with(1, 50.0), &[69, 70]),
     );
     assert!(hi.polarization > lo.polarization + 0.3, "{lo:?} {hi:?}");
 }
@@ -44,8 +47,8 @@ fn more_alignment_gives_higher_polarization() {
 #[test]
 fn more_cohesion_gives_a_smaller_nearest_neighbour_distance_and_fewer_groups() {
     let (lo, hi) = (
-        measure_minute(group_with(2, 0.0), &[1, 2]),
-        measure_minute(group_with(2, 60.0), &[1, 2]),
+        measure_minute(group_with(2, 0.0), &[69, 70]),
+        measure_minute(group_with(2, 60.0), &[69, 70]),
     );
     assert!(hi.nnd_body_lengths < lo.nnd_body_lengths, "{lo:?} {hi:?}");
     assert!(hi.groups < lo.groups, "{lo:?} {hi:?}");
@@ -54,8 +57,8 @@ fn more_cohesion_gives_a_smaller_nearest_neighbour_distance_and_fewer_groups() {
 #[test]
 fn more_separation_gives_a_larger_nearest_neighbour_distance() {
     let (lo, hi) = (
-        measure_minute(group_with(3, 10.0), &[1, 2]),
-        measure_minute(group_with(3, 80.0), &[1, 2]),
+        measure_minute(group_with(3, 10.0), &[69, 70]),
+        measure_minute(group_with(3, 80.0), &[69, 70]),
     );
     assert!(
         hi.nnd_body_lengths > lo.nnd_body_lengths + 0.1,
@@ -72,8 +75,8 @@ fn more_containment_keeps_fish_further_from_the_edges_of_the_pond() {
         params
     };
     let (lo, hi) = (
-        measure_minute(with_containment(0.0), &[1, 2]),
-        measure_minute(with_containment(100.0), &[1, 2]),
+        measure_minute(with_containment(0.0), &[69, 70]),
+        measure_minute(with_containment(100.0), &[69, 70]),
     );
     assert!(hi.in_edge_zone < 0.8 * lo.in_edge_zone, "{lo:?} {hi:?}");
 }
@@ -81,23 +84,23 @@ fn more_containment_keeps_fish_further_from_the_edges_of_the_pond() {
 #[test]
 fn more_avoidance_keeps_fish_off_the_rocks_and_the_glass() {
     let (lo, hi) = (
-        measure_minute(group_with(4, 0.0), &[1, 2]),
-        measure_minute(group_with(4, 98.0), &[1, 2]),
+        measure_minute(group_with(4, 0.0), &[69, 70]),
+        measure_minute(group_with(4, 98.0), &[69, 70]),
     );
     assert!(hi.at_rock < lo.at_rock, "{lo:?} {hi:?}");
     // Without containment only avoidance keeps them off the glass.
     let mut bare = group_with(0, 0.0);
     bare.weights[4] = 0.0;
     let (lo, hi) = (
-        measure_minute(bare, &[1]),
-        measure_minute(group_with(0, 0.0), &[1]),
+        measure_minute(bare, &[69]),
+        measure_minute(group_with(0, 0.0), &[69]),
     );
     assert!(hi.at_edge < lo.at_edge, "{lo:?} {hi:?}");
 }
 
 /// The senses that were hidden constants are controls now (*Clear sight*,
-/// *Distant fish*, *Slowest speed*), each with the sign of its name. Seeds 41
-/// and 42: none of the docs' figures rests on them.
+/// *Distant fish*, *Slowest speed*), each with the sign of its name. Seeds 71
+/// and 72: none of the docs' figures rests on them.
 fn with_senses(mut params: BoidParams, set: impl Fn(&mut BoidParams)) -> BoidParams {
     set(&mut params);
     params
@@ -109,11 +112,11 @@ fn clearer_sight_lines_loners_up_more() {
     let (blind, clear) = (
         measure_minute(
             with_senses(individual, |p| p.perception.clear_sight_m = 0.0),
-            &[41, 42],
+            &[71, 72],
         ),
         measure_minute(
             with_senses(individual, |p| p.perception.clear_sight_m = 12.0),
-            &[41, 42],
+            &[71, 72],
         ),
     );
     assert!(
@@ -128,9 +131,9 @@ fn a_pull_towards_distant_fish_gathers_the_school() {
     let (none, half) = (
         measure_minute(
             with_senses(group, |p| p.perception.far_pull = 0.0),
-            &[41, 42],
+            &[71, 72],
         ),
-        measure_minute(group, &[41, 42]),
+        measure_minute(group, &[71, 72]),
     );
     assert!(
         half.nnd_body_lengths < none.nnd_body_lengths,
@@ -143,10 +146,10 @@ fn a_pull_towards_distant_fish_gathers_the_school() {
 fn a_higher_slowest_speed_makes_the_school_swim_faster() {
     let group = BoidParams::group();
     let (slow, brisk) = (
-        measure_minute(group, &[41]),
+        measure_minute(group, &[71]),
         measure_minute(
             with_senses(group, |p| p.perception.min_speed_m_per_s = 0.5),
-            &[41],
+            &[71],
         ),
     );
     assert!(slow.speed_m_per_s < 0.45, "{slow:?}");
