@@ -127,7 +127,7 @@ fn params(preset: &str, mode: ControlMode) -> BoidParams {
 
 /// One run: the mean of each window, and the share of fish-steps with a
 /// neighbour closer than half a body length.
-fn run(fish: usize, seed: u64, p: BoidParams, o: &Options) -> (Vec<Sample>, f64) {
+fn run(fish: usize, seed: u64, p: BoidParams, o: &Options) -> (Vec<Sample>, [f64; 3]) {
     let mut world = World::new(WorldConfig {
         seed,
         fish_count: fish,
@@ -155,7 +155,7 @@ fn run(fish: usize, seed: u64, p: BoidParams, o: &Options) -> (Vec<Sample>, f64)
     let steps = (o.secs * 60.0).round() as u64;
     let mut sums = vec![Sample::default(); WINDOWS.len()];
     let mut counts = vec![0.0; WINDOWS.len()];
-    let (mut close, mut fish_samples) = (0u64, 0u64);
+    let (mut close, mut fish_samples, mut at_edge, mut in_zone) = (0u64, 0u64, 0u64, 0u64);
     for step in 1..=steps {
         world.step();
         if step % 15 != 0 {
@@ -178,7 +178,12 @@ fn run(fish: usize, seed: u64, p: BoidParams, o: &Options) -> (Vec<Sample>, f64)
         }
         if t > 20.0 && step % 60 == 0 {
             let f = world.fish();
+            let tank = *world.tank();
             for (i, a) in f.iter().enumerate() {
+                let p = a.position_m;
+                let gap_m = (p - tank.min_m).min(tank.max_m - p).min_element();
+                at_edge += u64::from(gap_m < 0.1);
+                in_zone += u64::from(gap_m < 1.0);
                 fish_samples += 1;
                 let half = 0.5 * a.body_length_m;
                 close += u64::from(f.iter().enumerate().any(|(j, b)| {
@@ -198,7 +203,8 @@ fn run(fish: usize, seed: u64, p: BoidParams, o: &Options) -> (Vec<Sample>, f64)
             m
         })
         .collect();
-    (means, close as f64 * 100.0 / fish_samples.max(1) as f64)
+    let pct = |n: u64| n as f64 * 100.0 / fish_samples.max(1) as f64;
+    (means, [pct(close), pct(at_edge), pct(in_zone)])
 }
 
 fn main() {
@@ -217,7 +223,7 @@ fn main() {
     println!(
         "| fish | preset | window (s) | polarization mean | worst seed | milling | NND (BL) | groups (mean / most) | speed (m/s) | neighbour < ½ BL (% fish-samples) |"
     );
-    println!("| ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+    println!("| ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
     for &fish in &o.sizes {
         for &preset in &o.presets {
             let mut p = params(preset, o.mode);
@@ -231,7 +237,7 @@ fn main() {
                 p.perception.vision_distance_m = v;
             }
             let jobs: Vec<u64> = o.seeds.clone();
-            let results: Vec<(u64, Vec<Sample>, f64)> = thread::scope(|scope| {
+            let results: Vec<(u64, Vec<Sample>, [f64; 3])> = thread::scope(|scope| {
                 let chunks: Vec<Vec<u64>> = (0..o.threads)
                     .map(|t| jobs.iter().skip(t).step_by(o.threads).copied().collect())
                     .collect();
@@ -275,9 +281,10 @@ fn main() {
                     }
                     most_groups = most_groups.max(s[w].groups);
                 }
-                let close: f64 = results.iter().map(|r| r.2).sum::<f64>() / k;
+                let share = |m: usize| results.iter().map(|r| r.2[m]).sum::<f64>() / k;
+                let (close, edge, zone) = (share(0), share(1), share(2));
                 println!(
-                    "| {fish} | {preset} | {a}–{b} | {:.2} | {:.2} (seed {}) | {:.2} | {:.2} | {:.1} / {:.1} | {:.2} | {:.2} |",
+                    "| {fish} | {preset} | {a}–{b} | {:.2} | {:.2} (seed {}) | {:.2} | {:.2} | {:.1} / {:.1} | {:.2} | {:.2} | {:.2} | {:.1} |",
                     mean.polarization,
                     worst.0,
                     worst.1,
@@ -286,7 +293,9 @@ fn main() {
                     mean.groups,
                     most_groups,
                     mean.speed,
-                    close
+                    close,
+                    edge,
+                    zone
                 );
             }
         }

@@ -114,32 +114,38 @@ impl<'a> UrgeInputs<'a> {
             perception,
             tuning,
         );
-        // Containment: stay in the pond, away from its edges (turn back
-        // towards open water when the path leaves the comfortable middle).
-        let containment = forces::steer_towards(
-            velocity_m_per_s
-                + steering::containment(
-                    position_m,
-                    velocity_m_per_s,
-                    self.tank,
-                    params.containment_look_ahead_s,
-                    self.world.pond_comfort_margin_m,
-                    params.max_speed_m_per_s,
-                ),
+        // Containment: stay in the pond (the papers' meaning). Turn back
+        // towards open water when the path leaves the comfortable middle, and,
+        // near the glass, sand and surface, the wall algorithm: turn along the
+        // wall instead of into it.
+        let walls = steering::avoid_walls(
+            position_m,
             velocity_m_per_s,
-            perception,
+            self.tank,
+            self.world.wall_range_m,
+            tuning,
         );
-        // Avoidance: the glass, sand and surface (wall algorithm), the
-        // rocks, pillars, ledges and stingrays (rock algorithm) and fish on
-        // a collision course (swaying, clusters as one obstacle).
-        let avoidance = steering::limit(
-            (steering::avoid_walls(
-                position_m,
+        let containment = steering::limit(
+            forces::steer_towards(
+                velocity_m_per_s
+                    + steering::containment(
+                        position_m,
+                        velocity_m_per_s,
+                        self.tank,
+                        params.containment_look_ahead_s,
+                        self.world.pond_comfort_margin_m,
+                        params.max_speed_m_per_s,
+                    ),
                 velocity_m_per_s,
-                self.tank,
-                self.world.wall_range_m,
-                tuning,
-            ) + steering::avoid_obstacles(
+                perception,
+            ) + walls / perception.response_time_s.max(1e-3),
+            max_force,
+        );
+        // Avoidance: the rocks, pillars, ledges and stingrays (rock
+        // algorithm) and fish on a collision course (swaying, clusters as one
+        // obstacle).
+        let avoidance = steering::limit(
+            (steering::avoid_obstacles(
                 position_m,
                 velocity_m_per_s,
                 self.avoid.near(position_m, self.avoid_reach_m),
