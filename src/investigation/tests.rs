@@ -334,8 +334,8 @@ fn the_record_holds_the_prediction_the_numbers_and_escaped_answers() {
 /// shark, 180 s from the start) differing only in the urges, loners
 /// (*Individual*) against a school (*Group*), over seeds 1–10. Measured (the
 /// browser's runs, which the native ones equal since the libm change): loners
-/// 84, school 55; the school lost clearly fewer on 6 seeds, about as many on
-/// 3 and more on 1, so the claim is for the sum. (A 200-fish, two-shark
+/// 78, school 31; the school lost clearly fewer on 8 seeds, as many on 1 and
+/// more on 1, so the claim is for the sum. (A 200-fish, two-shark
 /// version of this test asked for 1.5× per minute after a settling half
 /// minute; over seeds 1–6 it measured 1.15×, and it was replaced by this one,
 /// the setting students run.)
