@@ -14,7 +14,7 @@
 //! | `shoal.metrics_csv()` | the school metrics of the last minutes as CSV text (the aquarium's and schooling lab's table, in every scene) |
 //! | `shoal.export_csv()` | `{name, text}`: the scene's data file *Download data* saves (see `export.rs`), e.g. `shoal-reef-t0125s.csv` |
 //! | `shoal.widgets()` | where the main widgets are on the page, `{name: {x, y, width, height}}` in CSS pixels (for tests that click real widgets) |
-//! | `shoal.memory()` | `{wasm_bytes, js_heap_bytes}`: the module's memory and Chromium's JS heap in use (`web/api.rs`) |
+//! | `shoal.memory()` | `{wasm_bytes, heap_bytes, js_heap_bytes}`: the module's memory (its high-water mark: wasm memory never shrinks), the Rust heap in use in it, and Chromium's JS heap in use (`web/api.rs`) |
 //! | `shoal.soak_change(request)` / `shoal.soak_check()` | the soak's next change and its checks (`crate::soak`) |
 //!
 //! Arguments arrive as JSON values; this module parses and validates them, so the

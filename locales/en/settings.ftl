@@ -52,7 +52,7 @@ setting-app-seed = Seed
 
 ## One boid tank's settings (schooling lab, aquarium).
 setting-tank-containment = Containment
-    .help = How strongly a fish stays in the pond: it turns back towards open water before its path comes near the glass, the sand or the surface.
+    .help = How strongly a fish stays in the pond: it turns back towards open water before its path comes near the glass, the sand or the surface, and next to them it turns along them instead of into them. At 0 even a school rides along the glass.
 setting-tank-alignment = Alignment
     .help = How much a fish copies the direction its neighbours are swimming (close neighbours count more: their heading is easier to see; see Clear sight).
 setting-tank-cohesion = Cohesion
@@ -60,7 +60,7 @@ setting-tank-cohesion = Cohesion
 setting-tank-separation = Separation
     .help = How much a fish keeps its own space: it moves away from fish inside its personal space, harder the closer they are. Strong separation also slows a school down: inside a school the pushes come from all sides and mostly cancel, but each one still holds the fish back (the Group school swims about 0.29 m/s at separation 25 and 0.18 m/s at 100).
 setting-tank-avoidance = Avoidance
-    .help = How strongly a fish swerves around obstacles: the glass, sand and surface, rocks, pillars, stingrays, and fish coming straight at it (three or more close together count as one obstacle).
+    .help = How strongly a fish swerves around obstacles: rocks, pillars, ledges, stingrays, and fish coming straight at it (three or more close together count as one obstacle). The glass, sand and surface are containment's job.
 setting-tank-vision-distance-m = Vision distance
     .help = How far a fish can see its neighbours, in metres.
 setting-tank-vision-angle-deg = Vision angle

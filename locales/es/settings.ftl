@@ -52,7 +52,7 @@ setting-app-seed = Semilla
 
 ## Los ajustes de un tanque de boids (laboratorio de cardúmenes, acuario).
 setting-tank-containment = Contención
-    .help = Con cuánta fuerza un pez se queda en el estanque: regresa hacia el agua abierta antes de que su camino se acerque al vidrio, la arena o la superficie.
+    .help = Con cuánta fuerza un pez se queda en el estanque: regresa hacia el agua abierta antes de que su camino se acerque al vidrio, la arena o la superficie, y junto a ellos gira a lo largo en vez de chocar. En 0 hasta un cardumen nada pegado al vidrio.
 setting-tank-alignment = Alineación
     .help = Cuánto copia un pez la dirección en la que nadan sus vecinos (los vecinos cercanos cuentan más: su rumbo se ve mejor; ver Vista clara).
 setting-tank-cohesion = Cohesión
@@ -60,7 +60,7 @@ setting-tank-cohesion = Cohesión
 setting-tank-separation = Separación
     .help = Cuánto cuida un pez su propio espacio: se aleja de los peces que entran en su espacio personal, más fuerte cuanto más cerca están. Una separación fuerte también hace más lento al cardumen: dentro de un cardumen los empujones llegan de todos lados y casi se anulan, pero cada uno frena un poco al pez (el cardumen de Grupo nada a unos 0,29 m/s con separación 25 y a 0,18 m/s con 100).
 setting-tank-avoidance = Evasión
-    .help = Con cuánta fuerza un pez esquiva los obstáculos: el vidrio, la arena y la superficie, las rocas, los pilares, las rayas y los peces que vienen directo hacia él (tres o más juntos cuentan como un solo obstáculo).
+    .help = Con cuánta fuerza un pez esquiva los obstáculos: las rocas, los pilares, las repisas, las rayas y los peces que vienen directo hacia él (tres o más juntos cuentan como un solo obstáculo). El vidrio, la arena y la superficie son tarea de la contención.
 setting-tank-vision-distance-m = Distancia de visión
     .help = Hasta qué distancia puede ver un pez a sus vecinos, en metros.
 setting-tank-vision-angle-deg = Ángulo de visión

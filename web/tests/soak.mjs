@@ -27,7 +27,7 @@ const STEP_SECS = { aquarium: 1 / 60, boids: 1 / 60, physics: 0.055, reef: 0.055
 
 export const SCENES = Object.keys(STEP_SECS);
 
-/** The page's memory after a garbage collection: `{wasm_bytes, js_heap_bytes}`. */
+/** The page's memory after a garbage collection: `{wasm_bytes, heap_bytes, js_heap_bytes}`. */
 export async function memory(page) {
   return page.evaluate(() => {
     if (typeof window.gc === "function") window.gc();
@@ -160,6 +160,7 @@ export function line(f) {
     `steps ${f.steps}, changes ${f.changes} (applied ${f.applied}, refused ${f.refused}), ` +
     `animal-checks ${f.animal_checks}, failures ${f.failures.length}; ` +
     `wasm MiB ${mib(f.memory_start.wasm_bytes)} -> ${mib(f.memory_end.wasm_bytes)}, ` +
+    `heap in use MiB ${mib(f.memory_start.heap_bytes)} -> ${mib(f.memory_end.heap_bytes)}, ` +
     `JS heap MiB ${mib(f.memory_start.js_heap_bytes)} -> ${mib(f.memory_end.js_heap_bytes)}`
   );
 }
@@ -182,7 +183,7 @@ async function main() {
     const { page, errors } = await openShoal(browser, server.url);
     const opened = await memory(page);
     console.log(`browser soak, ${tier} tier, ${minutes} min per scene, seed ${seed}`);
-    console.log(`page opened: wasm MiB ${mib(opened.wasm_bytes)}, JS heap MiB ${mib(opened.js_heap_bytes)}`);
+    console.log(`page opened: wasm MiB ${mib(opened.wasm_bytes)}, heap in use MiB ${mib(opened.heap_bytes)}, JS heap MiB ${mib(opened.js_heap_bytes)}`);
     for (const scene of scenes) {
       const f = await soakScene(page, {
         scene,
@@ -196,7 +197,7 @@ async function main() {
       failed ||= f.failures.length > 0;
     }
     const closing = await memory(page);
-    console.log(`at the end: wasm MiB ${mib(closing.wasm_bytes)}, JS heap MiB ${mib(closing.js_heap_bytes)}`);
+    console.log(`at the end: wasm MiB ${mib(closing.wasm_bytes)}, heap in use MiB ${mib(closing.heap_bytes)}, JS heap MiB ${mib(closing.js_heap_bytes)}`);
     if (errors.length) {
       console.log(`console errors: ${errors.slice(0, 5).join(" | ")}`);
       failed = true;

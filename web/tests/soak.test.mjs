@@ -23,6 +23,10 @@ const CHANGES = 12;
  * stays; a leak of a few kilobytes a step would pass this in the thousands of
  * steps run here. */
 const MEMORY_GROWTH_MAX_BYTES = 16 * 1048576;
+/** Largest growth of the Rust heap in use between the two passes: the same
+ * scenes at the same settings hold the same data, give or take buffers sized
+ * by the largest school seen (the native soak's hour: under 1 MiB). */
+const HEAP_GROWTH_MAX_BYTES = 2 * 1048576;
 
 test("every scene soaks through the extremes and random changes without breaking a rule", async () => {
   const server = await serveDist();
@@ -61,6 +65,13 @@ test("every scene soaks through the extremes and random changes without breaking
     const [before, after] = passes;
     console.log(`memory after pass 1 ${JSON.stringify(before)}, after pass 2 ${JSON.stringify(after)}`);
     assert.ok(before.wasm_bytes > 0, "shoal.memory() reads the wasm memory");
+    // The Rust heap in use: what a leak would grow (the module's memory is a
+    // high-water mark and never shrinks).
+    assert.ok(before.heap_bytes > 0 && before.heap_bytes <= before.wasm_bytes, JSON.stringify(before));
+    assert.ok(
+      after.heap_bytes - before.heap_bytes <= HEAP_GROWTH_MAX_BYTES,
+      `the heap in use grew from ${before.heap_bytes} to ${after.heap_bytes}`,
+    );
     assert.ok(
       after.wasm_bytes - before.wasm_bytes <= MEMORY_GROWTH_MAX_BYTES,
       `wasm memory grew from ${before.wasm_bytes} to ${after.wasm_bytes}`,
