@@ -301,6 +301,12 @@ impl World {
         &self.world_params
     }
 
+    /// The world's tuning, to change (e.g. the confusion and joint-flight
+    /// switches).
+    pub fn world_params_mut(&mut self) -> &mut BoidWorldParams {
+        &mut self.world_params
+    }
+
     /// The steering tuning in use.
     pub fn params(&self) -> &SteeringParams {
         &self.params
