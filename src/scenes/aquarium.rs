@@ -3,7 +3,7 @@
 
 use super::{BOID_CLOCK, BoidTank, SCHOOL_MEASURES, SceneClass, SceneFacts};
 use crate::lab::Lab;
-use crate::settings::{Scene, Settings, Side};
+use crate::settings::{PredationSettings, Scene, Settings, Side};
 use crate::sim::learning::learning_lab::LearningLab;
 use crate::sim::{SceneWorld, WorldConfig};
 use crate::ui::about_text;
@@ -23,6 +23,7 @@ fn tank(settings: &Settings, side: Side) -> BoidTank {
             obstacles: None,
         },
         boids: None,
+        predation: PredationSettings::default(),
     }
 }
 

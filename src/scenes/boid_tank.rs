@@ -4,6 +4,7 @@
 //! schooling lab turns the boid layer on and adds sharks, stingrays and a
 //! teacher's rocks.
 
+use crate::settings::PredationSettings;
 use crate::sim::{BoidParams, Obstacle, SceneWorld, World, WorldConfig};
 
 /// What one boid tank should be.
@@ -14,6 +15,8 @@ pub struct BoidTank {
     /// The SIMBA boid layer's weights and mode, or `None` for fish that
     /// wander.
     pub boids: Option<BoidParams>,
+    /// The confusion effect and joint flight.
+    pub predation: PredationSettings,
 }
 
 /// What following new settings changed in a world
@@ -31,6 +34,7 @@ impl BoidTank {
     pub fn build(&self) -> SceneWorld {
         let mut world = World::new(self.config.clone());
         world.set_boids(self.boids);
+        self.predation.apply_to_boids(world.world_params_mut());
         SceneWorld::Boids(Box::new(world))
     }
 
@@ -51,6 +55,7 @@ impl BoidTank {
         if world.boids() != self.boids.as_ref() {
             world.set_boids(self.boids);
         }
+        self.predation.apply_to_boids(world.world_params_mut());
         if (config.sharks, config.stingrays) != (world.sharks().len(), world.stingrays().len()) {
             world.set_species_counts(config.sharks, config.stingrays);
             change.recount = true;

@@ -85,9 +85,9 @@ impl SceneClass for Reef {
         _side: Side,
         _learning: &mut Option<LearningLab>,
     ) -> SceneWorld {
-        SceneWorld::Reef(Box::new(ReefWorld::new(
-            settings.reef.config(settings.seed),
-        )))
+        let mut reef = ReefWorld::new(settings.reef.config(settings.seed));
+        settings.predation.apply_to_reef(reef.params_mut());
+        SceneWorld::Reef(Box::new(reef))
     }
 
     /// The water (visibility, current) and the minds' traits.
@@ -108,6 +108,7 @@ impl SceneClass for Reef {
         if reef.config().current_m_per_s != wanted.current_m_per_s {
             reef.set_current(wanted.current_m_per_s);
         }
+        settings.predation.apply_to_reef(reef.params_mut());
         if reef.config().traits != wanted.traits {
             reef.set_traits(wanted.traits);
         }

@@ -38,6 +38,7 @@ fn tank(settings: &Settings, side: Side) -> BoidTank {
             obstacles: tank.obstacles.clone(),
         },
         boids: Some(tank.boid_params()),
+        predation: settings.predation,
     }
 }
 

@@ -10,6 +10,7 @@ pub mod minds;
 pub mod names;
 pub mod number;
 pub mod physics;
+pub mod predation;
 pub mod range;
 pub mod reef;
 pub mod share_link;
@@ -22,6 +23,7 @@ use self::number::{Number, NumberSetting, Unit, Widget, field};
 pub use self::range::{Range, SettingError};
 use crate::settings::learning::LearningSettings;
 use crate::settings::physics::PhysicsSettings;
+pub use crate::settings::predation::PredationSettings;
 use crate::settings::reef::ReefSettings;
 use crate::settings::studio::Studio;
 use crate::settings::tank::{Preset, TankSettings};
@@ -141,6 +143,10 @@ pub struct Settings {
     /// The learning lab. Links made before it existed lack it.
     #[serde(default)]
     pub learning: LearningSettings,
+    /// The confusion effect and joint flight, in the schooling lab and the
+    /// reef. Links made before the switches existed lack them (both on).
+    #[serde(default)]
+    pub predation: PredationSettings,
     /// The teacher's studio: which controls students see, may change and may
     /// read, and the teacher's question (`studio.rs`). Links made before it
     /// existed lack it, and a setting without rules, question or student view
@@ -165,6 +171,7 @@ impl Default for Settings {
             physics: PhysicsSettings::default(),
             reef: ReefSettings::default(),
             learning: LearningSettings::default(),
+            predation: PredationSettings::default(),
             studio: Studio::default(),
         }
     }

@@ -148,6 +148,13 @@ pub fn setting_name(key: &str) -> Option<SettingName> {
             })
         });
     }
+    if let Some(rest) = key.strip_prefix(crate::settings::PredationSettings::PREFIX) {
+        return other(match rest {
+            "confusion" => "predation-confusion",
+            "joint_flight" => "predation-joint-flight",
+            _ => return None,
+        });
+    }
     if let Some(rest) = key.strip_prefix(LearningSettings::PREFIX) {
         return in_table(&LearningSettings::NUMBERS, rest).or_else(|| {
             other(match rest {

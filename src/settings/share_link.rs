@@ -495,6 +495,10 @@ mod tests {
                     crate::sim::learning::learning_lab::ControllerChoice::HandTuned
                 },
             },
+            predation: crate::settings::PredationSettings {
+                confusion: rng.random_bool(0.5),
+                joint_flight: rng.random_bool(0.5),
+            },
             studio: Default::default(),
         }
     }

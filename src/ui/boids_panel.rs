@@ -249,6 +249,8 @@ impl ScenePanel for BoidsPanel {
             // Locked or hidden rocks: the mouse only looks.
             self.tool = EditTool::Look;
         }
+        ui.add_space(4.0);
+        super::predation_panel::predation_ui(ui, &mut settings.predation, rects);
     }
 
     fn bottom_ui(

@@ -23,6 +23,7 @@ pub mod learning_panel;
 mod metrics_panel;
 pub mod palette;
 pub mod physics_panel;
+pub mod predation_panel;
 mod qr;
 pub mod reef_inspector;
 mod reef_minds;

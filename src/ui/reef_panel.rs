@@ -300,6 +300,8 @@ impl ScenePanel for ReefPanel {
         self.skip.controls_ui(ui, settings, rects);
         reef_sliders_ui(ui, &mut settings.reef, rects);
         selection_ui(ui, &mut settings.reef, self.selected_name.as_deref(), rects);
+        ui.add_space(4.0);
+        super::predation_panel::predation_ui(ui, &mut settings.predation, rects);
         minds_ui(
             ui,
             &mut settings.reef.traits,

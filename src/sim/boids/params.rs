@@ -81,6 +81,10 @@ pub struct BoidWorldParams {
     /// Factor on the separation weight of a frightened fish. Default 0.5: with
     /// doubled cohesion, the school halves its spacing.
     pub fear_separation_factor: f32,
+    /// Joint flight on or off (the settings' `predation.joint_flight`). Default
+    /// on: the alarm passes between neighbours ([`BoidWorldParams::alarm_share`]).
+    /// Off, a fish flees only from a shark it notices itself.
+    pub joint_flight: bool,
     /// The sharks' hunting: confusion, strike and lunge.
     pub shark: SharkHuntParams,
     /// The sharks' body and species numbers: length, speeds, force, vision.
@@ -103,6 +107,7 @@ impl Default for BoidWorldParams {
             alarm_threshold: 0.25,
             fear_cohesion_factor: 2.0,
             fear_separation_factor: 0.5,
+            joint_flight: true,
             shark: SharkHuntParams::default(),
             shark_species: SharkParams::default(),
             stingray: StingrayParams::default(),
@@ -135,6 +140,10 @@ pub struct SharkHuntParams {
     /// [`SharkHuntParams::strike_lock_secs`] a strike needs; a lone fish is never lost (Landeau &
     /// Terborgh 1986: lone prey caught at once, shoals of 8+ rarely).
     pub confusion_rate_per_neighbour_per_s: f32,
+    /// The confusion effect on or off (the settings' `predation.confusion`).
+    /// Default on. Off, a shark never loses its lock to the fish around its
+    /// target (the rate above counts as 0).
+    pub confusion: bool,
     /// Time a shark must keep its lock on one fish before it can bite, in seconds.
     /// Default 0.5 s (chosen): a strike needs aiming; a predator fixates its prey
     /// before the final lunge. With the confusion rate above, a shark keeps a lock
@@ -173,6 +182,7 @@ impl Default for SharkHuntParams {
             satiated_secs: 5.0,
             confusion_radius_m: 0.8,
             confusion_rate_per_neighbour_per_s: 2.0,
+            confusion: true,
             strike_lock_secs: 0.5,
             lunge_distance_m: 1.5,
             lunge_max_secs: 2.0,

@@ -120,13 +120,18 @@ impl Fear {
         params: &SteeringParams,
         world: &BoidWorldParams,
     ) -> Option<Vec3> {
-        // Many eyes: the fright of the heeded neighbours (last step's).
-        let alarm = neighbours
-            .iter()
-            .filter(|&(_, d2)| d2 <= world.alarm_range_m * world.alarm_range_m)
-            .map(|(j, _)| self.fear[j])
-            .fold(0.0, f32::max)
-            * world.alarm_share;
+        // Many eyes: the fright of the heeded neighbours (last step's), unless
+        // joint flight is switched off.
+        let alarm = if !world.joint_flight {
+            0.0
+        } else {
+            neighbours
+                .iter()
+                .filter(|&(_, d2)| d2 <= world.alarm_range_m * world.alarm_range_m)
+                .map(|(j, _)| self.fear[j])
+                .fold(0.0, f32::max)
+                * world.alarm_share
+        };
         let escape = escape_force(world, position_m, velocity_m_per_s, sharks, params, alarm);
         self.next_fear[i] = escape.map_or(0.0, |(_, urgency)| urgency);
         escape.map(|(force, _)| force)

@@ -108,6 +108,9 @@ pub fn lunge_params(hunt: &SharkHuntParams, params: &SteeringParams) -> Steering
 /// `neighbours` fish are within [`SharkHuntParams::confusion_radius_m`] of its
 /// target: `1 − exp(−rate · n · dt)`, n capped at [`MAX_CONFUSING_NEIGHBOURS`].
 pub fn lose_lock_probability(hunt: &SharkHuntParams, neighbours: u32, dt_secs: f32) -> f32 {
+    if !hunt.confusion {
+        return 0.0;
+    }
     let n = neighbours.min(MAX_CONFUSING_NEIGHBOURS) as f32;
     1.0 - fmath::exp(-hunt.confusion_rate_per_neighbour_per_s * n * dt_secs)
 }

@@ -305,7 +305,8 @@ impl World {
     }
 
     /// Change the world's tuning: the ablations of `docs/boids.md`
-    /// (`examples/boid_contrast.rs`) switch its constants off one at a time.
+    /// (`examples/boid_contrast.rs`) switch its constants off one at a time, and the confusion and
+    /// joint-flight switches set it.
     /// Any values are safe, as with [`World::params_mut`].
     pub fn world_params_mut(&mut self) -> &mut BoidWorldParams {
         &mut self.world_params

@@ -345,6 +345,7 @@ pub(super) fn behave(
         // escaping with the school (see BehaviourParams::escape_in_school_gait).
         (Intention::Escape, _)
             if inputs.params.behaviour.escape_in_school_gait
+                && inputs.params.joint_flight
                 && a.habits.schools
                 && !neighbours.is_empty() =>
         {
@@ -472,7 +473,11 @@ fn behave_velocity(
         Intention::Escape => match threat_at(focus.target) {
             // A schooling fish flees with the schoolmates it sees.
             // On the muscle body in the school's gait, at a lesser fright.
-            Some(p) if animal.habits.schools && !neighbours.is_empty() => {
+            Some(p)
+                if inputs.params.joint_flight
+                    && animal.habits.schools
+                    && !neighbours.is_empty() =>
+            {
                 let fright = match animal.body {
                     ReefBody::Physical(_) if bp.escape_in_school_gait => {
                         bp.escape_fright_in_school_gait

@@ -201,7 +201,7 @@ impl Feeding {
         let target_m = animals[j].body.position_m();
         let crowd = prey_crowding(params, animals, j, target_m);
         let success = 1.0 / (1.0 + params.confusion_per_neighbour * crowd as f32);
-        if crowd == 0 || io.rng.random::<f32>() < success {
+        if !params.confusion || crowd == 0 || io.rng.random::<f32>() < success {
             return false;
         }
         let mouth = animals[i].body.head_m();

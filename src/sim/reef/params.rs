@@ -131,6 +131,16 @@ pub struct ReefParams {
     /// predator's choice (β1); without it a shark faster than its prey catches
     /// schooling and lone prey at the same rate once it has chosen.
     pub confusion_per_neighbour: f32,
+    /// The confusion effect on or off (the settings' `predation.confusion`).
+    /// Default on. Off, every strike that reaches its prey succeeds, as in
+    /// Tu & Terzopoulos, whatever the crowd around the prey.
+    pub confusion: bool,
+    /// Joint flight on or off (the settings' `predation.joint_flight`). Default
+    /// on: a schooling fish that flees keeps with the schoolmates it sees
+    /// ([`crate::sim::reef::behaviour::escape_with_school`], our addition). Off,
+    /// every fish flees straight away from the predator alone, the paper's
+    /// escape routine (§7.2).
+    pub joint_flight: bool,
     /// Seconds a predator needs after a missed strike before it can strike again
     /// (mouth closed, still chasing). Default 1.5 (chosen: long enough for the
     /// prey's dart to take it out of the mouth's reach).
@@ -164,6 +174,8 @@ impl Default for ReefParams {
             chase_glass_margin_body_lengths: 0.3,
             confusion_radius_body_lengths: 2.0,
             confusion_per_neighbour: 1.0,
+            confusion: true,
+            joint_flight: true,
             missed_strike_recovery_secs: 1.5,
         }
     }

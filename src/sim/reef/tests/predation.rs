@@ -245,3 +245,30 @@ fn a_hungry_shark_reaches_prey_that_hides_at_the_glass() {
         assert_eq!(w.counts().prey_eaten, 1, "{body:?}");
     }
 }
+
+#[test]
+fn switched_off_the_confusion_saves_no_schooling_prey() {
+    // Two runs of each seed that differ only in the confusion switch
+    // (`ReefParams::confusion`, the settings' `predation.confusion`), every
+    // prey fish schooling, on seeds no other test uses.
+    let seeds = 33..=40;
+    let with = |confusion: bool| {
+        prey_eaten_with(ReefBodyKind::PointMass, true, 120.0, seeds.clone(), |w| {
+            w.params_mut().confusion = confusion;
+        })
+    };
+    let (eaten_on, missed_on) = with(true);
+    let (eaten_off, missed_off) = with(false);
+    eprintln!(
+        "confusion on: {eaten_on} eaten, {missed_on} missed; off: {eaten_off} eaten, {missed_off} missed"
+    );
+    assert!(missed_on > 0, "the school confuses the shark");
+    assert_eq!(
+        missed_off, 0,
+        "no strike is confused when the switch is off"
+    );
+    assert!(
+        eaten_off > eaten_on,
+        "off {eaten_off} vs on {eaten_on} schooling prey eaten in 8 × 2 minutes"
+    );
+}
