@@ -19,15 +19,21 @@ fn catches(seed: u64, confusion: bool, joint_flight: bool) -> (u64, u64) {
     let inv = INVESTIGATIONS
         .iter()
         .find(|i| i.id == "why-school")
-        .unwrap();
-    let mut settings = setup_settings(inv).unwrap();
+        .expect("the why-school investigation");
+    let mut settings = setup_settings(inv).expect("its setup applies");
     settings.seed = seed;
     settings.predation.confusion = confusion;
     settings.predation.joint_flight = joint_flight;
     let mut lab = Lab::new(settings);
     let steps = (180.0 / lab.step_secs()).round() as u32;
     lab.step(steps);
-    let c = |i: usize| lab.runs()[i].scene().boids().unwrap().catches();
+    let c = |i: usize| {
+        lab.runs()[i]
+            .scene()
+            .boids()
+            .expect("a boid tank")
+            .catches()
+    };
     (c(0), c(1))
 }
 
