@@ -94,7 +94,10 @@ fn containment_keeps_a_school_off_the_glass() {
     );
     assert!(none.at_edge > 0.01, "{none:?}");
     assert!(table_1.at_edge < 0.001, "{table_1:?}");
-    assert!(full.in_edge_zone < table_1.in_edge_zone, "{table_1:?} {full:?}");
+    assert!(
+        full.in_edge_zone < table_1.in_edge_zone,
+        "{table_1:?} {full:?}"
+    );
 }
 
 /// Avoidance is for rocks, pillars, ledges, stingrays and fish: it keeps fish
@@ -106,7 +109,10 @@ fn more_avoidance_keeps_fish_off_the_rocks() {
         measure_minute(group_with(4, 98.0), &[69, 70]),
     );
     assert!(hi.at_rock < lo.at_rock, "{lo:?} {hi:?}");
-    assert!(lo.at_edge < 0.001, "containment alone keeps them off the glass: {lo:?}");
+    assert!(
+        lo.at_edge < 0.001,
+        "containment alone keeps them off the glass: {lo:?}"
+    );
 }
 
 /// The senses that were hidden constants are controls now (*Clear sight*,
