@@ -103,7 +103,7 @@ setting-preset-group = Group (school)
     .help = Fish that live in a school: they stay close, swim the same way and still never bump.
 setting-preset-monte-carlo-paper = Monte Carlo (paper)
     .help = The lottery mode with the chances published in the paper: each moment one urge wins.
-    .note = In the paper's lottery cohesion wins 41 % of the draws and separation only 12.5 %, so the fish pack tighter than in the other presets: nearest neighbours about half a body length apart, and bodies often overlap (at 42 % of the samples a fish had a neighbour closer than half its length; 20 tanks of 200 fish).
+    .note = In the paper's lottery cohesion wins 41 % of the draws and separation only 12.5 %, so the fish pack tighter than in the other presets: nearest neighbours about half a body length apart, and bodies often overlap (at 41 % of the samples a fish had a neighbour closer than half its length; 20 tanks of 200 fish).
 setting-preset-custom = Custom
     .help = Your own mix: move any slider and the preset becomes Custom.
 

@@ -103,7 +103,7 @@ setting-preset-group = Grupo (cardumen)
     .help = Peces que viven en cardumen: se mantienen cerca, nadan en la misma dirección y aun así nunca chocan.
 setting-preset-monte-carlo-paper = Monte Carlo (artículo)
     .help = El modo de lotería con las probabilidades publicadas en el artículo: en cada momento gana un impulso.
-    .note = En el sorteo del artículo la cohesión gana el 41 % de las veces y la separación solo el 12,5 %, así que los peces se aprietan más que con los otros ajustes: los vecinos más cercanos quedan a medio largo de cuerpo y los cuerpos a menudo se superponen (en el 42 % de las muestras un pez tenía un vecino a menos de medio largo; 20 peceras de 200 peces).
+    .note = En el sorteo del artículo la cohesión gana el 41 % de las veces y la separación solo el 12,5 %, así que los peces se aprietan más que con los otros ajustes: los vecinos más cercanos quedan a medio largo de cuerpo y los cuerpos a menudo se superponen (en el 41 % de las muestras un pez tenía un vecino a menos de medio largo; 20 peceras de 200 peces).
 setting-preset-custom = Personalizado
     .help = Tu propia mezcla: mueve cualquier control deslizante y el ajuste pasa a ser Personalizado.
 
