@@ -50,18 +50,19 @@ describe("reef", () => {
     assert.ok(s.reef.food > 20, `plankton: ${s.reef.food}`);
     const view = (await widgets(page)).view_left;
     // Software graphics draw the tank at half per side or less (Tank detail's
-    // Auto, which follows a loaded machine's frame rate), which blends the small
-    // reef fish's colours into the water: about 70 vivid pixels here against 0
-    // for an empty tank, fewer in a frame where the ten fish overlap or turn
-    // edge-on. The best of three frames a second apart.
+    // Auto, which follows a loaded machine's frame rate; a quarter of the
+    // pixels in CI), which blends the small reef fish's colours into the water:
+    // about 70 vivid pixels here at half size, 35 at a quarter, against 0 for
+    // an empty tank, fewer in a frame where the ten fish overlap or turn
+    // edge-on. The best of five frames a second apart.
     let vivid = 0;
-    for (let k = 0; k < 3 && vivid <= 40; k++) {
+    for (let k = 0; k < 5 && vivid <= 25; k++) {
       if (k > 0) await sleep(1000);
       const shot = await page.screenshot();
       if (k === 0) saveArtifact("reef-webgl2.png", shot);
       vivid = Math.max(vivid, fishPixels(decode(shot), view).size);
     }
-    assert.ok(vivid > 40, `fish are drawn: ${vivid} vivid pixels`);
+    assert.ok(vivid > 25, `fish are drawn: ${vivid} vivid pixels`);
   });
 
   test("clicking a fish opens its mind: bars, plan, memory, fish-eye view", async () => {
