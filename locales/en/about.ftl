@@ -53,7 +53,7 @@ about-eq-monte-carlo = Monte Carlo
 about-eq-polarization = Polarization
     .formula = p = |Σ v̂ᵢ| / N, the length of the mean heading: 1 when every fish swims the same way, near 0 when they point every which way.
 about-eq-milling = Milling
-    .formula = m = |Σ r̂ᵢ × v̂ᵢ| / N about each group's centre (r̂ᵢ points from the centre to fish i): 1 when the fish circle round their centre like a doughnut.
+    .formula = m = |Σ r̂ᵢ × v̂ᵢ| / N about each group's centre (r̂ᵢ points from the centre to fish i): 1 when the fish circle round their centre like a doughnut. A group counts only with at least 5 fish within 1.5 body lengths of each other, and only its turning beyond chance: (m − 1/√k) / (1 − 1/√k) for a group of k fish.
 about-eq-nearest = Nearest neighbour and groups
     .formula = NND = the mean distance to each fish's nearest neighbour, in body lengths; a group is fish linked by gaps of at most two body lengths.
 about-eq-springs = Springs

@@ -46,17 +46,17 @@ boids-tank-bottom = Bottom tank
 # The metrics plots under the tank (src/ui/metrics_panel.rs).
 
 metrics-polarization = Polarization
-    .help = How much the fish all swim the same way: the length of the average of their headings. 1 when every fish swims the same way, near 0 when they point every which way (or circle).
+    .help = How much the fish all swim the same way: the length of the average of their headings. High (near 1): every fish points the same way, like soldiers marching. Low (near 0): they point every which way, or go round in a circle (then milling is high).
 metrics-milling = Milling
-    .help = How much each group swims round and round its own centre like a whirlpool (measured about the centre of each group, not of the tank, and averaged over all fish; groups of fewer than 5 count 0). 1 for perfect whirlpools, near 0 for groups swimming straight or fish milling about at random.
+    .help = How much the schools swim round and round their own centre, like a whirlpool. High (near 1): a ring of fish circling a hole in the middle. Low (near 0): schools swimming straight, or loners. Only a group of at least 5 fish that keep within 1.5 body lengths of each other counts, and only the part of its turning beyond what random headings would give, so scattered loners read 0.
 metrics-nearest = Nearest neighbour (body lengths)
     .short = Nearest neighbour
-    .help = How far, on average, each fish is from its closest neighbour, measured in fish lengths. Schooling fish keep about one body length.
+    .help = How far, on average, each fish is from its closest neighbour, measured in fish lengths. Low (about 1): the fish swim packed close, as a school keeps about one body length. High (2 or more): the fish are spread out through the tank.
 metrics-groups = Groups
-    .help = How many separate groups there are: fish closer than two body lengths belong together, so a loner is a group of one.
+    .help = How many separate groups there are: fish closer than two body lengths belong together, so a loner is a group of one. 1: every fish is in one school. High (tens): the fish swim alone or in small bunches.
 metrics-speed = Mean speed (m/s)
     .short = Mean speed
-    .help = How fast the fish swim on average, in metres per second.
+    .help = How fast the fish swim on average, in metres per second. High: the fish dart about; low: they cruise slowly (a tight school often swims slower than loners, because each fish brakes to keep its place).
 metrics-line-solid = solid
 metrics-line-dashed = dashed
 metrics-line-dotted = dotted

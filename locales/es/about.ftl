@@ -54,7 +54,7 @@ about-eq-monte-carlo = Monte Carlo
 about-eq-polarization = Polarización
     .formula = p = |Σ v̂ᵢ| / N, la longitud del rumbo medio: 1 cuando todos los peces nadan hacia el mismo lado, cerca de 0 cuando cada uno apunta para un lado distinto.
 about-eq-milling = Remolino
-    .formula = m = |Σ r̂ᵢ × v̂ᵢ| / N alrededor del centro de cada grupo (r̂ᵢ apunta del centro al pez i): 1 cuando los peces dan vueltas alrededor de su centro como una dona.
+    .formula = m = |Σ r̂ᵢ × v̂ᵢ| / N alrededor del centro de cada grupo (r̂ᵢ apunta del centro al pez i): 1 cuando los peces dan vueltas alrededor de su centro como una dona. Un grupo cuenta solo si tiene al menos 5 peces a menos de 1,5 largos de cuerpo entre sí, y solo su giro más allá del azar: (m − 1/√k) / (1 − 1/√k) para un grupo de k peces.
 about-eq-nearest = Vecino más cercano y grupos
     .formula = NND = la distancia media de cada pez a su vecino más cercano, en largos de cuerpo; un grupo son peces unidos por huecos de dos largos de cuerpo como máximo.
 about-eq-springs = Resortes

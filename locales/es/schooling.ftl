@@ -46,17 +46,17 @@ boids-tank-bottom = Tanque de abajo
 # Las gráficas de las medidas bajo el tanque (src/ui/metrics_panel.rs).
 
 metrics-polarization = Polarización
-    .help = Cuánto nadan todos los peces en la misma dirección: la longitud del promedio de sus rumbos. 1 cuando todos nadan en la misma dirección; cerca de 0 cuando apuntan cada uno para un lado (o nadan en círculo).
+    .help = Cuánto nadan todos los peces en la misma dirección: la longitud del promedio de sus rumbos. Alta (cerca de 1): todos apuntan hacia el mismo lado, como soldados en un desfile. Baja (cerca de 0): apuntan cada uno para un lado, o dan vueltas en círculo (entonces el remolino es alto).
 metrics-milling = Remolino
-    .help = Cuánto gira cada grupo alrededor de su propio centro, como un remolino (medido alrededor del centro de cada grupo, no del tanque, y promediado entre todos los peces; los grupos de menos de 5 cuentan 0). 1 para remolinos perfectos; cerca de 0 para grupos que nadan en línea recta o peces que dan vueltas al azar.
+    .help = Cuánto giran los cardúmenes alrededor de su propio centro, como un remolino. Alto (cerca de 1): un anillo de peces que da vueltas alrededor de un hueco en el medio. Bajo (cerca de 0): cardúmenes que nadan en línea recta, o peces solitarios. Solo cuenta un grupo de al menos 5 peces que se mantienen a menos de 1,5 largos de cuerpo entre sí, y solo la parte de su giro que va más allá de lo que darían rumbos al azar; por eso los peces solitarios dispersos marcan 0.
 metrics-nearest = Vecino más cercano (largos de cuerpo)
     .short = Vecino más cercano
-    .help = Qué tan lejos está, en promedio, cada pez de su vecino más cercano, medido en largos de pez. Los peces de un cardumen se mantienen a un largo de cuerpo, más o menos.
+    .help = Qué tan lejos está, en promedio, cada pez de su vecino más cercano, medido en largos de pez. Bajo (cerca de 1): los peces nadan juntos, porque un cardumen se mantiene a un largo de cuerpo, más o menos. Alto (2 o más): los peces están repartidos por todo el tanque.
 metrics-groups = Grupos
-    .help = Cuántos grupos separados hay: los peces a menos de dos largos de cuerpo van juntos, así que un pez solitario es un grupo de uno.
+    .help = Cuántos grupos separados hay: los peces a menos de dos largos de cuerpo van juntos, así que un pez solitario es un grupo de uno. 1: todos los peces están en un solo cardumen. Alto (decenas): los peces nadan solos o en grupitos.
 metrics-speed = Rapidez media (m/s)
     .short = Rapidez media
-    .help = Qué tan rápido nadan los peces en promedio, en metros por segundo.
+    .help = Qué tan rápido nadan los peces en promedio, en metros por segundo. Alta: los peces van de un lado a otro a toda prisa; baja: pasean despacio (un cardumen apretado suele nadar más lento que los peces solitarios, porque cada pez frena para mantener su lugar).
 metrics-line-solid = continua
 metrics-line-dashed = discontinua
 metrics-line-dotted = punteada

@@ -10,7 +10,14 @@
 //!   otherwise. Measured about each group's centre, not the tank's, so loners
 //!   that happen to circle along the glass do not read as a mill; groups of
 //!   fewer than [`MIN_MILLING_GROUP`] fish count 0 (two loners passing each
-//!   other would read as a perfect mill).
+//!   other would read as a perfect mill), and each group counts only the part
+//!   of its turning beyond what random headings give ([`beyond_chance`]): a
+//!   cluster of k loners swimming every which way turns by about 0.75/√k by
+//!   chance alone. And a group counts only when it is a school: its fish
+//!   keep on average at most [`MILLING_SCHOOL_NND_BODY_LENGTHS`] (1.5) body
+//!   lengths from their nearest neighbour, so loose loners that drift round
+//!   the tank along the glass are not read as a mill (200 loners read 0.30
+//!   before these two rules, a school 0.09–0.14).
 //! - mean nearest-neighbour distance, in each fish's own body lengths (schooling
 //!   fish keep about one body length).
 //! - groups: clusters of fish linked by gaps of at most two body lengths.
@@ -42,6 +49,25 @@ pub const GROUP_LINK_BODY_LENGTHS: f32 = 2.0;
 /// have r̂ × v̂ pointing the same way and would read as a perfect mill; a mill
 /// is a group of several fish going round together. Smaller groups count 0.
 pub const MIN_MILLING_GROUP: usize = 5;
+
+/// A group counts as milling only when it is a school: its fish are on average
+/// at most this many body lengths from their nearest neighbour. Default 1.5
+/// (chosen; measured on seeds 33–36, 200 fish at 40 s): Table 1's Group schools
+/// keep 0.86–1.05, while the loose clouds of the Individual weights, which
+/// chain into one 2-body-length-linked group of 80–140 fish and sweep round
+/// the tank along the glass, keep 1.74–1.83.
+pub const MILLING_SCHOOL_NND_BODY_LENGTHS: f32 = 1.5;
+
+/// How far a group's turning `m` = ‖Σ r̂ × v̂‖ / k (0 to 1) lies beyond what
+/// `k` fish with random headings give, rescaled to 0 to 1: (m − c) / (1 − c),
+/// at least 0, with c = 1/√k. Random headings give about 0.75/√k (3-D) or
+/// 0.56/√k (flat), so c = 1/√k is a little above chance: a group of five
+/// loners (c = 0.45) reads near 0, a 200-fish school (c = 0.07) almost as
+/// measured, a perfect mill 1.
+fn beyond_chance(m: f32, k: u32) -> f32 {
+    let chance = 1.0 / (k as f32).sqrt();
+    ((m - chance) / (1.0 - chance)).max(0.0)
+}
 
 /// Computes the metrics once. A convenience for one-off measurements;
 /// [`SchoolMeter`] keeps its buffers between calls.
@@ -98,6 +124,10 @@ pub struct SchoolMeter {
     /// Per group root (a slot of `grid`): position sum and count, then the sum
     /// of r̂ × v̂ about the group's centre.
     group_sums: Vec<(Vec3, u32)>,
+    /// Each fish's nearest-neighbour distance in its body lengths, by fish.
+    nnd_of_fish: Vec<f32>,
+    /// Sum of the nearest-neighbour distances (body lengths) per group root.
+    group_nnd: Vec<f32>,
     group_turn: Vec<Vec3>,
 }
 
@@ -137,12 +167,14 @@ impl SchoolMeter {
             self.positions_m.push(f.position_m);
         }
         let groups = self.count_groups(fish, min_length, max_length, tank_min_m, tank_max_m);
-        let milling = self.group_milling(fish);
+        self.nnd_of_fish.clear();
+        self.nnd_of_fish.resize(n, 0.0);
         let nnd_body_lengths = if n > 1 {
             self.nearest_distance_sum_body_lengths(fish, tank_min_m, tank_max_m) / count
         } else {
             0.0
         };
+        let milling = self.group_milling(fish);
 
         SchoolMetrics {
             nnd_body_lengths,
@@ -161,11 +193,14 @@ impl SchoolMeter {
         }
         self.group_sums.clear();
         self.group_sums.resize(n, (Vec3::ZERO, 0));
+        self.group_nnd.clear();
+        self.group_nnd.resize(n, 0.0);
         for slot in 0..n {
             let r = root(&mut self.parent, slot);
             let i = self.grid.slots()[slot] as usize;
             self.group_sums[r].0 += fish[i].position_m;
             self.group_sums[r].1 += 1;
+            self.group_nnd[r] += self.nnd_of_fish[i];
         }
         self.group_turn.clear();
         self.group_turn.resize(n, Vec3::ZERO);
@@ -181,7 +216,19 @@ impl SchoolMeter {
                 .normalize_or_zero()
                 .cross(f.velocity_m_per_s.normalize_or_zero());
         }
-        (self.group_turn.iter().map(|t| t.length()).sum::<f32>() / n as f32).min(1.0)
+        let mut circling = 0.0_f32;
+        for ((turn, &(_, count)), &nnd_sum) in self
+            .group_turn
+            .iter()
+            .zip(&self.group_sums)
+            .zip(&self.group_nnd)
+        {
+            let school = nnd_sum <= MILLING_SCHOOL_NND_BODY_LENGTHS * count as f32;
+            if (count as usize) >= MIN_MILLING_GROUP && school {
+                circling += count as f32 * beyond_chance(turn.length() / count as f32, count);
+            }
+        }
+        (circling / n as f32).min(1.0)
     }
 
     /// Number of groups (see [`SchoolMeter::measure`]).
@@ -334,7 +381,9 @@ impl SchoolMeter {
                 grid.k_nearest(p, far_m, &mut found, |j, _, _| j != me);
                 d2 = found.iter().next().map_or(d2, |(_, d2)| d2);
             }
-            sum += d2.sqrt() / fish[me].body_length_m.max(1e-3);
+            let body_lengths = d2.sqrt() / fish[me].body_length_m.max(1e-3);
+            self.nnd_of_fish[me] = body_lengths;
+            sum += body_lengths;
         }
         sum
     }
@@ -671,6 +720,64 @@ mod tests {
             fish_at(Vec3::new(0.0, 2.0, -0.2), -Vec3::X * 0.5),
         ];
         assert_eq!(metrics(&passing).milling, 0.0);
+    }
+
+    #[test]
+    fn a_dense_cluster_with_random_headings_does_not_mill() {
+        // 64 fish on a 4×4×4 lattice 0.3 m apart (0.75 body lengths), headings
+        // from a fixed scramble: one group, a school by spacing, but no mill.
+        // Without the chance rule the turning about its centre reads
+        // about 0.75/√64 ≈ 0.1 from the headings alone.
+        let mut state = 7_u32;
+        let mut signed = || {
+            state = state.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (state >> 8) as f32 / (1 << 23) as f32 - 1.0
+        };
+        let mut fish = Vec::new();
+        for x in 0..4 {
+            for y in 0..4 {
+                for z in 0..4 {
+                    let p =
+                        Vec3::new(x as f32, y as f32, z as f32) * 0.3 + Vec3::new(0.0, 1.0, 0.0);
+                    let v = Vec3::new(signed(), signed(), signed()).normalize_or_zero();
+                    fish.push(fish_at(p, v * 0.5));
+                }
+            }
+        }
+        let m = metrics(&fish);
+        assert_eq!(m.groups, 1);
+        assert!(m.milling < 0.05, "{m:?}");
+    }
+
+    #[test]
+    fn a_loose_cloud_sweeping_round_the_tank_is_not_a_mill() {
+        // 40 fish on a ring of radius 3 m, 0.47 m apart (1.2 body lengths:
+        // linked into one group), all going round the same way. Every other
+        // fish is 1.2 body lengths from its nearest neighbour in the ring; the
+        // group is a mill when tight, not when its fish are 1.6 body lengths
+        // apart on average.
+        let ring = |radius: f32| -> Vec<Fish> {
+            (0..40)
+                .map(|i| {
+                    let a = i as f32 / 40.0 * std::f32::consts::TAU;
+                    let radial = Vec3::new(fmath::cos(a), 0.0, fmath::sin(a));
+                    fish_at(
+                        Vec3::new(0.0, 2.0, 0.0) + radial * radius,
+                        Vec3::Y.cross(radial) * 0.5,
+                    )
+                })
+                .collect()
+        };
+        // Neighbours 2π·1.9/40 = 0.30 m apart (0.75 body lengths): a mill.
+        let tight = metrics(&ring(1.9));
+        assert_eq!(tight.groups, 1);
+        assert!(tight.milling > 0.95, "{tight:?}");
+        // 2π·3.9/40 = 0.61 m apart (1.53 body lengths, still linked at 2): a
+        // loose cloud of loners going round, not a mill.
+        let loose = metrics(&ring(3.9));
+        assert_eq!(loose.groups, 1, "{loose:?}");
+        assert!(loose.nnd_body_lengths > MILLING_SCHOOL_NND_BODY_LENGTHS);
+        assert_eq!(loose.milling, 0.0, "{loose:?}");
     }
 
     #[test]
