@@ -11,6 +11,7 @@ use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
 use crate::sim::reef::bodies::{Drive, ReefBody};
+use crate::sim::reef::courtship::Partner;
 use crate::sim::reef::environment::Environment;
 use crate::sim::reef::mind::{
     FishKind, Focus, Habits, Intention, IntentionGenerator, MentalState, Percept, Sex,
@@ -66,6 +67,12 @@ pub struct ReefAnimal {
     /// remembered (see [`crate::sim::reef::params::ReefParams::threat_memory_secs`]):
     /// the fish flees from where it last saw a predator it has lost from view.
     pub last_threat: Option<(u32, Vec3, f32)>,
+    /// The courting partner last seen, how it looked, and for how many more
+    /// seconds it is remembered (the same
+    /// [`crate::sim::reef::params::ReefParams::threat_memory_secs`] as a
+    /// predator): a courting fish follows its partner where it sees it, or
+    /// where it last saw it, never where it went unseen.
+    pub last_mate: Option<(u32, Partner, f32)>,
     /// What the body keeps between steps for moving (the bodies stage's).
     drive: Drive,
 }
@@ -125,6 +132,8 @@ pub(super) struct MindInputs<'a> {
     pub predator_distances: Vec<f32>,
     /// The most frightening predator actually in view, and where it is.
     pub sighted: Option<(u32, Vec3)>,
+    /// The courting partner it follows, if in view, and how it looks.
+    pub mate_sighted: Option<(u32, Partner)>,
     /// Its bonded courtship partner, if it has one.
     pub partner: Option<u32>,
     pub env: &'a Environment,
@@ -164,6 +173,7 @@ impl ReefAnimal {
             temperature_c,
             history: VecDeque::new(),
             last_threat: None,
+            last_mate: None,
             drive,
         }
     }
@@ -204,6 +214,13 @@ impl ReefAnimal {
                 .last_threat
                 .map(|(j, at, left)| (j, at, left - dt))
                 .filter(|t| t.2 > 0.0),
+        };
+        self.last_mate = match inputs.mate_sighted {
+            Some((j, looks)) => Some((j, looks, inputs.threat_memory_secs)),
+            None => self
+                .last_mate
+                .map(|(j, looks, left)| (j, looks, left - dt))
+                .filter(|m| m.2 > 0.0),
         };
         self.temperature_c = inputs.env.temperature_c_at(self.body.position_m());
         self.mental

@@ -317,6 +317,26 @@ pub(super) struct BehaviourInputs<'a> {
     pub time_secs: f32,
 }
 
+/// How animal `i` knows courting partner `k`: itself as it is; another as
+/// it sees it now or last saw it, while remembered (`ReefAnimal::last_mate`,
+/// the rule a fleeing fish keeps for a predator); `None` once forgotten, so a
+/// courting fish never steers by where an unseen partner went.
+fn known_partner(i: usize, animal: &ReefAnimal, seen: &[Seen], k: u32) -> Option<Partner> {
+    if k as usize == i {
+        let o = seen.get(i)?;
+        return Some(Partner {
+            position_m: o.position_m,
+            head_m: o.head_m,
+            heading: o.heading,
+            body_length_m: o.length_m,
+        });
+    }
+    animal
+        .last_mate
+        .filter(|(j, _, _)| *j == k)
+        .map(|(_, looks, _)| looks)
+}
+
 /// What animal `i`'s behaviour routine asks of its body. `seen` is how every
 /// animal looked at the start of the step, `neighbours` the schoolmates it
 /// sees; the wander routine draws from `rng`.
@@ -353,26 +373,21 @@ pub(super) fn behave(
         }
         // mating: the courtship routine says (the female hovers).
         (Intention::Mate, Some(_)) => inputs.courtship.pair_of(i).map_or(Gait::Pursue, |pair| {
-            if pair.female as usize == i {
-                let partner = |k: u32| {
-                    let o = &seen[k as usize];
-                    Partner {
-                        position_m: o.position_m,
-                        head_m: o.head_m,
-                        heading: o.heading,
-                        body_length_m: o.length_m,
-                    }
-                };
-                let (_, wish) = pair.wishes(
-                    &inputs.params.courtship,
-                    &partner(pair.male),
-                    &partner(pair.female),
-                    inputs.time_secs,
-                    inputs.tank.max_m.y,
-                );
-                wish.gait
-            } else {
-                Gait::Pursue
+            match (
+                known_partner(i, a, seen, pair.male),
+                known_partner(i, a, seen, pair.female),
+            ) {
+                (Some(m), Some(f)) if pair.female as usize == i => {
+                    let (_, wish) = pair.wishes(
+                        &inputs.params.courtship,
+                        &m,
+                        &f,
+                        inputs.time_secs,
+                        inputs.tank.max_m.y,
+                    );
+                    wish.gait
+                }
+                _ => Gait::Pursue,
             }
         }),
         _ => Gait::Swim,
@@ -536,14 +551,7 @@ fn behave_velocity(
             _ => wander(animal, rng),
         },
         Intention::Mate => {
-            let partner_of = |k: u32| {
-                seen.get(k as usize).map(|o| Partner {
-                    position_m: o.position_m,
-                    head_m: o.head_m,
-                    heading: o.heading,
-                    body_length_m: o.length_m,
-                })
-            };
+            let partner_of = |k: u32| known_partner(i, animal, seen, k);
             let t = inputs.time_secs;
             let surface = inputs.tank.max_m.y;
             let mine = inputs.courtship.pair_of(i).copied();
@@ -591,7 +599,10 @@ fn behave_velocity(
                     }
                 }
                 // Not yet a pair: follow the chosen partner around (case 1).
-                _ => match animal_at(focus.target) {
+                _ => match focus.target.and_then(|t| match t {
+                    Target::Animal(j) => partner_of(j).map(|p| p.position_m),
+                    _ => None,
+                }) {
                     Some(p) => chase(
                         &bp,
                         &me,

@@ -56,6 +56,11 @@ pub const CENSUSES: &[Census] = &[
         run: courtship_seeds,
     },
     Census {
+        name: "courtship-memory",
+        about: "Courtship on muscles, seeds 21-30: first spawning within 5 min, and the courting fish-steps that steer by a partner seen, remembered or lost (docs/fish-mind.md)",
+        run: courtship_memory,
+    },
+    Census {
         name: "feeding-time-budget",
         about: "Where the Feeding fish's time goes and how their chases end, seeds 1-8 x 132 s (docs/fish-body.md)",
         run: feeding_time_budget,
@@ -380,6 +385,50 @@ fn courtship_seeds() {
             "courtship seed {seed}: muscle {secs:?} ({phase:?}) points {p:?} ({pp:?}) muscle with nominal p0 {n:?} ({np:?})"
         );
     }
+}
+
+/// Courtship on muscles, seeds 21–30 (seeds the docs' other courtship figures
+/// do not use): when each spawns within 5 minutes, and of the fish-steps in a
+/// pair how many follow a partner in view, one remembered (out of view, last
+/// seen under [`crate::sim::reef::params::ReefParams::threat_memory_secs`]
+/// ago) or one forgotten. `cargo run --release --bin shoal-census --
+/// courtship-memory`.
+fn courtship_memory() {
+    let (mut spawned, mut seen, mut remembered, mut lost) = (0, 0u64, 0u64, 0u64);
+    for seed in 21..=30 {
+        let mut w = reef(ReefScene::Courtship, ReefBodyKind::Physical, seed);
+        let mut first = None;
+        for _ in 0..(300.0 / w.dt_secs()).round() as u32 {
+            w.step();
+            for pair in w.pairs() {
+                for (me, other) in [(pair.male, pair.female), (pair.female, pair.male)] {
+                    match w.animals()[me as usize].last_mate {
+                        Some((j, _, left)) if j == other => {
+                            if left >= w.params().threat_memory_secs {
+                                seen += 1;
+                            } else {
+                                remembered += 1;
+                            }
+                        }
+                        _ => lost += 1,
+                    }
+                }
+            }
+            if first.is_none() && w.counts().spawnings > 0 {
+                first = Some(w.time_secs());
+                break;
+            }
+        }
+        spawned += u32::from(first.is_some());
+        println!("courtship seed {seed}: first spawning {first:?} s");
+    }
+    let all = (seen + remembered + lost).max(1) as f64;
+    println!(
+        "spawned on {spawned} of 10 seeds; courting fish-steps: partner in view {:.1} %, remembered {:.1} %, forgotten {:.1} %",
+        100.0 * seen as f64 / all,
+        100.0 * remembered as f64 / all,
+        100.0 * lost as f64 / all
+    );
 }
 
 /// Where the *Feeding* fish's time goes, for issue 13: each fish-step of

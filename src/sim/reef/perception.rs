@@ -391,7 +391,7 @@ use crate::sim::common::tank::Tank;
 use crate::sim::reef::animal::{ReefAnimal, Seen};
 use crate::sim::reef::behaviour::Neighbour;
 use crate::sim::reef::bodies::ReefBody;
-use crate::sim::reef::courtship::Courtship;
+use crate::sim::reef::courtship::{Courtship, Partner};
 use crate::sim::reef::feeding::FoodParticle;
 use crate::sim::reef::mind::{FishKind, Intention, Percept, Sex, Target};
 use crate::sim::reef::params::ReefParams;
@@ -478,6 +478,9 @@ pub(super) struct Sight {
     pub predator_distances: Vec<f32>,
     /// The most frightening predator actually in view, and where it is.
     pub sighted: Option<(u32, Vec3)>,
+    /// The courting partner it follows (its pair's other fish, or the one it
+    /// courts), if in view, and how it looks.
+    pub mate_sighted: Option<(u32, Partner)>,
 }
 
 impl Perception {
@@ -727,11 +730,36 @@ impl Perception {
             percept.schoolmates_seen = neighbours.len();
         }
         percept.collision = collision_check(i, animal, seen, &neighbours, inputs);
+        // The partner it courts: its pair's other fish, or the one its
+        // courting is aimed at.
+        let courted = match (inputs.courtship.pair_of(i), animal.focus) {
+            (Some(pair), _) => Some(if pair.male as usize == i { pair.female } else { pair.male }),
+            (None, focus) if focus.intention == Intention::Mate => match focus.target {
+                Some(Target::Animal(j)) => Some(j),
+                _ => None,
+            },
+            _ => None,
+        };
+        let mate_sighted = courted
+            .filter(|&j| seen.get(j as usize).is_some_and(|s| s.alive) && sees_animal(j as usize))
+            .map(|j| {
+                let o = &seen[j as usize];
+                (
+                    j,
+                    Partner {
+                        position_m: o.position_m,
+                        head_m: o.head_m,
+                        heading: o.heading,
+                        body_length_m: o.length_m,
+                    },
+                )
+            });
         Sight {
             percept,
             neighbours,
             predator_distances,
             sighted: sighted.map(|j| (j, seen[j as usize].position_m)),
+            mate_sighted,
         }
     }
 }

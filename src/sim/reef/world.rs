@@ -391,6 +391,7 @@ impl ReefWorld {
                 percept: &sight.percept,
                 predator_distances: sight.predator_distances,
                 sighted: sight.sighted,
+                mate_sighted: sight.mate_sighted,
                 partner,
                 env: &self.env,
                 threat_memory_secs: self.params.threat_memory_secs,

@@ -114,3 +114,65 @@ fn a_pacifist_pair_completes_the_courtship_sequence_in_order() {
         }
     }
 }
+
+#[test]
+fn a_courting_fish_follows_its_partner_where_it_last_saw_her_and_not_once_forgotten() {
+    // The rule a fleeing fish keeps for a predator: a courting male steers by
+    // the female where he sees her, or where he last saw her while he
+    // remembers; never by where she went unseen.
+    use crate::sim::reef::courtship::Partner;
+    for body in [ReefBodyKind::PointMass, ReefBodyKind::Physical] {
+        let mut w = reef(ReefScene::Courtship, body, 21);
+        let mut found = None;
+        for _ in 0..(150.0 / w.dt_secs()) as u32 {
+            w.step();
+            found = w
+                .pairs()
+                .iter()
+                .find(|p| w.animals()[p.male as usize].focus.intention == Intention::Mate)
+                .map(|p| (p.male as usize, p.female as usize));
+            if found.is_some() {
+                break;
+            }
+        }
+        let (male, female) = found.unwrap_or_else(|| panic!("{body:?}: no pair in 150 s"));
+        let at = w.animals()[male].body.position_m();
+        let heading = w.animals()[male].body.heading();
+        let side = heading.cross(Vec3::Y).normalize();
+        // She is now 3 m behind him, in his blind cone; he last saw her 3 m to
+        // his side, half his memory ago.
+        let truth = at - heading * 3.0;
+        w.place(female, truth, heading);
+        let length = w.animals()[female].body.body_length_m();
+        let remembered = at + side * 3.0;
+        let memory = w.params().threat_memory_secs;
+        let looks = Partner {
+            position_m: remembered,
+            head_m: remembered + heading * 0.5 * length,
+            heading,
+            body_length_m: length,
+        };
+        w.animal_mut(male).unwrap().last_mate = Some((female as u32, looks, 0.5 * memory));
+        w.step();
+        let m = &w.animals()[male];
+        assert_eq!(m.focus.intention, Intention::Mate, "{body:?}");
+        let wish = m.desired_m_per_s.normalize_or_zero();
+        assert!(wish.dot(side) > 0.5, "{body:?}: towards where he saw her, not {wish}");
+        assert!(wish.dot(-heading) < 0.5, "{body:?}: not back to where she is, {wish}");
+        assert!(
+            m.last_mate.is_some_and(|(j, _, left)| j == female as u32 && left < 0.5 * memory),
+            "{body:?}: the memory fades while she is unseen"
+        );
+        // Forgotten: he no longer steers back to her.
+        let at = w.animals()[male].body.position_m();
+        let heading = w.animals()[male].body.heading();
+        w.place(female, at - heading * 3.0, heading);
+        w.animal_mut(male).unwrap().last_mate = None;
+        w.step();
+        let m = &w.animals()[male];
+        let to_her = (w.animals()[female].body.position_m() - at).normalize();
+        let wish = m.desired_m_per_s.normalize_or_zero();
+        assert!(wish.dot(to_her) < 0.5, "{body:?}: steered to an unseen partner, {wish}");
+        assert!(m.last_mate.is_none(), "{body:?}: she stays unseen and forgotten");
+    }
+}
