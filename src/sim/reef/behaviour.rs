@@ -372,24 +372,26 @@ pub(super) fn behave(
             Gait::School
         }
         // mating: the courtship routine says (the female hovers).
-        (Intention::Mate, Some(_)) => inputs.courtship.pair_of(i).map_or(Gait::Pursue, |pair| {
-            match (
-                known_partner(i, a, seen, pair.male),
-                known_partner(i, a, seen, pair.female),
-            ) {
-                (Some(m), Some(f)) if pair.female as usize == i => {
-                    let (_, wish) = pair.wishes(
-                        &inputs.params.courtship,
-                        &m,
-                        &f,
-                        inputs.time_secs,
-                        inputs.tank.max_m.y,
-                    );
-                    wish.gait
+        (Intention::Mate, Some(_)) => {
+            inputs.courtship.pair_of(i).map_or(Gait::Pursue, |pair| {
+                match (
+                    known_partner(i, a, seen, pair.male),
+                    known_partner(i, a, seen, pair.female),
+                ) {
+                    (Some(m), Some(f)) if pair.female as usize == i => {
+                        let (_, wish) = pair.wishes(
+                            &inputs.params.courtship,
+                            &m,
+                            &f,
+                            inputs.time_secs,
+                            inputs.tank.max_m.y,
+                        );
+                        wish.gait
+                    }
+                    _ => Gait::Pursue,
                 }
-                _ => Gait::Pursue,
-            }
-        }),
+            })
+        }
         _ => Gait::Swim,
     };
     Wish {

@@ -733,7 +733,11 @@ impl Perception {
         // The partner it courts: its pair's other fish, or the one its
         // courting is aimed at.
         let courted = match (inputs.courtship.pair_of(i), animal.focus) {
-            (Some(pair), _) => Some(if pair.male as usize == i { pair.female } else { pair.male }),
+            (Some(pair), _) => Some(if pair.male as usize == i {
+                pair.female
+            } else {
+                pair.male
+            }),
             (None, focus) if focus.intention == Intention::Mate => match focus.target {
                 Some(Target::Animal(j)) => Some(j),
                 _ => None,

@@ -157,10 +157,17 @@ fn a_courting_fish_follows_its_partner_where_it_last_saw_her_and_not_once_forgot
         let m = &w.animals()[male];
         assert_eq!(m.focus.intention, Intention::Mate, "{body:?}");
         let wish = m.desired_m_per_s.normalize_or_zero();
-        assert!(wish.dot(side) > 0.5, "{body:?}: towards where he saw her, not {wish}");
-        assert!(wish.dot(-heading) < 0.5, "{body:?}: not back to where she is, {wish}");
         assert!(
-            m.last_mate.is_some_and(|(j, _, left)| j == female as u32 && left < 0.5 * memory),
+            wish.dot(side) > 0.5,
+            "{body:?}: towards where he saw her, not {wish}"
+        );
+        assert!(
+            wish.dot(-heading) < 0.5,
+            "{body:?}: not back to where she is, {wish}"
+        );
+        assert!(
+            m.last_mate
+                .is_some_and(|(j, _, left)| j == female as u32 && left < 0.5 * memory),
             "{body:?}: the memory fades while she is unseen"
         );
         // Forgotten: he no longer steers back to her.
@@ -172,7 +179,13 @@ fn a_courting_fish_follows_its_partner_where_it_last_saw_her_and_not_once_forgot
         let m = &w.animals()[male];
         let to_her = (w.animals()[female].body.position_m() - at).normalize();
         let wish = m.desired_m_per_s.normalize_or_zero();
-        assert!(wish.dot(to_her) < 0.5, "{body:?}: steered to an unseen partner, {wish}");
-        assert!(m.last_mate.is_none(), "{body:?}: she stays unseen and forgotten");
+        assert!(
+            wish.dot(to_her) < 0.5,
+            "{body:?}: steered to an unseen partner, {wish}"
+        );
+        assert!(
+            m.last_mate.is_none(),
+            "{body:?}: she stays unseen and forgotten"
+        );
     }
 }
