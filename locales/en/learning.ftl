@@ -49,17 +49,18 @@ learning-race-metres = { $distance } m
 
 ## The plots.
 learning-objective-caption = How well it swims (E, lower is better)
+    .help = How far the practice swim missed its goal (the target, speed or turn of the drill), plus a little for jerky muscles, as a score E: lower is better. High at the start: the fish flails; falling: it is learning; flat and low: it has learned the stroke (the best line never goes up).
 learning-axis-tries = tries
 learning-line-now = now
 learning-line-best = best
 learning-muscle-middle = middle
 learning-muscle-tail = tail
 learning-fig8-raw = What it learned (left muscles)
-    .help = How hard each muscle pulls over the practice swim, as learned
+    .help = How hard each muscle pulls over the practice swim, as learned. Tall, regular waves: a strong, steady stroke; flat lines: muscles the fish hardly uses.
 learning-fig8-modes = Main rhythms (Fourier modes)
-    .help = The few waves (frequencies) that carry most of the learned pattern
+    .help = The main rhythm alone: the strongest wave in the learned pattern, around each muscle's average pull. Big, even swings: one rhythm carries most of the stroke; if it looks much like the first plot, little else is needed.
 learning-fig8-abstract = Simplified controller
-    .help = The learned pattern rebuilt from those few waves: this is what the fish keeps
+    .help = The learned pattern rebuilt from those few waves: this is what the fish keeps. The closer it looks to the first plot, the less the fish lost by keeping only a few waves.
 learning-axis-time = time (s)
 
 ## Notices.

@@ -152,13 +152,13 @@ reef-inspector-habits = Species { $species } · { $length } m · likes { $light 
 }
     .help = Habits: what this fish was born liking. They never change.
 reef-inspector-hunger = Hunger
-    .help = Grows as food digests; drops when it eats
+    .help = Grows as food digests; drops when it eats. Near 1: the fish is very hungry and will go looking for food; near 0: it has just eaten.
     .plot = hunger
 reef-inspector-libido = Libido
-    .help = Grows with time since mating, unless it is hungry
+    .help = Grows with time since mating, unless it is hungry. Near 1: it looks for a partner and courts; near 0: it has just spawned (or is too hungry to care).
     .plot = libido
 reef-inspector-fear = Fear
-    .help = High when it sees a predator close by
+    .help = High when it sees a predator close by. Near 1: a shark is near and the fish flees (or hides in its school); near 0: no predator in sight.
     .plot = fear
 reef-intention-hunt = it is hungry: it hunts
 reef-inspector-intends = Intends to { $intention }: { $sentence }

@@ -155,11 +155,11 @@ physics-muscles-front = Front muscles (turning)
 physics-muscles-middle = Middle muscles (turning and swimming)
 physics-muscles-tail = Tail muscles (swimming)
 physics-muscles = Muscles
-    .help = How hard each muscle of this part pulls, from 0 (resting) to 1 (fully contracted), over the last seconds. Solid vermillion lines: the fish's left side; dashed blue lines: its right side (two muscles each, the top one thicker than the bottom one). Left and right take turns: that is the tail beat
+    .help = How hard each muscle of this part pulls, from 0 (resting) to 1 (fully contracted), over the last seconds. Solid vermillion lines: the fish's left side; dashed blue lines: its right side (two muscles each, the top one thicker than the bottom one). Left and right take turns: that is the tail beat. High, tall waves: the fish beats its tail hard to swim fast; flat near 0: it glides; one side high for a moment while the other rests: it turns.
 physics-muscle-top = { $side } top
 physics-muscle-bottom = { $side } bottom
 physics-speed = Speed (m/s)
-    .help = How fast the fish's middle moves, in metres per second
+    .help = How fast the fish's middle moves, in metres per second. High: it swims hard, tail beating; low or near 0: it glides or hovers. A wobble that rises and falls with each tail beat is normal.
 physics-speed-line = speed
 
 # The panels under the tank (src/ui/bottom_panel.rs).

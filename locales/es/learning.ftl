@@ -52,17 +52,18 @@ learning-race-metres = { $distance } m
 
 ## Las gráficas.
 learning-objective-caption = Qué tan bien nada (E, menor es mejor)
+    .help = Cuánto se alejó el nado de práctica de su meta (el blanco, la rapidez o el giro del ejercicio), más un poco por los músculos bruscos, como una puntuación E: menor es mejor. Alta al principio: el pez se agita sin avanzar; bajando: está aprendiendo; plana y baja: ya aprendió a nadar (la línea de lo mejor nunca sube).
 learning-axis-tries = intentos
 learning-line-now = ahora
 learning-line-best = mejor
 learning-muscle-middle = medio
 learning-muscle-tail = cola
 learning-fig8-raw = Lo que aprendió (músculos izquierdos)
-    .help = Qué tan fuerte tira cada músculo durante el nado de práctica, tal como lo aprendió
+    .help = Qué tan fuerte tira cada músculo durante el nado de práctica, tal como lo aprendió. Ondas altas y regulares: una brazada fuerte y pareja; líneas planas: músculos que el pez casi no usa.
 learning-fig8-modes = Ritmos principales (modos de Fourier)
-    .help = Las pocas ondas (frecuencias) que llevan la mayor parte del patrón aprendido
+    .help = Solo el ritmo principal: la onda más fuerte del patrón aprendido, alrededor del tirón promedio de cada músculo. Oscilaciones grandes y parejas: un solo ritmo lleva casi toda la brazada; si se parece mucho al primer gráfico, no hace falta mucho más.
 learning-fig8-abstract = Controlador simplificado
-    .help = El patrón aprendido reconstruido con esas pocas ondas (la abstracción de Fourier): esto es lo que el pez conserva
+    .help = El patrón aprendido reconstruido con esas pocas ondas (la abstracción de Fourier): esto es lo que el pez conserva. Cuanto más se parece al primer gráfico, menos perdió el pez al quedarse solo con unas pocas ondas.
 learning-axis-time = tiempo (s)
 
 ## Avisos.

@@ -167,13 +167,13 @@ reef-inspector-habits = Especie { $species } · { $length } m · le gusta la luz
 }
     .help = Hábitos: lo que a este pez le gusta desde que nació. Nunca cambian.
 reef-inspector-hunger = Hambre
-    .help = Crece mientras digiere la comida; baja cuando come
+    .help = Crece mientras digiere la comida; baja cuando come. Cerca de 1: el pez tiene mucha hambre y va a buscar comida; cerca de 0: acaba de comer.
     .plot = hambre
 reef-inspector-libido = Libido
-    .help = Crece con el tiempo desde que se apareó, salvo si tiene hambre
+    .help = Crece con el tiempo desde que se apareó, salvo si tiene hambre. Cerca de 1: busca pareja y la corteja; cerca de 0: acaba de desovar (o tiene demasiada hambre para eso).
     .plot = libido
 reef-inspector-fear = Miedo
-    .help = Es alto cuando ve un depredador cerca
+    .help = Es alto cuando ve un depredador cerca. Cerca de 1: hay un tiburón cerca y el pez huye (o se esconde en su cardumen); cerca de 0: no ve ningún depredador.
     .plot = miedo
 reef-intention-hunt = tiene hambre: caza
 reef-inspector-intends = Quiere { $intention }: { $sentence }

@@ -155,11 +155,11 @@ physics-muscles-front = Músculos delanteros (girar)
 physics-muscles-middle = Músculos del medio (girar y nadar)
 physics-muscles-tail = Músculos de la cola (nadar)
 physics-muscles = Músculos
-    .help = Qué tan fuerte tira cada músculo de esta parte, de 0 (en reposo) a 1 (contraído del todo), en los últimos segundos. Líneas bermellón continuas: el lado izquierdo del pez; líneas azules discontinuas: su lado derecho (dos músculos cada uno; el de arriba, más grueso que el de abajo). Izquierda y derecha se turnan: ese es el coletazo
+    .help = Qué tan fuerte tira cada músculo de esta parte, de 0 (en reposo) a 1 (contraído del todo), en los últimos segundos. Líneas bermellón continuas: el lado izquierdo del pez; líneas azules discontinuas: su lado derecho (dos músculos cada uno; el de arriba, más grueso que el de abajo). Izquierda y derecha se turnan: ese es el coletazo. Ondas altas: el pez mueve la cola con fuerza para nadar rápido; líneas planas cerca de 0: se desliza; un lado alto un momento mientras el otro descansa: gira.
 physics-muscle-top = { $side } arriba
 physics-muscle-bottom = { $side } abajo
 physics-speed = Rapidez (m/s)
-    .help = Qué tan rápido se mueve el centro del pez, en metros por segundo
+    .help = Qué tan rápido se mueve el centro del pez, en metros por segundo. Alta: nada con fuerza, moviendo la cola; baja o cerca de 0: se desliza o se queda quieto. Es normal que suba y baje un poco con cada coletazo.
 physics-speed-line = rapidez
 
 # Los paneles bajo el tanque (src/ui/bottom_panel.rs).

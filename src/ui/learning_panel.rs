@@ -284,7 +284,8 @@ fn progress_ui(ui: &mut egui::Ui, lab: &LearningLab, rects: &mut WidgetRects) {
 
 fn objective_plot_ui(ui: &mut egui::Ui, lab: &LearningLab, height: f32, rects: &mut WidgetRects) {
     // One line, as `height` assumes: a narrow window cuts the caption short.
-    ui.add(egui::Label::new(ts("learning-objective-caption")).truncate());
+    ui.add(egui::Label::new(ts("learning-objective-caption")).truncate())
+        .on_hover_text(ts("learning-objective-caption.help"));
     let history = lab.trainer().history();
     // At most ~600 points drawn.
     let every = (history.len() / 600).max(1);
