@@ -138,7 +138,7 @@ fn a_courting_fish_follows_its_partner_where_it_last_saw_her_and_not_once_forgot
         let (male, female) = found.unwrap_or_else(|| panic!("{body:?}: no pair in 150 s"));
         let at = w.animals()[male].body.position_m();
         let heading = w.animals()[male].body.heading();
-        let side = heading.cross(Vec3::Y).normalize();
+        let side = heading.cross(Vec3::Y).normalize_or_zero();
         // She is now 3 m behind him, in his blind cone; he last saw her 3 m to
         // his side, half his memory ago.
         let truth = at - heading * 3.0;
@@ -177,7 +177,7 @@ fn a_courting_fish_follows_its_partner_where_it_last_saw_her_and_not_once_forgot
         w.animal_mut(male).unwrap().last_mate = None;
         w.step();
         let m = &w.animals()[male];
-        let to_her = (w.animals()[female].body.position_m() - at).normalize();
+        let to_her = (w.animals()[female].body.position_m() - at).normalize_or_zero();
         let wish = m.desired_m_per_s.normalize_or_zero();
         assert!(
             wish.dot(to_her) < 0.5,
