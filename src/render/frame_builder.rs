@@ -236,6 +236,7 @@ impl FrameBuilder {
             alpha,
             Arc::make_mut(&mut view.bodies),
         );
+        Arc::make_mut(&mut view.bodies).release_spare();
 
         let aspect = size_px[0] as f32 / size_px[1].max(1) as f32;
         SceneCallback {

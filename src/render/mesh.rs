@@ -88,6 +88,22 @@ pub fn pack_rgba(rgb: [f32; 3], alpha: u32) -> u32 {
 }
 
 impl Mesh {
+    /// Gives memory back after the mesh shrank a lot (fewer fish than at its
+    /// largest): a buffer kept for reuse holds at most four times what the
+    /// last frame drew (and at least a small floor), so a tank that once held
+    /// 300 muscle fish does not keep their 15 MB of skin once it has 10
+    /// (found by the browser soak, issue 35).
+    pub fn release_spare(&mut self) {
+        fn trim<T>(v: &mut Vec<T>) {
+            let keep = (2 * v.len()).max(4096);
+            if v.capacity() > 2 * keep {
+                v.shrink_to(keep);
+            }
+        }
+        trim(&mut self.vertices);
+        trim(&mut self.indices);
+    }
+
     fn push(&mut self, position: Vec3, normal: Vec3, material: Material, color: u32) -> u32 {
         self.vertices.push(Vertex {
             position: position.to_array(),
@@ -943,6 +959,47 @@ fn icosphere(subdivisions: u32) -> (Vec<Vec3>, Vec<[usize; 3]>) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_mesh_gives_back_what_many_fish_needed_once_few_remain() {
+        let vertex = Vertex {
+            position: [0.0; 3],
+            material: 0,
+            normal: [0.0, 1.0, 0.0],
+            color: 0,
+        };
+        let mut mesh = Mesh::default();
+        // 300 fish's skin, then 10 fish's, frame after frame.
+        mesh.vertices.resize(300_000, vertex);
+        mesh.indices.resize(900_000, 0);
+        mesh.release_spare();
+        assert!(mesh.vertices.capacity() >= 300_000, "kept while in use");
+        let full = mesh.vertices.capacity();
+        mesh.vertices.clear();
+        mesh.indices.clear();
+        mesh.vertices.resize(10_000, vertex);
+        mesh.indices.resize(30_000, 0);
+        mesh.release_spare();
+        assert!(
+            mesh.vertices.capacity() <= 20_000,
+            "{}",
+            mesh.vertices.capacity()
+        );
+        assert!(
+            mesh.indices.capacity() <= 60_000,
+            "{}",
+            mesh.indices.capacity()
+        );
+        // A steady mesh keeps its buffer: no shrinking and regrowing every frame.
+        let steady = mesh.vertices.capacity();
+        for _ in 0..3 {
+            mesh.vertices.clear();
+            mesh.vertices.resize(10_000, vertex);
+            mesh.release_spare();
+            assert_eq!(mesh.vertices.capacity(), steady);
+        }
+        assert!(full > steady);
+    }
 
     fn check_normals_and_indices(mesh: &Mesh) {
         assert!(!mesh.indices.is_empty());
