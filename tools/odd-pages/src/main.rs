@@ -77,10 +77,42 @@ fn render(markdown: &str, source: &str) -> String {
     let options = Options::ENABLE_TABLES | Options::ENABLE_HEADING_ATTRIBUTES;
     let mut title = String::new();
     let mut in_title = false;
-    // The path in the repository of the unpublished doc the current link names.
-    let mut unpublished: Vec<Option<String>> = Vec::new();
+    // The unpublished doc the current link names (its path in the repository,
+    // with the anchor) and the events of the link's text.
+    let mut unpublished: Option<(String, String, Vec<Event>)> = None;
     let mut events = Vec::new();
     for event in Parser::new_ext(markdown, options) {
+        if let Some((path, anchor, inner)) = unpublished.as_mut() {
+            if matches!(event, Event::End(TagEnd::Link)) {
+                let text: String = inner
+                    .iter()
+                    .filter_map(|e| match e {
+                        Event::Text(t) | Event::Code(t) => Some(t.as_ref()),
+                        _ => None,
+                    })
+                    .collect();
+                let file = path.trim_start_matches("docs/");
+                let full = if anchor.is_empty() {
+                    path.clone()
+                } else {
+                    format!("{path}#{anchor}")
+                };
+                let code = format!("<code class=\"repo-path\">{}</code>", escape(&full));
+                if text == file || text == *path || text == *anchor {
+                    // The link's words only name the place: name it in full.
+                    events.push(Event::Html(CowStr::from(code)));
+                } else {
+                    events.append(inner);
+                    events.push(Event::Html(CowStr::from(format!(
+                        " <span class=\"repo-path\">(in the repository: {code})</span>"
+                    ))));
+                }
+                unpublished = None;
+            } else {
+                inner.push(event);
+            }
+            continue;
+        }
         match event {
             Event::Start(Tag::Heading { level, .. }) if title.is_empty() => {
                 in_title = level == pulldown_cmark::HeadingLevel::H1;
@@ -100,26 +132,16 @@ fn render(markdown: &str, source: &str) -> String {
                 title: link_title,
                 id,
             }) => match published(&dest_url) {
-                Some(to) => {
-                    unpublished.push(None);
-                    events.push(Event::Start(Tag::Link {
-                        link_type,
-                        dest_url: CowStr::from(to),
-                        title: link_title,
-                        id,
-                    }));
-                }
+                Some(to) => events.push(Event::Start(Tag::Link {
+                    link_type,
+                    dest_url: CowStr::from(to),
+                    title: link_title,
+                    id,
+                })),
                 None => {
-                    let file = dest_url.split('#').next().unwrap_or_default();
-                    unpublished.push(Some(format!("docs/{file}")));
+                    let (file, anchor) = dest_url.split_once('#').unwrap_or((&dest_url, ""));
+                    unpublished = Some((format!("docs/{file}"), anchor.to_string(), Vec::new()));
                 }
-            },
-            Event::End(TagEnd::Link) => match unpublished.pop().flatten() {
-                None => events.push(event),
-                Some(path) => events.push(Event::Html(CowStr::from(format!(
-                    " <span class=\"repo-path\">(in the repository: <code>{}</code>)</span>",
-                    escape(&path)
-                )))),
             },
             other => events.push(other),
         }
@@ -152,16 +174,25 @@ mod tests {
     #[test]
     fn links_to_other_odds_stay_links_and_unpublished_docs_become_paths() {
         let page = render(
-            "# T\n\nSee [reef](odd-reef.md#2-entities), [boids.md](boids.md) and [JASSS](https://www.jasss.org/).\n",
+            "# T\n\nSee [reef](odd-reef.md#2-entities), [boids.md](boids.md), \
+             [the rows](departures.md#a), [b](departures.md#b) and [JASSS](https://www.jasss.org/).\n",
             "docs/odd-x.md",
         );
         assert!(
             page.contains("<a href=\"reef.html#2-entities\">reef</a>"),
             "{page}"
         );
-        assert!(!page.contains("boids.md\""), "{page}");
         assert!(
-            page.contains("boids.md <span class=\"repo-path\">(in the repository: <code>docs/boids.md</code>)"),
+            !page.contains(".md\""),
+            "a link to an unpublished doc: {page}"
+        );
+        assert!(page.contains("See <a href=\"reef.html#2-entities\">reef</a>, <code class=\"repo-path\">docs/boids.md</code>, "), "{page}");
+        assert!(
+            page.contains("the rows <span class=\"repo-path\">(in the repository: <code class=\"repo-path\">docs/departures.md#a</code>)</span>"),
+            "{page}"
+        );
+        assert!(
+            page.contains("<code class=\"repo-path\">docs/departures.md#b</code> and"),
             "{page}"
         );
         assert!(
