@@ -82,7 +82,10 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
             rects.insert("about_equations", r.header_response.rect);
             section(ui, ts("about-references"));
             let r = ui
-                .add(egui::Hyperlink::from_label_and_url(ts("about-odd"), odd_url(scene)).open_in_new_tab(true))
+                .add(
+                    egui::Hyperlink::from_label_and_url(ts("about-odd"), odd_url(scene))
+                        .open_in_new_tab(true),
+                )
                 .on_hover_text(ts("about-odd.help"));
             rects.insert("about_odd", r.rect);
             for reference in page.references {
@@ -179,8 +182,16 @@ mod tests {
                 }
             }
             for concept in [
-                "Basic principles", "Emergence", "Adaptation", "Objectives", "Learning",
-                "Prediction", "Sensing", "Interaction", "Stochasticity", "Collectives",
+                "Basic principles",
+                "Emergence",
+                "Adaptation",
+                "Objectives",
+                "Learning",
+                "Prediction",
+                "Sensing",
+                "Interaction",
+                "Stochasticity",
+                "Collectives",
                 "Observation",
             ] {
                 assert!(
@@ -191,15 +202,23 @@ mod tests {
             assert!(!text.contains("../shared"), "{name} names ../shared");
         }
         // Each distinct ODD a scene links, and no ODD that no scene links.
-        let linked: std::collections::BTreeSet<_> = Scene::ALL.iter().map(|s| odd_name(*s)).collect();
-        assert_eq!(odds, linked.len(), "an ODD in docs/ that no About links, or the reverse");
+        let linked: std::collections::BTreeSet<_> =
+            Scene::ALL.iter().map(|s| odd_name(*s)).collect();
+        assert_eq!(
+            odds,
+            linked.len(),
+            "an ODD in docs/ that no About links, or the reverse"
+        );
         // The service worker keeps each page for offline use.
         let sw = std::fs::read_to_string(
             std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("web/shoal-sw.js"),
         )
         .unwrap();
         for name in &linked {
-            assert!(sw.contains(&format!("\"odd/{name}.html\"")), "shoal-sw.js does not cache odd/{name}.html");
+            assert!(
+                sw.contains(&format!("\"odd/{name}.html\"")),
+                "shoal-sw.js does not cache odd/{name}.html"
+            );
         }
     }
 
