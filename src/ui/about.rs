@@ -83,7 +83,7 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
             section(ui, ts("about-references"));
             let r = ui
                 .add(
-                    egui::Hyperlink::from_label_and_url(ts("about-odd"), odd_url(scene))
+                    egui::Hyperlink::from_label_and_url(ts("about-odd"), odd_url(page.odd))
                         .open_in_new_tab(true),
                 )
                 .on_hover_text(ts("about-odd.help"));
@@ -99,31 +99,15 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
     ctx.data_mut(|d| d.insert_temp(id, open));
 }
 
-/// The ODD description (Grimm et al. 2020) of the model behind `scene`:
-/// `docs/odd-<name>.md`. The aquarium's wandering fish and the schooling lab share
-/// the boid layer, so they share its description.
-pub fn odd_name(scene: Scene) -> &'static str {
-    match scene {
-        Scene::Aquarium | Scene::Boids => "schooling",
-        Scene::Physics => "physics",
-        Scene::Reef => "reef",
-        Scene::Learning => "learning",
-    }
-}
-
 /// Where the About window's *Model description (ODD)* link goes: in the browser
 /// the page `odd/<name>.html` that the build makes from the markdown
 /// (`web/odd-pages.sh`) and serves with the app; in the desktop app the markdown
 /// itself, in the project's docs/ folder.
-fn odd_url(scene: Scene) -> String {
+fn odd_url(odd: &str) -> String {
     if cfg!(target_arch = "wasm32") {
-        format!("odd/{}.html", odd_name(scene))
+        format!("odd/{odd}.html")
     } else {
-        format!(
-            "file://{}/docs/odd-{}.md",
-            env!("CARGO_MANIFEST_DIR"),
-            odd_name(scene)
-        )
+        format!("file://{}/docs/odd-{odd}.md", env!("CARGO_MANIFEST_DIR"))
     }
 }
 
@@ -159,9 +143,10 @@ mod tests {
         ];
         let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
         for scene in Scene::ALL {
-            let file = docs.join(format!("odd-{}.md", odd_name(scene)));
+            let odd = scene.class().facts().about.odd;
+            let file = docs.join(format!("odd-{odd}.md"));
             assert!(file.is_file(), "{scene:?} links {file:?}, which is missing");
-            assert!(odd_url(scene).ends_with(&format!("odd-{}.md", odd_name(scene))));
+            assert!(odd_url(odd).ends_with(&format!("docs/odd-{odd}.md")));
         }
         let mut odds = 0;
         for entry in std::fs::read_dir(&docs).unwrap() {
@@ -202,8 +187,10 @@ mod tests {
             assert!(!text.contains("../shared"), "{name} names ../shared");
         }
         // Each distinct ODD a scene links, and no ODD that no scene links.
-        let linked: std::collections::BTreeSet<_> =
-            Scene::ALL.iter().map(|s| odd_name(*s)).collect();
+        let linked: std::collections::BTreeSet<_> = Scene::ALL
+            .iter()
+            .map(|s| s.class().facts().about.odd)
+            .collect();
         assert_eq!(
             odds,
             linked.len(),
