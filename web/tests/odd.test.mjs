@@ -56,6 +56,7 @@ describe("ODD pages", () => {
     );
     const tree = await axTree(page);
     assert.ok(axFind(tree, "link", LINK), "a screen reader finds the link");
+    saveArtifact("odd-about-physics.png", await page.screenshot());
 
     // Followed through the mirror, as a screen reader does: a new tab with the page.
     const opened = context.waitForEvent("page", { timeout: 60_000 });
