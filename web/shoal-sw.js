@@ -12,6 +12,11 @@
 
 const CACHE = "shoal-app";
 const HASHED = /-[0-9a-f]{16}(_bg)?\.[a-z]+$/;
+// The ODD descriptions that the About windows link (made at build time from
+// docs/odd-*.md by web/odd-pages.sh); index.html does not name them.
+const ODD = ["odd/odd.css", "odd/schooling.html", "odd/reef.html", "odd/physics.html", "odd/learning.html"];
+/** Pages of their own (the ODD pages), answered as themselves and not as the app. */
+const OWN_PAGE = /\/odd\/[a-z-]+\.html$/;
 
 /** The files this version of the app is made of, read from index.html and the
  * loader (Trunk's hashed names change with every build). */
@@ -22,6 +27,7 @@ async function appFiles() {
   const html = await index.clone().text();
   const names = new Set([scope.href]);
   for (const [, ref] of html.matchAll(/(?:src|href)="([^"#]+)"/g)) names.add(new URL(ref, scope).href);
+  for (const page of ODD) names.add(new URL(page, scope).href);
   const loader = [...names].find((n) => n.endsWith("shoal-start.js"));
   if (loader) {
     const text = await (await fetch(loader, { cache: "no-cache" })).text();
@@ -62,7 +68,8 @@ self.addEventListener("fetch", (event) => {
   const url = new URL(request.url);
   if (request.method !== "GET" || url.origin !== self.location.origin) return;
   // The page itself, whatever its query (?lang=es, a share link's settings).
-  const key = request.mode === "navigate" ? self.registration.scope : url.origin + url.pathname;
+  const app = request.mode === "navigate" && !OWN_PAGE.test(url.pathname);
+  const key = app ? self.registration.scope : url.origin + url.pathname;
   if (HASHED.test(url.pathname)) {
     event.respondWith(caches.match(key).then((hit) => hit || fetch(request)));
     return;
@@ -71,7 +78,7 @@ self.addEventListener("fetch", (event) => {
     fetch(request)
       .then((response) => {
         // A fresh page may name a new version: fetch it in the background.
-        if (request.mode === "navigate" && response.ok) event.waitUntil(refresh().catch(() => {}));
+        if (app && response.ok) event.waitUntil(refresh().catch(() => {}));
         return response;
       })
       .catch(() => caches.match(key).then((hit) => hit || Response.error())),

@@ -135,3 +135,5 @@ about-learning-notice-2 = The learned moves are rhythmic: two or three main rhyt
 about-learning-notice-3 = The fish that practised longest usually wins the race.
 about-learning-try-1 = Train with 90 tries per drill, then with 6,840: compare the race.
 about-learning-try-2 = Switch the swimmer between learned and hand-tuned controllers.
+about-odd = Model description (ODD)
+    .help = The model described the way ecologists describe agent-based models (the ODD protocol, Grimm et al. 2020): purpose, entities, scales, schedule, design concepts, initialisation, input and submodels. Opens in a new tab.

@@ -136,3 +136,5 @@ about-learning-notice-2 = Los movimientos aprendidos son rítmicos: dos o tres r
 about-learning-notice-3 = El pez que practicó más tiempo suele ganar la carrera.
 about-learning-try-1 = Entrena con 90 intentos por ejercicio y luego con 6840: compara la carrera.
 about-learning-try-2 = Cambia al nadador entre controladores aprendidos y ajustados a mano.
+about-odd = Descripción del modelo (ODD)
+    .help = El modelo descrito como los ecólogos describen los modelos basados en agentes (el protocolo ODD, Grimm et al. 2020): propósito, entidades, escalas, orden de los procesos, conceptos de diseño, inicialización, datos de entrada y submodelos. Se abre en una pestaña nueva.

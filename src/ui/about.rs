@@ -81,6 +81,13 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
                 });
             rects.insert("about_equations", r.header_response.rect);
             section(ui, ts("about-references"));
+            let r = ui
+                .add(
+                    egui::Hyperlink::from_label_and_url(ts("about-odd"), odd_url(page.odd))
+                        .open_in_new_tab(true),
+                )
+                .on_hover_text(ts("about-odd.help"));
+            rects.insert("about_odd", r.rect);
             for reference in page.references {
                 ui.label(egui::RichText::new(ts(reference)).weak());
             }
@@ -90,6 +97,18 @@ pub fn about_window(ctx: &egui::Context, scene: Scene, rects: &mut WidgetRects) 
         rects.insert("about_window", shown.response.rect);
     }
     ctx.data_mut(|d| d.insert_temp(id, open));
+}
+
+/// Where the About window's *Model description (ODD)* link goes: in the browser
+/// the page `odd/<name>.html` that the build makes from the markdown
+/// (`web/odd-pages.sh`) and serves with the app; in the desktop app the markdown
+/// itself, in the project's docs/ folder.
+fn odd_url(odd: &str) -> String {
+    if cfg!(target_arch = "wasm32") {
+        format!("odd/{odd}.html")
+    } else {
+        format!("file://{}/docs/odd-{odd}.md", env!("CARGO_MANIFEST_DIR"))
+    }
 }
 
 fn section(ui: &mut egui::Ui, title: &str) {
@@ -108,6 +127,96 @@ fn bullets(ui: &mut egui::Ui, items: &[&'static str]) {
 
 #[cfg(test)]
 mod tests {
+
+    /// Every scene's About links an ODD description that exists, and every
+    /// docs/odd-*.md has the seven sections of the ODD protocol.
+    #[test]
+    fn every_scene_links_an_odd_with_the_seven_sections() {
+        const SECTIONS: [&str; 7] = [
+            "## 1. Purpose and patterns",
+            "## 2. Entities, state variables and scales",
+            "## 3. Process overview and scheduling",
+            "## 4. Design concepts",
+            "## 5. Initialisation",
+            "## 6. Input data",
+            "## 7. Submodels",
+        ];
+        let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
+        for scene in Scene::ALL {
+            let odd = scene.class().facts().about.odd;
+            let file = docs.join(format!("odd-{odd}.md"));
+            assert!(file.is_file(), "{scene:?} links {file:?}, which is missing");
+            assert!(odd_url(odd).ends_with(&format!("docs/odd-{odd}.md")));
+        }
+        let mut odds = 0;
+        for entry in std::fs::read_dir(&docs).unwrap() {
+            let path = entry.unwrap().path();
+            let name = path.file_name().unwrap().to_string_lossy().to_string();
+            if !(name.starts_with("odd-") && name.ends_with(".md")) {
+                continue;
+            }
+            odds += 1;
+            let text = std::fs::read_to_string(&path).unwrap();
+            let headings: Vec<&str> = text.lines().filter(|l| l.starts_with("## ")).collect();
+            for (k, section) in SECTIONS.iter().enumerate() {
+                let at = headings.iter().position(|h| h == section);
+                assert!(at.is_some(), "{name} lacks the heading {section:?}");
+                if k > 0 {
+                    let before = headings.iter().position(|h| h == &SECTIONS[k - 1]);
+                    assert!(before < at, "{name}: {section:?} comes out of order");
+                }
+            }
+            for concept in [
+                "Basic principles",
+                "Emergence",
+                "Adaptation",
+                "Objectives",
+                "Learning",
+                "Prediction",
+                "Sensing",
+                "Interaction",
+                "Stochasticity",
+                "Collectives",
+                "Observation",
+            ] {
+                assert!(
+                    text.contains(&format!("**{concept}**")),
+                    "{name} lacks the design concept {concept}"
+                );
+            }
+            assert!(!text.contains("../shared"), "{name} names ../shared");
+        }
+        // Each distinct ODD a scene links, and no ODD that no scene links.
+        let linked: std::collections::BTreeSet<_> = Scene::ALL
+            .iter()
+            .map(|s| s.class().facts().about.odd)
+            .collect();
+        assert_eq!(
+            odds,
+            linked.len(),
+            "an ODD in docs/ that no About links, or the reverse"
+        );
+        // The service worker keeps each page for offline use.
+        let sw = std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("web/shoal-sw.js"),
+        )
+        .unwrap();
+        for name in &linked {
+            assert!(
+                sw.contains(&format!("\"odd/{name}.html\"")),
+                "shoal-sw.js does not cache odd/{name}.html"
+            );
+        }
+    }
+
+    /// The link is in the window, under its catalogue name, in both languages.
+    #[test]
+    fn the_odd_link_has_words_in_both_languages() {
+        assert_eq!(ts("about-odd"), "Model description (ODD)");
+        crate::i18n::with_lang(crate::i18n::Lang::Es, || {
+            assert_eq!(ts("about-odd"), "Descripción del modelo (ODD)");
+        });
+    }
     use super::*;
     use crate::i18n::{Lang, has, tr, with_lang};
 

@@ -19,6 +19,9 @@ pub struct About {
     /// equations*: a message and its `.formula` attribute.
     pub equations: &'static [&'static [(&'static str, &'static str)]],
     pub references: &'static [&'static str],
+    /// The model's ODD description (Grimm et al. 2020): `docs/odd-<odd>.md`,
+    /// published as `odd/<odd>.html` and linked under the references.
+    pub odd: &'static str,
 }
 
 impl About {
@@ -113,6 +116,7 @@ pub const AQUARIUM: About = About {
     try_this: &["about-aquarium-try-1", "about-aquarium-try-2"],
     equations: &[STEERING_EQUATIONS],
     references: &[REYNOLDS, LIM_TAN],
+    odd: "schooling",
 };
 
 /// The schooling lab's page.
@@ -132,6 +136,7 @@ pub const SCHOOLING_LAB: About = About {
     ],
     equations: &[STEERING_EQUATIONS, URGE_EQUATIONS, BOIDS_EQUATIONS],
     references: &[LIM_TAN, REYNOLDS, COUZIN, BALLERINI, PITCHER, LANDEAU],
+    odd: "schooling",
 };
 
 /// The physics fish tank's page.
@@ -150,6 +155,7 @@ pub const PHYSICS_FISH: About = About {
     ],
     equations: &[BODY_EQUATIONS],
     references: &[TT_1994, VIDELER],
+    odd: "physics",
 };
 
 /// The reef's page.
@@ -164,6 +170,7 @@ pub const REEF: About = About {
     try_this: &["about-reef-try-1", "about-reef-try-2", "about-reef-try-3"],
     equations: &[MIND_EQUATIONS],
     references: &[TT_1994, LANDEAU],
+    odd: "reef",
 };
 
 /// The learning lab's page.
@@ -178,4 +185,5 @@ pub const LEARNING_LAB: About = About {
     try_this: &["about-learning-try-1", "about-learning-try-2"],
     equations: &[LEARNING_EQUATIONS],
     references: &[TT_1994, KIRKPATRICK],
+    odd: "learning",
 };

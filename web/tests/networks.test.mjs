@@ -83,7 +83,13 @@ for (const tier of TIERS) {
             if (!reg || !reg.active || !navigator.serviceWorker.controller) return false;
             const cache = await caches.open("shoal-app");
             const urls = (await cache.keys()).map((r) => new URL(r.url).pathname);
-            return urls.some((u) => u.endsWith("_bg.wasm")) && urls.includes("/") && urls.includes("/shoal-start.js");
+            const odd = ["/odd/odd.css", "/odd/schooling.html", "/odd/physics.html", "/odd/reef.html", "/odd/learning.html"];
+            return (
+              urls.some((u) => u.endsWith("_bg.wasm")) &&
+              urls.includes("/") &&
+              urls.includes("/shoal-start.js") &&
+              odd.every((u) => urls.includes(u))
+            );
           },
           null,
           { timeout: 120_000, polling: 1000 },
@@ -96,6 +102,13 @@ for (const tier of TIERS) {
         await page.waitForFunction(() => window.shoal && window.shoal.state().steps > 30, null, { timeout: 120_000 });
         assert.equal(await page.evaluate(() => window.shoal.state().lang), "es", "the link's language survives");
         saveArtifact(`networks-${tier}-offline.png`, await page.screenshot());
+        // The About window's ODD page opens offline too, as itself (not the app).
+        const odd = await context.newPage();
+        await odd.goto(`${own.url}odd/reef.html`);
+        assert.match(await odd.$eval("h1", (h) => h.textContent), /the reef/);
+        assert.equal(await odd.$$eval("h2", (hs) => hs.length), 7);
+        assert.notEqual(await odd.$eval("main", (m) => getComputedStyle(m).maxWidth), "none", "its stylesheet came from the cache");
+        await odd.close();
         assert.deepEqual(errors, []);
       } finally {
         await context.close();

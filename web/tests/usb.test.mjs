@@ -46,7 +46,7 @@ describe("Shoal from a USB stick", () => {
 
   test("the zip holds the app, the server and the start scripts, runnable after unzip", () => {
     const zip = entries(path.join(dir, "shoal-usb.zip"));
-    for (const name of ["serve.py", "start.sh", "start.cmd", "README.txt", "shoal/index.html", "shoal/shoal-sw.js"]) {
+    for (const name of ["serve.py", "start.sh", "start.cmd", "README.txt", "shoal/index.html", "shoal/shoal-sw.js", "shoal/odd/reef.html", "shoal/odd/odd.css"]) {
       assert.ok(zip[`shoal-usb/${name}`], `${name} is in the zip`);
     }
     assert.ok(Object.keys(zip).some((n) => n.endsWith(".wasm")), "the WebAssembly module is in the zip");
