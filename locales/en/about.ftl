@@ -132,6 +132,6 @@ about-learning-what = How a fish learns to swim, as in Tu & Terzopoulos: startin
 about-learning-how = A drill sets a goal (swim far, swim at a speed, turn). The fish tries a pattern of muscle moves, measures how well it did, changes the pattern a little and keeps the change if it did better (and, early on, sometimes even if it did worse, so it does not get stuck). Over thousands of tries it finds a rhythm like a real fish's tail beat.
 about-learning-notice-1 = The objective falls quickly at first, then slowly.
 about-learning-notice-2 = The learned moves are rhythmic: two or three main rhythms explain them.
-about-learning-notice-3 = The fish that practised longest usually wins the race.
+about-learning-notice-3 = Practice helps a lot at first and then levels off: in the race, the copies that practised a few thousand tries swim about equally fast.
 about-learning-try-1 = Train with 90 tries per drill, then with 6,840: compare the race.
 about-learning-try-2 = Switch the swimmer between learned and hand-tuned controllers.

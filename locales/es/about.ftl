@@ -133,6 +133,6 @@ about-learning-what = Cómo aprende a nadar un pez, como en Tu y Terzopoulos: em
 about-learning-how = Un ejercicio fija una meta (nadar lejos, nadar a cierta velocidad, girar). El pez prueba un patrón de movimientos de los músculos, mide qué tan bien le fue, cambia un poco el patrón y se queda con el cambio si le fue mejor (y, al principio, a veces aunque le haya ido peor, para no quedarse atascado). A lo largo de miles de intentos encuentra un ritmo como el coletazo de un pez de verdad.
 about-learning-notice-1 = El objetivo baja rápido al principio y después despacio.
 about-learning-notice-2 = Los movimientos aprendidos son rítmicos: dos o tres ritmos principales los explican.
-about-learning-notice-3 = El pez que practicó más tiempo suele ganar la carrera.
+about-learning-notice-3 = La práctica ayuda mucho al principio y después casi deja de mejorar: en la carrera, las copias que practicaron unos miles de intentos nadan casi igual de rápido.
 about-learning-try-1 = Entrena con 90 intentos por ejercicio y luego con 6840: compara la carrera.
 about-learning-try-2 = Cambia al nadador entre controladores aprendidos y ajustados a mano.
