@@ -203,7 +203,10 @@ fn run(
                 let mean_y = f.iter().map(|a| f64::from(a.position_m.y)).sum::<f64>() / n;
                 let var_y = f
                     .iter()
-                    .map(|a| (f64::from(a.position_m.y) - mean_y).powi(2))
+                    .map(|a| {
+                        let dy = f64::from(a.position_m.y) - mean_y;
+                        dy * dy
+                    })
                     .sum::<f64>()
                     / n;
                 let mut level = glam::DVec2::ZERO;
