@@ -9,6 +9,7 @@
 //! cargo run --release --example boid_contrast -- --sizes 20,200 --seeds 31-40 --secs 120
 //! cargo run --release --example boid_contrast -- --mode classic
 //! cargo run --release --example boid_contrast -- --ablate far_field
+//! cargo run --release --example boid_contrast -- --sharks 1 --ablate fear   # a fright's weights
 //! ```
 //!
 //! Windows: 20–60 s and 60–120 s; with `--secs 300`, also 240–300 s. Metrics are
@@ -53,6 +54,12 @@ struct Options {
     wander: Option<f32>,
     vision: Option<f32>,
     k: Option<usize>,
+    /// `--sharks N`: N sharks hunt the school (default 0, the contrast's tank);
+    /// the catches are then printed per preset.
+    sharks: usize,
+    /// `--depth`: also print how much the fish use the tank's height (the
+    /// SIMBA papers' school is flat).
+    depth: bool,
 }
 
 fn parse() -> Options {
@@ -94,6 +101,8 @@ fn parse() -> Options {
         wander: value("--wander").map(|s| s.parse().expect("a number")),
         vision: value("--vision").map(|s| s.parse().expect("a number")),
         k: value("--k").map(|s| s.parse().expect("a number")),
+        depth: args.iter().any(|a| a == "--depth"),
+        sharks: value("--sharks").map_or(0, |s| s.parse().expect("a number")),
         presets: match value("--presets").as_deref() {
             Some("group") => vec!["Group"],
             Some("individual") => vec!["Individual"],
@@ -125,12 +134,21 @@ fn params(preset: &str, mode: ControlMode) -> BoidParams {
     }
 }
 
-/// One run: the mean of each window, and the share of fish-steps with a
-/// neighbour closer than half a body length.
-fn run(fish: usize, seed: u64, p: BoidParams, o: &Options) -> (Vec<Sample>, [f64; 3]) {
+/// One run: the mean of each window, the share of fish-steps with a
+/// neighbour closer than half a body length, the sharks' catches, and (after
+/// 20 s) the mean vertical share of the speed, the mean vertical spread of the
+/// fish (standard deviation of their heights, m) and the polarization of their
+/// level headings alone.
+fn run(
+    fish: usize,
+    seed: u64,
+    p: BoidParams,
+    o: &Options,
+) -> (Vec<Sample>, [f64; 3], u64, [f64; 3]) {
     let mut world = World::new(WorldConfig {
         seed,
         fish_count: fish,
+        sharks: o.sharks,
         ..WorldConfig::default()
     });
     let mut p = p;
@@ -156,6 +174,7 @@ fn run(fish: usize, seed: u64, p: BoidParams, o: &Options) -> (Vec<Sample>, [f64
     let mut sums = vec![Sample::default(); WINDOWS.len()];
     let mut counts = vec![0.0; WINDOWS.len()];
     let (mut close, mut fish_samples, mut at_edge, mut in_zone) = (0u64, 0u64, 0u64, 0u64);
+    let (mut vertical, mut spread, mut level_pol, mut snapshots) = (0.0, 0.0, 0.0, 0.0);
     for step in 1..=steps {
         world.step();
         if step % 15 != 0 {
@@ -179,6 +198,27 @@ fn run(fish: usize, seed: u64, p: BoidParams, o: &Options) -> (Vec<Sample>, [f64
         if t > 20.0 && step % 60 == 0 {
             let f = world.fish();
             let tank = *world.tank();
+            if o.depth && !f.is_empty() {
+                let n = f.len() as f64;
+                let mean_y = f.iter().map(|a| f64::from(a.position_m.y)).sum::<f64>() / n;
+                let var_y = f
+                    .iter()
+                    .map(|a| {
+                        let dy = f64::from(a.position_m.y) - mean_y;
+                        dy * dy
+                    })
+                    .sum::<f64>()
+                    / n;
+                let mut level = glam::DVec2::ZERO;
+                for a in f {
+                    let v = a.velocity_m_per_s.as_dvec3();
+                    vertical += v.y.abs() / v.length().max(1e-9) / n;
+                    level += glam::DVec2::new(v.x, v.z).normalize_or_zero() / n;
+                }
+                spread += var_y.sqrt();
+                level_pol += level.length();
+                snapshots += 1.0;
+            }
             for (i, a) in f.iter().enumerate() {
                 let p = a.position_m;
                 let gap_m = (p - tank.min_m).min(tank.max_m - p).min_element();
@@ -204,7 +244,13 @@ fn run(fish: usize, seed: u64, p: BoidParams, o: &Options) -> (Vec<Sample>, [f64
         })
         .collect();
     let pct = |n: u64| n as f64 * 100.0 / fish_samples.max(1) as f64;
-    (means, [pct(close), pct(at_edge), pct(in_zone)])
+    let per = |x: f64| x / f64::max(snapshots, 1.0);
+    (
+        means,
+        [pct(close), pct(at_edge), pct(in_zone)],
+        world.catches(),
+        [per(vertical), per(spread), per(level_pol)],
+    )
 }
 
 fn main() {
@@ -237,7 +283,8 @@ fn main() {
                 p.perception.vision_distance_m = v;
             }
             let jobs: Vec<u64> = o.seeds.clone();
-            let results: Vec<(u64, Vec<Sample>, [f64; 3])> = thread::scope(|scope| {
+            type Run = (u64, Vec<Sample>, [f64; 3], u64, [f64; 3]);
+            let results: Vec<Run> = thread::scope(|scope| {
                 let chunks: Vec<Vec<u64>> = (0..o.threads)
                     .map(|t| jobs.iter().skip(t).step_by(o.threads).copied().collect())
                     .collect();
@@ -249,8 +296,8 @@ fn main() {
                             chunk
                                 .into_iter()
                                 .map(|seed| {
-                                    let (s, c) = run(fish, seed, p, o);
-                                    (seed, s, c)
+                                    let (s, c, caught, d) = run(fish, seed, p, o);
+                                    (seed, s, c, caught, d)
                                 })
                                 .collect::<Vec<_>>()
                         })
@@ -269,7 +316,7 @@ fn main() {
                 let mut mean = Sample::default();
                 let mut worst = (f64::NAN, 0u64);
                 let mut most_groups = 0.0f64;
-                for (seed, s, _) in &results {
+                for (seed, s, ..) in &results {
                     mean.add(&s[w], 1.0 / k);
                     let bad = if preset == "Individual" {
                         s[w].polarization > worst.0 || worst.0.is_nan()
@@ -296,6 +343,23 @@ fn main() {
                     close,
                     edge,
                     zone
+                );
+            }
+            if o.depth {
+                let d = |m: usize| results.iter().map(|r| r.4[m]).sum::<f64>() / k;
+                println!(
+                    "| {fish} | {preset} | after 20 s | vertical share of speed {:.3} | height spread {:.2} m | level-heading polarization {:.2} |",
+                    d(0),
+                    d(1),
+                    d(2)
+                );
+            }
+            if o.sharks > 0 {
+                let caught: Vec<u64> = results.iter().map(|r| r.3).collect();
+                println!(
+                    "| {fish} | {preset} | catches in {} s, per seed | {caught:?} (mean {:.1}) |",
+                    o.secs,
+                    caught.iter().sum::<u64>() as f64 / k
                 );
             }
         }

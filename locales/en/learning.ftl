@@ -46,6 +46,7 @@ learning-race-racer = racer
 learning-race-practice = practice (tries)
 learning-race-distance = distance
 learning-race-metres = { $distance } m
+learning-race-what = After a few thousand tries the copies swim about equally fast. The race shows that the first minutes of practice matter most and then the gains level off, so the copy that practised longest does not always win.
 
 ## The plots.
 learning-objective-caption = How well it swims (E, lower is better)

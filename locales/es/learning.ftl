@@ -49,6 +49,7 @@ learning-race-racer = competidor
 learning-race-practice = práctica (intentos)
 learning-race-distance = distancia
 learning-race-metres = { $distance } m
+learning-race-what = Después de unos miles de intentos, las copias nadan casi igual de rápido. La carrera muestra que los primeros minutos de práctica son los que más cuentan y que después la mejora casi se detiene; por eso la copia que practicó más no siempre gana.
 
 ## Las gráficas.
 learning-objective-caption = Qué tan bien nada (E, menor es mejor)

@@ -276,6 +276,9 @@ fn progress_ui(ui: &mut egui::Ui, lab: &LearningLab, rects: &mut WidgetRects) {
                             ui.end_row();
                         }
                     });
+                // What the race shows (and does not): the paper's Fig. 7 has the
+                // longest-trained shark win; ours levels off after a few thousand tries.
+                ui.add(egui::Label::new(ts("learning-race-what")).wrap());
             })
             .response;
         rects.insert("learning_race_result", r.rect);
@@ -711,6 +714,12 @@ mod tests {
             }
             .to_string();
             assert!(race.contains("recocido simulado"), "{race}");
+            // The race window says plainly that the copies end about level.
+            let what = ts("learning-race-what");
+            assert!(
+                what.contains("casi igual de rápido") && what.contains("no siempre gana"),
+                "{what}"
+            );
             let glass = ObstacleError::NearTheGlass {
                 x_m: 1.5,
                 z_m: -2.25,
@@ -726,6 +735,11 @@ mod tests {
             );
         });
         // English stays the default, as the automation API's scripts read it.
+        let what = ts("learning-race-what");
+        assert!(
+            what.contains("about equally fast") && what.contains("does not always win"),
+            "{what}"
+        );
         assert_eq!(
             LabError::LearningLabOnly("train").to_string(),
             "train() works in the learning lab only"
