@@ -77,6 +77,23 @@ pub struct ReefAnimal {
     drive: Drive,
 }
 
+/// One animal's memory of another (a predator, a courting partner): what it
+/// sees now, kept for `memory_secs`; out of view, what it last saw, for
+/// `dt_secs` less each step, then forgotten.
+fn remember<T>(
+    kept: Option<(u32, T, f32)>,
+    sighted: Option<(u32, T)>,
+    memory_secs: f32,
+    dt_secs: f32,
+) -> Option<(u32, T, f32)> {
+    match sighted {
+        Some((j, looks)) => Some((j, looks, memory_secs)),
+        None => kept
+            .map(|(j, looks, left)| (j, looks, left - dt_secs))
+            .filter(|k| k.2 > 0.0),
+    }
+}
+
 /// An animal of `kind` numbered `index`: "shark 3", "fish 7", "pacifist 2",
 /// in the language in force.
 pub fn animal_name(kind: FishKind, index: usize) -> String {
@@ -208,20 +225,9 @@ impl ReefAnimal {
     /// generator choose this step's focus. Returns the focus before.
     pub(super) fn think(&mut self, inputs: MindInputs) -> Focus {
         let dt = inputs.dt_secs;
-        self.last_threat = match inputs.sighted {
-            Some((j, at)) => Some((j, at, inputs.threat_memory_secs)),
-            None => self
-                .last_threat
-                .map(|(j, at, left)| (j, at, left - dt))
-                .filter(|t| t.2 > 0.0),
-        };
-        self.last_mate = match inputs.mate_sighted {
-            Some((j, looks)) => Some((j, looks, inputs.threat_memory_secs)),
-            None => self
-                .last_mate
-                .map(|(j, looks, left)| (j, looks, left - dt))
-                .filter(|m| m.2 > 0.0),
-        };
+        let memory = inputs.threat_memory_secs;
+        self.last_threat = remember(self.last_threat, inputs.sighted, memory, dt);
+        self.last_mate = remember(self.last_mate, inputs.mate_sighted, memory, dt);
         self.temperature_c = inputs.env.temperature_c_at(self.body.position_m());
         self.mental
             .update(&self.habits.mental, dt, inputs.predator_distances);
