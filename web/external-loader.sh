@@ -1,5 +1,5 @@
 #!/bin/sh
-# Trunk post-build hook (Trunk.toml): moves the loader that Trunk writes inline
+# Trunk post-build hook (run by web/post-build.sh): moves the loader that Trunk writes inline
 # into index.html (`<script type="module">import init … </script>`) into a file of
 # its own, shoal-start.js, loaded with `src`. A school's Content Security Policy
 # (`script-src 'self' 'wasm-unsafe-eval'`) refuses inline scripts, and Trunk 0.21

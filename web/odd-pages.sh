@@ -1,5 +1,5 @@
 #!/bin/sh
-# Trunk post-build hook (Trunk.toml): the ODD descriptions docs/odd-*.md become
+# Trunk post-build hook (run by web/post-build.sh): the ODD descriptions docs/odd-*.md become
 # static pages dist/odd/<scene>.html with web/odd-page.css, linked from each
 # scene's About window. tools/odd-pages is a small native program (pulldown-cmark)
 # in a package of its own; cargo builds it here the first time (seconds), so a

@@ -119,6 +119,7 @@ impl ShoalApp {
             render_state.adapter.get_info().backend,
             caps.msaa_samples
         );
+        crate::ui::fonts::install(&cc.egui_ctx);
         crate::ui::seeing::install(&cc.egui_ctx);
         let mut lab = Lab::new(settings);
         lab.set_frame_budget(Some(crate::lab::INTERACTIVE_FRAME_BUDGET_SECS));

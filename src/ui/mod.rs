@@ -16,6 +16,7 @@ mod experiment_panel;
 mod experiment_plot;
 mod files;
 pub mod focus_view;
+pub mod fonts;
 mod investigation_panel;
 mod investigation_plot;
 pub mod language;

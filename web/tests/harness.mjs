@@ -23,9 +23,13 @@ const MIME = {
   ".json": "application/json",
 };
 
-/** Serves dist/ on a free loopback port, with `headers` on every answer (a
- * school's Content-Security-Policy, say). */
-export async function serveDist({ headers = {} } = {}) {
+/**
+ * Serves dist/ on a free loopback port, with `headers` on every answer (a school's
+ * Content-Security-Policy, say). With `precompressed`,
+ * a request that accepts brotli gets the build's `.br` copy (tools/web-finish)
+ * with `Content-Encoding: br`, as nginx's `brotli_static` sends it.
+ */
+export async function serveDist({ headers = {}, precompressed = false } = {}) {
   if (!fs.existsSync(path.join(distDir, "index.html"))) {
     throw new Error("dist/index.html is missing: build the web app first (trunk build --release)");
   }
@@ -37,12 +41,15 @@ export async function serveDist({ headers = {} } = {}) {
       return;
     }
     if (fs.existsSync(file) && fs.statSync(file).isDirectory()) file = path.join(file, "index.html");
-    fs.readFile(file, (err, data) => {
+    const type = MIME[path.extname(file)] || "application/octet-stream";
+    const brotli = precompressed && /\bbr\b/.test(req.headers["accept-encoding"] || "") && fs.existsSync(`${file}.br`);
+    fs.readFile(brotli ? `${file}.br` : file, (err, data) => {
       if (err) {
         res.writeHead(404).end("not found");
         return;
       }
-      res.writeHead(200, { "Content-Type": MIME[path.extname(file)] || "application/octet-stream", ...headers });
+      const encoding = brotli ? { "Content-Encoding": "br", Vary: "Accept-Encoding" } : {};
+      res.writeHead(200, { "Content-Type": type, ...encoding, ...headers });
       res.end(data);
     });
   });

@@ -38,6 +38,10 @@ def main():
             add(zf, os.path.join(HERE, name), f"{TOP}/{name}", executable)
         for root, _dirs, files in sorted(os.walk(dist)):
             for name in sorted(files):
+                # The precompressed copies (tools/web-finish) are for web servers;
+                # the stick's local server sends the files themselves.
+                if name.endswith((".br", ".gz")):
+                    continue
                 path = os.path.join(root, name)
                 rel = os.path.relpath(path, dist).replace(os.sep, "/")
                 add(zf, path, f"{TOP}/shoal/{rel}", False)
