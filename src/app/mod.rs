@@ -322,6 +322,10 @@ impl eframe::App for ShoalApp {
         self.background_secs = started.elapsed().as_secs_f64();
         self.fps_meter.record(now_secs, 1);
         self.frames_drawn += 1;
+        #[cfg(target_arch = "wasm32")]
+        if self.frames_drawn == 1 {
+            crate::web::page::mark_first_frame();
+        }
 
         self.choose_screen_layout();
         let status = self.state_report();

@@ -3,7 +3,7 @@
 
 mod a11y_dom;
 mod api;
-mod page;
+pub(crate) mod page;
 mod recover;
 
 use crate::ShoalApp;

@@ -71,6 +71,18 @@ pub fn media_matches(query: &str) -> bool {
         .is_some_and(|list| list.matches())
 }
 
+/// Marks the page's timeline when the app's first frame is drawn
+/// (`performance.getEntriesByName("shoal-first-frame")`): the benchmark's time from
+/// navigation to the first frame (web/tests/bench.mjs).
+pub fn mark_first_frame() {
+    let mark = "shoal-first-frame"; // words: a performance mark's name, never shown
+    if let Some(performance) = web_sys::window().and_then(|w| w.performance())
+        && let Err(err) = performance.mark(mark)
+    {
+        log::warn!("performance.mark failed: {err:?}");
+    }
+}
+
 /// Hides the loading notice once the app runs.
 pub fn hide_notice() {
     if let Some(notice) = document().and_then(|d| d.get_element_by_id("shoal_notice")) {

@@ -1,6 +1,7 @@
 // In-browser benchmark on both tiers: opens Shoal with ?bench, waits for the app's
 // table (simulation steps/s, fish-steps/s, frame time) and the page's wasm size, and
-// prints them. Not a test: it asserts nothing. Run with `./dev bench`.
+// prints them, with the time from navigation to the first drawn frame (cold and
+// cached). Not a test: it asserts nothing. Run with `./dev bench`.
 import fs from "node:fs";
 import path from "node:path";
 import zlib from "node:zlib";
@@ -13,11 +14,38 @@ if (wasm) {
   console.log(`wasm (dist/${wasm}): ${(bytes.length / 1048576).toFixed(2)} MiB raw, ${(gz / 1048576).toFixed(2)} MiB gzipped`);
 }
 
+/**
+ * Milliseconds from navigation to the app's first drawn frame (the page's
+ * `shoal-first-frame` performance mark), on a fresh page in `context`.
+ */
+async function firstFrameMs(context, url) {
+  const page = await context.newPage();
+  try {
+    await page.goto(url);
+    await page.waitForFunction(() => performance.getEntriesByName("shoal-first-frame").length > 0, null, {
+      timeout: 120_000,
+    });
+    return await page.evaluate(() => performance.getEntriesByName("shoal-first-frame")[0].startTime);
+  } finally {
+    await page.close();
+  }
+}
+
+// `node web/tests/bench.mjs --first-frame`: only the first-frame figures.
+const firstFrameOnly = process.argv.includes("--first-frame");
 const server = await serveDist();
 try {
   for (const tier of ["webgl2", "webgpu"]) {
     const browser = await launch(tier);
     try {
+      // First frame at 1280 × 800: a cold cache (a new browser profile), then the
+      // same page again with the files cached (the service worker's second visit).
+      const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+      const cold = await firstFrameMs(context, server.url);
+      const warm = await firstFrameMs(context, server.url);
+      await context.close();
+      console.log(`\nfirst frame, ${tier} (navigation → first drawn frame, 1280 × 800): ${cold.toFixed(0)} ms cold cache, ${warm.toFixed(0)} ms cached (goal: ≤ 2,000 ms)`);
+      if (firstFrameOnly) continue;
       const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
       await page.goto(server.url + "?bench");
       await page.waitForFunction(() => window.shoal?.state().bench?.done, null, { timeout: 900_000 });
