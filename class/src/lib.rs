@@ -237,7 +237,7 @@ async fn connection(state: AppState, mut socket: WebSocket) {
         }
         if text.len() > MAX_MESSAGE_BYTES {
             let e = ServerError::new(ErrorCode::TooLarge, &format!("a message may be at most {MAX_MESSAGE_BYTES} bytes"));
-            if !send(&mut socket, e.to_json(None)).await { return }
+            if !send(&mut socket, e.to_json(protocol::peek_id(&text).as_deref())).await { return }
             continue;
         }
         let message: ClientMessage = match protocol::parse_message(&text) {
