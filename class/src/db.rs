@@ -2,7 +2,7 @@
 //! sqlx's `Any` driver. Every query is runtime-checked and uses `$n` parameters,
 //! which both backends accept.
 
-use sqlx::any::{AnyPoolOptions, install_default_drivers};
+use sqlx::any::{install_default_drivers, AnyPoolOptions};
 use sqlx::{AnyPool, Executor};
 
 /// Opens (creating a SQLite file if needed) and migrates the database at `url`.

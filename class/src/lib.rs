@@ -14,7 +14,7 @@ use std::time::{Duration, Instant};
 
 use axum::extract::ws::{Message, WebSocket, WebSocketUpgrade};
 use axum::extract::{Path, State};
-use axum::http::{HeaderMap, HeaderValue, StatusCode, header};
+use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
 use axum::{Json, Router};
@@ -24,7 +24,7 @@ use tokio::sync::broadcast;
 use tower_http::services::{ServeDir, ServeFile};
 use tower_http::set_header::SetResponseHeaderLayer;
 
-use protocol::{ClientMessage, ErrorCode, MAX_MESSAGE_BYTES, ServerError};
+use protocol::{ClientMessage, ErrorCode, ServerError, MAX_MESSAGE_BYTES};
 
 /// The Content-Security-Policy of every response.
 pub const CSP: &str = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; connect-src 'self'; img-src 'self' data: blob:; style-src 'self' 'unsafe-inline'; object-src 'none'; base-uri 'none'; frame-ancestors 'none'";
@@ -42,7 +42,11 @@ pub struct Config {
 
 impl Default for Config {
     fn default() -> Self {
-        Config { dist: PathBuf::from("dist"), burst: 30.0, per_second: 10.0 }
+        Config {
+            dist: PathBuf::from("dist"),
+            burst: 30.0,
+            per_second: 10.0,
+        }
     }
 }
 
@@ -58,7 +62,9 @@ impl AppState {
     fn hub(&self, code: &str) -> broadcast::Sender<()> {
         let mut hubs = self.hubs.lock().unwrap_or_else(|e| e.into_inner());
         hubs.retain(|_, tx| tx.receiver_count() > 0);
-        hubs.entry(code.to_owned()).or_insert_with(|| broadcast::channel(16).0).clone()
+        hubs.entry(code.to_owned())
+            .or_insert_with(|| broadcast::channel(16).0)
+            .clone()
     }
 
     fn changed(&self, code: &str) {
@@ -69,7 +75,11 @@ impl AppState {
 /// The whole application (API, WebSocket, static files, headers).
 pub fn app(pool: AnyPool, config: Config) -> Router {
     let dist = config.dist.clone();
-    let state = AppState { pool, config: Arc::new(config), hubs: Arc::default() };
+    let state = AppState {
+        pool,
+        config: Arc::new(config),
+        hubs: Arc::default(),
+    };
     let statics = ServeDir::new(&dist).fallback(ServeFile::new(dist.join("index.html")));
     Router::new()
         .route("/api/classes", post(start_class))
@@ -104,7 +114,11 @@ fn error_response(status: StatusCode, err: ServerError) -> Response {
 }
 
 fn bearer(headers: &HeaderMap) -> Option<&str> {
-    headers.get(header::AUTHORIZATION)?.to_str().ok()?.strip_prefix("Bearer ")
+    headers
+        .get(header::AUTHORIZATION)?
+        .to_str()
+        .ok()?
+        .strip_prefix("Bearer ")
 }
 
 async fn start_class(State(state): State<AppState>, body: axum::body::Bytes) -> Response {
@@ -118,19 +132,30 @@ async fn start_class(State(state): State<AppState>, body: axum::body::Bytes) -> 
     }
 }
 
-async fn authorised_teacher(state: &AppState, code: &str, headers: &HeaderMap) -> Result<(), Response> {
+async fn authorised_teacher(
+    state: &AppState,
+    code: &str,
+    headers: &HeaderMap,
+) -> Result<(), Response> {
     let token = bearer(headers).unwrap_or("");
     match store::check_teacher(&state.pool, code, token).await {
         Ok(true) => Ok(()),
         Ok(false) => Err(error_response(
             StatusCode::FORBIDDEN,
-            ServerError::new(ErrorCode::Forbidden, "no class with that code and teacher token"),
+            ServerError::new(
+                ErrorCode::Forbidden,
+                "no class with that code and teacher token",
+            ),
         )),
         Err(e) => Err(error_response(StatusCode::INTERNAL_SERVER_ERROR, e)),
     }
 }
 
-async fn class_csv(State(state): State<AppState>, Path(code): Path<String>, headers: HeaderMap) -> Response {
+async fn class_csv(
+    State(state): State<AppState>,
+    Path(code): Path<String>,
+    headers: HeaderMap,
+) -> Response {
     if let Err(r) = authorised_teacher(&state, &code, &headers).await {
         return r;
     }
@@ -140,7 +165,11 @@ async fn class_csv(State(state): State<AppState>, Path(code): Path<String>, head
     }
 }
 
-async fn delete_class(State(state): State<AppState>, Path(code): Path<String>, headers: HeaderMap) -> Response {
+async fn delete_class(
+    State(state): State<AppState>,
+    Path(code): Path<String>,
+    headers: HeaderMap,
+) -> Response {
     if let Err(r) = authorised_teacher(&state, &code, &headers).await {
         return r;
     }
@@ -156,7 +185,8 @@ async fn delete_class(State(state): State<AppState>, Path(code): Path<String>, h
 async fn ws_upgrade(State(state): State<AppState>, ws: WebSocketUpgrade) -> Response {
     // The socket accepts a little more than the limit so that an oversized
     // message gets a clear error instead of a dropped connection.
-    ws.max_message_size(4 * MAX_MESSAGE_BYTES).on_upgrade(move |socket| connection(state, socket))
+    ws.max_message_size(4 * MAX_MESSAGE_BYTES)
+        .on_upgrade(move |socket| connection(state, socket))
 }
 
 /// Who is at the other end of a connection, once it has said hello.
@@ -177,7 +207,8 @@ struct Bucket {
 impl Bucket {
     fn take(&mut self) -> bool {
         let now = Instant::now();
-        self.tokens = (self.tokens + now.duration_since(self.last).as_secs_f64() * self.per_second).min(self.burst);
+        self.tokens = (self.tokens + now.duration_since(self.last).as_secs_f64() * self.per_second)
+            .min(self.burst);
         self.last = now;
         if self.tokens >= 1.0 {
             self.tokens -= 1.0;
@@ -189,7 +220,10 @@ impl Bucket {
 }
 
 async fn send(socket: &mut WebSocket, value: serde_json::Value) -> bool {
-    socket.send(Message::Text(value.to_string().into())).await.is_ok()
+    socket
+        .send(Message::Text(value.to_string().into()))
+        .await
+        .is_ok()
 }
 
 async fn connection(state: AppState, mut socket: WebSocket) {
@@ -224,26 +258,40 @@ async fn connection(state: AppState, mut socket: WebSocket) {
             Some(Ok(Message::Text(t))) => t,
             Some(Ok(Message::Binary(_))) => {
                 let e = ServerError::new(ErrorCode::Invalid, "messages are JSON text");
-                if !send(&mut socket, e.to_json(None)).await { return }
+                if !send(&mut socket, e.to_json(None)).await {
+                    return;
+                }
                 continue;
             }
             Some(Ok(Message::Close(_))) | None | Some(Err(_)) => return,
             Some(Ok(_)) => continue,
         };
         if !bucket.take() {
-            let e = ServerError::new(ErrorCode::RateLimited, "too many messages; slow down and resend");
-            if !send(&mut socket, e.to_json(protocol::peek_id(&text).as_deref())).await { return }
+            let e = ServerError::new(
+                ErrorCode::RateLimited,
+                "too many messages; slow down and resend",
+            );
+            if !send(&mut socket, e.to_json(protocol::peek_id(&text).as_deref())).await {
+                return;
+            }
             continue;
         }
         if text.len() > MAX_MESSAGE_BYTES {
-            let e = ServerError::new(ErrorCode::TooLarge, &format!("a message may be at most {MAX_MESSAGE_BYTES} bytes"));
-            if !send(&mut socket, e.to_json(protocol::peek_id(&text).as_deref())).await { return }
+            let e = ServerError::new(
+                ErrorCode::TooLarge,
+                &format!("a message may be at most {MAX_MESSAGE_BYTES} bytes"),
+            );
+            if !send(&mut socket, e.to_json(protocol::peek_id(&text).as_deref())).await {
+                return;
+            }
             continue;
         }
         let message: ClientMessage = match protocol::parse_message(&text) {
             Ok(m) => m,
             Err(e) => {
-                if !send(&mut socket, e.to_json(protocol::peek_id(&text).as_deref())).await { return }
+                if !send(&mut socket, e.to_json(protocol::peek_id(&text).as_deref())).await {
+                    return;
+                }
                 continue;
             }
         };
@@ -251,19 +299,31 @@ async fn connection(state: AppState, mut socket: WebSocket) {
         let outcome = handle(&state, &mut role, message).await;
         match outcome {
             Ok(reply) => {
-                if !send(&mut socket, reply).await { return }
+                if !send(&mut socket, reply).await {
+                    return;
+                }
                 if let Some(r) = &role {
                     if changes.is_none() {
                         changes = Some(state.hub(r.code()).subscribe());
                     }
                     match store::view(&state.pool, r).await {
-                        Ok(v) => if !send(&mut socket, v).await { return },
-                        Err(e) => if !send(&mut socket, e.to_json(None)).await { return },
+                        Ok(v) => {
+                            if !send(&mut socket, v).await {
+                                return;
+                            }
+                        }
+                        Err(e) => {
+                            if !send(&mut socket, e.to_json(None)).await {
+                                return;
+                            }
+                        }
                     }
                 }
             }
             Err(e) => {
-                if !send(&mut socket, e.to_json(Some(&id))).await { return }
+                if !send(&mut socket, e.to_json(Some(&id))).await {
+                    return;
+                }
             }
         }
     }
@@ -277,32 +337,65 @@ impl Role {
     }
 }
 
-async fn handle(state: &AppState, role: &mut Option<Role>, message: ClientMessage) -> Result<serde_json::Value, ServerError> {
+async fn handle(
+    state: &AppState,
+    role: &mut Option<Role>,
+    message: ClientMessage,
+) -> Result<serde_json::Value, ServerError> {
     use protocol::Body;
     match (&*role, &message.body) {
         (None, Body::Join { code, nickname }) => {
             let joined = store::join(&state.pool, code, nickname).await?;
-            *role = Some(Role::Student { code: code.clone(), id: joined.student_id.clone() });
+            *role = Some(Role::Student {
+                code: code.clone(),
+                id: joined.student_id.clone(),
+            });
             state.changed(code);
-            Ok(json!({"v": 1, "type": "joined", "re": message.id, "student_token": joined.token,
-                      "join_order": joined.join_order, "seed": joined.seed, "setup": joined.setup}))
+            Ok(
+                json!({"v": 1, "type": "joined", "re": message.id, "student_token": joined.token,
+                      "join_order": joined.join_order, "seed": joined.seed, "setup": joined.setup}),
+            )
         }
-        (None, Body::Resume { code, student_token }) => {
+        (
+            None,
+            Body::Resume {
+                code,
+                student_token,
+            },
+        ) => {
             let id = store::resume(&state.pool, code, student_token).await?;
-            *role = Some(Role::Student { code: code.clone(), id });
+            *role = Some(Role::Student {
+                code: code.clone(),
+                id,
+            });
             Ok(json!({"v": 1, "type": "ack", "re": message.id}))
         }
-        (None, Body::Teacher { code, teacher_token }) => {
+        (
+            None,
+            Body::Teacher {
+                code,
+                teacher_token,
+            },
+        ) => {
             if !store::check_teacher(&state.pool, code, teacher_token).await? {
-                return Err(ServerError::new(ErrorCode::Forbidden, "no class with that code and teacher token"));
+                return Err(ServerError::new(
+                    ErrorCode::Forbidden,
+                    "no class with that code and teacher token",
+                ));
             }
             *role = Some(Role::Teacher { code: code.clone() });
             Ok(json!({"v": 1, "type": "ack", "re": message.id}))
         }
         (Some(_), Body::Join { .. } | Body::Resume { .. } | Body::Teacher { .. }) => {
-            Err(ServerError::new(ErrorCode::Invalid, "this connection has already said who it is"))
+            Err(ServerError::new(
+                ErrorCode::Invalid,
+                "this connection has already said who it is",
+            ))
         }
-        (None, _) => Err(ServerError::new(ErrorCode::Forbidden, "say join, resume or teacher first")),
+        (None, _) => Err(ServerError::new(
+            ErrorCode::Forbidden,
+            "say join, resume or teacher first",
+        )),
         (Some(r), body) => {
             let r = r.clone();
             let reply = store::apply(&state.pool, &r, &message.id, body).await?;

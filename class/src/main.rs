@@ -37,7 +37,13 @@ async fn main() {
         }
     };
     tokio::spawn(shoal_class::retention_task(pool.clone(), args.keep_days));
-    let app = shoal_class::app(pool, shoal_class::Config { dist: args.dist, ..Default::default() });
+    let app = shoal_class::app(
+        pool,
+        shoal_class::Config {
+            dist: args.dist,
+            ..Default::default()
+        },
+    );
     let addr = SocketAddr::new(args.address, args.port);
     let listener = match tokio::net::TcpListener::bind(addr).await {
         Ok(l) => l,
@@ -46,7 +52,10 @@ async fn main() {
             std::process::exit(1);
         }
     };
-    eprintln!("shoal-class: serving on http://{addr} (classes kept {} days)", args.keep_days);
+    eprintln!(
+        "shoal-class: serving on http://{addr} (classes kept {} days)",
+        args.keep_days
+    );
     if let Err(e) = axum::serve(listener, app).await {
         eprintln!("shoal-class: {e}");
         std::process::exit(1);

@@ -5,7 +5,7 @@
 use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
-use serde_json::{Value, json};
+use serde_json::{json, Value};
 
 /// The protocol version this server speaks.
 pub const VERSION: u64 = 1;
@@ -44,7 +44,10 @@ pub struct ServerError {
 
 impl ServerError {
     pub fn new(code: ErrorCode, message: &str) -> Self {
-        ServerError { code, message: message.to_owned() }
+        ServerError {
+            code,
+            message: message.to_owned(),
+        }
     }
 
     pub fn to_json(&self, re: Option<&str>) -> Value {
@@ -55,7 +58,10 @@ impl ServerError {
 impl From<sqlx::Error> for ServerError {
     fn from(e: sqlx::Error) -> Self {
         eprintln!("shoal-class: database error: {e}");
-        ServerError::new(ErrorCode::Internal, "the server could not store this; resend it later")
+        ServerError::new(
+            ErrorCode::Internal,
+            "the server could not store this; resend it later",
+        )
     }
 }
 
@@ -79,21 +85,49 @@ pub struct ClientMessage {
 #[serde(tag = "type", rename_all = "snake_case")]
 pub enum Body {
     // Hello (the first message of a connection).
-    Join { code: String, nickname: String },
-    Resume { code: String, student_token: String },
-    Teacher { code: String, teacher_token: String },
+    Join {
+        code: String,
+        nickname: String,
+    },
+    Resume {
+        code: String,
+        student_token: String,
+    },
+    Teacher {
+        code: String,
+        teacher_token: String,
+    },
     // Student.
-    Step { step: String },
-    Predict { prediction: String },
-    Result { levels: BTreeMap<String, f64>, values: BTreeMap<String, f64> },
-    Explain { answer: String },
+    Step {
+        step: String,
+    },
+    Predict {
+        prediction: String,
+    },
+    Result {
+        levels: BTreeMap<String, f64>,
+        values: BTreeMap<String, f64>,
+    },
+    Explain {
+        answer: String,
+    },
     // Teacher.
-    Hold { step: Option<String> },
+    Hold {
+        step: Option<String>,
+    },
     Release {},
-    Pause { paused: bool },
-    SendSetting { setting: Value },
-    Reveal { revealed: bool },
-    Anonymise { on: bool },
+    Pause {
+        paused: bool,
+    },
+    SendSetting {
+        setting: Value,
+    },
+    Reveal {
+        revealed: bool,
+    },
+    Anonymise {
+        on: bool,
+    },
     DeleteClass {},
 }
 
@@ -118,7 +152,10 @@ fn invalid(message: &str) -> ServerError {
 
 pub fn parse_json<T: for<'de> Deserialize<'de>>(bytes: &[u8]) -> Result<T, ServerError> {
     if bytes.len() > MAX_MESSAGE_BYTES {
-        return Err(ServerError::new(ErrorCode::TooLarge, "the request is too large"));
+        return Err(ServerError::new(
+            ErrorCode::TooLarge,
+            "the request is too large",
+        ));
     }
     serde_json::from_slice(bytes).map_err(|e| invalid(&format!("not a valid message: {e}")))
 }
@@ -146,13 +183,20 @@ fn check_text(what: &str, text: &str, max: usize, allow_empty: bool) -> Result<(
 
 fn check_numbers(what: &str, map: &BTreeMap<String, f64>) -> Result<(), ServerError> {
     if map.len() > MAX_NAMES {
-        return Err(invalid(&format!("{what} may have at most {MAX_NAMES} entries")));
+        return Err(invalid(&format!(
+            "{what} may have at most {MAX_NAMES} entries"
+        )));
     }
     for (name, value) in map {
-        if name.is_empty() || name.chars().count() > MAX_NAME_CHARS
-            || !name.chars().all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '.' | '-'))
+        if name.is_empty()
+            || name.chars().count() > MAX_NAME_CHARS
+            || !name
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '.' | '-'))
         {
-            return Err(invalid(&format!("{what}: names are 1 to {MAX_NAME_CHARS} of a-z, 0-9, _ . -")));
+            return Err(invalid(&format!(
+                "{what}: names are 1 to {MAX_NAME_CHARS} of a-z, 0-9, _ . -"
+            )));
         }
         if !value.is_finite() {
             return Err(invalid(&format!("{what}: {name} is not a finite number")));
@@ -167,8 +211,11 @@ pub fn parse_message(text: &str) -> Result<ClientMessage, ServerError> {
     if m.v != VERSION {
         return Err(invalid("this server speaks protocol version 1"));
     }
-    if m.id.is_empty() || m.id.chars().count() > MAX_ID_CHARS || m.id.chars().any(char::is_control) {
-        return Err(invalid(&format!("id must be 1 to {MAX_ID_CHARS} characters")));
+    if m.id.is_empty() || m.id.chars().count() > MAX_ID_CHARS || m.id.chars().any(char::is_control)
+    {
+        return Err(invalid(&format!(
+            "id must be 1 to {MAX_ID_CHARS} characters"
+        )));
     }
     match &m.body {
         Body::Join { code, nickname } => {
@@ -178,13 +225,22 @@ pub fn parse_message(text: &str) -> Result<ClientMessage, ServerError> {
                 return Err(invalid("nickname is one line"));
             }
         }
-        Body::Resume { code, student_token: t } | Body::Teacher { code, teacher_token: t } => {
+        Body::Resume {
+            code,
+            student_token: t,
+        }
+        | Body::Teacher {
+            code,
+            teacher_token: t,
+        } => {
             check_text("code", code, 16, false)?;
             check_text("token", t, 128, false)?;
         }
         Body::Step { step } => check_step(step)?,
         Body::Hold { step: Some(step) } => check_step(step)?,
-        Body::Predict { prediction } => check_text("prediction", prediction, MAX_PREDICTION_CHARS, false)?,
+        Body::Predict { prediction } => {
+            check_text("prediction", prediction, MAX_PREDICTION_CHARS, false)?
+        }
         Body::Result { levels, values } => {
             check_numbers("levels", levels)?;
             check_numbers("values", values)?;
@@ -193,10 +249,11 @@ pub fn parse_message(text: &str) -> Result<ClientMessage, ServerError> {
             }
         }
         Body::Explain { answer } => check_text("answer", answer, MAX_ANSWER_CHARS, true)?,
-        Body::SendSetting { setting } => {
-            if setting.to_string().len() > MAX_SETUP_BYTES {
-                return Err(ServerError::new(ErrorCode::TooLarge, "the setting is too large"));
-            }
+        Body::SendSetting { setting } if setting.to_string().len() > MAX_SETUP_BYTES => {
+            return Err(ServerError::new(
+                ErrorCode::TooLarge,
+                "the setting is too large",
+            ));
         }
         _ => {}
     }

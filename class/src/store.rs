@@ -6,12 +6,12 @@ use std::fmt::Write as _;
 
 use rand::Rng;
 use serde::Serialize;
-use serde_json::{Value, json};
+use serde_json::{json, Value};
 use sha2::{Digest, Sha256};
 use sqlx::{AnyPool, Row};
 
+use crate::protocol::{Body, ErrorCode, ServerError, MAX_SETUP_BYTES, STEPS, VERSION};
 use crate::Role;
-use crate::protocol::{Body, ErrorCode, MAX_SETUP_BYTES, STEPS, ServerError, VERSION};
 
 /// Class codes use letters and digits that cannot be mistaken for each other.
 const CODE_ALPHABET: &[u8] = b"ABCDEFGHJKMNPQRSTUVWXYZ23456789";
@@ -36,12 +36,18 @@ fn new_token() -> String {
 
 fn new_code() -> String {
     let mut rng = rand::thread_rng();
-    (0..CODE_LEN).map(|_| CODE_ALPHABET[rng.gen_range(0..CODE_ALPHABET.len())] as char).collect()
+    (0..CODE_LEN)
+        .map(|_| CODE_ALPHABET[rng.gen_range(0..CODE_ALPHABET.len())] as char)
+        .collect()
 }
 
 /// Compares two equal-length strings in time independent of where they differ.
 fn same(a: &str, b: &str) -> bool {
-    a.len() == b.len() && a.bytes().zip(b.bytes()).fold(0u8, |acc, (x, y)| acc | (x ^ y)) == 0
+    a.len() == b.len()
+        && a.bytes()
+            .zip(b.bytes())
+            .fold(0u8, |acc, (x, y)| acc | (x ^ y))
+            == 0
 }
 
 #[derive(Debug, Serialize)]
@@ -54,7 +60,10 @@ pub struct Started {
 pub async fn create_class(pool: &AnyPool, setup: &Value) -> Result<Started, ServerError> {
     let setup_text = setup.to_string();
     if setup_text.len() > MAX_SETUP_BYTES {
-        return Err(ServerError::new(ErrorCode::TooLarge, "the setup is too large"));
+        return Err(ServerError::new(
+            ErrorCode::TooLarge,
+            "the setup is too large",
+        ));
     }
     let token = new_token();
     let seed = i64::from(rand::thread_rng().gen::<u32>());
@@ -71,14 +80,24 @@ pub async fn create_class(pool: &AnyPool, setup: &Value) -> Result<Started, Serv
         .execute(pool)
         .await?;
         if inserted.rows_affected() == 1 {
-            return Ok(Started { code, teacher_token: token, seed });
+            return Ok(Started {
+                code,
+                teacher_token: token,
+                seed,
+            });
         }
     }
-    Err(ServerError::new(ErrorCode::Internal, "no free class code; try again"))
+    Err(ServerError::new(
+        ErrorCode::Internal,
+        "no free class code; try again",
+    ))
 }
 
 pub async fn check_teacher(pool: &AnyPool, code: &str, token: &str) -> Result<bool, ServerError> {
-    let row = sqlx::query("SELECT teacher_hash FROM classes WHERE code = $1").bind(code).fetch_optional(pool).await?;
+    let row = sqlx::query("SELECT teacher_hash FROM classes WHERE code = $1")
+        .bind(code)
+        .fetch_optional(pool)
+        .await?;
     Ok(match row {
         Some(row) => same(&row.try_get::<String, _>("teacher_hash")?, &hash(token)),
         None => false,
@@ -134,7 +153,9 @@ pub async fn resume(pool: &AnyPool, code: &str, token: &str) -> Result<String, S
         .bind(code)
         .fetch_optional(pool)
         .await?
-        .ok_or_else(|| ServerError::new(ErrorCode::Forbidden, "no student with that code and token"))?;
+        .ok_or_else(|| {
+            ServerError::new(ErrorCode::Forbidden, "no student with that code and token")
+        })?;
     Ok(row.try_get("id")?)
 }
 
@@ -146,14 +167,20 @@ fn sender(role: &Role) -> String {
 }
 
 /// Applies one message once: a resent client message id gets the stored reply.
-pub async fn apply(pool: &AnyPool, role: &Role, client_id: &str, body: &Body) -> Result<Value, ServerError> {
+pub async fn apply(
+    pool: &AnyPool,
+    role: &Role,
+    client_id: &str,
+    body: &Body,
+) -> Result<Value, ServerError> {
     let who = sender(role);
     let code = role.code();
-    if let Some(row) = sqlx::query("SELECT reply FROM processed WHERE sender = $1 AND client_id = $2")
-        .bind(&who)
-        .bind(client_id)
-        .fetch_optional(pool)
-        .await?
+    if let Some(row) =
+        sqlx::query("SELECT reply FROM processed WHERE sender = $1 AND client_id = $2")
+            .bind(&who)
+            .bind(client_id)
+            .fetch_optional(pool)
+            .await?
     {
         let reply: String = row.try_get("reply")?;
         return Ok(serde_json::from_str(&reply).unwrap_or(Value::Null));
@@ -162,7 +189,11 @@ pub async fn apply(pool: &AnyPool, role: &Role, client_id: &str, body: &Body) ->
     if body.is_teachers() != is_teacher {
         return Err(ServerError::new(
             ErrorCode::Forbidden,
-            if is_teacher { "that is a student's message" } else { "that is a teacher's message" },
+            if is_teacher {
+                "that is a student's message"
+            } else {
+                "that is a teacher's message"
+            },
         ));
     }
     let reply = json!({"v": VERSION, "type": "ack", "re": client_id});
@@ -184,9 +215,16 @@ pub async fn apply(pool: &AnyPool, role: &Role, client_id: &str, body: &Body) ->
     match body {
         Body::Step { step } => {
             if !step_allowed(step) {
-                return Err(ServerError::new(ErrorCode::Held, "the teacher is holding the class at an earlier step"));
+                return Err(ServerError::new(
+                    ErrorCode::Held,
+                    "the teacher is holding the class at an earlier step",
+                ));
             }
-            sqlx::query("UPDATE students SET step = $1 WHERE id = $2").bind(step).bind(student).execute(&mut *tx).await?;
+            sqlx::query("UPDATE students SET step = $1 WHERE id = $2")
+                .bind(step)
+                .bind(student)
+                .execute(&mut *tx)
+                .await?;
         }
         Body::Predict { prediction } => {
             sqlx::query("UPDATE students SET prediction = $1 WHERE id = $2")
@@ -209,20 +247,36 @@ pub async fn apply(pool: &AnyPool, role: &Role, client_id: &str, body: &Body) ->
             }
         }
         Body::Explain { answer } => {
-            sqlx::query("UPDATE students SET answer = $1 WHERE id = $2").bind(answer).bind(student).execute(&mut *tx).await?;
+            sqlx::query("UPDATE students SET answer = $1 WHERE id = $2")
+                .bind(answer)
+                .bind(student)
+                .execute(&mut *tx)
+                .await?;
         }
         Body::Hold { step } => {
-            sqlx::query("UPDATE classes SET held_step = $1 WHERE code = $2").bind(step.clone()).bind(code).execute(&mut *tx).await?;
+            sqlx::query("UPDATE classes SET held_step = $1 WHERE code = $2")
+                .bind(step.clone())
+                .bind(code)
+                .execute(&mut *tx)
+                .await?;
         }
         Body::Release {} => {
             let next = match &held {
                 Some(h) => STEPS.get(step_index(h) + 1).map(|s| (*s).to_owned()),
                 None => None,
             };
-            sqlx::query("UPDATE classes SET held_step = $1 WHERE code = $2").bind(next).bind(code).execute(&mut *tx).await?;
+            sqlx::query("UPDATE classes SET held_step = $1 WHERE code = $2")
+                .bind(next)
+                .bind(code)
+                .execute(&mut *tx)
+                .await?;
         }
         Body::Pause { paused } => {
-            sqlx::query("UPDATE classes SET paused = $1 WHERE code = $2").bind(i64::from(*paused)).bind(code).execute(&mut *tx).await?;
+            sqlx::query("UPDATE classes SET paused = $1 WHERE code = $2")
+                .bind(i64::from(*paused))
+                .bind(code)
+                .execute(&mut *tx)
+                .await?;
         }
         Body::SendSetting { setting } => {
             sqlx::query("UPDATE classes SET setting = $1 WHERE code = $2")
@@ -232,10 +286,18 @@ pub async fn apply(pool: &AnyPool, role: &Role, client_id: &str, body: &Body) ->
                 .await?;
         }
         Body::Reveal { revealed } => {
-            sqlx::query("UPDATE classes SET revealed = $1 WHERE code = $2").bind(i64::from(*revealed)).bind(code).execute(&mut *tx).await?;
+            sqlx::query("UPDATE classes SET revealed = $1 WHERE code = $2")
+                .bind(i64::from(*revealed))
+                .bind(code)
+                .execute(&mut *tx)
+                .await?;
         }
         Body::Anonymise { on } => {
-            sqlx::query("UPDATE classes SET anonymise = $1 WHERE code = $2").bind(i64::from(*on)).bind(code).execute(&mut *tx).await?;
+            sqlx::query("UPDATE classes SET anonymise = $1 WHERE code = $2")
+                .bind(i64::from(*on))
+                .bind(code)
+                .execute(&mut *tx)
+                .await?;
         }
         Body::DeleteClass {} => {
             drop(tx);
@@ -243,16 +305,21 @@ pub async fn apply(pool: &AnyPool, role: &Role, client_id: &str, body: &Body) ->
             return Ok(reply);
         }
         Body::Join { .. } | Body::Resume { .. } | Body::Teacher { .. } => {
-            return Err(ServerError::new(ErrorCode::Invalid, "this connection has already said who it is"));
+            return Err(ServerError::new(
+                ErrorCode::Invalid,
+                "this connection has already said who it is",
+            ));
         }
     }
-    sqlx::query("INSERT INTO processed (class_code, sender, client_id, reply) VALUES ($1, $2, $3, $4)")
-        .bind(code)
-        .bind(&who)
-        .bind(client_id)
-        .bind(reply.to_string())
-        .execute(&mut *tx)
-        .await?;
+    sqlx::query(
+        "INSERT INTO processed (class_code, sender, client_id, reply) VALUES ($1, $2, $3, $4)",
+    )
+    .bind(code)
+    .bind(&who)
+    .bind(client_id)
+    .bind(reply.to_string())
+    .execute(&mut *tx)
+    .await?;
     tx.commit().await?;
     Ok(reply)
 }
@@ -317,7 +384,10 @@ async fn students(pool: &AnyPool, code: &str) -> Result<Vec<StudentRow>, ServerE
 }
 
 /// One stored result: (levels JSON, measure, value), in insertion order per student.
-async fn results(pool: &AnyPool, code: &str) -> Result<BTreeMap<String, Vec<(String, String, f64)>>, ServerError> {
+async fn results(
+    pool: &AnyPool,
+    code: &str,
+) -> Result<BTreeMap<String, Vec<(String, String, f64)>>, ServerError> {
     let rows = sqlx::query(
         "SELECT r.student_id, r.client_id, r.levels, r.measure, r.value FROM results r JOIN students s ON s.id = r.student_id WHERE s.class_code = $1 ORDER BY s.join_order, r.client_id, r.measure",
     )
@@ -385,23 +455,33 @@ pub async fn view(pool: &AnyPool, role: &Role) -> Result<Value, ServerError> {
                     })
                 })
                 .collect();
-            Ok(json!({"v": VERSION, "type": "class", "code": code, "seed": class.seed,
+            Ok(
+                json!({"v": VERSION, "type": "class", "code": code, "seed": class.seed,
                       "setup": serde_json::from_str::<Value>(&class.setup).unwrap_or(Value::Null),
                       "anonymise": class.anonymise, "state": common, "roster": roster,
-                      "histogram": histogram(&students)}))
+                      "histogram": histogram(&students)}),
+            )
         }
         Role::Student { id, .. } => {
-            let me = students
-                .iter()
-                .find(|s| &s.id == id)
-                .ok_or_else(|| ServerError::new(ErrorCode::Forbidden, "this student is no longer in the class"))?;
+            let me = students.iter().find(|s| &s.id == id).ok_or_else(|| {
+                ServerError::new(
+                    ErrorCode::Forbidden,
+                    "this student is no longer in the class",
+                )
+            })?;
             let mine = sqlx::query("SELECT levels, measure, value FROM results WHERE student_id = $1 ORDER BY client_id, measure")
                 .bind(id)
                 .fetch_all(pool)
                 .await?;
             let mine: Vec<(String, String, f64)> = mine
                 .iter()
-                .map(|r| Ok((r.try_get("levels")?, r.try_get("measure")?, r.try_get("value")?)))
+                .map(|r| {
+                    Ok((
+                        r.try_get("levels")?,
+                        r.try_get("measure")?,
+                        r.try_get("value")?,
+                    ))
+                })
                 .collect::<Result<_, sqlx::Error>>()?;
             let revealed = class.revealed.then(|| histogram(&students));
             Ok(json!({"v": VERSION, "type": "you", "state": common,
@@ -437,7 +517,11 @@ pub async fn class_csv(pool: &AnyPool, code: &str) -> Result<String, ServerError
     let mut out = String::new();
     let _ = writeln!(out, "# Shoal class: {code}"); // words: a CSV comment line, English like the experiment CSV
     let _ = writeln!(out, "# setup: {}", class.setup.replace(['\n', '\r'], " "));
-    let _ = writeln!(out, "# class seed: {} (a student's seed is the class seed + their join order)", class.seed);
+    let _ = writeln!(
+        out,
+        "# class seed: {} (a student's seed is the class seed + their join order)",
+        class.seed
+    );
     let _ = writeln!(out, "# students: {}", students.len());
     out.push_str("student,nickname,seed");
     for key in &level_keys {
@@ -448,7 +532,13 @@ pub async fn class_csv(pool: &AnyPool, code: &str) -> Result<String, ServerError
     for s in &students {
         for (levels, measure, value) in results.get(&s.id).into_iter().flatten() {
             let levels: BTreeMap<String, f64> = serde_json::from_str(levels).unwrap_or_default();
-            let _ = write!(out, "{},{},{}", s.join_order, csv_field(&s.nickname), class.seed + s.join_order);
+            let _ = write!(
+                out,
+                "{},{},{}",
+                s.join_order,
+                csv_field(&s.nickname),
+                class.seed + s.join_order
+            );
             for key in &level_keys {
                 out.push(',');
                 if let Some(v) = levels.get(key) {
@@ -468,19 +558,33 @@ pub async fn class_csv(pool: &AnyPool, code: &str) -> Result<String, ServerError
 
 pub async fn delete_class(pool: &AnyPool, code: &str) -> Result<(), ServerError> {
     let mut tx = pool.begin().await?;
-    sqlx::query("DELETE FROM results WHERE student_id IN (SELECT id FROM students WHERE class_code = $1)")
+    sqlx::query(
+        "DELETE FROM results WHERE student_id IN (SELECT id FROM students WHERE class_code = $1)",
+    )
+    .bind(code)
+    .execute(&mut *tx)
+    .await?;
+    sqlx::query("DELETE FROM processed WHERE class_code = $1")
         .bind(code)
         .execute(&mut *tx)
         .await?;
-    sqlx::query("DELETE FROM processed WHERE class_code = $1").bind(code).execute(&mut *tx).await?;
-    sqlx::query("DELETE FROM students WHERE class_code = $1").bind(code).execute(&mut *tx).await?;
-    sqlx::query("DELETE FROM classes WHERE code = $1").bind(code).execute(&mut *tx).await?;
+    sqlx::query("DELETE FROM students WHERE class_code = $1")
+        .bind(code)
+        .execute(&mut *tx)
+        .await?;
+    sqlx::query("DELETE FROM classes WHERE code = $1")
+        .bind(code)
+        .execute(&mut *tx)
+        .await?;
     tx.commit().await?;
     Ok(())
 }
 
 pub async fn delete_older_than(pool: &AnyPool, cutoff: i64) -> Result<u64, sqlx::Error> {
-    let rows = sqlx::query("SELECT code FROM classes WHERE created_at < $1").bind(cutoff).fetch_all(pool).await?;
+    let rows = sqlx::query("SELECT code FROM classes WHERE created_at < $1")
+        .bind(cutoff)
+        .fetch_all(pool)
+        .await?;
     let mut n = 0;
     for row in &rows {
         let code: String = row.try_get("code")?;

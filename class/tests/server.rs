@@ -7,7 +7,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 
 use futures_util::{SinkExt, StreamExt};
-use serde_json::{Value, json};
+use serde_json::{json, Value};
 use sqlx::{AnyPool, Connection, Executor};
 use tokio::net::TcpStream;
 use tokio_tungstenite::tungstenite::Message;
@@ -26,10 +26,18 @@ async fn backends() -> Vec<String> {
     if let Ok(admin) = std::env::var("SHOAL_CLASS_TEST_POSTGRES") {
         sqlx::any::install_default_drivers();
         let name = format!("shoal_test_{}_{n}", std::process::id());
-        let mut conn = sqlx::AnyConnection::connect(&admin).await.expect("connect to the test PostgreSQL");
-        conn.execute(format!("DROP DATABASE IF EXISTS {name}").as_str()).await.expect("drop");
-        conn.execute(format!("CREATE DATABASE {name}").as_str()).await.expect("create database");
-        let (base, query) = admin.split_once('?').map_or((admin.as_str(), ""), |(b, q)| (b, q));
+        let mut conn = sqlx::AnyConnection::connect(&admin)
+            .await
+            .expect("connect to the test PostgreSQL");
+        conn.execute(format!("DROP DATABASE IF EXISTS {name}").as_str())
+            .await
+            .expect("drop");
+        conn.execute(format!("CREATE DATABASE {name}").as_str())
+            .await
+            .expect("create database");
+        let (base, query) = admin
+            .split_once('?')
+            .map_or((admin.as_str(), ""), |(b, q)| (b, q));
         let slash = base.rfind('/').expect("a database path in the URL");
         let mut url = format!("{}/{name}", &base[..slash]);
         if !query.is_empty() {
@@ -49,7 +57,9 @@ struct Server {
 async fn start(url: &str, config: shoal_class::Config) -> Server {
     let pool = shoal_class::db::open(url).await.expect("open database");
     let app = shoal_class::app(pool.clone(), config);
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.expect("bind");
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0")
+        .await
+        .expect("bind");
     let addr = listener.local_addr().expect("addr");
     let task = tokio::spawn(async move {
         let _ = axum::serve(listener, app).await;
@@ -73,11 +83,16 @@ impl Server {
             .expect("post");
         assert_eq!(r.status(), 201);
         let v: Value = r.json().await.expect("json");
-        (v["code"].as_str().unwrap().to_owned(), v["teacher_token"].as_str().unwrap().to_owned(), v["seed"].as_i64().unwrap())
+        (
+            v["code"].as_str().unwrap().to_owned(),
+            v["teacher_token"].as_str().unwrap().to_owned(),
+            v["seed"].as_i64().unwrap(),
+        )
     }
 
     async fn csv(&self, code: &str, token: Option<&str>) -> (u16, String) {
-        let mut req = reqwest::Client::new().get(format!("http://{}/api/classes/{code}/csv", self.addr));
+        let mut req =
+            reqwest::Client::new().get(format!("http://{}/api/classes/{code}/csv", self.addr));
         if let Some(t) = token {
             req = req.bearer_auth(t);
         }
@@ -86,8 +101,14 @@ impl Server {
     }
 
     async fn client(&self) -> Client {
-        let (ws, _) = tokio_tungstenite::connect_async(format!("ws://{}/ws", self.addr)).await.expect("connect");
-        Client { ws, seen: Vec::new(), next: 0 }
+        let (ws, _) = tokio_tungstenite::connect_async(format!("ws://{}/ws", self.addr))
+            .await
+            .expect("connect");
+        Client {
+            ws,
+            seen: Vec::new(),
+            next: 0,
+        }
     }
 }
 
@@ -115,7 +136,10 @@ impl Client {
     }
 
     async fn send_raw(&mut self, text: String) {
-        self.ws.send(Message::Text(text.into())).await.expect("send");
+        self.ws
+            .send(Message::Text(text.into()))
+            .await
+            .expect("send");
     }
 
     /// Sends `body` with id `id` and returns the reply to it.
@@ -149,7 +173,10 @@ impl Client {
 }
 
 fn ok(v: &Value) {
-    assert!(v["type"] == "ack" || v["type"] == "joined", "expected an ack, got {v}");
+    assert!(
+        v["type"] == "ack" || v["type"] == "joined",
+        "expected an ack, got {v}"
+    );
 }
 
 fn error_code(v: &Value) -> &str {
@@ -159,14 +186,18 @@ fn error_code(v: &Value) -> &str {
 
 async fn join(server: &Server, code: &str, nickname: &str) -> (Client, Value) {
     let mut c = server.client().await;
-    let joined = c.ask(json!({"type": "join", "code": code, "nickname": nickname})).await;
+    let joined = c
+        .ask(json!({"type": "join", "code": code, "nickname": nickname}))
+        .await;
     assert_eq!(joined["type"], "joined", "{joined}");
     (c, joined)
 }
 
 async fn teacher(server: &Server, code: &str, token: &str) -> Client {
     let mut t = server.client().await;
-    ok(&t.ask(json!({"type": "teacher", "code": code, "teacher_token": token})).await);
+    ok(&t
+        .ask(json!({"type": "teacher", "code": code, "teacher_token": token}))
+        .await);
     t
 }
 
@@ -174,22 +205,36 @@ async fn teacher(server: &Server, code: &str, token: &str) -> Client {
 async fn a_lesson_gives_the_teacher_every_prediction_and_result_in_the_csv() {
     for url in backends().await {
         let server = start(&url, Default::default()).await;
-        let (code, token, seed) = server.start_class(json!({"investigation": "why-school"})).await;
+        let (code, token, seed) = server
+            .start_class(json!({"investigation": "why-school"}))
+            .await;
         assert_eq!(code.len(), 6);
         assert_eq!(token.len(), 64, "256 bits of teacher token");
         let (mut ana, a) = join(&server, &code, "Ana").await;
         let (mut bo, b) = join(&server, &code, "Bo, \"the fish\"").await;
         assert_eq!(a["join_order"], 1);
         assert_eq!(b["join_order"], 2);
-        assert_eq!(a["seed"].as_i64().unwrap(), seed + 1, "a student's seed is the class seed + join order");
+        assert_eq!(
+            a["seed"].as_i64().unwrap(),
+            seed + 1,
+            "a student's seed is the class seed + join order"
+        );
         assert_eq!(b["seed"].as_i64().unwrap(), seed + 2);
         assert_eq!(a["setup"]["investigation"], "why-school");
         ok(&ana.ask(json!({"type": "step", "step": "predict"})).await);
-        ok(&ana.ask(json!({"type": "predict", "prediction": "fewer"})).await);
-        ok(&bo.ask(json!({"type": "predict", "prediction": "more"})).await);
+        ok(&ana
+            .ask(json!({"type": "predict", "prediction": "fewer"}))
+            .await);
+        ok(&bo
+            .ask(json!({"type": "predict", "prediction": "more"}))
+            .await);
         ok(&ana.ask(json!({"type": "result", "levels": {"school": 1.0}, "values": {"lost": 3.0, "time_s": 60.0}})).await);
-        ok(&bo.ask(json!({"type": "result", "levels": {"school": 0.0}, "values": {"lost": 7.0}})).await);
-        ok(&ana.ask(json!({"type": "explain", "answer": "together they see the shark"})).await);
+        ok(&bo
+            .ask(json!({"type": "result", "levels": {"school": 0.0}, "values": {"lost": 7.0}}))
+            .await);
+        ok(&ana
+            .ask(json!({"type": "explain", "answer": "together they see the shark"}))
+            .await);
 
         let mut t = teacher(&server, &code, &token).await;
         let view = t.view("class").await;
@@ -201,10 +246,16 @@ async fn a_lesson_gives_the_teacher_every_prediction_and_result_in_the_csv() {
         let (status, csv) = server.csv(&code, Some(&token)).await;
         assert_eq!(status, 200);
         let rows: Vec<&str> = csv.lines().filter(|l| !l.starts_with('#')).collect();
-        assert_eq!(rows[0], "student,nickname,seed,school,prediction,measure,value");
+        assert_eq!(
+            rows[0],
+            "student,nickname,seed,school,prediction,measure,value"
+        );
         assert_eq!(rows[1], format!("1,Ana,{},1,fewer,lost,3", seed + 1));
         assert_eq!(rows[2], format!("1,Ana,{},1,fewer,time_s,60", seed + 1));
-        assert_eq!(rows[3], format!("2,\"Bo, \"\"the fish\"\"\",{},0,more,lost,7", seed + 2));
+        assert_eq!(
+            rows[3],
+            format!("2,\"Bo, \"\"the fish\"\"\",{},0,more,lost,7", seed + 2)
+        );
         assert_eq!(rows.len(), 4);
         server.stop().await;
     }
@@ -220,14 +271,20 @@ async fn a_student_cannot_use_another_classs_code() {
         let student_token = joined["student_token"].as_str().unwrap();
         // Their own class takes the token back …
         let mut c = server.client().await;
-        ok(&c.ask(json!({"type": "resume", "code": code_a, "student_token": student_token})).await);
+        ok(&c
+            .ask(json!({"type": "resume", "code": code_a, "student_token": student_token}))
+            .await);
         // … another class does not.
         let mut c = server.client().await;
-        let r = c.ask(json!({"type": "resume", "code": code_b, "student_token": student_token})).await;
+        let r = c
+            .ask(json!({"type": "resume", "code": code_b, "student_token": student_token}))
+            .await;
         assert_eq!(error_code(&r), "forbidden");
         // A code that is no class.
         let mut c = server.client().await;
-        let r = c.ask(json!({"type": "join", "code": "ZZZZZZ", "nickname": "Eve"})).await;
+        let r = c
+            .ask(json!({"type": "join", "code": "ZZZZZZ", "nickname": "Eve"}))
+            .await;
         assert_eq!(error_code(&r), "not_found");
         // Class B's roster never got Ana.
         let mut t = teacher(&server, &code_b, &token_b).await;
@@ -244,9 +301,16 @@ async fn a_guessed_or_forged_teacher_token_is_refused() {
         let (code, token, _) = server.start_class(json!("a")).await;
         let (code_b, token_b, _) = server.start_class(json!("b")).await;
         let forged = "0".repeat(64);
-        for (c, t) in [(&code, forged.as_str()), (&code, ""), (&code, token_b.as_str()), (&code_b, token.as_str())] {
+        for (c, t) in [
+            (&code, forged.as_str()),
+            (&code, ""),
+            (&code, token_b.as_str()),
+            (&code_b, token.as_str()),
+        ] {
             let mut client = server.client().await;
-            let r = client.ask(json!({"type": "teacher", "code": c, "teacher_token": t})).await;
+            let r = client
+                .ask(json!({"type": "teacher", "code": c, "teacher_token": t}))
+                .await;
             assert!(matches!(error_code(&r), "forbidden" | "invalid"), "{r}");
             assert_eq!(server.csv(c, Some(t)).await.0, 403);
         }
@@ -269,7 +333,9 @@ async fn a_student_cannot_send_teacher_messages() {
         let server = start(&url, Default::default()).await;
         let (code, token, _) = server.start_class(json!("a")).await;
         let (mut ana, _) = join(&server, &code, "Ana").await;
-        ok(&ana.ask(json!({"type": "predict", "prediction": "fewer"})).await);
+        ok(&ana
+            .ask(json!({"type": "predict", "prediction": "fewer"}))
+            .await);
         for m in [
             json!({"type": "reveal", "revealed": true}),
             json!({"type": "hold", "step": "look"}),
@@ -280,7 +346,10 @@ async fn a_student_cannot_send_teacher_messages() {
             json!({"type": "teacher", "code": code, "teacher_token": token}),
         ] {
             let r = ana.ask(m.clone()).await;
-            assert!(matches!(error_code(&r), "forbidden" | "invalid"), "{m} -> {r}");
+            assert!(
+                matches!(error_code(&r), "forbidden" | "invalid"),
+                "{m} -> {r}"
+            );
         }
         let mut t = teacher(&server, &code, &token).await;
         let view = t.view("class").await;
@@ -303,16 +372,26 @@ async fn a_student_sees_only_their_own_record_until_the_teacher_reveals() {
         let (code, token, _) = server.start_class(json!("a")).await;
         let (mut ana, _) = join(&server, &code, "Ana").await;
         let (mut bo, _) = join(&server, &code, "Borislav").await;
-        ok(&bo.ask(json!({"type": "predict", "prediction": "more"})).await);
-        ok(&bo.ask(json!({"type": "explain", "answer": "secret answer of Bo"})).await);
-        ok(&bo.ask(json!({"type": "result", "levels": {}, "values": {"lost": 5.0}})).await);
-        ok(&ana.ask(json!({"type": "predict", "prediction": "fewer"})).await);
+        ok(&bo
+            .ask(json!({"type": "predict", "prediction": "more"}))
+            .await);
+        ok(&bo
+            .ask(json!({"type": "explain", "answer": "secret answer of Bo"}))
+            .await);
+        ok(&bo
+            .ask(json!({"type": "result", "levels": {}, "values": {"lost": 5.0}}))
+            .await);
+        ok(&ana
+            .ask(json!({"type": "predict", "prediction": "fewer"}))
+            .await);
         let mine = ana.view("you").await;
         assert_eq!(mine["me"]["nickname"], "Ana");
         assert_eq!(mine["histogram"], Value::Null, "hidden before the reveal");
         let mut t = teacher(&server, &code, &token).await;
         ok(&t.ask(json!({"type": "reveal", "revealed": true})).await);
-        ok(&t.ask(json!({"type": "send_setting", "setting": {"fish": 30}})).await);
+        ok(&t
+            .ask(json!({"type": "send_setting", "setting": {"fish": 30}}))
+            .await);
         // Ana receives the reveal and the setting live.
         let mut last = ana.view("you").await;
         while last["histogram"] == Value::Null || last["state"]["setting"] == Value::Null {
@@ -327,7 +406,9 @@ async fn a_student_sees_only_their_own_record_until_the_teacher_reveals() {
         assert!(!everything.contains("\"value\":5.0"));
         // Bo's token, sent by Ana's connection for Ana's class, is Bo's record only
         // through a resume; Ana's own connection keeps seeing Ana.
-        let r = ana.ask(json!({"type": "resume", "code": code, "student_token": "x"})).await;
+        let r = ana
+            .ask(json!({"type": "resume", "code": code, "student_token": "x"}))
+            .await;
         assert_eq!(error_code(&r), "invalid");
         server.stop().await;
     }
@@ -345,7 +426,9 @@ async fn an_oversized_message_is_refused_and_the_connection_goes_on() {
         let long = "y".repeat(3000);
         let r = ana.ask(json!({"type": "explain", "answer": long})).await;
         assert_eq!(error_code(&r), "invalid", "{r}");
-        let r = ana.ask(json!({"type": "result", "levels": {}, "values": {"lost": "many"}})).await;
+        let r = ana
+            .ask(json!({"type": "result", "levels": {}, "values": {"lost": "many"}}))
+            .await;
         assert_eq!(error_code(&r), "invalid", "{r}");
         let r = ana.ask(json!({"type": "step", "step": "dance"})).await;
         assert_eq!(error_code(&r), "invalid", "{r}");
@@ -368,7 +451,11 @@ async fn an_oversized_message_is_refused_and_the_connection_goes_on() {
 #[tokio::test]
 async fn a_flood_over_the_rate_limit_is_refused() {
     for url in backends().await {
-        let config = shoal_class::Config { burst: 5.0, per_second: 1.0, ..Default::default() };
+        let config = shoal_class::Config {
+            burst: 5.0,
+            per_second: 1.0,
+            ..Default::default()
+        };
         let server = start(&url, config).await;
         let (code, _, _) = server.start_class(json!("a")).await;
         let (mut ana, _) = join(&server, &code, "Ana").await;
@@ -420,7 +507,9 @@ async fn a_resent_message_is_counted_once() {
         // Resent after a reconnect (the network dropped before the ack arrived).
         drop(ana);
         let mut back = server.client().await;
-        ok(&back.ask(json!({"type": "resume", "code": code, "student_token": joined["student_token"]})).await);
+        ok(&back
+            .ask(json!({"type": "resume", "code": code, "student_token": joined["student_token"]}))
+            .await);
         assert_eq!(back.ask_id("run-1", result.clone()).await, first);
         // A new id is a new run.
         ok(&back.ask_id("run-2", result).await);
@@ -439,8 +528,12 @@ async fn a_server_restart_loses_no_committed_prediction_or_result() {
         let mut tokens = Vec::new();
         for i in 0..5 {
             let (mut c, joined) = join(&server, &code, &format!("S{i}")).await;
-            ok(&c.ask(json!({"type": "predict", "prediction": format!("guess {i}")})).await);
-            ok(&c.ask(json!({"type": "result", "levels": {}, "values": {"lost": f64::from(i)}})).await);
+            ok(&c
+                .ask(json!({"type": "predict", "prediction": format!("guess {i}")}))
+                .await);
+            ok(&c
+                .ask(json!({"type": "result", "levels": {}, "values": {"lost": f64::from(i)}}))
+                .await);
             tokens.push(joined["student_token"].as_str().unwrap().to_owned());
         }
         let (_, before) = server.csv(&code, Some(&token)).await;
@@ -452,7 +545,9 @@ async fn a_server_restart_loses_no_committed_prediction_or_result() {
         assert_eq!(after.lines().filter(|l| l.contains("guess")).count(), 5);
         // Students resume with their tokens and a resent message stays counted once.
         let mut c = server.client().await;
-        ok(&c.ask(json!({"type": "resume", "code": code, "student_token": tokens[0]})).await);
+        ok(&c
+            .ask(json!({"type": "resume", "code": code, "student_token": tokens[0]}))
+            .await);
         let me = c.view("you").await;
         assert_eq!(me["me"]["prediction"], "guess 0");
         server.stop().await;
@@ -468,10 +563,16 @@ async fn holding_the_class_stops_students_at_a_step_until_released() {
         let mut t = teacher(&server, &code, &token).await;
         ok(&t.ask(json!({"type": "hold", "step": "predict"})).await);
         ok(&ana.ask(json!({"type": "step", "step": "predict"})).await);
-        assert_eq!(error_code(&ana.ask(json!({"type": "step", "step": "run"})).await), "held");
+        assert_eq!(
+            error_code(&ana.ask(json!({"type": "step", "step": "run"})).await),
+            "held"
+        );
         ok(&t.ask(json!({"type": "release"})).await);
         ok(&ana.ask(json!({"type": "step", "step": "run"})).await);
-        assert_eq!(error_code(&ana.ask(json!({"type": "step", "step": "explain"})).await), "held");
+        assert_eq!(
+            error_code(&ana.ask(json!({"type": "step", "step": "explain"})).await),
+            "held"
+        );
         ok(&t.ask(json!({"type": "hold", "step": null})).await);
         ok(&ana.ask(json!({"type": "step", "step": "explain"})).await);
         server.stop().await;
@@ -484,13 +585,24 @@ async fn expired_classes_are_deleted_and_recent_ones_kept() {
         let server = start(&url, Default::default()).await;
         let (code, token, _) = server.start_class(json!("a")).await;
         let (mut ana, _) = join(&server, &code, "Ana").await;
-        ok(&ana.ask(json!({"type": "predict", "prediction": "fewer"})).await);
+        ok(&ana
+            .ask(json!({"type": "predict", "prediction": "fewer"}))
+            .await);
         tokio::time::sleep(Duration::from_millis(1100)).await;
-        assert_eq!(shoal_class::delete_expired(&server.pool, 1).await.unwrap(), 0);
+        assert_eq!(
+            shoal_class::delete_expired(&server.pool, 1).await.unwrap(),
+            0
+        );
         assert_eq!(server.csv(&code, Some(&token)).await.0, 200);
-        assert_eq!(shoal_class::delete_expired(&server.pool, 0).await.unwrap(), 1);
+        assert_eq!(
+            shoal_class::delete_expired(&server.pool, 0).await.unwrap(),
+            1
+        );
         assert_eq!(server.csv(&code, Some(&token)).await.0, 403);
-        let left: i64 = sqlx::query_scalar("SELECT COUNT(*) FROM students").fetch_one(&server.pool).await.unwrap();
+        let left: i64 = sqlx::query_scalar("SELECT COUNT(*) FROM students")
+            .fetch_one(&server.pool)
+            .await
+            .unwrap();
         assert_eq!(left, 0);
         server.stop().await;
     }
@@ -500,13 +612,37 @@ async fn expired_classes_are_deleted_and_recent_ones_kept() {
 async fn every_response_carries_the_strict_csp() {
     let dir = std::env::temp_dir().join(format!("shoal-class-dist-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    std::fs::write(dir.join("index.html"), "<!doctype html><title>Shoal</title>").unwrap();
+    std::fs::write(
+        dir.join("index.html"),
+        "<!doctype html><title>Shoal</title>",
+    )
+    .unwrap();
     let url = backends().await.remove(0);
-    let server = start(&url, shoal_class::Config { dist: dir, ..Default::default() }).await;
+    let server = start(
+        &url,
+        shoal_class::Config {
+            dist: dir,
+            ..Default::default()
+        },
+    )
+    .await;
     for path in ["/", "/index.html", "/api/classes/XXXXXX/csv"] {
-        let r = reqwest::get(format!("http://{}{path}", server.addr)).await.unwrap();
-        let csp = r.headers().get("content-security-policy").unwrap().to_str().unwrap().to_owned();
-        assert!(csp.starts_with("default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; connect-src 'self'"), "{csp}");
+        let r = reqwest::get(format!("http://{}{path}", server.addr))
+            .await
+            .unwrap();
+        let csp = r
+            .headers()
+            .get("content-security-policy")
+            .unwrap()
+            .to_str()
+            .unwrap()
+            .to_owned();
+        assert!(
+            csp.starts_with(
+                "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; connect-src 'self'"
+            ),
+            "{csp}"
+        );
         if path != "/api/classes/XXXXXX/csv" {
             assert!(r.text().await.unwrap().contains("Shoal"));
         }
