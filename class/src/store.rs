@@ -198,11 +198,16 @@ pub async fn apply(
     }
     let reply = json!({"v": VERSION, "type": "ack", "re": client_id});
     let mut tx = pool.begin().await?;
-    let class = sqlx::query("SELECT held_step FROM classes WHERE code = $1")
-        .bind(code)
-        .fetch_optional(&mut *tx)
-        .await?
-        .ok_or_else(no_class)?;
+    let class = sqlx::query(
+        // A write first, so SQLite takes its write lock at once (waiting
+        // for another writer instead of failing on a stale read snapshot)
+        // and PostgreSQL orders one class's messages.
+        "UPDATE classes SET next_join = next_join WHERE code = $1 RETURNING held_step",
+    )
+    .bind(code)
+    .fetch_optional(&mut *tx)
+    .await?
+    .ok_or_else(no_class)?;
     let held: Option<String> = class.try_get("held_step")?;
     let student = match role {
         Role::Student { id, .. } => id.as_str(),

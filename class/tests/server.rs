@@ -649,3 +649,32 @@ async fn every_response_carries_the_strict_csp() {
     }
     server.stop().await;
 }
+
+#[tokio::test]
+async fn students_writing_at_once_lose_nothing() {
+    for url in backends().await {
+        let server = start(&url, Default::default()).await;
+        let (code, token, _) = server.start_class(json!("a")).await;
+        let mut tasks = Vec::new();
+        for i in 0..12 {
+            let (mut c, _) = join(&server, &code, &format!("S{i}")).await;
+            tasks.push(tokio::spawn(async move {
+                ok(&c.ask(json!({"type": "predict", "prediction": "fewer"})).await);
+                for run in 0..5 {
+                    let r = c.ask(json!({"type": "result", "levels": {"run": f64::from(run)}, "values": {"lost": 1.0}})).await;
+                    ok(&r);
+                }
+            }));
+        }
+        for t in tasks {
+            t.await.expect("a student's task");
+        }
+        let (_, csv) = server.csv(&code, Some(&token)).await;
+        assert_eq!(
+            csv.lines().filter(|l| l.contains(",lost,")).count(),
+            60,
+            "{csv}"
+        );
+        server.stop().await;
+    }
+}
