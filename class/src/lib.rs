@@ -27,7 +27,7 @@ use tower_http::set_header::SetResponseHeaderLayer;
 use protocol::{ClientMessage, ErrorCode, ServerError, MAX_MESSAGE_BYTES};
 
 /// The Content-Security-Policy of every response.
-pub const CSP: &str = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; connect-src 'self'; img-src 'self' data: blob:; style-src 'self' 'unsafe-inline'; object-src 'none'; base-uri 'none'; frame-ancestors 'none'";
+pub const CSP: &str = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; connect-src 'self'; object-src 'none'; base-uri 'none'; frame-ancestors 'none'";
 
 /// What the server needs besides its database.
 #[derive(Clone, Debug)]
