@@ -451,7 +451,7 @@ pub async fn view(pool: &AnyPool, role: &Role) -> Result<Value, ServerError> {
                 .map(|s| {
                     json!({
                         "join_order": s.join_order,
-                        "nickname": s.nickname,
+                        "nickname": (!class.anonymise).then_some(&s.nickname),
                         "seed": class.seed + s.join_order,
                         "step": s.step,
                         "prediction": s.prediction,

@@ -678,3 +678,26 @@ async fn students_writing_at_once_lose_nothing() {
         server.stop().await;
     }
 }
+
+#[tokio::test]
+async fn anonymise_hides_nicknames_from_the_dashboard_but_not_the_csv() {
+    for url in backends().await {
+        let server = start(&url, Default::default()).await;
+        let (code, token, _) = server.start_class(json!("a")).await;
+        let (mut ana, _) = join(&server, &code, "Ana").await;
+        ok(&ana
+            .ask(json!({"type": "result", "levels": {}, "values": {"lost": 2.0}}))
+            .await);
+        let mut t = teacher(&server, &code, &token).await;
+        assert_eq!(t.view("class").await["roster"][0]["nickname"], "Ana");
+        ok(&t.ask(json!({"type": "anonymise", "on": true})).await);
+        let view = t.view("class").await;
+        assert_eq!(view["anonymise"], true);
+        assert_eq!(view["roster"][0]["nickname"], Value::Null);
+        assert_eq!(view["roster"][0]["join_order"], 1);
+        assert!(server.csv(&code, Some(&token)).await.1.contains(",Ana,"));
+        ok(&t.ask(json!({"type": "anonymise", "on": false})).await);
+        assert_eq!(t.view("class").await["roster"][0]["nickname"], "Ana");
+        server.stop().await;
+    }
+}
