@@ -1,0 +1,427 @@
+//! `shoal-class`: the class server (issue 37). Serves the web app's static
+//! files and relays a lesson: `POST /api/classes` starts a class, `/ws` carries
+//! protocol v1 (versioned JSON, see docs/class.md), and
+//! `GET /api/classes/{code}/csv` gives the teacher the class's tidy CSV.
+
+pub mod db;
+pub mod protocol;
+mod store;
+
+use std::collections::HashMap;
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use axum::extract::ws::{Message, WebSocket, WebSocketUpgrade};
+use axum::extract::{Path, State};
+use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
+use axum::response::{IntoResponse, Response};
+use axum::routing::{get, post};
+use axum::{Json, Router};
+use serde_json::json;
+use sqlx::AnyPool;
+use tokio::sync::broadcast;
+use tower_http::services::{ServeDir, ServeFile};
+use tower_http::set_header::SetResponseHeaderLayer;
+
+use protocol::{ClientMessage, ErrorCode, ServerError, MAX_MESSAGE_BYTES};
+
+/// The Content-Security-Policy of every response.
+pub const CSP: &str = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; connect-src 'self'; object-src 'none'; base-uri 'none'; frame-ancestors 'none'";
+
+/// What the server needs besides its database.
+#[derive(Clone, Debug)]
+pub struct Config {
+    /// The Trunk output served at `/`.
+    pub dist: PathBuf,
+    /// Messages a connection may send in a burst.
+    pub burst: f64,
+    /// Messages per second a connection may send in the long run.
+    pub per_second: f64,
+}
+
+impl Default for Config {
+    fn default() -> Self {
+        Config {
+            dist: PathBuf::from("dist"),
+            burst: 30.0,
+            per_second: 10.0,
+        }
+    }
+}
+
+/// Shared state: the pool and one change signal per live class.
+#[derive(Clone)]
+pub struct AppState {
+    pool: AnyPool,
+    config: Arc<Config>,
+    hubs: Arc<Mutex<HashMap<String, broadcast::Sender<()>>>>,
+}
+
+impl AppState {
+    fn hub(&self, code: &str) -> broadcast::Sender<()> {
+        let mut hubs = self.hubs.lock().unwrap_or_else(|e| e.into_inner());
+        hubs.retain(|_, tx| tx.receiver_count() > 0);
+        hubs.entry(code.to_owned())
+            .or_insert_with(|| broadcast::channel(16).0)
+            .clone()
+    }
+
+    fn changed(&self, code: &str) {
+        let _ = self.hub(code).send(());
+    }
+}
+
+/// The whole application (API, WebSocket, static files, headers).
+pub fn app(pool: AnyPool, config: Config) -> Router {
+    let dist = config.dist.clone();
+    let state = AppState {
+        pool,
+        config: Arc::new(config),
+        hubs: Arc::default(),
+    };
+    let statics = ServeDir::new(&dist)
+        // The build writes brotli and gzip copies (tools/web-finish): sent as they
+        // are to a browser that accepts them.
+        .precompressed_br()
+        .precompressed_gzip()
+        .fallback(ServeFile::new(dist.join("index.html")));
+    Router::new()
+        .route("/api/classes", post(start_class))
+        .route("/api/classes/{code}", axum::routing::delete(delete_class))
+        .route("/api/classes/{code}/csv", get(class_csv))
+        .route("/ws", get(ws_upgrade))
+        .fallback_service(statics)
+        .with_state(state)
+        .layer(axum::extract::DefaultBodyLimit::max(MAX_MESSAGE_BYTES))
+        .layer(SetResponseHeaderLayer::overriding(
+            header::CONTENT_SECURITY_POLICY,
+            HeaderValue::from_static(CSP),
+        ))
+        .layer(SetResponseHeaderLayer::overriding(
+            header::X_CONTENT_TYPE_OPTIONS,
+            HeaderValue::from_static("nosniff"),
+        ))
+        .layer(SetResponseHeaderLayer::overriding(
+            header::REFERRER_POLICY,
+            HeaderValue::from_static("no-referrer"),
+        ))
+}
+
+/// Deletes every class created more than `keep_days` days ago (with all its
+/// students, results and messages). Returns how many classes went.
+pub async fn delete_expired(pool: &AnyPool, keep_days: u32) -> Result<u64, sqlx::Error> {
+    store::delete_older_than(pool, store::now() - i64::from(keep_days) * 86_400).await
+}
+
+fn error_response(status: StatusCode, err: ServerError) -> Response {
+    (status, Json(err.to_json(None))).into_response()
+}
+
+fn bearer(headers: &HeaderMap) -> Option<&str> {
+    headers
+        .get(header::AUTHORIZATION)?
+        .to_str()
+        .ok()?
+        .strip_prefix("Bearer ")
+}
+
+async fn start_class(State(state): State<AppState>, body: axum::body::Bytes) -> Response {
+    let request: protocol::StartClass = match protocol::parse_json(&body) {
+        Ok(r) => r,
+        Err(e) => return error_response(StatusCode::BAD_REQUEST, e),
+    };
+    match store::create_class(&state.pool, &request.setup).await {
+        Ok(started) => (StatusCode::CREATED, Json(started)).into_response(),
+        Err(e) => error_response(StatusCode::INTERNAL_SERVER_ERROR, e),
+    }
+}
+
+async fn authorised_teacher(
+    state: &AppState,
+    code: &str,
+    headers: &HeaderMap,
+) -> Result<(), Response> {
+    let token = bearer(headers).unwrap_or("");
+    match store::check_teacher(&state.pool, code, token).await {
+        Ok(true) => Ok(()),
+        Ok(false) => Err(error_response(
+            StatusCode::FORBIDDEN,
+            ServerError::new(
+                ErrorCode::Forbidden,
+                "no class with that code and teacher token",
+            ),
+        )),
+        Err(e) => Err(error_response(StatusCode::INTERNAL_SERVER_ERROR, e)),
+    }
+}
+
+async fn class_csv(
+    State(state): State<AppState>,
+    Path(code): Path<String>,
+    headers: HeaderMap,
+) -> Response {
+    if let Err(r) = authorised_teacher(&state, &code, &headers).await {
+        return r;
+    }
+    match store::class_csv(&state.pool, &code).await {
+        Ok(csv) => ([(header::CONTENT_TYPE, "text/csv; charset=utf-8")], csv).into_response(),
+        Err(e) => error_response(StatusCode::INTERNAL_SERVER_ERROR, e),
+    }
+}
+
+async fn delete_class(
+    State(state): State<AppState>,
+    Path(code): Path<String>,
+    headers: HeaderMap,
+) -> Response {
+    if let Err(r) = authorised_teacher(&state, &code, &headers).await {
+        return r;
+    }
+    match store::delete_class(&state.pool, &code).await {
+        Ok(()) => {
+            state.changed(&code);
+            StatusCode::NO_CONTENT.into_response()
+        }
+        Err(e) => error_response(StatusCode::INTERNAL_SERVER_ERROR, e),
+    }
+}
+
+async fn ws_upgrade(State(state): State<AppState>, ws: WebSocketUpgrade) -> Response {
+    // The socket accepts a little more than the limit so that an oversized
+    // message gets a clear error instead of a dropped connection.
+    ws.max_message_size(4 * MAX_MESSAGE_BYTES)
+        .on_upgrade(move |socket| connection(state, socket))
+}
+
+/// Who is at the other end of a connection, once it has said hello.
+#[derive(Clone, Debug)]
+pub enum Role {
+    Teacher { code: String },
+    Student { code: String, id: String },
+}
+
+/// A token bucket.
+struct Bucket {
+    tokens: f64,
+    last: Instant,
+    burst: f64,
+    per_second: f64,
+}
+
+impl Bucket {
+    fn take(&mut self) -> bool {
+        let now = Instant::now();
+        self.tokens = (self.tokens + now.duration_since(self.last).as_secs_f64() * self.per_second)
+            .min(self.burst);
+        self.last = now;
+        if self.tokens >= 1.0 {
+            self.tokens -= 1.0;
+            true
+        } else {
+            false
+        }
+    }
+}
+
+async fn send(socket: &mut WebSocket, value: serde_json::Value) -> bool {
+    socket
+        .send(Message::Text(value.to_string().into()))
+        .await
+        .is_ok()
+}
+
+async fn connection(state: AppState, mut socket: WebSocket) {
+    let mut bucket = Bucket {
+        tokens: state.config.burst,
+        last: Instant::now(),
+        burst: state.config.burst,
+        per_second: state.config.per_second,
+    };
+    let mut role: Option<Role> = None;
+    let mut changes: Option<broadcast::Receiver<()>> = None;
+    loop {
+        let incoming = tokio::select! {
+            m = socket.recv() => m,
+            changed = async {
+                match changes.as_mut() {
+                    Some(rx) => rx.recv().await.map_err(|e| matches!(e, broadcast::error::RecvError::Closed)),
+                    None => std::future::pending().await,
+                }
+            } => {
+                if changed == Err(true) { changes = None; continue; }
+                if let Some(r) = &role {
+                    match store::view(&state.pool, r).await {
+                        Ok(v) => if !send(&mut socket, v).await { return },
+                        Err(e) => if !send(&mut socket, e.to_json(None)).await { return },
+                    }
+                }
+                continue;
+            }
+        };
+        let text = match incoming {
+            Some(Ok(Message::Text(t))) => t,
+            Some(Ok(Message::Binary(_))) => {
+                let e = ServerError::new(ErrorCode::Invalid, "messages are JSON text");
+                if !send(&mut socket, e.to_json(None)).await {
+                    return;
+                }
+                continue;
+            }
+            Some(Ok(Message::Close(_))) | None | Some(Err(_)) => return,
+            Some(Ok(_)) => continue,
+        };
+        if !bucket.take() {
+            let e = ServerError::new(
+                ErrorCode::RateLimited,
+                "too many messages; slow down and resend",
+            );
+            if !send(&mut socket, e.to_json(protocol::peek_id(&text).as_deref())).await {
+                return;
+            }
+            continue;
+        }
+        if text.len() > MAX_MESSAGE_BYTES {
+            let e = ServerError::new(
+                ErrorCode::TooLarge,
+                &format!("a message may be at most {MAX_MESSAGE_BYTES} bytes"),
+            );
+            if !send(&mut socket, e.to_json(protocol::peek_id(&text).as_deref())).await {
+                return;
+            }
+            continue;
+        }
+        let message: ClientMessage = match protocol::parse_message(&text) {
+            Ok(m) => m,
+            Err(e) => {
+                if !send(&mut socket, e.to_json(protocol::peek_id(&text).as_deref())).await {
+                    return;
+                }
+                continue;
+            }
+        };
+        let id = message.id.clone();
+        let outcome = handle(&state, &mut role, message).await;
+        match outcome {
+            Ok(reply) => {
+                if !send(&mut socket, reply).await {
+                    return;
+                }
+                if let Some(r) = &role {
+                    if changes.is_none() {
+                        changes = Some(state.hub(r.code()).subscribe());
+                    }
+                    match store::view(&state.pool, r).await {
+                        Ok(v) => {
+                            if !send(&mut socket, v).await {
+                                return;
+                            }
+                        }
+                        Err(e) => {
+                            if !send(&mut socket, e.to_json(None)).await {
+                                return;
+                            }
+                        }
+                    }
+                }
+            }
+            Err(e) => {
+                if !send(&mut socket, e.to_json(Some(&id))).await {
+                    return;
+                }
+            }
+        }
+    }
+}
+
+impl Role {
+    pub fn code(&self) -> &str {
+        match self {
+            Role::Teacher { code } | Role::Student { code, .. } => code,
+        }
+    }
+}
+
+async fn handle(
+    state: &AppState,
+    role: &mut Option<Role>,
+    message: ClientMessage,
+) -> Result<serde_json::Value, ServerError> {
+    use protocol::Body;
+    match (&*role, &message.body) {
+        (None, Body::Join { code, nickname }) => {
+            let joined = store::join(&state.pool, code, nickname).await?;
+            *role = Some(Role::Student {
+                code: code.clone(),
+                id: joined.student_id.clone(),
+            });
+            state.changed(code);
+            Ok(
+                json!({"v": 1, "type": "joined", "re": message.id, "student_token": joined.token,
+                      "join_order": joined.join_order, "seed": joined.seed, "setup": joined.setup}),
+            )
+        }
+        (
+            None,
+            Body::Resume {
+                code,
+                student_token,
+            },
+        ) => {
+            let id = store::resume(&state.pool, code, student_token).await?;
+            *role = Some(Role::Student {
+                code: code.clone(),
+                id,
+            });
+            Ok(json!({"v": 1, "type": "ack", "re": message.id}))
+        }
+        (
+            None,
+            Body::Teacher {
+                code,
+                teacher_token,
+            },
+        ) => {
+            if !store::check_teacher(&state.pool, code, teacher_token).await? {
+                return Err(ServerError::new(
+                    ErrorCode::Forbidden,
+                    "no class with that code and teacher token",
+                ));
+            }
+            *role = Some(Role::Teacher { code: code.clone() });
+            Ok(json!({"v": 1, "type": "ack", "re": message.id}))
+        }
+        (Some(_), Body::Join { .. } | Body::Resume { .. } | Body::Teacher { .. }) => {
+            Err(ServerError::new(
+                ErrorCode::Invalid,
+                "this connection has already said who it is",
+            ))
+        }
+        (None, _) => Err(ServerError::new(
+            ErrorCode::Forbidden,
+            "say join, resume or teacher first",
+        )),
+        (Some(r), body) => {
+            let r = r.clone();
+            let reply = store::apply(&state.pool, &r, &message.id, body).await?;
+            state.changed(r.code());
+            if matches!(body, Body::DeleteClass {}) {
+                *role = None;
+            }
+            Ok(reply)
+        }
+    }
+}
+
+/// Runs the retention task forever: every hour, deletes expired classes.
+pub async fn retention_task(pool: AnyPool, keep_days: u32) {
+    let mut tick = tokio::time::interval(Duration::from_secs(3600));
+    loop {
+        tick.tick().await;
+        match delete_expired(&pool, keep_days).await {
+            Ok(0) => {}
+            Ok(n) => eprintln!("shoal-class: deleted {n} classes older than {keep_days} days"),
+            Err(e) => eprintln!("shoal-class: retention failed: {e}"),
+        }
+    }
+}
