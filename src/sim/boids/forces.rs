@@ -312,6 +312,58 @@ pub fn search_heeded(
     cone: &ViewCone,
     known: Nearest,
 ) -> Nearest {
+    search_heeded_in::<false>(
+        positions_m,
+        velocities_m_per_s,
+        i,
+        grid,
+        perception,
+        tuning,
+        cone,
+        known,
+    )
+}
+
+/// [`search_heeded`] in `grid`'s slot numbering: `positions_m` and
+/// `velocities_m_per_s` are in slot order ([`SpatialGrid::slots`]), `i` and
+/// the neighbours in `known` and in the result are slots. The same
+/// neighbours, renumbered; the boid step keeps its snapshot in slot order so
+/// that a fish's neighbours lie close together in memory.
+#[allow(clippy::too_many_arguments)]
+pub fn search_heeded_slots(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    slot: usize,
+    grid: &SpatialGrid,
+    perception: &Perception,
+    tuning: &SteeringTuning,
+    cone: &ViewCone,
+    known: Nearest,
+) -> Nearest {
+    search_heeded_in::<true>(
+        positions_m,
+        velocities_m_per_s,
+        slot,
+        grid,
+        perception,
+        tuning,
+        cone,
+        known,
+    )
+}
+
+/// [`search_heeded`] (`BY_SLOT` false) or [`search_heeded_slots`].
+#[allow(clippy::too_many_arguments)]
+fn search_heeded_in<const BY_SLOT: bool>(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    i: usize,
+    grid: &SpatialGrid,
+    perception: &Perception,
+    tuning: &SteeringTuning,
+    cone: &ViewCone,
+    known: Nearest,
+) -> Nearest {
     let position_m = positions_m[i];
     let heading = heading_of(velocities_m_per_s[i]);
     let max_neighbours = tuning.topological_neighbours;
@@ -320,16 +372,26 @@ pub fn search_heeded(
     } else {
         Nearest::new(max_neighbours)
     };
-    grid.k_nearest(
-        position_m,
-        perception.vision_distance_m,
-        &mut nearest,
-        |j, other_m, distance_sq_m2| {
-            j != i
-                && distance_sq_m2 > 0.0
-                && cone.in_angle(heading.dot(other_m - position_m), distance_sq_m2)
-        },
-    );
+    let accept = |j: usize, other_m: Vec3, distance_sq_m2: f32| {
+        j != i
+            && distance_sq_m2 > 0.0
+            && cone.in_angle(heading.dot(other_m - position_m), distance_sq_m2)
+    };
+    if BY_SLOT {
+        grid.k_nearest_slots(
+            position_m,
+            perception.vision_distance_m,
+            &mut nearest,
+            accept,
+        );
+    } else {
+        grid.k_nearest(
+            position_m,
+            perception.vision_distance_m,
+            &mut nearest,
+            accept,
+        );
+    }
     nearest
 }
 

@@ -94,14 +94,16 @@ impl<'a> UrgeInputs<'a> {
         self.params
     }
 
-    /// The five urges of fish `i` heeding `heeded`, from the school's snapshot
-    /// (the start of the step): what the boid step combines, and what
-    /// the attention inspector reports.
-    pub(super) fn urges_of(&self, i: usize, heeded: &Heeded) -> Urges {
+    /// The five urges of the fish in `slot` of the snapshot heeding `heeded`
+    /// (its neighbours as slots, as [`super::neighbours::Heeding::heed`] gives
+    /// them), from the school's snapshot (the start of the step): what the
+    /// boid step combines, and what the attention inspector reports.
+    pub(super) fn urges_of(&self, slot: usize, heeded: &Heeded) -> Urges {
+        let i = slot;
         let (perception, params) = (self.perception, self.params);
         let tuning = &self.world.steering;
-        let positions_m = self.snapshot.positions_m();
-        let velocities_m_per_s = self.snapshot.velocities_m_per_s();
+        let positions_m = self.snapshot.slot_positions_m();
+        let velocities_m_per_s = self.snapshot.slot_velocities_m_per_s();
         let position_m = positions_m[i];
         let velocity_m_per_s = velocities_m_per_s[i];
         let max_force = params.max_force_m_per_s2;
