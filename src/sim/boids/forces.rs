@@ -23,7 +23,7 @@
 //! [`SteeringTuning`]; [`Perception`] holds the senses and limits the sliders set.
 
 use crate::sim::common::fmath;
-use glam::Vec3;
+use glam::{Vec3, Vec4};
 
 use crate::sim::common::fish::heading_of;
 use crate::sim::common::spatial_grid::{MAX_NEAREST, Nearest, SpatialGrid};
@@ -157,16 +157,47 @@ impl FarField {
             &self.mean_z_m[..cells],
         );
         let mine = self.cell_of(position_m).map(|c| c as u32);
-        for k in 0..cells {
+        let add = |k: usize, sum: &mut Vec3, count: &mut f32| {
+            let mean_m = Vec3::new(xs[k], ys[k], zs[k]);
+            let n = self.count[k];
+            *sum += mean_m * n;
+            *count += n;
+            if Some(self.cell[k]) == mine {
+                *sum -= position_m;
+                *count -= 1.0;
+            }
+        };
+        // The view test four cells at a time (the same operations as
+        // `cone.sees`, lane by lane), the sums cell by cell in order.
+        let (px, py, pz) = (
+            Vec4::splat(position_m.x),
+            Vec4::splat(position_m.y),
+            Vec4::splat(position_m.z),
+        );
+        let (hx, hy, hz) = (
+            Vec4::splat(heading.x),
+            Vec4::splat(heading.y),
+            Vec4::splat(heading.z),
+        );
+        let mut k = 0;
+        while k + 4 <= cells {
+            let dx = Vec4::from_slice(&xs[k..k + 4]) - px;
+            let dy = Vec4::from_slice(&ys[k..k + 4]) - py;
+            let dz = Vec4::from_slice(&zs[k..k + 4]) - pz;
+            let d2 = dx * dx + dy * dy + dz * dz;
+            let dot = hx * dx + hy * dy + hz * dz;
+            let mut seen = cone.sees_lanes(dot, d2);
+            while seen != 0 {
+                let lane = seen.trailing_zeros() as usize;
+                add(k + lane, &mut sum, &mut count);
+                seen &= seen - 1;
+            }
+            k += 4;
+        }
+        for k in k..cells {
             let mean_m = Vec3::new(xs[k], ys[k], zs[k]);
             if cone.sees(heading, mean_m - position_m) {
-                let n = self.count[k];
-                sum += mean_m * n;
-                count += n;
-                if Some(self.cell[k]) == mine {
-                    sum -= position_m;
-                    count -= 1.0;
-                }
+                add(k, &mut sum, &mut count);
             }
         }
         (count > 0.5).then(|| sum / count)
@@ -201,6 +232,22 @@ impl ViewCone {
     fn sees(&self, heading: Vec3, offset: Vec3) -> bool {
         let d2 = offset.length_squared();
         d2 <= self.vision_sq_m2 && self.in_angle(heading.dot(offset), d2)
+    }
+
+    /// [`Self::sees`] for four offsets at once, given their `dot`s with the
+    /// heading and squared lengths `d2`: bit `l` of the result is lane `l`'s
+    /// answer.
+    fn sees_lanes(&self, dot: Vec4, d2: Vec4) -> u32 {
+        let within = d2.cmple(Vec4::splat(self.vision_sq_m2));
+        let ahead = dot.cmpge(Vec4::ZERO);
+        let dot_sq = dot * dot;
+        let wide = d2 * Vec4::splat(self.cos_half_sq);
+        let angle = if self.cos_half >= 0.0 {
+            ahead & dot_sq.cmpge(wide)
+        } else {
+            ahead | dot_sq.cmple(wide)
+        };
+        (within & angle).bitmask()
     }
 
     /// The angle part of [`Self::sees`], given `dot = heading·offset` and the
@@ -314,7 +361,7 @@ pub fn search_heeded(
 ) -> Nearest {
     search_heeded_in::<false>(
         positions_m,
-        velocities_m_per_s,
+        heading_of(velocities_m_per_s[i]),
         i,
         grid,
         perception,
@@ -324,15 +371,16 @@ pub fn search_heeded(
     )
 }
 
-/// [`search_heeded`] in `grid`'s slot numbering: `positions_m` and
-/// `velocities_m_per_s` are in slot order ([`SpatialGrid::slots`]), `i` and
-/// the neighbours in `known` and in the result are slots. The same
-/// neighbours, renumbered; the boid step keeps its snapshot in slot order so
-/// that a fish's neighbours lie close together in memory.
+/// [`search_heeded`] in `grid`'s slot numbering: `positions_m` are in slot
+/// order ([`SpatialGrid::slots`]), `slot` and the neighbours in `known` and
+/// in the result are slots, and `heading` is the fish's ([`heading_of`] its
+/// velocity). The same neighbours, renumbered; the boid step keeps its
+/// snapshot in slot order so that a fish's neighbours lie close together in
+/// memory.
 #[allow(clippy::too_many_arguments)]
 pub fn search_heeded_slots(
     positions_m: &[Vec3],
-    velocities_m_per_s: &[Vec3],
+    heading: Vec3,
     slot: usize,
     grid: &SpatialGrid,
     perception: &Perception,
@@ -342,7 +390,7 @@ pub fn search_heeded_slots(
 ) -> Nearest {
     search_heeded_in::<true>(
         positions_m,
-        velocities_m_per_s,
+        heading,
         slot,
         grid,
         perception,
@@ -356,7 +404,7 @@ pub fn search_heeded_slots(
 #[allow(clippy::too_many_arguments)]
 fn search_heeded_in<const BY_SLOT: bool>(
     positions_m: &[Vec3],
-    velocities_m_per_s: &[Vec3],
+    heading: Vec3,
     i: usize,
     grid: &SpatialGrid,
     perception: &Perception,
@@ -365,7 +413,6 @@ fn search_heeded_in<const BY_SLOT: bool>(
     known: Nearest,
 ) -> Nearest {
     let position_m = positions_m[i];
-    let heading = heading_of(velocities_m_per_s[i]);
     let max_neighbours = tuning.topological_neighbours;
     let mut nearest = if known.capacity() == max_neighbours.min(MAX_NEAREST) {
         known
@@ -410,8 +457,25 @@ pub fn recheck_heeded(
     previous: &Nearest,
     cone: &ViewCone,
 ) -> Nearest {
+    recheck_heeded_facing(
+        positions_m,
+        heading_of(velocities_m_per_s[i]),
+        i,
+        previous,
+        cone,
+    )
+}
+
+/// [`recheck_heeded`] with the fish's `heading` ([`heading_of`] its
+/// velocity) worked out beforehand.
+pub fn recheck_heeded_facing(
+    positions_m: &[Vec3],
+    heading: Vec3,
+    i: usize,
+    previous: &Nearest,
+    cone: &ViewCone,
+) -> Nearest {
     let position_m = positions_m[i];
-    let heading = heading_of(velocities_m_per_s[i]);
     let mut nearest = Nearest::new(previous.capacity());
     for (j, _) in previous.iter() {
         let Some(&other_m) = positions_m.get(j) else {
@@ -477,6 +541,59 @@ pub fn forces_from_neighbours(
     perception: &Perception,
     tuning: &SteeringTuning,
 ) -> NeighbourForces {
+    forces_from_neighbours_in(
+        positions_m,
+        velocities_m_per_s,
+        |j| velocities_m_per_s[j].normalize_or_zero(),
+        i,
+        nearest,
+        far_centre_m,
+        perception,
+        tuning,
+    )
+}
+
+/// [`forces_from_neighbours`] with every fish's direction of motion
+/// (`directions[j]` = `velocities_m_per_s[j].normalize_or_zero()`) worked
+/// out beforehand, once per fish: the same result, cheaper when every fish
+/// heeds several neighbours.
+#[allow(clippy::too_many_arguments)]
+pub fn forces_from_neighbours_with_directions(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    directions: &[Vec3],
+    i: usize,
+    nearest: &Nearest,
+    far_centre_m: Option<Vec3>,
+    perception: &Perception,
+    tuning: &SteeringTuning,
+) -> NeighbourForces {
+    forces_from_neighbours_in(
+        positions_m,
+        velocities_m_per_s,
+        |j| directions[j],
+        i,
+        nearest,
+        far_centre_m,
+        perception,
+        tuning,
+    )
+}
+
+/// [`forces_from_neighbours`] with `direction(j)` the direction of motion of
+/// fish `j`.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn forces_from_neighbours_in(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    direction: impl Fn(usize) -> Vec3,
+    i: usize,
+    nearest: &Nearest,
+    far_centre_m: Option<Vec3>,
+    perception: &Perception,
+    tuning: &SteeringTuning,
+) -> NeighbourForces {
     let position_m = positions_m[i];
     let velocity_m_per_s = velocities_m_per_s[i];
     if nearest.is_empty() && far_centre_m.is_none() {
@@ -500,7 +617,7 @@ pub fn forces_from_neighbours(
         // (its silhouette shrinks with distance).
         // Infinite clear sight reads every heading in full, 0 none.
         let clarity = (perception.clear_sight_m / distance_m.max(1e-3)).clamp(0.0, 1.0);
-        velocity_sum += velocities_m_per_s[j].normalize_or_zero() * clarity;
+        velocity_sum += direction(j) * clarity;
         align_strength += clarity;
         position_sum += positions_m[j];
     }
@@ -583,11 +700,32 @@ pub fn avoid_neighbours(
     max_speed_m_per_s: f32,
     tuning: &SteeringTuning,
 ) -> Vec3 {
+    avoid_neighbours_facing(
+        positions_m,
+        velocities_m_per_s,
+        velocities_m_per_s[i].normalize_or_zero(),
+        i,
+        nearest,
+        max_speed_m_per_s,
+        tuning,
+    )
+}
+
+/// [`avoid_neighbours`] with the fish's direction of motion (`heading`, its
+/// velocity's `normalize_or_zero`) worked out beforehand.
+pub fn avoid_neighbours_facing(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    heading: Vec3,
+    i: usize,
+    nearest: &Nearest,
+    max_speed_m_per_s: f32,
+    tuning: &SteeringTuning,
+) -> Vec3 {
     /// Shortest time to contact used in the strength, seconds.
     const MIN_TIME_S: f32 = 0.1;
     let position_m = positions_m[i];
     let velocity_m_per_s = velocities_m_per_s[i];
-    let heading = velocity_m_per_s.normalize_or_zero();
     if heading == Vec3::ZERO {
         return Vec3::ZERO;
     }
@@ -599,7 +737,12 @@ pub fn avoid_neighbours(
         if closing_sq < 1e-6 {
             continue;
         }
-        let t_s = offset_m.dot(closing_m_per_s) / closing_sq;
+        let closing_dot = offset_m.dot(closing_m_per_s);
+        // Not closing in (t ≤ 0, or NaN): skip before dividing.
+        if closing_dot.is_nan() || closing_dot <= 0.0 {
+            continue;
+        }
+        let t_s = closing_dot / closing_sq;
         if !(t_s > 0.0 && t_s <= tuning.fish_avoid_look_ahead_s) {
             continue;
         }

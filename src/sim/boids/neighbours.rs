@@ -55,6 +55,12 @@ pub(super) struct Snapshot {
     /// The velocities in slot order (the grid's, see [`Self::fish_at_slot`]);
     /// the positions in slot order are the grid's own copy.
     slot_velocities_m_per_s: Vec<Vec3>,
+    /// Each velocity's direction in slot order (`normalize_or_zero`, zero
+    /// for a still fish), worked out once per fish, not once per fish that
+    /// heeds it.
+    slot_directions: Vec<Vec3>,
+    /// Each fish's heading in slot order ([`heading_of`] its velocity).
+    slot_headings: Vec<Vec3>,
     /// The slot of each fish: `slot_of[i]` is the slot holding fish `i`.
     slot_of: Vec<u32>,
     grid: SpatialGrid,
@@ -80,6 +86,15 @@ impl Snapshot {
                 .iter()
                 .map(|&i| self.velocities_m_per_s[i as usize]),
         );
+        self.slot_directions.clear();
+        self.slot_directions.extend(
+            self.slot_velocities_m_per_s
+                .iter()
+                .map(|v| v.normalize_or_zero()),
+        );
+        self.slot_headings.clear();
+        self.slot_headings
+            .extend(self.slot_velocities_m_per_s.iter().map(|&v| heading_of(v)));
         self.slot_of.clear();
         self.slot_of.resize(slots.len(), 0);
         for (slot, &i) in slots.iter().enumerate() {
@@ -130,6 +145,17 @@ impl Snapshot {
     /// Everyone's velocity at the start of the step in slot order.
     pub(super) fn slot_velocities_m_per_s(&self) -> &[Vec3] {
         &self.slot_velocities_m_per_s
+    }
+
+    /// Everyone's direction of motion in slot order (the velocity's
+    /// `normalize_or_zero`).
+    pub(super) fn slot_directions(&self) -> &[Vec3] {
+        &self.slot_directions
+    }
+
+    /// Everyone's heading in slot order ([`heading_of`] the velocity).
+    pub(super) fn slot_headings(&self) -> &[Vec3] {
+        &self.slot_headings
     }
 
     /// The fish in each slot (`fish_slots()[slot]` is a fish's index).
@@ -275,19 +301,16 @@ impl Heeding {
         snapshot: &Snapshot,
         perception: &Perception,
         tuning: &SteeringTuning,
-    ) -> Heeded {
-        let (positions_m, velocities_m_per_s) = (
-            snapshot.slot_positions_m(),
-            snapshot.slot_velocities_m_per_s(),
-        );
+    ) -> &Heeded {
+        let positions_m = snapshot.slot_positions_m();
         let searches = self.everyone_searches
             || (i as u64 + self.step).is_multiple_of(NEIGHBOUR_SEARCH_EVERY_STEPS);
         let known = if self.everyone_searches {
             Nearest::new(tuning.topological_neighbours)
         } else {
-            forces::recheck_heeded(
+            forces::recheck_heeded_facing(
                 positions_m,
-                velocities_m_per_s,
+                snapshot.slot_headings[slot],
                 slot,
                 &self.heeded[slot].neighbours,
                 &self.cone,
@@ -298,7 +321,7 @@ impl Heeding {
                 // The last neighbours, rechecked, bound the search.
                 neighbours: forces::search_heeded_slots(
                     positions_m,
-                    velocities_m_per_s,
+                    snapshot.slot_headings[slot],
                     slot,
                     &snapshot.grid,
                     perception,
@@ -308,7 +331,7 @@ impl Heeding {
                 ),
                 far_centre_m: self.far_field.seen_centre_m(
                     positions_m[slot],
-                    heading_of(velocities_m_per_s[slot]),
+                    snapshot.slot_headings[slot],
                     &self.cone,
                 ),
             }
@@ -319,7 +342,7 @@ impl Heeding {
             }
         };
         self.heeded[slot] = heeded;
-        heeded
+        &self.heeded[slot]
     }
 
     /// Ends a step: the lists are the boid layer's of this step when

@@ -107,9 +107,10 @@ impl<'a> UrgeInputs<'a> {
         let position_m = positions_m[i];
         let velocity_m_per_s = velocities_m_per_s[i];
         let max_force = params.max_force_m_per_s2;
-        let neighbours = forces::forces_from_neighbours(
+        let neighbours = forces::forces_from_neighbours_with_directions(
             positions_m,
             velocities_m_per_s,
+            self.snapshot.slot_directions(),
             i,
             heeded.neighbours(),
             heeded.far_centre_m(),
@@ -154,9 +155,10 @@ impl<'a> UrgeInputs<'a> {
                 params.avoidance_look_ahead_m,
                 tuning.avoidance_clearance_m,
                 params.max_speed_m_per_s,
-            ) + forces::avoid_neighbours(
+            ) + forces::avoid_neighbours_facing(
                 positions_m,
                 velocities_m_per_s,
+                self.snapshot.slot_directions()[i],
                 i,
                 heeded.neighbours(),
                 params.max_speed_m_per_s,

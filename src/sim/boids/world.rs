@@ -42,7 +42,7 @@ use super::predators::{self, Fear, Predators};
 use super::shark::Shark;
 use super::stingray::Stingray;
 use super::urges::{self, UrgeInputs};
-use crate::sim::common::fish::{Fish, heading_of};
+use crate::sim::common::fish::Fish;
 use crate::sim::common::obstacle::Obstacle;
 use crate::sim::common::steering::{self, SteeringParams};
 use crate::sim::common::tank::Tank;
@@ -578,7 +578,7 @@ impl World {
             self.non_finite_repairs += move_fish(
                 fish,
                 position_m,
-                heading_of(velocity_m_per_s),
+                self.snapshot.slot_headings()[slot],
                 combined.force_m_per_s2 + wander + escape,
                 &params,
                 &self.tank,
