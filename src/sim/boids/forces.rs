@@ -742,6 +742,15 @@ pub fn avoid_neighbours_facing(
         if closing_dot.is_nan() || closing_dot <= 0.0 {
             continue;
         }
+        // Contact beyond the look-ahead (most neighbours in a school close
+        // in slowly): skip before dividing. The bound is a millionth above
+        // look-ahead × closing², far more than the rounding of either side,
+        // so it skips only neighbours whose quotient below is past the
+        // look-ahead too (and none when the bound is not a normal number).
+        let beyond = tuning.fish_avoid_look_ahead_s * closing_sq * (1.0 + 1e-6);
+        if beyond.is_normal() && closing_dot > beyond {
+            continue;
+        }
         let t_s = closing_dot / closing_sq;
         if !(t_s > 0.0 && t_s <= tuning.fish_avoid_look_ahead_s) {
             continue;
@@ -1194,5 +1203,173 @@ mod tests {
             sway.z > 0.0,
             "a lone fish on the left is passed on the right: {sway}"
         );
+    }
+
+    /// `avoid_neighbours` as it was before it skipped the division for
+    /// neighbours not closing in or meeting beyond the look-ahead: the
+    /// reference the faster one must match bit for bit.
+    fn avoid_neighbours_reference(
+        positions_m: &[Vec3],
+        velocities_m_per_s: &[Vec3],
+        i: usize,
+        nearest: &Nearest,
+        max_speed_m_per_s: f32,
+        tuning: &SteeringTuning,
+    ) -> Vec3 {
+        let position_m = positions_m[i];
+        let velocity_m_per_s = velocities_m_per_s[i];
+        let heading = velocity_m_per_s.normalize_or_zero();
+        if heading == Vec3::ZERO {
+            return Vec3::ZERO;
+        }
+        let mut threat: Option<(f32, usize)> = None;
+        for (j, _) in nearest.iter() {
+            let offset_m = positions_m[j] - position_m;
+            let closing_m_per_s = velocity_m_per_s - velocities_m_per_s[j];
+            let closing_sq = closing_m_per_s.length_squared();
+            if closing_sq < 1e-6 {
+                continue;
+            }
+            let t_s = offset_m.dot(closing_m_per_s) / closing_sq;
+            if !(t_s > 0.0 && t_s <= tuning.fish_avoid_look_ahead_s) {
+                continue;
+            }
+            let miss_m = (offset_m - closing_m_per_s * t_s).length();
+            if miss_m < tuning.fish_avoid_clearance_m
+                && threat.is_none_or(|(soonest, _)| t_s < soonest)
+            {
+                threat = Some((t_s, j));
+            }
+        }
+        let Some((t_s, j)) = threat else {
+            return Vec3::ZERO;
+        };
+        let mut centre_m = positions_m[j];
+        let mut members = 1.0;
+        let link_sq_m2 = fmath::powi(tuning.fish_cluster_link_m, 2);
+        for (k, _) in nearest.iter() {
+            if k != j && positions_m[k].distance_squared(positions_m[j]) < link_sq_m2 {
+                centre_m += positions_m[k];
+                members += 1.0;
+            }
+        }
+        let core_m = if members >= 3.0 {
+            centre_m / members
+        } else {
+            positions_m[j]
+        };
+        let to_core_m = core_m - position_m;
+        let offset_m = to_core_m - heading * to_core_m.dot(heading);
+        let away = (-offset_m).normalize_or(heading.cross(Vec3::Y).normalize_or(Vec3::Z));
+        let urgency = tuning.fish_avoid_look_ahead_s / t_s.max(0.1);
+        let sway = away * max_speed_m_per_s * urgency;
+        if sway.is_finite() { sway } else { Vec3::ZERO }
+    }
+
+    #[test]
+    fn skipping_the_division_changes_no_sway_by_a_bit() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(36);
+        let mut swayed = 0;
+        for case in 0..20_000 {
+            let mut tuning = tuning();
+            if case % 3 == 1 {
+                tuning.fish_avoid_look_ahead_s = rng.random_range(0.0..3.0);
+            }
+            let me = Vec3::new(0.0, 2.0, 0.0);
+            let my_v = Vec3::new(
+                rng.random_range(-0.8..0.8),
+                rng.random_range(-0.2..0.2),
+                rng.random_range(-0.8..0.8),
+            );
+            let mut positions = vec![me];
+            let mut velocities = vec![my_v];
+            for _ in 0..7 {
+                let offset = Vec3::new(
+                    rng.random_range(-1.5..1.5),
+                    rng.random_range(-0.5..0.5),
+                    rng.random_range(-1.5..1.5),
+                );
+                // Half the neighbours meet the fish at exactly (as near as
+                // floats go) the look-ahead: the edge of the skip.
+                let v = if rng.random_bool(0.5) {
+                    my_v - offset / tuning.fish_avoid_look_ahead_s.max(0.05)
+                } else {
+                    Vec3::new(
+                        rng.random_range(-0.8..0.8),
+                        rng.random_range(-0.2..0.2),
+                        rng.random_range(-0.8..0.8),
+                    )
+                };
+                positions.push(me + offset);
+                velocities.push(v);
+            }
+            let nearest = all_heeded(&positions);
+            let fast = avoid_neighbours(&positions, &velocities, 0, &nearest, 0.8, &tuning);
+            let reference =
+                avoid_neighbours_reference(&positions, &velocities, 0, &nearest, 0.8, &tuning);
+            assert_eq!(
+                fast.to_array().map(f32::to_bits),
+                reference.to_array().map(f32::to_bits),
+                "case {case}"
+            );
+            swayed += usize::from(fast != Vec3::ZERO);
+        }
+        assert!(swayed > 1_000, "the cases reach the sway: {swayed}");
+    }
+
+    #[test]
+    fn the_far_fields_four_cells_at_a_time_match_one_at_a_time() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(37);
+        let tank = (Vec3::new(-6.0, 0.0, -4.0), Vec3::new(6.0, 4.5, 4.0));
+        let points: Vec<Vec3> = (0..3_000)
+            .map(|_| {
+                Vec3::new(
+                    rng.random_range(-6.0..6.0),
+                    rng.random_range(0.0..4.5),
+                    rng.random_range(-4.0..4.0),
+                )
+            })
+            .collect();
+        let mut far = FarField::default();
+        far.rebuild(tank.0, tank.1, 2.5, &points);
+        for angle in [300f32, 200.0, 120.0, 360.0] {
+            let perception = Perception {
+                vision_distance_m: 5.0,
+                vision_angle_rad: angle.to_radians(),
+                ..PERCEPTION
+            };
+            let cone = ViewCone::new(&perception);
+            for (k, &p) in points.iter().enumerate().step_by(7) {
+                let heading = Vec3::new(
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                )
+                .normalize_or(Vec3::X);
+                // One cell at a time, as before.
+                let mine = far.cell_of(p).map(|c| c as u32);
+                let (mut sum, mut count) = (Vec3::ZERO, 0.0);
+                for c in 0..far.count.len() {
+                    let mean_m = Vec3::new(far.mean_x_m[c], far.mean_y_m[c], far.mean_z_m[c]);
+                    if cone.sees(heading, mean_m - p) {
+                        sum += mean_m * far.count[c];
+                        count += far.count[c];
+                        if Some(far.cell[c]) == mine {
+                            sum -= p;
+                            count -= 1.0;
+                        }
+                    }
+                }
+                let expected = (count > 0.5).then(|| sum / count);
+                let found = far.seen_centre_m(p, heading, &cone);
+                assert_eq!(
+                    found.map(|c| c.to_array().map(f32::to_bits)),
+                    expected.map(|c| c.to_array().map(f32::to_bits)),
+                    "point {k}, angle {angle}"
+                );
+            }
+        }
     }
 }

@@ -81,11 +81,8 @@ impl Snapshot {
         self.rebuild_grid(tank, vision_m);
         let slots = self.grid.slots();
         self.slot_velocities_m_per_s.clear();
-        self.slot_velocities_m_per_s.extend(
-            slots
-                .iter()
-                .map(|&i| self.velocities_m_per_s[i as usize]),
-        );
+        self.slot_velocities_m_per_s
+            .extend(slots.iter().map(|&i| self.velocities_m_per_s[i as usize]));
         self.slot_directions.clear();
         self.slot_directions.extend(
             self.slot_velocities_m_per_s
@@ -272,16 +269,15 @@ impl Heeding {
             let (heeded, old_slot_of, old_fish_at_slot) =
                 (&self.heeded, &self.slot_of, &self.fish_at_slot);
             self.moved.clear();
-            self.moved
-                .extend(snapshot.fish_slots().iter().map(|&i| {
-                    let last = &heeded[old_slot_of[i as usize] as usize];
-                    Heeded {
-                        neighbours: last.neighbours.renumbered(|j| {
-                            snapshot.slot_of[old_fish_at_slot[j as usize] as usize]
-                        }),
-                        far_centre_m: last.far_centre_m,
-                    }
-                }));
+            self.moved.extend(snapshot.fish_slots().iter().map(|&i| {
+                let last = &heeded[old_slot_of[i as usize] as usize];
+                Heeded {
+                    neighbours: last
+                        .neighbours
+                        .renumbered(|j| snapshot.slot_of[old_fish_at_slot[j as usize] as usize]),
+                    far_centre_m: last.far_centre_m,
+                }
+            }));
             std::mem::swap(&mut self.heeded, &mut self.moved);
         }
         self.fish_at_slot.clear();
