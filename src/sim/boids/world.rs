@@ -547,7 +547,7 @@ impl World {
             let heeded = self
                 .heeding
                 .heed(i, slot, &self.snapshot, perception, tuning);
-            let urges = inputs.urges_of(slot, &heeded);
+            let urges = inputs.urges_of(slot, heeded);
             let escape = self.fear.escape(
                 i,
                 heeded.neighbours(),
