@@ -47,7 +47,7 @@ fn main() {
         "fish", "steps/s", "boid-steps/s", "full metrics ms", "every-step ms", "metrics ms/step"
     );
     let only: Option<usize> = std::env::args().skip(1).find_map(|a| a.parse().ok());
-    for fish_count in [500, 5_000, 20_000] {
+    for fish_count in [500, 5_000, 20_000, 50_000] {
         if only.is_some_and(|n| n != fish_count) {
             continue;
         }

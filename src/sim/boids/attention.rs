@@ -160,11 +160,13 @@ impl From<&Attention> for AttentionReport {
 
 impl Attention {
     /// What fish `i` paid attention to in the last step, replayed from the
-    /// step's `inputs` (the same snapshot and settings), the neighbours it
-    /// `heeded`, the `weights` it used and the step's `record` of it, under
+    /// step's `inputs` (the same snapshot and settings, fish `i` in `slot`),
+    /// the neighbours it `heeded` (as slots), the `weights` it used and the step's `record` of it, under
     /// `mode`; `velocity_m_per_s` is how it swims after the step.
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn replay(
         i: usize,
+        slot: usize,
         mode: ControlMode,
         inputs: &UrgeInputs,
         heeded: &Heeded,
@@ -172,7 +174,7 @@ impl Attention {
         record: &StepRecord,
         velocity_m_per_s: Vec3,
     ) -> Self {
-        let urges = inputs.urges_of(i, heeded);
+        let urges = inputs.urges_of(slot, heeded);
         let urges_m_per_s2 = control_mode::contributions(mode, urges.forces(), &weights);
         let combined_m_per_s2 = control_mode::applied_sum(
             &urges_m_per_s2,
@@ -182,7 +184,11 @@ impl Attention {
         Self {
             fish: i,
             mode,
-            neighbours: heeded.neighbours().iter().map(|(j, _)| j).collect(),
+            neighbours: heeded
+                .neighbours()
+                .iter()
+                .map(|(j, _)| inputs.snapshot().fish_at_slot(j))
+                .collect(),
             sees_far_school: heeded.far_centre_m().is_some(),
             urges_m_per_s2,
             needs: *urges.needs(),

@@ -23,7 +23,7 @@
 //! [`SteeringTuning`]; [`Perception`] holds the senses and limits the sliders set.
 
 use crate::sim::common::fmath;
-use glam::Vec3;
+use glam::{Vec3, Vec4};
 
 use crate::sim::common::fish::heading_of;
 use crate::sim::common::spatial_grid::{MAX_NEAREST, Nearest, SpatialGrid};
@@ -157,16 +157,47 @@ impl FarField {
             &self.mean_z_m[..cells],
         );
         let mine = self.cell_of(position_m).map(|c| c as u32);
-        for k in 0..cells {
+        let add = |k: usize, sum: &mut Vec3, count: &mut f32| {
+            let mean_m = Vec3::new(xs[k], ys[k], zs[k]);
+            let n = self.count[k];
+            *sum += mean_m * n;
+            *count += n;
+            if Some(self.cell[k]) == mine {
+                *sum -= position_m;
+                *count -= 1.0;
+            }
+        };
+        // The view test four cells at a time (the same operations as
+        // `cone.sees`, lane by lane), the sums cell by cell in order.
+        let (px, py, pz) = (
+            Vec4::splat(position_m.x),
+            Vec4::splat(position_m.y),
+            Vec4::splat(position_m.z),
+        );
+        let (hx, hy, hz) = (
+            Vec4::splat(heading.x),
+            Vec4::splat(heading.y),
+            Vec4::splat(heading.z),
+        );
+        let mut k = 0;
+        while k + 4 <= cells {
+            let dx = Vec4::from_slice(&xs[k..k + 4]) - px;
+            let dy = Vec4::from_slice(&ys[k..k + 4]) - py;
+            let dz = Vec4::from_slice(&zs[k..k + 4]) - pz;
+            let d2 = dx * dx + dy * dy + dz * dz;
+            let dot = hx * dx + hy * dy + hz * dz;
+            let mut seen = cone.sees_lanes(dot, d2);
+            while seen != 0 {
+                let lane = seen.trailing_zeros() as usize;
+                add(k + lane, &mut sum, &mut count);
+                seen &= seen - 1;
+            }
+            k += 4;
+        }
+        for k in k..cells {
             let mean_m = Vec3::new(xs[k], ys[k], zs[k]);
             if cone.sees(heading, mean_m - position_m) {
-                let n = self.count[k];
-                sum += mean_m * n;
-                count += n;
-                if Some(self.cell[k]) == mine {
-                    sum -= position_m;
-                    count -= 1.0;
-                }
+                add(k, &mut sum, &mut count);
             }
         }
         (count > 0.5).then(|| sum / count)
@@ -201,6 +232,22 @@ impl ViewCone {
     fn sees(&self, heading: Vec3, offset: Vec3) -> bool {
         let d2 = offset.length_squared();
         d2 <= self.vision_sq_m2 && self.in_angle(heading.dot(offset), d2)
+    }
+
+    /// [`Self::sees`] for four offsets at once, given their `dot`s with the
+    /// heading and squared lengths `d2`: bit `l` of the result is lane `l`'s
+    /// answer.
+    fn sees_lanes(&self, dot: Vec4, d2: Vec4) -> u32 {
+        let within = d2.cmple(Vec4::splat(self.vision_sq_m2));
+        let ahead = dot.cmpge(Vec4::ZERO);
+        let dot_sq = dot * dot;
+        let wide = d2 * Vec4::splat(self.cos_half_sq);
+        let angle = if self.cos_half >= 0.0 {
+            ahead & dot_sq.cmpge(wide)
+        } else {
+            ahead | dot_sq.cmple(wide)
+        };
+        (within & angle).bitmask()
     }
 
     /// The angle part of [`Self::sees`], given `dot = heading·offset` and the
@@ -312,24 +359,86 @@ pub fn search_heeded(
     cone: &ViewCone,
     known: Nearest,
 ) -> Nearest {
+    search_heeded_in::<false>(
+        positions_m,
+        heading_of(velocities_m_per_s[i]),
+        i,
+        grid,
+        perception,
+        tuning,
+        cone,
+        known,
+    )
+}
+
+/// [`search_heeded`] in `grid`'s slot numbering: `positions_m` are in slot
+/// order ([`SpatialGrid::slots`]), `slot` and the neighbours in `known` and
+/// in the result are slots, and `heading` is the fish's ([`heading_of`] its
+/// velocity). The same neighbours, renumbered; the boid step keeps its
+/// snapshot in slot order so that a fish's neighbours lie close together in
+/// memory.
+#[allow(clippy::too_many_arguments)]
+pub fn search_heeded_slots(
+    positions_m: &[Vec3],
+    heading: Vec3,
+    slot: usize,
+    grid: &SpatialGrid,
+    perception: &Perception,
+    tuning: &SteeringTuning,
+    cone: &ViewCone,
+    known: Nearest,
+) -> Nearest {
+    search_heeded_in::<true>(
+        positions_m,
+        heading,
+        slot,
+        grid,
+        perception,
+        tuning,
+        cone,
+        known,
+    )
+}
+
+/// [`search_heeded`] (`BY_SLOT` false) or [`search_heeded_slots`].
+#[allow(clippy::too_many_arguments)]
+fn search_heeded_in<const BY_SLOT: bool>(
+    positions_m: &[Vec3],
+    heading: Vec3,
+    i: usize,
+    grid: &SpatialGrid,
+    perception: &Perception,
+    tuning: &SteeringTuning,
+    cone: &ViewCone,
+    known: Nearest,
+) -> Nearest {
     let position_m = positions_m[i];
-    let heading = heading_of(velocities_m_per_s[i]);
     let max_neighbours = tuning.topological_neighbours;
     let mut nearest = if known.capacity() == max_neighbours.min(MAX_NEAREST) {
         known
     } else {
         Nearest::new(max_neighbours)
     };
-    grid.k_nearest(
-        position_m,
-        perception.vision_distance_m,
-        &mut nearest,
-        |j, other_m, distance_sq_m2| {
-            j != i
-                && distance_sq_m2 > 0.0
-                && cone.in_angle(heading.dot(other_m - position_m), distance_sq_m2)
-        },
-    );
+    let accept = |j: usize, other_m: Vec3, distance_sq_m2: f32| {
+        j != i
+            && distance_sq_m2 > 0.0
+            && cone.in_angle(heading.dot(other_m - position_m), distance_sq_m2)
+    };
+    if BY_SLOT {
+        grid.k_nearest_slots(
+            position_m,
+            perception.vision_distance_m,
+            &mut nearest,
+            accept,
+        );
+    } else {
+        grid.k_nearest(
+            position_m,
+            perception.vision_distance_m,
+            &mut nearest,
+            accept,
+        );
+    }
     nearest
 }
 
@@ -348,8 +457,25 @@ pub fn recheck_heeded(
     previous: &Nearest,
     cone: &ViewCone,
 ) -> Nearest {
+    recheck_heeded_facing(
+        positions_m,
+        heading_of(velocities_m_per_s[i]),
+        i,
+        previous,
+        cone,
+    )
+}
+
+/// [`recheck_heeded`] with the fish's `heading` ([`heading_of`] its
+/// velocity) worked out beforehand.
+pub fn recheck_heeded_facing(
+    positions_m: &[Vec3],
+    heading: Vec3,
+    i: usize,
+    previous: &Nearest,
+    cone: &ViewCone,
+) -> Nearest {
     let position_m = positions_m[i];
-    let heading = heading_of(velocities_m_per_s[i]);
     let mut nearest = Nearest::new(previous.capacity());
     for (j, _) in previous.iter() {
         let Some(&other_m) = positions_m.get(j) else {
@@ -415,6 +541,59 @@ pub fn forces_from_neighbours(
     perception: &Perception,
     tuning: &SteeringTuning,
 ) -> NeighbourForces {
+    forces_from_neighbours_in(
+        positions_m,
+        velocities_m_per_s,
+        |j| velocities_m_per_s[j].normalize_or_zero(),
+        i,
+        nearest,
+        far_centre_m,
+        perception,
+        tuning,
+    )
+}
+
+/// [`forces_from_neighbours`] with every fish's direction of motion
+/// (`directions[j]` = `velocities_m_per_s[j].normalize_or_zero()`) worked
+/// out beforehand, once per fish: the same result, cheaper when every fish
+/// heeds several neighbours.
+#[allow(clippy::too_many_arguments)]
+pub fn forces_from_neighbours_with_directions(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    directions: &[Vec3],
+    i: usize,
+    nearest: &Nearest,
+    far_centre_m: Option<Vec3>,
+    perception: &Perception,
+    tuning: &SteeringTuning,
+) -> NeighbourForces {
+    forces_from_neighbours_in(
+        positions_m,
+        velocities_m_per_s,
+        |j| directions[j],
+        i,
+        nearest,
+        far_centre_m,
+        perception,
+        tuning,
+    )
+}
+
+/// [`forces_from_neighbours`] with `direction(j)` the direction of motion of
+/// fish `j`.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn forces_from_neighbours_in(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    direction: impl Fn(usize) -> Vec3,
+    i: usize,
+    nearest: &Nearest,
+    far_centre_m: Option<Vec3>,
+    perception: &Perception,
+    tuning: &SteeringTuning,
+) -> NeighbourForces {
     let position_m = positions_m[i];
     let velocity_m_per_s = velocities_m_per_s[i];
     if nearest.is_empty() && far_centre_m.is_none() {
@@ -438,7 +617,7 @@ pub fn forces_from_neighbours(
         // (its silhouette shrinks with distance).
         // Infinite clear sight reads every heading in full, 0 none.
         let clarity = (perception.clear_sight_m / distance_m.max(1e-3)).clamp(0.0, 1.0);
-        velocity_sum += velocities_m_per_s[j].normalize_or_zero() * clarity;
+        velocity_sum += direction(j) * clarity;
         align_strength += clarity;
         position_sum += positions_m[j];
     }
@@ -521,11 +700,32 @@ pub fn avoid_neighbours(
     max_speed_m_per_s: f32,
     tuning: &SteeringTuning,
 ) -> Vec3 {
+    avoid_neighbours_facing(
+        positions_m,
+        velocities_m_per_s,
+        velocities_m_per_s[i].normalize_or_zero(),
+        i,
+        nearest,
+        max_speed_m_per_s,
+        tuning,
+    )
+}
+
+/// [`avoid_neighbours`] with the fish's direction of motion (`heading`, its
+/// velocity's `normalize_or_zero`) worked out beforehand.
+pub fn avoid_neighbours_facing(
+    positions_m: &[Vec3],
+    velocities_m_per_s: &[Vec3],
+    heading: Vec3,
+    i: usize,
+    nearest: &Nearest,
+    max_speed_m_per_s: f32,
+    tuning: &SteeringTuning,
+) -> Vec3 {
     /// Shortest time to contact used in the strength, seconds.
     const MIN_TIME_S: f32 = 0.1;
     let position_m = positions_m[i];
     let velocity_m_per_s = velocities_m_per_s[i];
-    let heading = velocity_m_per_s.normalize_or_zero();
     if heading == Vec3::ZERO {
         return Vec3::ZERO;
     }
@@ -537,7 +737,21 @@ pub fn avoid_neighbours(
         if closing_sq < 1e-6 {
             continue;
         }
-        let t_s = offset_m.dot(closing_m_per_s) / closing_sq;
+        let closing_dot = offset_m.dot(closing_m_per_s);
+        // Not closing in (t ≤ 0, or NaN): skip before dividing.
+        if closing_dot.is_nan() || closing_dot <= 0.0 {
+            continue;
+        }
+        // Contact beyond the look-ahead (most neighbours in a school close
+        // in slowly): skip before dividing. The bound is a millionth above
+        // look-ahead × closing², far more than the rounding of either side,
+        // so it skips only neighbours whose quotient below is past the
+        // look-ahead too (and none when the bound is not a normal number).
+        let beyond = tuning.fish_avoid_look_ahead_s * closing_sq * (1.0 + 1e-6);
+        if beyond.is_normal() && closing_dot > beyond {
+            continue;
+        }
+        let t_s = closing_dot / closing_sq;
         if !(t_s > 0.0 && t_s <= tuning.fish_avoid_look_ahead_s) {
             continue;
         }
@@ -989,5 +1203,173 @@ mod tests {
             sway.z > 0.0,
             "a lone fish on the left is passed on the right: {sway}"
         );
+    }
+
+    /// `avoid_neighbours` as it was before it skipped the division for
+    /// neighbours not closing in or meeting beyond the look-ahead: the
+    /// reference the faster one must match bit for bit.
+    fn avoid_neighbours_reference(
+        positions_m: &[Vec3],
+        velocities_m_per_s: &[Vec3],
+        i: usize,
+        nearest: &Nearest,
+        max_speed_m_per_s: f32,
+        tuning: &SteeringTuning,
+    ) -> Vec3 {
+        let position_m = positions_m[i];
+        let velocity_m_per_s = velocities_m_per_s[i];
+        let heading = velocity_m_per_s.normalize_or_zero();
+        if heading == Vec3::ZERO {
+            return Vec3::ZERO;
+        }
+        let mut threat: Option<(f32, usize)> = None;
+        for (j, _) in nearest.iter() {
+            let offset_m = positions_m[j] - position_m;
+            let closing_m_per_s = velocity_m_per_s - velocities_m_per_s[j];
+            let closing_sq = closing_m_per_s.length_squared();
+            if closing_sq < 1e-6 {
+                continue;
+            }
+            let t_s = offset_m.dot(closing_m_per_s) / closing_sq;
+            if !(t_s > 0.0 && t_s <= tuning.fish_avoid_look_ahead_s) {
+                continue;
+            }
+            let miss_m = (offset_m - closing_m_per_s * t_s).length();
+            if miss_m < tuning.fish_avoid_clearance_m
+                && threat.is_none_or(|(soonest, _)| t_s < soonest)
+            {
+                threat = Some((t_s, j));
+            }
+        }
+        let Some((t_s, j)) = threat else {
+            return Vec3::ZERO;
+        };
+        let mut centre_m = positions_m[j];
+        let mut members = 1.0;
+        let link_sq_m2 = fmath::powi(tuning.fish_cluster_link_m, 2);
+        for (k, _) in nearest.iter() {
+            if k != j && positions_m[k].distance_squared(positions_m[j]) < link_sq_m2 {
+                centre_m += positions_m[k];
+                members += 1.0;
+            }
+        }
+        let core_m = if members >= 3.0 {
+            centre_m / members
+        } else {
+            positions_m[j]
+        };
+        let to_core_m = core_m - position_m;
+        let offset_m = to_core_m - heading * to_core_m.dot(heading);
+        let away = (-offset_m).normalize_or(heading.cross(Vec3::Y).normalize_or(Vec3::Z));
+        let urgency = tuning.fish_avoid_look_ahead_s / t_s.max(0.1);
+        let sway = away * max_speed_m_per_s * urgency;
+        if sway.is_finite() { sway } else { Vec3::ZERO }
+    }
+
+    #[test]
+    fn skipping_the_division_changes_no_sway_by_a_bit() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(36);
+        let mut swayed = 0;
+        for case in 0..20_000 {
+            let mut tuning = tuning();
+            if case % 3 == 1 {
+                tuning.fish_avoid_look_ahead_s = rng.random_range(0.0..3.0);
+            }
+            let me = Vec3::new(0.0, 2.0, 0.0);
+            let my_v = Vec3::new(
+                rng.random_range(-0.8..0.8),
+                rng.random_range(-0.2..0.2),
+                rng.random_range(-0.8..0.8),
+            );
+            let mut positions = vec![me];
+            let mut velocities = vec![my_v];
+            for _ in 0..7 {
+                let offset = Vec3::new(
+                    rng.random_range(-1.5..1.5),
+                    rng.random_range(-0.5..0.5),
+                    rng.random_range(-1.5..1.5),
+                );
+                // Half the neighbours meet the fish at exactly (as near as
+                // floats go) the look-ahead: the edge of the skip.
+                let v = if rng.random_bool(0.5) {
+                    my_v - offset / tuning.fish_avoid_look_ahead_s.max(0.05)
+                } else {
+                    Vec3::new(
+                        rng.random_range(-0.8..0.8),
+                        rng.random_range(-0.2..0.2),
+                        rng.random_range(-0.8..0.8),
+                    )
+                };
+                positions.push(me + offset);
+                velocities.push(v);
+            }
+            let nearest = all_heeded(&positions);
+            let fast = avoid_neighbours(&positions, &velocities, 0, &nearest, 0.8, &tuning);
+            let reference =
+                avoid_neighbours_reference(&positions, &velocities, 0, &nearest, 0.8, &tuning);
+            assert_eq!(
+                fast.to_array().map(f32::to_bits),
+                reference.to_array().map(f32::to_bits),
+                "case {case}"
+            );
+            swayed += usize::from(fast != Vec3::ZERO);
+        }
+        assert!(swayed > 1_000, "the cases reach the sway: {swayed}");
+    }
+
+    #[test]
+    fn the_far_fields_four_cells_at_a_time_match_one_at_a_time() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(37);
+        let tank = (Vec3::new(-6.0, 0.0, -4.0), Vec3::new(6.0, 4.5, 4.0));
+        let points: Vec<Vec3> = (0..3_000)
+            .map(|_| {
+                Vec3::new(
+                    rng.random_range(-6.0..6.0),
+                    rng.random_range(0.0..4.5),
+                    rng.random_range(-4.0..4.0),
+                )
+            })
+            .collect();
+        let mut far = FarField::default();
+        far.rebuild(tank.0, tank.1, 2.5, &points);
+        for angle in [300f32, 200.0, 120.0, 360.0] {
+            let perception = Perception {
+                vision_distance_m: 5.0,
+                vision_angle_rad: angle.to_radians(),
+                ..PERCEPTION
+            };
+            let cone = ViewCone::new(&perception);
+            for (k, &p) in points.iter().enumerate().step_by(7) {
+                let heading = Vec3::new(
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                )
+                .normalize_or(Vec3::X);
+                // One cell at a time, as before.
+                let mine = far.cell_of(p).map(|c| c as u32);
+                let (mut sum, mut count) = (Vec3::ZERO, 0.0);
+                for c in 0..far.count.len() {
+                    let mean_m = Vec3::new(far.mean_x_m[c], far.mean_y_m[c], far.mean_z_m[c]);
+                    if cone.sees(heading, mean_m - p) {
+                        sum += mean_m * far.count[c];
+                        count += far.count[c];
+                        if Some(far.cell[c]) == mine {
+                            sum -= p;
+                            count -= 1.0;
+                        }
+                    }
+                }
+                let expected = (count > 0.5).then(|| sum / count);
+                let found = far.seen_centre_m(p, heading, &cone);
+                assert_eq!(
+                    found.map(|c| c.to_array().map(f32::to_bits)),
+                    expected.map(|c| c.to_array().map(f32::to_bits)),
+                    "point {k}, angle {angle}"
+                );
+            }
+        }
     }
 }

@@ -52,6 +52,17 @@ const MIN_NEIGHBOUR_CELL_M: f32 = 0.15;
 pub(super) struct Snapshot {
     positions_m: Vec<Vec3>,
     velocities_m_per_s: Vec<Vec3>,
+    /// The velocities in slot order (the grid's, see [`Self::fish_at_slot`]);
+    /// the positions in slot order are the grid's own copy.
+    slot_velocities_m_per_s: Vec<Vec3>,
+    /// Each velocity's direction in slot order (`normalize_or_zero`, zero
+    /// for a still fish), worked out once per fish, not once per fish that
+    /// heeds it.
+    slot_directions: Vec<Vec3>,
+    /// Each fish's heading in slot order ([`heading_of`] its velocity).
+    slot_headings: Vec<Vec3>,
+    /// The slot of each fish: `slot_of[i]` is the slot holding fish `i`.
+    slot_of: Vec<u32>,
     grid: SpatialGrid,
     /// The grid's cell in the last step, metres (0 before the first): the
     /// next cell is sized from how crowded this one was.
@@ -68,6 +79,24 @@ impl Snapshot {
         self.velocities_m_per_s
             .extend(fish.iter().map(|f| f.velocity_m_per_s));
         self.rebuild_grid(tank, vision_m);
+        let slots = self.grid.slots();
+        self.slot_velocities_m_per_s.clear();
+        self.slot_velocities_m_per_s
+            .extend(slots.iter().map(|&i| self.velocities_m_per_s[i as usize]));
+        self.slot_directions.clear();
+        self.slot_directions.extend(
+            self.slot_velocities_m_per_s
+                .iter()
+                .map(|v| v.normalize_or_zero()),
+        );
+        self.slot_headings.clear();
+        self.slot_headings
+            .extend(self.slot_velocities_m_per_s.iter().map(|&v| heading_of(v)));
+        self.slot_of.clear();
+        self.slot_of.resize(slots.len(), 0);
+        for (slot, &i) in slots.iter().enumerate() {
+            self.slot_of[i as usize] = slot as u32;
+        }
     }
 
     /// Buckets the snapshot positions for the neighbour search, with cells
@@ -102,6 +131,33 @@ impl Snapshot {
     /// Everyone's velocity at the start of the step, m/s.
     pub(super) fn velocities_m_per_s(&self) -> &[Vec3] {
         &self.velocities_m_per_s
+    }
+
+    /// Everyone's position at the start of the step in slot order
+    /// ([`Self::fish_at_slot`]): fish near in the tank lie near in memory.
+    pub(super) fn slot_positions_m(&self) -> &[Vec3] {
+        self.grid.slot_positions_m()
+    }
+
+    /// Everyone's velocity at the start of the step in slot order.
+    pub(super) fn slot_velocities_m_per_s(&self) -> &[Vec3] {
+        &self.slot_velocities_m_per_s
+    }
+
+    /// Everyone's direction of motion in slot order (the velocity's
+    /// `normalize_or_zero`).
+    pub(super) fn slot_directions(&self) -> &[Vec3] {
+        &self.slot_directions
+    }
+
+    /// Everyone's heading in slot order ([`heading_of`] the velocity).
+    pub(super) fn slot_headings(&self) -> &[Vec3] {
+        &self.slot_headings
+    }
+
+    /// The fish in each slot (`fish_slots()[slot]` is a fish's index).
+    pub(super) fn fish_slots(&self) -> &[u32] {
+        self.grid.slots()
     }
 
     /// The snapshot positions bucketed for nearest-neighbour searches.
@@ -144,10 +200,24 @@ impl Heeded {
 
 /// Whom each fish heeds, kept from step to step: between two searches a fish
 /// rechecks the neighbours it heeded in the last one.
+///
+/// The lists are kept in slot order ([`Snapshot::fish_at_slot`]) with the
+/// neighbours as slots, so that the step reads its snapshot front to back and
+/// a fish's neighbours lie near it in memory; each step moves them to the new
+/// slots first ([`Self::begin_step`]). Renumbering changes no value and no
+/// order: the same neighbours are found, nearest first, as with fish indices.
 #[derive(Clone, Debug, Default)]
 pub(super) struct Heeding {
-    /// What each fish heeded in the last boid step.
+    /// What each fish heeded in the last boid step, by its slot in that
+    /// step, the neighbours as slots of that step.
     heeded: Vec<Heeded>,
+    /// A buffer for moving the lists to the new slots (kept so that a step
+    /// allocates nothing).
+    moved: Vec<Heeded>,
+    /// The fish in each slot of the step the lists were made in.
+    fish_at_slot: Vec<u32>,
+    /// The slot of each fish in that step.
+    slot_of: Vec<u32>,
     far_field: FarField,
     /// Do the lists hold the last step's, made by the boid layer from the
     /// fish there are now? Otherwise the next boid step searches for everyone.
@@ -164,9 +234,10 @@ pub(super) struct Heeding {
 
 impl Heeding {
     /// Gets ready for boid step number `step` over `snapshot`: buckets the far
-    /// field and decides whether everyone searches (after a change of settings
+    /// field, decides whether everyone searches (after a change of settings
     /// or of the number of fish every fish does; otherwise a quarter of them,
-    /// see [`NEIGHBOUR_SEARCH_EVERY_STEPS`]).
+    /// see [`NEIGHBOUR_SEARCH_EVERY_STEPS`]) and moves the last step's lists
+    /// to this step's slots.
     pub(super) fn begin_step(
         &mut self,
         snapshot: &Snapshot,
@@ -182,49 +253,72 @@ impl Heeding {
             &snapshot.positions_m,
         );
         self.cone = ViewCone::new(perception);
-        self.everyone_searches = !self.current || self.heeded.len() != n;
+        self.everyone_searches =
+            !self.current || self.heeded.len() != n || self.fish_at_slot.len() != n;
         self.step = step;
-        self.heeded.resize(
-            n,
-            Heeded {
-                neighbours: Nearest::new(0),
-                far_centre_m: None,
-            },
-        );
+        if self.everyone_searches {
+            self.heeded.clear();
+            self.heeded.resize(
+                n,
+                Heeded {
+                    neighbours: Nearest::new(0),
+                    far_centre_m: None,
+                },
+            );
+        } else {
+            let (heeded, old_slot_of, old_fish_at_slot) =
+                (&self.heeded, &self.slot_of, &self.fish_at_slot);
+            self.moved.clear();
+            self.moved.extend(snapshot.fish_slots().iter().map(|&i| {
+                let last = &heeded[old_slot_of[i as usize] as usize];
+                Heeded {
+                    neighbours: last
+                        .neighbours
+                        .renumbered(|j| snapshot.slot_of[old_fish_at_slot[j as usize] as usize]),
+                    far_centre_m: last.far_centre_m,
+                }
+            }));
+            std::mem::swap(&mut self.heeded, &mut self.moved);
+        }
+        self.fish_at_slot.clear();
+        self.fish_at_slot.extend_from_slice(snapshot.fish_slots());
+        self.slot_of.clear();
+        self.slot_of.extend_from_slice(&snapshot.slot_of);
     }
 
-    /// Whom fish `i` heeds this step: a fresh search when it is its turn
-    /// (bounded by its last neighbours, rechecked), otherwise its last
-    /// neighbours as it sees them now and the far school it last saw.
+    /// Whom fish `i`, in `slot` of this step's snapshot, heeds this step: a
+    /// fresh search when it is its turn (bounded by its last neighbours,
+    /// rechecked), otherwise its last neighbours as it sees them now and the
+    /// far school it last saw. The neighbours are slots.
     pub(super) fn heed(
         &mut self,
         i: usize,
+        slot: usize,
         snapshot: &Snapshot,
         perception: &Perception,
         tuning: &SteeringTuning,
-    ) -> Heeded {
-        let (positions_m, velocities_m_per_s) =
-            (&snapshot.positions_m, &snapshot.velocities_m_per_s);
+    ) -> &Heeded {
+        let positions_m = snapshot.slot_positions_m();
         let searches = self.everyone_searches
             || (i as u64 + self.step).is_multiple_of(NEIGHBOUR_SEARCH_EVERY_STEPS);
         let known = if self.everyone_searches {
             Nearest::new(tuning.topological_neighbours)
         } else {
-            forces::recheck_heeded(
+            forces::recheck_heeded_facing(
                 positions_m,
-                velocities_m_per_s,
-                i,
-                &self.heeded[i].neighbours,
+                snapshot.slot_headings[slot],
+                slot,
+                &self.heeded[slot].neighbours,
                 &self.cone,
             )
         };
         let heeded = if searches {
             Heeded {
                 // The last neighbours, rechecked, bound the search.
-                neighbours: forces::search_heeded(
+                neighbours: forces::search_heeded_slots(
                     positions_m,
-                    velocities_m_per_s,
-                    i,
+                    snapshot.slot_headings[slot],
+                    slot,
                     &snapshot.grid,
                     perception,
                     tuning,
@@ -232,19 +326,19 @@ impl Heeding {
                     known,
                 ),
                 far_centre_m: self.far_field.seen_centre_m(
-                    positions_m[i],
-                    heading_of(velocities_m_per_s[i]),
+                    positions_m[slot],
+                    snapshot.slot_headings[slot],
                     &self.cone,
                 ),
             }
         } else {
             Heeded {
                 neighbours: known,
-                far_centre_m: self.heeded[i].far_centre_m,
+                far_centre_m: self.heeded[slot].far_centre_m,
             }
         };
-        self.heeded[i] = heeded;
-        heeded
+        self.heeded[slot] = heeded;
+        &self.heeded[slot]
     }
 
     /// Ends a step: the lists are the boid layer's of this step when
@@ -264,8 +358,23 @@ impl Heeding {
         self.current
     }
 
-    /// What fish `i` heeded in the last boid step, if it was there.
-    pub(super) fn get(&self, i: usize) -> Option<&Heeded> {
-        self.heeded.get(i)
+    /// What fish `i` heeded in the last boid step, if it was there, with
+    /// the neighbours as fish indices.
+    pub(super) fn get(&self, i: usize) -> Option<Heeded> {
+        let (slot, heeded) = self.get_in_slots(i)?;
+        debug_assert_eq!(self.fish_at_slot[slot] as usize, i);
+        Some(Heeded {
+            neighbours: heeded
+                .neighbours
+                .renumbered(|j| self.fish_at_slot[j as usize]),
+            far_centre_m: heeded.far_centre_m,
+        })
+    }
+
+    /// Fish `i`'s slot in the last boid step and what it heeded then, with
+    /// the neighbours as slots of that step (as the step computed its urges).
+    pub(super) fn get_in_slots(&self, i: usize) -> Option<(usize, &Heeded)> {
+        let slot = *self.slot_of.get(i)? as usize;
+        Some((slot, self.heeded.get(slot)?))
     }
 }

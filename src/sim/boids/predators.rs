@@ -104,7 +104,8 @@ impl Fear {
     }
 
     /// The escape force of fish `i` (at `position_m`, swimming with
-    /// `velocity_m_per_s`, heeding `neighbours`) from `sharks`, or `None` when
+    /// `velocity_m_per_s`, heeding `neighbours`, given as slots of the step's
+    /// snapshot with `fish_at_slot` the fish in each slot) from `sharks`, or `None` when
     /// it is calm: what it notices itself, or the alarm of its frightened
     /// neighbours within [`BoidWorldParams::alarm_range_m`] (their last
     /// fright × [`BoidWorldParams::alarm_share`]). Records its fright for the
@@ -114,6 +115,7 @@ impl Fear {
         &mut self,
         i: usize,
         neighbours: &Nearest,
+        fish_at_slot: &[u32],
         position_m: Vec3,
         velocity_m_per_s: Vec3,
         sharks: &[Shark],
@@ -128,7 +130,7 @@ impl Fear {
             neighbours
                 .iter()
                 .filter(|&(_, d2)| d2 <= world.alarm_range_m * world.alarm_range_m)
-                .map(|(j, _)| self.fear[j])
+                .map(|(j, _)| self.fear[fish_at_slot[j] as usize])
                 .fold(0.0, f32::max)
                 * world.alarm_share
         };

@@ -94,20 +94,23 @@ impl<'a> UrgeInputs<'a> {
         self.params
     }
 
-    /// The five urges of fish `i` heeding `heeded`, from the school's snapshot
-    /// (the start of the step): what the boid step combines, and what
-    /// the attention inspector reports.
-    pub(super) fn urges_of(&self, i: usize, heeded: &Heeded) -> Urges {
+    /// The five urges of the fish in `slot` of the snapshot heeding `heeded`
+    /// (its neighbours as slots, as [`super::neighbours::Heeding::heed`] gives
+    /// them), from the school's snapshot (the start of the step): what the
+    /// boid step combines, and what the attention inspector reports.
+    pub(super) fn urges_of(&self, slot: usize, heeded: &Heeded) -> Urges {
+        let i = slot;
         let (perception, params) = (self.perception, self.params);
         let tuning = &self.world.steering;
-        let positions_m = self.snapshot.positions_m();
-        let velocities_m_per_s = self.snapshot.velocities_m_per_s();
+        let positions_m = self.snapshot.slot_positions_m();
+        let velocities_m_per_s = self.snapshot.slot_velocities_m_per_s();
         let position_m = positions_m[i];
         let velocity_m_per_s = velocities_m_per_s[i];
         let max_force = params.max_force_m_per_s2;
-        let neighbours = forces::forces_from_neighbours(
+        let neighbours = forces::forces_from_neighbours_with_directions(
             positions_m,
             velocities_m_per_s,
+            self.snapshot.slot_directions(),
             i,
             heeded.neighbours(),
             heeded.far_centre_m(),
@@ -152,9 +155,10 @@ impl<'a> UrgeInputs<'a> {
                 params.avoidance_look_ahead_m,
                 tuning.avoidance_clearance_m,
                 params.max_speed_m_per_s,
-            ) + forces::avoid_neighbours(
+            ) + forces::avoid_neighbours_facing(
                 positions_m,
                 velocities_m_per_s,
+                self.snapshot.slot_directions()[i],
                 i,
                 heeded.neighbours(),
                 params.max_speed_m_per_s,

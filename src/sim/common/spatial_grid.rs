@@ -228,6 +228,15 @@ impl Nearest {
         }
     }
 
+    /// The same list with every kept point renumbered by `renumber` (order
+    /// and distances unchanged).
+    pub fn renumbered(mut self, renumber: impl Fn(u32) -> u32) -> Self {
+        for j in &mut self.index[..self.len] {
+            *j = renumber(*j);
+        }
+        self
+    }
+
     /// How many points the list keeps at most (`k`).
     pub fn capacity(&self) -> usize {
         self.k
@@ -285,6 +294,32 @@ impl SpatialGrid {
         p: Vec3,
         max_radius_m: f32,
         nearest: &mut Nearest,
+        accept: impl FnMut(usize, Vec3, f32) -> bool,
+    ) {
+        self.k_nearest_in::<false>(p, max_radius_m, nearest, accept);
+    }
+
+    /// [`Self::k_nearest`] in slot numbering: `accept` is given, and
+    /// `nearest` holds, slots ([`Self::slots`]) instead of the points'
+    /// indices. The same points in the same order (the slots are a
+    /// renumbering), for callers that keep their data in slot order so that
+    /// neighbours lie close together in memory.
+    pub fn k_nearest_slots(
+        &self,
+        p: Vec3,
+        max_radius_m: f32,
+        nearest: &mut Nearest,
+        accept: impl FnMut(usize, Vec3, f32) -> bool,
+    ) {
+        self.k_nearest_in::<true>(p, max_radius_m, nearest, accept);
+    }
+
+    /// [`Self::k_nearest`] (`BY_SLOT` false) or [`Self::k_nearest_slots`].
+    fn k_nearest_in<const BY_SLOT: bool>(
+        &self,
+        p: Vec3,
+        max_radius_m: f32,
+        nearest: &mut Nearest,
         mut accept: impl FnMut(usize, Vec3, f32) -> bool,
     ) {
         if self.sorted.is_empty() || !p.is_finite() || nearest.k == 0 {
@@ -329,7 +364,7 @@ impl SpatialGrid {
                 (x_lo, x_hi)
             };
             let slots = self.row_slots(x_lo, x_hi, y, z);
-            self.scan(slots, p, max_radius_sq_m2, nearest, &mut accept);
+            self.scan::<BY_SLOT>(slots, p, max_radius_sq_m2, nearest, &mut accept);
         };
         // Rings 0 and 1 (the 3×3×3 block) row by row, nearest rows first, so
         // the k-th distance shrinks early and prunes the rest.
@@ -374,7 +409,7 @@ impl SpatialGrid {
             let shell_rows = (2 * ring + 1) * (2 * ring + 1);
             if (shell_rows as usize) * ROW_COST_IN_POINTS > self.sorted.len() {
                 *nearest = Nearest::new(nearest.k);
-                self.scan(
+                self.scan::<BY_SLOT>(
                     0..self.sorted.len(),
                     p,
                     max_radius_sq_m2,
@@ -407,7 +442,7 @@ impl SpatialGrid {
     /// Offers to `nearest` the points of `slots` within `max_radius_sq_m2` of
     /// `p` that are nearer than its k-th and that `accept` takes, computing
     /// distances four at a time.
-    fn scan(
+    fn scan<const BY_SLOT: bool>(
         &self,
         slots: std::ops::Range<usize>,
         p: Vec3,
@@ -420,7 +455,11 @@ impl SpatialGrid {
         let zs = &self.sorted_z_m[slots.clone()];
         let mut offer = |k: usize, d2: f32, nearest: &mut Nearest| {
             if d2 <= max_radius_sq_m2 && d2 < nearest.bound_sq_m2 {
-                let j = self.sorted[slots.start + k] as usize;
+                let j = if BY_SLOT {
+                    slots.start + k
+                } else {
+                    self.sorted[slots.start + k] as usize
+                };
                 if accept(j, Vec3::new(xs[k], ys[k], zs[k]), d2) && !nearest.contains(j) {
                     nearest.offer(j, d2);
                 }
