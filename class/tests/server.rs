@@ -67,6 +67,22 @@ async fn start(url: &str, config: shoal_class::Config) -> Server {
     Server { addr, pool, task }
 }
 
+/// A server on the first backend whose `--dist` is a fresh folder holding `files`
+/// (name, contents).
+async fn start_with_dist(folder: &str, files: &[(&str, &str)]) -> Server {
+    let dir = std::env::temp_dir().join(format!("{folder}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (name, text) in files {
+        std::fs::write(dir.join(name), text).unwrap();
+    }
+    let url = backends().await.remove(0);
+    let config = shoal_class::Config {
+        dist: dir,
+        ..Default::default()
+    };
+    start(&url, config).await
+}
+
 impl Server {
     async fn stop(self) {
         self.task.abort();
@@ -610,22 +626,8 @@ async fn expired_classes_are_deleted_and_recent_ones_kept() {
 
 #[tokio::test]
 async fn every_response_carries_the_strict_csp() {
-    let dir = std::env::temp_dir().join(format!("shoal-class-dist-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    std::fs::write(
-        dir.join("index.html"),
-        "<!doctype html><title>Shoal</title>",
-    )
-    .unwrap();
-    let url = backends().await.remove(0);
-    let server = start(
-        &url,
-        shoal_class::Config {
-            dist: dir,
-            ..Default::default()
-        },
-    )
-    .await;
+    let index = ("index.html", "<!doctype html><title>Shoal</title>");
+    let server = start_with_dist("shoal-class-dist", &[index]).await;
     for path in ["/", "/index.html", "/api/classes/XXXXXX/csv"] {
         let r = reqwest::get(format!("http://{}{path}", server.addr))
             .await
@@ -654,24 +656,12 @@ async fn every_response_carries_the_strict_csp() {
 /// brotli (the copy's bytes, `Content-Encoding: br`), and as themselves otherwise.
 #[tokio::test]
 async fn the_app_s_files_go_out_precompressed_where_the_browser_accepts_it() {
-    let dir = std::env::temp_dir().join(format!("shoal-class-br-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    std::fs::write(
-        dir.join("index.html"),
-        "<!doctype html><title>Shoal</title>",
-    )
-    .unwrap();
-    std::fs::write(dir.join("app.js"), "the file itself").unwrap();
-    std::fs::write(dir.join("app.js.br"), "its brotli copy").unwrap();
-    let url = backends().await.remove(0);
-    let server = start(
-        &url,
-        shoal_class::Config {
-            dist: dir,
-            ..Default::default()
-        },
-    )
-    .await;
+    let files = [
+        ("index.html", "<!doctype html><title>Shoal</title>"),
+        ("app.js", "the file itself"),
+        ("app.js.br", "its brotli copy"),
+    ];
+    let server = start_with_dist("shoal-class-br", &files).await;
     let client = reqwest::Client::new();
     let get = |encoding: &'static str| {
         client
