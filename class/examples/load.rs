@@ -68,7 +68,10 @@ async fn main() {
     }
     let dist = std::env::temp_dir().join(format!("shoal-class-load-dist-{}", std::process::id()));
     let _ = std::fs::create_dir_all(&dist);
-    let _ = std::fs::write(dist.join("index.html"), "<!doctype html><title>load</title>");
+    let _ = std::fs::write(
+        dist.join("index.html"),
+        "<!doctype html><title>load</title>",
+    );
     let spec = loadkit::ServerSpec {
         binary: args.server.clone(),
         database: args.database.clone(),
@@ -110,7 +113,12 @@ async fn main() {
     println!("| message | count | p50 ms | p99 ms | max ms |");
     println!("| --- | --- | --- | --- | --- |");
     for (kind, (n, p50, p99, max)) in &r.by_kind {
-        println!("| {kind} | {n} | {} | {} | {} |", ms(*p50), ms(*p99), ms(*max));
+        println!(
+            "| {kind} | {n} | {} | {} | {} |",
+            ms(*p50),
+            ms(*p99),
+            ms(*max)
+        );
     }
     println!("errors received: {:?}", r.errors);
     println!(

@@ -50,16 +50,38 @@ impl Default for Config {
     }
 }
 
+/// Whose view a change of a class alters: every connection of the class; the
+/// teacher's and the connections of one student (their own record); or a
+/// prediction: the teacher's, and the students' once the counts are revealed.
+#[derive(Clone, Debug)]
+pub enum Change {
+    Everyone,
+    Student(Arc<str>),
+    Prediction,
+}
+
+impl Change {
+    /// Whether a connection playing `role` must send a fresh view; `revealed`:
+    /// whether the last view it sent showed the prediction counts.
+    fn concerns(&self, role: &Role, revealed: bool) -> bool {
+        match (self, role) {
+            (Change::Everyone, _) | (_, Role::Teacher { .. }) => true,
+            (Change::Student(changed), Role::Student { id, .. }) => **changed == **id,
+            (Change::Prediction, Role::Student { .. }) => revealed,
+        }
+    }
+}
+
 /// Shared state: the pool and one change signal per live class.
 #[derive(Clone)]
 pub struct AppState {
     pool: AnyPool,
     config: Arc<Config>,
-    hubs: Arc<Mutex<HashMap<String, broadcast::Sender<()>>>>,
+    hubs: Arc<Mutex<HashMap<String, broadcast::Sender<Change>>>>,
 }
 
 impl AppState {
-    fn hub(&self, code: &str) -> broadcast::Sender<()> {
+    fn hub(&self, code: &str) -> broadcast::Sender<Change> {
         let mut hubs = self.hubs.lock().unwrap_or_else(|e| e.into_inner());
         hubs.retain(|_, tx| tx.receiver_count() > 0);
         hubs.entry(code.to_owned())
@@ -67,8 +89,8 @@ impl AppState {
             .clone()
     }
 
-    fn changed(&self, code: &str) {
-        let _ = self.hub(code).send(());
+    fn changed(&self, code: &str, change: Change) {
+        let _ = self.hub(code).send(change);
     }
 }
 
@@ -180,7 +202,7 @@ async fn delete_class(
     }
     match store::delete_class(&state.pool, &code).await {
         Ok(()) => {
-            state.changed(&code);
+            state.changed(&code, Change::Everyone);
             StatusCode::NO_CONTENT.into_response()
         }
         Err(e) => error_response(StatusCode::INTERNAL_SERVER_ERROR, e),
@@ -239,20 +261,35 @@ async fn connection(state: AppState, mut socket: WebSocket) {
         per_second: state.config.per_second,
     };
     let mut role: Option<Role> = None;
-    let mut changes: Option<broadcast::Receiver<()>> = None;
+    let mut changes: Option<broadcast::Receiver<Change>> = None;
+    // Whether the last view sent showed the prediction counts (a student's
+    // view then changes with every prediction).
+    let mut revealed = false;
     loop {
         let incoming = tokio::select! {
             m = socket.recv() => m,
             changed = async {
                 match changes.as_mut() {
-                    Some(rx) => rx.recv().await.map_err(|e| matches!(e, broadcast::error::RecvError::Closed)),
+                    Some(rx) => rx.recv().await,
                     None => std::future::pending().await,
                 }
             } => {
-                if changed == Err(true) { changes = None; continue; }
+                let concerns = match (&changed, &role) {
+                    (Err(broadcast::error::RecvError::Closed), _) => { changes = None; continue; }
+                    // Lagged: some changes were missed, so the view is redone.
+                    (Err(broadcast::error::RecvError::Lagged(_)), _) => true,
+                    (Ok(c), Some(r)) => c.concerns(r, revealed),
+                    (Ok(_), None) => false,
+                };
+                // Changes that arrived meanwhile are covered by the view read now.
+                let concerns = drain(&mut changes, role.as_ref(), revealed) || concerns;
+                if !concerns { continue; }
                 if let Some(r) = &role {
                     match store::view(&state.pool, r).await {
-                        Ok(v) => if !send(&mut socket, v).await { return },
+                        Ok(v) => {
+                            revealed = shows_counts(&v);
+                            if !send(&mut socket, v).await { return }
+                        }
                         Err(e) => if !send(&mut socket, e.to_json(None)).await { return },
                     }
                 }
@@ -311,8 +348,11 @@ async fn connection(state: AppState, mut socket: WebSocket) {
                     if changes.is_none() {
                         changes = Some(state.hub(r.code()).subscribe());
                     }
+                    // The view read now covers every change already signalled.
+                    drain(&mut changes, Some(r), revealed);
                     match store::view(&state.pool, r).await {
                         Ok(v) => {
+                            revealed = shows_counts(&v);
                             if !send(&mut socket, v).await {
                                 return;
                             }
@@ -330,6 +370,30 @@ async fn connection(state: AppState, mut socket: WebSocket) {
                     return;
                 }
             }
+        }
+    }
+}
+
+/// Whether a view carries the class's prediction counts (a revealed student view).
+fn shows_counts(view: &serde_json::Value) -> bool {
+    view["type"] == "you" && !view["histogram"].is_null()
+}
+
+/// Takes every change already waiting; says whether one concerns `role`.
+fn drain(
+    changes: &mut Option<broadcast::Receiver<Change>>,
+    role: Option<&Role>,
+    revealed: bool,
+) -> bool {
+    let Some(rx) = changes.as_mut() else {
+        return false;
+    };
+    let mut concerns = false;
+    loop {
+        match rx.try_recv() {
+            Ok(c) => concerns |= role.is_some_and(|r| c.concerns(r, revealed)),
+            Err(broadcast::error::TryRecvError::Lagged(_)) => concerns = true,
+            Err(_) => return concerns,
         }
     }
 }
@@ -355,7 +419,8 @@ async fn handle(
                 code: code.clone(),
                 id: joined.student_id.clone(),
             });
-            state.changed(code);
+            // A new student alters only the teacher's roster.
+            state.changed(code, Change::Student(joined.student_id.as_str().into()));
             Ok(
                 json!({"v": 1, "type": "joined", "re": message.id, "student_token": joined.token,
                       "join_order": joined.join_order, "seed": joined.seed, "setup": joined.setup}),
@@ -404,7 +469,15 @@ async fn handle(
         (Some(r), body) => {
             let r = r.clone();
             let reply = store::apply(&state.pool, &r, &message.id, body).await?;
-            state.changed(r.code());
+            // A student's step, result or answer alters only their own record
+            // (and the teacher's roster); a prediction may alter the histogram
+            // every student sees once revealed; a teacher's message, everyone's.
+            let change = match (&r, body) {
+                (Role::Student { .. }, Body::Predict { .. }) => Change::Prediction,
+                (Role::Teacher { .. }, _) => Change::Everyone,
+                (Role::Student { id, .. }, _) => Change::Student(id.as_str().into()),
+            };
+            state.changed(r.code(), change);
             if matches!(body, Body::DeleteClass {}) {
                 *role = None;
             }

@@ -436,66 +436,101 @@ fn results_json(list: Option<&Vec<(String, String, f64)>>) -> Value {
 pub async fn view(pool: &AnyPool, role: &Role) -> Result<Value, ServerError> {
     let code = role.code();
     let class = class_row(pool, code).await?;
+    if let Role::Student { id, .. } = role {
+        return student_view(pool, &class, id).await;
+    }
     let students = students(pool, code).await?;
-    let common = json!({
+    let common = state_json(&class);
+    let results = results(pool, code).await?;
+    let roster: Vec<Value> = students
+        .iter()
+        .map(|s| {
+            json!({
+                "join_order": s.join_order,
+                "nickname": (!class.anonymise).then_some(&s.nickname),
+                "seed": class.seed + s.join_order,
+                "step": s.step,
+                "prediction": s.prediction,
+                "answer": s.answer,
+                "results": results_json(results.get(&s.id)),
+            })
+        })
+        .collect();
+    Ok(
+        json!({"v": VERSION, "type": "class", "code": code, "seed": class.seed,
+              "setup": serde_json::from_str::<Value>(&class.setup).unwrap_or(Value::Null),
+              "anonymise": class.anonymise, "state": common, "roster": roster,
+              "histogram": histogram(&students)}),
+    )
+}
+
+fn state_json(class: &ClassRow) -> Value {
+    json!({
         "held_step": class.held_step,
         "paused": class.paused,
         "setting": class.setting.as_deref().and_then(|s| serde_json::from_str::<Value>(s).ok()),
         "revealed": class.revealed,
-    });
-    match role {
-        Role::Teacher { .. } => {
-            let results = results(pool, code).await?;
-            let roster: Vec<Value> = students
-                .iter()
-                .map(|s| {
-                    json!({
-                        "join_order": s.join_order,
-                        "nickname": (!class.anonymise).then_some(&s.nickname),
-                        "seed": class.seed + s.join_order,
-                        "step": s.step,
-                        "prediction": s.prediction,
-                        "answer": s.answer,
-                        "results": results_json(results.get(&s.id)),
-                    })
-                })
-                .collect();
-            Ok(
-                json!({"v": VERSION, "type": "class", "code": code, "seed": class.seed,
-                      "setup": serde_json::from_str::<Value>(&class.setup).unwrap_or(Value::Null),
-                      "anonymise": class.anonymise, "state": common, "roster": roster,
-                      "histogram": histogram(&students)}),
-            )
+    })
+}
+
+/// A student's view: their own row and results, and the class's prediction
+/// counts once revealed (read only then: under load every query counts).
+async fn student_view(pool: &AnyPool, class: &ClassRow, id: &str) -> Result<Value, ServerError> {
+    let me = sqlx::query(
+        "SELECT nickname, join_order, step, prediction, answer, class_code FROM students WHERE id = $1",
+    )
+    .bind(id)
+    .fetch_optional(pool)
+    .await?
+    .ok_or_else(|| {
+        ServerError::new(
+            ErrorCode::Forbidden,
+            "this student is no longer in the class",
+        )
+    })?;
+    let join_order: i64 = me.try_get("join_order")?;
+    let mine = sqlx::query(
+        "SELECT levels, measure, value FROM results WHERE student_id = $1 ORDER BY client_id, measure",
+    )
+    .bind(id)
+    .fetch_all(pool)
+    .await?;
+    let mine: Vec<(String, String, f64)> = mine
+        .iter()
+        .map(|r| {
+            Ok((
+                r.try_get("levels")?,
+                r.try_get("measure")?,
+                r.try_get("value")?,
+            ))
+        })
+        .collect::<Result<_, sqlx::Error>>()?;
+    let histogram = if class.revealed {
+        let code: String = me.try_get("class_code")?;
+        let rows = sqlx::query("SELECT prediction, COUNT(*) AS n FROM students WHERE class_code = $1 AND prediction IS NOT NULL GROUP BY prediction")
+            .bind(&code)
+            .fetch_all(pool)
+            .await?;
+        let mut h = BTreeMap::new();
+        for row in &rows {
+            h.insert(
+                row.try_get::<String, _>("prediction")?,
+                row.try_get::<i64, _>("n")?,
+            );
         }
-        Role::Student { id, .. } => {
-            let me = students.iter().find(|s| &s.id == id).ok_or_else(|| {
-                ServerError::new(
-                    ErrorCode::Forbidden,
-                    "this student is no longer in the class",
-                )
-            })?;
-            let mine = sqlx::query("SELECT levels, measure, value FROM results WHERE student_id = $1 ORDER BY client_id, measure")
-                .bind(id)
-                .fetch_all(pool)
-                .await?;
-            let mine: Vec<(String, String, f64)> = mine
-                .iter()
-                .map(|r| {
-                    Ok((
-                        r.try_get("levels")?,
-                        r.try_get("measure")?,
-                        r.try_get("value")?,
-                    ))
-                })
-                .collect::<Result<_, sqlx::Error>>()?;
-            let revealed = class.revealed.then(|| histogram(&students));
-            Ok(json!({"v": VERSION, "type": "you", "state": common,
-                      "me": {"join_order": me.join_order, "nickname": me.nickname, "seed": class.seed + me.join_order,
-                             "step": me.step, "prediction": me.prediction, "answer": me.answer,
-                             "results": results_json(Some(&mine))},
-                      "histogram": revealed}))
-        }
-    }
+        json!(h)
+    } else {
+        Value::Null
+    };
+    Ok(
+        json!({"v": VERSION, "type": "you", "state": state_json(class),
+              "me": {"join_order": join_order, "nickname": me.try_get::<String, _>("nickname")?,
+                     "seed": class.seed + join_order, "step": me.try_get::<String, _>("step")?,
+                     "prediction": me.try_get::<Option<String>, _>("prediction")?,
+                     "answer": me.try_get::<Option<String>, _>("answer")?,
+                     "results": results_json(Some(&mine))},
+              "histogram": histogram}),
+    )
 }
 
 fn csv_field(text: &str) -> String {

@@ -280,7 +280,12 @@ impl Agent {
             if !first {
                 self.reconnects += 1;
                 self.stats.reconnects.fetch_add(1, Ordering::SeqCst);
-                let start = self.stats.start.lock().unwrap().unwrap_or_else(Instant::now);
+                let start = self
+                    .stats
+                    .start
+                    .lock()
+                    .unwrap()
+                    .unwrap_or_else(Instant::now);
                 self.stats
                     .last_back_ms
                     .fetch_max(start.elapsed().as_millis() as u64, Ordering::SeqCst);
@@ -415,7 +420,10 @@ impl Agent {
         if self.pump(&|a| a.pending.is_empty(), self.deadline).await? {
             Ok(())
         } else {
-            Err(format!("{} messages never acknowledged", self.pending.len()))
+            Err(format!(
+                "{} messages never acknowledged",
+                self.pending.len()
+            ))
         }
     }
 
@@ -434,9 +442,10 @@ impl Agent {
         let lost = self.pending.len();
         if lost > 0 {
             self.stats.lost.fetch_add(lost, Ordering::SeqCst);
-            self.stats
-                .in_flight
-                .fetch_sub(lost.min(self.stats.in_flight.load(Ordering::SeqCst)), Ordering::SeqCst);
+            self.stats.in_flight.fetch_sub(
+                lost.min(self.stats.in_flight.load(Ordering::SeqCst)),
+                Ordering::SeqCst,
+            );
         }
         self.ws = None;
     }
@@ -476,18 +485,23 @@ async fn student(
     let joined = a.connect().await?;
     let token = joined["student_token"].as_str().unwrap_or("").to_owned();
     let join_order = joined["join_order"].as_i64().unwrap_or(-1);
-    a.hello = json!({"v": 1, "id": "resume", "type": "resume", "code": code, "student_token": token});
+    a.hello =
+        json!({"v": 1, "id": "resume", "type": "resume", "code": code, "student_token": token});
     let prediction = ["fewer", "about the same", "more"][index % 3].to_owned();
     let answer = format!("The school saw the shark sooner ({nickname}).");
     let outcome = async {
         a.think(plan.think_ms).await?;
-        a.send("step", json!({"type": "step", "step": "look"})).await;
+        a.send("step", json!({"type": "step", "step": "look"}))
+            .await;
         a.think(plan.think_ms).await?;
         a.send("step", json!({"type": "step", "step": "predict"}))
             .await;
         a.think(plan.think_ms).await?;
-        a.send("predict", json!({"type": "predict", "prediction": prediction}))
-            .await;
+        a.send(
+            "predict",
+            json!({"type": "predict", "prediction": prediction}),
+        )
+        .await;
         a.acked().await?;
         let released = |a: &Agent| held_at(&a.view).as_deref() != Some("predict");
         if !a.pump(&released, deadline).await? {
@@ -514,12 +528,8 @@ async fn student(
             .await;
         }
         a.acked().await?;
-        let released = |a: &Agent| {
-            !matches!(
-                held_at(&a.view).as_deref(),
-                Some("predict") | Some("run")
-            )
-        };
+        let released =
+            |a: &Agent| !matches!(held_at(&a.view).as_deref(), Some("predict") | Some("run"));
         if !a.pump(&released, deadline).await? {
             return Err("never released from run".to_string());
         }
@@ -560,7 +570,8 @@ async fn teacher(
     everyone_done: Arc<AtomicBool>,
     deadline: Instant,
 ) -> Result<(), String> {
-    let hello = json!({"v": 1, "id": "hello", "type": "teacher", "code": code, "teacher_token": token});
+    let hello =
+        json!({"v": 1, "id": "hello", "type": "teacher", "code": code, "teacher_token": token});
     let mut a = Agent::new(&url, hello, stats, deadline);
     a.connect().await?;
     let n = plan.students;
@@ -597,8 +608,9 @@ async fn teacher(
                 return Err("not every result arrived".to_string());
             }
             a.send("teacher", json!({"type": "release"})).await;
-            let all_explained =
-                |a: &Agent| a.pending.is_empty() && roster(&a.view).iter().all(|s| s["answer"].is_string());
+            let all_explained = |a: &Agent| {
+                a.pending.is_empty() && roster(&a.view).iter().all(|s| s["answer"].is_string())
+            };
             if !a.pump(&all_explained, deadline).await? {
                 return Err("not every answer arrived".to_string());
             }
@@ -903,11 +915,20 @@ pub async fn run(plan: &Plan, spec: &ServerSpec) -> Result<Report, String> {
             ));
         }
         // The roster from a fresh teacher connection.
-        let hello = json!({"v": 1, "id": "check", "type": "teacher", "code": code, "teacher_token": token});
-        let mut a = Agent::new(&url, hello, stats.clone(), Instant::now() + Duration::from_secs(60));
+        let hello =
+            json!({"v": 1, "id": "check", "type": "teacher", "code": code, "teacher_token": token});
+        let mut a = Agent::new(
+            &url,
+            hello,
+            stats.clone(),
+            Instant::now() + Duration::from_secs(60),
+        );
         a.connect().await?;
         let got_view = a
-            .pump(&|a| a.view["type"] == "class", Instant::now() + Duration::from_secs(30))
+            .pump(
+                &|a| a.view["type"] == "class",
+                Instant::now() + Duration::from_secs(30),
+            )
             .await?;
         let roster = roster(&a.view);
         if !got_view || roster.len() != plan.students {
@@ -921,7 +942,9 @@ pub async fn run(plan: &Plan, spec: &ServerSpec) -> Result<Report, String> {
                     && r["answer"] == json!(s.answer)
             });
             if !ok {
-                stats.fail(format!("{code}: roster entry {order} differs from what was sent"));
+                stats.fail(format!(
+                    "{code}: roster entry {order} differs from what was sent"
+                ));
             }
         }
         a.close();
