@@ -7,6 +7,7 @@
 //! The protocol's logic is `crate::class` (pure, tested natively); the
 //! WebSocket, `fetch` and the browser's storage are `web/class_net.rs`.
 
+use eframe::egui;
 use serde_json::{Value, json};
 
 use crate::class::session::{Link, Session, Student, Teacher, Who};
@@ -407,8 +408,9 @@ impl ClassPanel {
             }
             Some(s) => {
                 let line = status_text(s, ui.input(|i| i.time));
+                let teacher = s.is_teacher();
                 ui.label(line);
-                if s.is_teacher() {
+                if teacher {
                     let b = ui.button(ts("class-dashboard"));
                     rects.insert("class_dashboard", b.rect);
                     if b.clicked() {
@@ -651,7 +653,7 @@ impl ClassPanel {
         let mut open = true;
         let screen = ctx.content_rect();
         let shown = egui::Window::new(ts("class-dashboard"))
-            .id(egui::Id::new("class_dashboard"))
+            .id(egui::Id::unique("class_dashboard"))
             .open(&mut open)
             .default_width(560.0_f32.min(screen.width() - 24.0))
             .default_pos(screen.right_top() + egui::vec2(-590.0, 40.0))
@@ -946,13 +948,14 @@ impl ClassPanel {
                 Some(reply) => {
                     let answer = reply.borrow_mut().take();
                     if let Some(answer) = answer {
+                        let kept = self.session.is_some();
                         // No answer at all (the network is down) with a class
                         // this browser kept: it is the class server, offline;
                         // the work goes on and waits to be sent.
                         self.server = Some(match answer {
                             Ok((200, body)) => crate::class::view::is_class_server(&body),
                             Ok(_) => false,
-                            Err(_) => self.session.is_some(),
+                            Err(_) => kept,
                         });
                         self.net.info = None;
                         if self.server == Some(false) {
@@ -978,25 +981,30 @@ impl ClassPanel {
                 Err(_) => s.on_close(now),
             }
         }
-        if let Some(socket) = &self.net.socket {
-            let mut out = Vec::new();
-            let mut closed = false;
-            for event in socket.drain() {
-                match event {
-                    net::SocketEvent::Open => out.extend(s.on_open()),
-                    net::SocketEvent::Message(text) => out.extend(s.on_message(&text, now)),
-                    net::SocketEvent::Closed => {
-                        s.on_close(now);
-                        closed = true;
-                    }
+        let events = self
+            .net
+            .socket
+            .as_ref()
+            .map(net::Socket::drain)
+            .unwrap_or_default();
+        let mut out = Vec::new();
+        let mut closed = false;
+        for event in events {
+            match event {
+                net::SocketEvent::Open => out.extend(s.on_open()),
+                net::SocketEvent::Message(text) => out.extend(s.on_message(&text, now)),
+                net::SocketEvent::Closed => {
+                    s.on_close(now);
+                    closed = true;
                 }
             }
-            out.extend(s.poll(now));
+        }
+        out.extend(s.poll(now));
+        if closed {
+            self.net.socket = None;
+        } else if let Some(socket) = &self.net.socket {
             for frame in out {
                 socket.send(&frame);
-            }
-            if closed {
-                self.net.socket = None;
             }
         }
         let s = self.session.as_ref();
@@ -1007,10 +1015,12 @@ impl ClassPanel {
     }
 
     fn started(&mut self, ctx: &egui::Context) {
-        let Some((reply, _)) = &self.net.starting else {
-            return;
-        };
-        let Some(answer) = reply.borrow_mut().take() else {
+        let Some(answer) = self
+            .net
+            .starting
+            .as_ref()
+            .and_then(|(r, _)| r.borrow_mut().take())
+        else {
             return;
         };
         self.net.starting = None;
@@ -1042,9 +1052,8 @@ impl ClassPanel {
     }
 
     fn downloads(&mut self, actions: &mut Vec<ClassAction>) {
-        if let Some(reply) = &self.net.csv
-            && let Some(answer) = reply.borrow_mut().take()
-        {
+        let csv = self.net.csv.as_ref().and_then(|r| r.borrow_mut().take());
+        if let Some(answer) = csv {
             match answer {
                 Ok((200, csv)) => {
                     let name = format!("shoal-class-{}.csv", self.session.as_ref().map_or("", Session::code)); // words: a file name
@@ -1060,9 +1069,8 @@ impl ClassPanel {
             }
             self.net.csv = None;
         }
-        if let Some(reply) = &self.net.delete
-            && let Some(answer) = reply.borrow_mut().take()
-        {
+        let deleted = self.net.delete.as_ref().and_then(|r| r.borrow_mut().take());
+        if let Some(answer) = deleted {
             self.net.delete = None;
             match answer {
                 Ok((204, _)) => {

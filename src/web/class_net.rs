@@ -7,6 +7,7 @@ use std::cell::RefCell;
 use std::collections::VecDeque;
 use std::rc::Rc;
 
+use eframe::egui;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::closure::Closure;
 
@@ -73,10 +74,6 @@ impl Socket {
     /// The events since the last call.
     pub fn drain(&self) -> Vec<SocketEvent> {
         self.events.borrow_mut().drain(..).collect()
-    }
-
-    pub fn close(&self) {
-        let _ = self.ws.close();
     }
 }
 
