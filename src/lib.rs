@@ -16,6 +16,7 @@ pub mod automation;
 pub mod bench;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod census;
+pub mod class;
 pub mod clock;
 pub mod experiment;
 pub mod export;

@@ -109,6 +109,7 @@ pub fn app(pool: AnyPool, config: Config) -> Router {
         .precompressed_gzip()
         .fallback(ServeFile::new(dist.join("index.html")));
     Router::new()
+        .route("/api/info", get(info))
         .route("/api/classes", post(start_class))
         .route("/api/classes/{code}", axum::routing::delete(delete_class))
         .route("/api/classes/{code}/csv", get(class_csv))
@@ -134,6 +135,12 @@ pub fn app(pool: AnyPool, config: Config) -> Router {
 /// students, results and messages). Returns how many classes went.
 pub async fn delete_expired(pool: &AnyPool, keep_days: u32) -> Result<u64, sqlx::Error> {
     store::delete_older_than(pool, store::now() - i64::from(keep_days) * 86_400).await
+}
+
+/// `GET /api/info`: tells the web app that a class server (and which protocol)
+/// serves it, so the app shows its class features only then.
+async fn info() -> Json<serde_json::Value> {
+    Json(json!({"server": "shoal-class", "protocol": protocol::VERSION}))
 }
 
 fn error_response(status: StatusCode, err: ServerError) -> Response {

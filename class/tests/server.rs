@@ -624,6 +624,26 @@ async fn expired_classes_are_deleted_and_recent_ones_kept() {
     }
 }
 
+/// The web app asks `/api/info` at start to know that a class server serves it
+/// (a static copy answers with `index.html` or nothing, and the app then hides
+/// its class features).
+#[tokio::test]
+async fn the_info_route_names_the_server_and_its_protocol() {
+    let index = ("index.html", "<!doctype html><title>Shoal</title>");
+    let server = start_with_dist("shoal-class-info", &[index]).await;
+    let r = reqwest::get(format!("http://{}/api/info", server.addr))
+        .await
+        .unwrap();
+    assert_eq!(r.status(), 200);
+    assert!(r.headers()["content-type"]
+        .to_str()
+        .unwrap()
+        .starts_with("application/json"));
+    let v: Value = r.json().await.unwrap();
+    assert_eq!(v, json!({"server": "shoal-class", "protocol": 1}));
+    server.stop().await;
+}
+
 #[tokio::test]
 async fn every_response_carries_the_strict_csp() {
     let index = ("index.html", "<!doctype html><title>Shoal</title>");

@@ -25,8 +25,13 @@ impl ShoalApp {
         let investigation = investigation_link::from_url(&url);
         let experiment = experiment_link::from_url(&url);
         self.page_url = Some(crate::settings::share_link::without_query(
-            &experiment_link::without_experiment(&investigation_link::without_investigation(&url)),
-            crate::ui::language::KEY,
+            &crate::settings::share_link::without_query(
+                &experiment_link::without_experiment(&investigation_link::without_investigation(
+                    &url,
+                )),
+                crate::ui::language::KEY,
+            ),
+            "class", // words: the join link's key (ui/class_panel.rs)
         ));
         match investigation {
             Some(Ok(investigation)) => {
@@ -343,5 +348,73 @@ impl ShoalApp {
     /// The learned controllers in use, as JSON (`shoal.save_controllers()`).
     pub fn controllers_json(&self) -> Result<String, crate::ui::SaveControllersError> {
         crate::ui::controllers_json(&self.lab)
+    }
+}
+
+impl ShoalApp {
+    /// The page's class link: `?class=CODE` opens the join window, a teacher
+    /// link's fragment (`#teacher=CODE.TOKEN`) the dashboard; a class this
+    /// browser was in comes back (issue 37).
+    pub fn open_class_from_page(&mut self, url: &str, fragment: &str) {
+        self.class.open_from_page(url, fragment);
+    }
+
+    /// `shoal.class()`: the class as this page sees it (read only).
+    pub fn class_report(&self) -> serde_json::Value {
+        self.class.report()
+    }
+
+    /// Carries out what the class asks: open the lesson with the student's
+    /// seed, apply a setting the teacher sent (as `shoal.set()` does, the
+    /// studio's locks holding), pause or play, tell something.
+    pub(super) fn class_actions(&mut self, actions: Vec<crate::ui::class_panel::ClassAction>) {
+        use crate::ui::class_panel::ClassAction;
+        for action in actions {
+            let done = match action {
+                ClassAction::OpenLesson { setup, seed } => self.open_class_lesson(&setup, seed),
+                ClassAction::ApplySetting(patch) => self
+                    .run_command(Command::Set(patch))
+                    .map_err(|e| e.to_string()),
+                ClassAction::Pause(paused) => self
+                    .run_command(if paused {
+                        Command::Pause
+                    } else {
+                        Command::Play
+                    })
+                    .map_err(|e| e.to_string()),
+                ClassAction::Notice(notice) => {
+                    self.notice = Some(notice);
+                    Ok(())
+                }
+            };
+            if let Err(err) = done {
+                self.notice = Some(Notice::error(err));
+            }
+        }
+    }
+
+    /// A class's lesson on this student's seed: `{"investigation": id}` or
+    /// `{"studio": <share link's settings>}`.
+    fn open_class_lesson(&mut self, setup: &serde_json::Value, seed: u64) -> Result<(), String> {
+        let seed_patch = serde_json::json!({ "seed": seed });
+        if let Some(id) = setup.get("investigation").and_then(|v| v.as_str()) {
+            let investigation = crate::investigation::INVESTIGATIONS
+                .iter()
+                .find(|i| i.id == id)
+                .ok_or_else(|| crate::tr!("class-unknown-lesson", lesson = id.to_owned()))?;
+            return self
+                .open_investigation(investigation, Some(&seed_patch))
+                .map_err(|e| e.to_string());
+        }
+        if let Some(link) = setup.get("studio").and_then(|v| v.as_str()) {
+            let mut settings = crate::settings::share_link::decode(link)
+                .map_err(|e| e.to_string())?
+                .ok_or_else(|| crate::tr!("class-unknown-lesson", lesson = link.to_owned()))?;
+            settings.seed = seed;
+            self.lab.apply_settings(settings);
+            self.ctx.request_repaint();
+            return Ok(());
+        }
+        Err(crate::tr!("class-unknown-lesson", lesson = setup.to_string()))
     }
 }

@@ -91,6 +91,9 @@ pub struct ShoalApp {
     studio: crate::ui::StudioPanel,
     /// The guided investigation under way and the session's record.
     investigations: crate::ui::InvestigationPanel,
+    /// A class together (issue 37): shown only when a class server serves
+    /// the page.
+    class: crate::ui::class_panel::ClassPanel,
     /// What the screen reader's live region says about the tank, and when.
     narrator: crate::a11y::describe::Narrator,
     /// Say what the selected animal does on the next frame (it was just
@@ -152,6 +155,7 @@ impl ShoalApp {
             experiment: crate::ui::ExperimentPanel::default(),
             studio: crate::ui::StudioPanel::default(),
             investigations: crate::ui::InvestigationPanel::default(),
+            class: crate::ui::class_panel::ClassPanel::default(),
             narrator: Default::default(),
             describe_selection: false,
             keys_open: false,
@@ -327,6 +331,11 @@ impl eframe::App for ShoalApp {
             crate::web::page::mark_first_frame();
         }
 
+        let class_actions = self.class.frame(&self.ctx, now_secs);
+        self.class_actions(class_actions);
+        self.investigations
+            .set_class_hold(self.class.held_step());
+
         self.choose_screen_layout();
         let status = self.state_report();
         self.narrate(&status, now_secs);
@@ -383,6 +392,7 @@ impl eframe::App for ShoalApp {
                         .for_scene(settings.scene)
                         .offers_experiment();
                     crate::ui::investigations_button(ui, experiment, &mut self.widget_rects);
+                    self.class.side_ui(ui, &mut self.widget_rects);
                     actions.extend(control_panel_ui(
                         ui,
                         &mut settings,
@@ -455,6 +465,10 @@ impl eframe::App for ShoalApp {
         {
             self.notice = Some(notice);
         }
+        let class_actions =
+            self.class
+                .windows_ui(ui.ctx(), &settings, &page_url, &mut self.widget_rects);
+        self.class_actions(class_actions);
         let mut run_investigation = false;
         for action in self.investigations.windows_ui(
             ui.ctx(),
@@ -480,6 +494,8 @@ impl eframe::App for ShoalApp {
         if run_investigation && let Err(err) = self.investigations.start_run(&mut self.lab) {
             self.notice = Some(Notice::error(err));
         }
+        self.class
+            .report_investigation(self.investigations.report().as_ref());
         if watch {
             // The run from its start, as the experiment ran it.
             self.lab.reset(None);

@@ -159,6 +159,9 @@ pub struct InvestigationPanel {
     /// The student's name for the record, as typed; `None` until read from
     /// this browser's memory.
     student: Option<String>,
+    /// The class step the teacher holds the class at (issue 37), if the
+    /// student is in a class: the window does not go beyond it.
+    class_hold: Option<String>,
 }
 
 impl InvestigationPanel {
@@ -190,6 +193,28 @@ impl InvestigationPanel {
             self.done.push(p);
         }
         self.window_open = false;
+    }
+
+    /// The teacher holds the class at `step` (`None`: no hold, or no class).
+    pub fn set_class_hold(&mut self, step: Option<String>) {
+        self.class_hold = step;
+    }
+
+    /// May the student go on to the class step `step` (look, predict, run,
+    /// explain)? Shows why not under the button when held.
+    fn may_go_to(&self, ui: &mut egui::Ui, step: &str) -> bool {
+        let held = self.class_hold.as_deref();
+        let ok = crate::class::may_go_to(step, held);
+        if !ok && let Some(held) = held {
+            let name = match held {
+                "look" => ts("class-step-look"),
+                "predict" => ts("class-step-predict"),
+                "run" => ts("class-step-run"),
+                _ => ts("class-step-explain"),
+            };
+            ui.label(egui::RichText::new(tr!("class-held", step = name)).strong());
+        }
+        ok
     }
 
     /// The id of the investigation open, for links.
@@ -507,7 +532,8 @@ impl InvestigationPanel {
             Step::Intro => {
                 let inv = p.investigation;
                 ui.label(inv.intro.text());
-                let r = ui.button(ts("inv-next-predict"));
+                let may = self.may_go_to(ui, "predict");
+                let r = ui.add_enabled(may, egui::Button::new(ts("inv-next-predict")));
                 rects.insert("investigation_next", r.rect);
                 if r.clicked()
                     && let Some(p) = &mut self.current
@@ -586,8 +612,9 @@ impl InvestigationPanel {
         }
         ui.label(egui::RichText::new(inv.run_hint.text()).weak());
         if !p.run_started {
+            let may = self.may_go_to(ui, "run");
             let r = ui
-                .add_enabled(p.can_run(), egui::Button::new(ts("inv-run")))
+                .add_enabled(p.can_run() && may, egui::Button::new(ts("inv-run")))
                 .on_hover_text(ts("inv-run.help"));
             rects.insert("investigation_run", r.rect);
             if r.clicked() {
@@ -629,7 +656,8 @@ impl InvestigationPanel {
             timelines_ui(ui, &outcome.timelines, last[0]);
         }
         ui.label(egui::RichText::new(&outcome.verdict).strong());
-        let next = ui.button(ts("inv-next-explain"));
+        let may = self.may_go_to(ui, "explain");
+        let next = ui.add_enabled(may, egui::Button::new(ts("inv-next-explain")));
         rects.insert("investigation_next", next.rect);
         if next.clicked()
             && let Some(p) = &mut self.current

@@ -11,6 +11,7 @@ pub mod body_overlay;
 pub(crate) mod boids_attention;
 pub mod boids_panel;
 pub mod bottom_panel;
+pub mod class_panel;
 mod control_panel;
 mod experiment_panel;
 mod experiment_plot;

@@ -15,7 +15,7 @@ type Method =
 /// Installs `window.shoal`.
 pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
     let api = Object::new();
-    let methods: [(&str, Box<Method>); 29] = [
+    let methods: [(&str, Box<Method>); 30] = [
         (
             "state",
             Box::new(|app, _| {
@@ -58,6 +58,12 @@ pub fn install(runner: &WebRunner) -> Result<(), JsValue> {
         (
             "investigations",
             Box::new(|_, _| to_json(&crate::investigation::list())),
+        ),
+        (
+            // A class together (issue 37), read only: the server check, the
+            // role, the connection, messages waiting, the last view.
+            "class",
+            Box::new(|app, _| Ok(app.class_report())),
         ),
         (
             "investigation_record",

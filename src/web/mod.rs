@@ -3,6 +3,7 @@
 
 mod a11y_dom;
 mod api;
+pub(crate) mod class_net;
 pub(crate) mod page;
 mod recover;
 
@@ -107,8 +108,23 @@ pub async fn start() {
         page::media_matches("(prefers-reduced-motion: reduce)"),
         page::media_matches("(prefers-contrast: more)"),
     );
+    // A teacher link's fragment (`#teacher=CODE.TOKEN`, issue 37) is no share
+    // link: the class takes it, and it leaves the address bar at once (the
+    // dashboard is projected; the browser keeps the token in its storage).
+    let fragment = page::fragment();
+    let teacher_fragment = crate::ui::class_panel::parse_teacher_fragment(&fragment)
+        .is_some()
+        .then(|| fragment.clone());
+    if teacher_fragment.is_some()
+        && let Some(url) = page::url_without_fragment()
+    {
+        page::replace_address(&url);
+    }
     // A share link's settings, or the defaults and a notice saying why not.
-    let decoded = crate::settings::share_link::decode(&page::fragment());
+    let decoded = match &teacher_fragment {
+        Some(_) => Ok(None),
+        None => crate::settings::share_link::decode(&fragment),
+    };
     let link_settings = matches!(decoded, Ok(Some(_)));
     let (settings, link_error) = match decoded {
         Ok(settings) => (settings.unwrap_or_default(), None),
@@ -140,6 +156,7 @@ pub async fn start() {
                     app.show_info_notice(crate::ui::seeing::STARTED_PAUSED);
                 }
                 if let Some(url) = page::url_without_fragment() {
+                    app.open_class_from_page(&url, teacher_fragment.as_deref().unwrap_or(""));
                     app.set_page_url(url, link_settings);
                 }
                 if let Some(message) = link_error {
