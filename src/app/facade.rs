@@ -415,6 +415,9 @@ impl ShoalApp {
             self.ctx.request_repaint();
             return Ok(());
         }
-        Err(crate::tr!("class-unknown-lesson", lesson = setup.to_string()))
+        Err(crate::tr!(
+            "class-unknown-lesson",
+            lesson = setup.to_string()
+        ))
     }
 }

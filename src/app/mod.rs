@@ -333,8 +333,7 @@ impl eframe::App for ShoalApp {
 
         let class_actions = self.class.frame(&self.ctx, now_secs);
         self.class_actions(class_actions);
-        self.investigations
-            .set_class_hold(self.class.held_step());
+        self.investigations.set_class_hold(self.class.held_step());
 
         self.choose_screen_layout();
         let status = self.state_report();

@@ -50,7 +50,10 @@ fn a_refused_message_is_dropped_but_a_rate_limited_one_waits() {
     let mut out = Outbox::new("p");
     let a = out.push("step", json!({"step": "run"}));
     let b = out.push("result", json!({"levels": {}, "values": {"x": 1.0}}));
-    assert!(out.refused(b["id"].as_str().unwrap(), "rate_limited").is_none());
+    assert!(
+        out.refused(b["id"].as_str().unwrap(), "rate_limited")
+            .is_none()
+    );
     assert!(out.refused(b["id"].as_str().unwrap(), "internal").is_none());
     assert_eq!(out.len(), 2);
     let gone = out.refused(a["id"].as_str().unwrap(), "held").unwrap();
@@ -94,25 +97,29 @@ fn a_student_joins_then_resumes_and_resends_everything_unacknowledged() {
     );
     // Connected: a message goes at once; its ack clears it.
     let p = sent(&[s.send("predict", json!({"prediction": "fewer"})).unwrap()]);
-    s.on_message(&json!({"v":1,"type":"ack","re":resent[0]["id"]}).to_string(), 1.0);
+    s.on_message(
+        &json!({"v":1,"type":"ack","re":resent[0]["id"]}).to_string(),
+        1.0,
+    );
     assert_eq!(s.outbox.len(), 1);
     // The connection drops before the prediction's ack.
     s.on_close(2.0);
     assert_eq!(s.link(), Link::Closed);
     assert!(!s.should_connect(2.5));
     assert!(s.should_connect(3.0));
-    let r = s.send("result", json!({"levels": {}, "values": {"caught_school": 2.0}}));
+    let r = s.send(
+        "result",
+        json!({"levels": {}, "values": {"caught_school": 2.0}}),
+    );
     assert!(r.is_none());
     s.connecting();
     let hello = sent(&s.on_open());
     assert_eq!(hello[0]["type"], "resume");
     assert_eq!(hello[0]["student_token"], "tok");
-    let resent = sent(
-        &s.on_message(
-            &json!({"v":1,"type":"ack","re":hello[0]["id"]}).to_string(),
-            4.0,
-        ),
-    );
+    let resent = sent(&s.on_message(
+        &json!({"v":1,"type":"ack","re":hello[0]["id"]}).to_string(),
+        4.0,
+    ));
     // The prediction goes again with the same id (applied once by the server),
     // then the result.
     assert_eq!(resent.len(), 2);
@@ -236,11 +243,16 @@ fn the_views_parse_as_the_server_sends_them() {
         parse(r#"{"type":"class","code":5}"#),
         Incoming::Unreadable(_)
     ));
-    assert!(matches!(parse(r#"{"type":"ack"}"#), Incoming::Unreadable(_)));
+    assert!(matches!(
+        parse(r#"{"type":"ack"}"#),
+        Incoming::Unreadable(_)
+    ));
     assert!(view::is_class_server(
         r#"{"server":"shoal-class","protocol":1}"#
     ));
-    assert!(!view::is_class_server("<!doctype html><title>Shoal</title>"));
+    assert!(!view::is_class_server(
+        "<!doctype html><title>Shoal</title>"
+    ));
     assert!(!view::is_class_server(
         r#"{"server":"shoal-class","protocol":2}"#
     ));
@@ -284,9 +296,13 @@ fn the_pooled_result_keeps_its_interval_within_the_measure() {
 
 #[test]
 fn the_histogram_lists_the_most_chosen_first() {
-    let h = [("more".to_string(), 1), ("fewer".to_string(), 3), ("same".to_string(), 0)]
-        .into_iter()
-        .collect();
+    let h = [
+        ("more".to_string(), 1),
+        ("fewer".to_string(), 3),
+        ("same".to_string(), 0),
+    ]
+    .into_iter()
+    .collect();
     assert_eq!(
         stats::histogram_bars(&h),
         [("fewer".to_string(), 3), ("more".to_string(), 1)]
@@ -315,7 +331,10 @@ fn codes_and_nicknames_are_checked_as_the_server_checks_them() {
 #[test]
 fn an_investigation_s_outcome_reports_named_measured_numbers() {
     use crate::investigation::{Chart, INVESTIGATIONS, Outcome, outcome::Row};
-    let why = INVESTIGATIONS.iter().find(|i| i.id == "why-school").unwrap();
+    let why = INVESTIGATIONS
+        .iter()
+        .find(|i| i.id == "why-school")
+        .unwrap();
     let outcome = Outcome {
         summary: String::new(),
         verdict: String::new(),
@@ -341,6 +360,18 @@ fn an_investigation_s_outcome_reports_named_measured_numbers() {
     let values = result_values(why, &outcome);
     assert_eq!(values["caught_loners"], 7.0);
     assert_eq!(values["caught_school"], 3.0);
-    let other = INVESTIGATIONS.iter().find(|i| i.id != "why-school" && !matches!(i.measurement, crate::investigation::MeasurementKind::AlignmentOnOff{..})).unwrap();
-    assert_eq!(result_values(other, &outcome).keys().collect::<Vec<_>>(), ["row1", "row2"]);
+    let other = INVESTIGATIONS
+        .iter()
+        .find(|i| {
+            i.id != "why-school"
+                && !matches!(
+                    i.measurement,
+                    crate::investigation::MeasurementKind::AlignmentOnOff { .. }
+                )
+        })
+        .unwrap();
+    assert_eq!(
+        result_values(other, &outcome).keys().collect::<Vec<_>>(),
+        ["row1", "row2"]
+    );
 }

@@ -22,15 +22,20 @@ use crate::ui::{Notice, WidgetRects};
 use crate::web::class_net as net;
 
 /// Where this browser keeps a student's session (their token and unsent work).
+#[cfg(target_arch = "wasm32")]
 const STUDENT_KEY: &str = "shoal.class.student";
 /// Where this browser keeps the teacher's session (the teacher link's token).
+#[cfg(target_arch = "wasm32")]
 const TEACHER_KEY: &str = "shoal.class.teacher";
 
 /// What the class asks of the app.
 pub enum ClassAction {
     /// Open the class's lesson with this student's seed: an investigation by
     /// id, or a studio setup (a share link's settings).
-    OpenLesson { setup: Value, seed: u64 },
+    OpenLesson {
+        setup: Value,
+        seed: u64,
+    },
     /// The teacher sent a setting (a settings patch): applied as `shoal.set()`
     /// applies one, the studio's locks holding.
     ApplySetting(Value),
@@ -220,7 +225,10 @@ impl ClassPanel {
             Who::Teacher(_) => {
                 o.insert("role".into(), json!("teacher"));
                 if let Some(view) = &s.class {
-                    o.insert("view".into(), serde_json::to_value(view).unwrap_or_default());
+                    o.insert(
+                        "view".into(),
+                        serde_json::to_value(view).unwrap_or_default(),
+                    );
                     o.insert(
                         "pooled".into(),
                         serde_json::to_value(stats::pooled(&view.roster)).unwrap_or_default(),
@@ -233,7 +241,10 @@ impl ClassPanel {
                 o.insert("join_order".into(), json!(st.join_order));
                 o.insert("nickname".into(), json!(st.nickname));
                 if let Some(view) = &s.you {
-                    o.insert("view".into(), serde_json::to_value(view).unwrap_or_default());
+                    o.insert(
+                        "view".into(),
+                        serde_json::to_value(view).unwrap_or_default(),
+                    );
                 }
             }
         }
@@ -363,7 +374,8 @@ impl ClassPanel {
             }
         }
         let at = (report.step, report.prompt);
-        if matches!(report.step, Step::Explain | Step::Reveal) && self.reported.explain_at != Some(at)
+        if matches!(report.step, Step::Explain | Step::Reveal)
+            && self.reported.explain_at != Some(at)
         {
             let answer: String = report
                 .explanations
@@ -439,9 +451,7 @@ impl ClassPanel {
         }
         if let Some(state) = s.state() {
             if let Some(step) = &state.held_step {
-                ui.label(
-                    egui::RichText::new(tr!("class-held", step = step_name(step))).strong(),
-                );
+                ui.label(egui::RichText::new(tr!("class-held", step = step_name(step))).strong());
             }
             if state.paused {
                 ui.label(egui::RichText::new(ts("class-paused-notice")).strong());
@@ -738,7 +748,10 @@ impl ClassPanel {
                 self.send("hold", json!({"step": chosen}));
             }
             let release = ui
-                .add_enabled(state.held_step.is_some(), egui::Button::new(ts("class-release")))
+                .add_enabled(
+                    state.held_step.is_some(),
+                    egui::Button::new(ts("class-release")),
+                )
                 .on_hover_text(ts("class-release.help"));
             rects.insert("class_release", release.rect);
             if release.clicked() {
@@ -1056,14 +1069,25 @@ impl ClassPanel {
         if let Some(answer) = csv {
             match answer {
                 Ok((200, csv)) => {
-                    let name = format!("shoal-class-{}.csv", self.session.as_ref().map_or("", Session::code)); // words: a file name
-                    match super::save_text_file(&name, "text/csv", &csv, Some(ts("notice-csv-next"))) {
+                    let name = format!(
+                        "shoal-class-{}.csv",
+                        self.session.as_ref().map_or("", Session::code)
+                    ); // words: a file name
+                    match super::save_text_file(
+                        &name,
+                        "text/csv",
+                        &csv,
+                        Some(ts("notice-csv-next")),
+                    ) {
                         Ok(message) => actions.push(ClassAction::Notice(Notice::info(message))),
                         Err(e) => self.error = Some(e.to_string()),
                     }
                 }
                 Ok((status, body)) => {
-                    self.error = Some(tr!("class-download-failed", reason = format!("{status} {body}")));
+                    self.error = Some(tr!(
+                        "class-download-failed",
+                        reason = format!("{status} {body}")
+                    ));
                 }
                 Err(e) => self.error = Some(tr!("class-download-failed", reason = e)),
             }
@@ -1078,7 +1102,10 @@ impl ClassPanel {
                     self.leave();
                 }
                 Ok((status, body)) => {
-                    self.error = Some(tr!("class-delete-failed", reason = format!("{status} {body}")));
+                    self.error = Some(tr!(
+                        "class-delete-failed",
+                        reason = format!("{status} {body}")
+                    ));
                 }
                 Err(e) => self.error = Some(tr!("class-delete-failed", reason = e)),
             }
@@ -1147,8 +1174,7 @@ fn histogram_ui(ui: &mut egui::Ui, histogram: &std::collections::BTreeMap<String
                 egui::vec2(width * count as f32 / most, 14.0),
                 egui::Sense::hover(),
             );
-            ui.painter()
-                .rect_filled(rect, 2.0, super::palette::BLUE);
+            ui.painter().rect_filled(rect, 2.0, super::palette::BLUE);
             ui.label(count.to_string());
         });
     }
