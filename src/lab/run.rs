@@ -11,6 +11,7 @@ use crate::settings::{Settings, Side};
 use crate::sim::body::{MUSCLE_COUNT, NODE_COUNT};
 use crate::sim::learning::learning_lab::LearningLab;
 use crate::sim::reef::report::ReefCensus;
+use crate::sim::common::spare::release_spare;
 use crate::sim::scene::{SceneWorld, centre};
 
 /// Seconds of the selected fish's muscles and speed kept for the plots.
@@ -255,6 +256,8 @@ impl Run {
     fn snapshot(&mut self) {
         self.scene.positions_m(&mut self.previous_positions_m);
         self.scene.nodes_m(&mut self.previous_nodes_m);
+        release_spare(&mut self.previous_positions_m, 1024);
+        release_spare(&mut self.previous_nodes_m, 64);
     }
 
     /// Follows new settings for this tank without restarting where possible.

@@ -22,6 +22,7 @@ use super::orbit_camera::OrbitCamera;
 use super::scene_renderer::{FishInstance, SceneCallback, SceneUniforms, StaticScene, ViewCache};
 use crate::lab::Run;
 use crate::sim::BodySpecies;
+use crate::sim::common::spare::release_spare;
 use crate::sim::scene::{BodyToDraw, PointShape, Scenery};
 
 /// Fish drawn shorter than this (physical pixels, snout to tail root) use the
@@ -193,6 +194,7 @@ impl FrameBuilder {
         sharks.clear();
         let rays = Arc::make_mut(&mut view.rays);
         rays.clear();
+        release_spare(fish, 1024);
         let (mut near, mut far) = (0, count);
         for point in &points {
             let position = drawn[point.index];
@@ -219,6 +221,8 @@ impl FrameBuilder {
                 }
             }
         }
+        release_spare(sharks, 64);
+        release_spare(rays, 64);
         // Beyond the budget, only the nearest keep the full mesh.
         let mut detailed = near;
         if detailed > MAX_DETAILED_FISH {

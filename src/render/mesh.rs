@@ -17,6 +17,7 @@ use std::f32::consts::TAU;
 use glam::{Vec3, vec3};
 
 use super::profile::{self, PlacedProfile, Section, Up};
+use crate::sim::common::spare::release_spare;
 use crate::sim::{Obstacle, Tank};
 
 /// How the fragment shader colours a surface (the `material` vertex attribute).
@@ -94,14 +95,8 @@ impl Mesh {
     /// 300 muscle fish does not keep their 15 MB of skin once it has 10
     /// (found by the browser soak, issue 35).
     pub fn release_spare(&mut self) {
-        fn trim<T>(v: &mut Vec<T>) {
-            let keep = (2 * v.len()).max(4096);
-            if v.capacity() > 2 * keep {
-                v.shrink_to(keep);
-            }
-        }
-        trim(&mut self.vertices);
-        trim(&mut self.indices);
+        release_spare(&mut self.vertices, 4096);
+        release_spare(&mut self.indices, 4096);
     }
 
     fn push(&mut self, position: Vec3, normal: Vec3, material: Material, color: u32) -> u32 {

@@ -9,6 +9,7 @@ pub mod moment;
 pub mod obstacle;
 pub mod paper_time;
 pub mod school_metrics;
+pub mod spare;
 pub mod spatial_grid;
 pub mod steering;
 pub mod steering_tuning;

@@ -33,6 +33,7 @@ use crate::sim::boids::forces::{self, Perception};
 use crate::sim::common::fish::Fish;
 use crate::sim::common::obstacle::Obstacle;
 use crate::sim::common::school_metrics::{self, SchoolMetrics};
+use crate::sim::common::spare::release_spare;
 use crate::sim::common::spatial_grid::SpatialGrid;
 use crate::sim::common::steering::{self, SteeringParams};
 use crate::sim::common::steering_tuning::SteeringTuning;
@@ -326,6 +327,12 @@ impl PhysicsWorld {
         }
         self.desired_m_per_s.resize(self.animals.len(), Vec3::ZERO);
         self.touch.resize(self.animals.len(), None);
+        // A tank back at 10 fish after 300 gives back the others' room (each
+        // body is 2.5 kB inline: 0.75 MB; issue 35).
+        release_spare(&mut self.animals, 16);
+        release_spare(&mut self.intended_m_per_s, 16);
+        release_spare(&mut self.desired_m_per_s, 16);
+        release_spare(&mut self.touch, 16);
         if let Some((i, _)) = self.hand
             && i >= self.animals.len()
         {
@@ -622,6 +629,26 @@ mod tests {
 
     fn secs(w: &PhysicsWorld, s: f32) -> u32 {
         (s / w.dt_secs()).round() as u32
+    }
+
+    #[test]
+    fn a_tank_back_at_few_fish_gives_back_the_room_many_needed() {
+        let mut w = world(300, 2, PhysicsBehaviour::School, 0.0);
+        w.set_counts(10, 2);
+        assert_eq!(w.animals().len(), 12);
+        for (name, capacity) in [
+            ("animals", w.animals.capacity()),
+            ("intended", w.intended_m_per_s.capacity()),
+            ("desired", w.desired_m_per_s.capacity()),
+            ("touch", w.touch.capacity()),
+        ] {
+            assert!(capacity <= 48, "{name} keeps room for {capacity} animals");
+        }
+        // The tank still runs, sharks kept.
+        for _ in 0..5 {
+            w.step();
+        }
+        assert_eq!(w.animals().len(), 12);
     }
 
     #[test]
