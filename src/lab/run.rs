@@ -9,9 +9,9 @@ use std::collections::VecDeque;
 use crate::metrics_history::{MetricsHistory, MetricsSample};
 use crate::settings::{Settings, Side};
 use crate::sim::body::{MUSCLE_COUNT, NODE_COUNT};
+use crate::sim::common::spare::release_spare;
 use crate::sim::learning::learning_lab::LearningLab;
 use crate::sim::reef::report::ReefCensus;
-use crate::sim::common::spare::release_spare;
 use crate::sim::scene::{SceneWorld, centre};
 
 /// Seconds of the selected fish's muscles and speed kept for the plots.

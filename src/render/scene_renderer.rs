@@ -29,8 +29,8 @@ use eframe::wgpu::util::DeviceExt;
 use glam::{Mat4, Vec3};
 
 use super::mesh::{self, Mesh, Vertex};
-use crate::sim::common::spare::release_spare;
 use super::render_tier::{RenderCaps, SCENE_COLOR_FORMAT, SCENE_DEPTH_FORMAT};
+use crate::sim::common::spare::release_spare;
 
 /// Per-frame constants shared by every scene shader (`Scene` in `scene.wgsl`).
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
