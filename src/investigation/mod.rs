@@ -157,7 +157,15 @@ impl Progress {
         }
     }
 
-    /// The prediction in words.
+    /// The message id of answer `choice` (the same in every language).
+    pub fn answer_key(&self, choice: usize) -> &'static str {
+        match self.investigation.prediction {
+            PredictionKind::Choice(options) => options.get(choice).map_or("?", |o| o.id()),
+            PredictionKind::Curve { shapes, .. } => shapes.get(choice).map_or("?", |s| s.name.id()),
+        }
+    }
+
+    /// The words of answer `choice`, in the language in force.
     pub fn answer_text(&self, choice: usize) -> &'static str {
         match self.investigation.prediction {
             PredictionKind::Choice(options) => options.get(choice).map_or("?", |o| o.text()),
@@ -304,6 +312,7 @@ impl Progress {
             chosen: self.pending,
             prediction: self.prediction.map(|p| PredictionReport {
                 choice: p.choice,
+                key: self.answer_key(p.choice),
                 text: self.answer_text(p.choice),
             }),
             running: self.run_started && self.outcome.is_none(),
@@ -335,6 +344,10 @@ pub struct InvestigationReport {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PredictionReport {
     pub choice: usize,
+    /// The answer's message id: the same in every language (what a class
+    /// server is sent, so a class's histogram pools students who read Shoal in
+    /// different languages).
+    pub key: &'static str,
     pub text: &'static str,
 }
 

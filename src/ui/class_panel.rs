@@ -206,7 +206,12 @@ impl ClassPanel {
     /// `shoal.class()`: the class as this page sees it (read only).
     pub fn report(&self) -> Value {
         let Some(s) = &self.session else {
-            return json!({"server": self.server, "role": null});
+            // The join window as typed so far (what a test checks before it
+            // presses Join).
+            let join = self.join_open.then(|| {
+                json!({"code": self.join_code, "nickname": self.join_nickname, "error": self.error})
+            });
+            return json!({"server": self.server, "role": null, "join": join});
         };
         let link = s.link();
         let common = json!({
@@ -358,10 +363,10 @@ impl ClassPanel {
             self.send("step", json!({"step": step}));
         }
         if let Some(p) = &report.prediction
-            && self.reported.prediction.as_deref() != Some(p.text)
+            && self.reported.prediction.as_deref() != Some(p.key)
         {
-            self.reported.prediction = Some(p.text.to_owned());
-            self.send("predict", json!({"prediction": p.text}));
+            self.reported.prediction = Some(p.key.to_owned());
+            self.send("predict", json!({"prediction": p.key}));
         }
         if let Some(outcome) = &report.result
             && !self.reported.result
@@ -830,7 +835,7 @@ impl ClassPanel {
                 for s in &view.roster {
                     ui.label(name(s));
                     ui.label(s.step.as_deref().map_or("–", step_name));
-                    ui.label(s.prediction.as_deref().unwrap_or("–"));
+                    ui.label(s.prediction.as_deref().map_or("–", prediction_words));
                     ui.label(s.results.len().to_string());
                     ui.end_row();
                 }
@@ -957,7 +962,7 @@ impl ClassPanel {
         // Is this a class server? Asked once.
         if self.server.is_none() {
             match &self.net.info {
-                None => self.net.info = Some(net::fetch(ctx, "GET", "/api/info", None, None)),
+                None => self.net.info = Some(net::fetch(ctx, "GET", "api/info", None, None)),
                 Some(reply) => {
                     let answer = reply.borrow_mut().take();
                     if let Some(answer) = answer {
@@ -1158,6 +1163,16 @@ fn status_text(s: &Session, now: f64) -> String {
     }
 }
 
+/// A prediction as the reader's language says it: students send the answer's
+/// message id (the same in every language); anything else is shown as sent.
+fn prediction_words(key: &str) -> &str {
+    INVESTIGATIONS
+        .iter()
+        .flat_map(|i| i.texts())
+        .find(|t| t.id() == key)
+        .map_or(key, |t| t.text())
+}
+
 /// The prediction histogram as labelled bars (the count in words too).
 fn histogram_ui(ui: &mut egui::Ui, histogram: &std::collections::BTreeMap<String, u64>) {
     let bars = stats::histogram_bars(histogram);
@@ -1168,7 +1183,7 @@ fn histogram_ui(ui: &mut egui::Ui, histogram: &std::collections::BTreeMap<String
     let most = bars.iter().map(|b| b.1).max().unwrap_or(1).max(1) as f32;
     let width = (ui.available_width() - 40.0).max(80.0);
     for (answer, count) in bars {
-        ui.label(&answer);
+        ui.label(prediction_words(&answer));
         ui.horizontal(|ui| {
             let (rect, _) = ui.allocate_exact_size(
                 egui::vec2(width * count as f32 / most, 14.0),

@@ -112,11 +112,27 @@ async function join(browser, server, code, nickname) {
   const { page, errors } = await openShoal(browser, `${server.url}?class=${code}`, { width: 1024, height: 700 });
   await page.waitForFunction(() => window.shoal.class().server === true, null, { timeout: 60_000 });
   // The join link opens the join window with the code filled in.
-  await waitForWidget(page, "class_nickname");
-  await clickWidget(page, "class_nickname");
-  await waitFrames(page, 2);
-  await enterText(page, nickname);
-  await clickUntil(page, "class_join_go", () => window.shoal.class().role === "student");
+  await page.waitForFunction((c) => window.shoal.class().join?.code === c, code, { timeout: 60_000 });
+  // On a loaded machine a click can land before the field takes the focus:
+  // type until the join window holds the nickname, then press Join.
+  for (let attempt = 0; ; attempt++) {
+    await clickWidget(page, "class_nickname");
+    await waitFrames(page, 2);
+    if ((await cls(page)).join.nickname === "") await enterText(page, nickname);
+    try {
+      await page.waitForFunction((n) => window.shoal.class().join?.nickname === n, nickname, { timeout: 20_000 });
+      break;
+    } catch (e) {
+      if (attempt === 3) throw new Error(`the nickname field never held ${nickname}: ${JSON.stringify(await cls(page))}`);
+    }
+  }
+  try {
+    await clickUntil(page, "class_join_go", () => window.shoal.class().role === "student");
+  } catch (e) {
+    saveArtifact(`class-join-${nickname.replace(/\W/g, "")}-failed.png`, await page.screenshot());
+    const w = await page.evaluate(() => window.shoal.widgets());
+    throw new Error(`${e.message}: ${JSON.stringify(await cls(page))}; join button ${JSON.stringify(w.class_join_go)}`);
+  }
   await page.waitForFunction(() => window.shoal.class().link === "connected" && window.shoal.class().seed > 0, null, {
     timeout: 60_000,
   });

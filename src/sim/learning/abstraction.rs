@@ -6,7 +6,7 @@
 //! Procedure ([`abstract_controls`]):
 //! 1. Sample the learned u(t) at `resample_count` even times over the window (the
 //!    training interval from `window_start_fraction` of it to its end).
-//! 2. FFT (rustfft) of each muscle with its mean removed, zero-padded
+//! 2. Fourier transform of each muscle with its mean removed, zero-padded
 //!    `zero_padding`-fold so peaks fall between the window's 1/T bins too; sum the
 //!    power over the twelve muscles: the spectrum of the controller.
 //! 3. The M highest peaks of that spectrum (at least 1/T apart, i.e. one main lobe;
@@ -25,8 +25,6 @@
 //! same with the means removed (how well the modes capture the oscillation alone).
 
 use crate::sim::common::fmath;
-use rustfft::FftPlanner;
-use rustfft::num_complex::Complex;
 use serde::{Deserialize, Serialize};
 use std::f32::consts::TAU;
 
@@ -37,6 +35,11 @@ use crate::sim::learning::muscle_spline::MuscleSpline;
 /// a mode (an amplitude of about 10⁻⁴).
 const NEGLIGIBLE_POWER: f32 = 1.0e-8;
 
+/// Largest sample count and zero padding honoured: the directly evaluated
+/// spectrum costs count × padded / 2 products per muscle (at most 1024 × 8192).
+const MAX_RESAMPLE_COUNT: usize = 1024;
+const MAX_ZERO_PADDING: usize = 16;
+
 /// Settings of the change of basis.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct AbstractionSettings {
@@ -44,10 +47,11 @@ pub struct AbstractionSettings {
     /// 2"); clamped to 0..=4.
     pub modes: usize,
     /// Samples of u(t) over the window, count. Default 128, chosen: 51 per second
-    /// over the 2.5 s interval, far above the splines' highest frequency.
+    /// over the 2.5 s interval, far above the splines' highest frequency;
+    /// clamped to 16..=1024.
     pub resample_count: usize,
-    /// Zero padding factor of the FFT, count. Default 8, chosen: frequency grid
-    /// 1/(8T) (0.05 Hz for T = 2.5 s).
+    /// Zero padding factor of the Fourier transform, count. Default 8, chosen:
+    /// frequency grid 1/(8T) (0.05 Hz for T = 2.5 s); clamped to 1..=16.
     pub zero_padding: usize,
     /// Where the window starts, as a fraction of the interval. Default 0.3,
     /// tuned: the fish starts from rest and its first strokes differ from its
@@ -179,10 +183,55 @@ fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
     x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
+/// The power spectrum of the twelve muscles' zero-mean samples, zero-padded to
+/// `padded` points and summed over the muscles: Σ_m |X_m(k)|² for the bins
+/// k = 0 … padded/2, with X_m(k) = Σ_n (u_m(n) − ū_m) e^(−2πi·k·n/padded).
+///
+/// The transform is evaluated directly, bin by bin, over the samples only (the
+/// zero padding adds no terms): count × (padded/2 + 1) products per muscle,
+/// about 0.8 million for all twelve at the defaults, a few milliseconds once
+/// per learned controller. A fast Fourier transform gives the same numbers to
+/// rounding, at the price of a general FFT library in the download (it was
+/// rustfft: 91 KB of the gzipped wasm, docs/benchmarks.md). Sums in f64.
+fn spectrum_power(
+    learned: &[[f32; MUSCLE_COUNT]],
+    means: &[f32; MUSCLE_COUNT],
+    padded: usize,
+) -> Vec<f32> {
+    let half = padded / 2;
+    // e^(−2πi·j/padded) for j < padded; the phase k·n wraps modulo padded.
+    let twiddles: Vec<(f64, f64)> = (0..padded)
+        .map(|j| {
+            let th = std::f64::consts::TAU * j as f64 / padded as f64;
+            (fmath::cos_f64(th), -fmath::sin_f64(th))
+        })
+        .collect();
+    let centred: Vec<[f64; MUSCLE_COUNT]> = learned
+        .iter()
+        .map(|u| std::array::from_fn(|m| f64::from(u[m] - means[m])))
+        .collect();
+    (0..=half)
+        .map(|k| {
+            let mut re = [0.0f64; MUSCLE_COUNT];
+            let mut im = [0.0f64; MUSCLE_COUNT];
+            let mut j = 0usize;
+            for x in &centred {
+                let (c, s) = twiddles[j];
+                for m in 0..MUSCLE_COUNT {
+                    re[m] += x[m] * c;
+                    im[m] += x[m] * s;
+                }
+                j = (j + k) % padded;
+            }
+            re.iter().zip(&im).map(|(r, i)| r * r + i * i).sum::<f64>() as f32
+        })
+        .collect()
+}
+
 /// The abstraction of `controls` (see the module doc). Deterministic, never NaN.
 pub fn abstract_controls(controls: &MuscleSpline, settings: &AbstractionSettings) -> Abstraction {
-    let count = settings.resample_count.clamp(16, 4096);
-    let padded = count * settings.zero_padding.clamp(1, 32);
+    let count = settings.resample_count.clamp(16, MAX_RESAMPLE_COUNT);
+    let padded = count * settings.zero_padding.clamp(1, MAX_ZERO_PADDING);
     let start_secs = controls.duration_secs()
         * if settings.window_start_fraction.is_finite() {
             settings.window_start_fraction.clamp(0.0, 0.9)
@@ -202,26 +251,14 @@ pub fn abstract_controls(controls: &MuscleSpline, settings: &AbstractionSettings
     }
 
     // Spectrum of the controller (power summed over muscles).
-    let fft = FftPlanner::<f32>::new().plan_fft_forward(padded);
     let half = padded / 2;
-    let mut power = vec![0.0f32; half + 1];
-    let mut buffer = vec![Complex::new(0.0f32, 0.0); padded];
-    for m in 0..MUSCLE_COUNT {
-        buffer.fill(Complex::new(0.0, 0.0));
-        for (b, u) in buffer.iter_mut().zip(&learned) {
-            b.re = u[m] - means[m];
-        }
-        fft.process(&mut buffer);
-        for (p, c) in power.iter_mut().zip(&buffer) {
-            *p += c.norm_sqr();
-        }
-    }
+    let power = spectrum_power(&learned, &means, padded);
     let bin_hz = 1.0 / (padded as f32 * dt);
     let spectrum_hz: Vec<f32> = (1..=half).map(|k| k as f32 * bin_hz).collect();
     let spectrum_power: Vec<f32> = power[1..=half].to_vec();
 
     // The M highest peaks, at least one main lobe (1/window) apart.
-    let lobe_bins = settings.zero_padding.clamp(1, 32);
+    let lobe_bins = settings.zero_padding.clamp(1, MAX_ZERO_PADDING);
     let mut peaks: Vec<usize> = (1..half)
         .filter(|&k| {
             power[k] > NEGLIGIBLE_POWER * (count * MUSCLE_COUNT) as f32
@@ -384,6 +421,62 @@ mod tests {
         assert!(c.is_valid());
         assert_eq!(a.learned.len(), a.times_secs.len());
         assert!(c.value_at(1.0).iter().all(|u| (0.0..=1.0).contains(u)));
+    }
+
+    #[test]
+    fn the_direct_spectrum_holds_parsevals_sum_and_puts_a_whole_cycle_sine_in_its_bin() {
+        // 128 samples zero-padded to 1024: a cosine of 5 whole cycles over the
+        // samples falls on bin 5 × 8 = 40 of one muscle, with |X|² = (A·n/2)².
+        let (count, padded, cycles) = (128usize, 1024usize, 5usize);
+        let learned: Vec<[f32; MUSCLE_COUNT]> = (0..count)
+            .map(|n| {
+                let mut u = [0.0; MUSCLE_COUNT];
+                u[3] = 0.3 * fmath::cos(TAU * (cycles * n) as f32 / count as f32);
+                // An irregular signal on another muscle, for the sum below.
+                u[7] = fmath::sin(0.37 * n as f32 * n as f32) * 0.2;
+                u
+            })
+            .collect();
+        let mut means = [0.0f32; MUSCLE_COUNT];
+        for u in &learned {
+            for m in 0..MUSCLE_COUNT {
+                means[m] += u[m] / count as f32;
+            }
+        }
+        let power = spectrum_power(&learned, &means, padded);
+        assert_eq!(power.len(), padded / 2 + 1);
+        // Parseval over the padded transform of real signals: |X₀|² + 2Σ|X_k|²
+        // (0 < k < N/2) + |X_{N/2}|² = N Σ x².
+        let energy: f64 = learned
+            .iter()
+            .map(|u| {
+                (0..MUSCLE_COUNT)
+                    .map(|m| {
+                        let x = f64::from(u[m] - means[m]);
+                        x * x
+                    })
+                    .sum::<f64>()
+            })
+            .sum();
+        let half = padded / 2;
+        let spectral: f64 = (0..=half)
+            .map(|k| f64::from(power[k]) * if k == 0 || k == half { 1.0 } else { 2.0 })
+            .sum();
+        let relative = (spectral - padded as f64 * energy).abs() / (padded as f64 * energy);
+        assert!(relative < 1e-5, "Parseval off by {relative}");
+        // Muscle 3 alone: its peak at bin 40 with (0.3 · 128 / 2)² = 368.64.
+        let mut only = learned.clone();
+        for u in &mut only {
+            u[7] = 0.0;
+        }
+        let mut m3 = [0.0; MUSCLE_COUNT];
+        m3[3] = means[3];
+        let p = spectrum_power(&only, &m3, padded);
+        let peak = (0..p.len())
+            .max_by(|&a, &b| p[a].total_cmp(&p[b]))
+            .unwrap_or(0);
+        assert_eq!(peak, cycles * padded / count);
+        assert!((p[peak] - 368.64).abs() < 0.01, "{}", p[peak]);
     }
 
     #[test]
