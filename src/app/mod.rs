@@ -310,6 +310,7 @@ impl eframe::App for ShoalApp {
             .last_frame_time_secs
             .map_or(0.0, |last| now_secs - last);
         self.last_frame_time_secs = Some(now_secs);
+        crate::ui::clicks::allow_slow_frames(ui.ctx(), frame_secs);
         self.scene_detail.observe(
             frame_secs,
             frame.info().cpu_usage.map(f64::from),

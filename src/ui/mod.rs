@@ -12,6 +12,7 @@ pub(crate) mod boids_attention;
 pub mod boids_panel;
 pub mod bottom_panel;
 pub mod class_panel;
+pub mod clicks;
 mod control_panel;
 mod experiment_panel;
 mod experiment_plot;

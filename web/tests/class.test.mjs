@@ -109,7 +109,12 @@ async function clickInWindow(page, name, predicate, arg) {
 
 /** A student joins with the code and a nickname, from the join link. */
 async function join(browser, server, code, nickname) {
-  const { page, errors } = await openShoal(browser, `${server.url}?class=${code}`, { width: 1024, height: 700 });
+  // Four pages share two cores here: give each more time to start.
+  const { page, errors } = await openShoal(browser, `${server.url}?class=${code}`, {
+    width: 1024,
+    height: 700,
+    timeout: 300_000,
+  });
   await page.waitForFunction(() => window.shoal.class().server === true, null, { timeout: 60_000 });
   // The join link opens the join window with the code filled in.
   await page.waitForFunction((c) => window.shoal.class().join?.code === c, code, { timeout: 60_000 });
@@ -177,6 +182,9 @@ describe("a class together (webgl2)", () => {
     assert.match(code, /^[A-HJ-NP-Z2-9]{6}$/);
     assert.deepEqual((await cls(teacher)).view.setup, { investigation: "how-swim" });
     await waitForWidget(teacher, "class_qr");
+    // The projector shows the dashboard; the teacher's own tank waits (the
+    // students' pages need the machine's two cores).
+    await teacher.evaluate(() => window.shoal.set({ paused: true }));
     // The teacher link's token is kept by this browser only.
     const kept = await teacher.evaluate(() => localStorage.getItem("shoal.class.teacher"));
     assert.ok(kept && JSON.parse(kept).who.token.length === 64, "the teacher's token is kept in this browser");

@@ -113,7 +113,7 @@ export async function launch(tier, extraArgs = []) {
 }
 
 /** Opens the app and waits until `window.shoal` runs and has drawn frames. */
-export async function openShoal(browser, url, { width = 1280, height = 720 } = {}) {
+export async function openShoal(browser, url, { width = 1280, height = 720, timeout = 90_000 } = {}) {
   const page = await browser.newPage({ viewport: { width, height } });
   const errors = [];
   page.on("console", (msg) => {
@@ -121,9 +121,7 @@ export async function openShoal(browser, url, { width = 1280, height = 720 } = {
   });
   page.on("pageerror", (err) => errors.push(`pageerror: ${err.message}`));
   await page.goto(url);
-  await page.waitForFunction(() => window.shoal && window.shoal.state().steps > 30, null, {
-    timeout: 90_000,
-  });
+  await page.waitForFunction(() => window.shoal && window.shoal.state().steps > 30, null, { timeout });
   return { page, errors };
 }
 
