@@ -65,7 +65,7 @@ pub fn pooled(roster: &[StudentRecord]) -> Vec<Pooled> {
         .into_iter()
         .map(|(measure, (values, students))| {
             let n = values.len();
-            let mean = values.iter().sum::<f64>() / n as f64;
+            let mean = crate::experiment::summary::mean_within(&values);
             let (low, high) = crate::experiment::summary::bootstrap_interval(&values);
             Pooled {
                 measure: measure.to_owned(),

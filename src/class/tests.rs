@@ -291,6 +291,15 @@ fn the_pooled_result_keeps_its_interval_within_the_measure() {
     assert_eq!(p.values, [0.0, 1.0, 0.0, 0.0]);
     let one = stats::pooled(&[with_results(1, &[7.0])]);
     assert!(one[0].low.is_nan());
+    // Three students whose runs measured the same (the browser test's class):
+    // the plain mean rounds a last bit below the value; the pooled one does not.
+    let v = 0.757_527_998_571_215_3;
+    let same: Vec<_> = (1..=3).map(|k| with_results(k, &[v])).collect();
+    let p = &stats::pooled(&same)[0];
+    assert!(
+        p.min <= p.low && p.low <= p.mean && p.mean <= p.high && p.high <= p.max,
+        "{p:?}"
+    );
     assert!(stats::pooled(&[]).is_empty());
 }
 

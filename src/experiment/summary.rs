@@ -52,6 +52,23 @@ pub const FEW_SEEDS: usize = 5;
 /// the same interval, in the browser as natively.
 const BOOTSTRAP_SEED: u64 = 0x5EED_B007;
 
+/// The mean of `values` (NaN for none), never outside their range: a sum of
+/// equal values divided by their count can round a last bit past them, and a
+/// mean printed beside its interval must not leave it.
+pub fn mean_within(values: &[f64]) -> f64 {
+    if values.is_empty() {
+        return f64::NAN;
+    }
+    let mean = values.iter().sum::<f64>() / values.len() as f64;
+    let min = values.iter().copied().fold(f64::INFINITY, f64::min);
+    let max = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    if min <= max && !mean.is_nan() {
+        mean.clamp(min, max)
+    } else {
+        mean
+    }
+}
+
 /// The 95 % percentile-bootstrap interval of the mean of `values` (NaN with
 /// fewer than two values); always within [min, max] of the values.
 pub fn bootstrap_interval(values: &[f64]) -> (f64, f64) {
@@ -76,8 +93,8 @@ pub fn bootstrap_interval(values: &[f64]) -> (f64, f64) {
     let min = values.iter().copied().fold(f64::INFINITY, f64::min);
     let max = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     (
-        percentile(&means, 0.025).max(min),
-        percentile(&means, 0.975).min(max),
+        percentile(&means, 0.025).max(min).min(max),
+        percentile(&means, 0.975).max(min).min(max),
     )
 }
 
@@ -112,7 +129,7 @@ pub fn summarise(plan: &Plan, results: &[RunResult]) -> Vec<SummaryRow> {
                 })
                 .collect();
             let n = values.len();
-            let mean = values.iter().sum::<f64>() / n as f64;
+            let mean = mean_within(&values);
             let sd = if n > 1 {
                 (values
                     .iter()
@@ -220,6 +237,13 @@ mod tests {
         // One value: no interval; equal values: a point.
         assert!(bootstrap_interval(&[0.5]).0.is_nan());
         assert_eq!(bootstrap_interval(&[0.5, 0.5, 0.5]), (0.5, 0.5));
+        // Three equal values whose plain mean rounds a last bit below them (a
+        // class's three identical runs).
+        let equal = [0.757_527_998_571_215_3; 3];
+        assert!(equal.iter().sum::<f64>() / 3.0 < equal[0]);
+        assert_eq!(mean_within(&equal), equal[0]);
+        assert_eq!(bootstrap_interval(&equal), (equal[0], equal[0]));
+        assert!(mean_within(&[]).is_nan());
         // The same values, the same interval (the browser's and the lab's).
         let values = [0.3, 0.5, 0.45, 0.7, 0.52, 0.61];
         assert_eq!(bootstrap_interval(&values), bootstrap_interval(&values));
