@@ -27,6 +27,8 @@ import {
   nudgeFrames,
   enterText,
   sleep,
+  axTree,
+  axFind,
 } from "./harness.mjs";
 
 /** The class server's binary: $SHOAL_CLASS_BIN, or the release build in
@@ -118,6 +120,14 @@ async function join(browser, server, code, nickname) {
   await page.waitForFunction(() => window.shoal.class().server === true, null, { timeout: 60_000 });
   // The join link opens the join window with the code filled in.
   await page.waitForFunction((c) => window.shoal.class().join?.code === c, code, { timeout: 60_000 });
+  // A screen reader finds the join window's fields and button by their names.
+  await page.waitForSelector('#shoal_a11y input[aria-label="Nickname"]', { state: "attached", timeout: 60_000 });
+  const tree = await axTree(page);
+  const codeField = axFind(tree, "textbox", "Class code");
+  assert.ok(codeField, "the class code field is named");
+  assert.equal(codeField.value, code, "the screen reader reads the code from the link");
+  assert.ok(axFind(tree, "textbox", "Nickname"), "the nickname field is named");
+  assert.ok(axFind(tree, "button", "Join"), "the Join button is named");
   // On a loaded machine a click can land before the field takes the focus:
   // type until the join window holds the nickname, then press Join.
   for (let attempt = 0; ; attempt++) {
