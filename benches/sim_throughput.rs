@@ -3,7 +3,12 @@
 //! Run with `./dev bench` (or `cargo bench --bench sim_throughput`; add
 //! `-- 20000` to time only the boid layer with that many fish, e.g. under
 //! `perf`). Prints figures; asserts nothing. The in-browser counterpart is the `?bench` page mode.
+//!
+//! `cargo test --all-targets` runs it too, without `--bench`: then each case runs
+//! once, smallest fish count only, as a check that the benchmark still works (its
+//! full run takes two minutes in a debug build and its figures would mean nothing).
 
+use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
 use shoal::lab::Lab;
@@ -15,11 +20,33 @@ use shoal::sim::learning::Trainer;
 use shoal::sim::reef::world::ReefBodyKind;
 use shoal::sim::{BoidParams, World, WorldConfig};
 
-/// Runs `f` repeatedly for about `budget`, returning calls per second.
+/// Whether this is a check run (`cargo test`) and not a benchmark (`cargo bench`,
+/// which passes `--bench`).
+fn check_run() -> bool {
+    static CHECK: OnceLock<bool> = OnceLock::new();
+    *CHECK.get_or_init(|| !std::env::args().any(|a| a == "--bench"))
+}
+
+/// The fish counts to time: all of them, or in a check run the first.
+fn cases<T: Copy>(all: &[T]) -> Vec<T> {
+    if check_run() {
+        all[..1].to_vec()
+    } else {
+        all.to_vec()
+    }
+}
+
+/// Steps to settle a scene before timing it (one in a check run).
+fn warm_up(steps: usize) -> usize {
+    if check_run() { 1 } else { steps }
+}
+
+/// Runs `f` repeatedly for about `budget` (once in a check run), returning calls
+/// per second.
 fn rate(budget: Duration, mut f: impl FnMut()) -> f64 {
     let start = Instant::now();
     let mut calls = 0u64;
-    while start.elapsed() < budget {
+    while calls == 0 || (start.elapsed() < budget && !check_run()) {
         f();
         calls += 1;
     }
@@ -36,6 +63,11 @@ fn world(fish_count: usize) -> World {
 
 fn main() {
     println!("Shoal native benchmark (one thread)");
+    if check_run() {
+        println!(
+            "A check run (no --bench): each case once, figures meaningless; `cargo bench` times them."
+        );
+    }
     println!();
     println!("Boid layer, group preset (7 nearest seen neighbours, 5 m vision), metrics included:");
     println!(
@@ -47,15 +79,14 @@ fn main() {
         "fish", "steps/s", "boid-steps/s", "full metrics ms", "every-step ms", "metrics ms/step"
     );
     let only: Option<usize> = std::env::args().skip(1).find_map(|a| a.parse().ok());
-    for fish_count in [500, 5_000, 20_000, 50_000] {
+    for fish_count in cases(&[500, 5_000, 20_000, 50_000]) {
         if only.is_some_and(|n| n != fish_count) {
             continue;
         }
         let mut w = world(fish_count);
         w.set_boids(Some(BoidParams::group()));
         // Let the school form first: a dense school is the hard case.
-        let warm_up = if fish_count > 5_000 { 300 } else { 600 };
-        for _ in 0..warm_up {
+        for _ in 0..warm_up(if fish_count > 5_000 { 300 } else { 600 }) {
             w.step();
         }
         let steps_per_sec = rate(Duration::from_secs(3), || w.step());
@@ -81,12 +112,12 @@ fn main() {
         "{:>7} | {:>12} | {:>16} | {:>17}",
         "fish", "steps/s", "fish-steps/s", "frame build (ms)"
     );
-    for fish_count in [200, 2_000, 5_000, 20_000] {
+    for fish_count in cases(&[200, 2_000, 5_000, 20_000]) {
         if only.is_some() {
             break;
         }
         let mut world = world(fish_count);
-        for _ in 0..60 {
+        for _ in 0..warm_up(60) {
             world.step();
         }
         let steps_per_sec = rate(Duration::from_secs(2), || world.step());
@@ -117,7 +148,7 @@ fn main() {
         "{:>7} | {:>10} | {:>14} | {:>19} | {:>17}",
         "fish", "steps/s", "fish-steps/s", "× real time (1/Δt)", "frame build (ms)"
     );
-    for fish_count in [10u32, 50, 200] {
+    for fish_count in cases(&[10u32, 50, 200]) {
         if only.is_some() {
             break;
         }
@@ -128,7 +159,7 @@ fn main() {
         settings.physics.fish_count = fish_count;
         settings.physics.sharks = 0;
         let mut lab = Lab::new(settings);
-        lab.step(40);
+        lab.step(warm_up(40) as u32);
         let steps_per_sec = rate(Duration::from_secs(3), || lab.step(1));
         let tank = lab.scene().tank();
         let camera = OrbitCamera::framing(tank.min_m, tank.max_m, 16.0 / 9.0);
@@ -149,7 +180,7 @@ fn main() {
     println!("per evaluation (0.5 m fish, 2.5 s interval = 45 body steps, default body):");
     if only.is_none() {
         let mut trainer = Trainer::benchmark();
-        trainer.run_evaluations(20);
+        trainer.run_evaluations(warm_up(20));
         let evaluations_per_sec = rate(Duration::from_secs(3), || {
             trainer.run_evaluations(1);
         });
@@ -169,7 +200,7 @@ fn main() {
         "animals", "body", "steps/s", "fish-steps/s", "× real time (1/Δt)"
     );
     for body in [ReefBodyKind::Physical, ReefBodyKind::PointMass] {
-        for animals in [10u32, 50, 200] {
+        for animals in cases(&[10u32, 50, 200]) {
             if only.is_some() {
                 break;
             }
@@ -180,7 +211,7 @@ fn main() {
             Scene::Reef.class().set_animal_count(&mut settings, animals);
             settings.reef.body = body;
             let mut lab = Lab::new(settings);
-            lab.step(20);
+            lab.step(warm_up(20) as u32);
             let steps_per_sec = rate(Duration::from_secs(3), || lab.step(1));
             println!(
                 "{animals:>7} | {:>10} | {steps_per_sec:>10.1} | {:>14.0} | {:>19.2}",
