@@ -5,7 +5,8 @@
 // plot shows it again; the record names the student (asked once, remembered by
 // this browser only), the date, the seed and a link that opens the same run
 // again, in a file named by the investigation, the name and the date.
-// Each tier (WebGL2, then WebGPU).
+// Each tier (WebGL2, then WebGPU) draws the window beside the tanks; the record
+// and the remembered name, the same wasm on every tier, are walked on WebGL2.
 import { test, describe, before, after } from "node:test";
 import assert from "node:assert/strict";
 import fs from "node:fs";
@@ -21,6 +22,7 @@ import {
   nudgeFrames,
   enterText,
   TIERS,
+  walkOnly,
 } from "./harness.mjs";
 
 const widgets = (page) => page.evaluate(() => window.shoal.widgets());
@@ -139,7 +141,8 @@ for (const tier of TIERS) describe(`investigations a class can follow (${tier})`
     });
   }
 
-  test("How does a fish swim?: the plot comes back with its prompt; the record is ready to hand in and its link reruns", async () => {
+  // The record and the remembered name are the same wasm on every tier: a walk.
+  test("How does a fish swim?: the plot comes back with its prompt; the record is ready to hand in and its link reruns", walkOnly(tier), async () => {
     const { page, errors } = await openShoal(browser, `${server.url}?investigation=how-swim`, { width: 1280, height: 800 });
     await page.waitForFunction(() => window.shoal.state().investigation?.id === "how-swim");
     // Another seed than the investigation's own: the record's link must carry it.
@@ -217,7 +220,7 @@ for (const tier of TIERS) describe(`investigations a class can follow (${tier})`
     await again.page.close();
   });
 
-  test("the name is asked once: this browser remembers it", async () => {
+  test("the name is asked once: this browser remembers it", walkOnly(tier), async () => {
     const { page } = await openShoal(browser, server.url, { width: 1280, height: 800 });
     assert.ok(!(await page.evaluate(() => window.shoal.investigation_record().html)).includes("Luis"));
     await page.evaluate(() => localStorage.setItem("shoal.student", "Luis"));
