@@ -72,21 +72,68 @@ impl Change {
     }
 }
 
-/// Shared state: the pool and one change signal per live class.
+/// A live class's copy in memory (`None` until a view needs it). Its lock is
+/// held while a message is written, so the copy changes in the database's order.
+type Slot = Arc<tokio::sync::Mutex<Option<store::ClassState>>>;
+
+/// Shared state: the pool, one change signal per live class, and each live
+/// class's copy in memory.
 #[derive(Clone)]
 pub struct AppState {
     pool: AnyPool,
     config: Arc<Config>,
     hubs: Arc<Mutex<HashMap<String, broadcast::Sender<Change>>>>,
+    classes: Arc<Mutex<HashMap<String, Slot>>>,
 }
 
 impl AppState {
     fn hub(&self, code: &str) -> broadcast::Sender<Change> {
         let mut hubs = self.hubs.lock().unwrap_or_else(|e| e.into_inner());
         hubs.retain(|_, tx| tx.receiver_count() > 0);
+        // A class nobody is connected to leaves memory (unless a task holds it).
+        self.classes
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .retain(|code, slot| hubs.contains_key(code) || Arc::strong_count(slot) > 1);
         hubs.entry(code.to_owned())
             .or_insert_with(|| broadcast::channel(16).0)
             .clone()
+    }
+
+    /// The class's copy in memory (taken by `lock().await`).
+    fn slot(&self, code: &str) -> Slot {
+        self.classes
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .entry(code.to_owned())
+            .or_default()
+            .clone()
+    }
+
+    /// Drops a deleted class's copy.
+    fn forget(&self, code: &str) {
+        self.classes
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .remove(code);
+    }
+
+    /// What `role` may see of its class now, from the copy in memory (read from
+    /// the database the first time).
+    async fn view(&self, role: &Role) -> Result<serde_json::Value, ServerError> {
+        let code = role.code();
+        let slot = self.slot(code);
+        let mut live = slot.lock().await;
+        if live.is_none() {
+            *live = Some(store::load(&self.pool, code).await?);
+        }
+        match live.as_ref() {
+            Some(class) => class.view(code, role),
+            None => Err(ServerError::new(
+                ErrorCode::Internal,
+                "the class could not be read",
+            )),
+        }
     }
 
     fn changed(&self, code: &str, change: Change) {
@@ -101,6 +148,7 @@ pub fn app(pool: AnyPool, config: Config) -> Router {
         pool,
         config: Arc::new(config),
         hubs: Arc::default(),
+        classes: Arc::default(),
     };
     let statics = ServeDir::new(&dist)
         // The build writes brotli and gzip copies (tools/web-finish): sent as they
@@ -207,7 +255,13 @@ async fn delete_class(
     if let Err(r) = authorised_teacher(&state, &code, &headers).await {
         return r;
     }
-    match store::delete_class(&state.pool, &code).await {
+    let slot = state.slot(&code);
+    let mut live = slot.lock().await;
+    let deleted = store::delete_class(&state.pool, &code).await;
+    *live = None;
+    drop(live);
+    state.forget(&code);
+    match deleted {
         Ok(()) => {
             state.changed(&code, Change::Everyone);
             StatusCode::NO_CONTENT.into_response()
@@ -216,10 +270,17 @@ async fn delete_class(
     }
 }
 
+/// A connection's read buffer: larger messages are read in several pieces.
+const READ_BUFFER_BYTES: usize = 4 * 1024;
+
 async fn ws_upgrade(State(state): State<AppState>, ws: WebSocketUpgrade) -> Response {
     // The socket accepts a little more than the limit so that an oversized
-    // message gets a clear error instead of a dropped connection.
+    // message gets a clear error instead of a dropped connection. Its read buffer
+    // is a few KiB, not tungstenite's default 128 KiB: that buffer is zeroed on
+    // every read, which took an eighth of the server's time under load, and held
+    // 128 KiB per connection (most of the memory of a 1,400-student lesson).
     ws.max_message_size(4 * MAX_MESSAGE_BYTES)
+        .read_buffer_size(READ_BUFFER_BYTES)
         .on_upgrade(move |socket| connection(state, socket))
 }
 
@@ -292,7 +353,7 @@ async fn connection(state: AppState, mut socket: WebSocket) {
                 let concerns = drain(&mut changes, role.as_ref(), revealed) || concerns;
                 if !concerns { continue; }
                 if let Some(r) = &role {
-                    match store::view(&state.pool, r).await {
+                    match state.view(r).await {
                         Ok(v) => {
                             revealed = shows_counts(&v);
                             if !send(&mut socket, v).await { return }
@@ -357,7 +418,7 @@ async fn connection(state: AppState, mut socket: WebSocket) {
                     }
                     // The view read now covers every change already signalled.
                     drain(&mut changes, Some(r), revealed);
-                    match store::view(&state.pool, r).await {
+                    match state.view(r).await {
                         Ok(v) => {
                             revealed = shows_counts(&v);
                             if !send(&mut socket, v).await {
@@ -421,7 +482,13 @@ async fn handle(
     use protocol::Body;
     match (&*role, &message.body) {
         (None, Body::Join { code, nickname }) => {
+            let slot = state.slot(code);
+            let mut live = slot.lock().await;
             let joined = store::join(&state.pool, code, nickname).await?;
+            if let Some(class) = live.as_mut() {
+                class.add_student(&joined, nickname);
+            }
+            drop(live);
             *role = Some(Role::Student {
                 code: code.clone(),
                 id: joined.student_id.clone(),
@@ -475,7 +542,30 @@ async fn handle(
         )),
         (Some(r), body) => {
             let r = r.clone();
-            let reply = store::apply(&state.pool, &r, &message.id, body).await?;
+            let slot = state.slot(r.code());
+            let mut live = slot.lock().await;
+            let reply = match store::apply(&state.pool, &r, &message.id, body).await {
+                Ok((reply, store::Effect::Deleted)) => {
+                    *live = None;
+                    state.forget(r.code());
+                    reply
+                }
+                Ok((reply, effect)) => {
+                    if let Some(class) = live.as_mut() {
+                        class.apply(&r, effect);
+                    }
+                    reply
+                }
+                Err(e) => {
+                    // A refused message changed nothing; after a database error
+                    // or a class gone, read the class again next time.
+                    if matches!(e.code, ErrorCode::Internal | ErrorCode::NotFound) {
+                        *live = None;
+                    }
+                    return Err(e);
+                }
+            };
+            drop(live);
             // A student's step, result or answer alters only their own record
             // (and the teacher's roster); a prediction may alter the histogram
             // every student sees once revealed; a teacher's message, everyone's.

@@ -1,5 +1,6 @@
 //! `shoal-class --port 8080 --database sqlite://shoal-class.sqlite --dist dist`
 
+use axum::serve::ListenerExt;
 use std::net::SocketAddr;
 use std::path::PathBuf;
 
@@ -56,6 +57,11 @@ async fn main() {
         "shoal-class: serving on http://{addr} (classes kept {} days)",
         args.keep_days
     );
+    // Small messages go out at once: a reply and the view after it are two
+    // writes, and with Nagle's algorithm the second waits for the first's ACK.
+    let listener = listener.tap_io(|tcp| {
+        let _ = tcp.set_nodelay(true);
+    });
     if let Err(e) = axum::serve(listener, app).await {
         eprintln!("shoal-class: {e}");
         std::process::exit(1);

@@ -167,12 +167,13 @@ fn sender(role: &Role) -> String {
 }
 
 /// Applies one message once: a resent client message id gets the stored reply.
-pub async fn apply(
+/// Returns the reply and what the message changed.
+pub(crate) async fn apply(
     pool: &AnyPool,
     role: &Role,
     client_id: &str,
     body: &Body,
-) -> Result<Value, ServerError> {
+) -> Result<(Value, Effect), ServerError> {
     let who = sender(role);
     let code = role.code();
     if let Some(row) =
@@ -183,7 +184,10 @@ pub async fn apply(
             .await?
     {
         let reply: String = row.try_get("reply")?;
-        return Ok(serde_json::from_str(&reply).unwrap_or(Value::Null));
+        return Ok((
+            serde_json::from_str(&reply).unwrap_or(Value::Null),
+            Effect::Resent,
+        ));
     }
     let is_teacher = matches!(role, Role::Teacher { .. });
     if body.is_teachers() != is_teacher {
@@ -217,7 +221,7 @@ pub async fn apply(
         Some(h) => step_index(step) <= step_index(h),
         None => true,
     };
-    match body {
+    let effect = match body {
         Body::Step { step } => {
             if !step_allowed(step) {
                 return Err(ServerError::new(
@@ -230,6 +234,7 @@ pub async fn apply(
                 .bind(student)
                 .execute(&mut *tx)
                 .await?;
+            Effect::Step(step.clone())
         }
         Body::Predict { prediction } => {
             sqlx::query("UPDATE students SET prediction = $1 WHERE id = $2")
@@ -237,9 +242,11 @@ pub async fn apply(
                 .bind(student)
                 .execute(&mut *tx)
                 .await?;
+            Effect::Prediction(prediction.trim().to_owned())
         }
         Body::Result { levels, values } => {
             let levels = serde_json::to_string(levels).unwrap_or_default();
+            let mut stored = Vec::new();
             for (measure, value) in values {
                 sqlx::query("INSERT INTO results (student_id, client_id, levels, measure, value) VALUES ($1, $2, $3, $4, $5)")
                     .bind(student)
@@ -249,7 +256,14 @@ pub async fn apply(
                     .bind(*value)
                     .execute(&mut *tx)
                     .await?;
+                stored.push(StoredResult {
+                    client_id: client_id.to_owned(),
+                    levels: levels.clone(),
+                    measure: measure.clone(),
+                    value: *value,
+                });
             }
+            Effect::Results(stored)
         }
         Body::Explain { answer } => {
             sqlx::query("UPDATE students SET answer = $1 WHERE id = $2")
@@ -257,6 +271,7 @@ pub async fn apply(
                 .bind(student)
                 .execute(&mut *tx)
                 .await?;
+            Effect::Answer(answer.clone())
         }
         Body::Hold { step } => {
             sqlx::query("UPDATE classes SET held_step = $1 WHERE code = $2")
@@ -264,6 +279,7 @@ pub async fn apply(
                 .bind(code)
                 .execute(&mut *tx)
                 .await?;
+            Effect::Held(step.clone())
         }
         Body::Release {} => {
             let next = match &held {
@@ -271,10 +287,11 @@ pub async fn apply(
                 None => None,
             };
             sqlx::query("UPDATE classes SET held_step = $1 WHERE code = $2")
-                .bind(next)
+                .bind(next.clone())
                 .bind(code)
                 .execute(&mut *tx)
                 .await?;
+            Effect::Held(next)
         }
         Body::Pause { paused } => {
             sqlx::query("UPDATE classes SET paused = $1 WHERE code = $2")
@@ -282,6 +299,7 @@ pub async fn apply(
                 .bind(code)
                 .execute(&mut *tx)
                 .await?;
+            Effect::Paused(*paused)
         }
         Body::SendSetting { setting } => {
             sqlx::query("UPDATE classes SET setting = $1 WHERE code = $2")
@@ -289,6 +307,7 @@ pub async fn apply(
                 .bind(code)
                 .execute(&mut *tx)
                 .await?;
+            Effect::Setting(setting.to_string())
         }
         Body::Reveal { revealed } => {
             sqlx::query("UPDATE classes SET revealed = $1 WHERE code = $2")
@@ -296,6 +315,7 @@ pub async fn apply(
                 .bind(code)
                 .execute(&mut *tx)
                 .await?;
+            Effect::Revealed(*revealed)
         }
         Body::Anonymise { on } => {
             sqlx::query("UPDATE classes SET anonymise = $1 WHERE code = $2")
@@ -303,11 +323,12 @@ pub async fn apply(
                 .bind(code)
                 .execute(&mut *tx)
                 .await?;
+            Effect::Anonymise(*on)
         }
         Body::DeleteClass {} => {
             drop(tx);
             delete_class(pool, code).await?;
-            return Ok(reply);
+            return Ok((reply, Effect::Deleted));
         }
         Body::Join { .. } | Body::Resume { .. } | Body::Teacher { .. } => {
             return Err(ServerError::new(
@@ -315,7 +336,7 @@ pub async fn apply(
                 "this connection has already said who it is",
             ));
         }
-    }
+    };
     sqlx::query(
         "INSERT INTO processed (class_code, sender, client_id, reply) VALUES ($1, $2, $3, $4)",
     )
@@ -326,7 +347,7 @@ pub async fn apply(
     .execute(&mut *tx)
     .await?;
     tx.commit().await?;
-    Ok(reply)
+    Ok((reply, effect))
 }
 
 fn step_index(step: &str) -> usize {
@@ -388,26 +409,48 @@ async fn students(pool: &AnyPool, code: &str) -> Result<Vec<StudentRow>, ServerE
         .collect()
 }
 
-/// One stored result: (levels JSON, measure, value), in insertion order per student.
+/// One stored result of a student: the message it came in, its levels (JSON),
+/// the measure and the value.
+#[derive(Clone, Debug)]
+pub(crate) struct StoredResult {
+    client_id: String,
+    levels: String,
+    measure: String,
+    value: f64,
+}
+
+/// Each student's results, by student id, in (message id, measure) order.
 async fn results(
     pool: &AnyPool,
     code: &str,
-) -> Result<BTreeMap<String, Vec<(String, String, f64)>>, ServerError> {
+) -> Result<BTreeMap<String, Vec<StoredResult>>, ServerError> {
     let rows = sqlx::query(
-        "SELECT r.student_id, r.client_id, r.levels, r.measure, r.value FROM results r JOIN students s ON s.id = r.student_id WHERE s.class_code = $1 ORDER BY s.join_order, r.client_id, r.measure",
+        "SELECT r.student_id, r.client_id, r.levels, r.measure, r.value FROM results r JOIN students s ON s.id = r.student_id WHERE s.class_code = $1",
     )
     .bind(code)
     .fetch_all(pool)
     .await?;
-    let mut out: BTreeMap<String, Vec<(String, String, f64)>> = BTreeMap::new();
+    let mut out: BTreeMap<String, Vec<StoredResult>> = BTreeMap::new();
     for row in &rows {
-        out.entry(row.try_get("student_id")?).or_default().push((
-            row.try_get("levels")?,
-            row.try_get("measure")?,
-            row.try_get("value")?,
-        ));
+        out.entry(row.try_get("student_id")?)
+            .or_default()
+            .push(StoredResult {
+                client_id: row.try_get("client_id")?,
+                levels: row.try_get("levels")?,
+                measure: row.try_get("measure")?,
+                value: row.try_get("value")?,
+            });
+    }
+    // Sorted here, not by the database, so that SQLite, PostgreSQL (whatever its
+    // collation) and the copy in memory agree.
+    for list in out.values_mut() {
+        sort_results(list);
     }
     Ok(out)
+}
+
+fn sort_results(list: &mut [StoredResult]) {
+    list.sort_by(|a, b| (&a.client_id, &a.measure).cmp(&(&b.client_id, &b.measure)));
 }
 
 fn histogram(students: &[StudentRow]) -> BTreeMap<String, usize> {
@@ -420,48 +463,148 @@ fn histogram(students: &[StudentRow]) -> BTreeMap<String, usize> {
     h
 }
 
-fn results_json(list: Option<&Vec<(String, String, f64)>>) -> Value {
+fn results_json(list: Option<&Vec<StoredResult>>) -> Value {
     Value::Array(
         list.into_iter()
             .flatten()
-            .map(|(levels, measure, value)| {
-                json!({"levels": serde_json::from_str::<Value>(levels).unwrap_or(Value::Null), "measure": measure, "value": value})
+            .map(|r| {
+                json!({"levels": serde_json::from_str::<Value>(&r.levels).unwrap_or(Value::Null), "measure": r.measure, "value": r.value})
             })
             .collect(),
     )
 }
 
-/// What `role` may see of its class now: the teacher everything, a student
-/// their own record and what the teacher has revealed or sent.
-pub async fn view(pool: &AnyPool, role: &Role) -> Result<Value, ServerError> {
-    let code = role.code();
-    let class = class_row(pool, code).await?;
-    if let Role::Student { id, .. } = role {
-        return student_view(pool, &class, id).await;
+/// A live class as the views need it: its row, its students in join order and
+/// their results. The server keeps one in memory per class with a connection
+/// (`crate::AppState::view`), loaded once and then changed by each committed
+/// message, so a view costs no database read.
+pub(crate) struct ClassState {
+    class: ClassRow,
+    students: Vec<StudentRow>,
+    results: BTreeMap<String, Vec<StoredResult>>,
+}
+
+/// Reads a class from the database.
+pub(crate) async fn load(pool: &AnyPool, code: &str) -> Result<ClassState, ServerError> {
+    Ok(ClassState {
+        class: class_row(pool, code).await?,
+        students: students(pool, code).await?,
+        results: results(pool, code).await?,
+    })
+}
+
+/// What a committed message changed, for the copy in memory.
+#[derive(Debug)]
+pub(crate) enum Effect {
+    /// A resent message: answered from the stored reply, nothing changed.
+    Resent,
+    Step(String),
+    Prediction(String),
+    Results(Vec<StoredResult>),
+    Answer(String),
+    Held(Option<String>),
+    Paused(bool),
+    Setting(String),
+    Revealed(bool),
+    Anonymise(bool),
+    Deleted,
+}
+
+impl ClassState {
+    /// Takes in what `role`'s committed message changed.
+    pub(crate) fn apply(&mut self, role: &Role, effect: Effect) {
+        let student = match role {
+            Role::Student { id, .. } => self.students.iter_mut().find(|s| s.id == *id),
+            Role::Teacher { .. } => None,
+        };
+        match (effect, student) {
+            (Effect::Step(step), Some(s)) => s.step = step,
+            (Effect::Prediction(p), Some(s)) => s.prediction = Some(p),
+            (Effect::Answer(a), Some(s)) => s.answer = Some(a),
+            (Effect::Results(new), Some(s)) => {
+                let list = self.results.entry(s.id.clone()).or_default();
+                list.extend(new);
+                sort_results(list);
+            }
+            (Effect::Held(step), _) => self.class.held_step = step,
+            (Effect::Paused(on), _) => self.class.paused = on,
+            (Effect::Setting(setting), _) => self.class.setting = Some(setting),
+            (Effect::Revealed(on), _) => self.class.revealed = on,
+            (Effect::Anonymise(on), _) => self.class.anonymise = on,
+            _ => {}
+        }
     }
-    let students = students(pool, code).await?;
-    let common = state_json(&class);
-    let results = results(pool, code).await?;
-    let roster: Vec<Value> = students
-        .iter()
-        .map(|s| {
-            json!({
-                "join_order": s.join_order,
-                "nickname": (!class.anonymise).then_some(&s.nickname),
-                "seed": class.seed + s.join_order,
-                "step": s.step,
-                "prediction": s.prediction,
-                "answer": s.answer,
-                "results": results_json(results.get(&s.id)),
+
+    /// Takes in a student who has just joined.
+    pub(crate) fn add_student(&mut self, joined: &Joined, nickname: &str) {
+        if self.students.iter().any(|s| s.id == joined.student_id) {
+            return;
+        }
+        self.students.push(StudentRow {
+            id: joined.student_id.clone(),
+            nickname: nickname.trim().to_owned(),
+            join_order: joined.join_order,
+            step: STEPS[0].to_owned(),
+            prediction: None,
+            answer: None,
+        });
+        self.students.sort_by_key(|s| s.join_order);
+    }
+
+    /// What `role` may see of its class now: the teacher everything, a student
+    /// their own record and what the teacher has revealed or sent.
+    pub(crate) fn view(&self, code: &str, role: &Role) -> Result<Value, ServerError> {
+        let class = &self.class;
+        if let Role::Student { id, .. } = role {
+            return self.student_view(id);
+        }
+        let roster: Vec<Value> = self
+            .students
+            .iter()
+            .map(|s| {
+                json!({
+                    "join_order": s.join_order,
+                    "nickname": (!class.anonymise).then_some(&s.nickname),
+                    "seed": class.seed + s.join_order,
+                    "step": s.step,
+                    "prediction": s.prediction,
+                    "answer": s.answer,
+                    "results": results_json(self.results.get(&s.id)),
+                })
             })
-        })
-        .collect();
-    Ok(
-        json!({"v": VERSION, "type": "class", "code": code, "seed": class.seed,
-              "setup": serde_json::from_str::<Value>(&class.setup).unwrap_or(Value::Null),
-              "anonymise": class.anonymise, "state": common, "roster": roster,
-              "histogram": histogram(&students)}),
-    )
+            .collect();
+        Ok(
+            json!({"v": VERSION, "type": "class", "code": code, "seed": class.seed,
+                  "setup": serde_json::from_str::<Value>(&class.setup).unwrap_or(Value::Null),
+                  "anonymise": class.anonymise, "state": state_json(class), "roster": roster,
+                  "histogram": histogram(&self.students)}),
+        )
+    }
+
+    /// A student's view: their own row and results, and the class's prediction
+    /// counts once revealed.
+    fn student_view(&self, id: &str) -> Result<Value, ServerError> {
+        let class = &self.class;
+        let me = self.students.iter().find(|s| s.id == id).ok_or_else(|| {
+            ServerError::new(
+                ErrorCode::Forbidden,
+                "this student is no longer in the class",
+            )
+        })?;
+        let histogram = if class.revealed {
+            json!(histogram(&self.students))
+        } else {
+            Value::Null
+        };
+        Ok(
+            json!({"v": VERSION, "type": "you", "state": state_json(class),
+                  "me": {"join_order": me.join_order, "nickname": me.nickname,
+                         "seed": class.seed + me.join_order, "step": me.step,
+                         "prediction": me.prediction, "answer": me.answer,
+                         "results": results_json(self.results.get(&me.id))},
+                  "histogram": histogram}),
+        )
+    }
 }
 
 fn state_json(class: &ClassRow) -> Value {
@@ -471,66 +614,6 @@ fn state_json(class: &ClassRow) -> Value {
         "setting": class.setting.as_deref().and_then(|s| serde_json::from_str::<Value>(s).ok()),
         "revealed": class.revealed,
     })
-}
-
-/// A student's view: their own row and results, and the class's prediction
-/// counts once revealed (read only then: under load every query counts).
-async fn student_view(pool: &AnyPool, class: &ClassRow, id: &str) -> Result<Value, ServerError> {
-    let me = sqlx::query(
-        "SELECT nickname, join_order, step, prediction, answer, class_code FROM students WHERE id = $1",
-    )
-    .bind(id)
-    .fetch_optional(pool)
-    .await?
-    .ok_or_else(|| {
-        ServerError::new(
-            ErrorCode::Forbidden,
-            "this student is no longer in the class",
-        )
-    })?;
-    let join_order: i64 = me.try_get("join_order")?;
-    let mine = sqlx::query(
-        "SELECT levels, measure, value FROM results WHERE student_id = $1 ORDER BY client_id, measure",
-    )
-    .bind(id)
-    .fetch_all(pool)
-    .await?;
-    let mine: Vec<(String, String, f64)> = mine
-        .iter()
-        .map(|r| {
-            Ok((
-                r.try_get("levels")?,
-                r.try_get("measure")?,
-                r.try_get("value")?,
-            ))
-        })
-        .collect::<Result<_, sqlx::Error>>()?;
-    let histogram = if class.revealed {
-        let code: String = me.try_get("class_code")?;
-        let rows = sqlx::query("SELECT prediction, COUNT(*) AS n FROM students WHERE class_code = $1 AND prediction IS NOT NULL GROUP BY prediction")
-            .bind(&code)
-            .fetch_all(pool)
-            .await?;
-        let mut h = BTreeMap::new();
-        for row in &rows {
-            h.insert(
-                row.try_get::<String, _>("prediction")?,
-                row.try_get::<i64, _>("n")?,
-            );
-        }
-        json!(h)
-    } else {
-        Value::Null
-    };
-    Ok(
-        json!({"v": VERSION, "type": "you", "state": state_json(class),
-              "me": {"join_order": join_order, "nickname": me.try_get::<String, _>("nickname")?,
-                     "seed": class.seed + join_order, "step": me.try_get::<String, _>("step")?,
-                     "prediction": me.try_get::<Option<String>, _>("prediction")?,
-                     "answer": me.try_get::<Option<String>, _>("answer")?,
-                     "results": results_json(Some(&mine))},
-              "histogram": histogram}),
-    )
 }
 
 fn csv_field(text: &str) -> String {
@@ -548,8 +631,8 @@ pub async fn class_csv(pool: &AnyPool, code: &str) -> Result<String, ServerError
     let results = results(pool, code).await?;
     let mut level_keys = BTreeSet::new();
     for list in results.values() {
-        for (levels, _, _) in list {
-            if let Ok(map) = serde_json::from_str::<BTreeMap<String, f64>>(levels) {
+        for r in list {
+            if let Ok(map) = serde_json::from_str::<BTreeMap<String, f64>>(&r.levels) {
                 level_keys.extend(map.into_keys());
             }
         }
@@ -570,7 +653,13 @@ pub async fn class_csv(pool: &AnyPool, code: &str) -> Result<String, ServerError
     }
     out.push_str(",prediction,measure,value\n");
     for s in &students {
-        for (levels, measure, value) in results.get(&s.id).into_iter().flatten() {
+        for StoredResult {
+            levels,
+            measure,
+            value,
+            ..
+        } in results.get(&s.id).into_iter().flatten()
+        {
             let levels: BTreeMap<String, f64> = serde_json::from_str(levels).unwrap_or_default();
             let _ = write!(
                 out,

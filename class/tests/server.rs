@@ -277,6 +277,89 @@ async fn a_lesson_gives_the_teacher_every_prediction_and_result_in_the_csv() {
     }
 }
 
+/// The server keeps each live class in memory and answers views from it; that
+/// copy must be what the database holds. A lesson with every kind of message,
+/// the teacher connected first (so the class is in memory before any change),
+/// then the same views from a second server that reads the database afresh.
+#[tokio::test]
+async fn views_from_memory_are_the_databases() {
+    for url in backends().await {
+        let server = start(&url, Default::default()).await;
+        let (code, token, _) = server
+            .start_class(json!({"investigation": "how-swim"}))
+            .await;
+        let mut t = teacher(&server, &code, &token).await;
+        let _ = t.view("class").await;
+        ok(&t.ask(json!({"type": "hold", "step": "predict"})).await);
+        let (mut ana, a) = join(&server, &code, "  Ana ").await;
+        let (mut bo, _) = join(&server, &code, "Bo").await;
+        ok(&ana.ask(json!({"type": "step", "step": "predict"})).await);
+        ok(&ana
+            .ask(json!({"type": "predict", "prediction": "faster"}))
+            .await);
+        ok(&bo
+            .ask(json!({"type": "predict", "prediction": " slower "}))
+            .await);
+        ok(&t.ask(json!({"type": "release"})).await);
+        ok(&ana.ask(json!({"type": "step", "step": "run"})).await);
+        // Two results, the second sent first: kept in message-id order.
+        ok(&ana.ask_id("r2", json!({"type": "result", "levels": {"hz": 2.0}, "values": {"speed": 0.4, "drag": 1.5}})).await);
+        ok(&ana
+            .ask_id(
+                "r1",
+                json!({"type": "result", "levels": {"hz": 1.0}, "values": {"speed": 0.2}}),
+            )
+            .await);
+        // A resend changes nothing.
+        ok(&ana
+            .ask_id(
+                "r1",
+                json!({"type": "result", "levels": {"hz": 1.0}, "values": {"speed": 0.2}}),
+            )
+            .await);
+        ok(&ana
+            .ask(json!({"type": "explain", "answer": "more beats, more thrust"}))
+            .await);
+        ok(&t.ask(json!({"type": "hold", "step": "explain"})).await);
+        ok(&t.ask(json!({"type": "pause", "paused": true})).await);
+        ok(&t
+            .ask(json!({"type": "send_setting", "setting": {"speed": 2}}))
+            .await);
+        ok(&t.ask(json!({"type": "reveal", "revealed": true})).await);
+        ok(&t.ask(json!({"type": "anonymise", "on": true})).await);
+        let teacher_view = t.view("class").await;
+        ok(&ana.ask(json!({"type": "step", "step": "explain"})).await);
+        let ana_view = ana.view("you").await;
+        let mut t = teacher(&server, &code, &token).await;
+        let teacher_view_after = t.view("class").await;
+        assert_eq!(teacher_view_after["roster"][0]["step"], "explain");
+        assert_eq!(
+            teacher_view["roster"][0]["results"]
+                .as_array()
+                .unwrap()
+                .len(),
+            3
+        );
+        assert_eq!(teacher_view["roster"][0]["results"][0]["levels"]["hz"], 1.0);
+        assert_eq!(teacher_view["histogram"], json!({"faster": 1, "slower": 1}));
+        server.stop().await;
+
+        let again = start(&url, Default::default()).await;
+        let mut t = teacher(&again, &code, &token).await;
+        assert_eq!(
+            t.view("class").await,
+            teacher_view_after,
+            "the teacher's view"
+        );
+        let mut ana = again.client().await;
+        ok(&ana
+            .ask(json!({"type": "resume", "code": code, "student_token": a["student_token"]}))
+            .await);
+        assert_eq!(ana.view("you").await, ana_view, "a student's view");
+        again.stop().await;
+    }
+}
+
 #[tokio::test]
 async fn a_student_cannot_use_another_classs_code() {
     for url in backends().await {

@@ -226,7 +226,18 @@ impl Agent {
             if Instant::now() > self.deadline {
                 return Err("could not reconnect before the deadline".into());
             }
-            let mut ws = match tokio_tungstenite::connect_async(self.url.as_str()).await {
+            // A small read buffer (tungstenite zeroes its 128 KiB default on
+            // every read: 1,440 clients would spend the cores the server needs)
+            // and no Nagle delay, as a browser's WebSocket.
+            let config = tokio_tungstenite::tungstenite::protocol::WebSocketConfig::default()
+                .read_buffer_size(4 * 1024);
+            let mut ws = match tokio_tungstenite::connect_async_with_config(
+                self.url.as_str(),
+                Some(config),
+                true,
+            )
+            .await
+            {
                 Ok((ws, _)) => ws,
                 Err(_) => {
                     tokio::time::sleep(backoff).await;
