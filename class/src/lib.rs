@@ -481,10 +481,17 @@ async fn handle(
 ) -> Result<serde_json::Value, ServerError> {
     use protocol::Body;
     match (&*role, &message.body) {
-        (None, Body::Join { code, nickname }) => {
+        (
+            None,
+            Body::Join {
+                code,
+                nickname,
+                join_key,
+            },
+        ) => {
             let slot = state.slot(code);
             let mut live = slot.lock().await;
-            let joined = store::join(&state.pool, code, nickname).await?;
+            let joined = store::join(&state.pool, code, nickname, join_key.as_deref()).await?;
             if let Some(class) = live.as_mut() {
                 class.add_student(&joined, nickname);
             }

@@ -88,6 +88,10 @@ pub enum Body {
     Join {
         code: String,
         nickname: String,
+        /// Random, one per join (the same when a join is resent): a resent
+        /// join gets the student it already made, with a new token.
+        #[serde(default)]
+        join_key: Option<String>,
     },
     Resume {
         code: String,
@@ -218,7 +222,21 @@ pub fn parse_message(text: &str) -> Result<ClientMessage, ServerError> {
         )));
     }
     match &m.body {
-        Body::Join { code, nickname } => {
+        Body::Join {
+            code,
+            nickname,
+            join_key,
+        } => {
+            if let Some(key) = join_key {
+                let n = key.chars().count();
+                if !(8..=64).contains(&n)
+                    || !key
+                        .chars()
+                        .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
+                {
+                    return Err(invalid("join_key is 8 to 64 letters, digits, '-' or '_'"));
+                }
+            }
             check_text("code", code, 16, false)?;
             check_text("nickname", nickname, MAX_NICKNAME_CHARS, false)?;
             if nickname.contains('\n') {

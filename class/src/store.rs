@@ -116,25 +116,72 @@ fn no_class() -> ServerError {
     ServerError::new(ErrorCode::NotFound, "no class with that code")
 }
 
-pub async fn join(pool: &AnyPool, code: &str, nickname: &str) -> Result<Joined, ServerError> {
+/// Adds a student to the class; with a `join_key` already used in this class,
+/// gives that student back instead (a join resent after a dropped connection),
+/// with a new token (the first answer may never have arrived).
+pub async fn join(
+    pool: &AnyPool,
+    code: &str,
+    nickname: &str,
+    join_key: Option<&str>,
+) -> Result<Joined, ServerError> {
     let nickname = nickname.trim();
+    let key_hash = join_key.map(hash);
     let mut tx = pool.begin().await?;
-    let row = sqlx::query("UPDATE classes SET next_join = next_join + 1 WHERE code = $1 RETURNING next_join, seed, setup")
-        .bind(code)
-        .fetch_optional(&mut *tx)
-        .await?
-        .ok_or_else(no_class)?;
-    let join_order: i64 = row.try_get("next_join")?;
+    // A write first: it takes the class's lock, so a join and its resend are
+    // applied one after the other.
+    let row = sqlx::query(
+        "UPDATE classes SET next_join = next_join WHERE code = $1 RETURNING seed, setup",
+    )
+    .bind(code)
+    .fetch_optional(&mut *tx)
+    .await?
+    .ok_or_else(no_class)?;
     let class_seed: i64 = row.try_get("seed")?;
     let setup: String = row.try_get("setup")?;
+    let setup = serde_json::from_str(&setup).unwrap_or(Value::Null);
     let token = new_token();
+    if let Some(key_hash) = &key_hash {
+        let known = sqlx::query(
+            "SELECT id, join_order FROM students WHERE class_code = $1 AND join_key_hash = $2",
+        )
+        .bind(code)
+        .bind(key_hash)
+        .fetch_optional(&mut *tx)
+        .await?;
+        if let Some(known) = known {
+            let student_id: String = known.try_get("id")?;
+            let join_order: i64 = known.try_get("join_order")?;
+            sqlx::query("UPDATE students SET token_hash = $1 WHERE id = $2")
+                .bind(hash(&token))
+                .bind(&student_id)
+                .execute(&mut *tx)
+                .await?;
+            tx.commit().await?;
+            return Ok(Joined {
+                student_id,
+                token,
+                join_order,
+                seed: class_seed + join_order,
+                setup,
+            });
+        }
+    }
+    let row = sqlx::query(
+        "UPDATE classes SET next_join = next_join + 1 WHERE code = $1 RETURNING next_join",
+    )
+    .bind(code)
+    .fetch_one(&mut *tx)
+    .await?;
+    let join_order: i64 = row.try_get("next_join")?;
     let student_id = new_token()[..32].to_owned();
-    sqlx::query("INSERT INTO students (id, class_code, token_hash, nickname, join_order) VALUES ($1, $2, $3, $4, $5)")
+    sqlx::query("INSERT INTO students (id, class_code, token_hash, nickname, join_order, join_key_hash) VALUES ($1, $2, $3, $4, $5, $6)")
         .bind(&student_id)
         .bind(code)
         .bind(hash(&token))
         .bind(nickname)
         .bind(join_order)
+        .bind(key_hash)
         .execute(&mut *tx)
         .await?;
     tx.commit().await?;
@@ -143,7 +190,7 @@ pub async fn join(pool: &AnyPool, code: &str, nickname: &str) -> Result<Joined, 
         token,
         join_order,
         seed: class_seed + join_order,
-        setup: serde_json::from_str(&setup).unwrap_or(Value::Null),
+        setup,
     })
 }
 

@@ -277,6 +277,74 @@ async fn a_lesson_gives_the_teacher_every_prediction_and_result_in_the_csv() {
     }
 }
 
+/// A join resent after a dropped connection (its answer lost) gives back the
+/// student it made, not a second one; its first token no longer works. A join
+/// key is the class's: the same key in another class is another student. A
+/// join without a key (an older client) still joins.
+#[tokio::test]
+async fn a_resent_join_gives_back_the_same_student() {
+    for url in backends().await {
+        let server = start(&url, Default::default()).await;
+        let (code, token, seed) = server.start_class(json!("a")).await;
+        let (other, _, _) = server.start_class(json!("b")).await;
+        let mut t = teacher(&server, &code, &token).await;
+        let hello =
+            json!({"type": "join", "code": code, "nickname": "Ana", "join_key": "k3y-of-ana"});
+        let mut first = server.client().await;
+        let a = first.ask_id("j1", hello.clone()).await;
+        assert_eq!(a["type"], "joined", "{a}");
+        drop(first);
+        let mut again = server.client().await;
+        let b = again.ask_id("j1", hello.clone()).await;
+        assert_eq!(b["type"], "joined", "{b}");
+        assert_eq!(b["join_order"], a["join_order"]);
+        assert_eq!(b["seed"].as_i64().unwrap(), seed + 1);
+        assert_ne!(b["student_token"], a["student_token"], "a new token");
+        ok(&again
+            .ask(json!({"type": "predict", "prediction": "fewer"}))
+            .await);
+        // Bo joins after: the next join order.
+        let (_, bo) = join(&server, &code, "Bo").await;
+        assert_eq!(bo["join_order"], 2);
+        let roster = loop {
+            let v = t.view("class").await;
+            if v["roster"].as_array().unwrap().len() == 2 && v["roster"][0]["prediction"] == "fewer"
+            {
+                break v["roster"].clone();
+            }
+        };
+        assert_eq!(roster[0]["nickname"], "Ana");
+        // The lost answer's token is void; the new one resumes.
+        let mut c = server.client().await;
+        let r = c
+            .ask(json!({"type": "resume", "code": code, "student_token": a["student_token"]}))
+            .await;
+        assert_eq!(error_code(&r), "forbidden");
+        let mut c = server.client().await;
+        ok(&c
+            .ask(json!({"type": "resume", "code": code, "student_token": b["student_token"]}))
+            .await);
+        // The same key in another class: a student of that class.
+        let mut c = server.client().await;
+        let elsewhere = c
+            .ask(
+                json!({"type": "join", "code": other, "nickname": "Ana", "join_key": "k3y-of-ana"}),
+            )
+            .await;
+        assert_eq!(elsewhere["join_order"], 1);
+        // A malformed key is refused.
+        let mut c = server.client().await;
+        let bad = c
+            .ask(json!({"type": "join", "code": code, "nickname": "Cy", "join_key": "no"}))
+            .await;
+        assert_eq!(error_code(&bad), "invalid");
+        let (status, csv) = server.csv(&code, Some(&token)).await;
+        assert_eq!(status, 200);
+        assert!(csv.contains("# students: 2"), "{csv}");
+        server.stop().await;
+    }
+}
+
 /// The server keeps each live class in memory and answers views from it; that
 /// copy must be what the database holds. A lesson with every kind of message,
 /// the teacher connected first (so the class is in memory before any change),

@@ -57,6 +57,18 @@ impl Outbox {
         }
     }
 
+    /// The key a join is sent with: this sender's random prefix (the same when
+    /// the join is resent after a dropped connection, so the server gives back
+    /// the student it made). `None` for a prefix the server would refuse.
+    pub fn join_key(&self) -> Option<&str> {
+        let valid = (8..=64).contains(&self.prefix.chars().count())
+            && self
+                .prefix
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_');
+        valid.then_some(self.prefix.as_str())
+    }
+
     /// A fresh id (also for messages that are not queued: the hello).
     pub fn fresh_id(&mut self) -> String {
         let id = format!("{}-{}", self.prefix, self.next);

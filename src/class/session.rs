@@ -190,8 +190,14 @@ impl Session {
             Who::Student(s) => match &s.token {
                 Some(token) => json!({"v": super::PROTOCOL, "id": id, "type": "resume",
                     "code": s.code, "student_token": token}),
-                None => json!({"v": super::PROTOCOL, "id": id, "type": "join",
-                    "code": s.code, "nickname": s.nickname}),
+                None => {
+                    let mut join = json!({"v": super::PROTOCOL, "id": id, "type": "join",
+                        "code": s.code, "nickname": s.nickname});
+                    if let Some(key) = self.outbox.join_key() {
+                        join["join_key"] = json!(key);
+                    }
+                    join
+                }
             },
             Who::Teacher(t) => json!({"v": super::PROTOCOL, "id": id, "type": "teacher",
                 "code": t.code, "teacher_token": t.token}),

@@ -74,6 +74,38 @@ fn the_outbox_survives_a_reload_and_keeps_counting() {
     assert!(Session::from_storage("not json").is_none());
 }
 
+/// A join whose answer never came is resent, after the reconnection, with the
+/// same join key (the server then gives back the student it made); a session
+/// with another random prefix (another join, on a shared Chromebook say) sends
+/// another key.
+#[test]
+fn a_join_is_resent_with_the_same_join_key() {
+    let mut s = Session::new(
+        Who::Student(Student {
+            code: "K7QX2M".to_owned(),
+            nickname: "Ana".to_owned(),
+            token: None,
+            join_order: 0,
+            seed: 0,
+            setup: json!(null),
+        }),
+        "q8z1x0c4v7b2",
+    );
+    s.connecting();
+    let first = sent(&s.on_open());
+    assert_eq!(first[0]["join_key"], "q8z1x0c4v7b2");
+    s.on_close(1.0);
+    s.connecting();
+    let again = sent(&s.on_open());
+    assert_eq!(again[0]["type"], "join");
+    assert_eq!(again[0]["join_key"], first[0]["join_key"]);
+    assert_ne!(again[0]["id"], first[0]["id"]);
+    // Another session, another key; a prefix the server would refuse sends none.
+    let mut other = student("K7QX2M");
+    other.connecting();
+    assert!(sent(&other.on_open())[0].get("join_key").is_none());
+}
+
 #[test]
 fn a_student_joins_then_resumes_and_resends_everything_unacknowledged() {
     let mut s = student("K7QX2M");
