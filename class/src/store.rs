@@ -510,6 +510,16 @@ fn histogram(students: &[StudentRow]) -> BTreeMap<String, usize> {
     h
 }
 
+/// How many runs a student reported: each `result` message is one run, however
+/// many measures it carries.
+fn runs(list: Option<&Vec<StoredResult>>) -> usize {
+    list.into_iter()
+        .flatten()
+        .map(|r| r.client_id.as_str())
+        .collect::<BTreeSet<_>>()
+        .len()
+}
+
 fn results_json(list: Option<&Vec<StoredResult>>) -> Value {
     Value::Array(
         list.into_iter()
@@ -617,6 +627,7 @@ impl ClassState {
                     "prediction": s.prediction,
                     "answer": s.answer,
                     "results": results_json(self.results.get(&s.id)),
+                    "runs": runs(self.results.get(&s.id)),
                 })
             })
             .collect();

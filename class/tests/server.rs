@@ -410,6 +410,8 @@ async fn views_from_memory_are_the_databases() {
         );
         assert_eq!(teacher_view["roster"][0]["results"][0]["levels"]["hz"], 1.0);
         assert_eq!(teacher_view["histogram"], json!({"faster": 1, "slower": 1}));
+        assert_eq!(teacher_view["roster"][0]["runs"], 2, "two result messages");
+        assert_eq!(teacher_view["roster"][1]["runs"], 0);
         server.stop().await;
 
         let again = start(&url, Default::default()).await;

@@ -48,6 +48,10 @@ pub struct StudentRecord {
     pub answer: Option<String>,
     #[serde(default)]
     pub results: Vec<ResultRow>,
+    /// Runs reported (one `result` message each, whatever its measures); an
+    /// older server leaves it out.
+    #[serde(default)]
+    pub runs: Option<usize>,
 }
 
 /// The teacher's view of the class.

@@ -836,7 +836,7 @@ impl ClassPanel {
                     ui.label(name(s));
                     ui.label(s.step.as_deref().map_or("–", step_name));
                     ui.label(s.prediction.as_deref().map_or("–", prediction_words));
-                    ui.label(s.results.len().to_string());
+                    ui.label(s.runs.unwrap_or(s.results.len()).to_string());
                     ui.end_row();
                 }
             });

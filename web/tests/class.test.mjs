@@ -234,6 +234,8 @@ describe("a class together (webgl2)", () => {
       assert.ok(p.low <= p.mean && p.mean <= p.high && p.low >= p.min && p.high <= p.max, JSON.stringify(p));
     }
     assert.ok(dash.view.roster.every((r) => r.prediction && r.results.length > 0));
+    // One run each (the Runs column), however many measures a run reports.
+    assert.ok(dash.view.roster.every((r) => r.runs === 1), JSON.stringify(dash.view.roster.map((r) => r.runs)));
     assert.ok(dash.view.roster.some((r) => r.nickname === "Bo <b>"), "nicknames as typed");
     await nudgeFrames(teacher, 2);
     await waitForWidget(teacher, "class_pooled");
