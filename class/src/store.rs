@@ -141,49 +141,46 @@ pub async fn join(
     let setup: String = row.try_get("setup")?;
     let setup = serde_json::from_str(&setup).unwrap_or(Value::Null);
     let token = new_token();
-    if let Some(key_hash) = &key_hash {
-        let known = sqlx::query(
-            "SELECT id, join_order FROM students WHERE class_code = $1 AND join_key_hash = $2",
+    let known =
+        match &key_hash {
+            Some(key_hash) => sqlx::query(
+                "SELECT id, join_order FROM students WHERE class_code = $1 AND join_key_hash = $2",
+            )
+            .bind(code)
+            .bind(key_hash)
+            .fetch_optional(&mut *tx)
+            .await?,
+            None => None,
+        };
+    let (student_id, join_order) = if let Some(known) = known {
+        // A resend: the same student, a new token.
+        let student_id: String = known.try_get("id")?;
+        sqlx::query("UPDATE students SET token_hash = $1 WHERE id = $2")
+            .bind(hash(&token))
+            .bind(&student_id)
+            .execute(&mut *tx)
+            .await?;
+        (student_id, known.try_get("join_order")?)
+    } else {
+        let row = sqlx::query(
+            "UPDATE classes SET next_join = next_join + 1 WHERE code = $1 RETURNING next_join",
         )
         .bind(code)
-        .bind(key_hash)
-        .fetch_optional(&mut *tx)
+        .fetch_one(&mut *tx)
         .await?;
-        if let Some(known) = known {
-            let student_id: String = known.try_get("id")?;
-            let join_order: i64 = known.try_get("join_order")?;
-            sqlx::query("UPDATE students SET token_hash = $1 WHERE id = $2")
-                .bind(hash(&token))
-                .bind(&student_id)
-                .execute(&mut *tx)
-                .await?;
-            tx.commit().await?;
-            return Ok(Joined {
-                student_id,
-                token,
-                join_order,
-                seed: class_seed + join_order,
-                setup,
-            });
-        }
-    }
-    let row = sqlx::query(
-        "UPDATE classes SET next_join = next_join + 1 WHERE code = $1 RETURNING next_join",
-    )
-    .bind(code)
-    .fetch_one(&mut *tx)
-    .await?;
-    let join_order: i64 = row.try_get("next_join")?;
-    let student_id = new_token()[..32].to_owned();
-    sqlx::query("INSERT INTO students (id, class_code, token_hash, nickname, join_order, join_key_hash) VALUES ($1, $2, $3, $4, $5, $6)")
-        .bind(&student_id)
-        .bind(code)
-        .bind(hash(&token))
-        .bind(nickname)
-        .bind(join_order)
-        .bind(key_hash)
-        .execute(&mut *tx)
-        .await?;
+        let join_order: i64 = row.try_get("next_join")?;
+        let student_id = new_token()[..32].to_owned();
+        sqlx::query("INSERT INTO students (id, class_code, token_hash, nickname, join_order, join_key_hash) VALUES ($1, $2, $3, $4, $5, $6)")
+            .bind(&student_id)
+            .bind(code)
+            .bind(hash(&token))
+            .bind(nickname)
+            .bind(join_order)
+            .bind(key_hash)
+            .execute(&mut *tx)
+            .await?;
+        (student_id, join_order)
+    };
     tx.commit().await?;
     Ok(Joined {
         student_id,
