@@ -32,7 +32,7 @@ pub const SLOWED_DOWN_AFTER_SECS: f64 = 1.5;
 
 /// A frame is never counted as longer than this, seconds: after the tab was hidden
 /// or the debugger paused, the simulation resumes instead of replaying the gap.
-const MAX_FRAME_SECS: f64 = 0.25;
+pub const MAX_FRAME_SECS: f64 = 0.25;
 
 impl FixedStepClock {
     pub fn new(step_secs: f64) -> Self {

@@ -301,11 +301,20 @@ impl Lab {
     /// Runs the steps owed for a frame of `frame_secs` real seconds (none while
     /// paused). `now_secs` is wall-clock time, for the steps-per-second meter.
     pub fn advance_frame(&mut self, frame_secs: f64, now_secs: f64) -> u32 {
-        /// Steps per frame without a budget (see [`FixedStepClock`]).
+        /// Steps per frame without a budget, or before a step's cost is known
+        /// (see [`FixedStepClock`]).
         const MAX_STEPS: u32 = 32;
+        // With a budget and a known cost, the budget alone limits a frame: up to
+        // every step the longest counted frame owes at the top speed. On a
+        // computer whose drawing is slow (a weak GPU at 5 frames/s) a cheap
+        // scene then still runs at 8×; a fixed 32 steps a frame held it at 2.7×
+        // however little the steps cost.
+        let most_owed = (crate::clock::MAX_FRAME_SECS * f64::from(crate::settings::SPEED_MAX)
+            / self.step_secs())
+        .ceil() as u32;
         self.clock.max_steps_per_frame = match self.frame_budget_secs {
             Some(budget) if self.step_cost_secs > 0.0 => {
-                ((budget / self.step_cost_secs).floor() as u32).clamp(1, MAX_STEPS)
+                ((budget / self.step_cost_secs).floor() as u32).clamp(1, most_owed.max(MAX_STEPS))
             }
             _ => MAX_STEPS,
         };
@@ -329,8 +338,10 @@ impl Lab {
         self.run_steps(steps);
         if steps > 0 {
             let cost = started.elapsed().as_secs_f64() / f64::from(steps);
-            // Smoothed over a few frames; the first measurement is taken as is.
-            self.step_cost_secs = if self.step_cost_secs > 0.0 {
+            // Smoothed over a few frames as it falls; the first measurement, and
+            // any rise (a slider that added thousands of fish), taken as is, so
+            // that the next frame does not plan on the old, cheaper steps.
+            self.step_cost_secs = if self.step_cost_secs > 0.0 && cost < self.step_cost_secs {
                 0.8 * self.step_cost_secs + 0.2 * cost
             } else {
                 cost
@@ -508,6 +519,39 @@ mod tests {
         lab.apply_settings(settings);
         assert_eq!(lab.scene().boids().unwrap().fish().len(), 37);
         assert_eq!(lab.scene().boids().unwrap().steps(), 10);
+    }
+
+    #[test]
+    fn slow_frames_still_run_a_cheap_scene_at_top_speed() {
+        // A weak GPU: 5 frames a second. Ten fish cost microseconds a step, so
+        // the interactive budget lets every owed step run: 8× real time. Without
+        // a budget the clock's fixed 32 steps a frame hold it at 2.7×.
+        let settings = |lab: &Lab| {
+            let mut s = lab.settings().clone();
+            s.speed = 8.0;
+            s.left.fish_count = 10;
+            s
+        };
+        let mut budgeted = Lab::new(Settings::default());
+        budgeted.set_frame_budget(Some(INTERACTIVE_FRAME_BUDGET_SECS));
+        budgeted.apply_settings(settings(&budgeted));
+        let mut fixed = Lab::new(Settings::default());
+        fixed.apply_settings(settings(&fixed));
+        for frame in 0..10 {
+            let now = f64::from(frame) * 0.2;
+            budgeted.advance_frame(0.2, now);
+            fixed.advance_frame(0.2, now);
+        }
+        let steps = |lab: &Lab| lab.scene().boids().unwrap().steps();
+        // Each 0.2 s frame owes 96 steps of 1/60 s at 8×; the first frame,
+        // before a step's cost is known, runs 32: at most 32 + 9 × 96 = 896.
+        assert!(
+            (850..=896).contains(&steps(&budgeted)),
+            "{}",
+            steps(&budgeted)
+        );
+        assert_eq!(steps(&fixed), 320);
+        assert!(!budgeted.slowed_down() && fixed.slowed_down());
     }
 
     #[test]

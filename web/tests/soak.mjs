@@ -1,5 +1,5 @@
 // The browser soak (issue 35): every scene driven through window.shoal for a
-// given wall time, a change every simulated 10 s (the native soak's changes,
+// given wall time or simulated time, a change every simulated 10 s (the native soak's changes,
 // `shoal.soak_change`, made with the page's own shoal.set(), reset(), train()…),
 // the simulation run with shoal.step(n) (as fast as the page steps), and after
 // every 10 s the soak's checks on every animal (`shoal.soak_check()`: no NaN,
@@ -13,6 +13,11 @@
 //
 //   node web/tests/soak.mjs [--minutes-per-scene 10] [--scene reef] [--seed 1]
 //                           [--tier webgl2] [--count-max 20000]
+//   node web/tests/soak.mjs --sim-minutes-per-scene 60   (the issue's hour a scene)
+//
+// --minutes-per-scene caps each scene's wall time; --sim-minutes-per-scene instead
+// runs each scene's changes for that many simulated minutes (one change per 10 s),
+// however long that takes.
 //
 // It needs the release build in dist/ (trunk build --release).
 import { fileURLToPath } from "node:url";
@@ -172,6 +177,8 @@ async function main() {
     return i >= 0 && i + 1 < args.length ? args[i + 1] : otherwise;
   };
   const minutes = Number(option("--minutes-per-scene", "10"));
+  const simMinutes = option("--sim-minutes-per-scene", null);
+  if (simMinutes != null && !(Number(simMinutes) > 0)) throw new Error(`--sim-minutes-per-scene: not a positive number: ${simMinutes}`);
   const seed = Number(option("--seed", "1"));
   const tier = option("--tier", "webgl2");
   const countMax = option("--count-max", null);
@@ -182,13 +189,16 @@ async function main() {
   try {
     const { page, errors } = await openShoal(browser, server.url);
     const opened = await memory(page);
-    console.log(`browser soak, ${tier} tier, ${minutes} min per scene, seed ${seed}`);
+    const per = simMinutes == null ? `${minutes} min (wall)` : `${simMinutes} simulated min`;
+    console.log(`browser soak, ${tier} tier, ${per} per scene, seed ${seed}`);
     console.log(`page opened: wasm MiB ${mib(opened.wasm_bytes)}, heap in use MiB ${mib(opened.heap_bytes)}, JS heap MiB ${mib(opened.js_heap_bytes)}`);
     for (const scene of scenes) {
       const f = await soakScene(page, {
         scene,
         seed,
-        wallSecs: minutes * 60,
+        wallSecs: simMinutes == null ? minutes * 60 : Infinity,
+        // One change per simulated 10 s.
+        maxChanges: simMinutes == null ? Infinity : Math.round((Number(simMinutes) * 60) / 10),
         countMax: countMax == null ? null : Number(countMax),
         log: process.env.SOAK_VERBOSE ? (t) => console.error(t) : () => {},
       });
