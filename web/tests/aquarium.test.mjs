@@ -11,7 +11,10 @@ import {
 const state = (page) => page.evaluate(() => window.shoal.state());
 const widgets = (page) => page.evaluate(() => window.shoal.widgets());
 
-for (const tier of ["webgl2", "webgpu"]) {
+// SwiftShader's WebGL2 too: what Chrome draws with when it blocks the GPU.
+for (const tier of ["webgl2", "webgpu", "webgl2-swiftshader"]) {
+  // The tier the app reports (the software GPU under it is the test's choice).
+  const reported = tier.split("-")[0];
   describe(`aquarium on the ${tier} tier`, () => {
     let server, browser, page, errors, aquarium;
 
@@ -28,9 +31,9 @@ for (const tier of ["webgl2", "webgpu"]) {
       await server?.close();
     });
 
-    test(`reports the ${tier} tier`, async () => {
+    test(`reports the ${reported} tier`, async () => {
       const s = await state(page);
-      assert.equal(s.tier, tier);
+      assert.equal(s.tier, reported);
       for (const key of ["time_secs", "steps", "fish_count", "tier", "fps", "paused", "seed", "scene"]) {
         assert.ok(key in s, `state() has ${key}`);
       }

@@ -72,15 +72,31 @@ const BASE_FLAGS = [
   "--disable-sync",
 ];
 
-/** Chromium flags per tier (SwiftShader: no GPU on CI). */
+/** ANGLE on the system's OpenGL ES through EGL, with no display: on a machine
+ * with no GPU that is Mesa's llvmpipe, a software GPU (the libgl1-mesa-dri and
+ * libegl-mesa0 packages, which ./dev installs). It is the path a Linux machine or
+ * a Chromebook takes with its own driver, and on this 2-core machine it draws a
+ * frame in half the time SwiftShader takes (docs/benchmarks.md, *The browser
+ * tests' software GPU*). */
+const LLVMPIPE = ["--use-gl=angle", "--use-angle=gl-egl", "--ignore-gpu-blocklist"];
+
+/** Chromium flags per tier. There is no GPU on CI, so every tier draws with a
+ * software GPU:
+ * - `webgl2`: WebGL2 on llvmpipe; no WebGPU.
+ * - `webgl2-swiftshader`: WebGL2 on SwiftShader, what Chrome falls back to when
+ *   it blocks a machine's GPU (the aquarium test runs on it too).
+ * - `webgpu`: WebGPU on SwiftShader's Vulkan, Chrome's fallback adapter (Dawn
+ *   offers no other here); the page around it is composited on llvmpipe.
+ * - `none`: no WebGL and no WebGPU. */
 export const TIER_FLAGS = {
-  webgl2: [...BASE_FLAGS, "--disable-gpu"],
+  webgl2: [...BASE_FLAGS, ...LLVMPIPE],
+  "webgl2-swiftshader": [...BASE_FLAGS, "--disable-gpu"],
   webgpu: [
     ...BASE_FLAGS,
     "--enable-unsafe-webgpu",
     "--enable-features=Vulkan",
     "--use-vulkan=swiftshader",
-    "--use-angle=swiftshader",
+    ...LLVMPIPE,
   ],
   none: [...BASE_FLAGS, "--disable-gpu", "--disable-3d-apis", "--disable-webgl"],
 };
