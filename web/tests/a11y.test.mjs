@@ -155,8 +155,15 @@ for (const tier of TIERS) {
       // The choices are buttons that say which one is chosen.
       await press("The school (Group tank)");
       await page.waitForFunction(() => window.shoal.state().investigation.chosen === 1, null, { timeout: 30_000 });
-      const chosen = await mirrored(page, 'button:text-is("The school (Group tank)")');
-      assert.equal(await chosen.getAttribute("aria-pressed"), "true");
+      // The mirror follows on the next frame it draws.
+      await page.waitForFunction(
+        () =>
+          [...document.querySelectorAll("#shoal_a11y button")].some(
+            (b) => b.textContent === "The school (Group tank)" && b.getAttribute("aria-pressed") === "true",
+          ),
+        null,
+        { timeout: 30_000 },
+      );
       await press("Commit my prediction (it locks)");
       await page.waitForFunction(() => window.shoal.state().investigation.step === "run", null, { timeout: 30_000 });
       // Faster with the ] key, from a focused control.

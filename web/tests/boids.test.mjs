@@ -263,7 +263,13 @@ describe("schooling lab", () => {
     await waitForWidget(page, "tool_add_rock");
     const before = (await settings(page)).left.obstacles;
     assert.equal(before, null, "the seed's rocks until edited");
-    await clickWidget(page, "tool_add_rock");
+    // The tool is chosen when its button says so to a screen reader (a click
+    // while the panel scrolls can miss).
+    await clickUntil(page, "tool_add_rock", () =>
+      [...document.querySelectorAll("#shoal_a11y button")].some(
+        (b) => b.textContent === "Add rock" && b.getAttribute("aria-pressed") === "true",
+      ),
+    );
     const view = await waitForWidget(page, "view_left");
     // Walk down the view, column by column, until a click lands on free sand
     // (clicks beyond the glass, or too close to another rock or pillar, are

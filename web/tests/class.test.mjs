@@ -22,6 +22,8 @@ import {
   saveArtifact,
   clickWidget,
   clickUntil,
+  clickInWindow,
+  scrollWindowTo,
   waitForWidget,
   waitFrames,
   nudgeFrames,
@@ -86,28 +88,6 @@ async function startServer() {
 
 const cls = (page) => page.evaluate(() => window.shoal.class());
 
-/** Scrolls the investigation window until `name` is inside it. */
-async function scrollWindowTo(page, name) {
-  for (let attempt = 0; attempt < 40; attempt++) {
-    const w = await page.evaluate(() => window.shoal.widgets());
-    const r = w[name];
-    const win = w.investigation_window;
-    if (r && win && r.y >= win.y + 20 && r.y + r.height <= win.y + win.height - 2) return r;
-    if (!win) {
-      await waitFrames(page, 1);
-      continue;
-    }
-    await page.mouse.move(win.x + win.width / 2, win.y + win.height / 2);
-    await page.mouse.wheel(0, r && r.y < win.y + 20 ? -120 : 120);
-    await waitFrames(page, 2);
-  }
-  throw new Error(`${name} cannot be scrolled into the window`);
-}
-
-async function clickInWindow(page, name, predicate, arg) {
-  await scrollWindowTo(page, name);
-  await clickUntil(page, name, predicate, arg);
-}
 
 /** A student joins with the code and a nickname, from the join link. */
 async function join(browser, server, code, nickname) {
@@ -185,7 +165,12 @@ describe("a class together (webgl2)", () => {
     const { page: teacher, errors: teacherErrors } = await openShoal(browser, server.url, { width: 1280, height: 800 });
     await teacher.waitForFunction(() => window.shoal.class().server === true, null, { timeout: 60_000 });
     await clickUntil(teacher, "class_start", () => !!window.shoal.widgets().class_start_go);
-    await clickUntil(teacher, "class_lesson_3", () => true);
+    // The radio button is chosen when the screen reader's copy of it is checked.
+    await clickUntil(teacher, "class_lesson_3", () =>
+      [...document.querySelectorAll('#shoal_a11y input[type="radio"]')].some(
+        (r) => r.getAttribute("aria-label") === "How does a fish swim?" && r.checked,
+      ),
+    );
     await clickUntil(teacher, "class_start_go", () => window.shoal.class().role === "teacher");
     await teacher.waitForFunction(() => window.shoal.class().view?.code, null, { timeout: 60_000 });
     const code = (await cls(teacher)).code;

@@ -19,6 +19,8 @@ import {
   saveArtifact,
   clickWidget,
   clickUntil,
+  clickInWindow,
+  scrollWindowTo,
   scrollPanelTo,
   waitForWidget,
   waitFrames,
@@ -36,34 +38,9 @@ const nativePhysicsCsv = fs.readFileSync(path.join(fixtures, "experiment-physics
 const state = (page) => page.evaluate(() => window.shoal.state());
 const experiment = (page) => page.evaluate(() => window.shoal.state().experiment);
 
-/** Scrolls the Experiment window until widget `name` is inside it, and returns
- * its rectangle. */
-async function scrollWindowTo(page, name) {
-  for (let attempt = 0; attempt < 40; attempt++) {
-    const w = await page.evaluate(() => window.shoal.widgets());
-    const r = w[name];
-    const win = w.experiment_window;
-    if (r && win && r.y >= win.y + 20 && r.y + r.height <= win.y + win.height - 4) return r;
-    await page.mouse.move(win.x + win.width / 2, win.y + win.height / 2);
-    await page.mouse.wheel(0, r && r.y < win.y + 20 ? -120 : 120);
-    await waitFrames(page, 2);
-  }
-  throw new Error(`${name} cannot be scrolled into the window`);
-}
-
 /** Clicks widget `name` of the Experiment window until `predicate` holds. */
-async function clickInWindow(page, name, predicate) {
-  for (let attempt = 0; attempt < 4; attempt++) {
-    await scrollWindowTo(page, name);
-    try {
-      await clickUntil(page, name, predicate);
-      return;
-    } catch {
-      // Moved while scrolling: scroll again.
-    }
-  }
-  throw new Error(`clicking ${name} had no effect`);
-}
+const clickInExperiment = (page, name, predicate) =>
+  clickInWindow(page, name, predicate, undefined, { windowName: "experiment_window", bottomMargin: 4 });
 
 /** The first line where two CSVs differ, or null. */
 function firstDifference(a, b) {
@@ -127,7 +104,7 @@ for (const tier of TIERS) {
       // A school big enough that the nine runs last a while on a slow page too
       // (where they get half of each slow frame): there is something to cancel.
       await page.evaluate(() => window.shoal.set({ left: { fish_count: 400 } }));
-      await clickInWindow(page, "experiment_start", () => !!window.shoal.state().experiment);
+      await clickInExperiment(page, "experiment_start", () => !!window.shoal.state().experiment);
       const samples = [];
       const started = Date.now();
       for (;;) {
@@ -153,7 +130,7 @@ for (const tier of TIERS) {
       console.log(`${tier}: ${fps.toFixed(1)} frames/s during the experiment, ${samples.length} polls`);
       await waitFrames(page, 2);
       if (tier === "webgl2") saveArtifact("experiment-running.png", await page.screenshot());
-      await clickInWindow(page, "experiment_cancel", () => window.shoal.state().experiment.cancelled);
+      await clickInExperiment(page, "experiment_cancel", () => window.shoal.state().experiment.cancelled);
       const e = await experiment(page);
       assert.equal(e.running, false);
       assert.ok(e.runs_done >= 1 && e.runs_done < e.runs_total, `${e.runs_done} of ${e.runs_total}`);
@@ -197,9 +174,12 @@ for (const tier of TIERS) {
     });
 
     test("Copy link: the experiment's link opens a page that runs it again, to the same CSV", walkOnly(tier), async () => {
-      await clickInWindow(page, "experiment_link", () => (window.shoal.state().notice || "").includes("Link copied"));
+      await clickInExperiment(page, "experiment_link", () => (window.shoal.state().notice || "").includes("Link copied"));
       const link = await page.evaluate(() => window.shoal.experiment_link());
       assert.ok(link.startsWith(`${server.url}?experiment=v1.`), link);
+      // The first page waits paused (it then draws only when asked), so that the
+      // machine's two cores run the reopened page's experiment.
+      await page.evaluate(() => window.shoal.set({ paused: true }));
       const opened = await openShoal(browser, link, { width: 1280, height: 900 });
       const other = opened.page;
       await other.waitForFunction(() => window.shoal.state().experiment && !window.shoal.state().experiment.running, null, {
@@ -223,6 +203,7 @@ for (const tier of TIERS) {
       assert.equal(d.experiment, undefined, "nothing runs");
       await damaged.page.evaluate(() => window.shoal.step(5));
       await damaged.page.close();
+      await page.evaluate(() => window.shoal.set({ paused: false }));
     });
 
     test("the results: a plot per measure, the table, and watching one run", async () => {
@@ -231,7 +212,7 @@ for (const tier of TIERS) {
       await waitFrames(page, 3);
       if (tier === "webgl2") saveArtifact("experiment-results.png", await page.screenshot());
       // Row 1 is alignment 80; its first seed is 1.
-      await clickInWindow(
+      await clickInExperiment(
         page,
         "experiment_watch_1_0",
         () => window.shoal.settings().left.alignment === 80 && window.shoal.settings().seed === 1
@@ -244,7 +225,7 @@ for (const tier of TIERS) {
 
     if (tier === "webgl2") {
       test("a readable dose-response for the docs: alignment 0 to 100, three seeds", async () => {
-        await clickInWindow(page, "experiment_clear", () => !window.shoal.widgets().experiment_results);
+        await clickInExperiment(page, "experiment_clear", () => !window.shoal.widgets().experiment_results);
         const result = await page.evaluate(
           (d) => window.shoal.run_experiment(d),
           {
@@ -259,7 +240,7 @@ for (const tier of TIERS) {
         );
         assert.equal(result.summary.length, 5 * 2);
         await waitForWidget(page, "experiment_plot_1");
-        await scrollWindowTo(page, "experiment_plot_0");
+        await scrollWindowTo(page, "experiment_plot_0", { windowName: "experiment_window", bottomMargin: 4 });
         await waitFrames(page, 3);
         saveArtifact("experiment-results-docs.png", await page.screenshot());
       });

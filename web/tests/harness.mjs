@@ -297,12 +297,71 @@ export async function scrollPanelTo(page, name) {
     const w = await page.evaluate(() => window.shoal.widgets());
     const r = w[name];
     const bottom = panelBottom(w);
-    if (r && bottom !== null && r.y >= 0 && r.y + r.height <= bottom) return r;
+    if (r && bottom !== null && r.y >= 0 && r.y + r.height <= bottom) return attempt ? steady(page, name, r) : r;
     await page.mouse.move(120, 300);
     await page.mouse.wheel(0, r && r.y < 0 ? -100 : 100);
     await waitFrames(page, 2);
   }
   throw new Error(`${name} cannot be scrolled into view`);
+}
+
+/** Widget `name`'s rectangle once it has stopped moving: egui scrolls smoothly,
+ * over several frames, and on a quick software GPU a rectangle read during the
+ * scroll is not where the click would land. Waits for the next frame (at most
+ * half a second: a paused app draws only while something moves) until two
+ * frames agree. */
+async function steady(page, name, rect) {
+  for (let k = 0; k < 20; k++) {
+    const frames = await page.evaluate(() => window.shoal.state().frames);
+    const drew = await page
+      .waitForFunction((f) => window.shoal.state().frames > f, frames, { timeout: 500 })
+      .then(() => true)
+      .catch(() => false);
+    const now = (await page.evaluate(() => window.shoal.widgets()))[name];
+    if (!now) return rect;
+    const same = Math.abs(now.x - rect.x) < 0.5 && Math.abs(now.y - rect.y) < 0.5;
+    rect = now;
+    if (same || !drew) return rect;
+  }
+  return rect;
+}
+
+/** Scrolls the window whose rectangle `shoal.widgets()` names `windowName` (the open
+ * investigation's, by default) with the mouse wheel until widget `name` lies
+ * inside it, below its title bar and `bottomMargin` pixels above its bottom, and
+ * returns the widget's rectangle once it has stopped moving. */
+export async function scrollWindowTo(page, name, { windowName = "investigation_window", bottomMargin = 2 } = {}) {
+  for (let attempt = 0; attempt < 40; attempt++) {
+    const w = await page.evaluate(() => window.shoal.widgets());
+    const r = w[name];
+    const win = w[windowName];
+    if (r && win && r.y >= win.y + 20 && r.y + r.height <= win.y + win.height - bottomMargin) {
+      return attempt ? steady(page, name, r) : r;
+    }
+    if (!win) {
+      await waitFrames(page, 1);
+      continue;
+    }
+    await page.mouse.move(win.x + win.width / 2, win.y + win.height / 2);
+    await page.mouse.wheel(0, r && r.y < win.y + 20 ? -120 : 120);
+    await waitFrames(page, 2);
+  }
+  throw new Error(`${name} cannot be scrolled into the window`);
+}
+
+/** Clicks widget `name` of a window (see [`scrollWindowTo`] for `options`) until
+ * `predicate(arg)` holds in the page, scrolling it into the window first. */
+export async function clickInWindow(page, name, predicate, arg, options = {}) {
+  for (let attempt = 0; attempt < 4; attempt++) {
+    await scrollWindowTo(page, name, options);
+    try {
+      await clickUntil(page, name, predicate, arg);
+      return;
+    } catch {
+      console.error(`clicking ${name} in the window: no effect, scrolling to it again`);
+    }
+  }
+  throw new Error(`clicking ${name} in the window had no effect`);
 }
 
 /** Waits until a named widget is on screen (the panel may still be laying out) and
@@ -323,7 +382,8 @@ export async function clickUntil(page, name, predicate, arg) {
       await page.waitForFunction(predicate, arg, { timeout: 20_000 });
       return;
     } catch {
-      // Not applied yet: click again.
+      // Not applied yet: click again (said, so that a slow run shows why).
+      console.error(`clicking ${name}: no effect in 20 s, clicking again`);
     }
   }
   throw new Error(`clicking ${name} had no effect`);

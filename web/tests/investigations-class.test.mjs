@@ -17,6 +17,8 @@ import {
   saveArtifact,
   clickWidget,
   clickUntil,
+  clickInWindow,
+  scrollWindowTo,
   waitForWidget,
   waitFrames,
   nudgeFrames,
@@ -57,35 +59,6 @@ async function assertTanksVisible(page, what) {
   return { win, tanks: tanks.map((t) => w[t]) };
 }
 
-async function scrollWindowTo(page, name) {
-  for (let attempt = 0; attempt < 40; attempt++) {
-    const w = await widgets(page);
-    const r = w[name];
-    const win = w.investigation_window;
-    if (r && win && r.y >= win.y + 20 && r.y + r.height <= win.y + win.height - 2) return r;
-    if (!win) {
-      await waitFrames(page, 1);
-      continue;
-    }
-    await page.mouse.move(win.x + win.width / 2, win.y + win.height / 2);
-    await page.mouse.wheel(0, r && r.y < win.y + 20 ? -120 : 120);
-    await waitFrames(page, 2);
-  }
-  throw new Error(`${name} cannot be scrolled into the window`);
-}
-
-async function clickInWindow(page, name, predicate, arg) {
-  for (let attempt = 0; attempt < 4; attempt++) {
-    await scrollWindowTo(page, name);
-    try {
-      await clickUntil(page, name, predicate, arg);
-      return;
-    } catch {
-      // Moved while scrolling: scroll again.
-    }
-  }
-  throw new Error(`clicking ${name} in the window had no effect`);
-}
 
 /** From the intro to a committed prediction `choice`. */
 async function predict(page, choice) {

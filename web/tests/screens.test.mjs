@@ -90,7 +90,8 @@ describe("phone, laptop and projector (WebGL2 tier)", () => {
   test("on a phone the reef inspector shows one column at a time, chosen by tabs, within the screen", async () => {
     const { context, page } = await open(browser, server.url, { width: 390, height: 844, touch: true });
     try {
-      await page.evaluate(() => window.shoal.set({ scene: "reef", reef: { selected: 3 } }));
+      // Paused: the layout is the test, and a running reef's shark may eat fish 3.
+      await page.evaluate(() => window.shoal.set({ scene: "reef", reef: { selected: 3 }, paused: true }));
       await page.waitForFunction(() => window.shoal.widgets().reef_tab_mind, null, { timeout: 60_000 });
       let w = await widgets(page);
       for (const tab of ["mind", "history", "sees", "log"]) {
