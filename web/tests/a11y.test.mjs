@@ -184,9 +184,20 @@ for (const tier of TIERS) {
       await press("Next: explain »");
       await page.waitForFunction(() => window.shoal.state().investigation.step === "explain", null, { timeout: 30_000 });
       const answers = ["The loners were caught one by one", "The shark switched targets", "Too many fish to follow"];
+      let question = null;
       for (const [k, answer] of answers.entries()) {
+        // The mirror shows the next question's box a frame after the state moves on.
+        await page.waitForFunction(
+          (q) => {
+            const box = document.querySelector("#shoal_a11y textarea");
+            return box && box.getAttribute("aria-label") !== q;
+          },
+          question,
+          { timeout: 30_000 },
+        );
         const box = await mirrored(page, "textarea");
-        assert.ok((await box.getAttribute("aria-label")).length > 10, "the answer box is named by its question");
+        question = await box.getAttribute("aria-label");
+        assert.ok(question.length > 10, "the answer box is named by its question");
         await box.fill(answer);
         await page.waitForFunction((a) => window.shoal.state().investigation.explanations.includes(a), answer, { timeout: 30_000 });
         await press(k + 1 === answers.length ? "What did scientists find? »" : "Next question »");

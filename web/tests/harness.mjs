@@ -305,9 +305,9 @@ export async function scrollPanelTo(page, name) {
   throw new Error(`${name} cannot be scrolled into view`);
 }
 
-/** Widget `name`'s rectangle once it has stopped moving: egui scrolls smoothly,
- * over several frames, and on a quick software GPU a rectangle read during the
- * scroll is not where the click would land. Waits for the next frame (at most
+/** Widget `name`'s rectangle once it has stopped moving: egui scrolls smoothly
+ * and a window resizes to new content over several frames, and on a quick
+ * software GPU a rectangle read meanwhile is not where the click would land. Waits for the next frame (at most
  * half a second: a paused app draws only while something moves) until two
  * frames agree. */
 async function steady(page, name, rect) {
@@ -336,7 +336,8 @@ export async function scrollWindowTo(page, name, { windowName = "investigation_w
     const r = w[name];
     const win = w[windowName];
     if (r && win && r.y >= win.y + 20 && r.y + r.height <= win.y + win.height - bottomMargin) {
-      return attempt ? steady(page, name, r) : r;
+      // Scrolled, or not: a window also moves while it resizes to new content.
+      return steady(page, name, r);
     }
     if (!win) {
       await waitFrames(page, 1);
