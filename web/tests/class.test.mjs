@@ -22,6 +22,7 @@ import {
   saveArtifact,
   clickWidget,
   clickUntil,
+  steadyWidget,
   clickInWindow,
   scrollWindowTo,
   waitForWidget,
@@ -165,7 +166,9 @@ describe("a class together (webgl2)", () => {
     const { page: teacher, errors: teacherErrors } = await openShoal(browser, server.url, { width: 1280, height: 800 });
     await teacher.waitForFunction(() => window.shoal.class().server === true, null, { timeout: 60_000 });
     await clickUntil(teacher, "class_start", () => !!window.shoal.widgets().class_start_go);
-    // The radio button is chosen when the screen reader's copy of it is checked.
+    // The radio button is chosen when the screen reader's copy of it is checked
+    // (clicked once the new window has sized itself).
+    await steadyWidget(teacher, "class_lesson_3");
     await clickUntil(teacher, "class_lesson_3", () =>
       [...document.querySelectorAll('#shoal_a11y input[type="radio"]')].some(
         (r) => r.getAttribute("aria-label") === "How does a fish swim?" && r.checked,

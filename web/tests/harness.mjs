@@ -307,14 +307,18 @@ export async function scrollPanelTo(page, name) {
 
 /** Widget `name`'s rectangle once it has stopped moving: egui scrolls smoothly
  * and a window resizes to new content over several frames, and on a quick
- * software GPU a rectangle read meanwhile is not where the click would land. Waits for the next frame (at most
- * half a second: a paused app draws only while something moves) until two
- * frames agree. */
+ * software GPU a rectangle read meanwhile is not where the click would land.
+ * Waits for the next frame until two frames agree. */
 async function steady(page, name, rect) {
   for (let k = 0; k < 20; k++) {
-    const frames = await page.evaluate(() => window.shoal.state().frames);
+    const { frames, paused } = await page.evaluate(() => {
+      const s = window.shoal.state();
+      return { frames: s.frames, paused: s.paused };
+    });
+    // A running tank draws on: its next frame comes, however slowly a loaded
+    // machine draws it. A paused one draws only while something moves.
     const drew = await page
-      .waitForFunction((f) => window.shoal.state().frames > f, frames, { timeout: 500 })
+      .waitForFunction((f) => window.shoal.state().frames > f, frames, { timeout: paused ? 500 : 15_000 })
       .then(() => true)
       .catch(() => false);
     const now = (await page.evaluate(() => window.shoal.widgets()))[name];
@@ -324,6 +328,12 @@ async function steady(page, name, rect) {
     if (same || !drew) return rect;
   }
   return rect;
+}
+
+/** Waits until widget `name` is on screen and has stopped moving (a window that
+ * has just opened sizes itself over a few frames), and returns its rectangle. */
+export async function steadyWidget(page, name) {
+  return steady(page, name, await waitForWidget(page, name));
 }
 
 /** Scrolls the window whose rectangle `shoal.widgets()` names `windowName` (the open
